@@ -1,0 +1,47 @@
+# flapsim — the commands users drive. Every target installs missing Debian
+# packages first (tools/install_deps.sh), then configures and builds as needed.
+#   make run        the full pipeline on the default hawkmoth wing
+#   make test       build and run every test (ctest)
+# See README.md for the rest.
+
+BUILD      ?= build
+ASAN_BUILD ?= build-asan
+JOBS       ?= $(shell nproc)
+CMAKE_ARGS ?=
+OUT        ?= out
+
+.PHONY: all deps build run test test-asan bench validate phase-study plots hawkmoth-model clean help
+
+all: build
+
+help:
+	@sed -n '1,6p' Makefile
+
+deps:
+	@tools/install_deps.sh
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j$(JOBS)
+
+run: build
+	$(BUILD)/flapsim check wings/hawkmoth.toml
+	$(BUILD)/flapsim check cases/hover.toml
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+
+$(ASAN_BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DFLAPSIM_SANITIZE=ON $(CMAKE_ARGS)
+
+test-asan: deps $(ASAN_BUILD)/CMakeCache.txt
+	cmake --build $(ASAN_BUILD) -j$(JOBS)
+	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
+
+bench: build
+	@for b in $(BUILD)/bench/*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
+
+clean:
+	rm -rf $(BUILD) $(ASAN_BUILD)

@@ -1,0 +1,42 @@
+#include "pipeline/cli/commands.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+#include "pipeline/numerical_failure.hpp"
+#include "wings/input_error.hpp"
+
+namespace flapsim::cli {
+
+int run(int argc, char** argv) {
+  CLI::App app{
+      "flapsim: flexible flapping wings, from a wing drawing to lift.\n"
+      "Stages: mesh -> modes (FEM) -> reduce (beam, bar chain) -> run (FSI) -> sweep."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "flapsim 0.1.0");
+  add_check_command(app);
+  add_mesh_command(app);
+  add_modes_command(app);
+  add_reduce_command(app);
+  add_run_command(app);
+  add_sweep_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const InputError& e) {
+    std::cerr << "flapsim: error: " << e.what() << "\n";
+    return 2;
+  } catch (const NumericalFailure& e) {
+    std::cerr << "flapsim: numerical failure: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "flapsim: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace flapsim::cli

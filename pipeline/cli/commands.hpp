@@ -1,0 +1,23 @@
+#pragma once
+/// \file commands.hpp
+/// \brief The flapsim subcommands. Each add_*_command registers one subcommand
+/// (its options, --help text and callback) on the application; callbacks report
+/// bad input by throwing flapsim::InputError (exit 2) and failed runs by throwing
+/// flapsim::NumericalFailure (exit 3).
+
+namespace CLI { class App; }
+
+namespace flapsim::cli {
+
+void add_check_command(CLI::App& app);   ///< flapsim check FILE.toml
+void add_mesh_command(CLI::App& app);    ///< flapsim mesh WING.toml -o DIR
+void add_modes_command(CLI::App& app);   ///< flapsim modes WING.toml -o DIR
+void add_reduce_command(CLI::App& app);  ///< flapsim reduce WING.toml -o DIR --bodies N
+void add_run_command(CLI::App& app);     ///< flapsim run CASE.toml -o DIR
+void add_sweep_command(CLI::App& app);   ///< flapsim sweep CASE.toml --vary KEY=VALUES -o DIR
+
+/// Parses argv, runs the chosen subcommand, returns the process exit status:
+/// 0 ok, 1 usage error, 2 bad input, 3 numerical failure.
+int run(int argc, char** argv);
+
+}  // namespace flapsim::cli

@@ -1,0 +1,29 @@
+#pragma once
+/// \file numerical_failure.hpp
+/// \brief A run that cannot go on (NaN, no convergence of the Newton or coupling
+/// loop). The CLI turns it into exit status 3; outputs written so far stay valid.
+
+#include <stdexcept>
+#include <string>
+
+namespace flapsim {
+
+class NumericalFailure : public std::runtime_error {
+ public:
+  /// \param step  time-step index (0-based) where it failed, -1 if not in a time loop
+  /// \param time  simulated time of that step [s]
+  NumericalFailure(const std::string& what, long step = -1, double time = 0.0)
+      : std::runtime_error(format(what, step, time)), step_(step), time_(time) {}
+  long step() const { return step_; }
+  double time() const { return time_; }
+
+ private:
+  static std::string format(const std::string& what, long step, double time) {
+    if (step < 0) return what;
+    return "step " + std::to_string(step) + " (t = " + std::to_string(time) + " s): " + what;
+  }
+  long step_;
+  double time_;
+};
+
+}  // namespace flapsim

@@ -1,0 +1,69 @@
+#pragma once
+/// \file wing_model.hpp
+/// \brief What a wing is, after its file has been read and checked: planform,
+/// veins, membrane, materials and meshing hints, all in SI units in the wing
+/// frame W (y along the span from the pivot, x chordwise toward the leading
+/// edge, z = x × y). Read by wings/wing_file.hpp; used by fem/ and pipeline/.
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace flapsim::wings {
+
+/// Isotropic linear-elastic material.
+struct Material {
+  double youngs_modulus = 0.0;  ///< E [Pa]
+  double poisson_ratio = 0.3;   ///< ν [-]
+  double density = 0.0;         ///< ρ [kg/m³]
+};
+
+/// Cross-section of a vein (a frame element) at one point along it.
+struct Section {
+  enum class Shape { HollowCircle, Rectangle };
+  Shape shape = Shape::HollowCircle;
+  double outer_diameter = 0.0;  ///< HollowCircle: D [m]
+  double wall = 0.0;            ///< HollowCircle: wall thickness t [m]; t >= D/2 is solid
+  double width = 0.0;           ///< Rectangle: side in the wing plane [m]
+  double height = 0.0;          ///< Rectangle: side normal to the wing plane [m]
+};
+
+/// A vein: a polyline in the wing plane, its section tapering linearly with
+/// arc length from `root_section` (first point) to `tip_section` (last point).
+struct Vein {
+  std::string name;
+  std::vector<Eigen::Vector2d> points;  ///< (x, y) [m], in order along the vein
+  Section root_section;
+  Section tip_section;
+  Material material;
+};
+
+/// The membrane: a thin shell over the whole planform.
+struct Membrane {
+  double thickness = 0.0;               ///< h [m]
+  Material material;
+  double nonstructural_mass_per_area = 0.0;  ///< scales etc. [kg/m²]; adds mass, no stiffness
+};
+
+/// Meshing hints for the FEM stage.
+struct MeshSettings {
+  double element_size = 0.0;       ///< target membrane element size [m]
+  double vein_element_size = 0.0;  ///< target element size along veins [m] (<= element_size)
+};
+
+/// The whole wing.
+struct Wing {
+  std::string name;         ///< short name, e.g. "hawkmoth" (from the file)
+  std::string source_file;  ///< path of the TOML file it was read from
+  /// Closed, simple polygon (last point not repeated), counter-clockwise, (x, y) [m].
+  std::vector<Eigen::Vector2d> outline;
+  double span = 0.0;        ///< pivot-to-tip length R [m] (max y of the outline)
+  std::vector<Vein> veins;
+  Membrane membrane;
+  MeshSettings mesh;
+  /// FEM root boundary: nodes with y <= clamp_y are clamped [m].
+  double clamp_y = 0.0;
+};
+
+}  // namespace flapsim::wings
