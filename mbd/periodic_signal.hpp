@@ -1,0 +1,47 @@
+#pragma once
+/// \file periodic_signal.hpp
+/// \brief A periodic angle signal of the stroke phase s = f·t (in cycles, period 1):
+/// a harmonic series or smoothly interpolated tabulated data, each with exact
+/// first and second derivatives.
+
+#include <vector>
+
+namespace flapsim::mbd {
+
+/// Value and derivatives of a signal. When returned by PeriodicSignal::at_phase the
+/// derivatives are per cycle (d/ds, d²/ds²); WingKinematics turns them into per second.
+struct AngleSample {
+  double value = 0.0;         ///< [rad]
+  double rate = 0.0;          ///< [rad/cycle] or [rad/s]
+  double acceleration = 0.0;  ///< [rad/cycle²] or [rad/s²]
+};
+
+class PeriodicSignal {
+ public:
+  /// Zero signal.
+  PeriodicSignal();
+
+  /// value(s) = mean + Σ_n cos_coeffs[n-1]·cos(2πns) + sin_coeffs[n-1]·sin(2πns).
+  /// \param mean        [rad]
+  /// \param cos_coeffs  [rad], n = 1, 2, …
+  /// \param sin_coeffs  [rad], n = 1, 2, … (may differ in length from cos_coeffs)
+  static PeriodicSignal harmonic(double mean, std::vector<double> cos_coeffs,
+                                 std::vector<double> sin_coeffs);
+
+  /// Periodic cubic spline (C², period 1) through (phases[i], values[i]).
+  /// \param phases  strictly increasing, within [0, 1); at least 3 points
+  /// \param values  [rad]
+  /// \throws std::invalid_argument on bad tables (callers turn it into InputError)
+  static PeriodicSignal tabulated(std::vector<double> phases, std::vector<double> values);
+
+  /// Value, d/ds and d²/ds² at phase s [cycles] (any real s; period 1).
+  AngleSample at_phase(double s) const;
+
+ private:
+  bool tabulated_ = false;
+  double mean_ = 0.0;
+  std::vector<double> cos_, sin_;
+  std::vector<double> phases_, values_, second_derivs_;  // spline knots, values, y''
+};
+
+}  // namespace flapsim::mbd
