@@ -1,0 +1,50 @@
+#pragma once
+/// \file pvd_series.hpp
+/// \brief A ParaView time-series collection (.pvd): a list of (time, data file).
+/// The .pvd is rewritten atomically each time a step is added, so it is valid and
+/// lists only files already written, even if the run stops early.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace flapsim::output {
+
+class PvdSeries {
+ public:
+  struct Entry {
+    double time;       ///< [s]
+    int part;          ///< part index (several data sets at one time), usually 0
+    std::string file;  ///< relative to the .pvd's directory, '/' separated
+  };
+
+  /// \brief Starts a series and writes an empty, valid collection to \p path.
+  /// \param path  the .pvd file; its directory is created if missing
+  /// \throws OutputError
+  explicit PvdSeries(std::filesystem::path path);
+
+  /// \brief Adds a data file (already written) and rewrites the .pvd atomically.
+  /// \param time  [s]
+  /// \param file  the data file, absolute or relative to the .pvd's directory;
+  ///              stored relative to that directory
+  /// \param part  part index
+  /// \throws OutputError
+  void add(double time, const std::filesystem::path& file, int part = 0);
+
+  /// \brief File name of step \p step: "<stem>_<step, 6 digits>.<extension>",
+  /// e.g. step_file_name("wing", 12, "vtp") == "wing_000012.vtp".
+  static std::string step_file_name(std::string_view stem, long step, std::string_view extension);
+
+  const std::filesystem::path& path() const { return path_; }
+  const std::vector<Entry>& entries() const { return entries_; }
+  std::size_t size() const { return entries_.size(); }
+
+ private:
+  void write() const;
+  std::filesystem::path path_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace flapsim::output

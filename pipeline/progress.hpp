@@ -1,0 +1,61 @@
+#pragma once
+/// \file progress.hpp
+/// \brief A one-line progress display on stderr for long runs:
+/// "step 120/300  t=0.0460 s  <extra>", redrawn in place (carriage return) at most
+/// about five times a second. When the stream is not a terminal only the final line
+/// is printed; FLAPSIM_QUIET=1 in the environment silences it entirely.
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace flapsim::pipeline {
+
+class ProgressLine {
+ public:
+  enum class Mode {
+    automatic,  ///< terminal -> live, otherwise final line only; FLAPSIM_QUIET=1 -> quiet
+    live,       ///< redraw in place and print the final line
+    final_only, ///< print only the final line
+    quiet       ///< print nothing
+  };
+
+  /// \param total   number of steps of the run
+  /// \param stream  where to print (not owned); stderr by default
+  /// \param mode    see Mode
+  explicit ProgressLine(long total, std::FILE* stream = stderr, Mode mode = Mode::automatic);
+  /// Prints the final line if finish() was not called (e.g. a run that failed).
+  ~ProgressLine();
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  /// \brief Reports that \p step steps are done at simulated time \p time [s];
+  /// redraws if 0.2 s have passed since the last redraw.
+  /// \param extra  short text appended to the line (e.g. "CL=1.93  iters=4")
+  void update(long step, double time, std::string_view extra = {});
+
+  /// \brief Prints the final line with the last step, time and the wall-clock time,
+  /// ending with a newline. Idempotent.
+  void finish(std::string_view extra = {});
+
+  Mode mode() const { return mode_; }
+
+  /// \brief The text of a line (no carriage return or newline): "step 120/300  t=0.0460 s  extra".
+  static std::string format(long step, long total, double time, std::string_view extra);
+
+ private:
+  void draw(const std::string& line, bool final_line);
+  long total_;
+  std::FILE* stream_;
+  Mode mode_;
+  long step_ = 0;
+  double time_ = 0.0;
+  std::string extra_;
+  std::size_t last_width_ = 0;
+  bool finished_ = false;
+  std::chrono::steady_clock::time_point start_, last_draw_;
+  bool drawn_ = false;
+};
+
+}  // namespace flapsim::pipeline
