@@ -1,0 +1,426 @@
+#include "wings/toml_reader.hpp"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "wings/input_error.hpp"
+
+namespace flapsim::wings {
+
+struct TomlTable::Document {
+  std::string file;
+  toml::table root;
+  double length_scale = 1.0;  // [m per file unit]
+  std::string length_unit = "m";
+};
+
+namespace {
+
+const toml::table* as_tbl(const void* p) { return static_cast<const toml::table*>(p); }
+const toml::node* as_node(const void* p) { return static_cast<const toml::node*>(p); }
+
+int line_of_node(const toml::node& n, int fallback) {
+  const auto line = static_cast<int>(n.source().begin.line);
+  return line > 0 ? line : fallback;
+}
+
+const char* type_name(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a floating-point number";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time";
+    case toml::node_type::date_time: return "a date-time";
+    default: return "nothing";
+  }
+}
+
+std::string format_number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+// --- Bounds ----------------------------------------------------------------------------
+
+bool Bounds::contains(double v) const {
+  const bool lo_ok = min_open ? v > min : v >= min;
+  const bool hi_ok = max_open ? v < max : v <= max;
+  return lo_ok && hi_ok;
+}
+
+std::string Bounds::describe() const {
+  const bool has_lo = min > -1e299, has_hi = max < 1e299;
+  if (has_lo && has_hi)
+    return std::string("in ") + (min_open ? "(" : "[") + format_number(min) + ", " +
+           format_number(max) + (max_open ? ")" : "]");
+  if (has_lo) return std::string(min_open ? "> " : ">= ") + format_number(min);
+  if (has_hi) return std::string(max_open ? "< " : "<= ") + format_number(max);
+  return "any number";
+}
+
+std::optional<double> length_unit_in_metres(std::string_view unit) {
+  if (unit == "m") return 1.0;
+  if (unit == "cm") return 1e-2;
+  if (unit == "mm") return 1e-3;
+  if (unit == "um") return 1e-6;
+  return std::nullopt;
+}
+
+// --- parsing ---------------------------------------------------------------------------
+
+TomlTable::TomlTable(std::shared_ptr<Document> doc, const void* table, std::string path, int line)
+    : doc_(std::move(doc)), table_(table), path_(std::move(path)), line_(line > 0 ? line : 1) {}
+
+TomlTable parse_toml_string(std::string_view text, const std::string& name) {
+  auto doc = std::make_shared<TomlTable::Document>();
+  doc->file = name;
+  try {
+    doc->root = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    throw InputError(name, static_cast<int>(e.source().begin.line), "",
+                     "TOML syntax error: " + std::string(e.description()));
+  }
+  const void* root = &doc->root;
+  return TomlTable(std::move(doc), root, "", 1);
+}
+
+TomlTable parse_toml_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "", "cannot open the file for reading");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path, 0, "", "cannot read the file");
+  return parse_toml_string(text.str(), path);
+}
+
+// --- location and errors ------------------------------------------------------------------
+
+const std::string& TomlTable::file() const { return doc_->file; }
+
+std::string TomlTable::directory() const {
+  return std::filesystem::path(doc_->file).parent_path().string();
+}
+
+std::string TomlTable::key_path(std::string_view key) const {
+  if (path_.empty()) return std::string(key);
+  return path_ + "." + std::string(key);
+}
+
+const void* TomlTable::node(std::string_view key) const { return as_tbl(table_)->get(key); }
+
+int TomlTable::line_of(std::string_view key) const {
+  const auto* n = as_node(node(key));
+  return n ? line_of_node(*n, line_) : line_;
+}
+
+void TomlTable::fail(std::string_view key, const std::string& message) const {
+  throw InputError(file(), line_of(key), key_path(key), message);
+}
+
+void TomlTable::fail_at(int line, std::string_view key, const std::string& message) const {
+  throw InputError(file(), line > 0 ? line : line_, key_path(key), message);
+}
+
+void TomlTable::fail_type(std::string_view key, const char* expected) const {
+  const auto* n = as_node(node(key));
+  fail(key, std::string("expected ") + expected + ", found " + (n ? type_name(*n) : "nothing"));
+}
+
+bool TomlTable::has(std::string_view key) const { return node(key) != nullptr; }
+
+std::vector<std::string> TomlTable::keys() const {
+  std::vector<std::string> out;
+  for (auto&& [k, v] : *as_tbl(table_)) out.emplace_back(k.str());
+  return out;
+}
+
+bool TomlTable::is_table(std::string_view key) const {
+  const auto* n = as_node(node(key));
+  return n && n->is_table();
+}
+bool TomlTable::is_array(std::string_view key) const {
+  const auto* n = as_node(node(key));
+  return n && n->is_array();
+}
+bool TomlTable::is_string(std::string_view key) const {
+  const auto* n = as_node(node(key));
+  return n && n->is_string();
+}
+bool TomlTable::is_number(std::string_view key) const {
+  const auto* n = as_node(node(key));
+  return n && n->is_number();
+}
+
+void TomlTable::expect_only(const std::vector<std::string>& known) const {
+  for (auto&& [k, v] : *as_tbl(table_)) {
+    bool ok = false;
+    for (const auto& kn : known) ok = ok || (k.str() == kn);
+    if (ok) continue;
+    std::string list;
+    for (const auto& kn : known) list += (list.empty() ? "" : ", ") + kn;
+    throw InputError(file(), line_of_node(v, line_), key_path(k.str()),
+                     "unknown key (a typo?); expected one of: " + list);
+  }
+}
+
+void TomlTable::expect_only(std::initializer_list<std::string_view> known) const {
+  std::vector<std::string> v;
+  for (auto k : known) v.emplace_back(k);
+  expect_only(v);
+}
+
+// --- scalars ------------------------------------------------------------------------------
+
+namespace {
+void check_finite_and_bounds(const TomlTable& t, std::string_view key, int line, double v,
+                             const Bounds& b) {
+  if (!std::isfinite(v)) t.fail_at(line, key, "must be a finite number");
+  if (!b.contains(v))
+    t.fail_at(line, key, "value " + format_number(v) + " out of range: must be " + b.describe());
+}
+}  // namespace
+
+std::optional<double> TomlTable::find_double(std::string_view key, const Bounds& bounds) const {
+  const auto* n = as_node(node(key));
+  if (!n) return std::nullopt;
+  if (!n->is_number()) fail_type(key, "a number");
+  const double v = *n->value<double>();
+  check_finite_and_bounds(*this, key, line_of(key), v, bounds);
+  return v;
+}
+
+double TomlTable::get_double(std::string_view key, const Bounds& bounds) const {
+  auto v = find_double(key, bounds);
+  if (!v) fail(key, "missing required key (a number)");
+  return *v;
+}
+
+double TomlTable::get_double(std::string_view key, double fallback, const Bounds& bounds) const {
+  return find_double(key, bounds).value_or(fallback);
+}
+
+int TomlTable::get_int(std::string_view key, const Bounds& bounds) const {
+  const auto* n = as_node(node(key));
+  if (!n) fail(key, "missing required key (an integer)");
+  if (!n->is_integer()) fail_type(key, "an integer");
+  const auto v = *n->value<int64_t>();
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    fail(key, "integer out of range");
+  if (!bounds.contains(static_cast<double>(v)))
+    fail(key, "value " + std::to_string(v) + " out of range: must be " + bounds.describe());
+  return static_cast<int>(v);
+}
+
+int TomlTable::get_int(std::string_view key, int fallback, const Bounds& bounds) const {
+  return has(key) ? get_int(key, bounds) : fallback;
+}
+
+std::string TomlTable::get_string(std::string_view key) const {
+  const auto* n = as_node(node(key));
+  if (!n) fail(key, "missing required key (a string)");
+  if (!n->is_string()) fail_type(key, "a string");
+  return *n->value<std::string>();
+}
+
+std::string TomlTable::get_string(std::string_view key, std::string_view fallback) const {
+  return has(key) ? get_string(key) : std::string(fallback);
+}
+
+std::string TomlTable::get_choice(std::string_view key,
+                                  std::initializer_list<std::string_view> choices,
+                                  std::string_view fallback) const {
+  std::string list;
+  for (auto c : choices) list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";
+  if (!has(key)) {
+    if (!fallback.empty()) return std::string(fallback);
+    fail(key, "missing required key (one of " + list + ")");
+  }
+  const std::string v = get_string(key);
+  for (auto c : choices)
+    if (v == c) return v;
+  fail(key, "unknown value \"" + v + "\"; expected one of " + list);
+}
+
+bool TomlTable::get_bool(std::string_view key) const {
+  const auto* n = as_node(node(key));
+  if (!n) fail(key, "missing required key (true or false)");
+  if (!n->is_boolean()) fail_type(key, "a boolean (true or false)");
+  return *n->value<bool>();
+}
+
+bool TomlTable::get_bool(std::string_view key, bool fallback) const {
+  return has(key) ? get_bool(key) : fallback;
+}
+
+std::string TomlTable::get_path(std::string_view key) const {
+  const std::string p = get_string(key);
+  if (p.empty()) fail(key, "empty path");
+  std::filesystem::path fp(p);
+  if (fp.is_absolute()) return fp.lexically_normal().string();
+  return (std::filesystem::path(directory()) / fp).lexically_normal().string();
+}
+
+// --- arrays ------------------------------------------------------------------------------
+
+int TomlTable::line_of_element(std::string_view key, std::size_t i) const {
+  const auto* n = as_node(node(key));
+  if (!n || !n->is_array() || i >= n->as_array()->size()) return line_of(key);
+  return line_of_node(*n->as_array()->get(i), line_of(key));
+}
+
+std::vector<double> TomlTable::find_doubles(std::string_view key, const Bounds& bounds) const {
+  std::vector<double> out;
+  const auto* n = as_node(node(key));
+  if (!n) return out;
+  if (!n->is_array()) fail_type(key, "an array of numbers");
+  const auto& arr = *n->as_array();
+  out.reserve(arr.size());
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const auto& e = *arr.get(i);
+    const int line = line_of_node(e, line_of(key));
+    const std::string ek = std::string(key) + "[" + std::to_string(i) + "]";
+    if (!e.is_number())
+      fail_at(line, ek, std::string("expected a number, found ") + type_name(e));
+    const double v = *e.value<double>();
+    check_finite_and_bounds(*this, ek, line, v, bounds);
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::vector<double> TomlTable::get_doubles(std::string_view key, const Bounds& bounds,
+                                           std::size_t min_size) const {
+  if (!has(key)) fail(key, "missing required key (an array of numbers)");
+  auto out = find_doubles(key, bounds);
+  if (out.size() < min_size)
+    fail(key, "needs at least " + std::to_string(min_size) + " numbers, found " +
+                  std::to_string(out.size()));
+  return out;
+}
+
+std::vector<std::vector<double>> TomlTable::get_number_rows(std::string_view key,
+                                                            std::size_t columns,
+                                                            std::size_t min_rows) const {
+  const auto* n = as_node(node(key));
+  const std::string what = "an array of [" + std::to_string(columns) + " numbers] arrays";
+  if (!n) fail(key, "missing required key (" + what + ")");
+  if (!n->is_array()) fail_type(key, what.c_str());
+  const auto& arr = *n->as_array();
+  std::vector<std::vector<double>> rows;
+  rows.reserve(arr.size());
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const auto& e = *arr.get(i);
+    const int line = line_of_node(e, line_of(key));
+    const std::string ek = std::string(key) + "[" + std::to_string(i) + "]";
+    if (!e.is_array() || e.as_array()->size() != columns)
+      fail_at(line, ek, "expected an array of " + std::to_string(columns) + " numbers");
+    std::vector<double> row;
+    for (const auto& x : *e.as_array()) {
+      if (!x.is_number())
+        fail_at(line_of_node(x, line), ek, std::string("expected a number, found ") + type_name(x));
+      const double v = *x.value<double>();
+      if (!std::isfinite(v)) fail_at(line, ek, "must be finite numbers");
+      row.push_back(v);
+    }
+    rows.push_back(std::move(row));
+  }
+  if (rows.size() < min_rows)
+    fail(key, "needs at least " + std::to_string(min_rows) + " entries, found " +
+                  std::to_string(rows.size()));
+  return rows;
+}
+
+// --- lengths -------------------------------------------------------------------------------
+
+void TomlTable::read_length_unit(std::string_view key, std::string_view fallback) {
+  const std::string unit = get_string(key, fallback);
+  const auto scale = length_unit_in_metres(unit);
+  if (!scale) fail(key, "unknown length unit \"" + unit + "\"; expected one of \"m\", \"cm\", \"mm\", \"um\"");
+  doc_->length_scale = *scale;
+  doc_->length_unit = unit;
+}
+
+double TomlTable::length_scale() const { return doc_->length_scale; }
+const std::string& TomlTable::length_unit() const { return doc_->length_unit; }
+
+std::optional<double> TomlTable::find_length(std::string_view key, const Bounds& bounds) const {
+  auto v = find_double(key, bounds);
+  if (!v) return std::nullopt;
+  return *v * doc_->length_scale;
+}
+
+double TomlTable::get_length(std::string_view key, const Bounds& bounds) const {
+  if (!has(key)) fail(key, "missing required key (a length in " + doc_->length_unit + ")");
+  return *find_length(key, bounds);
+}
+
+double TomlTable::get_length(std::string_view key, double fallback_m, const Bounds& bounds) const {
+  return find_length(key, bounds).value_or(fallback_m);
+}
+
+std::vector<double> TomlTable::get_lengths(std::string_view key, const Bounds& bounds,
+                                           std::size_t min_size) const {
+  auto v = get_doubles(key, bounds, min_size);
+  for (double& x : v) x *= doc_->length_scale;
+  return v;
+}
+
+Eigen::Vector3d TomlTable::get_length_vector3(std::string_view key) const {
+  const auto v = get_lengths(key);
+  if (v.size() != 3) fail(key, "expected 3 numbers [x, y, z], found " + std::to_string(v.size()));
+  return {v[0], v[1], v[2]};
+}
+
+Eigen::Vector3d TomlTable::get_length_vector3(std::string_view key,
+                                              const Eigen::Vector3d& fallback_m) const {
+  return has(key) ? get_length_vector3(key) : fallback_m;
+}
+
+// --- tables --------------------------------------------------------------------------------
+
+std::optional<TomlTable> TomlTable::find_table(std::string_view key) const {
+  const auto* n = as_node(node(key));
+  if (!n) return std::nullopt;
+  if (!n->is_table()) fail_type(key, "a table");
+  return TomlTable(doc_, n->as_table(), key_path(key), line_of_node(*n, line_));
+}
+
+TomlTable TomlTable::get_table(std::string_view key) const {
+  auto t = find_table(key);
+  if (!t) fail(key, "missing required table");
+  return *t;
+}
+
+std::vector<TomlTable> TomlTable::get_tables(std::string_view key, std::size_t min_size) const {
+  std::vector<TomlTable> out;
+  const auto* n = as_node(node(key));
+  if (n) {
+    if (!n->is_array()) fail_type(key, "an array of tables");
+    const auto& arr = *n->as_array();
+    for (std::size_t i = 0; i < arr.size(); ++i) {
+      const auto& e = *arr.get(i);
+      const std::string ek = std::string(key) + "[" + std::to_string(i) + "]";
+      const int line = line_of_node(e, line_of(key));
+      if (!e.is_table()) fail_at(line, ek, std::string("expected a table, found ") + type_name(e));
+      out.push_back(TomlTable(doc_, e.as_table(), key_path(ek), line));
+    }
+  }
+  if (out.size() < min_size)
+    fail(key, "needs at least " + std::to_string(min_size) + " entries, found " +
+                  std::to_string(out.size()));
+  return out;
+}
+
+}  // namespace flapsim::wings
