@@ -1,0 +1,68 @@
+#pragma once
+/// \file planform_geometry.hpp
+/// \brief Plane-polygon geometry of a wing planform (x chordwise toward the leading
+/// edge, y spanwise from the pivot): area, centroid, span moments, simplicity and
+/// point-in-polygon tests, and the leading/trailing edge at a span station.
+///
+/// Definitions used throughout flapsim (docs/wing_file.md):
+///  - span R: largest y of the outline (pivot to tip);
+///  - mean chord c̄ = S / R (Ellington's convention for a wing measured from the pivot);
+///  - aspect ratio AR = R² / S (one wing, measured from the pivot);
+///  - non-dimensional radius of gyration of area r2 = sqrt(∫∫ y² dA / S) / R.
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace flapsim::wings {
+
+using Polygon = std::vector<Eigen::Vector2d>;  ///< closed (last point not repeated)
+
+/// Shoelace area, positive for counter-clockwise order [m²].
+double polygon_signed_area(const Polygon& polygon);
+/// |signed area| [m²].
+double polygon_area(const Polygon& polygon);
+/// Area centroid [m]; the polygon must have non-zero area.
+Eigen::Vector2d polygon_centroid(const Polygon& polygon);
+/// ∫∫ y² dA over the polygon [m⁴] (exact for straight edges).
+double polygon_second_moment_y(const Polygon& polygon);
+
+/// True if the closed segments [a, b] and [c, d] share at least one point.
+bool segments_intersect(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                        const Eigen::Vector2d& c, const Eigen::Vector2d& d);
+
+/// First pair of non-adjacent edges that touch or cross (edge i runs from point i to
+/// point i+1), or nullopt if the polygon is simple. Also reports repeated points as
+/// touching edges. O(n²), fine for a few hundred points.
+std::optional<std::pair<int, int>> find_self_intersection(const Polygon& polygon);
+
+/// Distance from p to the polygon boundary [m].
+double distance_to_boundary(const Polygon& polygon, const Eigen::Vector2d& p);
+
+/// True if p is inside the polygon or within `tolerance` [m] of its boundary.
+bool contains_point(const Polygon& polygon, const Eigen::Vector2d& p, double tolerance);
+
+/// Leading edge (largest x) and trailing edge (smallest x) where the line y = const
+/// crosses the outline [m]; nullopt outside the outline's y range.
+struct ChordLine {
+  double leading_x = 0.0;
+  double trailing_x = 0.0;
+  double length() const { return leading_x - trailing_x; }
+};
+std::optional<ChordLine> chord_at(const Polygon& polygon, double y);
+
+/// Summary numbers of a planform (see the definitions above).
+struct PlanformProperties {
+  double span = 0.0;          ///< R = max y [m]
+  double root_y = 0.0;        ///< min y [m]
+  double area = 0.0;          ///< S [m²]
+  double mean_chord = 0.0;    ///< c̄ = S / R [m]
+  double aspect_ratio = 0.0;  ///< R² / S [-]
+  double r2 = 0.0;            ///< sqrt(∫∫ y² dA / S) / R [-]
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();  ///< [m]
+};
+PlanformProperties planform_properties(const Polygon& polygon);
+
+}  // namespace flapsim::wings

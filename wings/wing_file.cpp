@@ -1,0 +1,300 @@
+#include "wings/wing_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <utility>
+
+#include "wings/input_error.hpp"
+#include "wings/outline_csv.hpp"
+#include "wings/planform_geometry.hpp"
+
+namespace flapsim::wings {
+
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// A dimension given either as one number (constant) or as [root, end] (linear taper).
+std::pair<double, double> read_taper(const TomlTable& t, std::string_view key) {
+  if (!t.has(key)) t.fail(key, "missing required key (a length or [root, end] lengths)");
+  if (t.is_number(key)) {
+    const double v = t.get_length(key, Bounds::positive());
+    return {v, v};
+  }
+  if (!t.is_array(key)) t.fail(key, "expected a length or an array [root, end] of two lengths");
+  const auto v = t.get_lengths(key, Bounds::positive());
+  if (v.size() != 2) t.fail(key, "expected [root, end]: 2 numbers, found " + std::to_string(v.size()));
+  return {v[0], v[1]};
+}
+
+Material read_material(const TomlTable& t) {
+  t.expect_only({"youngs_modulus", "poisson_ratio", "density"});
+  Material m;
+  m.youngs_modulus = t.get_double("youngs_modulus", Bounds::positive());
+  // Isotropic stability: −1 < ν < 1/2.
+  m.poisson_ratio = t.get_double("poisson_ratio", Bounds::open(-1.0, 0.5));
+  m.density = t.get_double("density", Bounds::positive());
+  return m;
+}
+
+const Material& find_material(const TomlTable& t, std::string_view key,
+                              const std::map<std::string, Material>& materials) {
+  const std::string name = t.get_string(key);
+  const auto it = materials.find(name);
+  if (it == materials.end()) {
+    std::string list;
+    for (const auto& [k, v] : materials) list += (list.empty() ? "" : ", ") + k;
+    t.fail(key, "unknown material \"" + name + "\"; [materials] defines: " +
+                    (list.empty() ? "(none)" : list));
+  }
+  return it->second;
+}
+
+// --- planform ---------------------------------------------------------------------------
+
+struct Planform {
+  Polygon outline;
+  double clamp_y = 0.0;
+};
+
+Planform read_planform(const TomlTable& p) {
+  p.expect_only({"outline", "outline_file", "span", "area", "clamp_y"});
+  const bool inline_pts = p.has("outline"), from_file = p.has("outline_file");
+  if (inline_pts == from_file)
+    p.fail(inline_pts ? "outline_file" : "outline",
+           "give exactly one of 'outline' (inline [[x, y], ...]) or 'outline_file' (CSV)");
+
+  Planform out;
+  std::string outline_key;
+  if (from_file) {
+    outline_key = "outline_file";
+    // The CSV is in units of the wing length; 'span' scales it.
+    if (!p.has("span")) p.fail("span", "missing required key: a CSV outline is scaled to 'span'");
+    out.outline = read_outline_csv(p.get_path("outline_file"), p.key_path("outline_file"));
+  } else {
+    outline_key = "outline";
+    const auto rows = p.get_number_rows("outline", 2);
+    if (rows.size() < 3)
+      p.fail("outline", "an outline needs at least 3 points, found " + std::to_string(rows.size()));
+    for (const auto& r : rows) out.outline.emplace_back(r[0] * p.length_scale(), r[1] * p.length_scale());
+  }
+
+  // 1. Scale uniformly so the largest y equals the span (pivot to tip).
+  double max_y = -1e300;
+  for (const auto& q : out.outline) max_y = std::max(max_y, q.y());
+  if (p.has("span")) {
+    const double span = p.get_length("span", Bounds::positive());
+    if (!(max_y > 0.0))
+      p.fail(outline_key, "the outline must reach y > 0 (the tip) to be scaled to the span");
+    const double k = span / max_y;
+    for (auto& q : out.outline) q *= k;
+  }
+
+  // 2. The polygon must be simple (checked before stretching, which keeps simplicity).
+  if (const auto hit = find_self_intersection(out.outline)) {
+    const int line = from_file ? p.line_of(outline_key)
+                               : p.line_of_element(outline_key, static_cast<std::size_t>(hit->first));
+    p.fail_at(line, outline_key,
+              "the outline is not a simple polygon: edge " + std::to_string(hit->first) +
+                  " (points " + std::to_string(hit->first) + "-" +
+                  std::to_string((hit->first + 1) % out.outline.size()) + ") touches or crosses edge " +
+                  std::to_string(hit->second));
+  }
+  const double signed_area = polygon_signed_area(out.outline);
+  if (signed_area == 0.0) p.fail(outline_key, "the outline has zero area");
+  if (signed_area < 0.0) std::reverse(out.outline.begin(), out.outline.end());
+  max_y = -1e300;
+  double min_y = 1e300;
+  for (const auto& q : out.outline) {
+    max_y = std::max(max_y, q.y());
+    min_y = std::min(min_y, q.y());
+  }
+  if (!(max_y > 0.0)) p.fail(outline_key, "the outline must reach y > 0 (the wing extends along +y)");
+
+  // 3. Optional chordwise stretch about x = 0 (the span axis) to a given area.
+  if (p.has("area")) {
+    const double area = p.get_double("area", Bounds::positive()) * p.length_scale() * p.length_scale();
+    const double k = area / polygon_area(out.outline);
+    for (auto& q : out.outline) q.x() *= k;
+  }
+
+  out.clamp_y = p.get_length("clamp_y");
+  if (!(out.clamp_y >= min_y && out.clamp_y < max_y))
+    p.fail("clamp_y", "must lie within the outline's span range [" + fmt(min_y / p.length_scale()) +
+                          ", " + fmt(max_y / p.length_scale()) + ") " + p.length_unit());
+  return out;
+}
+
+// --- veins --------------------------------------------------------------------------------
+
+Section read_section_end(const std::string& shape, const std::pair<double, double>& a,
+                         const std::pair<double, double>& b, bool root) {
+  Section s;
+  if (shape == "rectangle") {
+    s.shape = Section::Shape::Rectangle;
+    s.width = root ? a.first : a.second;
+    s.height = root ? b.first : b.second;
+  } else {
+    s.shape = Section::Shape::HollowCircle;
+    s.outer_diameter = root ? a.first : a.second;
+    s.wall = root ? b.first : b.second;
+  }
+  return s;
+}
+
+Vein read_vein(const TomlTable& v, std::size_t index, const Polygon& outline,
+               const std::map<std::string, Material>& materials) {
+  v.expect_only({"name", "material", "points", "chord_points", "subdivide", "shape",
+                 "outer_diameter", "wall", "width", "height"});
+  Vein vein;
+  vein.name = v.get_string("name", "vein " + std::to_string(index + 1));
+  vein.material = find_material(v, "material", materials);
+
+  const bool abs_pts = v.has("points"), chord_pts = v.has("chord_points");
+  if (abs_pts == chord_pts)
+    v.fail(abs_pts ? "chord_points" : "points",
+           "give exactly one of 'points' ([[x, y], ...] lengths) or 'chord_points' ([[y/R, xi], ...])");
+  const std::string pts_key = abs_pts ? "points" : "chord_points";
+  const auto rows = v.get_number_rows(pts_key, 2);
+  if (rows.size() < 2) v.fail(pts_key, "a vein needs at least 2 points, found " + std::to_string(rows.size()));
+
+  const double span = planform_properties(outline).span;
+  std::vector<std::size_t> source_row;  // which row of the file each point came from
+  if (abs_pts) {
+    if (v.has("subdivide")) v.fail("subdivide", "only applies to 'chord_points'");
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      vein.points.emplace_back(rows[i][0] * v.length_scale(), rows[i][1] * v.length_scale());
+      source_row.push_back(i);
+    }
+  } else {
+    const int sub = v.get_int("subdivide", 1, Bounds::closed(1, 1000));
+    auto to_xy = [&](double eta, double xi, std::size_t row) {
+      const auto c = chord_at(outline, eta * span);
+      if (!c)
+        v.fail_at(v.line_of_element(pts_key, row), pts_key,
+                  "y/R = " + fmt(eta) + " lies outside the outline's span range");
+      return Eigen::Vector2d(c->leading_x - xi * c->length(), eta * span);
+    };
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const int line = v.line_of_element(pts_key, i);
+      if (!(rows[i][0] >= 0.0 && rows[i][0] <= 1.0))
+        v.fail_at(line, pts_key, "y/R = " + fmt(rows[i][0]) + " must be in [0, 1]");
+      if (!(rows[i][1] >= 0.0 && rows[i][1] <= 1.0))
+        v.fail_at(line, pts_key, "chord fraction xi = " + fmt(rows[i][1]) +
+                                     " must be in [0, 1] (0 leading edge, 1 trailing edge)");
+    }
+    // Subdivide in (y/R, ξ) so a vein at constant ξ follows the curved edges.
+    vein.points.push_back(to_xy(rows[0][0], rows[0][1], 0));
+    source_row.push_back(0);
+    for (std::size_t i = 1; i < rows.size(); ++i)
+      for (int k = 1; k <= sub; ++k) {
+        const double u = double(k) / sub;
+        vein.points.push_back(to_xy((1 - u) * rows[i - 1][0] + u * rows[i][0],
+                                    (1 - u) * rows[i - 1][1] + u * rows[i][1], i));
+        source_row.push_back(i);
+      }
+  }
+  for (std::size_t i = 1; i < vein.points.size(); ++i)
+    if ((vein.points[i] - vein.points[i - 1]).norm() == 0.0)
+      v.fail_at(v.line_of_element(pts_key, source_row[i]), pts_key, "two consecutive points coincide");
+
+  // Inside the outline, or on its edge within 0.1 % of the span; segments are sampled
+  // so a vein cannot cut across a notch between two inside points.
+  const double tol = 1e-3 * span;
+  for (std::size_t i = 0; i < vein.points.size(); ++i) {
+    const int nsamp = i == 0 ? 1 : 8;
+    for (int k = 0; k < nsamp; ++k) {
+      const double u = i == 0 ? 0.0 : double(k + 1) / nsamp;
+      const Eigen::Vector2d q = i == 0 ? vein.points[0]
+                                       : ((1 - u) * vein.points[i - 1] + u * vein.points[i]).eval();
+      if (!contains_point(outline, q, tol)) {
+        v.fail_at(v.line_of_element(pts_key, source_row[i]), pts_key,
+                  "the vein leaves the outline near (x, y) = (" + fmt(q.x() / v.length_scale()) + ", " +
+                      fmt(q.y() / v.length_scale()) + ") " + v.length_unit() +
+                      " (tolerance " + fmt(tol / v.length_scale()) + " " + v.length_unit() + ")");
+      }
+    }
+  }
+
+  const std::string shape = v.get_choice("shape", {"hollow_circle", "rectangle"}, "hollow_circle");
+  if (shape == "hollow_circle") {
+    for (const char* k : {"width", "height"})
+      if (v.has(k)) v.fail(k, "only applies to shape = \"rectangle\"");
+    const auto d = read_taper(v, "outer_diameter");
+    const auto w = read_taper(v, "wall");
+    if (w.first > d.first / 2 * (1 + 1e-12) || w.second > d.second / 2 * (1 + 1e-12))
+      v.fail("wall", "the wall must not exceed half the outer diameter (wall = D/2 is a solid rod)");
+    vein.root_section = read_section_end(shape, d, w, true);
+    vein.tip_section = read_section_end(shape, d, w, false);
+  } else {
+    for (const char* k : {"outer_diameter", "wall"})
+      if (v.has(k)) v.fail(k, "only applies to shape = \"hollow_circle\"");
+    const auto w = read_taper(v, "width");
+    const auto h = read_taper(v, "height");
+    vein.root_section = read_section_end(shape, w, h, true);
+    vein.tip_section = read_section_end(shape, w, h, false);
+  }
+  return vein;
+}
+
+}  // namespace
+
+bool is_wing_document(const TomlTable& root) { return root.has("planform"); }
+
+Wing read_wing(TomlTable root) {
+  root.expect_only({"name", "description", "length_unit", "planform", "materials", "membrane",
+                    "veins", "mesh"});
+  root.read_length_unit();
+  Wing wing;
+  wing.source_file = root.file();
+  wing.name = root.get_string("name", std::filesystem::path(root.file()).stem().string());
+  if (root.has("description")) root.get_string("description");
+
+  // Materials first: membrane and veins refer to them by name.
+  std::map<std::string, Material> materials;
+  const TomlTable mats = root.get_table("materials");
+  for (const auto& name : mats.keys()) materials[name] = read_material(mats.get_table(name));
+
+  const Planform planform = read_planform(root.get_table("planform"));
+  wing.outline = planform.outline;
+  wing.clamp_y = planform.clamp_y;
+  const PlanformProperties props = planform_properties(wing.outline);
+  wing.span = props.span;
+
+  const TomlTable mem = root.get_table("membrane");
+  mem.expect_only({"thickness", "material", "nonstructural_mass_per_area"});
+  wing.membrane.thickness = mem.get_length("thickness", Bounds::positive());
+  wing.membrane.material = find_material(mem, "material", materials);
+  wing.membrane.nonstructural_mass_per_area =
+      mem.get_double("nonstructural_mass_per_area", 0.0, Bounds::non_negative());
+
+  const auto veins = root.get_tables("veins");
+  for (std::size_t i = 0; i < veins.size(); ++i)
+    wing.veins.push_back(read_vein(veins[i], i, wing.outline, materials));
+
+  // Mesh sizes default to R/50 (about 2500 membrane nodes on a hawkmoth-like planform).
+  wing.mesh.element_size = wing.span / 50.0;
+  wing.mesh.vein_element_size = wing.mesh.element_size;
+  if (const auto mesh = root.find_table("mesh")) {
+    mesh->expect_only({"element_size", "vein_element_size"});
+    wing.mesh.element_size = mesh->get_length("element_size", wing.mesh.element_size, Bounds::positive());
+    wing.mesh.vein_element_size =
+        mesh->get_length("vein_element_size", wing.mesh.element_size, Bounds::positive());
+    if (wing.mesh.vein_element_size > wing.mesh.element_size * (1 + 1e-12))
+      mesh->fail("vein_element_size", "must not exceed element_size");
+    if (wing.mesh.element_size > 0.5 * wing.span)
+      mesh->fail("element_size", "must not exceed half the span");
+  }
+  return wing;
+}
+
+Wing load_wing_file(const std::string& path) { return read_wing(parse_toml_file(path)); }
+
+}  // namespace flapsim::wings
