@@ -1,0 +1,138 @@
+#include "reduction/clamped_wing_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace flapsim::reduction {
+
+ClampedWingAnalysis::ClampedWingAnalysis(const fem::Mesh& mesh, const fem::AssembledSystem& system,
+                                         const fem::Constraints& constraints,
+                                         const AnalysisOptions& options)
+    : system_(&system), constraints_(&constraints), options_(options) {
+  const int nn = mesh.num_nodes();
+  if (nn == 0) throw std::invalid_argument("reduction: empty mesh");
+  if (constraints.num_dofs() != mesh.num_dofs())
+    throw std::invalid_argument("reduction: constraints do not match the mesh");
+  nodes_.resize(3, nn);
+  clamped_.assign(static_cast<std::size_t>(nn), false);
+  bool any = false;
+  for (int i = 0; i < nn; ++i) {
+    nodes_.col(i) = mesh.nodes[static_cast<std::size_t>(i)];
+    clamped_[static_cast<std::size_t>(i)] = constraints.is_fixed(fem::dof_index(i, fem::UZ));
+    any = any || clamped_[static_cast<std::size_t>(i)];
+  }
+  if (!any) throw std::invalid_argument("reduction: the FEM needs a clamped root (no node is clamped)");
+  if (nodes_.row(2).cwiseAbs().maxCoeff() > 1e-9 * (nodes_.row(1).maxCoeff() - nodes_.row(1).minCoeff()))
+    throw std::invalid_argument("reduction: the wing must be flat (z = 0) at rest");
+  // Typical element size: mean triangle edge (or beam length if there are no shells).
+  double total = 0.0;
+  long count = 0;
+  for (const auto& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e) {
+      total += (mesh.nodes[static_cast<std::size_t>(t[e])] - mesh.nodes[static_cast<std::size_t>(t[(e + 1) % 3])]).norm();
+      ++count;
+    }
+  for (const auto& b : mesh.beams) {
+    total += (mesh.nodes[static_cast<std::size_t>(b.nodes[0])] - mesh.nodes[static_cast<std::size_t>(b.nodes[1])]).norm();
+    ++count;
+  }
+  element_size_ = count > 0 ? total / static_cast<double>(count) : 0.0;
+
+  solver_ = std::make_unique<fem::StaticSolver>(system.stiffness, constraints);
+  const double span = nodes_.row(1).maxCoeff();
+  const double zone_length = options.tip_zone_fraction * span;
+
+  // First pass along y_W; then the fitted axis through the pivot.
+  setup_frame(AxisFrame{0.0}, zone_length);
+  solve_load_cases();
+  if (options.axis == AxisChoice::fitted) {
+    const int cells = std::max(options.axis_fit_cells, 4);
+    std::vector<double> sections;
+    const double s_end = zone_.s_start;
+    for (int k = 0; k <= cells; ++k)
+      sections.push_back(s_root_ + (s_end - s_root_) * static_cast<double>(k) / cells);
+    const SectionSampler smp = sampler(sections, 0.5 * (s_end - s_root_) / cells);
+    const std::vector<double> nea = cell_elastic_axis(smp);
+    double num = 0.0, den = 0.0;
+    for (int k = 0; k < cells; ++k) {
+      const double sc = 0.5 * (sections[static_cast<std::size_t>(k)] + sections[static_cast<std::size_t>(k + 1)]);
+      const double w = sections[static_cast<std::size_t>(k + 1)] - sections[static_cast<std::size_t>(k)];
+      if (!std::isfinite(nea[static_cast<std::size_t>(k)])) continue;
+      num += w * sc * nea[static_cast<std::size_t>(k)];
+      den += w * sc * sc;
+    }
+    const double psi = den > 0.0 ? std::atan(num / den) : 0.0;
+    setup_frame(AxisFrame{psi}, zone_length);
+    solve_load_cases();
+  }
+}
+
+void ClampedWingAnalysis::setup_frame(const AxisFrame& axis, double tip_zone_length) {
+  axis_ = axis;
+  const Eigen::Index nn = nodes_.cols();
+  s_.resize(nn);
+  n_.resize(nn);
+  s_root_ = -1e300;
+  for (Eigen::Index i = 0; i < nn; ++i) {
+    s_[i] = axis_.s(nodes_.col(i));
+    n_[i] = axis_.n(nodes_.col(i));
+    if (clamped_[static_cast<std::size_t>(i)]) s_root_ = std::max(s_root_, s_[i]);
+  }
+  s_tip_ = s_.maxCoeff();
+  zone_ = make_tip_zone(s_, n_, tip_zone_length, clamped_);
+  if (zone_.s_start <= s_root_)
+    throw std::invalid_argument("reduction: the tip zone reaches the clamped root; the wing is too short");
+  // The two forces for the elastic axis: a quarter of the zone's chord either side.
+  const double half = 0.25 * (zone_.n_max - zone_.n_min);
+  n1_ = zone_.n_centroid + half;
+  n2_ = zone_.n_centroid - half;
+}
+
+void ClampedWingAnalysis::solve_load_cases() {
+  moment_ = options_.unit_moment;
+  force_ = options_.unit_force;
+  wrenches_.assign(kNumLoadCases, TipWrench{});
+  wrenches_[kBendingMoment].moment_n = moment_;
+  wrenches_[kTorque].moment_s = moment_;
+  wrenches_[kForceLeading] = force_at(zone_, force_, n1_);
+  wrenches_[kForceTrailing] = force_at(zone_, force_, n2_);
+  wrenches_[kForceOnAxis] = force_at(zone_, force_, 0.0);
+  Eigen::MatrixXd loads(6 * nodes_.cols(), kNumLoadCases);
+  for (int c = 0; c < kNumLoadCases; ++c)
+    loads.col(c) = tip_load_vector(zone_, s_, n_, wrenches_[static_cast<std::size_t>(c)]);
+  const Eigen::MatrixXd u = solver_->solve(loads);
+  uz_.resize(nodes_.cols(), kNumLoadCases);
+  for (Eigen::Index i = 0; i < nodes_.cols(); ++i) uz_.row(i) = u.row(fem::dof_index(static_cast<int>(i), fem::UZ));
+  if (!uz_.allFinite()) throw std::runtime_error("reduction: static solve gave non-finite displacements");
+}
+
+SectionSampler ClampedWingAnalysis::sampler(const std::vector<double>& sections, double half_width) const {
+  return SectionSampler(s_, n_, sections, std::max(half_width, 2.0 * element_size_));
+}
+
+std::vector<RigidMass> ClampedWingAnalysis::strips(const std::vector<double>& edges) const {
+  const int ns = static_cast<int>(edges.size()) - 1;
+  if (ns < 1) throw std::invalid_argument("reduction: at least one strip expected");
+  std::vector<int> strip(static_cast<std::size_t>(nodes_.cols()));
+  for (Eigen::Index i = 0; i < nodes_.cols(); ++i) {
+    const auto it = std::upper_bound(edges.begin() + 1, edges.end() - 1, s_[i]);
+    strip[static_cast<std::size_t>(i)] = static_cast<int>(it - (edges.begin() + 1));
+  }
+  return strip_rigid_masses(system_->mass, nodes_, strip, ns);
+}
+
+std::vector<double> ClampedWingAnalysis::cell_elastic_axis(const SectionSampler& sampler) const {
+  std::vector<double> out;
+  const Eigen::VectorXd u1 = uz_.col(kForceLeading), u2 = uz_.col(kForceTrailing);
+  for (int k = 0; k + 1 < sampler.num_sections(); ++k) {
+    const double d1 = sampler.sample(k + 1, u1).phi - sampler.sample(k, u1).phi;
+    const double d2 = sampler.sample(k + 1, u2).phi - sampler.sample(k, u2).phi;
+    // n_ea = (n₂Δφ₁ − n₁Δφ₂)/(Δφ₁ − Δφ₂)  (DESIGN.md, per cell)
+    out.push_back(std::abs(d1 - d2) > 0.0 ? (n2_ * d1 - n1_ * d2) / (d1 - d2)
+                                          : std::numeric_limits<double>::quiet_NaN());
+  }
+  return out;
+}
+
+}  // namespace flapsim::reduction

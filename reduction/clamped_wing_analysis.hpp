@@ -1,0 +1,113 @@
+#pragma once
+/// \file clamped_wing_analysis.hpp
+/// \brief The measurements the reduction makes on the root-clamped FEM: the
+/// flexural-axis frame, the tip zone, and the static load cases (unit bending
+/// moment, unit torque, tip forces at two chord positions, tip force on the axis),
+/// solved with one CHOLMOD factorisation (docs/reduction.md).
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <vector>
+
+#include "fem/assembly.hpp"
+#include "fem/constraints.hpp"
+#include "fem/mesh.hpp"
+#include "fem/static_solver.hpp"
+#include "reduction/axis_frame.hpp"
+#include "reduction/section_fit.hpp"
+#include "reduction/strip_mass.hpp"
+#include "reduction/tip_loads.hpp"
+
+namespace flapsim::reduction {
+
+/// How the flexural axis is chosen.
+enum class AxisChoice {
+  fitted,  ///< least-squares line through the pivot and the per-cell elastic-axis points
+  span,    ///< y_W itself (ψ = 0)
+};
+
+struct AnalysisOptions {
+  AxisChoice axis = AxisChoice::fitted;
+  int axis_fit_cells = 20;            ///< cells of the first (ψ = 0) pass for the axis fit
+  double tip_zone_fraction = 0.025;    ///< loaded tip zone, fraction of the span [-]
+  double unit_moment = 1e-6;          ///< magnitude of the load cases [N m] (linear: any value)
+  double unit_force = 1e-4;           ///< [N]
+};
+
+/// The static load cases, in the order of the columns of ClampedWingAnalysis::uz().
+enum LoadCase : int {
+  kBendingMoment = 0,  ///< moment about e_n
+  kTorque = 1,         ///< moment about e_s
+  kForceLeading = 2,   ///< force at n₁ (leading side of the tip zone)
+  kForceTrailing = 3,  ///< force at n₂ (trailing side)
+  kForceOnAxis = 4,    ///< force at n = 0
+  kNumLoadCases = 5
+};
+
+/// \brief The root-clamped FEM seen from the flexural axis.
+class ClampedWingAnalysis {
+ public:
+  /// \param mesh         FEM mesh (wing frame, pivot at the origin)
+  /// \param system       assembled K and M
+  /// \param constraints  the root clamp (at least one clamped node)
+  /// \param options      axis choice, tip zone, load magnitudes
+  ClampedWingAnalysis(const fem::Mesh& mesh, const fem::AssembledSystem& system,
+                      const fem::Constraints& constraints, const AnalysisOptions& options = {});
+
+  const AxisFrame& axis() const { return axis_; }
+  const TipZone& tip_zone() const { return zone_; }
+  double s_root() const { return s_root_; }  ///< outboard end of the clamp on the axis [m]
+  double s_tip() const { return s_tip_; }    ///< largest s of the wing [m]
+  const Eigen::VectorXd& s() const { return s_; }  ///< node span coordinates [m]
+  const Eigen::VectorXd& n() const { return n_; }  ///< node chordwise coordinates [m]
+  const Eigen::Matrix3Xd& nodes() const { return nodes_; }
+  const std::vector<bool>& clamped() const { return clamped_; }
+  /// Out-of-plane displacement of every node, one column per LoadCase [m].
+  const Eigen::MatrixXd& uz() const { return uz_; }
+  /// The wrench of each load case (about the tip zone's centroid).
+  const std::vector<TipWrench>& wrenches() const { return wrenches_; }
+  double n_force_leading() const { return n1_; }   ///< [m]
+  double n_force_trailing() const { return n2_; } ///< [m]
+  double moment() const { return moment_; }        ///< bending moment of its case [N m]
+  double torque() const { return moment_; }        ///< torque of its case [N m]
+  /// Typical element size (mean edge length) [m].
+  double element_size() const { return element_size_; }
+  /// FEM mass matrix and stiffness (for strip sums and modes).
+  const fem::AssembledSystem& system() const { return *system_; }
+  const fem::Constraints& constraints() const { return *constraints_; }
+
+  /// \brief A section sampler at axis positions \p sections, band half-width at least
+  /// \p half_width and two element sizes.
+  SectionSampler sampler(const std::vector<double>& sections, double half_width) const;
+
+  /// \brief Rigid-body mass properties (about the pivot, wing axes) of the strips
+  /// cut at the increasing axis positions \p edges (size N + 1): strip k holds the
+  /// nodes with edges[k] ≤ s < edges[k+1]; the first also everything below
+  /// edges[0], the last everything from edges[N] on.
+  std::vector<RigidMass> strips(const std::vector<double>& edges) const;
+
+  /// \brief Per-cell elastic-axis offsets n_ea from the twist increments under the two
+  /// tip forces, for cells between the sections of \p sampler (size N_sections − 1) [m].
+  std::vector<double> cell_elastic_axis(const SectionSampler& sampler) const;
+
+ private:
+  void setup_frame(const AxisFrame& axis, double tip_zone_length);
+  void solve_load_cases();
+
+  const fem::AssembledSystem* system_ = nullptr;
+  const fem::Constraints* constraints_ = nullptr;
+  AnalysisOptions options_;
+  std::unique_ptr<fem::StaticSolver> solver_;  // one factorisation for both passes
+  Eigen::Matrix3Xd nodes_;
+  std::vector<bool> clamped_;
+  AxisFrame axis_;
+  Eigen::VectorXd s_, n_;
+  TipZone zone_;
+  double s_root_ = 0.0, s_tip_ = 0.0, n1_ = 0.0, n2_ = 0.0, moment_ = 0.0, force_ = 0.0;
+  double element_size_ = 0.0;
+  std::vector<TipWrench> wrenches_;
+  Eigen::MatrixXd uz_;
+};
+
+}  // namespace flapsim::reduction

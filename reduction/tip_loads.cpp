@@ -1,0 +1,71 @@
+#include "reduction/tip_loads.hpp"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace flapsim::reduction {
+
+TipZone make_tip_zone(const Eigen::VectorXd& s, const Eigen::VectorXd& n, double length,
+                      const std::vector<bool>& excluded, int min_nodes) {
+  if (s.size() == 0) throw std::invalid_argument("make_tip_zone: no nodes");
+  const double s_max = s.maxCoeff();
+  const double extent = s_max - s.minCoeff();
+  double ell = std::max(length, 1e-12 * extent);
+  for (;;) {
+    TipZone zone;
+    zone.s_start = s_max - ell;
+    double s_lo = 1e300, s_hi = -1e300, n_lo = 1e300, n_hi = -1e300;
+    for (Eigen::Index i = 0; i < s.size(); ++i) {
+      if (!excluded.empty() && excluded[static_cast<std::size_t>(i)]) continue;
+      if (s[i] < zone.s_start) continue;
+      zone.nodes.push_back(static_cast<int>(i));
+      s_lo = std::min(s_lo, s[i]);
+      s_hi = std::max(s_hi, s[i]);
+      n_lo = std::min(n_lo, n[i]);
+      n_hi = std::max(n_hi, n[i]);
+    }
+    const double tol = 1e-9 * std::max(extent, 1e-300);
+    if (static_cast<int>(zone.nodes.size()) >= min_nodes && s_hi - s_lo > tol && n_hi - n_lo > tol) {
+      for (int i : zone.nodes) {
+        zone.s_centroid += s[i];
+        zone.n_centroid += n[i];
+      }
+      zone.s_centroid /= static_cast<double>(zone.nodes.size());
+      zone.n_centroid /= static_cast<double>(zone.nodes.size());
+      zone.n_min = n_lo;
+      zone.n_max = n_hi;
+      return zone;
+    }
+    if (ell > extent) throw std::runtime_error("make_tip_zone: too few loadable nodes near the tip");
+    ell *= 1.25;
+  }
+}
+
+Eigen::VectorXd tip_load_vector(const TipZone& zone, const Eigen::VectorXd& s,
+                                const Eigen::VectorXd& n, const TipWrench& wrench) {
+  const int m = static_cast<int>(zone.nodes.size());
+  // Constraint rows: resultant force, moment about e_n, moment about e_s.
+  Eigen::MatrixXd a(3, m);
+  for (int r = 0; r < m; ++r) {
+    const int i = zone.nodes[static_cast<std::size_t>(r)];
+    a.col(r) << 1.0, s[i] - zone.s_centroid, -(n[i] - zone.n_centroid);
+  }
+  const Eigen::Vector3d b(wrench.force_z, wrench.moment_n, wrench.moment_s);
+  const Eigen::Vector3d lambda = (a * a.transpose()).ldlt().solve(b);
+  const Eigen::VectorXd f = a.transpose() * lambda;
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(6 * s.size());
+  for (int r = 0; r < m; ++r) load[6 * zone.nodes[static_cast<std::size_t>(r)] + 2] = f[r];
+  return load;
+}
+
+TipWrench force_at(const TipZone& zone, double force_z, double n_point) {
+  TipWrench w;
+  w.force_z = force_z;
+  w.moment_s = -force_z * (n_point - zone.n_centroid);
+  return w;
+}
+
+}  // namespace flapsim::reduction
