@@ -1,0 +1,206 @@
+#include "pipeline/case/case_file.hpp"
+
+#include <filesystem>
+#include <numbers>
+#include <stdexcept>
+
+#include "wings/input_error.hpp"
+
+namespace flapsim::pipeline {
+
+using wings::Bounds;
+using wings::TomlTable;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::string existing_file(const TomlTable& t, std::string_view key) {
+  const std::string path = t.get_path(key);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    t.fail(key, "file not found: " + path + " (paths are relative to the case file's folder)");
+  return path;
+}
+
+mbd::WingKinematics read_kinematics(const TomlTable& k) {
+  k.expect_only({"frequency_hz", "rotation_phase", "stroke_plane_deg", "sweep", "deviation",
+                 "rotation"});
+  mbd::WingKinematics kin;
+  kin.frequency = k.get_double("frequency_hz", Bounds::positive());
+  kin.rotation_phase = k.get_double("rotation_phase", 0.0, Bounds::closed(-1.0, 1.0));
+  kin.stroke_plane_angle = k.get_double("stroke_plane_deg", 0.0, Bounds::closed(-180.0, 180.0)) * kDeg;
+  if (!k.has("sweep")) k.fail("sweep", "missing required key (the sweep angle signal)");
+  if (!k.has("rotation")) k.fail("rotation", "missing required key (the rotation angle signal)");
+  const mbd::PeriodicSignal zero;
+  kin.sweep = read_periodic_signal(k, "sweep", "_deg", "deg", kDeg, zero);
+  kin.deviation = read_periodic_signal(k, "deviation", "_deg", "deg", kDeg, zero);
+  kin.rotation = read_periodic_signal(k, "rotation", "_deg", "deg", kDeg, zero);
+  return kin;
+}
+
+Case::Air read_air(const TomlTable& root) {
+  Case::Air air;
+  if (!root.has("air")) return air;  // standard sea-level air, hover
+  if (root.is_string("air")) {
+    const std::string v = root.get_choice("air", {"none"});
+    air.enabled = v != "none";
+    return air;
+  }
+  const TomlTable a = root.get_table("air");
+  a.expect_only({"density", "freestream"});
+  air.density = a.get_double("density", air.density, Bounds::positive());
+  if (a.has("freestream")) {
+    const auto u = a.get_doubles("freestream");
+    if (u.size() != 3) a.fail("freestream", "expected [u, v, w] in m/s (3 numbers), found " +
+                                                std::to_string(u.size()));
+    air.freestream = Eigen::Vector3d(u[0], u[1], u[2]);
+  }
+  return air;
+}
+
+Case::Structure read_structure(const TomlTable& root) {
+  Case::Structure s;
+  const TomlTable t = root.get_table("structure");
+  t.expect_only({"kind", "bodies"});
+  const std::string kind = t.get_choice("kind", {"rigid", "flexible"});
+  if (kind == "rigid") {
+    s.kind = Case::Structure::Kind::Rigid;
+    s.bodies = t.get_int("bodies", 1, Bounds::closed(1, 1));
+  } else {
+    s.kind = Case::Structure::Kind::Flexible;
+    s.bodies = t.get_int("bodies", Bounds::closed(2, 1000));
+  }
+  return s;
+}
+
+Case::Numerics read_numerics(const TomlTable& root) {
+  Case::Numerics n;
+  const auto t = root.find_table("numerics");
+  if (!t) return n;
+  t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
+                  "core_model", "core_radius", "wake_order", "wake_max_rows", "free_wake",
+                  "max_coupling_iterations", "coupling_tolerance"});
+  n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
+  n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
+  n.chordwise_panels = t->get_int("chordwise_panels", n.chordwise_panels, Bounds::closed(1, 1000));
+  n.spanwise_panels = t->get_int("spanwise_panels", n.spanwise_panels, Bounds::closed(1, 1000));
+  n.spacing = t->get_choice("spacing", {"uniform", "cosine"}, n.spacing);
+  n.core_model = t->get_choice("core_model", {"cutoff", "lamb_oseen"}, n.core_model);
+  n.core_radius = t->get_double("core_radius", n.core_radius, Bounds{0.0, 1.0, true, false});
+  n.wake_order = t->get_int("wake_order", n.wake_order, Bounds::closed(1, 2));
+  n.wake_max_rows = t->get_int("wake_max_rows", n.wake_max_rows, Bounds::non_negative());
+  n.free_wake = t->get_bool("free_wake", n.free_wake);
+  n.max_coupling_iterations =
+      t->get_int("max_coupling_iterations", n.max_coupling_iterations, Bounds::closed(1, 100000));
+  n.coupling_tolerance =
+      t->get_double("coupling_tolerance", n.coupling_tolerance, Bounds{0.0, 1.0, true, true});
+  return n;
+}
+
+int read_body(const TomlTable& t, int bodies) {
+  return t.get_int("body", Bounds::closed(1, bodies));
+}
+
+PointLoad read_load(const TomlTable& t, int bodies) {
+  t.expect_only({"body", "point", "frame", "force_x", "force_y", "force_z", "moment_x",
+                 "moment_y", "moment_z"});
+  PointLoad load;
+  load.body = read_body(t, bodies);
+  load.point = t.get_length_vector3("point", Eigen::Vector3d::Zero());
+  load.ground_frame = t.get_choice("frame", {"ground", "body"}) == "ground";
+  const mbd::PeriodicSignal zero;
+  const char* forces[3] = {"force_x", "force_y", "force_z"};
+  const char* moments[3] = {"moment_x", "moment_y", "moment_z"};
+  for (int i = 0; i < 3; ++i) {
+    load.force[i] = read_periodic_signal(t, forces[i], "", "value", 1.0, zero);
+    load.moment[i] = read_periodic_signal(t, moments[i], "", "value", 1.0, zero);
+  }
+  return load;
+}
+
+Marker read_marker(const TomlTable& t, std::size_t i, int bodies) {
+  t.expect_only({"name", "body", "point"});
+  Marker m;
+  m.name = t.get_string("name", "marker " + std::to_string(i + 1));
+  m.body = read_body(t, bodies);
+  m.point = t.get_length_vector3("point");
+  return m;
+}
+
+}  // namespace
+
+mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_view key,
+                                         std::string_view suffix, std::string_view values_key,
+                                         double scale, const mbd::PeriodicSignal& fallback) {
+  if (!table.has(key)) return fallback;
+  if (table.is_number(key))
+    return mbd::PeriodicSignal::harmonic(table.get_double(key) * scale, {}, {});
+  if (!table.is_table(key))
+    table.fail(key, "expected a number or a signal table { mean" + std::string(suffix) + " = ..., cos" +
+                        std::string(suffix) + " = [...], sin" + std::string(suffix) +
+                        " = [...] } or { phase = [...], " + std::string(values_key) + " = [...] }");
+  const TomlTable s = table.get_table(key);
+  const std::string mean_k = "mean" + std::string(suffix), cos_k = "cos" + std::string(suffix),
+                    sin_k = "sin" + std::string(suffix);
+  if (s.has("phase") || s.has(values_key)) {
+    s.expect_only({"phase", values_key});
+    const auto phase = s.get_doubles("phase", Bounds{0.0, 1.0, false, true}, 3);
+    auto values = s.get_doubles(values_key, Bounds::any(), 3);
+    if (values.size() != phase.size())
+      s.fail(values_key, "needs as many entries as 'phase' (" + std::to_string(phase.size()) +
+                             "), found " + std::to_string(values.size()));
+    for (std::size_t i = 1; i < phase.size(); ++i)
+      if (!(phase[i] > phase[i - 1]))
+        s.fail_at(s.line_of_element("phase", i), "phase",
+                  "phases must be strictly increasing (entry " + std::to_string(i) + ")");
+    for (double& v : values) v *= scale;
+    try {
+      return mbd::PeriodicSignal::tabulated(phase, values);
+    } catch (const std::invalid_argument& e) {
+      s.fail("phase", e.what());
+    }
+  }
+  s.expect_only({mean_k, cos_k, sin_k});
+  auto cos_c = s.find_doubles(cos_k);
+  auto sin_c = s.find_doubles(sin_k);
+  for (double& v : cos_c) v *= scale;
+  for (double& v : sin_c) v *= scale;
+  return mbd::PeriodicSignal::harmonic(s.get_double(mean_k, 0.0, Bounds::any()) * scale,
+                                       std::move(cos_c), std::move(sin_c));
+}
+
+bool is_case_document(const TomlTable& root) { return root.has("kinematics"); }
+
+Case read_case(TomlTable root) {
+  root.expect_only({"name", "description", "length_unit", "wing", "chain", "kinematics", "air",
+                    "structure", "numerics", "output", "loads", "markers"});
+  root.read_length_unit();
+  Case c;
+  c.file = root.file();
+  c.name = root.get_string("name", std::filesystem::path(root.file()).stem().string());
+  if (root.has("description")) root.get_string("description");
+  if (!root.has("wing") && !root.has("chain"))
+    root.fail("wing", "missing required key: a case names a wing file ('wing') or a chain file ('chain')");
+  if (root.has("wing")) c.wing_file = existing_file(root, "wing");
+  if (root.has("chain")) c.chain_file = existing_file(root, "chain");
+
+  c.kinematics = read_kinematics(root.get_table("kinematics"));
+  c.air = read_air(root);
+  c.structure = read_structure(root);
+  c.numerics = read_numerics(root);
+  if (const auto out = root.find_table("output")) {
+    out->expect_only({"vtk_every"});
+    c.output.vtk_every = out->get_int("vtk_every", c.output.vtk_every, Bounds::non_negative());
+  }
+  const auto loads = root.get_tables("loads");
+  for (const auto& t : loads) c.loads.push_back(read_load(t, c.structure.bodies));
+  const auto markers = root.get_tables("markers");
+  for (std::size_t i = 0; i < markers.size(); ++i)
+    c.markers.push_back(read_marker(markers[i], i, c.structure.bodies));
+  return c;
+}
+
+Case load_case_file(const std::string& path) { return read_case(wings::parse_toml_file(path)); }
+
+}  // namespace flapsim::pipeline

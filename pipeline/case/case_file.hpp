@@ -1,0 +1,37 @@
+#pragma once
+/// \file case_file.hpp
+/// \brief Reading case files (docs/case_file.md) and periodic signals from TOML.
+/// load_case_file itself is declared in case_model.hpp; this header adds the pieces
+/// other readers (chain files, sweeps) reuse.
+
+#include <string>
+#include <string_view>
+
+#include "mbd/periodic_signal.hpp"
+#include "pipeline/case/case_model.hpp"
+#include "wings/toml_reader.hpp"
+
+namespace flapsim::pipeline {
+
+/// Reads a case from an already parsed TOML document (top-level table); paths resolve
+/// against the document's folder.
+/// \throws flapsim::InputError
+Case read_case(wings::TomlTable root);
+
+/// True if the top-level table looks like a case file (it has a [kinematics] table).
+bool is_case_document(const wings::TomlTable& root);
+
+/// A periodic signal from `table[key]`: a number (constant), a harmonic table
+/// { mean<suffix> = m, cos<suffix> = [a1, a2, ...], sin<suffix> = [b1, ...] } or a
+/// tabulated one { phase = [s0, s1, ...], <values_key> = [v0, v1, ...] } (periodic cubic
+/// spline, phases strictly increasing in [0, 1), at least 3 points). Values are multiplied
+/// by `scale` (e.g. π/180 for degrees).
+/// \param suffix     key suffix of the harmonic coefficients, e.g. "_deg" or ""
+/// \param values_key key of the tabulated values, e.g. "deg" or "value"
+/// \param fallback   returned when the key is absent
+/// \throws flapsim::InputError
+mbd::PeriodicSignal read_periodic_signal(const wings::TomlTable& table, std::string_view key,
+                                         std::string_view suffix, std::string_view values_key,
+                                         double scale, const mbd::PeriodicSignal& fallback);
+
+}  // namespace flapsim::pipeline

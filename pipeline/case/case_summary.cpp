@@ -1,0 +1,79 @@
+#include "pipeline/case/case_summary.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace flapsim::pipeline {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+template <typename... Args>
+std::string line(const char* format, Args... args) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf, format, args...);
+  return std::string(buf) + "\n";
+}
+
+}  // namespace
+
+std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angles& a) {
+  const double dphi = a.sweep.rate;
+  if (std::abs(dphi) < 1e-9) return std::nullopt;
+  return dphi < 0.0 ? a.rotation.value : std::numbers::pi - a.rotation.value;
+}
+
+std::string describe_case(const Case& c) {
+  std::string s = "case '" + c.name + "' (" + c.file + ")\n";
+  if (!c.wing_file.empty()) s += "  wing                   " + c.wing_file + "\n";
+  if (!c.chain_file.empty()) s += "  chain                  " + c.chain_file + "\n";
+  const auto& k = c.kinematics;
+  s += line("  frequency              %10.4g Hz", k.frequency);
+  s += line("  rotation phase         %10.4g of the period (< 0: advanced rotation)", k.rotation_phase);
+  s += line("  stroke plane angle     %10.4g deg", k.stroke_plane_angle * kRadToDeg);
+  s += "  kinematics (AoA: geometric angle of attack; '-' at stroke reversal)\n";
+  s += "    phase f*t   sweep phi  deviation theta  rotation alpha   AoA    [deg]\n";
+  for (double phase : {0.0, 0.25, 0.5, 0.75}) {
+    const auto a = k.angles(phase / k.frequency);
+    const auto aoa = geometric_angle_of_attack(a);
+    char aoa_text[32];
+    if (aoa)
+      std::snprintf(aoa_text, sizeof aoa_text, "%7.2f", *aoa * kRadToDeg);
+    else
+      std::snprintf(aoa_text, sizeof aoa_text, "%7s", "-");
+    const char* stroke = !aoa ? "reversal" : (a.sweep.rate < 0 ? "downstroke" : "upstroke");
+    s += line("    %9.2f  %10.2f  %15.2f  %14.2f  %s  %s", phase, a.sweep.value * kRadToDeg,
+              a.deviation.value * kRadToDeg, a.rotation.value * kRadToDeg, aoa_text, stroke);
+  }
+  if (c.air.enabled)
+    s += line("  air                    density %.4g kg/m^3, free stream (%.4g, %.4g, %.4g) m/s",
+              c.air.density, c.air.freestream.x(), c.air.freestream.y(), c.air.freestream.z());
+  else
+    s += "  air                    none (vacuum)\n";
+  if (c.structure.kind == Case::Structure::Kind::Rigid)
+    s += "  structure              rigid\n";
+  else
+    s += line("  structure              flexible, %d bodies", c.structure.bodies);
+  const auto& n = c.numerics;
+  s += line("  time steps             %d per cycle x %d cycles = %d (dt = %.4g ms)", n.steps_per_cycle,
+            n.cycles, n.steps_per_cycle * n.cycles, 1e3 / (k.frequency * n.steps_per_cycle));
+  s += line("  panels                 %d chordwise x %d spanwise (%s)", n.chordwise_panels,
+            n.spanwise_panels, n.spacing.c_str());
+  s += line("  vortex core            %s, radius %.4g mean chords", n.core_model.c_str(), n.core_radius);
+  s += line("  wake                   %s, order %d, %s", n.free_wake ? "free" : "prescribed", n.wake_order,
+            n.wake_max_rows > 0 ? (std::to_string(n.wake_max_rows) + " rows kept").c_str()
+                                : "all rows kept");
+  s += line("  coupling               at most %d iterations, tolerance %.3g", n.max_coupling_iterations,
+            n.coupling_tolerance);
+  if (c.output.vtk_every > 0)
+    s += line("  VTK output             every %d steps", c.output.vtk_every);
+  else
+    s += "  VTK output             none\n";
+  s += line("  point loads            %zu", c.loads.size());
+  s += line("  markers                %zu", c.markers.size());
+  return s;
+}
+
+}  // namespace flapsim::pipeline
