@@ -1,0 +1,75 @@
+#include "pipeline/output/pvd_series.hpp"
+
+#include "pipeline/output/atomic_file.hpp"
+#include "pipeline/output/csv_writer.hpp"
+
+#include <cstdio>
+#include <ostream>
+
+namespace flapsim::output {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string xml_attribute(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+PvdSeries::PvdSeries(fs::path path) : path_(std::move(path)) { write(); }
+
+void PvdSeries::add(double time, const fs::path& file, int part) {
+  std::string name;
+  if (file.is_absolute()) {
+    const fs::path dir = fs::absolute(path_).parent_path();
+    name = file.lexically_relative(dir).generic_string();
+    if (name.empty()) name = file.generic_string();
+  } else {
+    name = file.lexically_normal().generic_string();
+  }
+  entries_.push_back({time, part, std::move(name)});
+  try {
+    write();
+  } catch (...) {
+    entries_.pop_back();  // the .pvd on disk still lists the previous steps
+    throw;
+  }
+}
+
+std::string PvdSeries::step_file_name(std::string_view stem, long step, std::string_view extension) {
+  char digits[32];
+  std::snprintf(digits, sizeof(digits), "%06ld", step);
+  std::string name(stem);
+  name += '_';
+  name += digits;
+  name += '.';
+  name += extension;
+  return name;
+}
+
+void PvdSeries::write() const {
+  write_file_atomically(path_, [&](std::ostream& out) {
+    out << "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+           "  <Collection>\n";
+    for (const Entry& e : entries_)
+      out << "    <DataSet timestep=\"" << format_number(e.time) << "\" group=\"\" part=\"" << e.part
+          << "\" file=\"" << xml_attribute(e.file) << "\"/>\n";
+    out << "  </Collection>\n"
+           "</VTKFile>\n";
+  });
+}
+
+}  // namespace flapsim::output

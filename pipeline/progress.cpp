@@ -1,0 +1,88 @@
+#include "pipeline/progress.hpp"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <cstring>
+
+namespace flapsim::pipeline {
+
+namespace {
+
+constexpr auto kRedrawInterval = std::chrono::milliseconds(200);  // ~5 Hz
+
+ProgressLine::Mode resolve(ProgressLine::Mode mode, std::FILE* stream) {
+  if (mode != ProgressLine::Mode::automatic) return mode;
+  if (const char* q = std::getenv("FLAPSIM_QUIET"); q && std::strcmp(q, "1") == 0)
+    return ProgressLine::Mode::quiet;
+  if (stream && ::isatty(::fileno(stream))) return ProgressLine::Mode::live;
+  return ProgressLine::Mode::final_only;
+}
+
+}  // namespace
+
+ProgressLine::ProgressLine(long total, std::FILE* stream, Mode mode)
+    : total_(total), stream_(stream), mode_(resolve(mode, stream)),
+      start_(std::chrono::steady_clock::now()), last_draw_(start_) {
+  if (!stream_) mode_ = Mode::quiet;
+}
+
+ProgressLine::~ProgressLine() { finish(); }
+
+std::string ProgressLine::format(long step, long total, double time, std::string_view extra) {
+  char buf[96];
+  std::snprintf(buf, sizeof(buf), "step %ld/%ld  t=%.4f s", step, total, time);
+  std::string line(buf);
+  if (!extra.empty()) {
+    line += "  ";
+    line += extra;
+  }
+  return line;
+}
+
+void ProgressLine::update(long step, double time, std::string_view extra) {
+  step_ = step;
+  time_ = time;
+  if (mode_ != Mode::live) {
+    extra_.assign(extra);  // kept for the final line
+    return;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  if (drawn_ && now - last_draw_ < kRedrawInterval) {
+    extra_.assign(extra);
+    return;
+  }
+  extra_.assign(extra);
+  last_draw_ = now;
+  draw(format(step_, total_, time_, extra_), false);
+}
+
+void ProgressLine::finish(std::string_view extra) {
+  if (finished_) return;
+  finished_ = true;
+  if (mode_ == Mode::quiet) return;
+  if (!extra.empty()) extra_.assign(extra);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), "  (%.1f s wall)", wall);
+  draw(format(step_, total_, time_, extra_) + buf, true);
+}
+
+void ProgressLine::draw(const std::string& line, bool final_line) {
+  std::string out;
+  if (mode_ == Mode::live) {
+    out += '\r';
+    out += line;
+    // Blank out the rest of a longer previous line.
+    if (line.size() < last_width_) out.append(last_width_ - line.size(), ' ');
+    last_width_ = line.size();
+  } else {
+    out = line;
+  }
+  if (final_line) out += '\n';
+  std::fwrite(out.data(), 1, out.size(), stream_);
+  std::fflush(stream_);
+  drawn_ = true;
+}
+
+}  // namespace flapsim::pipeline
