@@ -1,0 +1,166 @@
+// Case files: the shipped hover case, signals (harmonic, tabulated, constant), defaults,
+// loads and markers, and bad input located by file, line and key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "pipeline/case/case_file.hpp"
+#include "pipeline/case/case_model.hpp"
+#include "pipeline/case/case_summary.hpp"
+#include "wings/input_error.hpp"
+#include "wings/toml_reader.hpp"
+
+namespace p = flapsim::pipeline;
+using flapsim::InputError;
+
+namespace {
+
+const std::string kSource = FLAPSIM_SOURCE_DIR;
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// Case text placed (virtually) in tests/data/, next to valid_tiny_wing.toml.
+p::Case case_from_text(const std::string& text) {
+  return p::read_case(flapsim::wings::parse_toml_string(text, kSource + "/tests/data/inline_case.toml"));
+}
+
+InputError error_of(const std::string& text) {
+  try {
+    case_from_text(text);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError for:\n" << text;
+  return InputError("", 0, "", "");
+}
+
+const std::string kHead =
+    "wing = \"valid_tiny_wing.toml\"\n"                                   // 1
+    "[kinematics]\n"                                                      // 2
+    "frequency_hz = 20.0\n"                                               // 3
+    "sweep = { mean_deg = 0.0, cos_deg = [60.0] }\n"                      // 4
+    "rotation = { mean_deg = 90.0, sin_deg = [-60.0] }\n"                 // 5
+    "[structure]\n"                                                       // 6
+    "kind = \"rigid\"\n";                                                 // 7
+
+}  // namespace
+
+TEST(CaseFile, HoverCaseIsEquation8) {
+  const p::Case c = p::load_case_file(kSource + "/cases/hover.toml");
+  EXPECT_EQ(c.name, "hover");
+  EXPECT_NE(c.wing_file.find("wings/hawkmoth.toml"), std::string::npos);
+  EXPECT_DOUBLE_EQ(c.kinematics.frequency, 26.1);
+  EXPECT_DOUBLE_EQ(c.kinematics.rotation_phase, 0.0);
+  EXPECT_EQ(c.structure.kind, p::Case::Structure::Kind::Flexible);
+  EXPECT_EQ(c.structure.bodies, 10);
+  EXPECT_EQ(c.numerics.chordwise_panels, 6);   // RP §3: 6 x 10 panels
+  EXPECT_EQ(c.numerics.spanwise_panels, 10);
+  EXPECT_TRUE(c.air.enabled);
+  EXPECT_DOUBLE_EQ(c.air.density, 1.225);
+  // Eq. 8 (RP), δψ = 0: φ = 10° + 50° cos 2πft, α = 90° − 45° sin 2πft.
+  const double f = 26.1;
+  for (double s : {0.0, 0.1, 0.25, 0.6, 0.75}) {
+    const auto a = c.kinematics.angles(s / f);
+    EXPECT_NEAR(a.sweep.value, (10.0 + 50.0 * std::cos(2 * std::numbers::pi * s)) * kDeg, 1e-12);
+    EXPECT_NEAR(a.rotation.value, (90.0 - 45.0 * std::sin(2 * std::numbers::pi * s)) * kDeg, 1e-12);
+    EXPECT_NEAR(a.deviation.value, 0.0, 1e-15);
+  }
+  // DESIGN.md: geometric angle of attack 45° at mid-downstroke and at mid-upstroke.
+  EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.25 / f)), 45.0 * kDeg, 1e-12);
+  EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.75 / f)), 45.0 * kDeg, 1e-12);
+  EXPECT_FALSE(p::geometric_angle_of_attack(c.kinematics.angles(0.0)));  // stroke reversal
+}
+
+TEST(CaseFile, DefaultsWhenSectionsAreOmitted) {
+  const p::Case c = case_from_text(kHead);
+  EXPECT_EQ(c.name, "inline_case");
+  EXPECT_EQ(c.structure.kind, p::Case::Structure::Kind::Rigid);
+  EXPECT_EQ(c.structure.bodies, 1);
+  EXPECT_EQ(c.numerics.steps_per_cycle, 100);
+  EXPECT_EQ(c.numerics.cycles, 3);
+  EXPECT_EQ(c.numerics.chordwise_panels, 6);
+  EXPECT_EQ(c.numerics.spanwise_panels, 10);
+  EXPECT_EQ(c.numerics.core_model, "lamb_oseen");
+  EXPECT_EQ(c.numerics.wake_order, 1);
+  EXPECT_TRUE(c.numerics.free_wake);
+  EXPECT_DOUBLE_EQ(c.air.density, 1.225);
+  EXPECT_TRUE(c.air.freestream.isZero());
+  // Eq. 7 in the DESIGN.md convention: α = 90° − 60° sin 2πft → AoA 30° at mid-downstroke.
+  EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.25 / 20.0)), 30.0 * kDeg, 1e-12);
+}
+
+TEST(CaseFile, TabulatedAndConstantSignalsVacuumLoadsMarkers) {
+  const p::Case c = case_from_text(
+      "length_unit = \"mm\"\n" + kHead +
+      "[kinematics.deviation]\n"
+      "phase = [0.0, 0.25, 0.5, 0.75]\n"
+      "deg = [0.0, 5.0, 0.0, -5.0]\n"
+      "[air]\n"
+      "freestream = [1.5, 0.0, 0.0]\n"
+      "[[loads]]\n"
+      "body = 1\n"
+      "point = [0.0, 10.0, 0.0]\n"
+      "frame = \"body\"\n"
+      "force_z = { mean = 0.001, sin = [0.002] }\n"
+      "moment_x = 0.5\n"
+      "[[markers]]\n"
+      "name = \"tip\"\n"
+      "body = 1\n"
+      "point = [0.0, 10.0, 0.0]\n");
+  // The spline passes through its knots (deg → rad).
+  EXPECT_NEAR(c.kinematics.deviation.at_phase(0.25).value, 5.0 * kDeg, 1e-12);
+  EXPECT_NEAR(c.kinematics.deviation.at_phase(0.75).value, -5.0 * kDeg, 1e-12);
+  EXPECT_DOUBLE_EQ(c.air.freestream.x(), 1.5);
+  ASSERT_EQ(c.loads.size(), 1u);
+  EXPECT_FALSE(c.loads[0].ground_frame);
+  EXPECT_NEAR(c.loads[0].point.y(), 0.01, 1e-15);  // 10 mm
+  EXPECT_NEAR(c.loads[0].force[2].at_phase(0.25).value, 0.003, 1e-15);
+  EXPECT_NEAR(c.loads[0].moment[0].at_phase(0.3).value, 0.5, 1e-15);
+  EXPECT_NEAR(c.loads[0].force[0].at_phase(0.3).value, 0.0, 1e-15);
+  ASSERT_EQ(c.markers.size(), 1u);
+  EXPECT_EQ(c.markers[0].name, "tip");
+  const p::Case vac = case_from_text("air = \"none\"\n" + kHead);
+  EXPECT_FALSE(vac.air.enabled);
+}
+
+TEST(CaseFileErrors, EachProblemNamesLineAndKey) {
+  struct Bad {
+    std::string text;
+    int line;
+    std::string key;
+  };
+  const Bad cases[] = {
+      // missing frequency: reported at the [kinematics] header
+      {"wing = \"valid_tiny_wing.toml\"\n[kinematics]\nsweep = 0.0\nrotation = 1.0\n"
+       "[structure]\nkind = \"rigid\"\n", 2, "kinematics.frequency_hz"},
+      {kHead + "[numerics]\nsteps_per_cycle = -5\n", 9, "numerics.steps_per_cycle"},
+      {kHead + "[numerics]\ncore_model = \"vatistas\"\n", 9, "numerics.core_model"},
+      {kHead + "[numerics]\ncylces = 3\n", 9, "numerics.cylces"},
+      {"length_unit = \"furlong\"\n" + kHead, 1, "length_unit"},
+      {"air = \"vacuum\"\n" + kHead, 1, "air"},
+      {kHead + "[[markers]]\nbody = 2\npoint = [0, 0, 0]\n", 9, "markers[0].body"},
+      {"wing = \"no_such_wing.toml\"\n" + kHead.substr(kHead.find('\n') + 1), 1, "wing"},
+      {kHead + "bodies = 2\n", 8, "structure.bodies"},  // rigid has one body
+      {"[kinematics]\nfrequency_hz = 1.0\nsweep = 0.0\nrotation = 0.0\n[structure]\nkind = \"rigid\"\n",
+       1, "wing"},
+      {kHead.substr(0, kHead.find("frequency_hz = 20.0")) + "frequency_hz = \"20\"\n" +
+           kHead.substr(kHead.find("sweep")), 3, "kinematics.frequency_hz"},
+  };
+  for (const auto& b : cases) {
+    const auto e = error_of(b.text);
+    EXPECT_EQ(e.line(), b.line) << e.what();
+    EXPECT_EQ(e.key(), b.key) << e.what();
+  }
+}
+
+TEST(CaseFileErrors, BadTabulatedSignal) {
+  const auto e = error_of(kHead +
+                          "[kinematics.deviation]\n"           // 8
+                          "phase = [0.0, 0.5, 0.25]\n"         // 9
+                          "deg = [0.0, 1.0, 2.0]\n");
+  EXPECT_EQ(e.line(), 9);
+  EXPECT_EQ(e.key(), "kinematics.deviation.phase");
+  const auto short_table = error_of(kHead + "[kinematics.deviation]\nphase = [0.0, 0.5]\ndeg = [0.0, 1.0]\n");
+  EXPECT_EQ(short_table.key(), "kinematics.deviation.phase");
+}
