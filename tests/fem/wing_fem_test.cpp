@@ -1,0 +1,126 @@
+// The FEM of whole wings: gmsh meshing with veins fragmented into the
+// membrane, the free–free rigid-body count, the hawkmoth's mass against the
+// papers' target and its lowest modes.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include <Eigen/Dense>
+
+#include "fem/load_cases.hpp"
+#include "fem/static_solver.hpp"
+#include "fem/wing_fem.hpp"
+#include "wings/wing_file.hpp"
+
+namespace flapsim::fem {
+namespace {
+
+// A small rectangular test wing (20 mm × 8 mm, 20 μm film) with a leading-edge
+// vein and an oblique vein crossing the membrane, built in code.
+wings::Wing small_wing() {
+  wings::Wing w;
+  w.name = "small";
+  w.outline = {{2.0e-3, 0.0}, {2.0e-3, 20e-3}, {-6e-3, 20e-3}, {-6e-3, 0.0}};
+  w.span = 20e-3;
+  w.membrane.thickness = 20e-6;
+  w.membrane.material = {3e9, 0.3, 1200.0};
+  w.membrane.nonstructural_mass_per_area = 0.01;
+  wings::Vein le;
+  le.name = "leading edge";
+  le.points = {{1.5e-3, 0.5e-3}, {1.5e-3, 19.5e-3}};
+  le.root_section.outer_diameter = 0.3e-3;
+  le.root_section.wall = 0.05e-3;
+  le.tip_section.outer_diameter = 0.1e-3;
+  le.tip_section.wall = 0.02e-3;
+  le.material = {6e9, 0.3, 1200.0};
+  wings::Vein ob = le;
+  ob.name = "oblique";
+  ob.points = {{1.5e-3, 2e-3}, {-2e-3, 10e-3}, {-6e-3, 16e-3}};  // ends on the trailing edge
+  w.veins = {le, ob};
+  w.mesh.element_size = 1.0e-3;
+  w.mesh.vein_element_size = 0.5e-3;
+  w.clamp_y = 0.0;
+  return w;
+}
+
+TEST(WingMesh, VeinsShareNodesWithTheMembrane) {
+  const wings::Wing w = small_wing();
+  const Mesh mesh = mesh_wing(w);
+  ASSERT_GT(mesh.triangles.size(), 100u);
+  ASSERT_GT(mesh.beams.size(), 20u);
+  std::set<int> shell_nodes;
+  for (const auto& t : mesh.triangles) shell_nodes.insert(t.begin(), t.end());
+  for (const auto& b : mesh.beams) {
+    // Every vein node is a membrane node: fragment made them conformal.
+    EXPECT_TRUE(shell_nodes.count(b.nodes[0]) && shell_nodes.count(b.nodes[1]));
+    const double len = (mesh.nodes[b.nodes[1]] - mesh.nodes[b.nodes[0]]).norm();
+    EXPECT_LT(len, 0.75e-3);  // vein_element_size 0.5 mm (gmsh keeps within ~1.5×)
+  }
+  // Both veins are meshed over their whole length (polyline length, to 1e-9 m).
+  double len[2] = {0.0, 0.0};
+  for (const auto& b : mesh.beams) len[b.vein] += (mesh.nodes[b.nodes[1]] - mesh.nodes[b.nodes[0]]).norm();
+  EXPECT_NEAR(len[0], 19e-3, 1e-9);
+  const double ob = std::hypot(3.5e-3, 8e-3) + std::hypot(4e-3, 6e-3);
+  EXPECT_NEAR(len[1], ob, 1e-9);
+  // The membrane area is the outline's (20 × 8 mm²).
+  double area = 0.0;
+  for (const auto& t : mesh.triangles)
+    area += 0.5 * (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]).z();
+  EXPECT_NEAR(area, 160e-6, 1e-12);
+}
+
+TEST(WingFem, FreeFreeWingHasExactlySixRigidBodyModes) {
+  const WingFem fem = build_wing_fem(small_wing());
+  // K annihilates the six rigid motions u = t + r × p (rotations r).
+  const Mesh& mesh = fem.model.mesh;
+  const double knorm = fem.system.stiffness.norm();
+  for (int mode = 0; mode < 6; ++mode) {
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(mesh.num_dofs());
+    Eigen::Vector3d t = Eigen::Vector3d::Zero(), r = Eigen::Vector3d::Zero();
+    (mode < 3 ? t : r)(mode % 3) = 1.0;
+    for (int i = 0; i < mesh.num_nodes(); ++i) {
+      u.segment<3>(dof_index(i, UX)) = t + r.cross(mesh.nodes[i]);
+      u.segment<3>(dof_index(i, RX)) = r;
+    }
+    EXPECT_LT((fem.system.stiffness * u).norm() / (knorm * u.norm()), 1e-13) << "rigid motion " << mode;
+  }
+  const WingModes m = wing_modes(fem, 10, /*clamped=*/false);
+  // Six rigid-body modes (three translations, three rotations): their
+  // frequencies are round-off compared with the first elastic one.
+  const double f7 = m.modes.frequencies_hz(6);
+  ASSERT_GT(f7, 1.0);
+  for (int k = 0; k < 6; ++k) EXPECT_LT(std::abs(m.modes.frequencies_hz(k)), 1e-4 * f7) << "mode " << k + 1;
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(m.kinds[k], ModeKind::Rigid);
+  EXPECT_NE(m.kinds[6], ModeKind::Rigid);  // the seventh is elastic: exactly six
+}
+
+TEST(WingFem, ElementMassesAddUpToTheWingMass) {
+  const wings::Wing w = small_wing();
+  const WingFem fem = build_wing_fem(w);
+  // Membrane (ρh + μ)·S plus veins ∫ρA ds. The vein areas taper linearly in D
+  // and t, so A(s) is quadratic and the FEM's midpoint sections miss ∫A by
+  // O(Δs²): compare with the exact integral to 1e-4.
+  const double membrane = (1200.0 * 20e-6 + 0.01) * 160e-6;
+  double veins = 0.0;
+  for (const auto& v : w.veins) {
+    double L = 0.0;
+    for (size_t i = 0; i + 1 < v.points.size(); ++i) L += (v.points[i + 1] - v.points[i]).norm();
+    const int n = 2000;  // fine midpoint sum of the exact quadratic area
+    for (int i = 0; i < n; ++i) {
+      const double s = (i + 0.5) / n;
+      const double D = v.root_section.outer_diameter + s * (v.tip_section.outer_diameter - v.root_section.outer_diameter);
+      const double t = v.root_section.wall + s * (v.tip_section.wall - v.root_section.wall);
+      veins += 1200.0 * M_PI * t * (D - t) * L / n;
+    }
+  }
+  EXPECT_NEAR(fem.system.total_mass / (membrane + veins), 1.0, 1e-4);
+  // The mass matrix carries the same mass: rigid translation uᵀ M u = m.
+  Eigen::VectorXd ux = Eigen::VectorXd::Zero(fem.model.mesh.num_dofs());
+  for (int i = 0; i < fem.model.mesh.num_nodes(); ++i) ux(dof_index(i, UX)) = 1.0;
+  EXPECT_NEAR(ux.dot(fem.system.mass * ux) / fem.system.total_mass, 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace flapsim::fem
