@@ -1,0 +1,47 @@
+// Throughput of the Biot–Savart kernel: point–segment interactions per second, on a
+// wake-sized problem (6000 segments, 3300 target points), one and two threads.
+#include "uvlm/biot_savart.hpp"
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <random>
+
+using namespace flapsim::uvlm;
+
+namespace {
+
+void BM_BiotSavart(benchmark::State& state, CoreModel model) {
+  const int threads = static_cast<int>(state.range(0));
+  const std::size_t n_seg = 6000, n_pts = 3300;
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(0.0, 0.05);
+  SegmentSet s;
+  s.reserve(n_seg);
+  for (std::size_t k = 0; k < n_seg; ++k) s.push(u(rng), u(rng), u(rng), u(rng), u(rng), u(rng), 1e-3);
+  PointSet p;
+  p.reserve(n_pts);
+  p.size = n_pts;
+  for (std::size_t i = 0; i < n_pts; ++i) p.set(i, {u(rng), u(rng), u(rng)});
+  const VortexCore core{model, 1e-3};
+  omp_set_num_threads(threads);
+  for (auto _ : state) {
+    p.zero_velocity();
+    add_induced_velocity(s, p, core);
+    benchmark::DoNotOptimize(p.u.data());
+    benchmark::ClobberMemory();
+  }
+  const double interactions = static_cast<double>(n_seg) * n_pts;
+  state.counters["interactions/s"] =
+      benchmark::Counter(interactions * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["per_core/s"] =
+      benchmark::Counter(interactions * state.iterations() / threads, benchmark::Counter::kIsRate);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_BiotSavart, LambOseen, CoreModel::LambOseen)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BiotSavart, CutOff, CoreModel::CutOff)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BiotSavart, Vatistas, CoreModel::Vatistas)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();

@@ -1,0 +1,76 @@
+// A whole rigid-wing hover run: hawkmoth-like wing (wings/outlines/hawkmoth1_outline.csv,
+// R = 48.3 mm, chord stretched 1.131 to 815 mm²), 6 × 10 panels, the rotation-phase
+// paper's eq. 7 kinematics at 26.1 Hz, 3 cycles × 100 steps, free wake (AB2, Lamb–Oseen
+// core). The reference point: a Python UVLM needs about 180 s for the same work.
+#include "mbd/periodic_signal.hpp"
+#include "mbd/wing_kinematics.hpp"
+#include "uvlm/planform_grid.hpp"
+#include "uvlm/vortex_lattice.hpp"
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace flapsim;
+
+namespace {
+
+std::vector<Eigen::Vector2d> hawkmoth_outline() {
+  const double R = 0.0483, stretch = 1.131;
+  std::ifstream in(std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/hawkmoth1_outline.csv");
+  std::vector<Eigen::Vector2d> pts;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'x') continue;
+    std::istringstream ss(line);
+    double x, y;
+    char comma;
+    ss >> x >> comma >> y;
+    pts.emplace_back(stretch * R * x, R * y);
+  }
+  return pts;
+}
+
+void BM_HoverRun(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const double deg = M_PI / 180.0, f = 26.1;
+  mbd::WingKinematics kin;
+  kin.frequency = f;
+  kin.sweep = mbd::PeriodicSignal::harmonic(0.0, {60 * deg}, {});
+  kin.rotation = mbd::PeriodicSignal::harmonic(90 * deg, {}, {-60 * deg});
+  uvlm::PlanformGridOptions go;  // 6 × 10
+  const uvlm::PlanformGrid grid = uvlm::make_planform_grid(hawkmoth_outline(), go);
+  const int steps = 300;
+  uvlm::VortexLatticeModel m;
+  m.chordwise = 6;
+  m.spanwise = 10;
+  m.wake_capacity = steps;
+  m.core = {uvlm::CoreModel::LambOseen, 0.5e-3};
+  const double dt = 1.0 / (f * 100);
+  Eigen::Matrix3Xd x(3, m.nodes()), v(3, m.nodes());
+  double lift = 0;
+  for (auto _ : state) {
+    uvlm::VortexLatticeData d(m);
+    for (int k = 0; k < steps; ++k) {
+      const mbd::BasePose p = kin.pose(k * dt);
+      x = p.rotation * grid.nodes;
+      for (int n = 0; n < m.nodes(); ++n) v.col(n) = p.angular_velocity.cross(x.col(n));
+      uvlm::solve(m, d, x, v, Eigen::Vector3d::Zero(), dt, 1.225);
+      lift = d.loads.total_force.z();
+      uvlm::advance(m, d);
+    }
+    benchmark::DoNotOptimize(lift);
+  }
+  state.counters["steps"] = steps;
+  state.counters["last_lift_mN"] = 1e3 * lift;
+}
+
+}  // namespace
+
+BENCHMARK(BM_HoverRun)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+
+BENCHMARK_MAIN();

@@ -1,0 +1,75 @@
+#pragma once
+/// \file biot_savart.hpp
+/// \brief Velocity induced by straight vortex segments: a structure-of-arrays segment
+/// set and the O(targets × segments) kernel, vectorised over segments and parallel
+/// (OpenMP) over target points. This sum is the cost of a free-wake run.
+
+#include "uvlm/vortex_core.hpp"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <vector>
+
+namespace flapsim::uvlm {
+
+/// Straight vortex segments A→B with circulation Γ, stored as separate arrays so the
+/// kernel's loop over segments is contiguous and vectorises. Storage is reserved once
+/// (`reserve`); `clear` and `push` never allocate while within the reserved capacity.
+class SegmentSet {
+ public:
+  /// Allocate room for `capacity` segments.
+  void reserve(std::size_t capacity);
+  void clear() { size_ = 0; }
+  /// Append A→B with circulation gamma [m²/s]. Throws std::length_error beyond capacity.
+  void push(double ax, double ay, double az, double bx, double by, double bz, double gamma);
+  void push(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double gamma) {
+    push(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), gamma);
+  }
+  std::size_t size() const { return size_; }
+  std::size_t capacity() const { return ax_.size(); }
+
+  // Segment arrays (first size() entries valid) [m], [m²/s].
+  const double* ax() const { return ax_.data(); }
+  const double* ay() const { return ay_.data(); }
+  const double* az() const { return az_.data(); }
+  const double* bx() const { return bx_.data(); }
+  const double* by() const { return by_.data(); }
+  const double* bz() const { return bz_.data(); }
+  const double* gamma() const { return gamma_.data(); }
+  /// 1/|B − A|² [1/m²] per segment (0 for zero length), so the kernel needs no division for it.
+  const double* inv_length2() const { return inv_len2_.data(); }
+
+ private:
+  std::vector<double> ax_, ay_, az_, bx_, by_, bz_, gamma_, inv_len2_;
+  std::size_t size_ = 0;
+};
+
+/// Target points and their velocities in structure-of-arrays form.
+struct PointSet {
+  std::vector<double> x, y, z;  ///< positions [m]
+  std::vector<double> u, v, w;  ///< velocities [m/s]
+  std::size_t size = 0;         ///< points in use (≤ capacity)
+  void reserve(std::size_t capacity);
+  void set(std::size_t i, const Eigen::Vector3d& p) { x[i] = p.x(); y[i] = p.y(); z[i] = p.z(); }
+  Eigen::Vector3d position(std::size_t i) const { return {x[i], y[i], z[i]}; }
+  Eigen::Vector3d velocity(std::size_t i) const { return {u[i], v[i], w[i]}; }
+  /// Set u = v = w = 0 for the points in use.
+  void zero_velocity();
+};
+
+/// Velocity [m/s] induced at p by one segment a→b of circulation gamma (regularised).
+Eigen::Vector3d segment_velocity(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double gamma,
+                                 const Eigen::Vector3d& p, const VortexCore& core);
+
+/// Add the velocity induced by every segment of `segments` to each point of `points`
+/// (points.u/v/w += …). Parallel over points (OpenMP), vectorised over segments.
+/// \param core  regularisation; core.radius > 0 [m]
+void add_induced_velocity(const SegmentSet& segments, PointSet& points, const VortexCore& core);
+
+/// Raw-array form of add_induced_velocity for n points at (x, y, z) [m], adding to (u, v, w) [m/s].
+void add_induced_velocity(const SegmentSet& segments, const double* x, const double* y,
+                          const double* z, std::size_t n, double* u, double* v, double* w,
+                          const VortexCore& core);
+
+}  // namespace flapsim::uvlm

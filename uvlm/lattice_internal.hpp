@@ -1,0 +1,34 @@
+#pragma once
+/// \file lattice_internal.hpp
+/// \brief Steps of a vortex-lattice solve shared by vortex_lattice.cpp, wake.cpp and
+/// aero_loads.cpp (not a public interface).
+
+#include "uvlm/vortex_lattice.hpp"
+
+namespace flapsim::uvlm::detail {
+
+/// Rings, collocation points, normals, tangents, areas and surface velocities from the nodes.
+void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
+                     const Eigen::Matrix3Xd& node_velocities);
+
+/// Influence matrix a(i, k) = (velocity of unit ring k at collocation point i) · n_i.
+void build_influence(const VortexLatticeModel& m, VortexLatticeData& d);
+
+/// Unique bound segments with their net circulation from d.gamma.
+void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d);
+
+/// Unique wake segments with their net circulation (row wake_rows must sit on the trailing edge).
+void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d);
+
+/// Put the wake's newest node row on the current trailing edge (ring nodes of row nc).
+void attach_wake_to_trailing_edge(const VortexLatticeModel& m, VortexLatticeData& d);
+
+/// Induced velocity of the wake (and of the bound segments if include_bound) at the first n
+/// points of d.eval, written to d.eval.u/v/w (zeroed first).
+void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
+                            bool include_bound);
+
+/// Compute the loads selected by the model.
+void compute_loads(const VortexLatticeModel& m, VortexLatticeData& d);
+
+}  // namespace flapsim::uvlm::detail

@@ -1,0 +1,285 @@
+#include "uvlm/vortex_lattice.hpp"
+
+#include "uvlm/biot_savart_kernel.hpp"
+#include "uvlm/lattice_internal.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace flapsim::uvlm {
+
+VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
+  if (m.chordwise < 1 || m.spanwise < 1)
+    throw std::invalid_argument("vortex lattice: chordwise and spanwise panel counts must be >= 1");
+  if (!(m.core.radius > 0.0)) throw std::invalid_argument("vortex lattice: core radius must be > 0");
+  if (m.wake_capacity < 1) throw std::invalid_argument("vortex lattice: wake_capacity must be >= 1");
+  if (m.max_wake_rows < 0) throw std::invalid_argument("vortex lattice: max_wake_rows must be >= 0");
+  const int nc = m.chordwise, ns = m.spanwise, np = m.panels(), nn = m.nodes();
+  spanwise = ns;
+  wake_capacity = m.wake_capacity;
+
+  nodes.setZero(3, nn);
+  node_velocities.setZero(3, nn);
+  ring_nodes.setZero(3, nn);
+  collocation.setZero(3, np);
+  normal.setZero(3, np);
+  chord_tangent.setZero(3, np);
+  span_tangent.setZero(3, np);
+  chord_length.setZero(np);
+  span_length.setZero(np);
+  area.setZero(np);
+  surface_velocity.setZero(3, np);
+  wake_velocity.setZero(3, np);
+  gamma.setZero(np);
+  gamma_accepted.setZero(np);
+  influence.setZero(np, np);
+  lu = Eigen::PartialPivLU<Eigen::MatrixXd>(np);
+  factorised_nodes.setZero(3, nn);
+  rhs.setZero(np);
+
+  // One spare row: the steady solve's horseshoe row and the row being shed.
+  const std::size_t rows = static_cast<std::size_t>(wake_capacity) + 1;
+  const std::size_t wake_nodes_n = (rows + 1) * (ns + 1);
+  wake_nodes.reserve(wake_nodes_n);
+  wake_gamma.assign(rows * ns, 0.0);
+  wake_prev_u.assign(wake_nodes_n, 0.0);
+  wake_prev_v.assign(wake_nodes_n, 0.0);
+  wake_prev_w.assign(wake_nodes_n, 0.0);
+  wake_row_has_prev.assign(rows + 1, 0);
+
+  const std::size_t bound_n = static_cast<std::size_t>((nc + 1) * ns + nc * (ns + 1));
+  bound_segments.reserve(bound_n);
+  wake_segments.reserve((rows + 1) * ns + rows * (ns + 1));
+  for (auto& s : ring_side) s.reserve(np);
+  eval.reserve(std::max<std::size_t>(bound_n, np));
+
+  loads.force.setZero(3, np);
+  loads.point.setZero(3, np);
+  loads.pressure_jump.setZero(np);
+}
+
+Eigen::Vector3d moment_about(const PanelLoads& loads, const Eigen::Vector3d& point) {
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();
+  for (Eigen::Index k = 0; k < loads.force.cols(); ++k)
+    m += (loads.point.col(k) - point).cross(loads.force.col(k));
+  return m;
+}
+
+namespace detail {
+
+void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& P,
+                     const Eigen::Matrix3Xd& V) {
+  const int nc = m.chordwise, ns = m.spanwise;
+  d.nodes = P;
+  d.node_velocities = V;
+  for (int j = 0; j <= ns; ++j) {
+    for (int i = 0; i < nc; ++i)
+      d.ring_nodes.col(m.node(i, j)) = P.col(m.node(i, j)) + 0.25 * (P.col(m.node(i + 1, j)) - P.col(m.node(i, j)));
+    d.ring_nodes.col(m.node(nc, j)) =
+        P.col(m.node(nc, j)) + 0.25 * (P.col(m.node(nc, j)) - P.col(m.node(nc - 1, j)));
+  }
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0; i < nc; ++i) {
+      const int k = m.panel(i, j);
+      const auto a = P.col(m.node(i, j)), b = P.col(m.node(i + 1, j));
+      const auto c = P.col(m.node(i, j + 1)), e = P.col(m.node(i + 1, j + 1));
+      d.collocation.col(k) = 0.5 * ((a + 0.75 * (b - a)) + (c + 0.75 * (e - c)));
+      const auto va = V.col(m.node(i, j)), vb = V.col(m.node(i + 1, j));
+      const auto vc = V.col(m.node(i, j + 1)), ve = V.col(m.node(i + 1, j + 1));
+      d.surface_velocity.col(k) = 0.5 * ((va + 0.75 * (vb - va)) + (vc + 0.75 * (ve - vc)));
+      const Eigen::Vector3d d1 = e - a;  // toward trailing edge and tip
+      const Eigen::Vector3d d2 = c - b;  // toward tip and leading edge
+      const Eigen::Vector3d n = d2.cross(d1);
+      d.area(k) = 0.5 * n.norm();
+      d.normal.col(k) = n / n.norm();
+      const Eigen::Vector3d tc = 0.5 * ((b + e) - (a + c));
+      const Eigen::Vector3d ts = 0.5 * ((c + e) - (a + b));
+      d.chord_length(k) = tc.norm();
+      d.span_length(k) = ts.norm();
+      d.chord_tangent.col(k) = tc / d.chord_length(k);
+      d.span_tangent.col(k) = ts / d.span_length(k);
+    }
+}
+
+void build_influence(const VortexLatticeModel& m, VortexLatticeData& d) {
+  const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
+  for (auto& s : d.ring_side) s.clear();
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0; i < nc; ++i) {
+      // Traversal R(i,j+1) → R(i,j) → R(i+1,j) → R(i+1,j+1) → R(i,j+1).
+      const Eigen::Vector3d r00 = d.ring_nodes.col(m.node(i, j)), r10 = d.ring_nodes.col(m.node(i + 1, j));
+      const Eigen::Vector3d r01 = d.ring_nodes.col(m.node(i, j + 1)), r11 = d.ring_nodes.col(m.node(i + 1, j + 1));
+      d.ring_side[0].push(r01, r00, 1.0);
+      d.ring_side[1].push(r00, r10, 1.0);
+      d.ring_side[2].push(r10, r11, 1.0);
+      d.ring_side[3].push(r11, r01, 1.0);
+    }
+  const double inv_rc2 = 1.0 / (m.core.radius * m.core.radius);
+  const auto& S = d.ring_side;
+#pragma omp parallel for schedule(static) if (np > 64)
+  for (int i = 0; i < np; ++i) {
+    const double px = d.collocation(0, i), py = d.collocation(1, i), pz = d.collocation(2, i);
+    const double nx = d.normal(0, i), ny = d.normal(1, i), nz = d.normal(2, i);
+    double* row = &d.influence(i, 0);  // column-major: stride np between columns
+    for (int s = 0; s < 4; ++s) {
+      const double *ax = S[s].ax(), *ay = S[s].ay(), *az = S[s].az();
+      const double *bx = S[s].bx(), *by = S[s].by(), *bz = S[s].bz(), *il = S[s].inv_length2();
+      if (s == 0)
+        for (int k = 0; k < np; ++k) row[static_cast<std::size_t>(k) * np] = 0.0;
+      for (int k = 0; k < np; ++k) {
+        double u = 0, v = 0, w = 0;
+        switch (m.core.model) {
+          case CoreModel::CutOff:
+            segment_velocity<CoreModel::CutOff>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, inv_rc2 * il[k], u, v, w);
+            break;
+          case CoreModel::LambOseen:
+            segment_velocity<CoreModel::LambOseen>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, inv_rc2 * il[k], u, v, w);
+            break;
+          case CoreModel::Vatistas:
+            segment_velocity<CoreModel::Vatistas>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, inv_rc2 * il[k], u, v, w);
+            break;
+        }
+        row[static_cast<std::size_t>(k) * np] += u * nx + v * ny + w * nz;
+      }
+    }
+  }
+}
+
+void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d) {
+  const int nc = m.chordwise, ns = m.spanwise;
+  auto G = [&](int i, int j) {
+    return (i < 0 || i >= nc || j < 0 || j >= ns) ? 0.0 : d.gamma(m.panel(i, j));
+  };
+  d.bound_segments.clear();
+  // Spanwise segments, ring-node row q, direction j → j+1: rear of ring q−1 minus front of ring q.
+  for (int q = 0; q <= nc; ++q)
+    for (int j = 0; j < ns; ++j)
+      d.bound_segments.push(d.ring_nodes.col(m.node(q, j)), d.ring_nodes.col(m.node(q, j + 1)),
+                            G(q - 1, j) - G(q, j));
+  // Chordwise segments, column j, direction q → q+1: root side of ring (q, j) minus tip side of (q, j−1).
+  for (int j = 0; j <= ns; ++j)
+    for (int q = 0; q < nc; ++q)
+      d.bound_segments.push(d.ring_nodes.col(m.node(q, j)), d.ring_nodes.col(m.node(q + 1, j)),
+                            G(q, j) - G(q, j - 1));
+}
+
+void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
+                            bool include_bound) {
+  d.eval.size = n;
+  d.eval.zero_velocity();
+  if (d.wake_segments.size() > 0) add_induced_velocity(d.wake_segments, d.eval, m.core);
+  if (include_bound) add_induced_velocity(d.bound_segments, d.eval, m.core);
+}
+
+void compute_loads(const VortexLatticeModel& m, VortexLatticeData& d) {
+  if (m.load_method == LoadMethod::Bernoulli)
+    compute_bernoulli_loads(m, d);
+  else
+    compute_kutta_joukowski_loads(m, d);
+}
+
+}  // namespace detail
+
+namespace {
+
+void check_inputs(const VortexLatticeModel& m, const Eigen::Matrix3Xd& nodes,
+                  const Eigen::Matrix3Xd& vel, double dt, double rho) {
+  if (nodes.cols() != m.nodes() || vel.cols() != m.nodes())
+    throw std::invalid_argument("vortex lattice: expected " + std::to_string(m.nodes()) +
+                                " surface nodes and velocities, got " + std::to_string(nodes.cols()) +
+                                " and " + std::to_string(vel.cols()));
+  if (!(dt > 0.0)) throw std::invalid_argument("vortex lattice: time step must be > 0");
+  if (!(rho > 0.0)) throw std::invalid_argument("vortex lattice: air density must be > 0");
+}
+
+/// Wake-induced velocity at the collocation points into d.wake_velocity.
+void wake_velocity_at_collocation(const VortexLatticeModel& m, VortexLatticeData& d) {
+  const int np = m.panels();
+  for (int k = 0; k < np; ++k) d.eval.set(k, d.collocation.col(k));
+  detail::induced_at_eval_points(m, d, np, false);
+  for (int k = 0; k < np; ++k) d.wake_velocity.col(k) = d.eval.velocity(k);
+}
+
+void refactorise_if_moved(const VortexLatticeModel& m, VortexLatticeData& d) {
+  if (d.has_factorisation && d.nodes == d.factorised_nodes) return;
+  detail::build_influence(m, d);
+  d.lu.compute(d.influence);
+  d.factorised_nodes = d.nodes;
+  d.has_factorisation = true;
+}
+
+}  // namespace
+
+void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
+           const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt,
+           double rho) {
+  check_inputs(m, nodes, node_velocities, dt, rho);
+  d.free_stream = free_stream;
+  d.dt = dt;
+  d.rho = rho;
+  detail::update_geometry(m, d, nodes, node_velocities);
+  refactorise_if_moved(m, d);
+  detail::attach_wake_to_trailing_edge(m, d);
+  detail::build_wake_segments(m, d);
+  wake_velocity_at_collocation(m, d);
+  const int np = m.panels();
+  for (int k = 0; k < np; ++k)
+    d.rhs(k) = -(free_stream - d.surface_velocity.col(k) + d.wake_velocity.col(k)).dot(d.normal.col(k));
+  d.gamma = d.lu.solve(d.rhs);
+  detail::build_bound_segments(m, d);
+  detail::compute_loads(m, d);
+}
+
+void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
+                  const Eigen::Vector3d& free_stream, double rho, double wake_length) {
+  const Eigen::Matrix3Xd zero = Eigen::Matrix3Xd::Zero(3, m.nodes());
+  check_inputs(m, nodes, zero, 1.0, rho);
+  if (!(free_stream.norm() > 0.0) || !(wake_length > 0.0))
+    throw std::invalid_argument("steady vortex lattice: needs a free stream and a wake length > 0");
+  const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
+  d.free_stream = free_stream;
+  d.dt = 1.0;
+  d.rho = rho;
+  detail::update_geometry(m, d, nodes, zero);
+  detail::build_influence(m, d);
+  d.has_factorisation = false;  // the matrix below includes the wake
+
+  // One straight wake row, trailing-edge row 1 and far row 0, carried by the trailing-edge ring.
+  const Eigen::Vector3d dir = free_stream.normalized();
+  d.wake_rows = 1;
+  d.wake_nodes.size = 2 * (ns + 1);
+  for (int j = 0; j <= ns; ++j) {
+    const Eigen::Vector3d te = d.ring_nodes.col(m.node(nc, j));
+    d.wake_nodes.set(ns + 1 + j, te);
+    d.wake_nodes.set(j, te + wake_length * dir);
+  }
+  // Influence of each unit horseshoe (wake ring j, traversed like a bound ring) joins the
+  // column of ring (nc−1, j).
+  SegmentSet& horseshoe = d.ring_side[0];  // free again once the bound influence is built
+  for (int k = 0; k < np; ++k) d.eval.set(k, d.collocation.col(k));
+  for (int j = 0; j < ns; ++j) {
+    const Eigen::Vector3d f0 = d.wake_nodes.position(ns + 1 + j), f1 = d.wake_nodes.position(ns + 2 + j);
+    const Eigen::Vector3d r0 = d.wake_nodes.position(j), r1 = d.wake_nodes.position(j + 1);
+    horseshoe.clear();
+    horseshoe.push(f1, f0, 1.0);
+    horseshoe.push(f0, r0, 1.0);
+    horseshoe.push(r0, r1, 1.0);
+    horseshoe.push(r1, f1, 1.0);
+    d.eval.size = np;
+    d.eval.zero_velocity();
+    add_induced_velocity(horseshoe, d.eval, m.core);
+    for (int k = 0; k < np; ++k)
+      d.influence(k, m.panel(nc - 1, j)) += d.eval.velocity(k).dot(d.normal.col(k));
+  }
+  d.lu.compute(d.influence);
+  for (int k = 0; k < np; ++k) d.rhs(k) = -free_stream.dot(d.normal.col(k));
+  d.gamma = d.lu.solve(d.rhs);
+  d.gamma_accepted = d.gamma;
+  for (int j = 0; j < ns; ++j) d.wake_gamma[j] = d.gamma(m.panel(nc - 1, j));
+  detail::build_wake_segments(m, d);
+  wake_velocity_at_collocation(m, d);
+  detail::build_bound_segments(m, d);
+  detail::compute_loads(m, d);
+}
+
+}  // namespace flapsim::uvlm

@@ -1,0 +1,166 @@
+#pragma once
+/// \file vortex_lattice.hpp
+/// \brief Unsteady vortex-lattice method (Katz & Plotkin, ch. 13): a constant model
+/// (what the lattice is) and a mutable workspace (geometry, circulations, wake, loads),
+/// all storage allocated once in the workspace's constructor.
+///
+/// One time step, with FSI sub-iterations in mind:
+///   1. `solve(model, data, nodes, node_velocities, free_stream, dt, rho)` — circulations
+///      and loads for the given surface; the wake is not changed, so it may be called
+///      several times per step (the FSI loop moves the surface in between);
+///   2. `advance(model, data)` — accepts the last solve: convects the wake (free, or with
+///      the free stream only) and sheds one row from the trailing edge.
+///
+/// Lattice: vortex rings whose leading edge lies at the quarter chord of each panel;
+/// the last ring's trailing segment lies a quarter panel chord behind the trailing edge.
+/// Collocation points at the three-quarter chord point of each panel, normals from the
+/// panel diagonals. Kutta condition (Katz & Plotkin §13.12): the wake ring shed at the
+/// end of a step carries the trailing-edge circulation of that step (Kelvin's theorem),
+/// and at the next step it stretches from the new trailing edge to the convected old one.
+///
+/// Index conventions: surface node (i, j) → i + (nc+1) j, i = 0..nc leading to trailing
+/// edge, j = 0..ns root to tip; panel/ring (i, j) → i + nc j. A positive ring circulation
+/// pushes along the panel normal n = (span direction) × (chordwise direction toward the
+/// trailing edge); for a wing in the wing frame n = +z_W (lift for positive incidence).
+
+#include "uvlm/biot_savart.hpp"
+#include "uvlm/vortex_core.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <vector>
+
+namespace flapsim::uvlm {
+
+enum class WakeModel {
+  Free,       ///< wake nodes move with the local velocity (free stream + induced)
+  Prescribed  ///< wake nodes move with the free stream only (flat wake; verification cases)
+};
+enum class WakeIntegrator { Euler, AdamsBashforth2 };
+enum class LoadMethod {
+  Bernoulli,      ///< unsteady Bernoulli pressure jump per panel (Katz & Plotkin §13.8)
+  KuttaJoukowski  ///< ρ Γ (V × dl) on every bound segment, plus the ∂Γ/∂t term
+};
+
+/// What the lattice is: constant during a run.
+struct VortexLatticeModel {
+  int chordwise = 6;   ///< nc panels, leading to trailing edge
+  int spanwise = 10;   ///< ns panels, root to tip
+  VortexCore core;     ///< regularisation of every segment (bound and wake)
+  WakeModel wake_model = WakeModel::Free;
+  WakeIntegrator wake_integrator = WakeIntegrator::AdamsBashforth2;
+  LoadMethod load_method = LoadMethod::Bernoulli;
+  int max_wake_rows = 0;   ///< keep at most this many wake rows (oldest dropped); 0 = keep all
+  int wake_capacity = 0;   ///< wake rows the workspace holds (the run's step count, or max_wake_rows)
+
+  int panels() const { return chordwise * spanwise; }
+  int nodes() const { return (chordwise + 1) * (spanwise + 1); }
+  int panel(int i, int j) const { return i + chordwise * j; }
+  int node(int i, int j) const { return i + (chordwise + 1) * j; }
+};
+
+/// Aerodynamic loads on the panels of the last solve (ground frame).
+struct PanelLoads {
+  Eigen::Matrix3Xd force;          ///< force on each panel [N]
+  Eigen::Matrix3Xd point;          ///< its point of action (panel quarter chord, mid-span) [m]
+  Eigen::VectorXd pressure_jump;   ///< force·n / area: pressure below minus above [Pa]
+  Eigen::Vector3d total_force = Eigen::Vector3d::Zero();  ///< Σ force [N]
+};
+
+/// Moment [N·m] of the panel forces about `point` [m].
+Eigen::Vector3d moment_about(const PanelLoads& loads, const Eigen::Vector3d& point);
+
+/// Mutable workspace of one lattice: geometry of the last solve, circulations, the
+/// wake and the loads. Constructed once per run; nothing in solve/advance allocates.
+struct VortexLatticeData {
+  /// \throws std::invalid_argument for a model without panels, a core radius <= 0 or
+  /// wake_capacity < 1.
+  explicit VortexLatticeData(const VortexLatticeModel& model);
+
+  // Surface geometry of the last solve (ground frame).
+  Eigen::Matrix3Xd nodes;            ///< surface nodes [m]
+  Eigen::Matrix3Xd node_velocities;  ///< [m/s]
+  Eigen::Matrix3Xd ring_nodes;       ///< vortex-ring corners, (nc+1)(ns+1) [m]
+  Eigen::Matrix3Xd collocation;      ///< three-quarter chord points [m]
+  Eigen::Matrix3Xd normal;           ///< unit normals
+  Eigen::Matrix3Xd chord_tangent;    ///< unit chordwise direction (toward the trailing edge)
+  Eigen::Matrix3Xd span_tangent;     ///< unit spanwise direction (toward the tip)
+  Eigen::VectorXd chord_length;      ///< panel chord [m]
+  Eigen::VectorXd span_length;       ///< panel span [m]
+  Eigen::VectorXd area;              ///< panel area [m²]
+  Eigen::Matrix3Xd surface_velocity;  ///< surface velocity at the collocation points [m/s]
+  Eigen::Matrix3Xd wake_velocity;     ///< wake-induced velocity at the collocation points [m/s]
+
+  // Circulations [m²/s], panel index i + nc j.
+  Eigen::VectorXd gamma;           ///< last solve
+  Eigen::VectorXd gamma_accepted;  ///< last accepted step (for ∂Γ/∂t); zero before the first
+
+  // Influence matrix and its factorisation (reused while the surface does not change).
+  Eigen::MatrixXd influence;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  Eigen::Matrix3Xd factorised_nodes;
+  bool has_factorisation = false;
+  Eigen::VectorXd rhs;
+
+  // Wake: node rows 0..wake_rows (row r, node j at r (ns+1) + j; row wake_rows follows
+  // the trailing edge), ring r between rows r and r+1 with circulation wake_gamma[r ns + j].
+  int wake_rows = 0;
+  PointSet wake_nodes;
+  std::vector<double> wake_gamma;
+  std::vector<double> wake_prev_u, wake_prev_v, wake_prev_w;  ///< velocity of the last step (AB2)
+  std::vector<char> wake_row_has_prev;
+
+  // Segment sets (unique segments with net circulation) and evaluation points.
+  SegmentSet bound_segments, wake_segments;
+  SegmentSet ring_side[4];  ///< unit-circulation ring sides for the influence matrix
+  PointSet eval;
+
+  PanelLoads loads;
+
+  // Inputs of the last solve.
+  Eigen::Vector3d free_stream = Eigen::Vector3d::Zero();  ///< [m/s]
+  double dt = 0.0;    ///< [s]
+  double rho = 0.0;   ///< [kg/m³]
+  long accepted_steps = 0;
+
+  int spanwise = 0;       ///< ns (copied from the model)
+  int wake_capacity = 0;  ///< wake rows the storage holds
+  int wake_panels() const { return wake_rows * spanwise; }
+};
+
+/// Solve for the ring circulations and loads of the given surface; the wake is not
+/// changed (call again freely within a step). Loads by model.load_method.
+/// \param nodes            surface nodes, 3 × (nc+1)(ns+1), ground frame [m]
+/// \param node_velocities  their velocities [m/s]
+/// \param free_stream      air velocity far away [m/s] (zero in hover)
+/// \param dt               time step [s] (for ∂Γ/∂t and the next advance)
+/// \param rho              air density [kg/m³]
+/// \throws std::invalid_argument on wrong sizes or non-positive dt/rho
+void solve(const VortexLatticeModel& model, VortexLatticeData& data, const Eigen::Matrix3Xd& nodes,
+           const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt,
+           double rho);
+
+/// Accept the last solve: convect the wake over dt and shed one row from the trailing edge.
+/// \throws std::length_error when the wake would exceed model.wake_capacity rows
+void advance(const VortexLatticeModel& model, VortexLatticeData& data);
+
+/// Steady solution of a fixed surface in a uniform stream: the wake is one straight row of
+/// length wake_length along the free stream with the trailing-edge circulation (a
+/// horseshoe per spanwise strip), solved together with the bound rings (exact Kutta).
+/// Leaves gamma_accepted = gamma (no ∂Γ/∂t) and the loads by model.load_method.
+/// \param wake_length  [m], e.g. 100 chords
+void solve_steady(const VortexLatticeModel& model, VortexLatticeData& data,
+                  const Eigen::Matrix3Xd& nodes, const Eigen::Vector3d& free_stream, double rho,
+                  double wake_length);
+
+/// Loads by the unsteady Bernoulli equation on the last solve (fills data.loads).
+void compute_bernoulli_loads(const VortexLatticeModel& model, VortexLatticeData& data);
+
+/// Loads by Kutta–Joukowski on each bound segment (velocity at its midpoint without the
+/// segment's own influence; the trailing-edge segment is part of the shed wake and
+/// carries no load) plus ρ ∂Γ/∂t A n per panel (fills data.loads).
+void compute_kutta_joukowski_loads(const VortexLatticeModel& model, VortexLatticeData& data);
+
+}  // namespace flapsim::uvlm
