@@ -1,0 +1,63 @@
+#pragma once
+/// \file chain_data.hpp
+/// \brief The mutable workspace of the chain algorithms (Pinocchio's Data): body
+/// poses, velocities and Jacobians, mass matrix, force vectors and the integrator's
+/// quasi-Newton matrices. Sized once from a ChainModel; the time loop allocates
+/// nothing. One ChainData per thread.
+
+#include "mbd/chain_model.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products in every chain algorithm
+#include <Eigen/LU>
+
+#include <vector>
+
+namespace flapsim::mbd {
+
+/// Kinematic state of one body in the ground frame G, filled by forward_kinematics.
+struct BodyKinematics {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< R_GB
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();   ///< inboard joint position [m]
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();      ///< centre of mass [m]
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< ω [rad/s]
+  Eigen::Vector3d origin_velocity = Eigen::Vector3d::Zero();   ///< [m/s]
+  Eigen::Vector3d com_velocity = Eigen::Vector3d::Zero();      ///< [m/s]
+  /// Accelerations. After forward_kinematics: the bias part (Φ̈ = 0, the base's ω̇
+  /// included); after update_accelerations: the full values for a given Φ̈.
+  Eigen::Vector3d angular_acceleration = Eigen::Vector3d::Zero();  ///< [rad/s²]
+  Eigen::Vector3d origin_acceleration = Eigen::Vector3d::Zero();   ///< [m/s²]
+  Eigen::Vector3d com_acceleration = Eigen::Vector3d::Zero();      ///< [m/s²]
+  Eigen::Matrix3d inertia_ground = Eigen::Matrix3d::Zero();  ///< R I R^T about the com [kg m²]
+  Eigen::Vector3d bend_axis = Eigen::Vector3d::Zero();   ///< unit θ axis of its inboard joint
+  Eigen::Vector3d twist_axis = Eigen::Vector3d::Zero();  ///< unit α axis of its inboard joint
+  /// d(com velocity)/dΦ̇ and d(ω)/dΦ̇, 3 × n (columns of outboard joints are zero).
+  Eigen::MatrixXd com_jacobian;
+  Eigen::MatrixXd angular_jacobian;
+};
+
+/// Workspace of the quasi-Newton solve of one implicit step.
+struct StepWorkspace {
+  Eigen::MatrixXd jacobian;             ///< ∂residual/∂Φ̈_{n+1}, kept across steps
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  bool jacobian_valid = false;
+  double jacobian_dt = 0.0;             ///< step size the Jacobian was built for [s]
+  Eigen::VectorXd x, dx, r, r_new, dr, jdx, q, v, a, scratch;
+  int last_iterations = 0;              ///< quasi-Newton iterations of the last step
+  int last_refreshes = 0;               ///< Jacobian rebuilds in the last step
+  long total_refreshes = 0;             ///< Jacobian rebuilds since construction
+};
+
+struct ChainData {
+  explicit ChainData(const ChainModel& model);
+
+  std::vector<BodyKinematics> bodies;
+  Eigen::MatrixXd mass_matrix;      ///< M(Φ, t) [kg m²]
+  Eigen::VectorXd inertial_bias;    ///< velocity-product and base-motion terms of H [N m]
+  Eigen::VectorXd spring_force;     ///< K(Φ − Φ_rest) + C Φ̇ [N m]
+  Eigen::VectorXd generalized_load; ///< Q from the Loads and gravity [N m]
+  Eigen::VectorXd stiffness, damping, rest;  ///< copies of the model's diagonals
+  StepWorkspace step;
+};
+
+}  // namespace flapsim::mbd

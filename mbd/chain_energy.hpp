@@ -1,0 +1,32 @@
+#pragma once
+/// \file chain_energy.hpp
+/// \brief Energies and powers of the chain, for energy-balance checks and output:
+/// d(T + V)/dt = P_base + P_loads − Φ̇ᵀ C Φ̇, with T the kinetic energy in the ground
+/// frame, V the spring energy, P_base the power the prescribed base motion puts in.
+
+#include "mbd/base_motion.hpp"
+#include "mbd/chain_data.hpp"
+#include "mbd/chain_loads.hpp"
+#include "mbd/chain_model.hpp"
+
+#include <Eigen/Core>
+
+namespace flapsim::mbd {
+
+/// Kinetic energy in the ground frame [J] at the state of the last forward_kinematics.
+double kinetic_energy(const ChainModel& model, const ChainData& data);
+
+/// Spring energy ½ Σ k (Φ − Φ_rest)² [J].
+double spring_energy(const ChainModel& model, const Eigen::VectorXd& q);
+
+/// Power dissipated by the dampers Φ̇ᵀ C Φ̇ [W] (≥ 0).
+double damper_power(const ChainModel& model, const Eigen::VectorXd& v);
+
+/// Power the base puts into the chain [W]: ω_base · N, where N is the moment about the
+/// (fixed) pivot that the base exerts on the chain, from the chain's rate of angular
+/// momentum minus the moments of the loads and gravity. Needs full accelerations
+/// (forward_dynamics, or forward_kinematics + update_accelerations).
+double base_power(const ChainModel& model, const ChainData& data, const BasePose& base,
+                  const Loads& loads);
+
+}  // namespace flapsim::mbd

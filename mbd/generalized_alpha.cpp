@@ -1,0 +1,184 @@
+#include "mbd/generalized_alpha.hpp"
+
+#include "mbd/chain_dynamics.hpp"
+#include "mbd/chain_kinematics.hpp"
+#include "mbd/convergence_failure.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace flapsim::mbd {
+
+GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::from_rho_infinity(double rho) {
+  if (!(rho >= 0.0 && rho <= 1.0))
+    throw std::invalid_argument("generalized-alpha: rho_infinity must be in [0, 1], got " +
+                                std::to_string(rho));
+  GeneralizedAlphaCoefficients c;
+  c.alpha_m = (2.0 * rho - 1.0) / (rho + 1.0);
+  c.alpha_f = rho / (rho + 1.0);
+  c.gamma = 0.5 + c.alpha_f - c.alpha_m;
+  c.beta = 0.25 * (c.gamma + 0.5) * (c.gamma + 0.5);
+  return c;
+}
+
+ChainState make_initial_state(const ChainModel& model, ChainData& data, const BaseMotion& base,
+                              double t0, const Eigen::VectorXd& q0, const Eigen::VectorXd& v0,
+                              const Loads& loads) {
+  const int n = model.num_dofs();
+  if (q0.size() != n || v0.size() != n)
+    throw std::invalid_argument("initial state: Φ and Φ̇ must have " + std::to_string(n) +
+                                " entries");
+  ChainState s;
+  s.time = t0;
+  s.step = 0;
+  s.q = q0;
+  s.v = v0;
+  s.qdd.resize(n);
+  forward_dynamics(model, data, base(t0), q0, v0, loads, s.qdd);
+  if (!s.qdd.allFinite()) throw ConvergenceFailure("initial accelerations are not finite", 0, t0);
+  s.a = s.qdd;
+  return s;
+}
+
+namespace {
+
+std::string scientific(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3e", x);
+  return buf;
+}
+
+// Everything one residual evaluation needs; references into the caller's objects.
+struct StepProblem {
+  const ChainModel& model;
+  ChainData& data;
+  const BasePose& pose;
+  const ChainState& cur;
+  const Loads& loads;
+  GeneralizedAlphaCoefficients c;
+  double h;
+  double roundoff = 0.0;  // round-off floor of the last residual [N m]
+
+  // Φ, Φ̇, a at the end of the step for a trial Φ̈_{n+1} = x, into ws.q, ws.v, ws.a.
+  void predict(const Eigen::VectorXd& x) {
+    StepWorkspace& ws = data.step;
+    ws.a = ((1.0 - c.alpha_f) * x + c.alpha_f * cur.qdd - c.alpha_m * cur.a) / (1.0 - c.alpha_m);
+    ws.q = cur.q + h * cur.v + (h * h * (0.5 - c.beta)) * cur.a + (h * h * c.beta) * ws.a;
+    ws.v = cur.v + (h * (1.0 - c.gamma)) * cur.a + (h * c.gamma) * ws.a;
+  }
+
+  // r = M x + H − Q at the predicted state; returns the force scale.
+  double residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+    predict(x);
+    StepWorkspace& ws = data.step;
+    compute_all_terms(model, data, pose, ws.q, ws.v, loads);
+    ws.scratch.noalias() = data.mass_matrix * x;
+    r = ws.scratch + data.inertial_bias + data.spring_force - data.generalized_load;
+    // Force scale: the size of the terms that make up r, so that the tolerance is
+    // relative; plus a round-off floor: K∘|Φ| (not K∘|Φ − Φ_rest|) bounds the round-off
+    // of the spring term, which matters for tiny motions about a bent rest shape.
+    const double terms = ws.scratch.lpNorm<Eigen::Infinity>() +
+                         data.inertial_bias.lpNorm<Eigen::Infinity>() +
+                         data.spring_force.lpNorm<Eigen::Infinity>() +
+                         data.generalized_load.lpNorm<Eigen::Infinity>();
+    roundoff = 1e3 * std::numeric_limits<double>::epsilon() *
+               (terms + data.stiffness.cwiseProduct(ws.q.cwiseAbs() + data.rest.cwiseAbs())
+                            .lpNorm<Eigen::Infinity>());
+    return terms;
+  }
+
+  // Finite-difference Jacobian at x (r = residual at x), factorised.
+  void rebuild_jacobian(Eigen::VectorXd& x, const Eigen::VectorXd& r) {
+    StepWorkspace& ws = data.step;
+    const double delta = 1e-7 * std::max(x.lpNorm<Eigen::Infinity>(), 1.0);
+    for (int j = 0; j < x.size(); ++j) {
+      const double keep = x(j);
+      x(j) = keep + delta;
+      residual(x, ws.r_new);
+      ws.jacobian.col(j) = (ws.r_new - r) / delta;
+      x(j) = keep;
+    }
+    residual(x, ws.r_new);  // leave data at x again
+    ws.lu.compute(ws.jacobian);
+    ws.jacobian_valid = true;
+    ws.jacobian_dt = h;
+    ++ws.last_refreshes;
+    ++ws.total_refreshes;
+  }
+};
+
+}  // namespace
+
+void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
+             const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
+             const Loads& loads, ChainState& next) {
+  const double t1 = current.time + dt;
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw ConvergenceFailure("time step must be positive and finite", current.step, t1);
+  const BasePose pose = base(t1);
+  StepProblem p{model, data, pose, current, loads,
+                GeneralizedAlphaCoefficients::from_rho_infinity(settings.rho_infinity), dt};
+  StepWorkspace& ws = data.step;
+  ws.last_iterations = 0;
+  ws.last_refreshes = 0;
+
+  ws.x = current.qdd;  // initial guess: the last acceleration
+  double scale = p.residual(ws.x, ws.r);
+  double rnorm = ws.r.lpNorm<Eigen::Infinity>();
+  if (!std::isfinite(rnorm))
+    throw ConvergenceFailure("residual is not finite at the first iterate", current.step, t1);
+  // The Jacobian's h-dependent part changes with dt: rebuild when the step size changed.
+  if (!ws.jacobian_valid || std::abs(ws.jacobian_dt - dt) > 1e-12 * dt) p.rebuild_jacobian(ws.x, ws.r);
+
+  bool converged = rnorm <= settings.tolerance * scale + p.roundoff;
+  while (!converged) {
+    if (ws.last_iterations >= settings.max_iterations)
+      throw ConvergenceFailure("quasi-Newton solve did not converge in " +
+                                   std::to_string(settings.max_iterations) +
+                                   " iterations (residual " + scientific(rnorm) +
+                                   " N m, force scale " + scientific(scale) + " N m)",
+                               current.step, t1);
+    ++ws.last_iterations;
+    ws.dx = -ws.lu.solve(ws.r);
+    ws.x += ws.dx;
+    scale = p.residual(ws.x, ws.r_new);
+    const double new_norm = ws.r_new.lpNorm<Eigen::Infinity>();
+    if (!std::isfinite(new_norm) || !ws.x.allFinite())
+      throw ConvergenceFailure("state became NaN/Inf in the quasi-Newton solve", current.step, t1);
+    converged = new_norm <= settings.tolerance * scale + p.roundoff;
+    if (converged) {
+      ws.r = ws.r_new;
+      rnorm = new_norm;
+      break;
+    }
+    if (new_norm > 0.5 * rnorm && ws.last_refreshes < settings.max_jacobian_refreshes) {
+      // Broyden stalls: start again from a fresh finite-difference Jacobian here.
+      ws.r = ws.r_new;
+      p.rebuild_jacobian(ws.x, ws.r);
+    } else {
+      // Good Broyden update: J += (Δr − J Δx) Δxᵀ / (Δxᵀ Δx).
+      ws.dr = ws.r_new - ws.r;
+      ws.jdx.noalias() = ws.jacobian * ws.dx;
+      const double dxx = ws.dx.squaredNorm();
+      if (dxx > 0.0) {
+        ws.jacobian.noalias() += ((ws.dr - ws.jdx) / dxx) * ws.dx.transpose();
+        ws.lu.compute(ws.jacobian);
+      }
+      ws.r = ws.r_new;
+    }
+    rnorm = new_norm;
+  }
+  // data and the workspace hold the last residual evaluation = the converged iterate.
+  update_accelerations(model, data, ws.x);
+  next.time = t1;
+  next.step = current.step + 1;
+  next.q = ws.q;
+  next.v = ws.v;
+  next.a = ws.a;
+  next.qdd = ws.x;
+}
+
+}  // namespace flapsim::mbd
