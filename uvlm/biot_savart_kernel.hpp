@@ -12,38 +12,41 @@ namespace flapsim::uvlm::detail {
 
 constexpr double kInvFourPi = 0.079577471545947667884;  // 1/(4π)
 constexpr double kLambOseen = 1.25643;  // makes the Lamb–Oseen peak velocity sit at h = r_c
-constexpr double kTiny = 1e-300;        // keeps 0/0 (point on a segment, zero-length segment) at 0
+// Keeps 0/0 (point on a segment, zero-length segment) at 0; normal numbers in each precision.
+template <class T> constexpr T kTiny = T(1e-300);
+template <> constexpr float kTiny<float> = 1e-36f;
 
 /// exp(−y) for y ≥ 0 without a library call (vectorisable): e^(−y) = (e^(−y/64))^64 with a
 /// degree-10 Taylor polynomial on [0, 0.625]; relative error < 1e-12 for y < 20, and the
 /// argument is clamped at 40 where e^(−40) ≈ 4e-18 no longer matters next to 1.
-inline double exp_neg(double y) {
-  y = y < 40.0 ? y : 40.0;
-  const double z = -y * (1.0 / 64.0);
-  double p = 1.0 / 3628800.0;
-  p = p * z + 1.0 / 362880.0;
-  p = p * z + 1.0 / 40320.0;
-  p = p * z + 1.0 / 5040.0;
-  p = p * z + 1.0 / 720.0;
-  p = p * z + 1.0 / 120.0;
-  p = p * z + 1.0 / 24.0;
-  p = p * z + 1.0 / 6.0;
-  p = p * z + 0.5;
-  p = p * z + 1.0;
-  p = p * z + 1.0;
+template <class T>
+inline T exp_neg(T y) {
+  y = y < T(40) ? y : T(40);
+  const T z = -y * T(1.0 / 64.0);
+  T p = T(1.0 / 3628800.0);
+  p = p * z + T(1.0 / 362880.0);
+  p = p * z + T(1.0 / 40320.0);
+  p = p * z + T(1.0 / 5040.0);
+  p = p * z + T(1.0 / 720.0);
+  p = p * z + T(1.0 / 120.0);
+  p = p * z + T(1.0 / 24.0);
+  p = p * z + T(1.0 / 6.0);
+  p = p * z + T(0.5);
+  p = p * z + T(1);
+  p = p * z + T(1);
   p *= p; p *= p; p *= p; p *= p; p *= p; p *= p;
   return p;
 }
 
 /// Core factor f(x), x = h²/r_c² (see vortex_core.hpp).
-template <CoreModel M>
-inline double core_factor(double x) {
+template <CoreModel M, class T>
+inline T core_factor(T x) {
   if constexpr (M == CoreModel::CutOff) {
-    return x > 1.0 ? 1.0 : 0.0;  // compiles to a mask/blend, not a branch
+    return x > T(1) ? T(1) : T(0);  // compiles to a mask/blend, not a branch
   } else if constexpr (M == CoreModel::LambOseen) {
-    return 1.0 - exp_neg(kLambOseen * x);
+    return T(1) - exp_neg(T(kLambOseen) * x);
   } else {
-    return x / std::sqrt(1.0 + x * x);
+    return x / std::sqrt(T(1) + x * x);
   }
 }
 
@@ -51,22 +54,22 @@ inline double core_factor(double x) {
 /// Uses v = Γ/(4π) · f · (|r1|+|r2|)(|r1||r2| − r1·r2) / (|r1||r2| |r1×r2|²) · (r1×r2),
 /// r1 = P − A, r2 = P − B (algebraically the textbook r0·(r1/|r1| − r2/|r2|)/|r1×r2|² form).
 /// \param scale  1/(r_c² |B − A|²) [1/m⁴] (0 for a zero-length segment), so that x = |r1×r2|²·scale
-template <CoreModel M>
-inline void segment_velocity(double px, double py, double pz, double ax, double ay, double az,
-                             double bx, double by, double bz, double gamma, double scale,
-                             double& u, double& v, double& w) {
-  const double r1x = px - ax, r1y = py - ay, r1z = pz - az;
-  const double r2x = px - bx, r2y = py - by, r2z = pz - bz;
-  const double cx = r1y * r2z - r1z * r2y;
-  const double cy = r1z * r2x - r1x * r2z;
-  const double cz = r1x * r2y - r1y * r2x;
-  const double cross2 = cx * cx + cy * cy + cz * cz;
-  const double n1 = std::sqrt(r1x * r1x + r1y * r1y + r1z * r1z);
-  const double n2 = std::sqrt(r2x * r2x + r2y * r2y + r2z * r2z);
-  const double dot12 = r1x * r2x + r1y * r2y + r1z * r2z;
-  const double x = cross2 * scale;  // h²/r_c²
-  const double f = core_factor<M>(x);
-  const double k = gamma * kInvFourPi * f * (n1 + n2) * (n1 * n2 - dot12) / (n1 * n2 * cross2 + kTiny);
+template <CoreModel M, class T>
+inline void segment_velocity(T px, T py, T pz, T ax, T ay, T az, T bx, T by, T bz, T gamma, T scale,
+                             T& u, T& v, T& w) {
+  using Real = T;  // the precision of this evaluation
+  const Real r1x = px - ax, r1y = py - ay, r1z = pz - az;
+  const Real r2x = px - bx, r2y = py - by, r2z = pz - bz;
+  const Real cx = r1y * r2z - r1z * r2y;
+  const Real cy = r1z * r2x - r1x * r2z;
+  const Real cz = r1x * r2y - r1y * r2x;
+  const Real cross2 = cx * cx + cy * cy + cz * cz;
+  const Real n1 = std::sqrt(r1x * r1x + r1y * r1y + r1z * r1z);
+  const Real n2 = std::sqrt(r2x * r2x + r2y * r2y + r2z * r2z);
+  const Real dot12 = r1x * r2x + r1y * r2y + r1z * r2z;
+  const Real x = cross2 * scale;  // h²/r_c²
+  const Real f = core_factor<M>(x);
+  const Real k = gamma * T(kInvFourPi) * f * (n1 + n2) * (n1 * n2 - dot12) / (n1 * n2 * cross2 + kTiny<T>);
   u += k * cx;
   v += k * cy;
   w += k * cz;

@@ -52,6 +52,10 @@ struct VortexLatticeModel {
   WakeModel wake_model = WakeModel::Free;
   WakeIntegrator wake_integrator = WakeIntegrator::AdamsBashforth2;
   LoadMethod load_method = LoadMethod::Bernoulli;
+  /// Evaluate the wake's self-induced velocity (the free-wake convection, the cost of a
+  /// run) in single precision: about twice as fast, relative error ~1e-6 in the wake
+  /// velocity. The circulations and loads are always computed in double precision.
+  bool single_precision_wake = true;
   int max_wake_rows = 0;   ///< keep at most this many wake rows (oldest dropped); 0 = keep all
   int wake_capacity = 0;   ///< wake rows the workspace holds (the run's step count, or max_wake_rows)
 

@@ -80,7 +80,14 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
   P.zero_velocity();
   if (m.wake_model == WakeModel::Free) {
     detail::build_wake_segments(m, d);
-    if (d.wake_segments.size() > 0) add_induced_velocity(d.wake_segments, P, m.core);
+    if (d.wake_segments.size() > 0) {
+      if (m.single_precision_wake) {
+        d.wake_segments.update_single_precision();
+        add_induced_velocity_single(d.wake_segments, P, m.core);
+      } else {
+        add_induced_velocity(d.wake_segments, P, m.core);
+      }
+    }
     add_induced_velocity(d.bound_segments, P, m.core);
   }
   const double dt = d.dt;
