@@ -31,14 +31,9 @@ std::string xml_attribute(const std::string& text) {
 PvdSeries::PvdSeries(fs::path path) : path_(std::move(path)) { write(); }
 
 void PvdSeries::add(double time, const fs::path& file, int part) {
-  std::string name;
-  if (file.is_absolute()) {
-    const fs::path dir = fs::absolute(path_).parent_path();
-    name = file.lexically_relative(dir).generic_string();
-    if (name.empty()) name = file.generic_string();
-  } else {
-    name = file.lexically_normal().generic_string();
-  }
+  const fs::path dir = fs::absolute(path_).parent_path().lexically_normal();
+  std::string name = fs::absolute(file).lexically_normal().lexically_relative(dir).generic_string();
+  if (name.empty()) name = fs::absolute(file).generic_string();  // no relative form (another root)
   entries_.push_back({time, part, std::move(name)});
   try {
     write();

@@ -17,7 +17,7 @@ class PvdSeries {
   struct Entry {
     double time;       ///< [s]
     int part;          ///< part index (several data sets at one time), usually 0
-    std::string file;  ///< relative to the .pvd's directory, '/' separated
+    std::string file;  ///< as stored: relative to the .pvd's directory, '/' separated
   };
 
   /// \brief Starts a series and writes an empty, valid collection to \p path.
@@ -27,8 +27,9 @@ class PvdSeries {
 
   /// \brief Adds a data file (already written) and rewrites the .pvd atomically.
   /// \param time  [s]
-  /// \param file  the data file, absolute or relative to the .pvd's directory;
-  ///              stored relative to that directory
+  /// \param file  the data file as this process opened it (absolute, or relative to
+  ///              the current directory, e.g. dir / "vtk/wing_000012.vtp");
+  ///              stored relative to the .pvd's directory, as ParaView resolves it
   /// \param part  part index
   /// \throws OutputError
   void add(double time, const std::filesystem::path& file, int part = 0);

@@ -12,7 +12,7 @@ namespace flapsim::test {
 class ScratchDir {
  public:
   explicit ScratchDir(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() /
+      : path_(std::filesystem::weakly_canonical(std::filesystem::temp_directory_path()) /
               ("flapsim_" + name + "_" + std::to_string(static_cast<long>(::getpid())))) {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
