@@ -17,6 +17,7 @@ struct TomlTable::Document {
   toml::table root;
   double length_scale = 1.0;  // [m per file unit]
   std::string length_unit = "m";
+  std::vector<std::string> overridden;  // dotted keys set by apply_overrides
 };
 
 namespace {
@@ -46,6 +47,7 @@ const char* type_name(const toml::node& n) {
 
 std::string format_number(double v) {
   std::ostringstream s;
+  s.precision(12);
   s << v;
   return s.str();
 }
@@ -96,6 +98,36 @@ TomlTable parse_toml_string(std::string_view text, const std::string& name) {
   return TomlTable(std::move(doc), root, "", 1);
 }
 
+void TomlTable::apply_overrides(const std::vector<std::pair<std::string, std::string>>& overrides) {
+  for (const auto& [dotted, value_text] : overrides) {
+    if (dotted.empty() || dotted.front() == '.' || dotted.back() == '.')
+      throw InputError(file(), 0, dotted, "override: not a dotted key such as kinematics.frequency_hz");
+    toml::table parsed;
+    try {
+      const std::string text = "v = " + value_text;
+      parsed = toml::parse(std::string_view(text), std::string_view("override"));
+    } catch (const toml::parse_error& e) {
+      throw InputError(file(), 0, dotted,
+                       "override: \"" + value_text + "\" is not a TOML value (" +
+                           std::string(e.description()) + "); quote strings: '\"cosine\"'");
+    }
+    // Walk (and create) the tables on the way; the last component is the key to set.
+    toml::table* t = const_cast<toml::table*>(as_tbl(table_));
+    std::size_t start = 0;
+    for (std::size_t dot = dotted.find('.'); dot != std::string::npos;
+         start = dot + 1, dot = dotted.find('.', start)) {
+      const std::string part = dotted.substr(start, dot - start);
+      toml::node* n = t->get(part);
+      if (!n) n = &t->insert_or_assign(part, toml::table{}).first->second;
+      if (!n->is_table())
+        throw InputError(file(), 0, dotted, "override: '" + dotted.substr(0, dot) + "' is not a table");
+      t = n->as_table();
+    }
+    t->insert_or_assign(dotted.substr(start), *parsed.get("v"));
+    doc_->overridden.push_back(key_path(dotted));
+  }
+}
+
 TomlTable parse_toml_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "", "cannot open the file for reading");
@@ -125,12 +157,20 @@ int TomlTable::line_of(std::string_view key) const {
   return n ? line_of_node(*n, line_) : line_;
 }
 
+void TomlTable::raise(int line, const std::string& key_path, const std::string& message) const {
+  // A value set by an override has no line in the file: say where it came from instead.
+  for (const auto& k : doc_->overridden)
+    if (key_path == k || key_path.rfind(k + ".", 0) == 0 || key_path.rfind(k + "[", 0) == 0)
+      throw InputError(file(), 0, key_path, message + " (value given as an override)");
+  throw InputError(file(), line > 0 ? line : line_, key_path, message);
+}
+
 void TomlTable::fail(std::string_view key, const std::string& message) const {
-  throw InputError(file(), line_of(key), key_path(key), message);
+  raise(line_of(key), key_path(key), message);
 }
 
 void TomlTable::fail_at(int line, std::string_view key, const std::string& message) const {
-  throw InputError(file(), line > 0 ? line : line_, key_path(key), message);
+  raise(line, key_path(key), message);
 }
 
 void TomlTable::fail_type(std::string_view key, const char* expected) const {
@@ -170,8 +210,7 @@ void TomlTable::expect_only(const std::vector<std::string>& known) const {
     if (ok) continue;
     std::string list;
     for (const auto& kn : known) list += (list.empty() ? "" : ", ") + kn;
-    throw InputError(file(), line_of_node(v, line_), key_path(k.str()),
-                     "unknown key (a typo?); expected one of: " + list);
+    raise(line_of_node(v, line_), key_path(k.str()), "unknown key (a typo?); expected one of: " + list);
   }
 }
 
@@ -344,7 +383,7 @@ std::vector<std::vector<double>> TomlTable::get_number_rows(std::string_view key
 
 // --- lengths -------------------------------------------------------------------------------
 
-void TomlTable::read_length_unit(std::string_view key, std::string_view fallback) {
+void TomlTable::read_length_unit(std::string_view key, std::string_view fallback) const {
   const std::string unit = get_string(key, fallback);
   const auto scale = length_unit_in_metres(unit);
   if (!scale) fail(key, "unknown length unit \"" + unit + "\"; expected one of \"m\", \"cm\", \"mm\", \"um\"");

@@ -30,6 +30,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace flapsim::wings {
@@ -124,8 +125,9 @@ class TomlTable {
   // --- lengths (file unit in, metres out) --------------------------------------------
   /// Reads the top-level `length_unit` key ("m" if absent) and applies it to every
   /// table of this file. Unknown unit: error at that key.
+  /// (const: the unit is state of the whole parsed file, shared by all its tables.)
   void read_length_unit(std::string_view key = "length_unit",
-                        std::string_view fallback = "m");
+                        std::string_view fallback = "m") const;
   double length_scale() const;        ///< metres per file length unit
   const std::string& length_unit() const;
   /// A length [m]; bounds apply to the value as written in the file's unit.
@@ -139,6 +141,15 @@ class TomlTable {
   Eigen::Vector3d get_length_vector3(std::string_view key,
                                      const Eigen::Vector3d& fallback_m) const;
   Eigen::Vector3d get_length_vector3(std::string_view key) const;
+
+  // --- overrides (parameter sweeps) -------------------------------------------------------
+  /// Sets values before reading, e.g. {"kinematics.rotation_phase", "-0.1"} or
+  /// {"numerics.spacing", "\"cosine\""}: each value is TOML text; missing tables on the
+  /// way are created. Errors about an overridden key name the key and say it came from
+  /// an override (there is no file line). Call on the top-level table of a freshly
+  /// parsed file, before any reading.
+  /// \throws flapsim::InputError for a value that is not TOML or a path through a non-table
+  void apply_overrides(const std::vector<std::pair<std::string, std::string>>& overrides);
 
   // --- sub-tables -------------------------------------------------------------------
   /// Sub-table (a [section] or an inline { ... } table).
@@ -156,6 +167,7 @@ class TomlTable {
   TomlTable(std::shared_ptr<Document> doc, const void* table, std::string path, int line);
   const void* node(std::string_view key) const;  // const toml::node*, nullptr if absent
   [[noreturn]] void fail_type(std::string_view key, const char* expected) const;
+  [[noreturn]] void raise(int line, const std::string& key_path, const std::string& message) const;
 
   std::shared_ptr<Document> doc_;
   const void* table_ = nullptr;  // const toml::table*, owned by doc_

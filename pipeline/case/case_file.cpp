@@ -203,4 +203,11 @@ Case read_case(TomlTable root) {
 
 Case load_case_file(const std::string& path) { return read_case(wings::parse_toml_file(path)); }
 
+Case load_case_file(const std::string& path,
+                    const std::vector<std::pair<std::string, std::string>>& overrides) {
+  TomlTable root = wings::parse_toml_file(path);
+  root.apply_overrides(overrides);
+  return read_case(root);
+}
+
 }  // namespace flapsim::pipeline

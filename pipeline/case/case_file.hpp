@@ -6,6 +6,8 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "mbd/periodic_signal.hpp"
 #include "pipeline/case/case_model.hpp"
@@ -17,6 +19,12 @@ namespace flapsim::pipeline {
 /// against the document's folder.
 /// \throws flapsim::InputError
 Case read_case(wings::TomlTable root);
+
+/// Reads a case file with some keys overridden (parameter sweeps), e.g.
+/// {{"kinematics.rotation_phase", "-0.1"}}; values are TOML text (quote strings).
+/// \throws flapsim::InputError (errors on an overridden key say so)
+Case load_case_file(const std::string& path,
+                    const std::vector<std::pair<std::string, std::string>>& overrides);
 
 /// True if the top-level table looks like a case file (it has a [kinematics] table).
 bool is_case_document(const wings::TomlTable& root);

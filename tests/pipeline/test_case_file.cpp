@@ -164,3 +164,28 @@ TEST(CaseFileErrors, BadTabulatedSignal) {
   const auto short_table = error_of(kHead + "[kinematics.deviation]\nphase = [0.0, 0.5]\ndeg = [0.0, 1.0]\n");
   EXPECT_EQ(short_table.key(), "kinematics.deviation.phase");
 }
+
+TEST(CaseFile, OverridesForSweeps) {
+  const std::string path = kSource + "/cases/hover.toml";
+  const p::Case c = p::load_case_file(path, {{"kinematics.rotation_phase", "-0.1"},
+                                             {"numerics.spacing", "\"cosine\""},
+                                             {"kinematics.sweep.cos_deg", "[40.0]"},
+                                             {"output.vtk_every", "0"}});
+  EXPECT_DOUBLE_EQ(c.kinematics.rotation_phase, -0.1);
+  EXPECT_EQ(c.numerics.spacing, "cosine");
+  EXPECT_EQ(c.output.vtk_every, 0);
+  EXPECT_EQ(c.numerics.chordwise_panels, 6);  // untouched keys keep their values
+  // φ(0) = 10° + 40° cos(2π·(−0.1)) with the overridden amplitude and phase.
+  EXPECT_NEAR(c.kinematics.angles(0.0).sweep.value,
+              (10.0 + 40.0 * std::cos(-0.2 * std::numbers::pi)) * kDeg, 1e-12);
+  try {
+    p::load_case_file(path, {{"numerics.wake_order", "3"}});
+    ADD_FAILURE() << "wake_order 3 accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "numerics.wake_order");
+    EXPECT_EQ(e.line(), 0);
+    EXPECT_NE(e.message().find("override"), std::string::npos);
+  }
+  EXPECT_THROW(p::load_case_file(path, {{"numerics.spacing", "cosine"}}), InputError);  // unquoted
+  EXPECT_THROW(p::load_case_file(path, {{"numerics.cylces", "2"}}), InputError);        // typo
+}
