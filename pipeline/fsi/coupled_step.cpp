@@ -1,0 +1,179 @@
+#include "pipeline/fsi/coupled_step.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "mbd/chain_kinematics.hpp"
+#include "mbd/convergence_failure.hpp"
+#include "pipeline/fsi/load_transfer.hpp"
+#include "pipeline/numerical_failure.hpp"
+
+namespace flapsim::fsi {
+
+FsiData::FsiData(const FsiModel& model)
+    : chain(model.chain),
+      loads(model.chain.num_bodies()),
+      aitken(model.coupling.first_relaxation) {
+  if (model.air) {
+    lattice.emplace(model.lattice);
+    nodes.setZero(3, model.lattice.nodes());
+    node_velocities.setZero(3, model.lattice.nodes());
+  }
+  residual.setZero(model.chain.num_dofs());
+}
+
+namespace {
+
+void external_loads(const FsiModel& model, double t, mbd::Loads& loads) {
+  loads.clear();
+  if (model.external_loads) model.external_loads(t, loads);
+}
+
+// Relaxed state: s̃ += ω (ŝ − s̃) for Φ, Φ̇, Φ̈ and the algorithmic acceleration.
+void relax(mbd::ChainState& relaxed, const mbd::ChainState& trial, double omega) {
+  relaxed.q += omega * (trial.q - relaxed.q);
+  relaxed.v += omega * (trial.v - relaxed.v);
+  relaxed.qdd += omega * (trial.qdd - relaxed.qdd);
+  relaxed.a += omega * (trial.a - relaxed.a);
+  relaxed.time = trial.time;
+  relaxed.step = trial.step;
+}
+
+// The lattice solved on the chain's current kinematics at time t (loads in data.lattice).
+void solve_air(const FsiModel& model, FsiData& data, double dt, long step, double t) {
+  deformed_nodes(model.attachment, data.chain, data.nodes, data.node_velocities);
+  if (!data.nodes.allFinite() || !data.node_velocities.allFinite())
+    throw NumericalFailure("deformed wing surface is not finite", step, t);
+  uvlm::VortexLatticeData& lat = *data.lattice;
+  uvlm::solve(model.lattice, lat, data.nodes, data.node_velocities, model.free_stream, dt,
+              model.density);
+  if (!lat.loads.force.allFinite() || !lat.gamma.allFinite())
+    throw NumericalFailure("aerodynamic loads are not finite", step, t);
+}
+
+// data.loads = external loads at t + the lattice's panel loads (at the current pose).
+void assemble_loads(const FsiModel& model, FsiData& data, double t) {
+  external_loads(model, t, data.loads);
+  if (model.air)
+    add_panel_loads(model.attachment, data.chain, data.lattice->loads, data.loads);
+}
+
+void chain_step(const FsiModel& model, FsiData& data, double dt) {
+  mbd::advance(model.chain, data.chain, model.base, model.integrator, data.state, dt, data.loads,
+               data.trial);
+}
+
+double change(const FsiModel& model, const mbd::ChainState& a, const mbd::ChainState& b) {
+  const double rate_scale = 2.0 * std::numbers::pi * model.frequency;  // [rad/s] per flapping radian
+  const double dq = (a.q - b.q).lpNorm<Eigen::Infinity>();
+  const double dv = (a.v - b.v).lpNorm<Eigen::Infinity>() / rate_scale;
+  return std::max(dq, dv);
+}
+
+}  // namespace
+
+void initialize(const FsiModel& model, FsiData& data, double t0) {
+  const int n = model.chain.num_dofs();
+  const Eigen::VectorXd q0 = model.chain.rest_angles();
+  const Eigen::VectorXd v0 = Eigen::VectorXd::Zero(n);
+  external_loads(model, t0, data.loads);
+  try {
+    data.state = mbd::make_initial_state(model.chain, data.chain, model.base, t0, q0, v0, data.loads);
+  } catch (const mbd::ConvergenceFailure& e) {
+    throw NumericalFailure(e.what(), 0, t0);
+  }
+  data.trial = data.state;
+  data.relaxed = data.state;
+  data.step = 0;
+  data.last_iterations = 0;
+  data.total_iterations = 0;
+  data.last_change = 0.0;
+}
+
+void coupled_step(const FsiModel& model, FsiData& data, double dt) {
+  const double t1 = data.state.time + dt;
+  const long step = data.step;
+  try {
+    if (model.chain.num_dofs() == 0) {
+      // Rigid wing: the pose is prescribed; one lattice solve, nothing to iterate.
+      const Eigen::VectorXd none;
+      mbd::forward_kinematics(model.chain, data.chain, model.base(t1), none, none);
+      data.state.time = t1;
+      data.state.step = step + 1;
+      data.last_iterations = 0;
+      if (model.air) {
+        solve_air(model, data, dt, step, t1);
+        data.last_iterations = 1;
+      }
+      data.last_change = 0.0;
+    } else if (!model.air) {
+      external_loads(model, t1, data.loads);
+      chain_step(model, data, dt);
+      data.state = data.trial;
+      data.last_iterations = 0;
+      data.last_change = 0.0;
+    } else {
+      // 0. predictor: the previous step's aerodynamic loads (their points ride on the bodies).
+      external_loads(model, t1, data.loads);
+      // The previous aerodynamic loads were attached at the previous pose; re-attach
+      // them at the accepted pose of the last step (data.chain holds it).
+      if (step > 0) add_panel_loads(model.attachment, data.chain, data.lattice->loads, data.loads);
+      chain_step(model, data, dt);
+      data.relaxed = data.trial;
+      data.aitken.start_step();
+      bool converged = false;
+      int k = 0;
+      double delta = 0.0;
+      while (k < model.coupling.max_iterations) {
+        // 1. lattice on the relaxed iterate
+        if (k > 0)
+          mbd::forward_kinematics(model.chain, data.chain, model.base(t1), data.relaxed.q,
+                                  data.relaxed.v);
+        // (for k = 0 data.chain already holds the kinematics of the predictor = relaxed)
+        solve_air(model, data, dt, step, t1);
+        ++k;
+        // 2. chain step with these loads
+        assemble_loads(model, data, t1);
+        chain_step(model, data, dt);
+        // 3. converged?
+        delta = change(model, data.trial, data.relaxed);
+        if (!std::isfinite(delta))
+          throw NumericalFailure("coupling produced a non-finite chain state", step, t1);
+        if (delta <= model.coupling.tolerance) {
+          converged = true;
+          break;
+        }
+        data.residual = data.trial.qdd - data.relaxed.qdd;
+        relax(data.relaxed, data.trial, data.aitken.next(data.residual));
+      }
+      data.last_iterations = k;
+      data.last_change = delta;
+      if (!converged)
+        throw NumericalFailure("strong coupling did not converge in " + std::to_string(k) +
+                                   " sub-iterations (structure change " + std::to_string(delta) +
+                                   " rad, tolerance " + std::to_string(model.coupling.tolerance) +
+                                   ")",
+                               step, t1);
+      // 4. accept the chain's answer; data.chain holds its kinematics (mbd::advance).
+      data.state = data.trial;
+    }
+  } catch (const mbd::ConvergenceFailure& e) {
+    throw NumericalFailure(e.what(), step, t1);
+  } catch (const std::length_error& e) {
+    throw NumericalFailure(e.what(), step, t1);
+  }
+  data.step = step + 1;
+  data.total_iterations += data.last_iterations;
+}
+
+void shed_wake(const FsiModel& model, FsiData& data) {
+  if (!model.air) return;
+  try {
+    uvlm::advance(model.lattice, *data.lattice);
+  } catch (const std::length_error& e) {
+    throw NumericalFailure(e.what(), data.step - 1, data.state.time);
+  }
+}
+
+}  // namespace flapsim::fsi

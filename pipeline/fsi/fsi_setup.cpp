@@ -1,0 +1,143 @@
+#include "pipeline/fsi/fsi_setup.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "mbd/wing_kinematics.hpp"
+#include "pipeline/fsi/structure_source.hpp"
+#include "wings/input_error.hpp"
+#include "wings/planform_geometry.hpp"
+#include "wings/wing_file.hpp"
+#include "wings/wing_mass_properties.hpp"
+
+namespace flapsim::fsi {
+
+using pipeline::Case;
+
+mbd::ChainModel make_rigid_chain(const wings::Wing& wing) {
+  const wings::PlanformProperties p = wings::planform_properties(wing.outline);
+  const double mass = std::max(wings::estimate_wing_mass(wing).total(), 1e-12);
+  mbd::ChainBody body;
+  body.length = p.span;
+  body.mass = mass;
+  body.center_of_mass = Eigen::Vector3d(p.centroid.x(), p.centroid.y(), 0.0);
+  // Uniform rectangle-like plate of span R and chord c̄ about its centre (output only).
+  const double ixx = mass * p.span * p.span / 12.0, iyy = mass * p.mean_chord * p.mean_chord / 12.0;
+  body.inertia = Eigen::Vector3d(ixx, iyy, ixx + iyy).asDiagonal();
+  body.outboard_joint = Eigen::Vector3d(0.0, p.span, 0.0);
+  mbd::ChainModel chain;
+  chain.bodies = {body};
+  chain.joints = {mbd::ChainJoint{}};
+  chain.root = mbd::RootAttachment::rigid;
+  return chain;
+}
+
+double mean_speed_at_radius(const mbd::WingKinematics& kinematics, double radius, int samples) {
+  const double period = 1.0 / kinematics.frequency;
+  const Eigen::Vector3d r_w(0.0, radius, 0.0);
+  double sum = 0.0;
+  for (int i = 0; i < samples; ++i) {
+    const mbd::BasePose pose = kinematics.pose(period * i / samples);
+    sum += pose.angular_velocity.cross(pose.rotation * r_w).norm();
+  }
+  return sum / samples;
+}
+
+namespace {
+
+uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, int steps) {
+  uvlm::VortexLatticeModel m;
+  m.chordwise = c.numerics.chordwise_panels;
+  m.spanwise = c.numerics.spanwise_panels;
+  m.core.model = c.numerics.core_model == "cutoff" ? uvlm::CoreModel::CutOff : uvlm::CoreModel::LambOseen;
+  m.core.radius = c.numerics.core_radius * mean_chord;
+  m.wake_model = c.numerics.free_wake ? uvlm::WakeModel::Free : uvlm::WakeModel::Prescribed;
+  m.wake_integrator = c.numerics.wake_order == 2 ? uvlm::WakeIntegrator::AdamsBashforth2
+                                                 : uvlm::WakeIntegrator::Euler;
+  m.load_method = uvlm::LoadMethod::Bernoulli;  // as the rotation-phase paper
+  m.max_wake_rows = c.numerics.wake_max_rows;
+  m.wake_capacity = c.numerics.wake_max_rows > 0 ? c.numerics.wake_max_rows : steps;
+  return m;
+}
+
+ExternalLoads point_loads(const Case& c) {
+  if (c.loads.empty()) return {};
+  const std::vector<pipeline::PointLoad> loads = c.loads;
+  const double f = c.kinematics.frequency;
+  return [loads, f](double t, mbd::Loads& out) {
+    const double s = f * t;
+    for (const auto& l : loads) {
+      Eigen::Vector3d force, moment;
+      for (int i = 0; i < 3; ++i) {
+        force(i) = l.force[i].at_phase(s).value;
+        moment(i) = l.moment[i].at_phase(s).value;
+      }
+      const auto frame = l.ground_frame ? mbd::LoadFrame::ground : mbd::LoadFrame::body;
+      out.add_force(l.body - 1, l.point, force, frame);
+      out.add_moment(l.body - 1, moment, frame);
+    }
+  };
+}
+
+}  // namespace
+
+FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
+  FsiSetup s;
+  s.period = 1.0 / c.kinematics.frequency;
+  s.steps_per_cycle = c.numerics.steps_per_cycle;
+  s.steps = c.numerics.steps_per_cycle * c.numerics.cycles;
+  s.dt = s.period / s.steps_per_cycle;
+  if (!c.wing_file.empty()) s.wing = wings::load_wing_file(c.wing_file);
+  if (c.air.enabled && !s.wing)
+    throw InputError(c.file, 0, "wing",
+                     "a run in air needs the wing's outline for the vortex lattice: name a wing "
+                     "file, or set air = \"none\" for a vacuum run of the chain");
+
+  FsiModel& m = s.model;
+  StructureChoice structure = choose_structure(c, options.chain_file, s.wing ? &*s.wing : nullptr);
+  m.chain = std::move(structure.chain);
+  s.structure_source = structure.description;
+  if (c.structure.kind == Case::Structure::Kind::Flexible && m.chain.num_bodies() != c.structure.bodies)
+    s.structure_source += " (" + std::to_string(m.chain.num_bodies()) + " bodies; the case says " +
+                          std::to_string(c.structure.bodies) + ")";
+  for (const auto& l : c.loads)
+    if (l.body > m.chain.num_bodies())
+      throw InputError(c.file, 0, "loads.body",
+                       "body " + std::to_string(l.body) + " is outside the chain of " +
+                           std::to_string(m.chain.num_bodies()) + " bodies");
+  for (const auto& mk : c.markers)
+    if (mk.body > m.chain.num_bodies())
+      throw InputError(c.file, 0, "markers.body",
+                       "marker '" + mk.name + "' on body " + std::to_string(mk.body) +
+                           " is outside the chain of " + std::to_string(m.chain.num_bodies()) + " bodies");
+
+  m.base = mbd::make_base_motion(c.kinematics);
+  m.frequency = c.kinematics.frequency;
+  m.coupling.max_iterations = c.numerics.max_coupling_iterations;
+  m.coupling.tolerance = c.numerics.coupling_tolerance;
+  m.external_loads = point_loads(c);
+  m.air = c.air.enabled;
+  m.density = c.air.density;
+  m.free_stream = c.air.freestream;
+
+  if (m.air) {
+    const wings::PlanformProperties p = wings::planform_properties(s.wing->outline);
+    uvlm::PlanformGridOptions g;
+    g.chordwise = c.numerics.chordwise_panels;
+    g.spanwise = c.numerics.spanwise_panels;
+    const uvlm::Spacing spacing = c.numerics.spacing == "cosine" ? uvlm::Spacing::Cosine : uvlm::Spacing::Uniform;
+    g.chordwise_spacing = spacing;
+    g.spanwise_spacing = spacing;
+    s.grid = uvlm::make_planform_grid(s.wing->outline, g);
+    m.lattice = lattice_model(c, p.mean_chord, s.steps);
+    m.attachment = attach_wing(m.chain, s.grid->nodes, g.chordwise, g.spanwise);
+    s.reference.area = p.area;
+    s.reference.span = p.span;
+    s.reference.mean_chord = p.mean_chord;
+    s.reference.r2 = p.r2;
+    s.reference.speed = mean_speed_at_radius(c.kinematics, p.r2 * p.span);
+  }
+  return s;
+}
+
+}  // namespace flapsim::fsi

@@ -1,0 +1,61 @@
+#pragma once
+/// \file fsi_setup.hpp
+/// \brief From a checked Case to everything a coupled run needs: the wing and its
+/// lattice, the structure (a rigid one-body chain, a chain file, or the wing reduced in
+/// process), the attachment of one to the other, the base motion, the numerics and the
+/// reference values of the lift coefficient.
+
+#include <optional>
+#include <string>
+
+#include "mbd/chain_model.hpp"
+#include "pipeline/case/case_model.hpp"
+#include "pipeline/fsi/coupled_step.hpp"
+#include "uvlm/planform_grid.hpp"
+#include "wings/wing_model.hpp"
+
+namespace flapsim::fsi {
+
+/// Reference values of the lift coefficient CL = L / (½ ρ U_ref² S).
+struct LiftReference {
+  double area = 0.0;   ///< S: planform area of the wing outline [m²]
+  double speed = 0.0;  ///< U_ref: cycle-mean speed of the span axis at r2·R [m/s]
+  double r2 = 0.0;     ///< non-dimensional radius of gyration of the area [-]
+  double span = 0.0;   ///< R [m]
+  double mean_chord = 0.0;  ///< c̄ = S / R [m]
+  double dynamic_pressure_area(double rho) const { return 0.5 * rho * speed * speed * area; }
+};
+
+struct FsiSetup {
+  FsiModel model;
+  std::optional<wings::Wing> wing;        ///< the wing (if the case names one)
+  std::optional<uvlm::PlanformGrid> grid; ///< lattice grid in the wing frame (if air)
+  LiftReference reference;                ///< valid if air
+  std::string structure_source;           ///< how the structure was obtained (for the log)
+  int steps_per_cycle = 0;
+  int steps = 0;                          ///< total steps of the run
+  double period = 0.0;                    ///< 1/f [s]
+  double dt = 0.0;                        ///< time step [s]
+};
+
+/// Options of a run that do not come from the case file.
+struct SetupOptions {
+  std::string chain_file;  ///< overrides the case's chain file (flapsim run --chain)
+};
+
+/// \brief A one-body chain welded to the wing base: the rigid wing (no dofs). The body
+/// carries the wing's estimated mass and the inertia of a uniform plate of its planform
+/// (for output only: a prescribed body needs none).
+mbd::ChainModel make_rigid_chain(const wings::Wing& wing);
+
+/// \brief The cycle-mean speed [m/s] of the point at distance \p radius [m] along y_W,
+/// sampled at \p samples points of one period.
+double mean_speed_at_radius(const mbd::WingKinematics& kinematics, double radius, int samples = 720);
+
+/// \brief Builds the coupled model of a case.
+/// \throws flapsim::InputError when the structure cannot be obtained (flexible case without
+///         chain file and no in-process reduction), a wing is needed but missing, or the
+///         chain file is invalid; std::invalid_argument on inconsistent internal sizes
+FsiSetup build_fsi_setup(const pipeline::Case& c, const SetupOptions& options);
+
+}  // namespace flapsim::fsi

@@ -1,0 +1,78 @@
+#include "pipeline/fsi/fsi_vtk.hpp"
+
+#include "mbd/chain_kinematics.hpp"
+
+namespace flapsim::fsi {
+
+output::PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& m,
+                                       const uvlm::VortexLatticeData& d, double time) {
+  output::PolyDataMesh mesh;
+  mesh.time = time;
+  mesh.points = d.nodes;
+  const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
+  mesh.polygons.reserve(static_cast<std::size_t>(np));
+  Eigen::VectorXd gamma(np), pressure(np);
+  Eigen::Matrix3Xd force(3, np);
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0; i < nc; ++i) {
+      const int k = m.panel(i, j);
+      // Counter-clockwise seen from the panel normal n = span × (chord toward the trailing edge).
+      mesh.polygons.push_back({m.node(i, j), m.node(i, j + 1), m.node(i + 1, j + 1), m.node(i + 1, j)});
+      gamma(static_cast<Eigen::Index>(mesh.polygons.size() - 1)) = d.gamma(k);
+      pressure(static_cast<Eigen::Index>(mesh.polygons.size() - 1)) = d.loads.pressure_jump(k);
+      force.col(static_cast<Eigen::Index>(mesh.polygons.size() - 1)) = d.loads.force.col(k);
+    }
+  mesh.cell_data.add_scalar("pressure_jump_Pa", pressure);
+  mesh.cell_data.add_scalar("circulation_m2_s", gamma);
+  mesh.cell_data.add_vector("force_N", force);
+  mesh.point_data.add_vector("velocity_m_s", d.node_velocities);
+  return mesh;
+}
+
+output::PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& m, const uvlm::VortexLatticeData& d,
+                               double time) {
+  output::PolyDataMesh mesh;
+  mesh.time = time;
+  const int ns = m.spanwise, rows = d.wake_rows;
+  const int n1 = ns + 1;
+  const std::size_t nodes = rows > 0 ? static_cast<std::size_t>(rows + 1) * n1 : 0;
+  mesh.points.resize(3, static_cast<Eigen::Index>(nodes));
+  for (std::size_t k = 0; k < nodes; ++k)
+    mesh.points.col(static_cast<Eigen::Index>(k)) = d.wake_nodes.position(k);
+  Eigen::VectorXd gamma(static_cast<Eigen::Index>(rows) * ns);
+  for (int r = 0; r < rows; ++r)
+    for (int j = 0; j < ns; ++j) {
+      const int a = r * n1 + j;
+      mesh.polygons.push_back({a, a + 1, a + n1 + 1, a + n1});
+      gamma(r * ns + j) = d.wake_gamma[static_cast<std::size_t>(r) * ns + j];
+    }
+  mesh.cell_data.add_scalar("circulation_m2_s", gamma);
+  return mesh;
+}
+
+output::PolyDataMesh chain_mesh(const mbd::ChainModel& chain, const mbd::ChainData& data,
+                                double time) {
+  output::PolyDataMesh mesh;
+  mesh.time = time;
+  const int nb = chain.num_bodies();
+  mesh.points.resize(3, 3 * nb);
+  Eigen::VectorXd body_index(2 * nb);
+  for (int k = 0; k < nb; ++k) {
+    const mbd::BodyKinematics& b = data.bodies[static_cast<std::size_t>(k)];
+    mesh.points.col(3 * k) = b.origin;
+    mesh.points.col(3 * k + 1) = mbd::point_position(data, k, chain.bodies[static_cast<std::size_t>(k)].outboard_joint);
+    mesh.points.col(3 * k + 2) = b.com;
+    mesh.lines.push_back({3 * k, 3 * k + 1});
+    body_index(k) = k + 1;
+  }
+  // Centre-of-mass markers as degenerate polygons would confuse readers; use short lines
+  // from the joint line to the centre of mass instead.
+  for (int k = 0; k < nb; ++k) {
+    mesh.lines.push_back({3 * k, 3 * k + 2});
+    body_index(nb + k) = k + 1;
+  }
+  mesh.cell_data.add_scalar("body", body_index);
+  return mesh;
+}
+
+}  // namespace flapsim::fsi

@@ -1,0 +1,138 @@
+#include "pipeline/fsi/phase_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace flapsim::fsi {
+
+EulerAngles euler_angles(const Eigen::Matrix3d& r) {
+  EulerAngles a;
+  a.deviation = std::asin(std::clamp(r(2, 1), -1.0, 1.0));
+  a.sweep = std::atan2(-r(0, 1), r(1, 1));
+  a.rotation = std::atan2(r(2, 0), r(2, 2));
+  return a;
+}
+
+Eigen::Matrix3d euler_rotation(const EulerAngles& e) {
+  return (Eigen::AngleAxisd(e.sweep, Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(e.deviation, Eigen::Vector3d::UnitX()) *
+          Eigen::AngleAxisd(-e.rotation, Eigen::Vector3d::UnitY()))
+      .toRotationMatrix();
+}
+
+std::vector<double> crossing_times(const std::vector<double>& t, const std::vector<double>& x,
+                                   double level, int direction) {
+  std::vector<double> out;
+  const std::size_t n = std::min(t.size(), x.size());
+  for (std::size_t i = 1; i < n; ++i) {
+    const double a = x[i - 1] - level, b = x[i] - level;
+    const bool rising = a < 0.0 && b >= 0.0;
+    const bool falling = a > 0.0 && b <= 0.0;
+    if ((rising && direction >= 0) || (falling && direction <= 0))
+      out.push_back(t[i - 1] + (t[i] - t[i - 1]) * a / (a - b));
+  }
+  return out;
+}
+
+double window_mean(const std::vector<double>& t, const std::vector<double>& x, double t0,
+                   double t1) {
+  double integral = 0.0, span = 0.0;
+  const std::size_t n = std::min(t.size(), x.size());
+  const double eps = 1e-9 * std::max(std::abs(t1 - t0), 1e-300);
+  for (std::size_t i = 1; i < n; ++i) {
+    if (t[i - 1] < t0 - eps || t[i] > t1 + eps) continue;
+    const double h = t[i] - t[i - 1];
+    integral += 0.5 * h * (x[i] + x[i - 1]);
+    span += h;
+  }
+  return span > 0.0 ? integral / span : std::numeric_limits<double>::quiet_NaN();
+}
+
+namespace {
+
+double wrap_half(double f) {
+  f -= std::round(f);
+  if (f <= -0.5) f += 1.0;
+  return f;
+}
+
+// Times of the local extrema (sign +1 maxima, −1 minima) in [t0, t1], refined by a
+// parabola through the three samples around each.
+std::vector<double> extremum_times(const std::vector<double>& t, const std::vector<double>& x,
+                                   int sign, double t0, double t1) {
+  std::vector<double> out;
+  const std::size_t n = std::min(t.size(), x.size());
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double a = sign * x[i - 1], b = sign * x[i], c = sign * x[i + 1];
+    if (!(b >= a && b > c)) continue;
+    const double h0 = t[i] - t[i - 1], h1 = t[i + 1] - t[i];
+    // Vertex of the parabola b + βx + γx² through (−h0, a), (0, b), (h1, c).
+    const double d0 = (b - a) / h0, d1 = (c - b) / h1;
+    const double gamma = (d1 - d0) / (h0 + h1);
+    const double beta = d0 + gamma * h0;
+    double dt = gamma < 0.0 ? -beta / (2.0 * gamma) : 0.0;
+    dt = std::clamp(dt, -h0, h1);
+    const double te = t[i] + dt;
+    if (te >= t0 && te <= t1) out.push_back(te);
+  }
+  return out;
+}
+
+double nearest_shift(const std::vector<double>& candidates, double t_ref, double period) {
+  double best = std::numeric_limits<double>::quiet_NaN();
+  for (double c : candidates) {
+    const double f = wrap_half((c - t_ref) / period);
+    if (!(std::abs(f) >= std::abs(best))) best = f;
+  }
+  return best;
+}
+
+}  // namespace
+
+std::optional<double> crossing_lag(const std::vector<double>& t, const std::vector<double>& x,
+                                   const std::vector<double>& reference, double level,
+                                   double period, double t0, double t1) {
+  double sum = 0.0;
+  int count = 0;
+  for (int dir : {+1, -1}) {
+    const auto cx = crossing_times(t, x, level, dir);
+    for (double tr : crossing_times(t, reference, level, dir)) {
+      if (tr < t0 || tr > t1) continue;
+      const double f = nearest_shift(cx, tr, period);
+      if (std::isfinite(f)) {
+        sum += f;
+        ++count;
+      }
+    }
+  }
+  if (count == 0) return std::nullopt;
+  return sum / count;
+}
+
+std::optional<double> rotation_phase(const std::vector<double>& t, const std::vector<double>& sweep,
+                                     const std::vector<double>& alpha, double period, double t0,
+                                     double t1) {
+  constexpr double kRightAngle = 0.5 * 3.14159265358979323846;
+  // Search the reversals a little outside the window so a crossing near its edge finds one.
+  const auto maxima = extremum_times(t, sweep, +1, t0 - period, t1 + period);
+  const auto minima = extremum_times(t, sweep, -1, t0 - period, t1 + period);
+  double sum = 0.0;
+  int count = 0;
+  for (int dir : {-1, +1}) {
+    const auto& reversals = dir < 0 ? maxima : minima;
+    for (double tc : crossing_times(t, alpha, kRightAngle, dir)) {
+      if (tc < t0 || tc > t1) continue;
+      // The crossing minus its reversal: nearest_shift gives reversal − crossing.
+      const double f = nearest_shift(reversals, tc, period);
+      if (std::isfinite(f)) {
+        sum += -f;
+        ++count;
+      }
+    }
+  }
+  if (count == 0) return std::nullopt;
+  return sum / count;
+}
+
+}  // namespace flapsim::fsi

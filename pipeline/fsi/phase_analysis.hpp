@@ -1,0 +1,62 @@
+#pragma once
+/// \file phase_analysis.hpp
+/// \brief Reading a run's time series the way the rotation-phase paper does: Euler
+/// angles of a body in the stroke-plane frame, cycle means, and the rotation phase of
+/// base and tip from the α = 90° crossings (the paper's point A, Fig. 10).
+///
+/// Euler angles use the base convention R_SW = Rz(φ) · Rx(θ) · Ry(−α) (docs/kinematics.md):
+///   θ = asin(R₂₁), φ = atan2(−R₀₁, R₁₁), α = atan2(R₂₀, R₂₂).
+/// For a body of the chain the frame compared is R_GS^T R_GB R_WR^T: the body's rotation
+/// relative to the chain's undeformed orientation, so the tip's angles equal the base's
+/// when the wing does not deform.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <optional>
+#include <vector>
+
+namespace flapsim::fsi {
+
+struct EulerAngles {
+  double sweep = 0.0;      ///< φ [rad]
+  double deviation = 0.0;  ///< θ [rad]
+  double rotation = 0.0;   ///< α [rad]
+};
+
+/// \brief Euler angles of a rotation R_SW (stroke-plane frame ← wing-like frame).
+EulerAngles euler_angles(const Eigen::Matrix3d& rotation_sw);
+
+/// \brief Rotation matrix Rz(φ) · Rx(θ) · Ry(−α) of given angles (the inverse of euler_angles).
+Eigen::Matrix3d euler_rotation(const EulerAngles& angles);
+
+/// \brief Times [s] where a sampled signal crosses \p level, by linear interpolation
+/// between samples; \p direction +1 rising, −1 falling, 0 both.
+std::vector<double> crossing_times(const std::vector<double>& t, const std::vector<double>& x,
+                                   double level, int direction);
+
+/// \brief Mean of x over [t_begin, t_end] by the trapezoidal rule on the samples in it
+/// (the samples are assumed to cover the window).
+double window_mean(const std::vector<double>& t, const std::vector<double>& x, double t_begin,
+                   double t_end);
+
+/// \brief Mean time shift of the crossings of \p x relative to those of \p reference
+/// within a window, as a fraction of the period [-]: for each crossing of the
+/// reference (same level and direction) the nearest crossing of x, shift wrapped to
+/// (−½, ½]. Positive: x crosses later (lags). nullopt if either has no crossing.
+/// Both the rising and the falling crossings are used.
+std::optional<double> crossing_lag(const std::vector<double>& t, const std::vector<double>& x,
+                                   const std::vector<double>& reference, double level,
+                                   double period, double t_begin, double t_end);
+
+/// \brief Rotation phase of a wing section [-] in the paper's sense (δψ of eq. 8):
+/// time of the α = 90° crossing minus the time of the stroke reversal it belongs to
+/// (φ maximum before the falling crossing, φ minimum before the rising one), as a
+/// fraction of the period, averaged over both half-strokes in the window; negative =
+/// rotation ahead of the reversal (advanced). nullopt if no crossing is found.
+/// \param alpha  α samples [rad]; \param sweep  φ samples [rad]
+std::optional<double> rotation_phase(const std::vector<double>& t, const std::vector<double>& sweep,
+                                     const std::vector<double>& alpha, double period,
+                                     double t_begin, double t_end);
+
+}  // namespace flapsim::fsi

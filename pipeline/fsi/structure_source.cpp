@@ -1,0 +1,32 @@
+#include "pipeline/fsi/structure_source.hpp"
+
+#include "pipeline/chain_file.hpp"
+#include "pipeline/fsi/fsi_setup.hpp"
+#include "wings/input_error.hpp"
+
+namespace flapsim::fsi {
+
+StructureChoice choose_structure(const pipeline::Case& c, const std::string& chain_override,
+                                 const wings::Wing* wing) {
+  using Kind = pipeline::Case::Structure::Kind;
+  StructureChoice s;
+  if (c.structure.kind == Kind::Rigid) {
+    if (!wing)
+      throw InputError(c.file, 0, "structure.kind",
+                       "a rigid wing is built from the wing file: name one with 'wing'");
+    s.chain = make_rigid_chain(*wing);
+    s.description = "rigid wing (one body welded to the base)";
+    return s;
+  }
+  const std::string path = !chain_override.empty() ? chain_override : c.chain_file;
+  if (!path.empty()) {
+    s.chain = pipeline::read_chain_file(path);
+    s.description = "chain file " + path + " (" + std::to_string(s.chain.num_bodies()) + " bodies)";
+    return s;
+  }
+  throw InputError(c.file, 0, "chain",
+                   "a flexible wing needs its bar chain: give 'chain = \"...\"' in the case, or "
+                   "'flapsim run CASE --chain FILE' (make the chain with 'flapsim reduce WING -o DIR')");
+}
+
+}  // namespace flapsim::fsi

@@ -1,0 +1,28 @@
+#pragma once
+/// \file structure_source.hpp
+/// \brief Where the structure of a run comes from: a rigid wing is a one-body chain
+/// welded to the base; a flexible wing is the chain file given on the command line
+/// (`flapsim run --chain`), else the case's `chain` file, else the wing reduced in
+/// process (FEM + reduction with `structure.bodies` bodies).
+
+#include <string>
+
+#include "mbd/chain_model.hpp"
+#include "pipeline/case/case_model.hpp"
+#include "wings/wing_model.hpp"
+
+namespace flapsim::fsi {
+
+struct StructureChoice {
+  mbd::ChainModel chain;
+  std::string description;  ///< e.g. "chain file out/hawkmoth/chain.toml (10 bodies)"
+};
+
+/// \brief Chooses and builds the structure of a case (see the file comment).
+/// \param chain_override  chain file from the command line ("" = none)
+/// \param wing            the case's wing, or nullptr
+/// \throws flapsim::InputError naming the case file and key when nothing usable is given
+StructureChoice choose_structure(const pipeline::Case& c, const std::string& chain_override,
+                                 const wings::Wing* wing);
+
+}  // namespace flapsim::fsi
