@@ -128,7 +128,10 @@ ModalResult solve_modes(const SparseMatrix& K, const SparseMatrix& M,
   // rigid-body modes of a free wing) and may miss the others: count the
   // eigenvalues below the highest one found (Sturm check) and search for the
   // missing ones orthogonal to those found.
-  for (int pass = 0; pass < 4; ++pass) {
+  const bool sturm = options.sturm_check == ModalOptions::SturmCheck::Always ||
+                     (options.sturm_check == ModalOptions::SturmCheck::Auto &&
+                      constraints.num_free() == constraints.num_dofs());
+  for (int pass = 0; sturm && pass < 4; ++pass) {
     const double top = lam.maxCoeff();
     const double probe = top + 1e-6 * std::max(std::abs(top), std::abs(sigma)) + 1e-300;
     const int below = count_eigenvalues_below(Kf, Mf, probe);

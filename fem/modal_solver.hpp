@@ -3,6 +3,8 @@
 /// \brief The lowest natural modes of K x = λ M x (λ = ω²) with Spectra's
 /// Lanczos in shift-invert mode; K − σM is factorised once with CHOLMOD.
 
+#include <limits>
+
 #include <Eigen/Core>
 
 #include "fem/assembly.hpp"
@@ -20,6 +22,13 @@ struct ModalOptions {
   double shift = std::numeric_limits<double>::quiet_NaN();
   int max_iterations = 1000;
   double tolerance = 1e-10;  ///< Spectra's relative tolerance on the transformed eigenvalues
+  /// Sturm check: count the eigenvalues below the highest one found (LDLᵀ
+  /// inertia of K − λM) and search again, deflated, for any Lanczos missed.
+  /// Lanczos finds one vector per exactly repeated eigenvalue, so this matters
+  /// for free structures (six rigid-body modes) and symmetric ones. Auto: only
+  /// when nothing is constrained (it costs one more factorisation).
+  enum class SturmCheck { Auto, Always, Never };
+  SturmCheck sturm_check = SturmCheck::Auto;
 };
 
 /// Modes, lowest first.

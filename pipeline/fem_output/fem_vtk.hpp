@@ -1,0 +1,48 @@
+#pragma once
+/// \file fem_vtk.hpp
+/// \brief FEM results as VTK unstructured grids (mesh.vtu, fem.vtu): the wing's
+/// triangles and vein segments with mode shapes and static displacements as
+/// point-data vectors, ready for ParaView's "Warp By Vector".
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fem/load_cases.hpp"
+#include "fem/mesh.hpp"
+#include "fem/mode_classification.hpp"
+#include "fem/modal_solver.hpp"
+#include "pipeline/output/vtk_writers.hpp"
+
+namespace flapsim::pipeline {
+
+/// \brief The mesh as VTK cells: triangles first, then vein segments. Cell data
+/// "vein" (vein index, −1 on membrane triangles); point data "clamped" (1 at
+/// nodes with y <= clamp_y, else 0).
+output::UnstructuredMesh fem_unstructured_mesh(const fem::Mesh& mesh, double clamp_y);
+
+/// \brief Adds the translations of a full DOF vector as point vector `name`
+/// and, if `with_rotations`, its rotations as `name + "_rotation"`.
+void add_nodal_vector(output::UnstructuredMesh& grid, const std::string& name, const Eigen::VectorXd& dofs,
+                      bool with_rotations = false);
+
+/// Static results to show: one displacement field per load case.
+struct StaticResult {
+  fem::LoadCase load;
+  Eigen::VectorXd displacement;  ///< full DOF vector [m, rad]
+};
+
+/// \brief Writes fem.vtu: the mesh plus, as point vectors, "mode_NN" for each
+/// mode (mass-normalised shape, translations) and "static_<case>" for each
+/// static case (displacement [m] under the unit load). Field data cannot carry
+/// text, so frequencies and kinds go to modes.csv.
+void write_fem_vtu(const std::filesystem::path& path, const fem::Mesh& mesh, double clamp_y,
+                   const fem::ModalResult& modes, const std::vector<StaticResult>& statics);
+
+/// \brief Writes modes.csv: columns mode, frequency_hz, kind.
+void write_modes_csv(const std::filesystem::path& path, const fem::ModalResult& modes,
+                     const std::vector<fem::ModeKind>& kinds);
+
+}  // namespace flapsim::pipeline
