@@ -170,3 +170,17 @@ TEST(OutputCsv, NonFiniteValuesAreWrittenAsNanAndInf) {
   EXPECT_EQ(flapsim::output::format_number(-std::numeric_limits<double>::infinity()), "-inf");
   EXPECT_EQ(flapsim::output::format_number(0.046), "0.046");
 }
+
+TEST(OutputCsv, UnwritableDirectoryIsAnOutputErrorNamingThePath) {
+  // A regular file where the output directory should be (as with "-o" pointing at a file).
+  ScratchDir dir("csv_unwritable");
+  flapsim::output::write_text_atomically(dir / "taken", "x\n");
+  try {
+    write_csv(dir / "taken/table.csv", {"a"}, std::vector<std::vector<double>>{{1.0}});
+    FAIL() << "expected OutputError";
+  } catch (const flapsim::output::OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("taken"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(CsvTimeSeriesWriter(dir / "taken/history.csv", {"t_s"}), flapsim::output::OutputError);
+  EXPECT_EQ(dir.files(), std::vector<std::string>{"taken"});
+}
