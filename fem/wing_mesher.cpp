@@ -177,8 +177,14 @@ Mesh mesh_locked(const wings::Wing& wing, const MeshOptions& options) {
   if (!options.msh_path.empty()) {
     std::filesystem::path tmp = options.msh_path;
     tmp.replace_filename("." + options.msh_path.stem().string() + ".tmp" + options.msh_path.extension().string());
-    gmsh::write(tmp.string());
-    std::filesystem::rename(tmp, options.msh_path);
+    try {
+      gmsh::write(tmp.string());
+      std::filesystem::rename(tmp, options.msh_path);
+    } catch (...) {
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);  // never leave a half-written file behind
+      throw;
+    }
   }
   gmsh::clear();
   return mesh;
