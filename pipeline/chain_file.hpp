@@ -1,0 +1,51 @@
+#pragma once
+/// \file chain_file.hpp
+/// \brief `chain.toml`: the Hencky bar chain (mbd::ChainModel) as a file, written by
+/// `flapsim reduce` and read by `flapsim run` (docs/multibody.md, "Chain file").
+///
+/// \code
+///   length_unit = "m"                 # lengths (length, centre of mass, joints, offset)
+///   root = "rigid"                    # or "sprung" (joint of body 1 has springs)
+///   root_offset = [0.0, 0.0, 0.0]     # root point in the wing frame W
+///   root_rotation = [[1,0,0],[0,1,0],[0,0,1]]   # R_WR, row by row (optional)
+///   [[bodies]]
+///   length = 0.0161                   # [length unit]
+///   mass = 13.27e-6                   # [kg]
+///   center_of_mass = [-0.001, 0.00805, 0.0]     # body frame [length unit]
+///   inertia = [[...],[...],[...]]     # about the centre of mass, body axes [kg m²]
+///   outboard_joint = [0, 0.0161, 0]   # optional, default (0, length, 0)
+///   [bodies.joint]                    # the joint inboard of this body
+///   bend_stiffness = 4e-3             # k_θ [N m/rad]
+///   twist_stiffness = 1e-3            # k_α [N m/rad]
+///   bend_damping = 0.0                # optional [N m s/rad]
+///   twist_damping = 0.0               # optional [N m s/rad]
+///   bend_rest = 0.0                   # optional [rad]
+///   twist_rest = 0.0                  # optional [rad]
+/// \endcode
+/// With a rigid root the first body's joint is optional and ignored. Masses, inertias
+/// and springs are SI whatever the length unit.
+
+#include "mbd/chain_model.hpp"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace flapsim::pipeline {
+
+/// Reads and checks a chain file.
+/// \throws flapsim::InputError naming file, line and key (missing keys, bad values,
+///         non-physical inertia tensors, unknown keys)
+mbd::ChainModel read_chain_file(const std::string& path);
+
+/// Same from text (tests); \p name is used as the file name in errors.
+mbd::ChainModel parse_chain_text(std::string_view text, const std::string& name);
+
+/// The chain as chain-file text (SI, length_unit = "m", round-trip exact numbers).
+std::string format_chain_file(const mbd::ChainModel& chain);
+
+/// Writes the chain file atomically (temporary name, then rename).
+/// \throws flapsim::output::OutputError
+void write_chain_file(const std::filesystem::path& path, const mbd::ChainModel& chain);
+
+}  // namespace flapsim::pipeline
