@@ -27,7 +27,9 @@ BeamProperties extract_beam_properties(const ClampedWingAnalysis& analysis, int 
   const std::vector<SectionMotion> mot_m = smp.sample_all(um);
   const std::vector<SectionMotion> mot_t = smp.sample_all(ut);
   const std::vector<double> nea = analysis.cell_elastic_axis(smp);
-  const double z_start = analysis.tip_zone().s_start;
+  // Cells up to one tip-zone length inboard of the loaded zone are disturbed by the
+  // local deformation where the loads are applied (as in lump_into_chain).
+  const double z_start = analysis.measurement_limit();
 
   for (int k = 0; k < n; ++k) {
     BeamStation st;
@@ -71,7 +73,7 @@ BeamProperties extract_beam_properties(const ClampedWingAnalysis& analysis, int 
   for (auto& st : beam.stations) st.x_ea = ax.point(st.s, st.n_ea).x();
 
   // Mean elastic axis from the twists at the tip zone's edge, and the coupling measure.
-  const SectionSampler edge = analysis.sampler({z_start}, 0.5 * ds);
+  const SectionSampler edge = analysis.sampler({z_start}, 0.5 * ds);  // clear of the loads
   const double p1 = edge.sample(0, analysis.uz().col(kForceLeading)).phi;
   const double p2 = edge.sample(0, analysis.uz().col(kForceTrailing)).phi;
   const double n1 = analysis.n_force_leading(), n2 = analysis.n_force_trailing();

@@ -23,7 +23,7 @@ struct BeamStation {
   double EI = 0.0;           ///< bending stiffness [N m²]
   double GJ = 0.0;           ///< torsional stiffness [N m²]
   double I_alpha = 0.0;      ///< mass moment of inertia per length about the axis [kg m]
-  bool in_tip_zone = false;  ///< stiffness copied from the last cell outside the loaded tip zone
+  bool in_tip_zone = false;  ///< stiffness copied from the last cell clear of the loaded tip zone (one zone length inboard)
 };
 
 /// The beam.

@@ -47,14 +47,22 @@ LumpedChain lump_into_chain(const ClampedWingAnalysis& analysis, int num_bodies)
   // Section positions: the clamp, then the mid-point of every body. A mid-point inside
   // the loaded tip zone (only the last body's, with many bodies) is moved to the
   // zone's inboard edge and its cell's compliance scaled to the full cell length.
-  const double z_start = analysis.tip_zone().s_start;
+  // Sections stay one tip-zone length inboard of the loaded zone, clear of the local
+  // deformation where the loads are applied.
+  const double z_start = analysis.measurement_limit();
   std::vector<double> sections;
   for (int k = 0; k < nb; ++k) sections.push_back(std::min(a * (k + 0.5), z_start));
   if (nb >= 2 && sections[static_cast<std::size_t>(nb - 2)] >= z_start)
     throw std::invalid_argument("lump_into_chain: " + std::to_string(nb) +
                                 " bodies put joint cells into the loaded tip zone (s > " +
                                 std::to_string(z_start) + " m); use fewer bodies");
-  const SectionSampler smp = analysis.sampler(sections, 0.25 * a);
+  // A root half cell shorter than a fit band (many bodies, or a long clamp) is measured
+  // over one band width from the clamp and scaled to its length (uniform compliance).
+  const double min_cell = 4.0 * analysis.element_size();  // one fit band half-width
+  const double root_out = std::max(sections.front(), std::min(s_root + min_cell, z_start));
+  std::vector<double> fit_sections = sections;
+  fit_sections.push_back(root_out);
+  const SectionSampler smp = analysis.sampler(fit_sections, 0.25 * a);
   const std::vector<SectionMotion> mot_m = smp.sample_all(analysis.uz().col(kBendingMoment));
   const std::vector<SectionMotion> mot_t = smp.sample_all(analysis.uz().col(kTorque));
   chain.joints.assign(static_cast<std::size_t>(nb), mbd::ChainJoint{});
@@ -71,9 +79,10 @@ LumpedChain lump_into_chain(const ClampedWingAnalysis& analysis, int num_bodies)
       ph_in = mot_t[static_cast<std::size_t>(k - 1)].phi;
       s_in = sections[static_cast<std::size_t>(k - 1)];
     }
-    const double th_out = mot_m[static_cast<std::size_t>(k)].theta;
-    const double ph_out = mot_t[static_cast<std::size_t>(k)].phi;
-    const double s_out = sections[static_cast<std::size_t>(k)];
+    const std::size_t out_index = k == 0 ? sections.size() : static_cast<std::size_t>(k);
+    const double th_out = mot_m[out_index].theta;
+    const double ph_out = mot_t[out_index].phi;
+    const double s_out = k == 0 ? root_out : sections[static_cast<std::size_t>(k)];
     const double full = k == 0 ? 0.5 * a - s_root : a;  // nominal cell length [m]
     const double scale = full / (s_out - s_in);          // 1 unless the cell was shortened
     mbd::ChainJoint& j = chain.joints[static_cast<std::size_t>(k)];

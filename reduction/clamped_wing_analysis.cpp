@@ -46,7 +46,10 @@ ClampedWingAnalysis::ClampedWingAnalysis(const fem::Mesh& mesh, const fem::Assem
   // First pass along y_W; then the fitted axis through the pivot.
   setup_frame(AxisFrame{0.0}, zone_length);
   solve_load_cases();
-  if (options.axis == AxisChoice::fitted) {
+  if (options.axis == AxisChoice::given) {
+    setup_frame(AxisFrame{options.psi}, zone_length);
+    solve_load_cases();
+  } else if (options.axis == AxisChoice::fitted) {
     const int cells = std::max(options.axis_fit_cells, 4);
     std::vector<double> sections;
     const double s_end = zone_.s_start;
@@ -108,7 +111,8 @@ void ClampedWingAnalysis::solve_load_cases() {
 }
 
 SectionSampler ClampedWingAnalysis::sampler(const std::vector<double>& sections, double half_width) const {
-  return SectionSampler(s_, n_, sections, std::max(half_width, 2.0 * element_size_));
+  // At least four element sizes: a band only two node rows wide gives a noisy slope c₁.
+  return SectionSampler(s_, n_, sections, std::max(half_width, 4.0 * element_size_));
 }
 
 std::vector<RigidMass> ClampedWingAnalysis::strips(const std::vector<double>& edges) const {

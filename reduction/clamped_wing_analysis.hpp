@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -25,10 +26,12 @@ namespace flapsim::reduction {
 enum class AxisChoice {
   fitted,  ///< least-squares line through the pivot and the per-cell elastic-axis points
   span,    ///< y_W itself (ψ = 0)
+  given,   ///< AnalysisOptions::psi
 };
 
 struct AnalysisOptions {
   AxisChoice axis = AxisChoice::fitted;
+  double psi = 0.0;                   ///< axis angle for AxisChoice::given [rad]
   int axis_fit_cells = 20;            ///< cells of the first (ψ = 0) pass for the axis fit
   double tip_zone_fraction = 0.025;    ///< loaded tip zone, fraction of the span [-]
   double unit_moment = 1e-6;          ///< magnitude of the load cases [N m] (linear: any value)
@@ -71,6 +74,11 @@ class ClampedWingAnalysis {
   double n_force_trailing() const { return n2_; } ///< [m]
   double moment() const { return moment_; }        ///< bending moment of its case [N m]
   double torque() const { return moment_; }        ///< torque of its case [N m]
+  /// Outermost section position whose fit band stays clear of the loaded tip zone and
+  /// its local deformation: zone start − max(zone length, band half-width) [m].
+  double measurement_limit() const {
+    return zone_.s_start - std::max(s_tip_ - zone_.s_start, 4.0 * element_size_);
+  }
   /// Typical element size (mean edge length) [m].
   double element_size() const { return element_size_; }
   /// FEM mass matrix and stiffness (for strip sums and modes).
@@ -78,7 +86,7 @@ class ClampedWingAnalysis {
   const fem::Constraints& constraints() const { return *constraints_; }
 
   /// \brief A section sampler at axis positions \p sections, band half-width at least
-  /// \p half_width and two element sizes.
+  /// \p half_width and four element sizes.
   SectionSampler sampler(const std::vector<double>& sections, double half_width) const;
 
   /// \brief Rigid-body mass properties (about the pivot, wing axes) of the strips

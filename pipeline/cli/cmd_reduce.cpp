@@ -1,14 +1,283 @@
+// flapsim reduce WING.toml -o DIR --bodies N: the equivalent beam and the Hencky bar
+// chain of a wing, with a report of how well the chain reproduces the FEM
+// (docs/reduction.md). The reduction library returns data; the files are written
+// here, each atomically.
 #include "pipeline/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <stdexcept>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "fem/wing_fem.hpp"
+#include "pipeline/output/atomic_file.hpp"
+#include "pipeline/output/csv_writer.hpp"
+#include "pipeline/output/summary_json.hpp"
+#include "pipeline/output/vtk_writers.hpp"
+#include "reduction/beam_properties.hpp"
+#include "reduction/chain_lumping.hpp"
+#include "reduction/reduction_report.hpp"
+#include "wings/input_error.hpp"
+#include "wings/wing_file.hpp"
 
 namespace flapsim::cli {
 
+namespace {
+
+namespace fs = std::filesystem;
+using output::format_number;
+
+struct ReduceOptions {
+  std::string wing_file;
+  std::string out_dir;
+  int bodies = 10;
+  int stations = 40;
+  int modes = 12;
+  std::string axis = "fitted";
+};
+
+void write_beam_csv(const fs::path& path, const reduction::BeamProperties& beam) {
+  std::vector<std::vector<double>> rows;
+  for (const auto& st : beam.stations)
+    rows.push_back({st.s, st.y, st.mass_per_length, st.x_cg, st.x_ea, st.n_cg, st.n_ea, st.EI, st.GJ,
+                    st.I_alpha, st.in_tip_zone ? 1.0 : 0.0});
+  output::write_csv(path,
+                    {"s_m", "y_m", "m_per_length_kg_per_m", "x_cg_m", "x_ea_m", "n_cg_m", "n_ea_m",
+                     "EI_N_m2", "GJ_N_m2", "I_alpha_kg_m", "in_tip_zone"},
+                    rows);
+}
+
+void write_vtp(const fs::path& path, const reduction::BeamProperties& beam,
+               const reduction::LumpedChain& lc) {
+  const auto& ax = beam.axis;
+  const int ns = static_cast<int>(beam.stations.size());
+  const int nb = lc.chain.num_bodies();
+  const int np = ns + (nb + 1) + nb;
+  output::PolyDataMesh mesh;
+  mesh.points.resize(3, np);
+  Eigen::VectorXd kind = Eigen::VectorXd::Zero(np), ei = kind, gj = kind, mpl = kind, ia = kind,
+                  nea = kind, ncg = kind, bmass = kind;
+  for (int k = 0; k < ns; ++k) {
+    const auto& st = beam.stations[static_cast<std::size_t>(k)];
+    mesh.points.col(k) = ax.point(st.s, 0.0);
+    ei[k] = st.EI;
+    gj[k] = st.GJ;
+    mpl[k] = st.mass_per_length;
+    ia[k] = st.I_alpha;
+    nea[k] = st.n_ea;
+    ncg[k] = st.n_cg;
+  }
+  std::vector<int> axis_line;
+  for (int k = 0; k < ns; ++k) axis_line.push_back(k);
+  mesh.lines.push_back(axis_line);
+  const Eigen::Matrix3d r = ax.rotation();
+  for (int k = 0; k <= nb; ++k) {
+    mesh.points.col(ns + k) = ax.point(lc.body_length * k, 0.0);
+    kind[ns + k] = 1.0;
+  }
+  for (int k = 0; k < nb; ++k) {
+    const auto& b = lc.chain.bodies[static_cast<std::size_t>(k)];
+    const int c = ns + nb + 1 + k;
+    mesh.points.col(c) = ax.point(lc.body_length * k, 0.0) + r * b.center_of_mass;
+    kind[c] = 2.0;
+    bmass[c] = b.mass;
+    mesh.lines.push_back({ns + k, ns + k + 1});
+    mesh.lines.push_back({ns + k, c});
+  }
+  mesh.point_data.add_scalar("kind_station0_joint1_com2", kind);
+  mesh.point_data.add_scalar("EI_N_m2", ei);
+  mesh.point_data.add_scalar("GJ_N_m2", gj);
+  mesh.point_data.add_scalar("m_per_length_kg_per_m", mpl);
+  mesh.point_data.add_scalar("I_alpha_kg_m", ia);
+  mesh.point_data.add_scalar("n_ea_m", nea);
+  mesh.point_data.add_scalar("n_cg_m", ncg);
+  mesh.point_data.add_scalar("body_mass_kg", bmass);
+  output::write_vtp(path, mesh);
+}
+
+std::string vec3(const Eigen::Vector3d& v) {
+  return "[" + format_number(v.x()) + ", " + format_number(v.y()) + ", " + format_number(v.z()) + "]";
+}
+
+/// chain.toml: the ChainModel field by field, SI units (docs/reduction.md). Written
+/// here until pipeline/ has the shared chain-file writer.
+void write_chain_toml(const fs::path& path, const mbd::ChainModel& chain) {
+  std::ostringstream s;
+  s << "# Hencky bar chain from 'flapsim reduce' (docs/reduction.md). SI units.\n"
+    << "# Body frame: origin at the inboard joint, y along the body, x toward the leading edge.\n"
+    << "# Joint k: R = Rx(theta_k) * Ry(alpha_k); inertia about the centre of mass, body axes.\n"
+    << "length_unit = \"m\"\n"
+    << "root = \"" << (chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid") << "\"\n"
+    << "root_offset = " << vec3(chain.root_offset) << "\n"
+    << "# R_WR, row by row: columns are the root frame's x, y, z in the wing frame\n"
+    << "root_rotation = [" << vec3(chain.root_rotation.row(0).transpose()) << ", "
+    << vec3(chain.root_rotation.row(1).transpose()) << ", " << vec3(chain.root_rotation.row(2).transpose())
+    << "]\n";
+  for (int k = 0; k < chain.num_bodies(); ++k) {
+    const auto& b = chain.bodies[static_cast<std::size_t>(k)];
+    const auto& j = chain.joints[static_cast<std::size_t>(k)];
+    s << "\n[[bodies]]   # body " << k + 1 << "\n"
+      << "length = " << format_number(b.length) << "\n"
+      << "mass = " << format_number(b.mass) << "\n"
+      << "center_of_mass = " << vec3(b.center_of_mass) << "\n"
+      << "inertia = [" << vec3(b.inertia.row(0).transpose()) << ", " << vec3(b.inertia.row(1).transpose())
+      << ", " << vec3(b.inertia.row(2).transpose()) << "]\n"
+      << "outboard_joint = " << vec3(b.outboard_joint) << "\n"
+      << "[bodies.joint]   # inboard of this body" << (k == 0 && chain.root == mbd::RootAttachment::rigid ? " (unused: rigid root)" : "") << "\n"
+      << "bend_stiffness = " << format_number(j.bend_stiffness) << "\n"
+      << "twist_stiffness = " << format_number(j.twist_stiffness) << "\n"
+      << "bend_damping = " << format_number(j.bend_damping) << "\n"
+      << "twist_damping = " << format_number(j.twist_damping) << "\n"
+      << "bend_rest = " << format_number(j.bend_rest) << "\n"
+      << "twist_rest = " << format_number(j.twist_rest) << "\n";
+  }
+  output::write_text_atomically(path, s.str());
+}
+
+std::string pct(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%+.2f %%", 100.0 * x);
+  return buf;
+}
+
+std::string report_text(const ReduceOptions& o, const reduction::BeamProperties& beam,
+                        const reduction::LumpedChain& lc, const reduction::ChainFemComparison& c) {
+  std::ostringstream s;
+  s << "# Reduction of " << o.wing_file << "\n\n"
+    << "Method: docs/reduction.md. Flexural axis through the pivot at psi = " << beam.axis.psi
+    << " rad from y_W; flexible span " << beam.s_root << " … " << beam.s_tip << " m; "
+    << beam.stations.size() << " beam stations; " << lc.chain.num_bodies() << " bodies of "
+    << lc.body_length << " m, root " << (lc.chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid")
+    << ".\n\n"
+    << "FEM mass " << c.fem_mass << " kg, strip sum " << beam.strip_mass_sum << " kg, chain mass "
+    << c.chain_mass << " kg. Mean elastic axis from the tip twists: n = " << beam.n_ea_tip
+    << " m from the axis. Bending–torsion coupling (twist under the unit moment / twist under "
+       "the unit torque): "
+    << beam.bend_twist_coupling << " (not represented by the chain).\n\n"
+    << "## Chain vs FEM\n\n| quantity | FEM | chain | error | MAC |\n|---|---|---|---|---|\n";
+  auto mode_row = [&](const char* name, const reduction::ModeMatch& m) {
+    if (!m.found) {
+      s << "| " << name << " | not found | | | |\n";
+      return;
+    }
+    s << "| " << name << " [Hz] (FEM mode " << m.fem_mode + 1 << ", chain mode " << m.chain_mode + 1
+      << ") | " << m.fem_hz << " | " << m.chain_hz << " | " << pct(m.relative_error) << " | " << m.mac
+      << " |\n";
+  };
+  mode_row("first bending", c.bending);
+  mode_row("first torsion", c.torsion);
+  auto static_row = [&](const char* name, const reduction::StaticMatch& m) {
+    s << "| " << name << " | " << m.fem << " | " << m.chain << " | " << pct(m.relative_error) << " | |\n";
+  };
+  static_row("tip deflection under the tip force on the axis [m]", c.tip_deflection);
+  static_row("tip bending rotation under the tip moment [rad]", c.tip_bending_rotation);
+  static_row("tip twist under the tip torque [rad]", c.tip_twist);
+  s << "\nStatic responses at s = " << c.measure_s
+    << " m (inboard edge of the loaded tip zone); loads as in beam extraction.\n\n"
+    << "## FEM modes\n\n| mode | f [Hz] | kind |\n|---|---|---|\n";
+  for (std::size_t i = 0; i < c.fem_hz.size(); ++i)
+    s << "| " << i + 1 << " | " << c.fem_hz[i] << " | " << c.fem_kinds[i] << " |\n";
+  s << "\n## Chain modes\n\n| mode | f [Hz] | kind |\n|---|---|---|\n";
+  for (std::size_t i = 0; i < c.chain_hz.size() && i < 12; ++i)
+    s << "| " << i + 1 << " | " << c.chain_hz[i] << " | " << c.chain_kinds[i] << " |\n";
+  s << "\n## Bodies (body frame: origin at the inboard joint, y along the axis, x toward the LE)\n\n"
+    << "| body | length [m] | mass [kg] | com x, y, z [m] | I_xx, I_yy, I_zz about com [kg m²] | k_theta "
+       "[N m/rad] | k_alpha [N m/rad] |\n|---|---|---|---|---|---|---|\n";
+  for (int k = 0; k < lc.chain.num_bodies(); ++k) {
+    const auto& b = lc.chain.bodies[static_cast<std::size_t>(k)];
+    const auto& j = lc.chain.joints[static_cast<std::size_t>(k)];
+    s << "| " << k + 1 << " | " << b.length << " | " << b.mass << " | " << b.center_of_mass.x() << ", "
+      << b.center_of_mass.y() << ", " << b.center_of_mass.z() << " | " << b.inertia(0, 0) << ", "
+      << b.inertia(1, 1) << ", " << b.inertia(2, 2) << " | " << j.bend_stiffness << " | "
+      << j.twist_stiffness << " |\n";
+  }
+  return s.str();
+}
+
+void write_summary(const fs::path& path, const reduction::BeamProperties& beam,
+                   const reduction::LumpedChain& lc, const reduction::ChainFemComparison& c) {
+  output::SummaryJson j;
+  j.set("num_bodies", c.num_bodies);
+  j.set("num_stations", static_cast<int>(beam.stations.size()));
+  j.set("axis_psi_rad", beam.axis.psi);
+  j.set("root", lc.chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid");
+  j.set("fem_mass_kg", c.fem_mass);
+  j.set("chain_mass_kg", c.chain_mass);
+  j.set("n_ea_tip_m", beam.n_ea_tip);
+  j.set("bend_twist_coupling", beam.bend_twist_coupling);
+  j.set("bending_found", c.bending.found);
+  j.set("bending_fem_hz", c.bending.fem_hz);
+  j.set("bending_chain_hz", c.bending.chain_hz);
+  j.set("bending_relative_error", c.bending.relative_error);
+  j.set("bending_mac", c.bending.mac);
+  j.set("torsion_found", c.torsion.found);
+  j.set("torsion_fem_hz", c.torsion.fem_hz);
+  j.set("torsion_chain_hz", c.torsion.chain_hz);
+  j.set("torsion_relative_error", c.torsion.relative_error);
+  j.set("torsion_mac", c.torsion.mac);
+  j.set("static_measure_s_m", c.measure_s);
+  j.set("tip_deflection_fem_m", c.tip_deflection.fem);
+  j.set("tip_deflection_chain_m", c.tip_deflection.chain);
+  j.set("tip_deflection_relative_error", c.tip_deflection.relative_error);
+  j.set("tip_rotation_fem_rad", c.tip_bending_rotation.fem);
+  j.set("tip_rotation_chain_rad", c.tip_bending_rotation.chain);
+  j.set("tip_rotation_relative_error", c.tip_bending_rotation.relative_error);
+  j.set("tip_twist_fem_rad", c.tip_twist.fem);
+  j.set("tip_twist_chain_rad", c.tip_twist.chain);
+  j.set("tip_twist_relative_error", c.tip_twist.relative_error);
+  j.write(path);
+}
+
+void run_reduce(const ReduceOptions& o) {
+  const wings::Wing wing = wings::load_wing_file(o.wing_file);  // InputError → exit 2
+  reduction::AnalysisOptions ao;
+  ao.axis = o.axis == "span" ? reduction::AxisChoice::span : reduction::AxisChoice::fitted;
+  const fem::WingFem fem = fem::build_wing_fem(wing);
+  const fem::WingModes modes = fem::wing_modes(fem, o.modes);
+  const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp, ao);
+  const reduction::BeamProperties beam = reduction::extract_beam_properties(analysis, o.stations);
+  const reduction::LumpedChain lc = reduction::lump_into_chain(analysis, o.bodies);
+  const reduction::ChainFemComparison cmp =
+      reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds);
+
+  const fs::path dir(o.out_dir);
+  output::ensure_directory(dir);
+  write_beam_csv(dir / "beam.csv", beam);
+  write_chain_toml(dir / "chain.toml", lc.chain);
+  write_vtp(dir / "reduction.vtp", beam, lc);
+  output::write_text_atomically(dir / "report.md", report_text(o, beam, lc, cmp));
+  write_summary(dir / "summary.json", beam, lc, cmp);
+  std::cerr << "reduce: " << o.bodies << " bodies; first bending " << cmp.bending.chain_hz << " Hz (FEM "
+            << cmp.bending.fem_hz << " Hz, " << pct(cmp.bending.relative_error) << "), first torsion "
+            << cmp.torsion.chain_hz << " Hz (FEM " << cmp.torsion.fem_hz << " Hz, "
+            << pct(cmp.torsion.relative_error) << "); wrote " << dir.string() << "\n";
+}
+
+}  // namespace
+
 void add_reduce_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("reduce", "(under construction)");
-  cmd->callback([] { throw std::runtime_error("'flapsim reduce' is not available yet"); });
+  auto* cmd = app.add_subcommand(
+      "reduce",
+      "Reduce a wing's FEM to an equivalent beam and an N-body Hencky bar chain.\n"
+      "Writes DIR/beam.csv (stations: s, y, m', x_cg, x_ea, EI, GJ, I_alpha),\n"
+      "DIR/chain.toml (bodies and springs, for 'flapsim run'), DIR/reduction.vtp,\n"
+      "DIR/report.md and DIR/summary.json (chain vs FEM: first bending and torsion\n"
+      "frequencies, MAC, static tip deflection and twist). Method: docs/reduction.md.");
+  auto o = std::make_shared<ReduceOptions>();
+  cmd->add_option("WING", o->wing_file, "wing file (TOML)")->required();
+  cmd->add_option("-o,--output", o->out_dir, "output directory")->required();
+  cmd->add_option("--bodies", o->bodies, "number of bodies N_b (default 10)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--stations", o->stations, "number of beam stations (default 40)")
+      ->check(CLI::Range(2, 10000));
+  cmd->add_option("--modes", o->modes, "FEM modes to compute (default 12)")->check(CLI::Range(2, 200));
+  cmd->add_option("--axis", o->axis, "flexural axis: fitted (least squares through the pivot) or span (y_W)")
+      ->check(CLI::IsMember({"fitted", "span"}));
+  cmd->callback([o] { run_reduce(*o); });
 }
 
 }  // namespace flapsim::cli

@@ -1,0 +1,121 @@
+#include "reduction/reduction_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flapsim::reduction {
+
+double modal_assurance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  const double ab = a.dot(b), aa = a.squaredNorm(), bb = b.squaredNorm();
+  return aa > 0.0 && bb > 0.0 ? ab * ab / (aa * bb) : 0.0;
+}
+
+namespace {
+
+double rel(double chain, double fem) { return fem != 0.0 ? chain / fem - 1.0 : 0.0; }
+
+}  // namespace
+
+ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
+                                          const LumpedChain& lumped, const fem::ModalResult& modes,
+                                          const std::vector<fem::ModeKind>& kinds) {
+  ChainFemComparison out;
+  const mbd::ChainModel& chain = lumped.chain;
+  const int nb = chain.num_bodies();
+  const double a = lumped.body_length;
+  out.num_bodies = nb;
+  out.fem_mass = lumped.fem_mass;
+  out.chain_mass = chain.total_mass();
+  const LinearChain lin(chain);
+  const std::vector<ChainMode> cmodes = lin.modes();
+  for (const auto& m : cmodes) {
+    out.chain_hz.push_back(m.frequency_hz);
+    out.chain_kinds.push_back(m.is_bending() ? "bending" : "torsion");
+  }
+  for (Eigen::Index i = 0; i < modes.frequencies_hz.size(); ++i) {
+    out.fem_hz.push_back(modes.frequencies_hz[i]);
+    out.fem_kinds.push_back(i < static_cast<Eigen::Index>(kinds.size()) ? fem::to_string(kinds[static_cast<std::size_t>(i)]) : "?");
+  }
+
+  // Sample points: two per body at its mid-span, at the leading and trailing nodes of the band.
+  std::vector<double> mids;
+  for (int k = 0; k < nb; ++k) mids.push_back(a * (k + 0.5));
+  const SectionSampler smp = analysis.sampler(mids, 0.25 * a);
+  auto fem_samples = [&](const Eigen::VectorXd& shape) {
+    Eigen::VectorXd uz(analysis.nodes().cols());
+    for (Eigen::Index i = 0; i < uz.size(); ++i) uz[i] = shape[fem::dof_index(static_cast<int>(i), fem::UZ)];
+    Eigen::VectorXd v(2 * nb);
+    for (int k = 0; k < nb; ++k) {
+      const SectionMotion m = smp.sample(k, uz);
+      v[2 * k] = m.w - m.phi * smp.n_max(k);
+      v[2 * k + 1] = m.w - m.phi * smp.n_min(k);
+    }
+    return v;
+  };
+  auto chain_samples = [&](const Eigen::VectorXd& q) {
+    Eigen::VectorXd v(2 * nb);
+    for (int k = 0; k < nb; ++k) {
+      v[2 * k] = lin.displacement(k, Eigen::Vector3d(smp.n_max(k), mids[static_cast<std::size_t>(k)], 0.0), q).z();
+      v[2 * k + 1] = lin.displacement(k, Eigen::Vector3d(smp.n_min(k), mids[static_cast<std::size_t>(k)], 0.0), q).z();
+    }
+    return v;
+  };
+  auto match = [&](fem::ModeKind kind, bool bending) {
+    ModeMatch mm;
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+      if (kinds[i] == kind) {
+        mm.fem_mode = static_cast<int>(i);
+        break;
+      }
+    for (std::size_t i = 0; i < cmodes.size(); ++i)
+      if (cmodes[i].is_bending() == bending) {
+        mm.chain_mode = static_cast<int>(i);
+        break;
+      }
+    mm.found = mm.fem_mode >= 0 && mm.chain_mode >= 0;
+    if (!mm.found) return mm;
+    mm.fem_hz = modes.frequencies_hz[mm.fem_mode];
+    mm.chain_hz = cmodes[static_cast<std::size_t>(mm.chain_mode)].frequency_hz;
+    mm.relative_error = rel(mm.chain_hz, mm.fem_hz);
+    mm.mac = modal_assurance(fem_samples(modes.shapes.col(mm.fem_mode)),
+                             chain_samples(cmodes[static_cast<std::size_t>(mm.chain_mode)].shape));
+    return mm;
+  };
+  out.bending = match(fem::ModeKind::Bending, true);
+  out.torsion = match(fem::ModeKind::Torsion, false);
+
+  // Statics at the inboard edge of the loaded tip zone, the same wrenches on both.
+  const TipZone& zone = analysis.tip_zone();
+  // At the mid-point of the outermost body clear of the loaded zone: under a tip moment
+  // or torque the chain's rotations equal the FEM's there (Hencky), so the rotation
+  // errors measure the load cases' departure from that and the deflection the lumping.
+  out.measure_s = a * 0.5;
+  for (int k = nb - 1; k >= 0; --k)
+    if (a * (k + 0.5) <= analysis.measurement_limit()) {
+      out.measure_s = a * (k + 0.5);
+      break;
+    }
+  const SectionSampler edge = analysis.sampler({out.measure_s}, 0.25 * a);
+  const SectionMotion f_force = edge.sample(0, analysis.uz().col(kForceOnAxis));
+  const SectionMotion f_moment = edge.sample(0, analysis.uz().col(kBendingMoment));
+  const SectionMotion f_torque = edge.sample(0, analysis.uz().col(kTorque));
+  const int b_load = lin.body_at(zone.s_centroid);
+  const int b_meas = lin.body_at(out.measure_s);
+  const Eigen::Vector3d p_load(0.0, zone.s_centroid, 0.0), p_meas(0.0, out.measure_s, 0.0);
+  const auto& w = analysis.wrenches();
+  // The force case is a force on the axis (n = 0) at the zone's centroid span.
+  const Eigen::VectorXd q_force = lin.static_response(lin.generalized_force(
+      b_load, p_load, Eigen::Vector3d(0.0, 0.0, w[kForceOnAxis].force_z), Eigen::Vector3d::Zero()));
+  const Eigen::VectorXd q_moment = lin.static_response(lin.generalized_force(
+      b_load, p_load, Eigen::Vector3d::Zero(), Eigen::Vector3d(w[kBendingMoment].moment_n, 0.0, 0.0)));
+  const Eigen::VectorXd q_torque = lin.static_response(lin.generalized_force(
+      b_load, p_load, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, w[kTorque].moment_s, 0.0)));
+  out.tip_deflection = {f_force.w, lin.displacement(b_meas, p_meas, q_force).z(), 0.0};
+  out.tip_bending_rotation = {f_moment.theta, lin.rotation(b_meas, q_moment).x(), 0.0};
+  out.tip_twist = {f_torque.phi, lin.rotation(b_meas, q_torque).y(), 0.0};
+  for (StaticMatch* s : {&out.tip_deflection, &out.tip_bending_rotation, &out.tip_twist})
+    s->relative_error = rel(s->chain, s->fem);
+  return out;
+}
+
+}  // namespace flapsim::reduction

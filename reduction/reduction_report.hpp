@@ -1,0 +1,59 @@
+#pragma once
+/// \file reduction_report.hpp
+/// \brief How well a lumped chain reproduces the clamped FEM: first bending and
+/// first torsion frequencies, MAC of their shapes, static tip deflection, bending
+/// rotation and twist (docs/reduction.md, "Checking the chain against the FEM").
+
+#include <string>
+#include <vector>
+
+#include "fem/modal_solver.hpp"
+#include "fem/mode_classification.hpp"
+#include "reduction/chain_lumping.hpp"
+#include "reduction/linear_chain.hpp"
+
+namespace flapsim::reduction {
+
+/// One mode family (first bending or first torsion) in both models.
+struct ModeMatch {
+  bool found = false;      ///< both models have a mode of this kind
+  int fem_mode = -1;       ///< index among the FEM modes
+  int chain_mode = -1;     ///< index among the chain modes
+  double fem_hz = 0.0, chain_hz = 0.0;  ///< [Hz]
+  double relative_error = 0.0;          ///< chain / FEM − 1 [-]
+  double mac = 0.0;                     ///< modal assurance criterion of the sampled shapes [-]
+};
+
+/// One static response in both models.
+struct StaticMatch {
+  double fem = 0.0, chain = 0.0;  ///< [m] or [rad]
+  double relative_error = 0.0;    ///< chain / FEM − 1 [-]
+};
+
+struct ChainFemComparison {
+  int num_bodies = 0;
+  double fem_mass = 0.0, chain_mass = 0.0;  ///< [kg]
+  ModeMatch bending, torsion;
+  double measure_s = 0.0;           ///< axis position of the static comparison [m]
+  StaticMatch tip_deflection;       ///< w under the tip force on the axis
+  StaticMatch tip_bending_rotation; ///< θ under the tip bending moment
+  StaticMatch tip_twist;            ///< φ under the tip torque
+  std::vector<double> fem_hz;       ///< all FEM modes [Hz]
+  std::vector<std::string> fem_kinds;
+  std::vector<double> chain_hz;     ///< all chain modes [Hz]
+  std::vector<std::string> chain_kinds;  ///< "bending" / "torsion" by spring energy
+};
+
+/// \brief Compares the chain with the FEM.
+/// \param analysis  the clamped FEM with its load cases
+/// \param lumped    the chain lumped from it
+/// \param modes     clamped-root FEM modes (fem::wing_modes or fem::solve_modes)
+/// \param kinds     the FEM's classification of each mode
+ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
+                                          const LumpedChain& lumped, const fem::ModalResult& modes,
+                                          const std::vector<fem::ModeKind>& kinds);
+
+/// \brief MAC = (aᵀb)² / (aᵀa · bᵀb).
+double modal_assurance(const Eigen::VectorXd& a, const Eigen::VectorXd& b);
+
+}  // namespace flapsim::reduction
