@@ -1,14 +1,72 @@
+// flapsim sweep CASE.toml --vary KEY=VALUES -o DIR [--chain FILE] [--jobs N] [--vtk-every N]
 #include "pipeline/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <stdexcept>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "pipeline/sweep/sweep_runner.hpp"
+#include "pipeline/sweep/sweep_values.hpp"
+#include "wings/input_error.hpp"
 
 namespace flapsim::cli {
 
+namespace {
+
+struct SweepArgs {
+  std::string case_file, vary, output_dir, chain_file;
+  int jobs = 0;
+  int vtk_every = 0;
+  bool quiet = false;
+};
+
+void sweep_command(const SweepArgs& a) {
+  const sweep::Variation variation = sweep::parse_variation(a.vary);
+  if (!a.chain_file.empty() && !std::filesystem::is_regular_file(a.chain_file))
+    throw InputError(a.chain_file, 0, "--chain", "chain file not found");
+  sweep::SweepOptions options;
+  options.output_dir = a.output_dir;
+  options.chain_file = a.chain_file;
+  options.threads = a.jobs;
+  options.vtk_every = a.vtk_every;
+  options.quiet = a.quiet;
+  const auto rows = sweep::run_sweep(a.case_file, variation, options);
+  if (a.quiet) return;
+  std::printf("%-16s %14s %9s %12s %12s  %s\n", variation.key.substr(variation.key.rfind('.') + 1).c_str(),
+              "mean lift [N]", "mean CL", "tip phase", "tip lag", "status");
+  for (const auto& r : rows)
+    std::printf("%-16s %14.6g %9.4f %12.4f %12.4f  %s\n", sweep::value_label(r.value).c_str(), r.mean_lift,
+                r.mean_cl, r.tip_rotation_phase, r.tip_rotation_lag,
+                r.status == "ok" ? "ok" : r.status.c_str());
+  std::printf("table: %s\n", (std::filesystem::path(a.output_dir) / "sweep.csv").string().c_str());
+}
+
+}  // namespace
+
 void add_sweep_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("sweep", "(under construction)");
-  cmd->callback([] { throw std::runtime_error("'flapsim sweep' is not available yet"); });
+  auto args = std::make_shared<SweepArgs>();
+  auto* cmd = app.add_subcommand(
+      "sweep",
+      "Run a case for several values of one case-file key, in parallel over the cores.\n"
+      "VALUES: start:step:stop (inclusive) or a comma list, e.g.\n"
+      "  flapsim sweep cases/rotation_phase_rigid.toml --vary kinematics.rotation_phase=-0.20:0.05:0.10 -o out/rigid\n"
+      "Each value runs in DIR/<index>_<value>/ (history.csv, summary.json; VTK with --vtk-every);\n"
+      "DIR/sweep.csv lists value, mean lift, mean CL, tip rotation phase and lag, coupling\n"
+      "iterations, wall time and status of each case (a failed case does not stop the others).");
+  cmd->add_option("case", args->case_file, "case file (TOML)")->required();
+  cmd->add_option("--vary", args->vary, "KEY=VALUES, e.g. kinematics.rotation_phase=-0.10:0.05:0.10")
+      ->required();
+  cmd->add_option("-o,--output", args->output_dir, "output folder")->required();
+  cmd->add_option("--chain", args->chain_file, "chain file for every case (as flapsim run --chain)");
+  cmd->add_option("-j,--jobs", args->jobs, "cases run at the same time (default: the available cores)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--vtk-every", args->vtk_every, "ParaView series per case every N steps (default 0: none)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("-q,--quiet", args->quiet, "no progress lines and no table on stdout");
+  cmd->callback([args] { sweep_command(*args); });
 }
 
 }  // namespace flapsim::cli

@@ -1,0 +1,118 @@
+#include "pipeline/sweep/sweep_runner.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+
+#include "pipeline/fsi/fsi_run.hpp"
+#include "pipeline/numerical_failure.hpp"
+#include "pipeline/output/atomic_file.hpp"
+#include "pipeline/output/csv_writer.hpp"
+
+namespace flapsim::sweep {
+
+namespace {
+
+void write_table(const std::filesystem::path& path, const std::string& key,
+                 const std::vector<SweepRow>& rows, const std::vector<bool>& done) {
+  std::vector<std::vector<std::string>> cells;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!done[i]) continue;
+    const SweepRow& r = rows[i];
+    cells.push_back({output::format_number(r.value), output::format_number(r.mean_lift),
+                     output::format_number(r.mean_cl), output::format_number(r.tip_rotation_phase),
+                     output::format_number(r.tip_rotation_lag),
+                     output::format_number(r.mean_coupling_iterations),
+                     output::format_number(r.wall_time_s), r.folder, r.status});
+  }
+  output::write_csv(path,
+                    {key, "mean_lift_N", "mean_CL", "tip_rotation_phase", "tip_rotation_lag",
+                     "mean_coupling_iterations", "wall_time_s", "folder", "status"},
+                    cells);
+}
+
+}  // namespace
+
+std::vector<SweepRow> run_sweep(const std::string& case_file, const Variation& variation,
+                                const SweepOptions& options) {
+  const std::size_t n = variation.values.size();
+  std::vector<pipeline::Case> cases;
+  cases.reserve(n);
+  for (double v : variation.values) cases.push_back(load_case_with(case_file, variation.key, v));
+
+  output::ensure_directory(options.output_dir);
+  std::vector<SweepRow> rows(n);
+  std::vector<bool> done(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    rows[i].value = variation.values[i];
+    char name[96];
+    std::snprintf(name, sizeof name, "%02zu_%s", i, value_label(variation.values[i]).c_str());
+    rows[i].folder = name;
+  }
+  const int threads = std::max(
+      1, std::min<int>(static_cast<int>(n), options.threads > 0
+                                               ? options.threads
+                                               : static_cast<int>(std::thread::hardware_concurrency())));
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::size_t finished = 0;
+  const auto start = std::chrono::steady_clock::now();
+  std::exception_ptr fatal;
+
+  auto worker = [&] {
+    omp_set_num_threads(1);  // the cases fill the cores; no nested parallelism
+    for (;;) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= n) return;
+      fsi::RunOptions ro;
+      ro.output_dir = options.output_dir / rows[i].folder;
+      ro.chain_file = options.chain_file;
+      ro.vtk_every = options.vtk_every;
+      ro.progress = pipeline::ProgressLine::Mode::quiet;
+      SweepRow r = rows[i];
+      try {
+        const fsi::RunSummary s = fsi::run_case(cases[i], ro);
+        r.status = "ok";
+        r.mean_lift = s.mean_lift;
+        r.mean_cl = s.mean_cl;
+        r.tip_rotation_phase = s.tip_rotation_phase;
+        r.tip_rotation_lag = s.tip_rotation_lag;
+        r.mean_coupling_iterations = s.mean_coupling_iterations;
+        r.wall_time_s = s.wall_time_s;
+      } catch (const NumericalFailure& e) {
+        r.status = std::string("failed: ") + e.what();
+        r.mean_lift = r.mean_cl = r.tip_rotation_phase = r.tip_rotation_lag =
+            std::numeric_limits<double>::quiet_NaN();
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!fatal) fatal = std::current_exception();
+        next = n;  // stop handing out cases
+        return;
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      rows[i] = r;
+      done[i] = true;
+      ++finished;
+      write_table(options.output_dir / "sweep.csv", variation.key, rows, done);
+      if (!options.quiet) {
+        const double wall =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "sweep %zu/%zu  %s = %s  mean lift %.5g N  CL %.3f  %s  (%.1f s)\n",
+                     finished, n, variation.key.c_str(), value_label(r.value).c_str(), r.mean_lift,
+                     r.mean_cl, r.status == "ok" ? "ok" : "FAILED", wall);
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  if (fatal) std::rethrow_exception(fatal);
+  return rows;
+}
+
+}  // namespace flapsim::sweep
