@@ -15,6 +15,8 @@
 #include "mbd/base_motion.hpp"
 #include "mbd/periodic_signal.hpp"
 
+#include <Eigen/Geometry>  // callers use cross products of the pose vectors
+
 namespace flapsim::mbd {
 
 struct WingKinematics {
