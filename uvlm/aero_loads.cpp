@@ -41,7 +41,8 @@ void compute_bernoulli_loads(const VortexLatticeModel& m, VortexLatticeData& d) 
   for (int k = 0; k < np; ++k) d.eval.set(k, d.collocation.col(k));
   d.eval.size = np;
   d.eval.zero_velocity();
-  add_induced_velocity(d.bound_segments, d.eval, m.core);
+  add_induced_velocity(d.bound_segments, d.eval, m.bound_core());
+  add_induced_velocity(d.trailing_edge_segments, d.eval, m.core);
   for (int j = 0; j < ns; ++j)
     for (int i = 0; i < nc; ++i) {
       const int k = m.panel(i, j);
@@ -85,11 +86,11 @@ void compute_kutta_joukowski_loads(const VortexLatticeModel& m, VortexLatticeDat
     return Eigen::Vector3d(d.rho * S.gamma()[s] * v.cross(b - a));
   };
   // Spanwise segments (same order as build_bound_segments): row q < nc is the leading
-  // segment of ring q and loads panel (q, j); row nc (trailing edge) is shed vorticity.
+  // segment of ring q and loads panel (q, j); the trailing edge (another set) is shed
+  // vorticity and carries no load.
   std::size_t s = 0;
-  for (int q = 0; q <= nc; ++q)
+  for (int q = 0; q < nc; ++q)
     for (int j = 0; j < ns; ++j, ++s) {
-      if (q == nc) continue;
       const Eigen::Vector3d sv = 0.5 * (ring_node_velocity(m, d, q, j) + ring_node_velocity(m, d, q, j + 1));
       d.loads.force.col(m.panel(q, j)) += segment_force(s, sv);
     }

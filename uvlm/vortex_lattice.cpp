@@ -11,7 +11,8 @@ namespace flapsim::uvlm {
 VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   if (m.chordwise < 1 || m.spanwise < 1)
     throw std::invalid_argument("vortex lattice: chordwise and spanwise panel counts must be >= 1");
-  if (!(m.core.radius > 0.0)) throw std::invalid_argument("vortex lattice: core radius must be > 0");
+  if (!(m.core.radius > 0.0) || !(m.bound_core_fraction > 0.0))
+    throw std::invalid_argument("vortex lattice: core radius and bound core fraction must be > 0");
   if (m.wake_capacity < 1) throw std::invalid_argument("vortex lattice: wake_capacity must be >= 1");
   if (m.max_wake_rows < 0) throw std::invalid_argument("vortex lattice: max_wake_rows must be >= 0");
   const int nc = m.chordwise, ns = m.spanwise, np = m.panels(), nn = m.nodes();
@@ -49,6 +50,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
 
   const std::size_t bound_n = static_cast<std::size_t>((nc + 1) * ns + nc * (ns + 1));
   bound_segments.reserve(bound_n);
+  trailing_edge_segments.reserve(ns);
   wake_segments.reserve((rows + 1) * ns + rows * (ns + 1));
   for (auto& s : ring_side) s.reserve(np);
   eval.reserve(std::max<std::size_t>(bound_n, np));
@@ -114,7 +116,9 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d) {
       d.ring_side[2].push(r10, r11, 1.0);
       d.ring_side[3].push(r11, r01, 1.0);
     }
-  const double inv_rc2 = 1.0 / (m.core.radius * m.core.radius);
+  const VortexCore core = m.bound_core();
+  const double inv_rc2 = 1.0 / (core.radius * core.radius);
+  const double inv_rc2_wake = 1.0 / (m.core.radius * m.core.radius);
   const auto& S = d.ring_side;
 #pragma omp parallel for schedule(static) if (np > 64)
   for (int i = 0; i < np; ++i) {
@@ -128,15 +132,17 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d) {
         for (int k = 0; k < np; ++k) row[static_cast<std::size_t>(k) * np] = 0.0;
       for (int k = 0; k < np; ++k) {
         double u = 0, v = 0, w = 0;
-        switch (m.core.model) {
+        // The trailing segment of a last-row ring has the wake's core (see the model).
+        const double s_rc = (s == 2 && k % nc == nc - 1) ? inv_rc2_wake : inv_rc2;
+        switch (core.model) {
           case CoreModel::CutOff:
-            segment_velocity<CoreModel::CutOff>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, inv_rc2 * il[k], u, v, w);
+            segment_velocity<CoreModel::CutOff>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, s_rc * il[k], u, v, w);
             break;
           case CoreModel::LambOseen:
-            segment_velocity<CoreModel::LambOseen>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, inv_rc2 * il[k], u, v, w);
+            segment_velocity<CoreModel::LambOseen>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, s_rc * il[k], u, v, w);
             break;
           case CoreModel::Vatistas:
-            segment_velocity<CoreModel::Vatistas>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, inv_rc2 * il[k], u, v, w);
+            segment_velocity<CoreModel::Vatistas>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, s_rc * il[k], u, v, w);
             break;
         }
         row[static_cast<std::size_t>(k) * np] += u * nx + v * ny + w * nz;
@@ -151,10 +157,12 @@ void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d) {
     return (i < 0 || i >= nc || j < 0 || j >= ns) ? 0.0 : d.gamma(m.panel(i, j));
   };
   d.bound_segments.clear();
-  // Spanwise segments, ring-node row q, direction j → j+1: rear of ring q−1 minus front of ring q.
+  d.trailing_edge_segments.clear();
+  // Spanwise segments, ring-node row q, direction j → j+1: rear of ring q−1 minus front of
+  // ring q; row nc is the trailing edge.
   for (int q = 0; q <= nc; ++q)
     for (int j = 0; j < ns; ++j)
-      d.bound_segments.push(d.ring_nodes.col(m.node(q, j)), d.ring_nodes.col(m.node(q, j + 1)),
+      (q < nc ? d.bound_segments : d.trailing_edge_segments).push(d.ring_nodes.col(m.node(q, j)), d.ring_nodes.col(m.node(q, j + 1)),
                             G(q - 1, j) - G(q, j));
   // Chordwise segments, column j, direction q → q+1: root side of ring (q, j) minus tip side of (q, j−1).
   for (int j = 0; j <= ns; ++j)
@@ -168,7 +176,10 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
   d.eval.size = n;
   d.eval.zero_velocity();
   if (d.wake_segments.size() > 0) add_induced_velocity(d.wake_segments, d.eval, m.core);
-  if (include_bound) add_induced_velocity(d.bound_segments, d.eval, m.core);
+  if (include_bound) {
+    add_induced_velocity(d.bound_segments, d.eval, m.bound_core());
+    add_induced_velocity(d.trailing_edge_segments, d.eval, m.core);
+  }
 }
 
 void compute_loads(const VortexLatticeModel& m, VortexLatticeData& d) {

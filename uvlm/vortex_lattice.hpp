@@ -48,7 +48,13 @@ enum class LoadMethod {
 struct VortexLatticeModel {
   int chordwise = 6;   ///< nc panels, leading to trailing edge
   int spanwise = 10;   ///< ns panels, root to tip
-  VortexCore core;     ///< regularisation of every segment (bound and wake)
+  VortexCore core;     ///< regularisation of the wake's segments, and of every segment seen from the wake
+  /// The bound rings seen from the surface (influence matrix, load velocities) use the same
+  /// core model with radius core.radius × bound_core_fraction: a core comparable to the
+  /// panels would flatten the influence matrix and makes the trailing-edge shedding unstable.
+  /// The trailing-edge segments keep the wake core: they coincide with the wake's newest
+  /// row and carry the vorticity being shed, so the two must be regularised alike.
+  double bound_core_fraction = 1e-3;
   WakeModel wake_model = WakeModel::Free;
   WakeIntegrator wake_integrator = WakeIntegrator::AdamsBashforth2;
   LoadMethod load_method = LoadMethod::Bernoulli;
@@ -59,6 +65,7 @@ struct VortexLatticeModel {
   int max_wake_rows = 0;   ///< keep at most this many wake rows (oldest dropped); 0 = keep all
   int wake_capacity = 0;   ///< wake rows the workspace holds (the run's step count, or max_wake_rows)
 
+  VortexCore bound_core() const { return {core.model, core.radius * bound_core_fraction}; }
   int panels() const { return chordwise * spanwise; }
   int nodes() const { return (chordwise + 1) * (spanwise + 1); }
   int panel(int i, int j) const { return i + chordwise * j; }
@@ -117,7 +124,9 @@ struct VortexLatticeData {
   std::vector<char> wake_row_has_prev;
 
   // Segment sets (unique segments with net circulation) and evaluation points.
-  SegmentSet bound_segments, wake_segments;
+  SegmentSet bound_segments;          ///< bound segments except the trailing edge
+  SegmentSet trailing_edge_segments;  ///< the last rings' trailing segments (wake core)
+  SegmentSet wake_segments;
   SegmentSet ring_side[4];  ///< unit-circulation ring sides for the influence matrix
   PointSet eval;
 

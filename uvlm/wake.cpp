@@ -89,6 +89,7 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
       }
     }
     add_induced_velocity(d.bound_segments, P, m.core);
+    add_induced_velocity(d.trailing_edge_segments, P, m.core);
   }
   const double dt = d.dt;
   const Eigen::Vector3d& V = d.free_stream;

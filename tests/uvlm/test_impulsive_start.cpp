@@ -79,3 +79,23 @@ TEST(ImpulsiveStart, VeryHighAspectRatioFollowsWagner) {
     EXPECT_NEAR(r.at(k).first / r.at(k).second, 1.0, 0.01) << "Bernoulli vs KJ at Ut/c " << k / 32.0;
   }
 }
+
+TEST(ImpulsiveStart, AWakeCoreAsLargeAsThePanelsLeavesTheLiftAlone) {
+  // A Lamb–Oseen wake core of 0.1 c (about the panel chord, 0.125 c) regularises the wake
+  // only: the bound rings keep a tiny core and the trailing edge is regularised like the
+  // wake row it sheds into, so the shedding stays stable and the lift approaches that of
+  // the singular kernel as the transient dies out (within 1 % at Ut/c = 4). During the
+  // transient the core smooths the near wake and the lift differs more (1.8 % at Ut/c = 2,
+  // printed, not asserted).
+  RectangularWing sharp, cored;
+  sharp.chordwise = cored.chordwise = 8;
+  sharp.spanwise = cored.spanwise = 16;
+  cored.wake_core = 0.1;
+  const auto a = impulsive_run(sharp, 8, {16, 32});
+  const auto b = impulsive_run(cored, 8, {16, 32});
+  for (int k : {16, 32}) {
+    std::printf("[ value ] Ut/c %.0f: CL %.4f (core 1e-6 c), %.4f (core 0.1 c)\n", k / 8.0, a.at(k).first,
+                b.at(k).first);
+    if (k == 32) EXPECT_NEAR(b.at(k).first / a.at(k).first, 1.0, 0.01) << "Ut/c " << k / 8.0;
+  }
+}

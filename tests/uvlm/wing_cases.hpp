@@ -18,6 +18,7 @@ struct RectangularWing {
   double speed = 1.0;         // [m/s]
   double rho = 1.0;           // [kg/m³]
   int chordwise = 8, spanwise = 16;
+  double wake_core = 1e-6;  // wake core radius / chord: effectively the singular kernel
 
   double span() const { return aspect_ratio * chord; }
   double area() const { return chord * span(); }
@@ -35,7 +36,7 @@ struct RectangularWing {
     m.spanwise = spanwise;
     m.wake_capacity = wake_capacity;
     m.wake_model = wake;
-    m.core = {CoreModel::LambOseen, 1e-6 * chord};  // effectively the singular kernel
+    m.core = {CoreModel::LambOseen, wake_core * chord};
     return m;
   }
   double lift_coefficient(const PanelLoads& loads) const {
