@@ -22,6 +22,7 @@ struct RunArgs {
   std::string output_dir;
   std::string chain_file;
   int vtk_every = -1;
+  double spring_scale = 1.0;
   bool quiet = false;
 };
 
@@ -33,6 +34,7 @@ void run_command(const RunArgs& a) {
   options.output_dir = a.output_dir.empty() ? std::filesystem::path("out") / c.name
                                           : std::filesystem::path(a.output_dir);
   options.chain_file = a.chain_file;
+  options.spring_scale = a.spring_scale;
   if (a.vtk_every >= 0) options.vtk_every = a.vtk_every;
   if (a.quiet) options.progress = pipeline::ProgressLine::Mode::quiet;
   const fsi::RunSummary s = fsi::run_case(c, options);
@@ -70,6 +72,10 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--vtk-every", args->vtk_every,
                   "write the ParaView series every N steps, 0 = none (default: the case's output.vtk_every)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--spring-scale", args->spring_scale,
+                  "multiply every joint spring of a flexible chain by S (stiffness calibration; "
+                  "frequencies scale by sqrt(S)); default 1")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("-q,--quiet", args->quiet, "no progress line and no report on stdout");
   cmd->callback([args] { run_command(*args); });
 }

@@ -20,6 +20,7 @@ struct SweepArgs {
   std::string case_file, vary, output_dir, chain_file;
   int jobs = 0;
   int vtk_every = 0;
+  double spring_scale = 1.0;
   bool quiet = false;
 };
 
@@ -30,6 +31,7 @@ void sweep_command(const SweepArgs& a) {
   sweep::SweepOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;
+  options.spring_scale = a.spring_scale;
   options.threads = a.jobs;
   options.vtk_every = a.vtk_every;
   options.quiet = a.quiet;
@@ -65,6 +67,9 @@ void add_sweep_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--vtk-every", args->vtk_every, "ParaView series per case every N steps (default 0: none)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--spring-scale", args->spring_scale,
+                  "joint-spring factor for every case (as flapsim run --spring-scale)")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("-q,--quiet", args->quiet, "no progress lines and no table on stdout");
   cmd->callback([args] { sweep_command(*args); });
 }

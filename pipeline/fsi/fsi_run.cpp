@@ -56,7 +56,7 @@ EulerAngles tip_angles(const pipeline::Case& c, const mbd::ChainModel& chain, co
 
 RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
-  FsiSetup setup = build_fsi_setup(c, SetupOptions{options.chain_file});
+  FsiSetup setup = build_fsi_setup(c, SetupOptions{options.chain_file, options.spring_scale});
   const FsiModel& model = setup.model;
   const int vtk_every = options.vtk_every.value_or(c.output.vtk_every);
   const auto& dir = options.output_dir;
@@ -91,6 +91,7 @@ RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
   json.set("cycles", c.numerics.cycles);
   json.set("dt_s", setup.dt);
   json.set("bodies", model.chain.num_bodies());
+  json.set("spring_scale", options.spring_scale);
   if (model.air) {
     json.set("reference_area_m2", setup.reference.area);
     json.set("reference_speed_m_s", setup.reference.speed);

@@ -22,6 +22,7 @@ namespace flapsim::fsi {
 struct RunOptions {
   std::filesystem::path output_dir;  ///< created if missing
   std::string chain_file;            ///< overrides the case's chain file ("" = none)
+  double spring_scale = 1.0;         ///< joint-spring factor of a flexible chain (SetupOptions)
   std::optional<int> vtk_every;      ///< overrides output.vtk_every (0 = no VTK)
   pipeline::ProgressLine::Mode progress = pipeline::ProgressLine::Mode::automatic;
 };

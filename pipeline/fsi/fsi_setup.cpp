@@ -1,6 +1,7 @@
 #include "pipeline/fsi/fsi_setup.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "mbd/wing_kinematics.hpp"
@@ -97,6 +98,17 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   StructureChoice structure = choose_structure(c, options.chain_file, s.wing ? &*s.wing : nullptr);
   m.chain = std::move(structure.chain);
   s.structure_source = structure.description;
+  if (!(options.spring_scale > 0.0) || !std::isfinite(options.spring_scale))
+    throw InputError("", 0, "--spring-scale", "must be a positive number");
+  if (options.spring_scale != 1.0 && m.chain.num_dofs() > 0) {
+    for (auto& j : m.chain.joints) {
+      j.bend_stiffness *= options.spring_scale;
+      j.twist_stiffness *= options.spring_scale;
+    }
+    char buf[64];
+    std::snprintf(buf, sizeof buf, ", springs x %g", options.spring_scale);
+    s.structure_source += buf;
+  }
   if (c.structure.kind == Case::Structure::Kind::Flexible && m.chain.num_bodies() != c.structure.bodies)
     s.structure_source += " (" + std::to_string(m.chain.num_bodies()) + " bodies; the case says " +
                           std::to_string(c.structure.bodies) + ")";

@@ -41,6 +41,9 @@ struct FsiSetup {
 /// Options of a run that do not come from the case file.
 struct SetupOptions {
   std::string chain_file;  ///< overrides the case's chain file (flapsim run --chain)
+  /// Multiplies every joint spring (k_θ, k_α) of a flexible chain: a stiffness
+  /// calibration factor (natural frequencies scale by √S); 1 = the chain as given.
+  double spring_scale = 1.0;
 };
 
 /// \brief A one-body chain welded to the wing base: the rigid wing (no dofs). The body

@@ -72,6 +72,7 @@ std::vector<SweepRow> run_sweep(const std::string& case_file, const Variation& v
       fsi::RunOptions ro;
       ro.output_dir = options.output_dir / rows[i].folder;
       ro.chain_file = options.chain_file;
+      ro.spring_scale = options.spring_scale;
       ro.vtk_every = options.vtk_every;
       ro.progress = pipeline::ProgressLine::Mode::quiet;
       SweepRow r = rows[i];

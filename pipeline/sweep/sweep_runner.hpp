@@ -22,6 +22,7 @@ namespace flapsim::sweep {
 struct SweepOptions {
   std::filesystem::path output_dir;
   std::string chain_file;        ///< passed to every case (flapsim run --chain)
+  double spring_scale = 1.0;     ///< passed to every case (flapsim run --spring-scale)
   int threads = 0;               ///< 0 = std::thread::hardware_concurrency()
   int vtk_every = 0;             ///< VTK series per case (0 = none, the default for sweeps)
   bool quiet = false;            ///< no progress lines
