@@ -14,6 +14,7 @@
 #include <string>
 
 #include "fem/wing_fem.hpp"
+#include "pipeline/chain_file.hpp"
 #include "pipeline/output/atomic_file.hpp"
 #include "pipeline/output/csv_writer.hpp"
 #include "pipeline/output/summary_json.hpp"
@@ -99,45 +100,6 @@ void write_vtp(const fs::path& path, const reduction::BeamProperties& beam,
   output::write_vtp(path, mesh);
 }
 
-std::string vec3(const Eigen::Vector3d& v) {
-  return "[" + format_number(v.x()) + ", " + format_number(v.y()) + ", " + format_number(v.z()) + "]";
-}
-
-/// chain.toml: the ChainModel field by field, SI units (docs/reduction.md). Written
-/// here until pipeline/ has the shared chain-file writer.
-void write_chain_toml(const fs::path& path, const mbd::ChainModel& chain) {
-  std::ostringstream s;
-  s << "# Hencky bar chain from 'flapsim reduce' (docs/reduction.md). SI units.\n"
-    << "# Body frame: origin at the inboard joint, y along the body, x toward the leading edge.\n"
-    << "# Joint k: R = Rx(theta_k) * Ry(alpha_k); inertia about the centre of mass, body axes.\n"
-    << "length_unit = \"m\"\n"
-    << "root = \"" << (chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid") << "\"\n"
-    << "root_offset = " << vec3(chain.root_offset) << "\n"
-    << "# R_WR, row by row: columns are the root frame's x, y, z in the wing frame\n"
-    << "root_rotation = [" << vec3(chain.root_rotation.row(0).transpose()) << ", "
-    << vec3(chain.root_rotation.row(1).transpose()) << ", " << vec3(chain.root_rotation.row(2).transpose())
-    << "]\n";
-  for (int k = 0; k < chain.num_bodies(); ++k) {
-    const auto& b = chain.bodies[static_cast<std::size_t>(k)];
-    const auto& j = chain.joints[static_cast<std::size_t>(k)];
-    s << "\n[[bodies]]   # body " << k + 1 << "\n"
-      << "length = " << format_number(b.length) << "\n"
-      << "mass = " << format_number(b.mass) << "\n"
-      << "center_of_mass = " << vec3(b.center_of_mass) << "\n"
-      << "inertia = [" << vec3(b.inertia.row(0).transpose()) << ", " << vec3(b.inertia.row(1).transpose())
-      << ", " << vec3(b.inertia.row(2).transpose()) << "]\n"
-      << "outboard_joint = " << vec3(b.outboard_joint) << "\n"
-      << "[bodies.joint]   # inboard of this body" << (k == 0 && chain.root == mbd::RootAttachment::rigid ? " (unused: rigid root)" : "") << "\n"
-      << "bend_stiffness = " << format_number(j.bend_stiffness) << "\n"
-      << "twist_stiffness = " << format_number(j.twist_stiffness) << "\n"
-      << "bend_damping = " << format_number(j.bend_damping) << "\n"
-      << "twist_damping = " << format_number(j.twist_damping) << "\n"
-      << "bend_rest = " << format_number(j.bend_rest) << "\n"
-      << "twist_rest = " << format_number(j.twist_rest) << "\n";
-  }
-  output::write_text_atomically(path, s.str());
-}
-
 std::string pct(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%+.2f %%", 100.0 * x);
@@ -177,7 +139,7 @@ std::string report_text(const ReduceOptions& o, const reduction::BeamProperties&
   static_row("tip bending rotation under the tip moment [rad]", c.tip_bending_rotation);
   static_row("tip twist under the tip torque [rad]", c.tip_twist);
   s << "\nStatic responses at s = " << c.measure_s
-    << " m (inboard edge of the loaded tip zone); loads as in beam extraction.\n\n"
+    << " m (mid-point of the outermost body clear of the loaded tip zone); the FEM load cases of the beam extraction, the same wrenches on the chain.\n\n"
     << "## FEM modes\n\n| mode | f [Hz] | kind |\n|---|---|---|\n";
   for (std::size_t i = 0; i < c.fem_hz.size(); ++i)
     s << "| " << i + 1 << " | " << c.fem_hz[i] << " | " << c.fem_kinds[i] << " |\n";
@@ -247,7 +209,7 @@ void run_reduce(const ReduceOptions& o) {
   const fs::path dir(o.out_dir);
   output::ensure_directory(dir);
   write_beam_csv(dir / "beam.csv", beam);
-  write_chain_toml(dir / "chain.toml", lc.chain);
+  pipeline::write_chain_file(dir / "chain.toml", lc.chain);
   write_vtp(dir / "reduction.vtp", beam, lc);
   output::write_text_atomically(dir / "report.md", report_text(o, beam, lc, cmp));
   write_summary(dir / "summary.json", beam, lc, cmp);
