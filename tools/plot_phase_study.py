@@ -116,7 +116,10 @@ def main():
         for col, label, style in (("phi_base_deg", "φ_b", "C0-"), ("phi_tip_deg", "φ_t", "C0--"),
                                   ("alpha_base_deg", "α_b", "C1-"), ("alpha_tip_deg", "α_t", "C1--"),
                                   ("theta_tip_deg", "θ_t", "C2--")):
-            ax.plot(s, h[col][keep], style, label=label)
+            y = h[col][keep]
+            if col.startswith("alpha"):  # a twisting tip may pass ±180°: draw it continuous
+                y = np.degrees(np.unwrap(np.radians(y)))
+            ax.plot(s, y, style, label=label)
         ax.set_title("flexible wing, δψ = %+.0f %%" % (100 * v))
         ax.set_xlabel("t / T (last cycle)")
         ax.grid(alpha=0.3)
