@@ -49,7 +49,7 @@ void BM_HoverRun(benchmark::State& state) {
   m.chordwise = 6;
   m.spanwise = 10;
   m.wake_capacity = steps;
-  m.core = {uvlm::CoreModel::LambOseen, 0.5e-3};
+  m.core = {uvlm::CoreModel::LambOseen, 0.2 * grid.outline_area / 0.0483};  // 0.2 mean chords
   const double dt = 1.0 / (f * 100);
   Eigen::Matrix3Xd x(3, m.nodes()), v(3, m.nodes());
   double lift = 0;
