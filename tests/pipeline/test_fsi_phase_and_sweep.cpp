@@ -1,0 +1,104 @@
+// Reading runs as the rotation-phase paper does (pipeline/fsi/phase_analysis) and the
+// --vary argument of flapsim sweep (pipeline/sweep/sweep_values).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "mbd/wing_kinematics.hpp"
+#include "pipeline/fsi/phase_analysis.hpp"
+#include "pipeline/sweep/sweep_values.hpp"
+#include "wings/input_error.hpp"
+
+namespace {
+
+using namespace flapsim;
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180.0;
+
+mbd::WingKinematics eq8(double dpsi) {
+  // Eq. 8 of the rotation-phase paper with a deviation, to exercise all three angles.
+  mbd::WingKinematics k;
+  k.frequency = 26.1;
+  k.rotation_phase = dpsi;
+  k.sweep = mbd::PeriodicSignal::harmonic(10.0 * kDeg, {50.0 * kDeg}, {});
+  k.deviation = mbd::PeriodicSignal::harmonic(0.0, {}, {8.0 * kDeg});
+  k.rotation = mbd::PeriodicSignal::harmonic(90.0 * kDeg, {}, {-45.0 * kDeg});
+  return k;
+}
+
+TEST(FsiPhaseAnalysis, EulerAnglesInvertTheBaseConvention) {
+  // DESIGN.md: R_GW = R_GS Rz(φ) Rx(θ) Ry(−α); with a horizontal stroke plane R_GS = I,
+  // so euler_angles(pose.rotation) must return the kinematics' own angles.
+  const auto k = eq8(-0.1);
+  for (double t : {0.0, 0.003, 0.011, 0.025, 0.037}) {
+    const auto a = k.angles(t);
+    const auto e = fsi::euler_angles(k.pose(t).rotation);
+    EXPECT_NEAR(e.sweep, a.sweep.value, 1e-12);
+    EXPECT_NEAR(e.deviation, a.deviation.value, 1e-12);
+    EXPECT_NEAR(e.rotation, a.rotation.value, 1e-12);
+    EXPECT_LT((fsi::euler_rotation(e) - k.pose(t).rotation).norm(), 1e-14);
+  }
+}
+
+TEST(FsiPhaseAnalysis, RotationPhaseOfEq8IsDeltaPsi) {
+  // Eq. 8: the sweep reversal (φ max) is at ft = −δψ and α crosses 90° at ft = 0, so the
+  // measured rotation phase is δψ itself (to the sampling's interpolation error).
+  for (double dpsi : {-0.2, -0.1, 0.0, 0.05, 0.1}) {
+    const auto k = eq8(dpsi);
+    const double T = 1.0 / k.frequency;
+    std::vector<double> t, phi, alpha;
+    for (int n = 0; n <= 300; ++n) {
+      t.push_back(n * T / 100);
+      const auto a = k.angles(t.back());
+      phi.push_back(a.sweep.value);
+      alpha.push_back(a.rotation.value);
+    }
+    const auto p = fsi::rotation_phase(t, phi, alpha, T, 2 * T, 3 * T);
+    ASSERT_TRUE(p.has_value());
+    EXPECT_NEAR(*p, dpsi, 2e-4) << "dpsi " << dpsi;
+  }
+}
+
+TEST(FsiPhaseAnalysis, CrossingLagAndWindowMean) {
+  // x(t) = sin(2π(t − 0.07)) lags sin(2πt) by 0.07 of the period; the mean of
+  // 1 + sin over whole periods is 1 (trapezoidal rule, exact for a sampled sine).
+  std::vector<double> t, x, ref, y;
+  for (int n = 0; n <= 400; ++n) {
+    t.push_back(n / 100.0);
+    ref.push_back(std::sin(2 * kPi * t.back()));
+    x.push_back(std::sin(2 * kPi * (t.back() - 0.07)));
+    y.push_back(1.0 + ref.back());
+  }
+  const auto lag = fsi::crossing_lag(t, x, ref, 0.0, 1.0, 1.0, 3.0);
+  ASSERT_TRUE(lag.has_value());
+  EXPECT_NEAR(*lag, 0.07, 1e-3);
+  EXPECT_NEAR(fsi::window_mean(t, y, 1.0, 3.0), 1.0, 1e-12);
+}
+
+TEST(SweepValues, RangesListsAndErrors) {
+  const auto v = sweep::parse_variation("kinematics.rotation_phase=-0.10:0.05:0.10");
+  EXPECT_EQ(v.key, "kinematics.rotation_phase");
+  ASSERT_EQ(v.values.size(), 5u);  // −0.10, −0.05, 0, 0.05, 0.10 (inclusive)
+  const double expected[5] = {-0.10, -0.05, 0.0, 0.05, 0.10};
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(v.values[static_cast<std::size_t>(i)], expected[i]);
+  EXPECT_EQ(sweep::parse_variation("k=-0.20:0.05:0.10").values.size(), 7u);  // the rigid study
+  EXPECT_EQ(sweep::parse_variation("k=3,1,2").values, (std::vector<double>{3, 1, 2}));
+  EXPECT_THROW(sweep::parse_variation("k=0:0:1"), InputError);
+  EXPECT_THROW(sweep::parse_variation("k=1:0.1:0"), InputError);
+  EXPECT_THROW(sweep::parse_variation("k=a,b"), InputError);
+  EXPECT_THROW(sweep::parse_variation("novalues"), InputError);
+}
+
+TEST(SweepValues, CaseIsReReadWithTheValue) {
+  const std::string hover = std::string(FLAPSIM_SOURCE_DIR) + "/cases/hover.toml";
+  const auto c = sweep::load_case_with(hover, "kinematics.rotation_phase", -0.15);
+  EXPECT_DOUBLE_EQ(c.kinematics.rotation_phase, -0.15);
+  EXPECT_EQ(sweep::load_case_with(hover, "numerics.cycles", 7).numerics.cycles, 7);
+  // An integer key refuses a fraction; a value out of the case file's bounds is an input error.
+  EXPECT_THROW(sweep::load_case_with(hover, "numerics.cycles", 2.5), InputError);
+  EXPECT_THROW(sweep::load_case_with(hover, "kinematics.rotation_phase", 3.0), InputError);
+  EXPECT_THROW(sweep::load_case_with(hover, "name.x", 1.0), InputError);
+}
+
+}  // namespace
