@@ -5,7 +5,7 @@ outputs of `make phase-study`:
   fig12a_mean_lift_vs_phase.png   mean lift against the rotation phase, rigid and flexible
   fig12b_rigid_lift_cycle.png     lift over the last cycle, rigid wing, three phases
   fig13b_flexible_lift_cycle.png  lift over the last cycle, flexible wing, three phases
-  fig14_euler_angles.png          base and tip Euler angles of the flexible wing (dpsi = -0.05, +0.05)
+  fig14_euler_angles.png          base, tip and outer-body Euler angles of the flexible wing (dpsi = -0.05, +0.05)
   fig15_tip_base_phase.png        tip rotation phase and tip-minus-base rotation lag
 
 Usage: plot_phase_study.py PHASE_STUDY_DIR OUTPUT_DIR   (Debian's python3-matplotlib)
@@ -29,6 +29,8 @@ def read_sweep(path):
     for r in rows:
         out.append({"value": float(r[key]), "lift": float(r["mean_lift_N"]), "cl": float(r["mean_CL"]),
                     "tip_phase": float(r["tip_rotation_phase"]), "tip_lag": float(r["tip_rotation_lag"]),
+                    "outer_phase": float(r.get("outer_rotation_phase", "nan")),
+                    "outer_lag": float(r.get("outer_rotation_lag", "nan")),
                     "folder": r["folder"], "status": r["status"]})
     return sorted(out, key=lambda r: r["value"])
 
@@ -115,6 +117,7 @@ def main():
         keep, s = last_cycle(h)
         for col, label, style in (("phi_base_deg", "φ_b", "C0-"), ("phi_tip_deg", "φ_t", "C0--"),
                                   ("alpha_base_deg", "α_b", "C1-"), ("alpha_tip_deg", "α_t", "C1--"),
+                                  ("phi_outer_deg", "φ outer", "C0:"), ("alpha_outer_deg", "α outer", "C1:"),
                                   ("theta_tip_deg", "θ_t", "C2--")):
             y = h[col][keep]
             if col.startswith("alpha"):  # a twisting tip may pass ±180°: draw it continuous
@@ -137,6 +140,8 @@ def main():
     ax.plot(x, x, "k:", label="base (= δψ)")
     ax.plot(x, [100 * r["tip_phase"] for r in ok], "s-", label="tip rotation phase (α_t = 90° vs φ_t reversal)")
     ax.plot(x, [100 * r["tip_lag"] for r in ok], "o--", label="tip − base α = 90° crossing")
+    ax.plot(x, [100 * r["outer_phase"] for r in ok], "^-", label="outer body (5/6 span) rotation phase")
+    ax.plot(x, [100 * r["outer_lag"] for r in ok], "v--", label="outer − base α = 90° crossing")
     ax.plot([-10, 10], [-15, -3], "x", color="C3", ms=9, label="paper: tip phase at δψ = ∓10 %")
     ax.set_xlabel("base rotation phase δψ [%]")
     ax.set_ylabel("[% of the period]")

@@ -55,7 +55,8 @@ def read_sweep(path):
         rows = [r for r in csv.DictReader(f)]
     key = list(rows[0].keys())[0]
     return sorted(({"v": float(r[key]), "lift": float(r["mean_lift_N"]), "phase": float(r["tip_rotation_phase"]),
-                    "lag": float(r["tip_rotation_lag"]), "ok": r["status"] == "ok"} for r in rows),
+                    "lag": float(r["tip_rotation_lag"]), "outer": float(r.get("outer_rotation_phase", "nan")),
+                    "outer_lag": float(r.get("outer_rotation_lag", "nan")), "ok": r["status"] == "ok"} for r in rows),
                   key=lambda r: r["v"])
 
 
@@ -96,9 +97,10 @@ def phase_rows(out):
         if not rr["ok"]:
             continue
         ref = paper_tip.get(round(rr["v"], 2))
-        rows.append(("flexible, dpsi %+.0f %%: tip rotation phase; tip-base lag" % (100 * rr["v"]),
-                     ("%+.0f %% (paper Fig. 15)" % (100 * ref)) if ref is not None else "-",
-                     "%+.1f %%; %+.1f %%" % (100 * rr["phase"], 100 * rr["lag"]), "-"))
+        rows.append(("flexible, dpsi %+.0f %%: rotation phase tip; outer body (lag vs base)" % (100 * rr["v"]),
+                     ("tip %+.0f %% (paper Fig. 15)" % (100 * ref)) if ref is not None else "-",
+                     "%+.1f %% (%+.1f %%); %+.1f %% (%+.1f %%)" % (100 * rr["phase"], 100 * rr["lag"],
+                                                            100 * rr["outer"], 100 * rr["outer_lag"]), "-"))
     return rows
 
 

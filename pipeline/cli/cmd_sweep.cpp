@@ -37,11 +37,13 @@ void sweep_command(const SweepArgs& a) {
   options.quiet = a.quiet;
   const auto rows = sweep::run_sweep(a.case_file, variation, options);
   if (a.quiet) return;
-  std::printf("%-16s %14s %9s %12s %12s  %s\n", variation.key.substr(variation.key.rfind('.') + 1).c_str(),
-              "mean lift [N]", "mean CL", "tip phase", "tip lag", "status");
+  std::printf("%-16s %14s %9s %10s %10s %11s %10s  %s\n",
+              variation.key.substr(variation.key.rfind('.') + 1).c_str(), "mean lift [N]", "mean CL",
+              "tip phase", "tip lag", "outer phase", "outer lag", "status");
   for (const auto& r : rows)
-    std::printf("%-16s %14.6g %9.4f %12.4f %12.4f  %s\n", sweep::value_label(r.value).c_str(), r.mean_lift,
-                r.mean_cl, r.tip_rotation_phase, r.tip_rotation_lag,
+    std::printf("%-16s %14.6g %9.4f %10.4f %10.4f %11.4f %10.4f  %s\n", sweep::value_label(r.value).c_str(),
+                r.mean_lift, r.mean_cl, r.tip_rotation_phase, r.tip_rotation_lag, r.outer_rotation_phase,
+                r.outer_rotation_lag,
                 r.status == "ok" ? "ok" : r.status.c_str());
   std::printf("table: %s\n", (std::filesystem::path(a.output_dir) / "sweep.csv").string().c_str());
 }

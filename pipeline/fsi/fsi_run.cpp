@@ -27,7 +27,7 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 // Time series kept in memory for the end-of-run analysis.
 struct Series {
   std::vector<double> t, lift, cl, fx, fy, fz;
-  std::vector<double> base_phi, base_alpha, tip_phi, tip_alpha;
+  std::vector<double> base_phi, base_alpha, tip_phi, tip_alpha, outer_phi, outer_alpha;
   std::vector<int> iterations;
 };
 
@@ -35,7 +35,8 @@ std::vector<std::string> history_columns(const pipeline::Case& c, const mbd::Cha
   std::vector<std::string> cols = {"t_s",          "phi_base_deg", "theta_base_deg", "alpha_base_deg",
                                    "phi_tip_deg",  "theta_tip_deg", "alpha_tip_deg", "Fx_N",
                                    "Fy_N",         "Fz_N",          "lift_N",        "CL",
-                                   "coupling_iterations", "coupling_change_rad"};
+                                   "coupling_iterations", "coupling_change_rad",
+                                   "phi_outer_deg", "theta_outer_deg", "alpha_outer_deg"};
   for (int b = chain.first_jointed_body(); b < chain.num_bodies(); ++b) {
     cols.push_back("bend_" + std::to_string(b + 1) + "_rad");
     cols.push_back("twist_" + std::to_string(b + 1) + "_rad");
@@ -45,11 +46,22 @@ std::vector<std::string> history_columns(const pipeline::Case& c, const mbd::Cha
   return cols;
 }
 
-// Euler angles of the tip body relative to the chain's undeformed orientation.
-EulerAngles tip_angles(const pipeline::Case& c, const mbd::ChainModel& chain, const mbd::ChainData& data) {
+// Euler angles of a body relative to the chain's undeformed orientation.
+EulerAngles body_angles(const pipeline::Case& c, const mbd::ChainModel& chain, const mbd::ChainData& data,
+                        int body) {
   const Eigen::Matrix3d r_gs = mbd::rotation_y(c.kinematics.stroke_plane_angle);
-  const Eigen::Matrix3d& r_gb = data.bodies.back().rotation;
+  const Eigen::Matrix3d& r_gb = data.bodies[static_cast<std::size_t>(body)].rotation;
   return euler_angles(r_gs.transpose() * r_gb * chain.root_rotation.transpose());
+}
+
+// The "outer" body: the one holding the point at 5/6 of the chain's length, the middle
+// of the outer third of the span (the third body of the paper's three-body wing). With
+// many bodies the last one is a small piece of the rounded tip; this one is a section
+// an experimenter's wing-tip marker would follow.
+int outer_body(const mbd::ChainModel& chain) {
+  const std::vector<double> s = reference_joint_span(chain);
+  const double length = s.back() + chain.bodies.back().outboard_joint.norm();
+  return host_body(s, s.front() + 5.0 / 6.0 * (length - s.front()));
 }
 
 }  // namespace
@@ -78,6 +90,7 @@ RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
     output::ensure_directory(dir / "vtk");
   }
   Series series;
+  const int outer_index = outer_body(model.chain);
   std::vector<double> row(history.columns().size());
   pipeline::ProgressLine progress(setup.steps, stderr, options.progress);
 
@@ -101,7 +114,8 @@ RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
   auto record = [&](long step) {
     const double t = data.state.time;
     const auto base = c.kinematics.angles(t);
-    const EulerAngles tip = tip_angles(c, model.chain, data.chain);
+    const EulerAngles tip = body_angles(c, model.chain, data.chain, model.chain.num_bodies() - 1);
+    const EulerAngles outer = body_angles(c, model.chain, data.chain, outer_index);
     Eigen::Vector3d force = Eigen::Vector3d::Zero();
     if (model.air) force = data.lattice->loads.total_force;
     const double lift = force.z();
@@ -109,7 +123,8 @@ RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
     std::size_t i = 0;
     for (double v : {t, base.sweep.value * kDeg, base.deviation.value * kDeg, base.rotation.value * kDeg,
                      tip.sweep * kDeg, tip.deviation * kDeg, tip.rotation * kDeg, force.x(), force.y(),
-                     force.z(), lift, cl, double(data.last_iterations), data.last_change})
+                     force.z(), lift, cl, double(data.last_iterations), data.last_change,
+                     outer.sweep * kDeg, outer.deviation * kDeg, outer.rotation * kDeg})
       row[i++] = v;
     for (int k = 0; k < data.state.q.size(); ++k) row[i++] = data.state.q(k);
     for (const auto& m : c.markers) {
@@ -127,6 +142,8 @@ RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
     series.base_alpha.push_back(base.rotation.value);
     series.tip_phi.push_back(tip.sweep);
     series.tip_alpha.push_back(tip.rotation);
+    series.outer_phi.push_back(outer.sweep);
+    series.outer_alpha.push_back(outer.rotation);
     series.iterations.push_back(data.last_iterations);
 
     if (vtk_every > 0 && step % vtk_every == 0) {
@@ -171,6 +188,11 @@ RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
     summary.tip_rotation_phase = tp.value_or(nan);
     summary.tip_rotation_lag = lag.value_or(nan);
     summary.tip_sweep_lag = sweep_lag.value_or(nan);
+    summary.outer_rotation_phase =
+        rotation_phase(series.t, series.outer_phi, series.outer_alpha, setup.period, t_begin, t_end).value_or(nan);
+    summary.outer_rotation_lag = crossing_lag(series.t, series.outer_alpha, series.base_alpha, 0.5 * std::numbers::pi,
+                                              setup.period, t_begin, t_end)
+                                     .value_or(nan);
     double it_sum = 0.0;
     int it_max = 0;
     for (int it : series.iterations) {
@@ -192,6 +214,9 @@ RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
     json.set("tip_rotation_phase", summary.tip_rotation_phase);
     json.set("tip_rotation_lag", summary.tip_rotation_lag);
     json.set("tip_sweep_lag", summary.tip_sweep_lag);
+    json.set("outer_body", outer_index + 1);
+    json.set("outer_rotation_phase", summary.outer_rotation_phase);
+    json.set("outer_rotation_lag", summary.outer_rotation_lag);
     json.set("mean_coupling_iterations", summary.mean_coupling_iterations);
     json.set("max_coupling_iterations", summary.max_coupling_iterations);
     json.set("coupling_tolerance_rad", model.coupling.tolerance);

@@ -3,7 +3,8 @@
 /// \brief A whole coupled run of a case with its outputs (docs/fsi.md, "Outputs"):
 ///  - history.csv   per step: t, base φ θ α, tip φ θ α (degrees, stroke-plane frame),
 ///                  aerodynamic force Fx Fy Fz, lift, CL, coupling iterations and the
-///                  final structure change, joint angles, marker positions;
+///                  final structure change, the outer body's φ θ α (the body at 5/6 of the
+///                  chain length), joint angles, marker positions;
 ///  - summary.json  last-cycle means (lift, CL, force), rotation phases of base and tip
 ///                  and their difference, coupling statistics, wall time, status;
 ///  - wing.pvd, wake.pvd, chain.pvd  ParaView series (every `output.vtk_every` steps).
@@ -36,6 +37,9 @@ struct RunSummary {
   double tip_rotation_phase = 0.0;   ///< tip δψ (tip α = 90° vs tip sweep reversal) [-]
   double tip_rotation_lag = 0.0;     ///< tip α = 90° crossings minus base's, fraction of T [-]
   double tip_sweep_lag = 0.0;        ///< tip φ zero-mean crossings minus base's [-]
+  /// The same for the outer body (holding 5/6 of the chain length, fsi_run.cpp) [-].
+  double outer_rotation_phase = 0.0;
+  double outer_rotation_lag = 0.0;
   double mean_coupling_iterations = 0.0;
   int max_coupling_iterations = 0;
   double wall_time_s = 0.0;

@@ -114,17 +114,35 @@ std::optional<double> rotation_phase(const std::vector<double>& t, const std::ve
                                      const std::vector<double>& alpha, double period, double t0,
                                      double t1) {
   constexpr double kRightAngle = 0.5 * 3.14159265358979323846;
-  // Search the reversals a little outside the window so a crossing near its edge finds one.
   const auto maxima = extremum_times(t, sweep, +1, t0 - period, t1 + period);
   const auto minima = extremum_times(t, sweep, -1, t0 - period, t1 + period);
+  // The reversal of a crossing is the largest maximum (smallest minimum) of φ within half
+  // a period of it: a deforming tip's φ wiggles, and its small local extrema are not
+  // stroke reversals.
+  const auto reversal_near = [&](double tc, int sign) {
+    const auto& candidates = sign > 0 ? maxima : minima;
+    double best_t = std::numeric_limits<double>::quiet_NaN(), best_v = -1e300;
+    for (double te : candidates) {
+      if (std::abs(te - tc) > 0.5 * period) continue;
+      // φ at te by linear interpolation of the samples (the parabola's vertex is close).
+      const auto it = std::lower_bound(t.begin(), t.end(), te);
+      const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - t.begin()), t.size() - 1);
+      const double v = sign * sweep[i];
+      if (v > best_v) {
+        best_v = v;
+        best_t = te;
+      }
+    }
+    return best_t;
+  };
   double sum = 0.0;
   int count = 0;
   for (int dir : {-1, +1}) {
-    const auto& reversals = dir < 0 ? maxima : minima;
     for (double tc : crossing_times(t, alpha, kRightAngle, dir)) {
       if (tc < t0 || tc > t1) continue;
-      // The crossing minus its reversal: nearest_shift gives reversal − crossing.
-      const double f = nearest_shift(reversals, tc, period);
+      const double tr = reversal_near(tc, dir < 0 ? +1 : -1);
+      const double f = std::isfinite(tr) ? wrap_half((tr - tc) / period)
+                                         : std::numeric_limits<double>::quiet_NaN();
       if (std::isfinite(f)) {
         sum += -f;
         ++count;

@@ -27,11 +27,14 @@ void write_table(const std::filesystem::path& path, const std::string& key,
     cells.push_back({output::format_number(r.value), output::format_number(r.mean_lift),
                      output::format_number(r.mean_cl), output::format_number(r.tip_rotation_phase),
                      output::format_number(r.tip_rotation_lag),
+                     output::format_number(r.outer_rotation_phase),
+                     output::format_number(r.outer_rotation_lag),
                      output::format_number(r.mean_coupling_iterations),
                      output::format_number(r.wall_time_s), r.folder, r.status});
   }
   output::write_csv(path,
                     {key, "mean_lift_N", "mean_CL", "tip_rotation_phase", "tip_rotation_lag",
+                     "outer_rotation_phase", "outer_rotation_lag",
                      "mean_coupling_iterations", "wall_time_s", "folder", "status"},
                     cells);
 }
@@ -83,11 +86,14 @@ std::vector<SweepRow> run_sweep(const std::string& case_file, const Variation& v
         r.mean_cl = s.mean_cl;
         r.tip_rotation_phase = s.tip_rotation_phase;
         r.tip_rotation_lag = s.tip_rotation_lag;
+        r.outer_rotation_phase = s.outer_rotation_phase;
+        r.outer_rotation_lag = s.outer_rotation_lag;
         r.mean_coupling_iterations = s.mean_coupling_iterations;
         r.wall_time_s = s.wall_time_s;
       } catch (const NumericalFailure& e) {
         r.status = std::string("failed: ") + e.what();
-        r.mean_lift = r.mean_cl = r.tip_rotation_phase = r.tip_rotation_lag =
+        r.mean_lift = r.mean_cl = r.tip_rotation_phase = r.tip_rotation_lag = r.outer_rotation_phase =
+            r.outer_rotation_lag =
             std::numeric_limits<double>::quiet_NaN();
       } catch (...) {
         std::lock_guard<std::mutex> lock(mutex);

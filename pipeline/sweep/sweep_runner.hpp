@@ -34,6 +34,7 @@ struct SweepRow {
   std::string status;            ///< "ok", "failed: ..." 
   double mean_lift = 0.0, mean_cl = 0.0;
   double tip_rotation_phase = 0.0, tip_rotation_lag = 0.0;
+  double outer_rotation_phase = 0.0, outer_rotation_lag = 0.0;
   double mean_coupling_iterations = 0.0, wall_time_s = 0.0;
 };
 
