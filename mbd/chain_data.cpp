@@ -17,6 +17,7 @@ ChainData::ChainData(const ChainModel& model) {
   stiffness = model.stiffness_diagonal();
   damping = model.damping_diagonal();
   rest = model.rest_angles();
+  inertia_times_jacobian = Eigen::MatrixXd::Zero(3, n);
   step.jacobian = Eigen::MatrixXd::Zero(n, n);
   step.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
   for (Eigen::VectorXd* v : {&step.x, &step.dx, &step.r, &step.r_new, &step.dr, &step.jdx, &step.q,

@@ -57,6 +57,7 @@ struct ChainData {
   Eigen::VectorXd spring_force;     ///< K(Φ − Φ_rest) + C Φ̇ [N m]
   Eigen::VectorXd generalized_load; ///< Q from the Loads and gravity [N m]
   Eigen::VectorXd stiffness, damping, rest;  ///< copies of the model's diagonals
+  Eigen::MatrixXd inertia_times_jacobian;    ///< 3 × n scratch for the mass matrix
   StepWorkspace step;
 };
 

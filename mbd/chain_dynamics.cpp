@@ -17,9 +17,11 @@ void compute_mass_matrix_and_bias(const ChainModel& model, ChainData& data) {
     const int cols = model.dof_of_body(i) + 2;
     const auto jv = b.com_jacobian.leftCols(cols);
     const auto jw = b.angular_jacobian.leftCols(cols);
-    data.mass_matrix.topLeftCorner(cols, cols).noalias() += m * (jv.transpose() * jv);
-    data.mass_matrix.topLeftCorner(cols, cols).noalias() +=
-        jw.transpose() * (b.inertia_ground * jw);
+    // Products straight into M (no heap temporaries in the time loop).
+    data.mass_matrix.topLeftCorner(cols, cols).noalias() += (m * jv.transpose()) * jv;
+    auto ijw = data.inertia_times_jacobian.leftCols(cols);
+    ijw.noalias() = b.inertia_ground * jw;
+    data.mass_matrix.topLeftCorner(cols, cols).noalias() += jw.transpose() * ijw;
     // Newton–Euler with the bias accelerations: F = m a_c, N = I ω̇ + ω × I ω.
     f = m * b.com_acceleration;
     torque = b.inertia_ground * b.angular_acceleration +

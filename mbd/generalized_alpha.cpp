@@ -142,7 +142,8 @@ void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
                                    " N m, force scale " + scientific(scale) + " N m)",
                                current.step, t1);
     ++ws.last_iterations;
-    ws.dx = -ws.lu.solve(ws.r);
+    ws.dx = ws.lu.solve(ws.r);
+    ws.dx = -ws.dx;
     ws.x += ws.dx;
     scale = p.residual(ws.x, ws.r_new);
     const double new_norm = ws.r_new.lpNorm<Eigen::Infinity>();
