@@ -1,5 +1,6 @@
 // Throughput of the Biot–Savart kernel: point–segment interactions per second, on a
-// wake-sized problem (6000 segments, 3300 target points), one and two threads.
+// wake-sized problem (6000 segments, 3300 target points), one and two threads, in double
+// precision and in the single precision the free-wake convection uses.
 #include "uvlm/biot_savart.hpp"
 
 #include <benchmark/benchmark.h>
@@ -11,7 +12,7 @@ using namespace flapsim::uvlm;
 
 namespace {
 
-void BM_BiotSavart(benchmark::State& state, CoreModel model) {
+void BM_BiotSavart(benchmark::State& state, CoreModel model, bool single) {
   const int threads = static_cast<int>(state.range(0));
   const std::size_t n_seg = 6000, n_pts = 3300;
   std::mt19937 rng(1);
@@ -24,10 +25,14 @@ void BM_BiotSavart(benchmark::State& state, CoreModel model) {
   p.size = n_pts;
   for (std::size_t i = 0; i < n_pts; ++i) p.set(i, {u(rng), u(rng), u(rng)});
   const VortexCore core{model, 1e-3};
+  s.update_single_precision();
   omp_set_num_threads(threads);
   for (auto _ : state) {
     p.zero_velocity();
-    add_induced_velocity(s, p, core);
+    if (single)
+      add_induced_velocity_single(s, p, core);  // the free-wake convection's kernel
+    else
+      add_induced_velocity(s, p, core);
     benchmark::DoNotOptimize(p.u.data());
     benchmark::ClobberMemory();
   }
@@ -40,8 +45,10 @@ void BM_BiotSavart(benchmark::State& state, CoreModel model) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_BiotSavart, LambOseen, CoreModel::LambOseen)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BiotSavart, CutOff, CoreModel::CutOff)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BiotSavart, Vatistas, CoreModel::Vatistas)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BiotSavart, LambOseen, CoreModel::LambOseen, false)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BiotSavart, CutOff, CoreModel::CutOff, false)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BiotSavart, Vatistas, CoreModel::Vatistas, false)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BiotSavart, LambOseenSingle, CoreModel::LambOseen, true)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BiotSavart, CutOffSingle, CoreModel::CutOff, true)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
