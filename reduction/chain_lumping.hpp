@@ -17,9 +17,9 @@ struct LumpedChain {
   mbd::ChainModel chain;         ///< root frame = axis frame at the pivot
   double body_length = 0.0;      ///< a = s_tip / N_b [m]
   std::vector<double> joint_s;   ///< axis position of each body's inboard joint [m]
-  /// Bending rotation and twist of the FEM under the unit moment / torque at the
-  /// cell edges used for each joint (inboard, outboard) [rad].
-  std::vector<double> cell_start, cell_end;  ///< [m]
+  /// Axis positions of the sections whose rotations under the unit moment / torque
+  /// gave each joint's springs (the joint's cell; zero for a rigid root) [m].
+  std::vector<double> cell_start, cell_end;
   double fem_mass = 0.0;         ///< Φᵀ M Φ mass of the FEM [kg]
 };
 
