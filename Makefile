@@ -1,7 +1,14 @@
 # flapsim — the commands users drive. Every target installs missing Debian
 # packages first (tools/install_deps.sh), then configures and builds as needed.
-#   make run        the full pipeline on the default hawkmoth wing
-#   make test       build and run every test (ctest)
+#   make run             the full pipeline on the default hawkmoth wing:
+#                        wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz
+#   make test            build and run every test (ctest)
+#   make test-asan       every test again, built with ASan + UBSan
+#   make hawkmoth-model  regenerate out/hawkmoth/ (mesh, FEM, beam, chain)
+#   make phase-study     the rotation-phase sweeps (rigid and flexible wing)
+#   make plots           PNG figures of the phase study in out/plots
+#   make validate        reference-vs-computed table of the validation cases
+#   make bench           Google Benchmark programs (kernel throughput, whole runs)
 # See README.md for the rest.
 
 BUILD      ?= build
@@ -10,12 +17,12 @@ JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 OUT        ?= out
 
-.PHONY: all deps build run test test-asan bench validate phase-study plots hawkmoth-model clean help
+.PHONY: all deps build run test test-asan bench hawkmoth-model clean help
 
 all: build
 
 help:
-	@sed -n '1,6p' Makefile
+	@sed -n '1,14p' Makefile
 
 deps:
 	@tools/install_deps.sh
@@ -27,8 +34,8 @@ build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j$(JOBS)
 
 run: build
-	$(BUILD)/flapsim check wings/hawkmoth.toml
-	$(BUILD)/flapsim check cases/hover.toml
+	@$(BUILD)/flapsim check wings/hawkmoth.toml
+	@$(MAKE) --no-print-directory run-pipeline
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
@@ -45,3 +52,6 @@ bench: build
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD)
+
+include tools/hawkmoth_model.mk
+include tools/pipeline.mk
