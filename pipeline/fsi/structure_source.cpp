@@ -1,7 +1,10 @@
 #include "pipeline/fsi/structure_source.hpp"
 
+#include "fem/wing_fem.hpp"
 #include "pipeline/chain_file.hpp"
 #include "pipeline/fsi/fsi_setup.hpp"
+#include "reduction/chain_lumping.hpp"
+#include "reduction/clamped_wing_analysis.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::fsi {
@@ -24,9 +27,19 @@ StructureChoice choose_structure(const pipeline::Case& c, const std::string& cha
     s.description = "chain file " + path + " (" + std::to_string(s.chain.num_bodies()) + " bodies)";
     return s;
   }
+  if (wing) {
+    // No chain given: the wing's FEM reduced here, as `flapsim reduce --bodies N` would
+    // (docs/reduction.md), without writing its files.
+    const fem::WingFem fem = fem::build_wing_fem(*wing);
+    const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp, {});
+    s.chain = reduction::lump_into_chain(analysis, c.structure.bodies).chain;
+    s.description = "wing reduced in process (FEM + reduction, " +
+                    std::to_string(s.chain.num_bodies()) + " bodies)";
+    return s;
+  }
   throw InputError(c.file, 0, "chain",
-                   "a flexible wing needs its bar chain: give 'chain = \"...\"' in the case, or "
-                   "'flapsim run CASE --chain FILE' (make the chain with 'flapsim reduce WING -o DIR')");
+                   "a flexible wing needs its bar chain or its wing: give 'chain = \"...\"' or "
+                   "'wing = \"...\"' in the case, or 'flapsim run CASE --chain FILE'");
 }
 
 }  // namespace flapsim::fsi

@@ -21,7 +21,8 @@ struct StructureChoice {
 /// \brief Chooses and builds the structure of a case (see the file comment).
 /// \param chain_override  chain file from the command line ("" = none)
 /// \param wing            the case's wing, or nullptr
-/// \throws flapsim::InputError naming the case file and key when nothing usable is given
+/// \throws flapsim::InputError naming the case file and key when nothing usable is given;
+///         what the FEM and the reduction throw for a wing they cannot mesh or reduce
 StructureChoice choose_structure(const pipeline::Case& c, const std::string& chain_override,
                                  const wings::Wing* wing);
 

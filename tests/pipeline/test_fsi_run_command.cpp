@@ -62,11 +62,23 @@ TEST(FsiRunCommand, RigidCaseWritesHistorySummaryAndSeries) {
   EXPECT_TRUE(dir.temporaries().empty());
 }
 
-TEST(FsiRunCommand, FlexibleCaseWithoutChainIsBadInputAndWritesNothing) {
+TEST(FsiRunCommand, MissingChainFileIsBadInputAndWritesNothing) {
   flapsim::test::ScratchDir dir("fsi_run_nochain");
   std::ofstream(dir / "case.toml") << plate_case("flexible");
-  EXPECT_EQ(flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 2);
+  EXPECT_EQ(flapsim("run " + (dir / "case.toml").string() + " --chain " + (dir / "missing.toml").string() +
+                    " -o " + (dir / "out").string()),
+            2);
   EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(FsiRunCommand, FlexibleCaseWithOnlyAWingIsReducedInProcess) {
+  // structure.bodies = 2 bodies from the flat plate's FEM (fem + reduction, no files).
+  flapsim::test::ScratchDir dir("fsi_run_reduce");
+  std::ofstream(dir / "case.toml") << plate_case("flexible");
+  ASSERT_EQ(flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
+  const std::string summary = slurp(dir / "out" / "summary.json");
+  EXPECT_NE(summary.find("wing reduced in process (FEM + reduction, 2 bodies)"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"status\": \"ok\""), std::string::npos) << summary;
 }
 
 TEST(FsiRunCommand, DivergingChainExitsThreeAndKeepsItsOutputs) {
