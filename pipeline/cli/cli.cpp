@@ -25,7 +25,8 @@ int run(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version print and succeed; any other parse error is a usage error.
+    return app.exit(e) == 0 ? 0 : 1;
   } catch (const InputError& e) {
     std::cerr << "flapsim: error: " << e.what() << "\n";
     return 2;
