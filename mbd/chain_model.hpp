@@ -12,7 +12,8 @@
 /// Joint k (child body k, parent body k−1, or the root frame for k = 0):
 ///   R_{k−1,k} = Rx(θ_k) · Ry(α_k)
 /// bending θ_k about the parent's x axis (θ > 0 bends the child toward +z), then
-/// torsion α_k about the child's own y axis (nose-up about the span for α > 0).
+/// torsion α_k about the child's own y axis (Ry(α) turns the leading edge +x toward −z:
+/// nose-down for α > 0, opposite to the base rotation α of WingKinematics, which enters as Ry(−α)).
 /// The joint sits at the parent's outboard joint point (`outboard_joint` of body k−1,
 /// or the root offset for k = 0).
 ///
