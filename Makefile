@@ -16,6 +16,7 @@ ASAN_BUILD ?= build-asan
 JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 OUT        ?= out
+MAKEFLAGS  += --no-print-directory
 
 .PHONY: all deps build run test test-asan bench hawkmoth-model clean help
 
