@@ -60,7 +60,7 @@ plots:
 	  $(MAKE) --no-print-directory phase-study
 	$(PIPELINE_PYTHON) tools/plot_phase_study.py $(PHASE_OUT) $(PLOTS_OUT)
 
-validate: build
+validate: build $(PIPELINE_CHAIN)
 	@test -f $(PHASE_OUT)/rigid/sweep.csv -a -f $(PHASE_OUT)/flexible/sweep.csv || \
 	  $(MAKE) --no-print-directory phase-study
 	$(PIPELINE_PYTHON) tools/validate.py --build $(BUILD) --out $(OUT)
