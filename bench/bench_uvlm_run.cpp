@@ -1,18 +1,17 @@
-// A whole rigid-wing hover run: hawkmoth-like wing (wings/outlines/hawkmoth1_outline.csv,
-// R = 48.3 mm, chord stretched 1.131 to 815 mm²), 6 × 10 panels, the rotation-phase
+// A whole rigid-wing hover run: the outline of wings/hawkmoth.toml (R = 48.3 mm,
+// 815.3 mm²), 6 × 10 panels, the rotation-phase
 // paper's eq. 7 kinematics at 26.1 Hz, 3 cycles × 100 steps, free wake (AB2, Lamb–Oseen
 // core). The reference point: a Python UVLM needs about 180 s for the same work.
 #include "mbd/periodic_signal.hpp"
 #include "mbd/wing_kinematics.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "uvlm/vortex_lattice.hpp"
+#include "wings/wing_file.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 using namespace flapsim;
@@ -20,19 +19,7 @@ using namespace flapsim;
 namespace {
 
 std::vector<Eigen::Vector2d> hawkmoth_outline() {
-  const double R = 0.0483, stretch = 1.131;
-  std::ifstream in(std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/hawkmoth1_outline.csv");
-  std::vector<Eigen::Vector2d> pts;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'x') continue;
-    std::istringstream ss(line);
-    double x, y;
-    char comma;
-    ss >> x >> comma >> y;
-    pts.emplace_back(stretch * R * x, R * y);
-  }
-  return pts;
+  return wings::load_wing_file(std::string(FLAPSIM_SOURCE_DIR) + "/wings/hawkmoth.toml").outline;
 }
 
 void BM_HoverRun(benchmark::State& state) {

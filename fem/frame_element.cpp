@@ -1,4 +1,5 @@
 #include "fem/frame_element.hpp"
+#include "fem/block_rotation.hpp"
 
 #include <cmath>
 
@@ -70,8 +71,7 @@ FrameElementMatrices frame_element(const Eigen::Vector3d& a, const Eigen::Vector
   bending(2, 4, s.I_y, -1.0);
 
   const Eigen::Matrix3d R = frame_axes(a, b, p.up);
-  Matrix12d T = Matrix12d::Zero();
-  for (int blk = 0; blk < 4; ++blk) T.block<3, 3>(3 * blk, 3 * blk) = R;
+  const Matrix12d T = block_rotation<12>(R);
   FrameElementMatrices out;
   out.stiffness = T.transpose() * k * T;
   out.mass = T.transpose() * m * T;

@@ -1,4 +1,5 @@
 #include "fem/shell_element.hpp"
+#include "fem/block_rotation.hpp"
 
 #include <cmath>
 
@@ -209,8 +210,7 @@ ShellElementMatrices shell_element(const std::array<Eigen::Vector3d, 3>& p,
     }
     for (int d = 3; d < 6; ++d) m(6 * a + d, 6 * a + d) += rot;
   }
-  Matrix18d T = Matrix18d::Zero();
-  for (int blk = 0; blk < 6; ++blk) T.block<3, 3>(3 * blk, 3 * blk) = R;
+  const Matrix18d T = block_rotation<18>(R);
   ShellElementMatrices out;
   out.stiffness = T.transpose() * k * T;
   out.mass = T.transpose() * m * T;

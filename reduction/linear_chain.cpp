@@ -1,4 +1,5 @@
 #include "reduction/linear_chain.hpp"
+#include "reduction/skew.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -8,16 +9,6 @@
 #include <string>
 
 namespace flapsim::reduction {
-
-namespace {
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return s;
-}
-
-}  // namespace
 
 LinearChain::LinearChain(const mbd::ChainModel& chain) : chain_(&chain) {
   chain.validate();

@@ -1,4 +1,5 @@
 #include "reduction/strip_mass.hpp"
+#include "reduction/skew.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -6,12 +7,6 @@
 namespace flapsim::reduction {
 
 namespace {
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return s;
-}
 
 Eigen::Vector3d vee(const Eigen::Matrix3d& s) {
   // The axial vector of the skew part of s.

@@ -1,29 +1,21 @@
 // Lattice grid from planform outlines.
 #include "uvlm/planform_grid.hpp"
+#include "wings/outline_csv.hpp"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 using namespace flapsim::uvlm;
+namespace wings = flapsim::wings;
 
 namespace {
 
+// A shipped outline (units of R, wings/outline_csv.hpp) scaled by `scale`.
 std::vector<Eigen::Vector2d> read_outline(const std::string& name, double scale) {
-  std::ifstream in(std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/" + name);
-  std::vector<Eigen::Vector2d> pts;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'x') continue;
-    std::istringstream ss(line);
-    double x, y;
-    char comma;
-    ss >> x >> comma >> y;
-    pts.emplace_back(scale * x, scale * y);
-  }
+  auto pts = wings::read_outline_csv(std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/" + name, "outline");
+  for (auto& p : pts) p *= scale;
   return pts;
 }
 
