@@ -14,8 +14,10 @@
 PIPELINE_BIN      := $(BUILD)/flapsim
 PIPELINE_PYTHON   ?= /usr/bin/python3
 PIPELINE_CHAIN    ?= $(OUT)/hawkmoth/chain.toml
-# Stiffness calibration of the reduced hawkmoth chain (cases/hover_flexible.toml).
-PIPELINE_SPRINGS  ?= 4
+# Factor on every joint spring of the reduced chain (flapsim run --spring-scale); 1 = the
+# springs as reduced from the calibrated wings/hawkmoth.toml. Override for sensitivity
+# studies, e.g. 'make phase-study PIPELINE_SPRINGS=4'.
+PIPELINE_SPRINGS  ?= 1
 PHASE_OUT         ?= $(OUT)/phase_study
 PHASE_JOBS        ?= $(shell nproc)
 PLOTS_OUT         ?= $(OUT)/plots

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -50,16 +51,13 @@ class HawkmothReduction : public ::testing::Test {
   static inline std::unique_ptr<ClampedWingAnalysis> analysis_;
 };
 
-// Issue 7's acceptance test. DISABLED: with the current wings/hawkmoth.toml it fails.
-// Measured (10 bodies): first bending chain 24.4 Hz vs FEM 19.1 Hz (+28 %, MAC 0.97),
-// first torsion 47.8 vs 32.7 Hz (+46 %, MAC 0.42), tip deflection −23 %, tip rotation
-// and twist under a tip moment / torque 0.0 % (exact by construction at body mid-points).
-// The 12 µm membrane deforms chordwise between the veins, which the rigid sections of
-// a beam cannot follow: with a 4× thicker membrane of the same mass the same code gives
-// +4.5 % (bending, MAC 1.00) and +18 % (torsion); on the uniform plate strip
-// (PlateStrip.HenckyChainConvergesToTheFemFromBelow) the chain converges to the FEM.
-// Enable when the wing file or the reduction (coupled springs, chordwise DOF) changes.
-TEST_F(HawkmothReduction, DISABLED_TenBodiesMatchTheFem) {
+// Issue 7's acceptance test: the 10-body chain reproduces the root-clamped FEM of the
+// calibrated wings/hawkmoth.toml. Measured: first bending +1.6 %, first torsion +2.8 %,
+// tip deflection −1.6 %, tip twist +0.3 % (docs/hawkmoth_reference_data.md). The
+// uncalibrated 12 µm membrane (wings/hawkmoth_thin_membrane.toml) misses by +28 % and
+// +46 % — its sections camber, which a bending–torsion chain cannot — and
+// ThinMembraneSectionsAreNotBeamLike below keeps that limitation visible.
+TEST_F(HawkmothReduction, TenBodiesMatchTheFem) {
   const ChainFemComparison c = compare(10);
   print(c);
   ASSERT_TRUE(c.bending.found);
@@ -74,6 +72,8 @@ TEST_F(HawkmothReduction, DISABLED_TenBodiesMatchTheFem) {
 }
 
 TEST_F(HawkmothReduction, ErrorsAtFourEightTenSixteenBodies) {
+  double bending[3] = {}, torsion[3] = {};  // relative errors at 4, 8, 16 bodies
+  int slot = 0;
   for (int nb : {4, 8, 10, 16}) {
     const ChainFemComparison c = compare(nb);
     print(c);
@@ -84,10 +84,39 @@ TEST_F(HawkmothReduction, ErrorsAtFourEightTenSixteenBodies) {
     // a body mid-point under a tip moment (torque) equals the FEM's (docs/reduction.md).
     EXPECT_NEAR(c.tip_bending_rotation.relative_error, 0.0, 0.01) << nb;
     EXPECT_NEAR(c.tip_twist.relative_error, 0.0, 0.01) << nb;
-    // The first bending shapes correlate (MAC > 0.9, the usual threshold for the same
-    // mode, Allemang 2003) even where the frequencies do not (see the disabled test).
+    // The first bending and torsion shapes correlate (MAC > 0.9, the usual threshold
+    // for the same mode, Allemang 2003).
     EXPECT_GT(c.bending.mac, 0.9) << nb;
+    EXPECT_GT(c.torsion.mac, 0.9) << nb;
+    if (nb != 10) {
+      bending[slot] = c.bending.relative_error;
+      torsion[slot] = c.torsion.relative_error;
+      ++slot;
+    }
   }
+  // The chain converges as N_b doubles: the change 8 -> 16 is smaller than 4 -> 8 (the
+  // Hencky lumping error is second order in the body length; what remains at 16 bodies
+  // is the beam model's own error against the FEM).
+  EXPECT_LT(std::abs(bending[2] - bending[1]), 0.5 * std::abs(bending[1] - bending[0]));
+  EXPECT_LT(std::abs(torsion[2] - torsion[1]), 0.5 * std::abs(torsion[1] - torsion[0]));
+}
+
+// The limitation the calibration removes (wings/hawkmoth.toml, header): with the literal
+// 12 µm cuticle membrane the sections camber between the veins and no bending–torsion
+// chain follows the FEM's first torsion. Measured: +46 % (10 bodies, MAC 0.42).
+TEST(HawkmothThinMembrane, SectionsAreNotBeamLike) {
+  const wings::Wing wing =
+      wings::load_wing_file(std::string(FLAPSIM_SOURCE_DIR) + "/wings/hawkmoth_thin_membrane.toml");
+  const fem::WingFem fem = fem::build_wing_fem(wing);
+  const fem::WingModes modes = fem::wing_modes(fem, 12);
+  const ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp);
+  const ChainFemComparison c =
+      compare_chain_with_fem(analysis, lump_into_chain(analysis, 10), modes.modes, modes.kinds);
+  ASSERT_TRUE(c.torsion.found);
+  EXPECT_GT(c.torsion.relative_error, 0.20);
+  EXPECT_LT(c.torsion.mac, 0.9);
+  // The first bending frequency lies below the 26.1 Hz wingbeat (both papers).
+  EXPECT_LT(c.bending.fem_hz, 26.1);
 }
 
 TEST_F(HawkmothReduction, ThreeEqualBodiesBesideTable1) {
