@@ -56,8 +56,9 @@ TEST(WingFile, HawkmothMatchesRotationPhasePaperTable2) {
   // RP Table 2: span 48.3 mm, area 815.3 mm² (the file scales and stretches to them).
   EXPECT_NEAR(p.span, 48.3e-3, 48.3e-3 * 1e-9);
   EXPECT_NEAR(p.area, 815.3e-6, 815.3e-6 * 1e-9);
-  EXPECT_EQ(wing.veins.size(), 14u);  // HAWKMOTH.md venation table: 14 veins
-  // Chordwise stretch needed: 815.3 / (0.3092 · 48.3²) = 1.130 (HAWKMOTH.md: "by 1.131").
+  EXPECT_EQ(wing.veins.size(), 14u);  // docs/hawkmoth_reference_data.md venation table: 14 veins
+  // Chordwise stretch needed: 815.3 / (0.3092 · 48.3²) = 1.130
+  // (docs/hawkmoth_reference_data.md: "by 1.131").
   // The outline's x extent grows by the same factor: 0.43145 R unscaled.
   double xmin = 1e9, xmax = -1e9;
   for (const auto& q : wing.outline) xmin = std::min(xmin, q.x()), xmax = std::max(xmax, q.x());
@@ -65,7 +66,7 @@ TEST(WingFile, HawkmothMatchesRotationPhasePaperTable2) {
   // Structural mass 33.8 mg (RP Table 1: 13.27 + 13.01 + 7.48 = 33.76 mg; MB §3.1: 0.033 g).
   EXPECT_NEAR(w::estimate_wing_mass(wing).total(), 33.8e-6, 0.05e-6);
   // Calibrated effective membrane (wings/hawkmoth.toml header): 120 µm thick, with the
-  // areal mass of the 12 µm, 1200 kg/m³ cuticle membrane of HAWKMOTH.md.
+  // areal mass of the 12 µm, 1200 kg/m³ cuticle membrane of docs/hawkmoth_reference_data.md.
   EXPECT_NEAR(wing.membrane.thickness, 120e-6, 1e-12);
   EXPECT_NEAR(wing.membrane.thickness * wing.membrane.material.density, 12e-6 * 1200.0, 1e-12);
   EXPECT_NEAR(wing.clamp_y, 2e-3, 1e-12);
@@ -73,7 +74,8 @@ TEST(WingFile, HawkmothMatchesRotationPhasePaperTable2) {
 
 TEST(WingFile, ThinMembraneHawkmothHasTheReferenceStartingValues) {
   const w::Wing wing = w::load_wing_file(kSource + "/wings/hawkmoth_thin_membrane.toml");
-  // HAWKMOTH.md, "Materials" and the venation table: 12 µm membrane, costa 0.40 -> 0.12 mm.
+  // docs/hawkmoth_reference_data.md, "Materials" and the venation table: 12 µm membrane,
+  // costa 0.40 -> 0.12 mm.
   EXPECT_NEAR(wing.membrane.thickness, 12e-6, 1e-12);
   EXPECT_NEAR(wing.veins.front().root_section.outer_diameter, 0.40e-3, 1e-15);
   EXPECT_NEAR(wing.veins.front().tip_section.wall, 0.02e-3, 1e-15);
@@ -87,10 +89,11 @@ TEST(WingFile, HawkmothCostaFollowsTheLeadingEdge) {
   for (const auto& q : costa.points) {
     const auto c = w::chord_at(wing.outline, q.y());
     ASSERT_TRUE(c);
-    // ξ = 0.01 of the local chord behind the leading edge (HAWKMOTH.md).
+    // ξ = 0.01 of the local chord behind the leading edge (docs/hawkmoth_reference_data.md).
     EXPECT_NEAR((c->leading_x - q.x()) / c->length(), 0.01, 1e-12);
   }
-  // Calibrated sections: 1.7 x HAWKMOTH.md's costa 0.40 mm (root), wall 0.02 mm (end).
+  // Calibrated sections (wings/hawkmoth.toml header): 1.7 x the reference data's costa
+  // 0.40 mm (root) and wall 0.02 mm (end), docs/hawkmoth_reference_data.md.
   EXPECT_NEAR(costa.root_section.outer_diameter, 1.7 * 0.40e-3, 1e-15);
   EXPECT_NEAR(costa.tip_section.wall, 1.7 * 0.02e-3, 1e-15);
 }
