@@ -3,7 +3,7 @@
 /// \brief What a wing is, after its file has been read and checked: planform,
 /// veins, membrane, materials and meshing hints, all in SI units in the wing
 /// frame W (y along the span from the pivot, x chordwise toward the leading
-/// edge, z = x × y). Read by wings/wing_file.hpp; used by fem/ and pipeline/.
+/// edge, z = x × y). Read by wings/wing_file.hpp; used by fem/, pipeline/io and pipeline/app.
 
 #include <Eigen/Core>
 

@@ -1,4 +1,4 @@
-#include "pipeline/fsi/fsi_run.hpp"
+#include "pipeline/app/fsi_run.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -9,16 +9,21 @@
 #include "mbd/chain_kinematics.hpp"
 #include "mbd/wing_kinematics.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
-#include "pipeline/fsi/fsi_setup.hpp"
-#include "pipeline/fsi/fsi_vtk.hpp"
+#include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/io/fsi_vtk.hpp"
 #include "pipeline/fsi/phase_analysis.hpp"
-#include "pipeline/numerical_failure.hpp"
-#include "pipeline/output/atomic_file.hpp"
-#include "pipeline/output/csv_writer.hpp"
-#include "pipeline/output/pvd_series.hpp"
-#include "pipeline/output/summary_json.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/csv_writer.hpp"
+#include "pipeline/io/pvd_series.hpp"
+#include "pipeline/io/summary_json.hpp"
 
-namespace flapsim::fsi {
+namespace flapsim::app {
+
+using namespace fsi;
+using io::chain_mesh;
+using io::wake_mesh;
+using io::wing_surface_mesh;
 
 namespace {
 
@@ -31,7 +36,7 @@ struct Series {
   std::vector<int> iterations;
 };
 
-std::vector<std::string> history_columns(const pipeline::Case& c, const mbd::ChainModel& chain) {
+std::vector<std::string> history_columns(const io::Case& c, const mbd::ChainModel& chain) {
   std::vector<std::string> cols = {"t_s",          "phi_base_deg", "theta_base_deg", "alpha_base_deg",
                                    "phi_tip_deg",  "theta_tip_deg", "alpha_tip_deg", "Fx_N",
                                    "Fy_N",         "Fz_N",          "lift_N",        "CL",
@@ -47,7 +52,7 @@ std::vector<std::string> history_columns(const pipeline::Case& c, const mbd::Cha
 }
 
 // Euler angles of a body relative to the chain's undeformed orientation.
-EulerAngles body_angles(const pipeline::Case& c, const mbd::ChainModel& chain, const mbd::ChainData& data,
+EulerAngles body_angles(const io::Case& c, const mbd::ChainModel& chain, const mbd::ChainData& data,
                         int body) {
   const Eigen::Matrix3d r_gs = mbd::rotation_y(c.kinematics.stroke_plane_angle);
   const Eigen::Matrix3d& r_gb = data.bodies[static_cast<std::size_t>(body)].rotation;
@@ -66,35 +71,35 @@ int outer_body(const mbd::ChainModel& chain) {
 
 }  // namespace
 
-RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
+RunSummary run_case(const io::Case& c, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   FsiSetup setup = build_fsi_setup(c, SetupOptions{options.chain_file, options.spring_scale});
   const FsiModel& model = setup.model;
   const int vtk_every = options.vtk_every.value_or(c.output.vtk_every);
   const auto& dir = options.output_dir;
-  output::ensure_directory(dir);
+  io::ensure_directory(dir);
 
   FsiData data(model);
   RunSummary summary;
   summary.structure = setup.structure_source;
   const double qs = model.air ? setup.reference.dynamic_pressure_area(model.density) : 0.0;
 
-  output::CsvTimeSeriesWriter history(dir / "history.csv", history_columns(c, model.chain), 20);
-  std::optional<output::PvdSeries> wing_pvd, wake_pvd, chain_pvd;
+  io::CsvTimeSeriesWriter history(dir / "history.csv", history_columns(c, model.chain), 20);
+  std::optional<io::PvdSeries> wing_pvd, wake_pvd, chain_pvd;
   if (vtk_every > 0) {
     if (model.air) {
       wing_pvd.emplace(dir / "wing.pvd");
       wake_pvd.emplace(dir / "wake.pvd");
     }
     chain_pvd.emplace(dir / "chain.pvd");
-    output::ensure_directory(dir / "vtk");
+    io::ensure_directory(dir / "vtk");
   }
   Series series;
   const int outer_index = outer_body(model.chain);
   std::vector<double> row(history.columns().size());
-  pipeline::ProgressLine progress(setup.steps, stderr, options.progress);
+  app::ProgressLine progress(setup.steps, stderr, options.progress);
 
-  output::SummaryJson json;
+  io::SummaryJson json;
   json.set("case", c.name);
   json.set("structure", setup.structure_source);
   json.set("air", model.air);
@@ -148,15 +153,15 @@ RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
 
     if (vtk_every > 0 && step % vtk_every == 0) {
       if (model.air) {
-        const auto wf = output::PvdSeries::step_file_name("vtk/wing", step, "vtp");
-        output::write_vtp(dir / wf, wing_surface_mesh(model.lattice, *data.lattice, t));
+        const auto wf = io::PvdSeries::step_file_name("vtk/wing", step, "vtp");
+        io::write_vtp(dir / wf, wing_surface_mesh(model.lattice, *data.lattice, t));
         wing_pvd->add(t, dir / wf);
-        const auto kf = output::PvdSeries::step_file_name("vtk/wake", step, "vtp");
-        output::write_vtp(dir / kf, wake_mesh(model.lattice, *data.lattice, t));
+        const auto kf = io::PvdSeries::step_file_name("vtk/wake", step, "vtp");
+        io::write_vtp(dir / kf, wake_mesh(model.lattice, *data.lattice, t));
         wake_pvd->add(t, dir / kf);
       }
-      const auto cf = output::PvdSeries::step_file_name("vtk/chain", step, "vtp");
-      output::write_vtp(dir / cf, chain_mesh(model.chain, data.chain, t));
+      const auto cf = io::PvdSeries::step_file_name("vtk/chain", step, "vtp");
+      io::write_vtp(dir / cf, chain_mesh(model.chain, data.chain, t));
       chain_pvd->add(t, dir / cf);
     }
   };
@@ -253,4 +258,4 @@ RunSummary run_case(const pipeline::Case& c, const RunOptions& options) {
   return summary;
 }
 
-}  // namespace flapsim::fsi
+}  // namespace flapsim::app

@@ -15,17 +15,17 @@
 #include <optional>
 #include <string>
 
-#include "pipeline/case/case_model.hpp"
-#include "pipeline/progress.hpp"
+#include "pipeline/io/case_model.hpp"
+#include "pipeline/app/progress.hpp"
 
-namespace flapsim::fsi {
+namespace flapsim::app {
 
 struct RunOptions {
   std::filesystem::path output_dir;  ///< created if missing
   std::string chain_file;            ///< overrides the case's chain file ("" = none)
   double spring_scale = 1.0;         ///< joint-spring factor of a flexible chain (SetupOptions)
   std::optional<int> vtk_every;      ///< overrides output.vtk_every (0 = no VTK)
-  pipeline::ProgressLine::Mode progress = pipeline::ProgressLine::Mode::automatic;
+  app::ProgressLine::Mode progress = app::ProgressLine::Mode::automatic;
 };
 
 /// What a run reports (also in summary.json).
@@ -49,6 +49,6 @@ struct RunSummary {
 /// \brief Runs a case and writes its outputs into options.output_dir.
 /// \throws flapsim::InputError on bad input (before anything is written),
 ///         flapsim::NumericalFailure when the run diverges (outputs so far stay valid)
-RunSummary run_case(const pipeline::Case& c, const RunOptions& options);
+RunSummary run_case(const io::Case& c, const RunOptions& options);
 
-}  // namespace flapsim::fsi
+}  // namespace flapsim::app

@@ -1,19 +1,21 @@
-#include "pipeline/fsi/fsi_setup.hpp"
+#include "pipeline/app/fsi_setup.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
 #include "mbd/wing_kinematics.hpp"
-#include "pipeline/fsi/structure_source.hpp"
+#include "pipeline/app/structure_source.hpp"
 #include "wings/input_error.hpp"
 #include "wings/planform_geometry.hpp"
 #include "wings/wing_file.hpp"
 #include "wings/wing_mass_properties.hpp"
 
-namespace flapsim::fsi {
+namespace flapsim::app {
 
-using pipeline::Case;
+using fsi::ExternalLoads;
+using fsi::FsiModel;
+using io::Case;
 
 mbd::ChainModel make_rigid_chain(const wings::Wing& wing) {
   const wings::PlanformProperties p = wings::planform_properties(wing.outline);
@@ -63,7 +65,7 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, int ste
 
 ExternalLoads point_loads(const Case& c) {
   if (c.loads.empty()) return {};
-  const std::vector<pipeline::PointLoad> loads = c.loads;
+  const std::vector<io::PointLoad> loads = c.loads;
   const double f = c.kinematics.frequency;
   return [loads, f](double t, mbd::Loads& out) {
     const double s = f * t;
@@ -142,7 +144,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
     g.spanwise_spacing = spacing;
     s.grid = uvlm::make_planform_grid(s.wing->outline, g);
     m.lattice = lattice_model(c, p.mean_chord, s.steps);
-    m.attachment = attach_wing(m.chain, s.grid->nodes, g.chordwise, g.spanwise);
+    m.attachment = fsi::attach_wing(m.chain, s.grid->nodes, g.chordwise, g.spanwise);
     s.reference.area = p.area;
     s.reference.span = p.span;
     s.reference.mean_chord = p.mean_chord;
@@ -152,4 +154,4 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   return s;
 }
 
-}  // namespace flapsim::fsi
+}  // namespace flapsim::app

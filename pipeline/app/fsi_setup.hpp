@@ -9,12 +9,12 @@
 #include <string>
 
 #include "mbd/chain_model.hpp"
-#include "pipeline/case/case_model.hpp"
+#include "pipeline/io/case_model.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "wings/wing_model.hpp"
 
-namespace flapsim::fsi {
+namespace flapsim::app {
 
 /// Reference values of the lift coefficient CL = L / (½ ρ U_ref² S).
 struct LiftReference {
@@ -27,7 +27,7 @@ struct LiftReference {
 };
 
 struct FsiSetup {
-  FsiModel model;
+  fsi::FsiModel model;
   std::optional<wings::Wing> wing;        ///< the wing (if the case names one)
   std::optional<uvlm::PlanformGrid> grid; ///< lattice grid in the wing frame (if air)
   LiftReference reference;                ///< valid if air
@@ -59,6 +59,6 @@ double mean_speed_at_radius(const mbd::WingKinematics& kinematics, double radius
 /// \throws flapsim::InputError when the structure cannot be obtained (flexible case without
 ///         chain file and no in-process reduction), a wing is needed but missing, or the
 ///         chain file is invalid; std::invalid_argument on inconsistent internal sizes
-FsiSetup build_fsi_setup(const pipeline::Case& c, const SetupOptions& options);
+FsiSetup build_fsi_setup(const io::Case& c, const SetupOptions& options);
 
-}  // namespace flapsim::fsi
+}  // namespace flapsim::app

@@ -1,11 +1,11 @@
-#include "pipeline/progress.hpp"
+#include "pipeline/app/progress.hpp"
 
 #include <unistd.h>
 
 #include <cstdlib>
 #include <cstring>
 
-namespace flapsim::pipeline {
+namespace flapsim::app {
 
 namespace {
 
@@ -85,4 +85,4 @@ void ProgressLine::draw(const std::string& line, bool final_line) {
   drawn_ = true;
 }
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::app

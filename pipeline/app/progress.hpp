@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace flapsim::pipeline {
+namespace flapsim::app {
 
 class ProgressLine {
  public:
@@ -58,4 +58,4 @@ class ProgressLine {
   bool drawn_ = false;
 };
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::app

@@ -1,17 +1,17 @@
-#include "pipeline/fsi/structure_source.hpp"
+#include "pipeline/app/structure_source.hpp"
 
 #include "fem/wing_fem.hpp"
-#include "pipeline/chain_file.hpp"
-#include "pipeline/fsi/fsi_setup.hpp"
+#include "pipeline/io/chain_file.hpp"
+#include "pipeline/app/fsi_setup.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/clamped_wing_analysis.hpp"
 #include "wings/input_error.hpp"
 
-namespace flapsim::fsi {
+namespace flapsim::app {
 
-StructureChoice choose_structure(const pipeline::Case& c, const std::string& chain_override,
+StructureChoice choose_structure(const io::Case& c, const std::string& chain_override,
                                  const wings::Wing* wing) {
-  using Kind = pipeline::Case::Structure::Kind;
+  using Kind = io::Case::Structure::Kind;
   StructureChoice s;
   if (c.structure.kind == Kind::Rigid) {
     if (!wing)
@@ -23,7 +23,7 @@ StructureChoice choose_structure(const pipeline::Case& c, const std::string& cha
   }
   const std::string path = !chain_override.empty() ? chain_override : c.chain_file;
   if (!path.empty()) {
-    s.chain = pipeline::read_chain_file(path);
+    s.chain = io::read_chain_file(path);
     s.description = "chain file " + path + " (" + std::to_string(s.chain.num_bodies()) + " bodies)";
     return s;
   }
@@ -42,4 +42,4 @@ StructureChoice choose_structure(const pipeline::Case& c, const std::string& cha
                    "'wing = \"...\"' in the case, or 'flapsim run CASE --chain FILE'");
 }
 
-}  // namespace flapsim::fsi
+}  // namespace flapsim::app

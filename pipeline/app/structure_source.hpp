@@ -8,10 +8,10 @@
 #include <string>
 
 #include "mbd/chain_model.hpp"
-#include "pipeline/case/case_model.hpp"
+#include "pipeline/io/case_model.hpp"
 #include "wings/wing_model.hpp"
 
-namespace flapsim::fsi {
+namespace flapsim::app {
 
 struct StructureChoice {
   mbd::ChainModel chain;
@@ -23,7 +23,7 @@ struct StructureChoice {
 /// \param wing            the case's wing, or nullptr
 /// \throws flapsim::InputError naming the case file and key when nothing usable is given;
 ///         what the FEM and the reduction throw for a wing they cannot mesh or reduce
-StructureChoice choose_structure(const pipeline::Case& c, const std::string& chain_override,
+StructureChoice choose_structure(const io::Case& c, const std::string& chain_override,
                                  const wings::Wing* wing);
 
-}  // namespace flapsim::fsi
+}  // namespace flapsim::app

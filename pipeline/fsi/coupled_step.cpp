@@ -7,7 +7,7 @@
 #include "mbd/chain_kinematics.hpp"
 #include "mbd/convergence_failure.hpp"
 #include "pipeline/fsi/load_transfer.hpp"
-#include "pipeline/numerical_failure.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
 
 namespace flapsim::fsi {
 

@@ -1,4 +1,4 @@
-#include "pipeline/output/atomic_file.hpp"
+#include "pipeline/io/atomic_file.hpp"
 
 #include <unistd.h>
 
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <system_error>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 namespace fs = std::filesystem;
 
@@ -90,4 +90,4 @@ void write_text_atomically(const fs::path& path, std::string_view text) {
   write_file_atomically(path, [&](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
 }
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

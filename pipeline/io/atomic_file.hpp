@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 /// An output file or directory could not be written (no permission, disk full,
 /// a file where a directory should be). Names the path.
@@ -56,4 +56,4 @@ void publish_file_atomically(const std::filesystem::path& path,
 /// \brief Writes \p text to \p path atomically.
 void write_text_atomically(const std::filesystem::path& path, std::string_view text);
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

@@ -1,4 +1,4 @@
-#include "pipeline/case/case_file.hpp"
+#include "pipeline/io/case_file.hpp"
 
 #include <filesystem>
 #include <numbers>
@@ -6,7 +6,7 @@
 
 #include "wings/input_error.hpp"
 
-namespace flapsim::pipeline {
+namespace flapsim::io {
 
 using wings::Bounds;
 using wings::TomlTable;
@@ -210,4 +210,4 @@ Case load_case_file(const std::string& path,
   return read_case(root);
 }
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::io

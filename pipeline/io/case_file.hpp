@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "mbd/periodic_signal.hpp"
-#include "pipeline/case/case_model.hpp"
+#include "pipeline/io/case_model.hpp"
 #include "wings/toml_reader.hpp"
 
-namespace flapsim::pipeline {
+namespace flapsim::io {
 
 /// Reads a case from an already parsed TOML document (top-level table); paths resolve
 /// against the document's folder.
@@ -42,4 +42,4 @@ mbd::PeriodicSignal read_periodic_signal(const wings::TomlTable& table, std::str
                                          std::string_view suffix, std::string_view values_key,
                                          double scale, const mbd::PeriodicSignal& fallback);
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::io

@@ -13,7 +13,7 @@
 #include "mbd/periodic_signal.hpp"
 #include "mbd/wing_kinematics.hpp"
 
-namespace flapsim::pipeline {
+namespace flapsim::io {
 
 /// A prescribed force and moment on one body of the chain, periodic in the stroke phase.
 struct PointLoad {
@@ -79,4 +79,4 @@ struct Case {
 /// \throws flapsim::InputError naming file, line and key for any bad input
 Case load_case_file(const std::string& path);
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::io

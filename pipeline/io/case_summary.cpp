@@ -1,10 +1,10 @@
-#include "pipeline/case/case_summary.hpp"
+#include "pipeline/io/case_summary.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
-namespace flapsim::pipeline {
+namespace flapsim::io {
 
 namespace {
 
@@ -76,4 +76,4 @@ std::string describe_case(const Case& c) {
   return s;
 }
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::io

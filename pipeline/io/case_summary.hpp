@@ -7,9 +7,9 @@
 #include <string>
 
 #include "mbd/wing_kinematics.hpp"
-#include "pipeline/case/case_model.hpp"
+#include "pipeline/io/case_model.hpp"
 
-namespace flapsim::pipeline {
+namespace flapsim::io {
 
 /// Geometric angle of attack [rad] in the stroke plane, deviation ignored: α on the
 /// downstroke (φ̇ < 0), π − α on the upstroke (φ̇ > 0); nullopt at stroke reversal
@@ -19,4 +19,4 @@ std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angle
 /// Multi-line text; the kinematics table lists phases s = f·t of 0, 0.25, 0.5, 0.75.
 std::string describe_case(const Case& c);
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::io

@@ -1,14 +1,14 @@
-#include "pipeline/chain_file.hpp"
+#include "pipeline/io/chain_file.hpp"
 
-#include "pipeline/output/atomic_file.hpp"
-#include "pipeline/output/csv_writer.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/csv_writer.hpp"
 #include "wings/input_error.hpp"
 #include "wings/toml_reader.hpp"
 
 #include <sstream>
 #include <stdexcept>
 
-namespace flapsim::pipeline {
+namespace flapsim::io {
 
 namespace {
 
@@ -83,8 +83,8 @@ mbd::ChainModel parse_chain(const TomlTable& root) {
 }
 
 std::string vec3(const Eigen::Vector3d& v) {
-  return "[" + output::format_number(v.x()) + ", " + output::format_number(v.y()) + ", " +
-         output::format_number(v.z()) + "]";
+  return "[" + format_number(v.x()) + ", " + format_number(v.y()) + ", " +
+         format_number(v.z()) + "]";
 }
 
 std::string mat3(const Eigen::Matrix3d& m) {
@@ -115,25 +115,25 @@ std::string format_chain_file(const mbd::ChainModel& chain) {
     const auto& b = chain.bodies[static_cast<std::size_t>(k)];
     const auto& j = chain.joints[static_cast<std::size_t>(k)];
     s << "\n[[bodies]]   # body " << k + 1 << "\n"
-      << "length = " << output::format_number(b.length) << "\n"
-      << "mass = " << output::format_number(b.mass) << "\n"
+      << "length = " << format_number(b.length) << "\n"
+      << "mass = " << format_number(b.mass) << "\n"
       << "center_of_mass = " << vec3(b.center_of_mass) << "\n"
       << "inertia = " << mat3(b.inertia) << "\n"
       << "outboard_joint = " << vec3(b.outboard_joint) << "\n";
     if (k == 0 && chain.root == mbd::RootAttachment::rigid) continue;  // welded: no joint
     s << "[bodies.joint]   # inboard of this body\n"
-      << "bend_stiffness = " << output::format_number(j.bend_stiffness) << "\n"
-      << "twist_stiffness = " << output::format_number(j.twist_stiffness) << "\n"
-      << "bend_damping = " << output::format_number(j.bend_damping) << "\n"
-      << "twist_damping = " << output::format_number(j.twist_damping) << "\n"
-      << "bend_rest = " << output::format_number(j.bend_rest) << "\n"
-      << "twist_rest = " << output::format_number(j.twist_rest) << "\n";
+      << "bend_stiffness = " << format_number(j.bend_stiffness) << "\n"
+      << "twist_stiffness = " << format_number(j.twist_stiffness) << "\n"
+      << "bend_damping = " << format_number(j.bend_damping) << "\n"
+      << "twist_damping = " << format_number(j.twist_damping) << "\n"
+      << "bend_rest = " << format_number(j.bend_rest) << "\n"
+      << "twist_rest = " << format_number(j.twist_rest) << "\n";
   }
   return s.str();
 }
 
 void write_chain_file(const std::filesystem::path& path, const mbd::ChainModel& chain) {
-  output::write_text_atomically(path, format_chain_file(chain));
+  write_text_atomically(path, format_chain_file(chain));
 }
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::io

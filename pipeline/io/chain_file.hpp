@@ -31,7 +31,7 @@
 #include <string>
 #include <string_view>
 
-namespace flapsim::pipeline {
+namespace flapsim::io {
 
 /// Reads and checks a chain file.
 /// \throws flapsim::InputError naming file, line and key (missing keys, bad values,
@@ -45,7 +45,7 @@ mbd::ChainModel parse_chain_text(std::string_view text, const std::string& name)
 std::string format_chain_file(const mbd::ChainModel& chain);
 
 /// Writes the chain file atomically (temporary name, then rename).
-/// \throws flapsim::output::OutputError
+/// \throws flapsim::OutputError
 void write_chain_file(const std::filesystem::path& path, const mbd::ChainModel& chain);
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::io

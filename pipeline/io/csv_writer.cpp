@@ -1,13 +1,13 @@
-#include "pipeline/output/csv_writer.hpp"
+#include "pipeline/io/csv_writer.hpp"
 
-#include "pipeline/output/atomic_file.hpp"
+#include "pipeline/io/atomic_file.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <system_error>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 namespace fs = std::filesystem;
 
@@ -161,4 +161,4 @@ void write_csv(const fs::path& path, const std::vector<std::string>& header,
   });
 }
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 /// \brief Shortest round-trip text of a number; "nan", "inf", "-inf" for non-finite values.
 std::string format_number(double value);
@@ -92,4 +92,4 @@ void write_csv(const std::filesystem::path& path, const std::vector<std::string>
 void write_csv(const std::filesystem::path& path, const std::vector<std::string>& header,
                const std::vector<std::vector<std::string>>& rows);
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

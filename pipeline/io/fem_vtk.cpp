@@ -1,13 +1,13 @@
-#include "pipeline/fem_output/fem_vtk.hpp"
+#include "pipeline/io/fem_vtk.hpp"
 
 #include <cstdio>
 
-#include "pipeline/output/csv_writer.hpp"
+#include "pipeline/io/csv_writer.hpp"
 
-namespace flapsim::pipeline {
+namespace flapsim::io {
 
-output::UnstructuredMesh fem_unstructured_mesh(const fem::Mesh& mesh, double clamp_y) {
-  output::UnstructuredMesh g;
+UnstructuredMesh fem_unstructured_mesh(const fem::Mesh& mesh, double clamp_y) {
+  UnstructuredMesh g;
   g.points.resize(3, mesh.num_nodes());
   Eigen::VectorXd clamped(mesh.num_nodes());
   for (int i = 0; i < mesh.num_nodes(); ++i) {
@@ -26,7 +26,7 @@ output::UnstructuredMesh fem_unstructured_mesh(const fem::Mesh& mesh, double cla
   return g;
 }
 
-void add_nodal_vector(output::UnstructuredMesh& grid, const std::string& name, const Eigen::VectorXd& dofs,
+void add_nodal_vector(UnstructuredMesh& grid, const std::string& name, const Eigen::VectorXd& dofs,
                       bool with_rotations) {
   const Eigen::Index n = grid.points.cols();
   Eigen::Matrix3Xd t(3, n), r(3, n);
@@ -40,23 +40,23 @@ void add_nodal_vector(output::UnstructuredMesh& grid, const std::string& name, c
 
 void write_fem_vtu(const std::filesystem::path& path, const fem::Mesh& mesh, double clamp_y,
                    const fem::ModalResult& modes, const std::vector<StaticResult>& statics) {
-  output::UnstructuredMesh g = fem_unstructured_mesh(mesh, clamp_y);
+  UnstructuredMesh g = fem_unstructured_mesh(mesh, clamp_y);
   for (Eigen::Index k = 0; k < modes.shapes.cols(); ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "mode_%02d", static_cast<int>(k + 1));
     add_nodal_vector(g, name, modes.shapes.col(k));
   }
   for (const StaticResult& s : statics) add_nodal_vector(g, "static_" + s.load.name, s.displacement, true);
-  output::write_vtu(path, g);
+  write_vtu(path, g);
 }
 
 void write_modes_csv(const std::filesystem::path& path, const fem::ModalResult& modes,
                      const std::vector<fem::ModeKind>& kinds) {
   std::vector<std::vector<std::string>> rows;
   for (Eigen::Index k = 0; k < modes.frequencies_hz.size(); ++k)
-    rows.push_back({std::to_string(k + 1), output::format_number(modes.frequencies_hz(k)),
+    rows.push_back({std::to_string(k + 1), format_number(modes.frequencies_hz(k)),
                     fem::to_string(kinds.at(static_cast<size_t>(k)))});
-  output::write_csv(path, {"mode", "frequency_hz", "kind"}, rows);
+  write_csv(path, {"mode", "frequency_hz", "kind"}, rows);
 }
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::io

@@ -14,18 +14,18 @@
 #include "fem/mesh.hpp"
 #include "fem/mode_classification.hpp"
 #include "fem/modal_solver.hpp"
-#include "pipeline/output/vtk_writers.hpp"
+#include "pipeline/io/vtk_writers.hpp"
 
-namespace flapsim::pipeline {
+namespace flapsim::io {
 
 /// \brief The mesh as VTK cells: triangles first, then vein segments. Cell data
 /// "vein" (vein index, −1 on membrane triangles); point data "clamped" (1 at
 /// nodes with y <= clamp_y, else 0).
-output::UnstructuredMesh fem_unstructured_mesh(const fem::Mesh& mesh, double clamp_y);
+UnstructuredMesh fem_unstructured_mesh(const fem::Mesh& mesh, double clamp_y);
 
 /// \brief Adds the translations of a full DOF vector as point vector `name`
 /// and, if `with_rotations`, its rotations as `name + "_rotation"`.
-void add_nodal_vector(output::UnstructuredMesh& grid, const std::string& name, const Eigen::VectorXd& dofs,
+void add_nodal_vector(UnstructuredMesh& grid, const std::string& name, const Eigen::VectorXd& dofs,
                       bool with_rotations = false);
 
 /// Static results to show: one displacement field per load case.
@@ -45,4 +45,4 @@ void write_fem_vtu(const std::filesystem::path& path, const fem::Mesh& mesh, dou
 void write_modes_csv(const std::filesystem::path& path, const fem::ModalResult& modes,
                      const std::vector<fem::ModeKind>& kinds);
 
-}  // namespace flapsim::pipeline
+}  // namespace flapsim::io

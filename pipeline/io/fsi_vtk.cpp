@@ -1,12 +1,12 @@
-#include "pipeline/fsi/fsi_vtk.hpp"
+#include "pipeline/io/fsi_vtk.hpp"
 
 #include "mbd/chain_kinematics.hpp"
 
-namespace flapsim::fsi {
+namespace flapsim::io {
 
-output::PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& m,
+PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& m,
                                        const uvlm::VortexLatticeData& d, double time) {
-  output::PolyDataMesh mesh;
+  PolyDataMesh mesh;
   mesh.time = time;
   mesh.points = d.nodes;
   const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
@@ -29,9 +29,9 @@ output::PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& m,
   return mesh;
 }
 
-output::PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& m, const uvlm::VortexLatticeData& d,
+PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& m, const uvlm::VortexLatticeData& d,
                                double time) {
-  output::PolyDataMesh mesh;
+  PolyDataMesh mesh;
   mesh.time = time;
   const int ns = m.spanwise, rows = d.wake_rows;
   const int n1 = ns + 1;
@@ -50,9 +50,9 @@ output::PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& m, const uvlm::Vo
   return mesh;
 }
 
-output::PolyDataMesh chain_mesh(const mbd::ChainModel& chain, const mbd::ChainData& data,
+PolyDataMesh chain_mesh(const mbd::ChainModel& chain, const mbd::ChainData& data,
                                 double time) {
-  output::PolyDataMesh mesh;
+  PolyDataMesh mesh;
   mesh.time = time;
   const int nb = chain.num_bodies();
   mesh.points.resize(3, 3 * nb);
@@ -75,4 +75,4 @@ output::PolyDataMesh chain_mesh(const mbd::ChainModel& chain, const mbd::ChainDa
   return mesh;
 }
 
-}  // namespace flapsim::fsi
+}  // namespace flapsim::io

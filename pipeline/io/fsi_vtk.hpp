@@ -4,25 +4,25 @@
 /// wing surface (quads; cell data pressure jump, circulation, force; point data
 /// velocity), the wake sheet (quads; cell data circulation) and the bar chain (one line
 /// per body from its inboard to its outboard joint; cell data body index). Plain
-/// output::PolyDataMesh, written by output::write_vtp.
+/// PolyDataMesh, written by write_vtp.
 
 #include "mbd/chain_data.hpp"
 #include "mbd/chain_model.hpp"
-#include "pipeline/output/vtk_writers.hpp"
+#include "pipeline/io/vtk_writers.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
-namespace flapsim::fsi {
+namespace flapsim::io {
 
 /// \brief The lattice surface of the last solve as quads (normals along the panel normals).
-output::PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& model,
+PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& model,
                                        const uvlm::VortexLatticeData& data, double time);
 
 /// \brief The wake sheet (rings between shed rows, the newest row at the trailing edge).
-output::PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& model,
+PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& model,
                                const uvlm::VortexLatticeData& data, double time);
 
 /// \brief The chain as lines, plus each body's centre of mass as a point cell.
-output::PolyDataMesh chain_mesh(const mbd::ChainModel& chain, const mbd::ChainData& data,
+PolyDataMesh chain_mesh(const mbd::ChainModel& chain, const mbd::ChainData& data,
                                 double time);
 
-}  // namespace flapsim::fsi
+}  // namespace flapsim::io

@@ -1,12 +1,12 @@
-#include "pipeline/output/pvd_series.hpp"
+#include "pipeline/io/pvd_series.hpp"
 
-#include "pipeline/output/atomic_file.hpp"
-#include "pipeline/output/csv_writer.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/csv_writer.hpp"
 
 #include <cstdio>
 #include <ostream>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 namespace fs = std::filesystem;
 
@@ -67,4 +67,4 @@ void PvdSeries::write() const {
   });
 }
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 class PvdSeries {
  public:
@@ -48,4 +48,4 @@ class PvdSeries {
   std::vector<Entry> entries_;
 };
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

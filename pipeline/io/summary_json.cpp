@@ -1,12 +1,12 @@
-#include "pipeline/output/summary_json.hpp"
+#include "pipeline/io/summary_json.hpp"
 
-#include "pipeline/output/atomic_file.hpp"
-#include "pipeline/output/csv_writer.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/csv_writer.hpp"
 
 #include <cmath>
 #include <cstdio>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 std::string json_quote(std::string_view text) {
   std::string out = "\"";
@@ -64,4 +64,4 @@ void SummaryJson::write(const std::filesystem::path& path) const {
   write_text_atomically(path, to_string());
 }
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 class SummaryJson {
  public:
@@ -46,4 +46,4 @@ class SummaryJson {
 /// \brief A JSON string literal (quoted, escaped) for \p text.
 std::string json_quote(std::string_view text);
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

@@ -1,6 +1,6 @@
-#include "pipeline/output/vtk_writers.hpp"
+#include "pipeline/io/vtk_writers.hpp"
 
-#include "pipeline/output/atomic_file.hpp"
+#include "pipeline/io/atomic_file.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -20,7 +20,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 namespace {
 
@@ -169,4 +169,4 @@ void write_vtu(const std::filesystem::path& path, const UnstructuredMesh& mesh) 
   });
 }
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

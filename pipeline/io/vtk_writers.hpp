@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace flapsim::output {
+namespace flapsim::io {
 
 /// A named scalar field: one value per point (or per cell).
 struct ScalarField {
@@ -77,4 +77,4 @@ void write_vtp(const std::filesystem::path& path, const PolyDataMesh& mesh);
 ///         size; OutputError if the file cannot be written
 void write_vtu(const std::filesystem::path& path, const UnstructuredMesh& mesh);
 
-}  // namespace flapsim::output
+}  // namespace flapsim::io

@@ -9,29 +9,18 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
-#include "test_output_scratch.hpp"
+#include "common/run_flapsim.hpp"
+#include "common/scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
+using flapsim::test::read_text;
+using flapsim::test::run_flapsim;
+
 const std::string kSource = FLAPSIM_SOURCE_DIR;
-
-int flapsim(const std::string& args) {
-  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 " + std::string(FLAPSIM_BINARY) + " " +
-                          args + " > /dev/null 2>&1";
-  const int s = std::system(cmd.c_str());
-  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The flat plate of wings/flat_plate.toml with eq. 8 kinematics, 3 x 4 panels, one cycle
 // of 24 steps: seconds even under ASan.
@@ -48,10 +37,10 @@ std::string plate_case(const std::string& kind, const std::string& extra = "") {
 TEST(FsiRunCommand, RigidCaseWritesHistorySummaryAndSeries) {
   flapsim::test::ScratchDir dir("fsi_run_rigid");
   std::ofstream(dir / "case.toml") << plate_case("rigid");
-  ASSERT_EQ(flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
   for (const char* f : {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd"})
     EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
-  const std::string summary = slurp(dir / "out" / "summary.json");
+  const std::string summary = read_text(dir / "out" / "summary.json");
   EXPECT_NE(summary.find("\"status\": \"ok\""), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"mean_lift_N\""), std::string::npos);
   // The measured base rotation phase is the case's δψ = −0.1 (phase_analysis on eq. 8;
@@ -65,7 +54,7 @@ TEST(FsiRunCommand, RigidCaseWritesHistorySummaryAndSeries) {
 TEST(FsiRunCommand, MissingChainFileIsBadInputAndWritesNothing) {
   flapsim::test::ScratchDir dir("fsi_run_nochain");
   std::ofstream(dir / "case.toml") << plate_case("flexible");
-  EXPECT_EQ(flapsim("run " + (dir / "case.toml").string() + " --chain " + (dir / "missing.toml").string() +
+  EXPECT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " --chain " + (dir / "missing.toml").string() +
                     " -o " + (dir / "out").string()),
             2);
   EXPECT_FALSE(fs::exists(dir / "out"));
@@ -75,8 +64,8 @@ TEST(FsiRunCommand, FlexibleCaseWithOnlyAWingIsReducedInProcess) {
   // structure.bodies = 2 bodies from the flat plate's FEM (fem + reduction, no files).
   flapsim::test::ScratchDir dir("fsi_run_reduce");
   std::ofstream(dir / "case.toml") << plate_case("flexible");
-  ASSERT_EQ(flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
-  const std::string summary = slurp(dir / "out" / "summary.json");
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
+  const std::string summary = read_text(dir / "out" / "summary.json");
   EXPECT_NE(summary.find("wing reduced in process (FEM + reduction, 2 bodies)"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"status\": \"ok\""), std::string::npos) << summary;
 }
@@ -96,22 +85,22 @@ TEST(FsiRunCommand, DivergingChainExitsThreeAndKeepsItsOutputs) {
   c.replace(c.find("steps_per_cycle = 24"), 20, "steps_per_cycle = 4");
   c.replace(c.find("cycles = 1"), 10, "cycles = 40");
   std::ofstream(dir / "case.toml") << c;
-  const int status = flapsim("run " + (dir / "case.toml").string() + " --chain " +
+  const int status = run_flapsim("run " + (dir / "case.toml").string() + " --chain " +
                              (dir / "chain.toml").string() + " -o " + (dir / "out").string());
   if (status == 0) GTEST_SKIP() << "the chain did not diverge";
   EXPECT_EQ(status, 3);
-  EXPECT_NE(slurp(dir / "out" / "summary.json").find("\"status\": \"failed\""), std::string::npos);
-  EXPECT_EQ(slurp(dir / "out" / "history.csv").rfind("t_s,", 0), 0u);
+  EXPECT_NE(read_text(dir / "out" / "summary.json").find("\"status\": \"failed\""), std::string::npos);
+  EXPECT_EQ(read_text(dir / "out" / "history.csv").rfind("t_s,", 0), 0u);
   EXPECT_TRUE(dir.temporaries().empty());
 }
 
 TEST(FsiSweepCommand, TwoValuesTwoFoldersOneTable) {
   flapsim::test::ScratchDir dir("fsi_sweep");
   std::ofstream(dir / "case.toml") << plate_case("rigid");
-  ASSERT_EQ(flapsim("sweep " + (dir / "case.toml").string() +
+  ASSERT_EQ(run_flapsim("sweep " + (dir / "case.toml").string() +
                     " --vary kinematics.rotation_phase=-0.1,0.05 -j 2 -o " + (dir / "out").string()),
             0);
-  const std::string table = slurp(dir / "out" / "sweep.csv");
+  const std::string table = read_text(dir / "out" / "sweep.csv");
   EXPECT_EQ(table.rfind("kinematics.rotation_phase,mean_lift_N", 0), 0u) << table;
   EXPECT_TRUE(fs::exists(dir / "out" / "00_-0.1" / "summary.json"));
   EXPECT_TRUE(fs::exists(dir / "out" / "01_0.05" / "summary.json"));

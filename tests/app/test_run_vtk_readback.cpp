@@ -10,14 +10,13 @@
 #include <vtkXMLDataParser.h>
 #include <vtkXMLPolyDataReader.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 #include <vector>
 
-#include "test_output_scratch.hpp"
+#include "common/run_flapsim.hpp"
+#include "common/scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
@@ -63,11 +62,7 @@ TEST(RunVtkOutput, WingAndWakeSeriesReadBackWithVtkReaders) {
       << "[structure]\nkind = \"rigid\"\n"
       << "[numerics]\nsteps_per_cycle = " << steps << "\ncycles = 1\nchordwise_panels = " << nc
       << "\nspanwise_panels = " << ns << "\ncore_radius = 0.2\n[output]\nvtk_every = " << every << "\n";
-  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 " + std::string(FLAPSIM_BINARY) + " run " +
-                          (dir / "case.toml").string() + " -o " + (dir / "out").string() +
-                          " > /dev/null 2>&1";
-  const int status = std::system(cmd.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  ASSERT_EQ(flapsim::test::run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
 
   const auto wing = read_pvd(dir / "out" / "wing.pvd");
   ASSERT_GE(wing.size(), 2u);

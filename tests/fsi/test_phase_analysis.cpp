@@ -1,5 +1,4 @@
-// Reading runs as the rotation-phase paper does (pipeline/fsi/phase_analysis) and the
-// --vary argument of flapsim sweep (pipeline/sweep/sweep_values).
+// Reading runs as the rotation-phase paper does (pipeline/fsi/phase_analysis).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,8 +6,6 @@
 
 #include "mbd/wing_kinematics.hpp"
 #include "pipeline/fsi/phase_analysis.hpp"
-#include "pipeline/sweep/sweep_values.hpp"
-#include "wings/input_error.hpp"
 
 namespace {
 
@@ -74,31 +71,6 @@ TEST(FsiPhaseAnalysis, CrossingLagAndWindowMean) {
   ASSERT_TRUE(lag.has_value());
   EXPECT_NEAR(*lag, 0.07, 1e-3);
   EXPECT_NEAR(fsi::window_mean(t, y, 1.0, 3.0), 1.0, 1e-12);
-}
-
-TEST(SweepValues, RangesListsAndErrors) {
-  const auto v = sweep::parse_variation("kinematics.rotation_phase=-0.10:0.05:0.10");
-  EXPECT_EQ(v.key, "kinematics.rotation_phase");
-  ASSERT_EQ(v.values.size(), 5u);  // −0.10, −0.05, 0, 0.05, 0.10 (inclusive)
-  const double expected[5] = {-0.10, -0.05, 0.0, 0.05, 0.10};
-  for (int i = 0; i < 5; ++i) EXPECT_EQ(v.values[static_cast<std::size_t>(i)], expected[i]);
-  EXPECT_EQ(sweep::parse_variation("k=-0.20:0.05:0.10").values.size(), 7u);  // the rigid study
-  EXPECT_EQ(sweep::parse_variation("k=3,1,2").values, (std::vector<double>{3, 1, 2}));
-  EXPECT_THROW(sweep::parse_variation("k=0:0:1"), InputError);
-  EXPECT_THROW(sweep::parse_variation("k=1:0.1:0"), InputError);
-  EXPECT_THROW(sweep::parse_variation("k=a,b"), InputError);
-  EXPECT_THROW(sweep::parse_variation("novalues"), InputError);
-}
-
-TEST(SweepValues, CaseIsReReadWithTheValue) {
-  const std::string hover = std::string(FLAPSIM_SOURCE_DIR) + "/cases/hover.toml";
-  const auto c = sweep::load_case_with(hover, "kinematics.rotation_phase", -0.15);
-  EXPECT_DOUBLE_EQ(c.kinematics.rotation_phase, -0.15);
-  EXPECT_EQ(sweep::load_case_with(hover, "numerics.cycles", 7).numerics.cycles, 7);
-  // An integer key refuses a fraction; a value out of the case file's bounds is an input error.
-  EXPECT_THROW(sweep::load_case_with(hover, "numerics.cycles", 2.5), InputError);
-  EXPECT_THROW(sweep::load_case_with(hover, "kinematics.rotation_phase", 3.0), InputError);
-  EXPECT_THROW(sweep::load_case_with(hover, "name.x", 1.0), InputError);
 }
 
 }  // namespace

@@ -6,13 +6,13 @@
 #include <numbers>
 #include <string>
 
-#include "pipeline/case/case_file.hpp"
-#include "pipeline/case/case_model.hpp"
-#include "pipeline/case/case_summary.hpp"
+#include "pipeline/io/case_file.hpp"
+#include "pipeline/io/case_model.hpp"
+#include "pipeline/io/case_summary.hpp"
 #include "wings/input_error.hpp"
 #include "wings/toml_reader.hpp"
 
-namespace p = flapsim::pipeline;
+namespace p = flapsim::io;
 using flapsim::InputError;
 
 namespace {

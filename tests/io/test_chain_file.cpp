@@ -1,9 +1,9 @@
-// chain.toml (pipeline/chain_file.hpp): write/read round trip, the shipped 3-body chain,
+// chain.toml (pipeline/io/chain_file.hpp): write/read round trip, the shipped 3-body chain,
 // and errors that name file, line and key.
 
-#include "chain_test_models.hpp"
+#include "mbd/chain_test_models.hpp"
 
-#include "pipeline/chain_file.hpp"
+#include "pipeline/io/chain_file.hpp"
 #include "wings/input_error.hpp"
 
 #include <gtest/gtest.h>
@@ -36,12 +36,12 @@ void expect_same_chain(const ChainModel& a, const ChainModel& b) {
 
 TEST(ChainFile, RoundTripIsExact) {
   const ChainModel chain = test::general_chain();  // sprung root, offsets, full tensors
-  expect_same_chain(chain, pipeline::parse_chain_text(pipeline::format_chain_file(chain), "rt.toml"));
+  expect_same_chain(chain, io::parse_chain_text(io::format_chain_file(chain), "rt.toml"));
 }
 
 TEST(ChainFile, ShippedThreeBodyChainIsTheTestedChain) {
   expect_same_chain(test::three_body_chain(),
-                    pipeline::read_chain_file(FLAPSIM_SOURCE_DIR "/cases/chains/three_body.toml"));
+                    io::read_chain_file(FLAPSIM_SOURCE_DIR "/cases/chains/three_body.toml"));
 }
 
 TEST(ChainFile, LengthUnitScalesLengthsOnly) {
@@ -56,7 +56,7 @@ inertia = [[1e-10, 0, 0], [0, 2e-10, 0], [0, 0, 3e-10]]
 bend_stiffness = 1e-3
 twist_stiffness = 2e-3
 )";
-  const ChainModel c = pipeline::parse_chain_text(text, "mm.toml");
+  const ChainModel c = io::parse_chain_text(text, "mm.toml");
   EXPECT_DOUBLE_EQ(c.bodies[0].length, 0.01);
   EXPECT_DOUBLE_EQ(c.bodies[0].center_of_mass.y(), 0.005);
   EXPECT_DOUBLE_EQ(c.bodies[0].outboard_joint.y(), 0.01);  // default (0, length, 0)
@@ -66,7 +66,7 @@ twist_stiffness = 2e-3
 
 void expect_error(const std::string& text, int line, const std::string& key) {
   try {
-    pipeline::parse_chain_text(text, "bad.toml");
+    io::parse_chain_text(text, "bad.toml");
     FAIL() << "no InputError for key " << key;
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "bad.toml");

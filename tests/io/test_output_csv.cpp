@@ -1,9 +1,9 @@
 // CSV output: the one-shot table writer and the time-series writer whose
 // published file stays valid when a run dies or unwinds.
 
-#include "pipeline/output/atomic_file.hpp"
-#include "pipeline/output/csv_writer.hpp"
-#include "pipeline/test_output_scratch.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/csv_writer.hpp"
+#include "common/scratch_dir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@
 #include <vector>
 
 namespace fs = std::filesystem;
-using flapsim::output::CsvTimeSeriesWriter;
-using flapsim::output::write_csv;
+using flapsim::io::CsvTimeSeriesWriter;
+using flapsim::io::write_csv;
 using flapsim::test::ScratchDir;
 
 namespace {
@@ -97,8 +97,8 @@ TEST(OutputCsv, WrongRowLengthWritesNothing) {
 TEST(OutputCsv, FailedWriteKeepsThePreviousFile) {
   ScratchDir dir("csv_keep");
   const fs::path file = dir / "x.txt";
-  flapsim::output::write_text_atomically(file, "old\n");
-  EXPECT_THROW(flapsim::output::write_file_atomically(file, [](std::ostream& out) {
+  flapsim::io::write_text_atomically(file, "old\n");
+  EXPECT_THROW(flapsim::io::write_file_atomically(file, [](std::ostream& out) {
                  out << "half of the new content";
                  throw std::runtime_error("writer failed midway");
                }),
@@ -165,22 +165,22 @@ TEST(OutputCsv, TimeSeriesRejectsRowsOfTheWrongLength) {
 }
 
 TEST(OutputCsv, NonFiniteValuesAreWrittenAsNanAndInf) {
-  EXPECT_EQ(flapsim::output::format_number(std::numeric_limits<double>::quiet_NaN()), "nan");
-  EXPECT_EQ(flapsim::output::format_number(std::numeric_limits<double>::infinity()), "inf");
-  EXPECT_EQ(flapsim::output::format_number(-std::numeric_limits<double>::infinity()), "-inf");
-  EXPECT_EQ(flapsim::output::format_number(0.046), "0.046");
+  EXPECT_EQ(flapsim::io::format_number(std::numeric_limits<double>::quiet_NaN()), "nan");
+  EXPECT_EQ(flapsim::io::format_number(std::numeric_limits<double>::infinity()), "inf");
+  EXPECT_EQ(flapsim::io::format_number(-std::numeric_limits<double>::infinity()), "-inf");
+  EXPECT_EQ(flapsim::io::format_number(0.046), "0.046");
 }
 
 TEST(OutputCsv, UnwritableDirectoryIsAnOutputErrorNamingThePath) {
   // A regular file where the output directory should be (as with "-o" pointing at a file).
   ScratchDir dir("csv_unwritable");
-  flapsim::output::write_text_atomically(dir / "taken", "x\n");
+  flapsim::io::write_text_atomically(dir / "taken", "x\n");
   try {
     write_csv(dir / "taken/table.csv", {"a"}, std::vector<std::vector<double>>{{1.0}});
     FAIL() << "expected OutputError";
-  } catch (const flapsim::output::OutputError& e) {
+  } catch (const flapsim::io::OutputError& e) {
     EXPECT_NE(std::string(e.what()).find("taken"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(CsvTimeSeriesWriter(dir / "taken/history.csv", {"t_s"}), flapsim::output::OutputError);
+  EXPECT_THROW(CsvTimeSeriesWriter(dir / "taken/history.csv", {"t_s"}), flapsim::io::OutputError);
   EXPECT_EQ(dir.files(), std::vector<std::string>{"taken"});
 }

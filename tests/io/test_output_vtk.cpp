@@ -2,9 +2,9 @@
 // point and cell scalars and vectors), .vtu (triangles, quads, segments) and a
 // .pvd series parsed with VTK's XML parser, each listed file read back.
 
-#include "pipeline/output/pvd_series.hpp"
-#include "pipeline/output/vtk_writers.hpp"
-#include "pipeline/test_output_scratch.hpp"
+#include "pipeline/io/pvd_series.hpp"
+#include "pipeline/io/vtk_writers.hpp"
+#include "common/scratch_dir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,7 +26,7 @@
 #include <string>
 
 namespace fs = std::filesystem;
-using namespace flapsim::output;
+using namespace flapsim::io;
 using flapsim::test::ScratchDir;
 
 namespace {

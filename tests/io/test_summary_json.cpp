@@ -1,8 +1,7 @@
-// summary.json (flat ordered JSON object) and the progress line on stderr.
+// summary.json: a flat, ordered JSON object written atomically.
 
-#include "pipeline/output/summary_json.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/test_output_scratch.hpp"
+#include "pipeline/io/summary_json.hpp"
+#include "common/scratch_dir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,22 +13,8 @@
 #include <limits>
 #include <string>
 
-using flapsim::output::SummaryJson;
-using flapsim::pipeline::ProgressLine;
+using flapsim::io::SummaryJson;
 using flapsim::test::ScratchDir;
-
-namespace {
-
-// Everything written to a temporary FILE*.
-std::string contents(std::FILE* f) {
-  std::fflush(f);
-  std::rewind(f);
-  std::string s;
-  for (int c; (c = std::fgetc(f)) != EOF;) s += static_cast<char>(c);
-  return s;
-}
-
-}  // namespace
 
 TEST(OutputSummaryJson, WritesAnOrderedFlatObject) {
   // Expected text follows RFC 8259: strings quoted with \" and \\ escapes,
@@ -52,7 +37,7 @@ TEST(OutputSummaryJson, WritesAnOrderedFlatObject) {
             "  \"max_tip_deflection_m\": null\n"
             "}\n");
   EXPECT_EQ(SummaryJson().to_string(), "{}\n");
-  EXPECT_EQ(flapsim::output::json_quote("a\nb\x01"), "\"a\\nb\\u0001\"");
+  EXPECT_EQ(flapsim::io::json_quote("a\nb\x01"), "\"a\\nb\\u0001\"");
 
   ScratchDir dir("summary");
   s.write(dir / "run/summary.json");
@@ -60,66 +45,4 @@ TEST(OutputSummaryJson, WritesAnOrderedFlatObject) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(text, s.to_string());
   EXPECT_TRUE(dir.temporaries().empty());
-}
-
-TEST(OutputProgress, LineFormat) {
-  EXPECT_EQ(ProgressLine::format(120, 300, 0.046, "CL=1.93"), "step 120/300  t=0.0460 s  CL=1.93");
-  EXPECT_EQ(ProgressLine::format(1, 10, 0.0, ""), "step 1/10  t=0.0000 s");
-}
-
-TEST(OutputProgress, NotATerminalPrintsOnlyTheFinalLine) {
-  std::FILE* f = std::tmpfile();
-  ASSERT_NE(f, nullptr);
-  {
-    ProgressLine p(300, f, ProgressLine::Mode::final_only);
-    for (int i = 1; i <= 300; ++i) p.update(i, i * 1e-4, "iters=3");
-    p.finish();
-  }
-  const std::string out = contents(f);
-  std::fclose(f);
-  EXPECT_EQ(out.find('\r'), std::string::npos);
-  EXPECT_EQ(out.rfind("step 300/300  t=0.0300 s  iters=3  (", 0), 0u) << out;
-  EXPECT_EQ(out.back(), '\n');
-  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1);
-}
-
-TEST(OutputProgress, LiveModeRedrawsInPlaceThrottled) {
-  std::FILE* f = std::tmpfile();
-  ASSERT_NE(f, nullptr);
-  {
-    ProgressLine p(1000, f, ProgressLine::Mode::live);
-    for (int i = 1; i <= 1000; ++i) p.update(i, i * 1e-5);  // far faster than 5 Hz
-  }  // the destructor prints the final line
-  const std::string out = contents(f);
-  std::fclose(f);
-  const auto redraws = std::count(out.begin(), out.end(), '\r');
-  EXPECT_GE(redraws, 2);   // the first update and the final line
-  EXPECT_LT(redraws, 50);  // throttled: not one per step
-  EXPECT_NE(out.find("step 1000/1000"), std::string::npos);
-  EXPECT_EQ(out.back(), '\n');
-}
-
-TEST(OutputProgress, QuietEnvironmentSilencesIt) {
-  std::FILE* f = std::tmpfile();
-  ASSERT_NE(f, nullptr);
-  const char* env = std::getenv("FLAPSIM_QUIET");
-  const bool had = env != nullptr;
-  const std::string saved = had ? env : "";
-  ::setenv("FLAPSIM_QUIET", "1", 1);
-  {
-    ProgressLine p(10, f);
-    EXPECT_EQ(p.mode(), ProgressLine::Mode::quiet);
-    p.update(10, 0.1);
-    p.finish();
-  }
-  if (had) ::setenv("FLAPSIM_QUIET", saved.c_str(), 1);
-  else ::unsetenv("FLAPSIM_QUIET");
-  // Without the variable, a regular file is not a terminal: final line only.
-  ProgressLine q(10, f);
-  const bool quiet_outside = had && saved == "1";
-  EXPECT_EQ(q.mode(), quiet_outside ? ProgressLine::Mode::quiet : ProgressLine::Mode::final_only);
-  q.update(10, 0.1);
-  q.finish();
-  EXPECT_EQ(contents(f).find("step 10/10"), quiet_outside ? std::string::npos : 0u);
-  std::fclose(f);
 }

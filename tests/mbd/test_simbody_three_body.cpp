@@ -4,6 +4,7 @@
 // of point A (tip of body 3) must agree within 0.5 % of its amplitude over 3 cycles.
 
 #include "chain_test_models.hpp"
+#include "three_body_trajectory.hpp"
 
 #include "mbd/chain_data.hpp"
 #include "mbd/chain_kinematics.hpp"
@@ -60,17 +61,13 @@ SimTK::Body::Rigid simbody_body(const ChainBody& b) {
       SimTK::MassProperties(b.mass, com, central.shiftFromMassCenter(-com, b.mass)));
 }
 
-struct Trajectory {
-  std::vector<double> t;
-  std::vector<Eigen::Vector3d> a;  // point A [m]
-  std::vector<Eigen::Vector4d> q;  // θ₂, α₂, θ₃, α₃ [rad]
-};
+
 
 // Same chain in Simbody: the base as three Pin mobilizers z, x, y (R = Rz(φ) Rx(θ)
 // Ry(−α)) with Motion::Sinusoid each, body 1 on the last of them; joints 2, 3 as
 // Universal mobilizers (x, then the new y: exactly Rx(θ) Ry(α)); MobilityLinearSpring
 // and MobilityLinearDamper per coordinate; eq. 6 as a custom force.
-Trajectory run_simbody(const ChainModel& model, double t_end, int samples) {
+test::Trajectory run_simbody(const ChainModel& model, double t_end, int samples) {
   using namespace SimTK;
   MultibodySystem system;
   SimbodyMatterSubsystem matter(system);
@@ -111,7 +108,7 @@ Trajectory run_simbody(const ChainModel& model, double t_end, int samples) {
   RungeKuttaMersonIntegrator integ(system);
   integ.setAccuracy(1e-10);
   integ.initialize(state);
-  Trajectory out;
+  test::Trajectory out;
   const Vec3 tip(0, model.bodies[2].length, 0);
   for (int k = 0; k <= samples; ++k) {
     const double t = t_end * k / samples;
@@ -126,45 +123,17 @@ Trajectory run_simbody(const ChainModel& model, double t_end, int samples) {
   return out;
 }
 
-Trajectory run_flapsim(const ChainModel& model, double t_end, int samples, int steps_per_sample) {
-  ChainData data(model);
-  const BaseMotion base = make_base_motion(test::three_body_kinematics());
-  Loads loads(model.num_bodies());
-  GeneralizedAlphaSettings settings;
-  settings.rho_infinity = 0.9;
-  const int n = model.num_dofs();
-  test::three_body_loads(0.0, loads);
-  ChainState state = make_initial_state(model, data, base, 0.0, Eigen::VectorXd::Zero(n),
-                                        Eigen::VectorXd::Zero(n), loads);
-  const double dt = t_end / (samples * steps_per_sample);
-  const Eigen::Vector3d tip(0.0, model.bodies[2].length, 0.0);
-  Trajectory out;
-  out.t.push_back(0.0);
-  out.a.push_back(point_position(data, 2, tip));
-  out.q.push_back(state.q);
-  for (int k = 1; k <= samples; ++k) {
-    for (int s = 0; s < steps_per_sample; ++s) {
-      test::three_body_loads(state.time + dt, loads);
-      advance(model, data, base, settings, state, dt, loads, state);
-    }
-    out.t.push_back(state.time);
-    out.a.push_back(point_position(data, 2, tip));
-    out.q.push_back(state.q);
-  }
-  return out;
-}
-
 constexpr int kSamples = 600;  // over 3 cycles
 
 // The Simbody reference, computed once for the tests of this file.
-const Trajectory& simbody_reference() {
-  static const Trajectory ref =
+const test::Trajectory& simbody_reference() {
+  static const test::Trajectory ref =
       run_simbody(test::three_body_chain(), 3.0 / kThreeBodyFrequency, kSamples);
   return ref;
 }
 
 // Amplitude of the motion: half the peak-to-peak range of the largest coordinate.
-double amplitude_of(const Trajectory& ref) {
+double amplitude_of(const test::Trajectory& ref) {
   double amplitude = 0.0;
   for (int c = 0; c < 3; ++c) {
     double lo = 1e9, hi = -1e9;
@@ -180,8 +149,8 @@ double amplitude_of(const Trajectory& ref) {
 TEST(SimbodyThreeBody, TipTrajectoryAgreesWithSimbodyOverThreeCycles) {
   const ChainModel model = test::three_body_chain();
   const double t_end = 3.0 / kThreeBodyFrequency;
-  const Trajectory& ref = simbody_reference();
-  const Trajectory ours = run_flapsim(model, t_end, kSamples, 5);  // 1000 steps per cycle
+  const test::Trajectory& ref = simbody_reference();
+  const test::Trajectory ours = test::integrate_three_body(model, t_end, kSamples, 5);  // 1000 steps per cycle
   const double amplitude = amplitude_of(ref);
   double worst = 0.0, worst_t = 0.0;
   for (std::size_t k = 0; k < ref.a.size(); ++k) {
@@ -212,46 +181,6 @@ TEST(SimbodyThreeBody, TipTrajectoryAgreesWithSimbodyOverThreeCycles) {
   std::printf("[three-body] largest joint angle %.3f deg, max joint-angle deviation %.3e deg "
               "(%.3f %%)\n", q_max / kDeg, q_dev / kDeg, 100.0 * q_dev / q_max);
   EXPECT_LT(q_dev, 0.01 * q_max);
-}
-
-// The same case through the command line: `flapsim run cases/three_body.toml` reads the
-// chain file, the kinematics and the eq. 6 loads from the case and writes marker A into
-// history.csv (one row per step, 1000 steps per cycle, 5 steps per Simbody sample).
-TEST(SimbodyThreeBody, FlapsimRunOfThreeBodyCaseAgreesWithSimbody) {
-  const std::filesystem::path out =
-      std::filesystem::temp_directory_path() / ("flapsim_three_body_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(FLAPSIM_BINARY) + " run " + FLAPSIM_SOURCE_DIR +
-                          "/cases/three_body.toml -o " + out.string() + " > /dev/null 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  std::ifstream in(out / "history.csv");
-  ASSERT_TRUE(in.good());
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  for (std::stringstream hs(line); std::getline(hs, line, ',');) names.push_back(line);
-  const auto col = [&](const std::string& n) {
-    return static_cast<int>(std::find(names.begin(), names.end(), n) - names.begin());
-  };
-  const int ct = col("t_s"), cx = col("A_x_m"), cy = col("A_y_m"), cz = col("A_z_m");
-  ASSERT_LT(cz, static_cast<int>(names.size())) << "no marker A in history.csv";
-  const Trajectory& ref = simbody_reference();
-  const double amplitude = amplitude_of(ref);
-  double worst = 0.0;
-  int rows = 0;
-  for (std::string row; std::getline(in, row);) {
-    std::vector<double> v;
-    for (std::stringstream rs(row); std::getline(rs, line, ',');) v.push_back(std::stod(line));
-    ++rows;
-    if (rows % 5 != 0) continue;
-    const std::size_t k = static_cast<std::size_t>(rows / 5);
-    ASSERT_NEAR(v[ct], ref.t[k], 1e-9);
-    worst = std::max(worst, (Eigen::Vector3d(v[cx], v[cy], v[cz]) - ref.a[k]).norm());
-  }
-  std::filesystem::remove_all(out);
-  EXPECT_EQ(rows, 3000);
-  std::printf("[three-body] flapsim run: max |A - A_simbody| = %.4f %% of amplitude\n",
-              100.0 * worst / amplitude);
-  EXPECT_LT(worst, 0.005 * amplitude);  // issue 5: 0.5 % of the amplitude
 }
 
 }  // namespace

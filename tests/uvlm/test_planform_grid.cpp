@@ -1,21 +1,27 @@
 // Lattice grid from planform outlines.
 #include "uvlm/planform_grid.hpp"
-#include "wings/outline_csv.hpp"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <string>
+#include <vector>
 
 using namespace flapsim::uvlm;
-namespace wings = flapsim::wings;
 
 namespace {
 
-// A shipped outline (units of R, wings/outline_csv.hpp) scaled by `scale`.
+// A shipped outline (wings/outlines/*.csv: '#' comment lines, an "x,y" header, then
+// one "x,y" pair per line, in units of R) scaled by `scale`. Read here rather than
+// with the wings library, which uvlm does not use (docs/architecture.md).
 std::vector<Eigen::Vector2d> read_outline(const std::string& name, double scale) {
-  auto pts = wings::read_outline_csv(std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/" + name, "outline");
-  for (auto& p : pts) p *= scale;
+  std::ifstream in(std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/" + name);
+  std::vector<Eigen::Vector2d> pts;
+  double x = 0.0, y = 0.0;
+  for (std::string line; std::getline(in, line);)
+    if (std::sscanf(line.c_str(), "%lf,%lf", &x, &y) == 2) pts.emplace_back(scale * x, scale * y);
   return pts;
 }
 

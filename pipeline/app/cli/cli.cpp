@@ -1,11 +1,11 @@
-#include "pipeline/cli/commands.hpp"
+#include "pipeline/app/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <exception>
 #include <iostream>
 
-#include "pipeline/numerical_failure.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::cli {

@@ -1,5 +1,5 @@
 // flapsim check FILE.toml: validate a wing or case file and print its summary.
-#include "pipeline/cli/commands.hpp"
+#include "pipeline/app/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "pipeline/case/case_file.hpp"
-#include "pipeline/case/case_summary.hpp"
+#include "pipeline/io/case_file.hpp"
+#include "pipeline/io/case_summary.hpp"
 #include "wings/input_error.hpp"
 #include "wings/toml_reader.hpp"
 #include "wings/wing_file.hpp"
@@ -23,14 +23,14 @@ namespace {
 /// Nothing is printed until everything has been checked.
 std::string check_file(const std::string& path) {
   const wings::TomlTable root = wings::parse_toml_file(path);
-  const bool wing = wings::is_wing_document(root), case_file = pipeline::is_case_document(root);
+  const bool wing = wings::is_wing_document(root), case_file = io::is_case_document(root);
   if (wing && case_file)
     throw InputError(path, root.line_of("planform"), "planform",
                      "a file is either a wing file ([planform]) or a case file ([kinematics]), not both");
   if (wing) return wings::describe_wing(wings::read_wing(root));
   if (case_file) {
-    const pipeline::Case c = pipeline::read_case(root);
-    std::string text = pipeline::describe_case(c);
+    const io::Case c = io::read_case(root);
+    std::string text = io::describe_case(c);
     if (!c.wing_file.empty()) text += "\n" + wings::describe_wing(wings::load_wing_file(c.wing_file));
     return text;
   }

@@ -1,6 +1,6 @@
 // flapsim mesh WING.toml -o DIR: mesh a wing with gmsh (veins fragmented into
 // the membrane) and write DIR/mesh.msh and DIR/mesh.vtu.
-#include "pipeline/cli/commands.hpp"
+#include "pipeline/app/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -11,8 +11,8 @@
 #include <string>
 
 #include "fem/wing_mesher.hpp"
-#include "pipeline/fem_output/fem_vtk.hpp"
-#include "pipeline/output/atomic_file.hpp"
+#include "pipeline/io/fem_vtk.hpp"
+#include "pipeline/io/atomic_file.hpp"
 #include "wings/wing_file.hpp"
 
 namespace flapsim::cli {
@@ -29,12 +29,12 @@ void run_mesh(const MeshArgs& args) {
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
   // 2. Mesh; gmsh saves mesh.msh (atomically) on the way.
   const std::filesystem::path dir(args.out_dir);
-  output::ensure_directory(dir);
+  io::ensure_directory(dir);
   fem::MeshOptions opt;
   opt.msh_path = dir / "mesh.msh";
   const fem::Mesh mesh = fem::mesh_wing(wing, opt);
   // 3. The same mesh for ParaView.
-  output::write_vtu(dir / "mesh.vtu", pipeline::fem_unstructured_mesh(mesh, wing.clamp_y));
+  io::write_vtu(dir / "mesh.vtu", io::fem_unstructured_mesh(mesh, wing.clamp_y));
   std::printf("%s: %d nodes, %zu membrane triangles, %zu vein elements (%zu veins)\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), mesh.vein_names.size());
   std::printf("wrote %s, %s\n", (dir / "mesh.msh").string().c_str(), (dir / "mesh.vtu").string().c_str());

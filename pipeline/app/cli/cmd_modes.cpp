@@ -1,7 +1,7 @@
 // flapsim modes WING.toml -o DIR [--modes N]: FEM of the root-clamped wing;
 // writes DIR/modes.csv (mode, frequency_hz, kind) and DIR/fem.vtu (mode shapes
 // and the static tip load cases as point data).
-#include "pipeline/cli/commands.hpp"
+#include "pipeline/app/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -13,8 +13,8 @@
 #include "fem/load_cases.hpp"
 #include "fem/static_solver.hpp"
 #include "fem/wing_fem.hpp"
-#include "pipeline/fem_output/fem_vtk.hpp"
-#include "pipeline/output/atomic_file.hpp"
+#include "pipeline/io/fem_vtk.hpp"
+#include "pipeline/io/atomic_file.hpp"
 #include "wings/input_error.hpp"
 #include "wings/wing_file.hpp"
 
@@ -39,16 +39,16 @@ void run_modes(const ModesArgs& args) {
   const fem::WingModes m = fem::wing_modes(fem, args.modes);
   // 3. Static tip load cases (unit loads) with one factorisation.
   const fem::StaticSolver statics(fem.system.stiffness, fem.root_clamp);
-  std::vector<pipeline::StaticResult> results;
+  std::vector<io::StaticResult> results;
   for (auto& lc : fem::tip_load_cases(mesh, fem::tip_station(mesh))) {
     Eigen::VectorXd u = statics.solve(lc.loads);
     results.push_back({std::move(lc), std::move(u)});
   }
   // 4. Outputs (each atomic).
   const std::filesystem::path dir(args.out_dir);
-  output::ensure_directory(dir);
-  pipeline::write_modes_csv(dir / "modes.csv", m.modes, m.kinds);
-  pipeline::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, results);
+  io::ensure_directory(dir);
+  io::write_modes_csv(dir / "modes.csv", m.modes, m.kinds);
+  io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, results);
 
   std::printf("%s: %d nodes, %zu triangles, %zu vein elements, FEM mass %.4f mg\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), fem.system.total_mass * 1e6);

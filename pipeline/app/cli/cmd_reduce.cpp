@@ -2,7 +2,7 @@
 // chain of a wing, with a report of how well the chain reproduces the FEM
 // (docs/reduction.md). The reduction library returns data; the files are written
 // here, each atomically.
-#include "pipeline/cli/commands.hpp"
+#include "pipeline/app/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -14,11 +14,11 @@
 #include <string>
 
 #include "fem/wing_fem.hpp"
-#include "pipeline/chain_file.hpp"
-#include "pipeline/output/atomic_file.hpp"
-#include "pipeline/output/csv_writer.hpp"
-#include "pipeline/output/summary_json.hpp"
-#include "pipeline/output/vtk_writers.hpp"
+#include "pipeline/io/chain_file.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/csv_writer.hpp"
+#include "pipeline/io/summary_json.hpp"
+#include "pipeline/io/vtk_writers.hpp"
 #include "reduction/beam_properties.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/reduction_report.hpp"
@@ -30,7 +30,7 @@ namespace flapsim::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using output::format_number;
+using io::format_number;
 
 struct ReduceOptions {
   std::string wing_file;
@@ -46,7 +46,7 @@ void write_beam_csv(const fs::path& path, const reduction::BeamProperties& beam)
   for (const auto& st : beam.stations)
     rows.push_back({st.s, st.y, st.mass_per_length, st.x_cg, st.x_ea, st.n_cg, st.n_ea, st.EI, st.GJ,
                     st.I_alpha, st.in_tip_zone ? 1.0 : 0.0});
-  output::write_csv(path,
+  io::write_csv(path,
                     {"s_m", "y_m", "m_per_length_kg_per_m", "x_cg_m", "x_ea_m", "n_cg_m", "n_ea_m",
                      "EI_N_m2", "GJ_N_m2", "I_alpha_kg_m", "in_tip_zone"},
                     rows);
@@ -58,7 +58,7 @@ void write_vtp(const fs::path& path, const reduction::BeamProperties& beam,
   const int ns = static_cast<int>(beam.stations.size());
   const int nb = lc.chain.num_bodies();
   const int np = ns + (nb + 1) + nb;
-  output::PolyDataMesh mesh;
+  io::PolyDataMesh mesh;
   mesh.points.resize(3, np);
   Eigen::VectorXd kind = Eigen::VectorXd::Zero(np), ei = kind, gj = kind, mpl = kind, ia = kind,
                   nea = kind, ncg = kind, bmass = kind;
@@ -97,7 +97,7 @@ void write_vtp(const fs::path& path, const reduction::BeamProperties& beam,
   mesh.point_data.add_scalar("n_ea_m", nea);
   mesh.point_data.add_scalar("n_cg_m", ncg);
   mesh.point_data.add_scalar("body_mass_kg", bmass);
-  output::write_vtp(path, mesh);
+  io::write_vtp(path, mesh);
 }
 
 std::string pct(double x) {
@@ -162,7 +162,7 @@ std::string report_text(const ReduceOptions& o, const reduction::BeamProperties&
 
 void write_summary(const fs::path& path, const reduction::BeamProperties& beam,
                    const reduction::LumpedChain& lc, const reduction::ChainFemComparison& c) {
-  output::SummaryJson j;
+  io::SummaryJson j;
   j.set("num_bodies", c.num_bodies);
   j.set("num_stations", static_cast<int>(beam.stations.size()));
   j.set("axis_psi_rad", beam.axis.psi);
@@ -207,11 +207,11 @@ void run_reduce(const ReduceOptions& o) {
       reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds);
 
   const fs::path dir(o.out_dir);
-  output::ensure_directory(dir);
+  io::ensure_directory(dir);
   write_beam_csv(dir / "beam.csv", beam);
-  pipeline::write_chain_file(dir / "chain.toml", lc.chain);
+  io::write_chain_file(dir / "chain.toml", lc.chain);
   write_vtp(dir / "reduction.vtp", beam, lc);
-  output::write_text_atomically(dir / "report.md", report_text(o, beam, lc, cmp));
+  io::write_text_atomically(dir / "report.md", report_text(o, beam, lc, cmp));
   write_summary(dir / "summary.json", beam, lc, cmp);
   std::cerr << "reduce: " << o.bodies << " bodies; first bending " << cmp.bending.chain_hz << " Hz (FEM "
             << cmp.bending.fem_hz << " Hz, " << pct(cmp.bending.relative_error) << "), first torsion "

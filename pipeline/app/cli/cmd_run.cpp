@@ -1,5 +1,5 @@
 // flapsim run CASE.toml -o DIR [--chain FILE] [--vtk-every N]
-#include "pipeline/cli/commands.hpp"
+#include "pipeline/app/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "pipeline/case/case_model.hpp"
-#include "pipeline/fsi/fsi_run.hpp"
+#include "pipeline/io/case_model.hpp"
+#include "pipeline/app/fsi_run.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::cli {
@@ -27,17 +27,17 @@ struct RunArgs {
 };
 
 void run_command(const RunArgs& a) {
-  const pipeline::Case c = pipeline::load_case_file(a.case_file);
+  const io::Case c = io::load_case_file(a.case_file);
   if (!a.chain_file.empty() && !std::filesystem::is_regular_file(a.chain_file))
     throw InputError(a.chain_file, 0, "--chain", "chain file not found");
-  fsi::RunOptions options;
+  app::RunOptions options;
   options.output_dir = a.output_dir.empty() ? std::filesystem::path("out") / c.name
                                           : std::filesystem::path(a.output_dir);
   options.chain_file = a.chain_file;
   options.spring_scale = a.spring_scale;
   if (a.vtk_every >= 0) options.vtk_every = a.vtk_every;
-  if (a.quiet) options.progress = pipeline::ProgressLine::Mode::quiet;
-  const fsi::RunSummary s = fsi::run_case(c, options);
+  if (a.quiet) options.progress = app::ProgressLine::Mode::quiet;
+  const app::RunSummary s = app::run_case(c, options);
   if (!a.quiet) {
     std::printf("case %s: %s\n", c.name.c_str(), s.structure.c_str());
     std::printf("mean lift (last cycle) %.6g N, mean CL %.4f\n", s.mean_lift, s.mean_cl);

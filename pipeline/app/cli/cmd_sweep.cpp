@@ -1,5 +1,5 @@
 // flapsim sweep CASE.toml --vary KEY=VALUES -o DIR [--chain FILE] [--jobs N] [--vtk-every N]
-#include "pipeline/cli/commands.hpp"
+#include "pipeline/app/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "pipeline/sweep/sweep_runner.hpp"
-#include "pipeline/sweep/sweep_values.hpp"
+#include "pipeline/app/sweep/sweep_runner.hpp"
+#include "pipeline/app/sweep/sweep_values.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::cli {

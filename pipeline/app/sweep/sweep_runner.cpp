@@ -1,4 +1,4 @@
-#include "pipeline/sweep/sweep_runner.hpp"
+#include "pipeline/app/sweep/sweep_runner.hpp"
 
 #include <omp.h>
 
@@ -9,10 +9,10 @@
 #include <mutex>
 #include <thread>
 
-#include "pipeline/fsi/fsi_run.hpp"
-#include "pipeline/numerical_failure.hpp"
-#include "pipeline/output/atomic_file.hpp"
-#include "pipeline/output/csv_writer.hpp"
+#include "pipeline/app/fsi_run.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/csv_writer.hpp"
 
 namespace flapsim::sweep {
 
@@ -24,15 +24,15 @@ void write_table(const std::filesystem::path& path, const std::string& key,
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (!done[i]) continue;
     const SweepRow& r = rows[i];
-    cells.push_back({output::format_number(r.value), output::format_number(r.mean_lift),
-                     output::format_number(r.mean_cl), output::format_number(r.tip_rotation_phase),
-                     output::format_number(r.tip_rotation_lag),
-                     output::format_number(r.outer_rotation_phase),
-                     output::format_number(r.outer_rotation_lag),
-                     output::format_number(r.mean_coupling_iterations),
-                     output::format_number(r.wall_time_s), r.folder, r.status});
+    cells.push_back({io::format_number(r.value), io::format_number(r.mean_lift),
+                     io::format_number(r.mean_cl), io::format_number(r.tip_rotation_phase),
+                     io::format_number(r.tip_rotation_lag),
+                     io::format_number(r.outer_rotation_phase),
+                     io::format_number(r.outer_rotation_lag),
+                     io::format_number(r.mean_coupling_iterations),
+                     io::format_number(r.wall_time_s), r.folder, r.status});
   }
-  output::write_csv(path,
+  io::write_csv(path,
                     {key, "mean_lift_N", "mean_CL", "tip_rotation_phase", "tip_rotation_lag",
                      "outer_rotation_phase", "outer_rotation_lag",
                      "mean_coupling_iterations", "wall_time_s", "folder", "status"},
@@ -44,11 +44,11 @@ void write_table(const std::filesystem::path& path, const std::string& key,
 std::vector<SweepRow> run_sweep(const std::string& case_file, const Variation& variation,
                                 const SweepOptions& options) {
   const std::size_t n = variation.values.size();
-  std::vector<pipeline::Case> cases;
+  std::vector<io::Case> cases;
   cases.reserve(n);
   for (double v : variation.values) cases.push_back(load_case_with(case_file, variation.key, v));
 
-  output::ensure_directory(options.output_dir);
+  io::ensure_directory(options.output_dir);
   std::vector<SweepRow> rows(n);
   std::vector<bool> done(n, false);
   for (std::size_t i = 0; i < n; ++i) {
@@ -72,15 +72,15 @@ std::vector<SweepRow> run_sweep(const std::string& case_file, const Variation& v
     for (;;) {
       const std::size_t i = next.fetch_add(1);
       if (i >= n) return;
-      fsi::RunOptions ro;
+      app::RunOptions ro;
       ro.output_dir = options.output_dir / rows[i].folder;
       ro.chain_file = options.chain_file;
       ro.spring_scale = options.spring_scale;
       ro.vtk_every = options.vtk_every;
-      ro.progress = pipeline::ProgressLine::Mode::quiet;
+      ro.progress = app::ProgressLine::Mode::quiet;
       SweepRow r = rows[i];
       try {
-        const fsi::RunSummary s = fsi::run_case(cases[i], ro);
+        const app::RunSummary s = app::run_case(cases[i], ro);
         r.status = "ok";
         r.mean_lift = s.mean_lift;
         r.mean_cl = s.mean_cl;

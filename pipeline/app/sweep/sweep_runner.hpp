@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/sweep/sweep_values.hpp"
+#include "pipeline/app/sweep/sweep_values.hpp"
 
 namespace flapsim::sweep {
 

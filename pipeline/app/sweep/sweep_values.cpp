@@ -1,4 +1,4 @@
-#include "pipeline/sweep/sweep_values.hpp"
+#include "pipeline/app/sweep/sweep_values.hpp"
 
 #include <toml++/toml.h>
 
@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "pipeline/case/case_file.hpp"
+#include "pipeline/io/case_file.hpp"
 #include "wings/input_error.hpp"
 #include "wings/toml_reader.hpp"
 
@@ -78,9 +78,9 @@ Variation parse_variation(const std::string& text) {
   return v;
 }
 
-pipeline::Case load_case_with(const std::string& case_file, const std::string& key, double value) {
+io::Case load_case_with(const std::string& case_file, const std::string& key, double value) {
   // Make sure the file itself is valid first (errors then point at its real lines).
-  (void)pipeline::load_case_file(case_file);
+  (void)io::load_case_file(case_file);
   toml::table doc;
   try {
     doc = toml::parse_file(case_file);
@@ -114,7 +114,7 @@ pipeline::Case load_case_with(const std::string& case_file, const std::string& k
   std::ostringstream text;
   text << doc;
   try {
-    return pipeline::read_case(wings::parse_toml_string(text.str(), case_file));
+    return io::read_case(wings::parse_toml_string(text.str(), case_file));
   } catch (const InputError& e) {
     throw InputError(case_file, 0, key, "with " + key + " = " + value_label(value) + ": " + e.message());
   }

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/case/case_model.hpp"
+#include "pipeline/io/case_model.hpp"
 
 namespace flapsim::sweep {
 
@@ -30,7 +30,7 @@ Variation parse_variation(const std::string& text);
 /// is not an integer there is an error.
 /// \throws flapsim::InputError when the key's table does not exist in the file, the key
 ///         names a table or text, or the resulting case is invalid
-pipeline::Case load_case_with(const std::string& case_file, const std::string& key, double value);
+io::Case load_case_with(const std::string& case_file, const std::string& key, double value);
 
 /// \brief A short, file-system-safe label of a value, e.g. "-0.1", "0.05", "26.1".
 std::string value_label(double value);

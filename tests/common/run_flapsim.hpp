@@ -1,0 +1,33 @@
+#pragma once
+// Running the flapsim program as a user does (tests of the command line).
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace flapsim::test {
+
+/// Runs `flapsim ARGS` (the program built with the tests) without progress lines and
+/// with one OpenMP thread; stdout and stderr are discarded. Returns the exit status
+/// (-1 if the program did not exit normally).
+/// With \p stdout_file, the program's stdout goes there instead.
+inline int run_flapsim(const std::string& args, const std::filesystem::path& stdout_file = "/dev/null") {
+  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' " +
+                          args + " > '" + stdout_file.string() + "' 2> /dev/null";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The whole text of a file ("" if it cannot be read).
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace flapsim::test
