@@ -1,24 +1,20 @@
 // flapsim reduce WING.toml -o DIR --bodies N: the equivalent beam and the Hencky bar
 // chain of a wing, with a report of how well the chain reproduces the FEM
-// (docs/reduction.md). The reduction library returns data; the files are written
-// here, each atomically.
+// (docs/reduction.md). The reduction library returns data; pipeline/io writes the
+// files, each atomically.
 #include "pipeline/app/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "fem/wing_fem.hpp"
 #include "pipeline/io/chain_file.hpp"
 #include "pipeline/io/atomic_file.hpp"
-#include "pipeline/io/csv_writer.hpp"
-#include "pipeline/io/summary_json.hpp"
-#include "pipeline/io/vtk_writers.hpp"
+#include "pipeline/io/reduction_files.hpp"
 #include "reduction/beam_properties.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/reduction_report.hpp"
@@ -30,7 +26,6 @@ namespace flapsim::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using io::format_number;
 
 struct ReduceOptions {
   std::string wing_file;
@@ -40,159 +35,6 @@ struct ReduceOptions {
   int modes = 12;
   std::string axis = "fitted";
 };
-
-void write_beam_csv(const fs::path& path, const reduction::BeamProperties& beam) {
-  std::vector<std::vector<double>> rows;
-  for (const auto& st : beam.stations)
-    rows.push_back({st.s, st.y, st.mass_per_length, st.x_cg, st.x_ea, st.n_cg, st.n_ea, st.EI, st.GJ,
-                    st.I_alpha, st.in_tip_zone ? 1.0 : 0.0});
-  io::write_csv(path,
-                    {"s_m", "y_m", "m_per_length_kg_per_m", "x_cg_m", "x_ea_m", "n_cg_m", "n_ea_m",
-                     "EI_N_m2", "GJ_N_m2", "I_alpha_kg_m", "in_tip_zone"},
-                    rows);
-}
-
-void write_vtp(const fs::path& path, const reduction::BeamProperties& beam,
-               const reduction::LumpedChain& lc) {
-  const auto& ax = beam.axis;
-  const int ns = static_cast<int>(beam.stations.size());
-  const int nb = lc.chain.num_bodies();
-  const int np = ns + (nb + 1) + nb;
-  io::PolyDataMesh mesh;
-  mesh.points.resize(3, np);
-  Eigen::VectorXd kind = Eigen::VectorXd::Zero(np), ei = kind, gj = kind, mpl = kind, ia = kind,
-                  nea = kind, ncg = kind, bmass = kind;
-  for (int k = 0; k < ns; ++k) {
-    const auto& st = beam.stations[static_cast<std::size_t>(k)];
-    mesh.points.col(k) = ax.point(st.s, 0.0);
-    ei[k] = st.EI;
-    gj[k] = st.GJ;
-    mpl[k] = st.mass_per_length;
-    ia[k] = st.I_alpha;
-    nea[k] = st.n_ea;
-    ncg[k] = st.n_cg;
-  }
-  std::vector<int> axis_line;
-  for (int k = 0; k < ns; ++k) axis_line.push_back(k);
-  mesh.lines.push_back(axis_line);
-  const Eigen::Matrix3d r = ax.rotation();
-  for (int k = 0; k <= nb; ++k) {
-    mesh.points.col(ns + k) = ax.point(lc.body_length * k, 0.0);
-    kind[ns + k] = 1.0;
-  }
-  for (int k = 0; k < nb; ++k) {
-    const auto& b = lc.chain.bodies[static_cast<std::size_t>(k)];
-    const int c = ns + nb + 1 + k;
-    mesh.points.col(c) = ax.point(lc.body_length * k, 0.0) + r * b.center_of_mass;
-    kind[c] = 2.0;
-    bmass[c] = b.mass;
-    mesh.lines.push_back({ns + k, ns + k + 1});
-    mesh.lines.push_back({ns + k, c});
-  }
-  mesh.point_data.add_scalar("kind_station0_joint1_com2", kind);
-  mesh.point_data.add_scalar("EI_N_m2", ei);
-  mesh.point_data.add_scalar("GJ_N_m2", gj);
-  mesh.point_data.add_scalar("m_per_length_kg_per_m", mpl);
-  mesh.point_data.add_scalar("I_alpha_kg_m", ia);
-  mesh.point_data.add_scalar("n_ea_m", nea);
-  mesh.point_data.add_scalar("n_cg_m", ncg);
-  mesh.point_data.add_scalar("body_mass_kg", bmass);
-  io::write_vtp(path, mesh);
-}
-
-std::string pct(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%+.2f %%", 100.0 * x);
-  return buf;
-}
-
-std::string report_text(const ReduceOptions& o, const reduction::BeamProperties& beam,
-                        const reduction::LumpedChain& lc, const reduction::ChainFemComparison& c) {
-  std::ostringstream s;
-  s << "# Reduction of " << o.wing_file << "\n\n"
-    << "Method: docs/reduction.md. Flexural axis through the pivot at psi = " << beam.axis.psi
-    << " rad from y_W; flexible span " << beam.s_root << " … " << beam.s_tip << " m; "
-    << beam.stations.size() << " beam stations; " << lc.chain.num_bodies() << " bodies of "
-    << lc.body_length << " m, root " << (lc.chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid")
-    << ".\n\n"
-    << "FEM mass " << c.fem_mass << " kg, strip sum " << beam.strip_mass_sum << " kg, chain mass "
-    << c.chain_mass << " kg. Mean elastic axis from the tip twists: n = " << beam.n_ea_tip
-    << " m from the axis. Bending–torsion coupling (twist under the unit moment / twist under "
-       "the unit torque): "
-    << beam.bend_twist_coupling << " (not represented by the chain).\n\n"
-    << "## Chain vs FEM\n\n| quantity | FEM | chain | error | MAC |\n|---|---|---|---|---|\n";
-  auto mode_row = [&](const char* name, const reduction::ModeMatch& m) {
-    if (!m.found) {
-      s << "| " << name << " | not found | | | |\n";
-      return;
-    }
-    s << "| " << name << " [Hz] (FEM mode " << m.fem_mode + 1 << ", chain mode " << m.chain_mode + 1
-      << ") | " << m.fem_hz << " | " << m.chain_hz << " | " << pct(m.relative_error) << " | " << m.mac
-      << " |\n";
-  };
-  mode_row("first bending", c.bending);
-  mode_row("first torsion", c.torsion);
-  auto static_row = [&](const char* name, const reduction::StaticMatch& m) {
-    s << "| " << name << " | " << m.fem << " | " << m.chain << " | " << pct(m.relative_error) << " | |\n";
-  };
-  static_row("tip deflection under the tip force on the axis [m]", c.tip_deflection);
-  static_row("tip bending rotation under the tip moment [rad]", c.tip_bending_rotation);
-  static_row("tip twist under the tip torque [rad]", c.tip_twist);
-  s << "\nStatic responses at s = " << c.measure_s
-    << " m (mid-point of the outermost body clear of the loaded tip zone); the FEM load cases of the beam extraction, the same wrenches on the chain.\n\n"
-    << "## FEM modes\n\n| mode | f [Hz] | kind |\n|---|---|---|\n";
-  for (std::size_t i = 0; i < c.fem_hz.size(); ++i)
-    s << "| " << i + 1 << " | " << c.fem_hz[i] << " | " << c.fem_kinds[i] << " |\n";
-  s << "\n## Chain modes\n\n| mode | f [Hz] | kind |\n|---|---|---|\n";
-  for (std::size_t i = 0; i < c.chain_hz.size() && i < 12; ++i)
-    s << "| " << i + 1 << " | " << c.chain_hz[i] << " | " << c.chain_kinds[i] << " |\n";
-  s << "\n## Bodies (body frame: origin at the inboard joint, y along the axis, x toward the LE)\n\n"
-    << "| body | length [m] | mass [kg] | com x, y, z [m] | I_xx, I_yy, I_zz about com [kg m²] | k_theta "
-       "[N m/rad] | k_alpha [N m/rad] |\n|---|---|---|---|---|---|---|\n";
-  for (int k = 0; k < lc.chain.num_bodies(); ++k) {
-    const auto& b = lc.chain.bodies[static_cast<std::size_t>(k)];
-    const auto& j = lc.chain.joints[static_cast<std::size_t>(k)];
-    s << "| " << k + 1 << " | " << b.length << " | " << b.mass << " | " << b.center_of_mass.x() << ", "
-      << b.center_of_mass.y() << ", " << b.center_of_mass.z() << " | " << b.inertia(0, 0) << ", "
-      << b.inertia(1, 1) << ", " << b.inertia(2, 2) << " | " << j.bend_stiffness << " | "
-      << j.twist_stiffness << " |\n";
-  }
-  return s.str();
-}
-
-void write_summary(const fs::path& path, const reduction::BeamProperties& beam,
-                   const reduction::LumpedChain& lc, const reduction::ChainFemComparison& c) {
-  io::SummaryJson j;
-  j.set("num_bodies", c.num_bodies);
-  j.set("num_stations", static_cast<int>(beam.stations.size()));
-  j.set("axis_psi_rad", beam.axis.psi);
-  j.set("root", lc.chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid");
-  j.set("fem_mass_kg", c.fem_mass);
-  j.set("chain_mass_kg", c.chain_mass);
-  j.set("n_ea_tip_m", beam.n_ea_tip);
-  j.set("bend_twist_coupling", beam.bend_twist_coupling);
-  j.set("bending_found", c.bending.found);
-  j.set("bending_fem_hz", c.bending.fem_hz);
-  j.set("bending_chain_hz", c.bending.chain_hz);
-  j.set("bending_relative_error", c.bending.relative_error);
-  j.set("bending_mac", c.bending.mac);
-  j.set("torsion_found", c.torsion.found);
-  j.set("torsion_fem_hz", c.torsion.fem_hz);
-  j.set("torsion_chain_hz", c.torsion.chain_hz);
-  j.set("torsion_relative_error", c.torsion.relative_error);
-  j.set("torsion_mac", c.torsion.mac);
-  j.set("static_measure_s_m", c.measure_s);
-  j.set("tip_deflection_fem_m", c.tip_deflection.fem);
-  j.set("tip_deflection_chain_m", c.tip_deflection.chain);
-  j.set("tip_deflection_relative_error", c.tip_deflection.relative_error);
-  j.set("tip_rotation_fem_rad", c.tip_bending_rotation.fem);
-  j.set("tip_rotation_chain_rad", c.tip_bending_rotation.chain);
-  j.set("tip_rotation_relative_error", c.tip_bending_rotation.relative_error);
-  j.set("tip_twist_fem_rad", c.tip_twist.fem);
-  j.set("tip_twist_chain_rad", c.tip_twist.chain);
-  j.set("tip_twist_relative_error", c.tip_twist.relative_error);
-  j.write(path);
-}
 
 void run_reduce(const ReduceOptions& o) {
   const wings::Wing wing = wings::load_wing_file(o.wing_file);  // InputError → exit 2
@@ -208,15 +50,15 @@ void run_reduce(const ReduceOptions& o) {
 
   const fs::path dir(o.out_dir);
   io::ensure_directory(dir);
-  write_beam_csv(dir / "beam.csv", beam);
+  io::write_beam_csv(dir / "beam.csv", beam);
   io::write_chain_file(dir / "chain.toml", lc.chain);
-  write_vtp(dir / "reduction.vtp", beam, lc);
-  io::write_text_atomically(dir / "report.md", report_text(o, beam, lc, cmp));
-  write_summary(dir / "summary.json", beam, lc, cmp);
+  io::write_reduction_vtp(dir / "reduction.vtp", beam, lc);
+  io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
+  io::write_reduction_summary(dir / "summary.json", beam, lc, cmp);
   std::cerr << "reduce: " << o.bodies << " bodies; first bending " << cmp.bending.chain_hz << " Hz (FEM "
-            << cmp.bending.fem_hz << " Hz, " << pct(cmp.bending.relative_error) << "), first torsion "
+            << cmp.bending.fem_hz << " Hz, " << io::format_percent(cmp.bending.relative_error) << "), first torsion "
             << cmp.torsion.chain_hz << " Hz (FEM " << cmp.torsion.fem_hz << " Hz, "
-            << pct(cmp.torsion.relative_error) << "); wrote " << dir.string() << "\n";
+            << io::format_percent(cmp.torsion.relative_error) << "); wrote " << dir.string() << "\n";
 }
 
 }  // namespace
