@@ -31,7 +31,7 @@ TESTS = [
     ("fem", "ShellBenchmarks.*", "Scordelis-Lo roof, twisted beam", "0.3024; 0.005424/0.001754"),
     ("fem", "CantileverBeam.*", "cantilever beam frequencies", "beta L 1.8751 4.6941 7.8548"),
     ("reduction", "*", "plate strip EI, GJ, elastic axis, strip masses", "2 %, 1 % chord, round-off"),
-    ("pipeline", "Fsi*", "FSI: load transfer, rigid = lattice, stiff chain = rigid", "round-off; round-off; 0.5 %"),
+    ("fsi", "Fsi*", "FSI: load transfer, rigid = lattice, stiff chain = rigid", "round-off; round-off; 0.5 %"),
 ]
 
 

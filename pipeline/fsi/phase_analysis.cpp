@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "mbd/wing_kinematics.hpp"
+#include "pipeline/fsi/wing_attachment.hpp"
+
 namespace flapsim::fsi {
 
 EulerAngles euler_angles(const Eigen::Matrix3d& r) {
@@ -19,6 +22,19 @@ Eigen::Matrix3d euler_rotation(const EulerAngles& e) {
           Eigen::AngleAxisd(e.deviation, Eigen::Vector3d::UnitX()) *
           Eigen::AngleAxisd(-e.rotation, Eigen::Vector3d::UnitY()))
       .toRotationMatrix();
+}
+
+EulerAngles body_angles(const mbd::ChainModel& chain, const mbd::ChainData& data,
+                        double stroke_plane_angle, int body) {
+  const Eigen::Matrix3d r_gs = mbd::rotation_y(stroke_plane_angle);
+  const Eigen::Matrix3d& r_gb = data.bodies[static_cast<std::size_t>(body)].rotation;
+  return euler_angles(r_gs.transpose() * r_gb * chain.root_rotation.transpose());
+}
+
+int outer_body(const mbd::ChainModel& chain) {
+  const std::vector<double> s = reference_joint_span(chain);
+  const double length = s.back() + chain.bodies.back().outboard_joint.norm();
+  return host_body(s, s.front() + 5.0 / 6.0 * (length - s.front()));
 }
 
 std::vector<double> crossing_times(const std::vector<double>& t, const std::vector<double>& x,

@@ -16,6 +16,9 @@
 #include <optional>
 #include <vector>
 
+#include "mbd/chain_data.hpp"
+#include "mbd/chain_model.hpp"
+
 namespace flapsim::fsi {
 
 struct EulerAngles {
@@ -29,6 +32,19 @@ EulerAngles euler_angles(const Eigen::Matrix3d& rotation_sw);
 
 /// \brief Rotation matrix Rz(φ) · Rx(θ) · Ry(−α) of given angles (the inverse of euler_angles).
 Eigen::Matrix3d euler_rotation(const EulerAngles& angles);
+
+/// \brief Euler angles of body \p body (0-based) of the chain relative to the chain's
+/// undeformed orientation, in the stroke-plane frame: euler_angles(R_GSᵀ R_GB R_WRᵀ) with
+/// R_GS = Ry(β). They equal the base's angles when the wing does not deform.
+/// \param stroke_plane_angle  β [rad]
+EulerAngles body_angles(const mbd::ChainModel& chain, const mbd::ChainData& data,
+                        double stroke_plane_angle, int body);
+
+/// \brief The "outer" body (0-based): the one holding the point at 5/6 of the chain's
+/// length, the middle of the outer third of the span (the third body of the paper's
+/// three-body wing). With many bodies the last one is a small piece of the rounded tip;
+/// this one is a section an experimenter's wing-tip marker would follow.
+int outer_body(const mbd::ChainModel& chain);
 
 /// \brief Times [s] where a sampled signal crosses \p level, by linear interpolation
 /// between samples; \p direction +1 rising, −1 falling, 0 both.

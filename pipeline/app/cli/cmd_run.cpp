@@ -11,6 +11,7 @@
 
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/app/fsi_run.hpp"
+#include "pipeline/app/run_results.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::cli {
@@ -37,15 +38,9 @@ void run_command(const RunArgs& a) {
   options.spring_scale = a.spring_scale;
   if (a.vtk_every >= 0) options.vtk_every = a.vtk_every;
   if (a.quiet) options.progress = app::ProgressLine::Mode::quiet;
-  const app::RunSummary s = app::run_case(c, options);
+  const app::RunResults results = app::run_case(c, options);
   if (!a.quiet) {
-    std::printf("case %s: %s\n", c.name.c_str(), s.structure.c_str());
-    std::printf("mean lift (last cycle) %.6g N, mean CL %.4f\n", s.mean_lift, s.mean_cl);
-    if (s.max_coupling_iterations > 1)
-      std::printf("coupling: %.2f sub-iterations per step on average (max %d)\n",
-                  s.mean_coupling_iterations, s.max_coupling_iterations);
-    std::printf("rotation phase: base %.4f, tip %.4f; tip alpha lag %.4f of the period\n",
-                s.base_rotation_phase, s.tip_rotation_phase, s.tip_rotation_lag);
+    std::fputs(app::run_report(results).c_str(), stdout);
     std::printf("outputs in %s (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd)\n",
                 options.output_dir.string().c_str());
   }

@@ -3,11 +3,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "pipeline/app/run_results.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
 #include "wings/input_error.hpp"
@@ -37,14 +40,30 @@ void sweep_command(const SweepArgs& a) {
   options.quiet = a.quiet;
   const auto rows = sweep::run_sweep(a.case_file, variation, options);
   if (a.quiet) return;
-  std::printf("%-16s %14s %9s %10s %10s %11s %10s  %s\n",
-              variation.key.substr(variation.key.rfind('.') + 1).c_str(), "mean lift [N]", "mean CL",
-              "tip phase", "tip lag", "outer phase", "outer lag", "status");
-  for (const auto& r : rows)
-    std::printf("%-16s %14.6g %9.4f %10.4f %10.4f %11.4f %10.4f  %s\n", sweep::value_label(r.value).c_str(),
-                r.mean_lift, r.mean_cl, r.tip_rotation_phase, r.tip_rotation_lag, r.outer_rotation_phase,
-                r.outer_rotation_lag,
-                r.status == "ok" ? "ok" : r.status.c_str());
+  // The table of sweep.csv's result columns (run_results.hpp), one row per value.
+  struct Column {
+    std::size_t result;
+    std::string title;
+    int width;
+  };
+  std::vector<Column> columns;
+  for (std::size_t i : app::sweep_results()) {
+    const app::ResultDefinition& d = app::kRunResults[i];
+    std::string title(d.sweep_label);
+    if (!d.unit.empty()) title += " [" + std::string(d.unit) + "]";
+    columns.push_back({i, title, std::max(static_cast<int>(title.size()) + 1, 10)});
+  }
+  std::printf("%-16s", variation.key.substr(variation.key.rfind('.') + 1).c_str());
+  for (const Column& col : columns) std::printf(" %*s", col.width, col.title.c_str());
+  std::printf("  status\n");
+  for (const auto& r : rows) {
+    std::printf("%-16s", sweep::value_label(r.value).c_str());
+    for (const Column& col : columns) {
+      const std::string cell = r.results.at(col.result) ? app::format_result(r.results, col.result) : "nan";
+      std::printf(" %*s", col.width, cell.c_str());
+    }
+    std::printf("  %s\n", r.status.c_str());
+  }
   std::printf("table: %s\n", (std::filesystem::path(a.output_dir) / "sweep.csv").string().c_str());
 }
 

@@ -20,23 +20,20 @@ namespace {
 
 void write_table(const std::filesystem::path& path, const std::string& key,
                  const std::vector<SweepRow>& rows, const std::vector<bool>& done) {
+  std::vector<std::string> header{key};
+  for (std::size_t i : app::sweep_results()) header.emplace_back(app::kRunResults[i].key);
+  header.insert(header.end(), {"folder", "status"});
   std::vector<std::vector<std::string>> cells;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (!done[i]) continue;
     const SweepRow& r = rows[i];
-    cells.push_back({io::format_number(r.value), io::format_number(r.mean_lift),
-                     io::format_number(r.mean_cl), io::format_number(r.tip_rotation_phase),
-                     io::format_number(r.tip_rotation_lag),
-                     io::format_number(r.outer_rotation_phase),
-                     io::format_number(r.outer_rotation_lag),
-                     io::format_number(r.mean_coupling_iterations),
-                     io::format_number(r.wall_time_s), r.folder, r.status});
+    std::vector<std::string> row{io::format_number(r.value)};
+    for (std::string& cell : app::sweep_cells(r.results)) row.push_back(std::move(cell));
+    row.push_back(r.folder);
+    row.push_back(r.status);
+    cells.push_back(std::move(row));
   }
-  io::write_csv(path,
-                    {key, "mean_lift_N", "mean_CL", "tip_rotation_phase", "tip_rotation_lag",
-                     "outer_rotation_phase", "outer_rotation_lag",
-                     "mean_coupling_iterations", "wall_time_s", "folder", "status"},
-                    cells);
+  io::write_csv(path, header, cells);
 }
 
 }  // namespace
@@ -80,21 +77,10 @@ std::vector<SweepRow> run_sweep(const std::string& case_file, const Variation& v
       ro.progress = app::ProgressLine::Mode::quiet;
       SweepRow r = rows[i];
       try {
-        const app::RunSummary s = app::run_case(cases[i], ro);
+        r.results = app::run_case(cases[i], ro);
         r.status = "ok";
-        r.mean_lift = s.mean_lift;
-        r.mean_cl = s.mean_cl;
-        r.tip_rotation_phase = s.tip_rotation_phase;
-        r.tip_rotation_lag = s.tip_rotation_lag;
-        r.outer_rotation_phase = s.outer_rotation_phase;
-        r.outer_rotation_lag = s.outer_rotation_lag;
-        r.mean_coupling_iterations = s.mean_coupling_iterations;
-        r.wall_time_s = s.wall_time_s;
       } catch (const NumericalFailure& e) {
         r.status = std::string("failed: ") + e.what();
-        r.mean_lift = r.mean_cl = r.tip_rotation_phase = r.tip_rotation_lag = r.outer_rotation_phase =
-            r.outer_rotation_lag =
-            std::numeric_limits<double>::quiet_NaN();
       } catch (...) {
         std::lock_guard<std::mutex> lock(mutex);
         if (!fatal) fatal = std::current_exception();
@@ -110,8 +96,9 @@ std::vector<SweepRow> run_sweep(const std::string& case_file, const Variation& v
         const double wall =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "sweep %zu/%zu  %s = %s  mean lift %.5g N  CL %.3f  %s  (%.1f s)\n",
-                     finished, n, variation.key.c_str(), value_label(r.value).c_str(), r.mean_lift,
-                     r.mean_cl, r.status == "ok" ? "ok" : "FAILED", wall);
+                     finished, n, variation.key.c_str(), value_label(r.value).c_str(),
+                     r.results.number("mean_lift_N"), r.results.number("mean_CL"),
+                     r.status == "ok" ? "ok" : "FAILED", wall);
       }
     }
   };

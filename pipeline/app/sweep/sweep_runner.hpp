@@ -8,13 +8,15 @@
 /// limited to one thread, since the cases already fill the cores. Each case writes its
 /// own sub-folder `DIR/<index>_<value>/` (history.csv, summary.json, VTK if asked); a
 /// case that fails numerically is recorded with its status and the others go on.
-/// sweep.csv is rewritten (atomically) after every finished case.
+/// sweep.csv is rewritten (atomically) after every finished case: the varied key, the
+/// results with a sweep label (run_results.hpp; "nan" for a failed case), folder, status.
 
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "pipeline/app/run_results.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
 
 namespace flapsim::sweep {
@@ -29,13 +31,10 @@ struct SweepOptions {
 };
 
 struct SweepRow {
-  double value = 0.0;
-  std::string folder;
-  std::string status;            ///< "ok", "failed: ..." 
-  double mean_lift = 0.0, mean_cl = 0.0;
-  double tip_rotation_phase = 0.0, tip_rotation_lag = 0.0;
-  double outer_rotation_phase = 0.0, outer_rotation_lag = 0.0;
-  double mean_coupling_iterations = 0.0, wall_time_s = 0.0;
+  double value = 0.0;     ///< the value of the varied key
+  std::string folder;     ///< the case's sub-folder, "<index>_<value>"
+  std::string status;     ///< "ok", "failed: ..."
+  app::RunResults results;  ///< the run's results (none for a failed case)
 };
 
 /// \brief Runs the sweep; returns one row per value, in the order of the values.

@@ -1,0 +1,88 @@
+#include "pipeline/app/run_history.hpp"
+
+#include <numbers>
+
+#include "mbd/chain_kinematics.hpp"
+
+namespace flapsim::app {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+// The columns every run writes. A column is a name (unit as a suffix), a description and
+// how it is computed from the step's sample.
+constexpr HistoryColumn kColumns[] = {
+    {"t_s", "time", [](const StepSample& s) { return s.time; }},
+    {"phi_base_deg", "base sweep angle φ (prescribed)",
+     [](const StepSample& s) { return s.base.sweep.value * kRadToDeg; }},
+    {"theta_base_deg", "base deviation angle θ (prescribed)",
+     [](const StepSample& s) { return s.base.deviation.value * kRadToDeg; }},
+    {"alpha_base_deg", "base rotation angle α (prescribed)",
+     [](const StepSample& s) { return s.base.rotation.value * kRadToDeg; }},
+    {"phi_tip_deg", "sweep angle of the last body", [](const StepSample& s) { return s.tip.sweep * kRadToDeg; }},
+    {"theta_tip_deg", "deviation angle of the last body",
+     [](const StepSample& s) { return s.tip.deviation * kRadToDeg; }},
+    {"alpha_tip_deg", "rotation angle of the last body",
+     [](const StepSample& s) { return s.tip.rotation * kRadToDeg; }},
+    {"Fx_N", "aerodynamic force, ground x", [](const StepSample& s) { return s.force.x(); }},
+    {"Fy_N", "aerodynamic force, ground y", [](const StepSample& s) { return s.force.y(); }},
+    {"Fz_N", "aerodynamic force, ground z", [](const StepSample& s) { return s.force.z(); }},
+    {"lift_N", "lift: ground +z of the aerodynamic force", [](const StepSample& s) { return s.lift; }},
+    {"CL", "lift coefficient L / (½ ρ U_ref² S)", [](const StepSample& s) { return s.cl; }},
+    {"coupling_iterations", "lattice solves of the step",
+     [](const StepSample& s) { return static_cast<double>(s.coupling_iterations); }},
+    {"coupling_change_rad", "structure change at the end of the step's sub-iterations",
+     [](const StepSample& s) { return s.coupling_change; }},
+    {"phi_outer_deg", "sweep angle of the outer body", [](const StepSample& s) { return s.outer.sweep * kRadToDeg; }},
+    {"theta_outer_deg", "deviation angle of the outer body",
+     [](const StepSample& s) { return s.outer.deviation * kRadToDeg; }},
+    {"alpha_outer_deg", "rotation angle of the outer body",
+     [](const StepSample& s) { return s.outer.rotation * kRadToDeg; }},
+};
+
+}  // namespace
+
+std::span<const HistoryColumn> history_columns() { return kColumns; }
+
+StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
+                       const mbd::WingKinematics& kinematics, double dynamic_pressure_area,
+                       int outer_body) {
+  StepSample s;
+  s.time = data.state.time;
+  s.base = kinematics.angles(s.time);
+  s.tip = fsi::body_angles(model.chain, data.chain, kinematics.stroke_plane_angle,
+                           model.chain.num_bodies() - 1);
+  s.outer = fsi::body_angles(model.chain, data.chain, kinematics.stroke_plane_angle, outer_body);
+  if (model.air) s.force = data.lattice->loads.total_force;
+  s.lift = s.force.z();
+  s.cl = dynamic_pressure_area > 0.0 ? s.lift / dynamic_pressure_area : 0.0;
+  s.coupling_iterations = data.last_iterations;
+  s.coupling_change = data.last_change;
+  return s;
+}
+
+std::vector<std::string> history_header(const io::Case& c, const mbd::ChainModel& chain) {
+  std::vector<std::string> cols;
+  for (const HistoryColumn& col : kColumns) cols.emplace_back(col.name);
+  for (int b = chain.first_jointed_body(); b < chain.num_bodies(); ++b) {
+    cols.push_back("bend_" + std::to_string(b + 1) + "_rad");
+    cols.push_back("twist_" + std::to_string(b + 1) + "_rad");
+  }
+  for (const auto& m : c.markers)
+    for (const char* axis : {"_x_m", "_y_m", "_z_m"}) cols.push_back(m.name + axis);
+  return cols;
+}
+
+void history_row(const StepSample& sample, const io::Case& c, const fsi::FsiData& data,
+                 std::vector<double>& row) {
+  std::size_t i = 0;
+  for (const HistoryColumn& col : kColumns) row[i++] = col.value(sample);
+  for (int k = 0; k < data.state.q.size(); ++k) row[i++] = data.state.q(k);
+  for (const auto& m : c.markers) {
+    const Eigen::Vector3d p = mbd::point_position(data.chain, m.body - 1, m.point);
+    for (int a = 0; a < 3; ++a) row[i++] = p(a);
+  }
+}
+
+}  // namespace flapsim::app

@@ -1,0 +1,65 @@
+#pragma once
+/// \file run_history.hpp
+/// \brief history.csv, one row per step: the columns of every run (defined here, once,
+/// each with how it is computed from a StepSample), then the joint angles of the chain
+/// and the positions of the case's markers (docs/fsi.md, "Outputs").
+/// How to add a column: docs/output_files.md, "Adding a result or a history column".
+
+#include <Eigen/Core>
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "mbd/chain_data.hpp"
+#include "mbd/chain_model.hpp"
+#include "mbd/wing_kinematics.hpp"
+#include "pipeline/fsi/coupled_step.hpp"
+#include "pipeline/fsi/phase_analysis.hpp"
+#include "pipeline/io/case_model.hpp"
+
+namespace flapsim::app {
+
+/// One step of a run as the history and the results see it (SI units, radians).
+struct StepSample {
+  double time = 0.0;                 ///< t [s]
+  mbd::WingKinematics::Angles base;  ///< prescribed base angles φ, θ, α [rad] and their rates
+  fsi::EulerAngles tip;              ///< last body, relative to the undeformed chain [rad]
+  fsi::EulerAngles outer;            ///< the outer body (fsi::outer_body) [rad]
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< total aerodynamic force, ground [N]
+  double lift = 0.0;                 ///< ground +z of the force [N]
+  double cl = 0.0;                   ///< lift coefficient [-] (0 in vacuum)
+  int coupling_iterations = 0;       ///< lattice solves of the step
+  double coupling_change = 0.0;      ///< structure change at the end of the step [rad]
+};
+
+/// \brief The sample of the step just taken (after fsi::coupled_step).
+/// \param kinematics             the case's base kinematics (angles, stroke plane)
+/// \param dynamic_pressure_area  ½ ρ U_ref² S [N] of CL (0: CL = 0, as in vacuum)
+/// \param outer_body             0-based index of the outer body (fsi::outer_body)
+StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
+                       const mbd::WingKinematics& kinematics, double dynamic_pressure_area,
+                       int outer_body);
+
+/// A column every run writes.
+struct HistoryColumn {
+  std::string_view name;         ///< CSV header, unit as a suffix ("lift_N")
+  std::string_view description;  ///< for docs/fsi.md
+  double (*value)(const StepSample&);
+};
+
+/// The columns every run writes, in order (before joint angles and markers).
+std::span<const HistoryColumn> history_columns();
+
+/// \brief All column names of a run's history.csv: history_columns(), then
+/// bend_<k>_rad, twist_<k>_rad for each jointed body k (1-based), then
+/// <marker>_x_m, _y_m, _z_m for each marker.
+std::vector<std::string> history_header(const io::Case& c, const mbd::ChainModel& chain);
+
+/// \brief A row of history.csv in the order of history_header().
+/// \param row  resized to the header's length by the caller; filled here
+void history_row(const StepSample& sample, const io::Case& c, const fsi::FsiData& data,
+                 std::vector<double>& row);
+
+}  // namespace flapsim::app

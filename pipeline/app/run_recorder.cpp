@@ -1,0 +1,160 @@
+#include "pipeline/app/run_recorder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "pipeline/fsi/phase_analysis.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/fsi_vtk.hpp"
+#include "pipeline/io/vtk_writers.hpp"
+
+namespace flapsim::app {
+
+namespace {
+
+const std::filesystem::path& existing_directory(const std::filesystem::path& dir) {
+  io::ensure_directory(dir);
+  return dir;
+}
+
+// One quantity of every sample, as a time series.
+template <typename Get>
+std::vector<double> series(const std::vector<StepSample>& samples, Get get) {
+  std::vector<double> x;
+  x.reserve(samples.size());
+  for (const StepSample& s : samples) x.push_back(get(s));
+  return x;
+}
+
+}  // namespace
+
+RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::filesystem::path& output_dir,
+                         int vtk_every, double spring_scale, std::chrono::steady_clock::time_point started)
+    : case_(c),
+      setup_(setup),
+      dir_(existing_directory(output_dir)),
+      vtk_every_(vtk_every),
+      started_(started),
+      dynamic_pressure_area_(setup.model.air ? setup.reference.dynamic_pressure_area(setup.model.density)
+                                             : 0.0),
+      outer_body_(fsi::outer_body(setup.model.chain)),
+      history_(dir_ / "history.csv", history_header(c, setup.model.chain), 20),
+      row_(history_.columns().size()) {
+  const fsi::FsiModel& model = setup.model;
+  if (vtk_every_ > 0) {
+    if (model.air) {
+      wing_pvd_.emplace(dir_ / "wing.pvd");
+      wake_pvd_.emplace(dir_ / "wake.pvd");
+    }
+    chain_pvd_.emplace(dir_ / "chain.pvd");
+    io::ensure_directory(dir_ / "vtk");
+  }
+  RunResults& r = results_;
+  r.set("case", c.name);
+  r.set("structure", setup.structure_source);
+  r.set("air", model.air);
+  r.set("frequency_hz", c.kinematics.frequency);
+  r.set("rotation_phase", c.kinematics.rotation_phase);
+  r.set("steps_per_cycle", setup.steps_per_cycle);
+  r.set("cycles", c.numerics.cycles);
+  r.set("dt_s", setup.dt);
+  r.set("bodies", model.chain.num_bodies());
+  r.set("spring_scale", spring_scale);
+  if (model.air) {
+    r.set("reference_area_m2", setup.reference.area);
+    r.set("reference_speed_m_s", setup.reference.speed);
+    r.set("r2", setup.reference.r2);
+  }
+}
+
+void RunRecorder::record(const fsi::FsiData& data) {
+  samples_.push_back(sample_step(setup_.model, data, case_.kinematics, dynamic_pressure_area_, outer_body_));
+  history_row(samples_.back(), case_, data, row_);
+  history_.append(std::span<const double>(row_.data(), row_.size()));
+  if (vtk_every_ > 0 && data.step % vtk_every_ == 0) write_series(data, data.step);
+}
+
+void RunRecorder::write_series(const fsi::FsiData& data, long step) {
+  const fsi::FsiModel& model = setup_.model;
+  const double t = data.state.time;
+  if (model.air) {
+    const auto wf = io::PvdSeries::step_file_name("vtk/wing", step, "vtp");
+    io::write_vtp(dir_ / wf, io::wing_surface_mesh(model.lattice, *data.lattice, t));
+    wing_pvd_->add(t, dir_ / wf);
+    const auto kf = io::PvdSeries::step_file_name("vtk/wake", step, "vtp");
+    io::write_vtp(dir_ / kf, io::wake_mesh(model.lattice, *data.lattice, t));
+    wake_pvd_->add(t, dir_ / kf);
+  }
+  const auto cf = io::PvdSeries::step_file_name("vtk/chain", step, "vtp");
+  io::write_vtp(dir_ / cf, io::chain_mesh(model.chain, data.chain, t));
+  chain_pvd_->add(t, dir_ / cf);
+}
+
+// The results of the samples: means over the last complete cycle (or whatever was run,
+// if less than one cycle), rotation phases and lags, coupling statistics.
+void RunRecorder::analyse(const fsi::FsiData& data) {
+  RunResults& r = results_;
+  const double period = setup_.period;
+  const double t_end = data.state.time;
+  const double t_begin = std::max(0.0, t_end - period);
+  const std::vector<double> t = series(samples_, [](const StepSample& s) { return s.time; });
+  const auto mean = [&](std::vector<double> x) {
+    std::vector<double> tt = t;
+    tt.insert(tt.begin(), 0.0);  // the series start at the first step; t = 0 has no loads
+    x.insert(x.begin(), x.empty() ? 0.0 : x.front());
+    return fsi::window_mean(tt, x, t_begin, t_end);
+  };
+  r.set("steps", data.step);
+  r.set("time_s", t_end);
+  r.set("mean_lift_N", mean(series(samples_, [](const StepSample& s) { return s.lift; })));
+  r.set("mean_CL", mean(series(samples_, [](const StepSample& s) { return s.cl; })));
+  r.set("mean_Fx_N", mean(series(samples_, [](const StepSample& s) { return s.force.x(); })));
+  r.set("mean_Fy_N", mean(series(samples_, [](const StepSample& s) { return s.force.y(); })));
+  r.set("mean_Fz_N", mean(series(samples_, [](const StepSample& s) { return s.force.z(); })));
+
+  const auto base_phi = series(samples_, [](const StepSample& s) { return s.base.sweep.value; });
+  const auto base_alpha = series(samples_, [](const StepSample& s) { return s.base.rotation.value; });
+  const auto tip_phi = series(samples_, [](const StepSample& s) { return s.tip.sweep; });
+  const auto tip_alpha = series(samples_, [](const StepSample& s) { return s.tip.rotation; });
+  const auto outer_phi = series(samples_, [](const StepSample& s) { return s.outer.sweep; });
+  const auto outer_alpha = series(samples_, [](const StepSample& s) { return s.outer.rotation; });
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double right_angle = 0.5 * std::numbers::pi;
+  r.set("base_rotation_phase", fsi::rotation_phase(t, base_phi, base_alpha, period, t_begin, t_end).value_or(nan));
+  r.set("tip_rotation_phase", fsi::rotation_phase(t, tip_phi, tip_alpha, period, t_begin, t_end).value_or(nan));
+  r.set("tip_rotation_lag",
+        fsi::crossing_lag(t, tip_alpha, base_alpha, right_angle, period, t_begin, t_end).value_or(nan));
+  const double phi_mean = fsi::window_mean(t, base_phi, t_begin, t_end);
+  r.set("tip_sweep_lag", fsi::crossing_lag(t, tip_phi, base_phi, phi_mean, period, t_begin, t_end).value_or(nan));
+  r.set("outer_body", outer_body_ + 1);
+  r.set("outer_rotation_phase",
+        fsi::rotation_phase(t, outer_phi, outer_alpha, period, t_begin, t_end).value_or(nan));
+  r.set("outer_rotation_lag",
+        fsi::crossing_lag(t, outer_alpha, base_alpha, right_angle, period, t_begin, t_end).value_or(nan));
+
+  double iterations = 0.0;
+  int max_iterations = 0;
+  for (const StepSample& s : samples_) {
+    iterations += s.coupling_iterations;
+    max_iterations = std::max(max_iterations, s.coupling_iterations);
+  }
+  r.set("mean_coupling_iterations", samples_.empty() ? 0.0 : iterations / samples_.size());
+  r.set("max_coupling_iterations", max_iterations);
+  r.set("coupling_tolerance_rad", setup_.model.coupling.tolerance);
+  if (setup_.model.air) r.set("wake_panels", data.lattice->wake_panels());
+}
+
+RunResults RunRecorder::finish(const fsi::FsiData& data, const std::string& status, const std::string& error) {
+  if (!error.empty()) results_.set("error", error);
+  history_.close();
+  results_.set("status", status);
+  analyse(data);
+  results_.set("wall_time_s",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count());
+  summary_json(results_).write(dir_ / "summary.json");
+  return results_;
+}
+
+}  // namespace flapsim::app

@@ -1,0 +1,65 @@
+#pragma once
+/// \file run_recorder.hpp
+/// \brief What a run leaves behind, step by step: a row of history.csv per step (columns
+/// in run_history.hpp), the ParaView series every `vtk_every` steps, the samples kept
+/// for the end-of-run analysis; at the end (or at a numerical failure) the run's
+/// results (run_results.hpp), written as summary.json.
+
+#include <chrono>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/app/run_history.hpp"
+#include "pipeline/app/run_results.hpp"
+#include "pipeline/fsi/coupled_step.hpp"
+#include "pipeline/io/case_model.hpp"
+#include "pipeline/io/csv_writer.hpp"
+#include "pipeline/io/pvd_series.hpp"
+
+namespace flapsim::app {
+
+class RunRecorder {
+ public:
+  /// \brief Creates the output folder, opens history.csv (and the series if vtk_every > 0)
+  /// and sets the results known before the first step.
+  /// \param setup        the run's setup (not owned; must outlive the recorder)
+  /// \param vtk_every    write the ParaView series every n steps; 0 = never
+  /// \param spring_scale the joint-spring factor the setup applied (reported)
+  /// \param started      when the run started (wall time, setup included)
+  /// \throws io::OutputError if the folder or the files cannot be created
+  RunRecorder(const io::Case& c, const FsiSetup& setup, const std::filesystem::path& output_dir,
+              int vtk_every, double spring_scale, std::chrono::steady_clock::time_point started);
+
+  /// \brief Records the state after a coupled step (before the wake is shed).
+  void record(const fsi::FsiData& data);
+
+  /// The sample of the last recorded step (valid after the first record()).
+  const StepSample& last() const { return samples_.back(); }
+
+  /// \brief Publishes history.csv, computes the results over the last cycle and writes
+  /// summary.json with the status ("ok" or "failed") and, for a failed run, the error.
+  /// \throws io::OutputError
+  RunResults finish(const fsi::FsiData& data, const std::string& status, const std::string& error = {});
+
+ private:
+  void write_series(const fsi::FsiData& data, long step);
+  void analyse(const fsi::FsiData& data);
+
+  const io::Case& case_;
+  const FsiSetup& setup_;
+  std::filesystem::path dir_;
+  int vtk_every_;
+  std::chrono::steady_clock::time_point started_;
+  double dynamic_pressure_area_;  ///< ½ ρ U_ref² S [N]; 0 in vacuum
+  int outer_body_;                ///< 0-based
+  io::CsvTimeSeriesWriter history_;
+  std::vector<double> row_;
+  std::optional<io::PvdSeries> wing_pvd_, wake_pvd_, chain_pvd_;
+  std::vector<StepSample> samples_;
+  RunResults results_;
+};
+
+}  // namespace flapsim::app

@@ -1,0 +1,186 @@
+#pragma once
+/// \file run_results.hpp
+/// \brief What a run reports, defined once. Each result has a key (the summary.json key
+/// and sweep.csv column, its unit as a suffix), a unit, a kind, a print format, a short
+/// label if it is a column of the sweep table, and a description. From this one list:
+///  - summary.json: every result that was set, in the order of the list;
+///  - the report `flapsim run` prints: the lines of kRunReport, whose {key} placeholders
+///    are filled with the result's value, print format and unit;
+///  - sweep.csv and the table `flapsim sweep` prints: the results with a label.
+/// How to add a result: docs/output_files.md, "Adding a result or a history column".
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "pipeline/io/summary_json.hpp"
+
+namespace flapsim::app {
+
+enum class ResultKind { number, integer, text, flag };
+
+struct ResultDefinition {
+  std::string_view key;          ///< summary.json key, sweep.csv column, e.g. "mean_lift_N"
+  std::string_view unit;         ///< SI unit as printed ("N", "m/s", "m^2"); "" if none
+  ResultKind kind;
+  std::string_view format;       ///< printf format of a number in reports and tables
+  std::string_view sweep_label;  ///< column title in sweep.csv's table on stdout; "" = not a sweep column
+  std::string_view description;  ///< what it is and how it is measured (docs/fsi.md)
+};
+
+/// The results of a run, in the order of summary.json. Results marked "(in air)" are set
+/// only for runs in air, "error" only for failed runs.
+inline constexpr auto kRunResults = [] {
+  using K = ResultKind;
+  return std::array{
+      // The case and the setup, known before the first step.
+      ResultDefinition{"case", "", K::text, "", "", "name of the case"},
+      ResultDefinition{"structure", "", K::text, "", "",
+                       "where the structure came from: rigid wing, chain file, or the wing reduced in process"},
+      ResultDefinition{"air", "", K::flag, "", "", "true: in air (vortex lattice); false: in vacuum"},
+      ResultDefinition{"frequency_hz", "Hz", K::number, "%.6g", "", "flapping frequency f"},
+      ResultDefinition{"rotation_phase", "", K::number, "%.4f", "",
+                       "the case's rotation phase δψ, fraction of the period"},
+      ResultDefinition{"steps_per_cycle", "", K::integer, "", "", "time steps per flapping cycle"},
+      ResultDefinition{"cycles", "", K::integer, "", "", "flapping cycles of the case"},
+      ResultDefinition{"dt_s", "s", K::number, "%.6g", "", "time step"},
+      ResultDefinition{"bodies", "", K::integer, "", "", "bodies of the chain (1: rigid wing)"},
+      ResultDefinition{"spring_scale", "", K::number, "%.6g", "",
+                       "factor on every joint spring (flapsim run --spring-scale)"},
+      ResultDefinition{"reference_area_m2", "m^2", K::number, "%.6g", "",
+                       "S of CL: planform area of the outline (in air)"},
+      ResultDefinition{"reference_speed_m_s", "m/s", K::number, "%.6g", "",
+                       "U_ref of CL: cycle-mean speed of the span axis at r2·R (in air)"},
+      ResultDefinition{"r2", "", K::number, "%.4f", "",
+                       "non-dimensional radius of gyration of the outline's area (in air)"},
+      // How the run ended.
+      ResultDefinition{"error", "", K::text, "", "", "the numerical failure that stopped the run (failed runs)"},
+      ResultDefinition{"status", "", K::text, "", "", "\"ok\", or \"failed\" (exit status 3)"},
+      ResultDefinition{"steps", "", K::integer, "", "", "time steps completed"},
+      ResultDefinition{"time_s", "s", K::number, "%.6g", "", "simulated time reached"},
+      // Loads: means over the last cycle (or what was run, if less), trapezoidal rule.
+      ResultDefinition{"mean_lift_N", "N", K::number, "%.6g", "mean lift",
+                       "mean lift (ground +z of the aerodynamic force) over the last cycle"},
+      ResultDefinition{"mean_CL", "", K::number, "%.4f", "mean CL",
+                       "mean lift coefficient L / (½ ρ U_ref² S) over the last cycle"},
+      ResultDefinition{"mean_Fx_N", "N", K::number, "%.6g", "", "mean aerodynamic force, ground x, last cycle"},
+      ResultDefinition{"mean_Fy_N", "N", K::number, "%.6g", "", "mean aerodynamic force, ground y, last cycle"},
+      ResultDefinition{"mean_Fz_N", "N", K::number, "%.6g", "", "mean aerodynamic force, ground z, last cycle"},
+      // Rotation phases and lags over the last cycle, fractions of the period (docs/fsi.md).
+      ResultDefinition{"base_rotation_phase", "", K::number, "%.4f", "",
+                       "rotation phase of the base measured from its angles (reproduces the case's δψ)"},
+      ResultDefinition{"tip_rotation_phase", "", K::number, "%.4f", "tip phase",
+                       "rotation phase of the tip body: its α = 90° crossing minus its stroke reversal"},
+      ResultDefinition{"tip_rotation_lag", "", K::number, "%.4f", "tip lag",
+                       "tip's α = 90° crossings minus the base's (negative: the tip rotates earlier)"},
+      ResultDefinition{"tip_sweep_lag", "", K::number, "%.4f", "",
+                       "tip's φ crossings of the base's mean φ minus the base's"},
+      ResultDefinition{"outer_body", "", K::integer, "", "",
+                       "the body holding 5/6 of the chain length (1-based), the 'outer' section"},
+      ResultDefinition{"outer_rotation_phase", "", K::number, "%.4f", "outer phase",
+                       "rotation phase of the outer body"},
+      ResultDefinition{"outer_rotation_lag", "", K::number, "%.4f", "outer lag",
+                       "outer body's α = 90° crossings minus the base's"},
+      // The numerics.
+      ResultDefinition{"mean_coupling_iterations", "", K::number, "%.2f", "iterations",
+                       "lattice solves per step, mean over the run"},
+      ResultDefinition{"max_coupling_iterations", "", K::integer, "", "", "lattice solves of the hardest step"},
+      ResultDefinition{"coupling_tolerance_rad", "rad", K::number, "%.3g", "",
+                       "convergence tolerance of the coupling sub-iterations"},
+      ResultDefinition{"wake_panels", "", K::integer, "", "", "wake panels at the end of the run (in air)"},
+      ResultDefinition{"wall_time_s", "s", K::number, "%.1f", "wall time", "wall-clock time of the run"},
+  };
+}();
+
+/// The values of a run's results, by their place in kRunResults.
+class RunResults {
+ public:
+  using Value = std::variant<double, std::int64_t, std::string, bool>;
+
+  /// A result's place in kRunResults, found at compile time: a key that is not defined
+  /// there does not compile (`results.set("mean_lift_N", x)`).
+  class Key {
+   public:
+    consteval Key(const char* key) : index_(find(key)) {}  // NOLINT: implicit on purpose
+    std::size_t index() const { return index_; }
+
+   private:
+    static consteval std::size_t find(std::string_view key) {
+      for (std::size_t i = 0; i < kRunResults.size(); ++i)
+        if (kRunResults[i].key == key) return i;
+      throw std::logic_error("not a result of kRunResults");  // a compile error in a consteval call
+    }
+    std::size_t index_;
+  };
+
+  RunResults() : values_(kRunResults.size()) {}
+
+  /// \throws std::logic_error if the value does not have the result's kind
+  void set(Key key, double value);
+  template <std::integral T>
+    requires(!std::same_as<T, bool>)
+  void set(Key key, T value) {
+    put(key.index(), ResultKind::integer, Value(static_cast<std::int64_t>(value)));
+  }
+  void set(Key key, std::string value);
+  void set(Key key, const char* value) { set(key, std::string(value)); }
+  void set(Key key, bool value);
+
+  bool has(Key key) const { return values_[key.index()].has_value(); }
+  /// The number (NaN if not set).
+  double number(Key key) const;
+  /// The integer (0 if not set).
+  std::int64_t integer(Key key) const;
+  /// The text ("" if not set).
+  std::string text(Key key) const;
+
+  /// The value of the i-th result of kRunResults, if set.
+  const std::optional<Value>& at(std::size_t i) const { return values_.at(i); }
+
+ private:
+  void put(std::size_t index, ResultKind kind, Value value);
+  std::vector<std::optional<Value>> values_;
+};
+
+/// \brief summary.json: every result that is set, in the order of kRunResults.
+io::SummaryJson summary_json(const RunResults& results);
+
+/// One line of the report `flapsim run` prints. {key} is replaced by the value of the
+/// result `key` in its print format, followed by its unit.
+struct ReportLine {
+  std::string_view text;
+  bool (*shown)(const RunResults&) = nullptr;  ///< nullptr: always shown
+};
+
+inline constexpr std::array kRunReport = {
+    ReportLine{"case {case}: {structure}"},
+    ReportLine{"mean lift (last cycle) {mean_lift_N}, mean CL {mean_CL}"},
+    ReportLine{"coupling: {mean_coupling_iterations} sub-iterations per step on average "
+               "(max {max_coupling_iterations})",
+               [](const RunResults& r) { return r.integer("max_coupling_iterations") > 1; }},
+    ReportLine{"rotation phase: base {base_rotation_phase}, tip {tip_rotation_phase}; "
+               "tip alpha lag {tip_rotation_lag} of the period"},
+};
+
+/// \brief The report: the shown lines of kRunReport, each ending with a newline.
+/// \throws std::logic_error on a placeholder that names no result
+std::string run_report(const RunResults& results);
+
+/// \brief One result's value as text: a number in its print format, an integer, the
+/// text, true/false; "-" if not set. No unit.
+std::string format_result(const RunResults& results, std::size_t index);
+
+/// \brief The results that are columns of a sweep (a sweep_label), in order.
+std::vector<std::size_t> sweep_results();
+
+/// \brief Their sweep.csv cells: numbers in shortest round-trip form, "nan" if not set.
+std::vector<std::string> sweep_cells(const RunResults& results);
+
+}  // namespace flapsim::app
