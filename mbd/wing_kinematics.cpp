@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 
 namespace flapsim::mbd {
@@ -31,6 +32,18 @@ Eigen::Matrix3d rotation_z(double angle) {
        s, c, 0,
        0, 0, 1;
   return R;
+}
+
+Eigen::Matrix3d stroke_rotation(const StrokeAngles& a) {
+  return rotation_z(a.sweep) * rotation_x(a.deviation) * rotation_y(-a.rotation);
+}
+
+StrokeAngles stroke_angles(const Eigen::Matrix3d& r) {
+  StrokeAngles a;
+  a.deviation = std::asin(std::clamp(r(2, 1), -1.0, 1.0));
+  a.sweep = std::atan2(-r(0, 1), r(1, 1));
+  a.rotation = std::atan2(r(2, 0), r(2, 2));
+  return a;
 }
 
 namespace {
@@ -79,7 +92,7 @@ BasePose WingKinematics::pose(double t) const {
                                    a.rotation.acceleration * a3 + dtheta * da2 - dalpha * da3;
 
   BasePose p;
-  p.rotation = R_GS * RzRx * rotation_y(-alpha);
+  p.rotation = R_GS * stroke_rotation({phi, theta, alpha});
   p.angular_velocity = R_GS * omega_S;  // S does not rotate relative to G
   p.angular_acceleration = R_GS * domega_S;
   return p;

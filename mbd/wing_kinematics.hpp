@@ -37,6 +37,22 @@ struct WingKinematics {
   BasePose pose(double t) const;
 };
 
+/// The Euler angles of the convention [rad]: φ (sweep), θ (deviation), α (rotation).
+struct StrokeAngles {
+  double sweep = 0.0;      ///< φ [rad]
+  double deviation = 0.0;  ///< θ [rad]
+  double rotation = 0.0;   ///< α [rad]
+};
+
+/// \brief The stroke rotation R_SW = Rz(φ) · Rx(θ) · Ry(−α) of given angles: the wing
+/// frame W in the stroke-plane frame S (WingKinematics::pose is R_GS times this).
+Eigen::Matrix3d stroke_rotation(const StrokeAngles& angles);
+
+/// \brief The inverse of stroke_rotation: the angles of a rotation R_SW,
+///   θ = asin(R₂₁), φ = atan2(−R₀₁, R₁₁), α = atan2(R₂₀, R₂₂)
+/// (unique for |θ| < 90°; angles in (−180°, 180°]).
+StrokeAngles stroke_angles(const Eigen::Matrix3d& rotation_sw);
+
 /// The base motion the multibody stage follows.
 BaseMotion make_base_motion(const WingKinematics& kinematics);
 

@@ -277,8 +277,7 @@ std::string TomlTable::get_string(std::string_view key, std::string_view fallbac
   return has(key) ? get_string(key) : std::string(fallback);
 }
 
-std::string TomlTable::get_choice(std::string_view key,
-                                  std::initializer_list<std::string_view> choices,
+std::string TomlTable::get_choice(std::string_view key, std::span<const std::string_view> choices,
                                   std::string_view fallback) const {
   std::string list;
   for (auto c : choices) list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";

@@ -25,15 +25,27 @@
 
 #include <Eigen/Core>
 
+#include <array>
+#include <cstddef>
 #include <initializer_list>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 namespace flapsim::wings {
+
+/// The name of `value` in a table of (name, value) choices ("?" if it has none): the
+/// inverse of TomlTable::get_choice with such a table.
+template <typename E, std::size_t N>
+std::string_view choice_name(const std::array<std::pair<std::string_view, E>, N>& names, E value) {
+  for (const auto& [name, v] : names)
+    if (v == value) return name;
+  return "?";
+}
 
 /// Allowed interval of a number; open or closed at each end.
 struct Bounds {
@@ -101,8 +113,28 @@ class TomlTable {
   std::string get_string(std::string_view key) const;
   std::string get_string(std::string_view key, std::string_view fallback) const;
   /// String that must be one of `choices`; missing: `fallback` (if non-empty) else error.
-  std::string get_choice(std::string_view key, std::initializer_list<std::string_view> choices,
+  std::string get_choice(std::string_view key, std::span<const std::string_view> choices,
                          std::string_view fallback = {}) const;
+  std::string get_choice(std::string_view key, std::initializer_list<std::string_view> choices,
+                         std::string_view fallback = {}) const {
+    return get_choice(key, std::span<const std::string_view>(choices.begin(), choices.size()), fallback);
+  }
+  /// A choice as an enum value: `names` pairs each accepted string with its value;
+  /// missing: `fallback` if given, else an error.
+  template <typename E, std::size_t N>
+  E get_choice(std::string_view key, const std::array<std::pair<std::string_view, E>, N>& names,
+               std::optional<E> fallback = std::nullopt) const {
+    std::array<std::string_view, N> choices;
+    std::string_view fallback_name;
+    for (std::size_t i = 0; i < N; ++i) {
+      choices[i] = names[i].first;
+      if (fallback && names[i].second == *fallback) fallback_name = names[i].first;
+    }
+    const std::string v = get_choice(key, std::span<const std::string_view>(choices), fallback_name);
+    for (const auto& [name, value] : names)
+      if (name == v) return value;
+    return names[0].second;  // not reached: get_choice accepts only the names
+  }
 
   bool get_bool(std::string_view key) const;
   bool get_bool(std::string_view key, bool fallback) const;

@@ -52,7 +52,7 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, int ste
   uvlm::VortexLatticeModel m;
   m.chordwise = c.numerics.chordwise_panels;
   m.spanwise = c.numerics.spanwise_panels;
-  m.core.model = c.numerics.core_model == "cutoff" ? uvlm::CoreModel::CutOff : uvlm::CoreModel::LambOseen;
+  m.core.model = c.numerics.core_model;
   m.core.radius = c.numerics.core_radius * mean_chord;
   m.wake_model = c.numerics.free_wake ? uvlm::WakeModel::Free : uvlm::WakeModel::Prescribed;
   m.wake_integrator = c.numerics.wake_order == 2 ? uvlm::WakeIntegrator::AdamsBashforth2
@@ -75,9 +75,8 @@ ExternalLoads point_loads(const Case& c) {
         force(i) = l.force[i].at_phase(s).value;
         moment(i) = l.moment[i].at_phase(s).value;
       }
-      const auto frame = l.ground_frame ? mbd::LoadFrame::ground : mbd::LoadFrame::body;
-      out.add_force(l.body - 1, l.point, force, frame);
-      out.add_moment(l.body - 1, moment, frame);
+      out.add_force(l.body - 1, l.point, force, l.frame);
+      out.add_moment(l.body - 1, moment, l.frame);
     }
   };
 }
@@ -139,9 +138,8 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
     uvlm::PlanformGridOptions g;
     g.chordwise = c.numerics.chordwise_panels;
     g.spanwise = c.numerics.spanwise_panels;
-    const uvlm::Spacing spacing = c.numerics.spacing == "cosine" ? uvlm::Spacing::Cosine : uvlm::Spacing::Uniform;
-    g.chordwise_spacing = spacing;
-    g.spanwise_spacing = spacing;
+    g.chordwise_spacing = c.numerics.spacing;
+    g.spanwise_spacing = c.numerics.spacing;
     s.grid = uvlm::make_planform_grid(s.wing->outline, g);
     m.lattice = lattice_model(c, p.mean_chord, s.steps);
     m.attachment = fsi::attach_wing(m.chain, s.grid->nodes, g.chordwise, g.spanwise);

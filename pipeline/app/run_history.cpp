@@ -1,14 +1,11 @@
 #include "pipeline/app/run_history.hpp"
 
-#include <numbers>
-
+#include "mbd/angle_units.hpp"
 #include "mbd/chain_kinematics.hpp"
 
 namespace flapsim::app {
 
 namespace {
-
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 // The columns every run writes. A column is a name (unit as a suffix), a description and
 // how it is computed from the step's sample.

@@ -25,8 +25,8 @@ namespace flapsim::app {
 struct StepSample {
   double time = 0.0;                 ///< t [s]
   mbd::WingKinematics::Angles base;  ///< prescribed base angles φ, θ, α [rad] and their rates
-  fsi::EulerAngles tip;              ///< last body, relative to the undeformed chain [rad]
-  fsi::EulerAngles outer;            ///< the outer body (fsi::outer_body) [rad]
+  mbd::StrokeAngles tip;            ///< last body, relative to the undeformed chain [rad]
+  mbd::StrokeAngles outer;          ///< the outer body (fsi::outer_body) [rad]
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< total aerodynamic force, ground [N]
   double lift = 0.0;                 ///< ground +z of the force [N]
   double cl = 0.0;                   ///< lift coefficient [-] (0 in vacuum)

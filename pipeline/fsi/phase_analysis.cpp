@@ -4,31 +4,15 @@
 #include <cmath>
 #include <limits>
 
-#include "mbd/wing_kinematics.hpp"
 #include "pipeline/fsi/wing_attachment.hpp"
 
 namespace flapsim::fsi {
 
-EulerAngles euler_angles(const Eigen::Matrix3d& r) {
-  EulerAngles a;
-  a.deviation = std::asin(std::clamp(r(2, 1), -1.0, 1.0));
-  a.sweep = std::atan2(-r(0, 1), r(1, 1));
-  a.rotation = std::atan2(r(2, 0), r(2, 2));
-  return a;
-}
-
-Eigen::Matrix3d euler_rotation(const EulerAngles& e) {
-  return (Eigen::AngleAxisd(e.sweep, Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(e.deviation, Eigen::Vector3d::UnitX()) *
-          Eigen::AngleAxisd(-e.rotation, Eigen::Vector3d::UnitY()))
-      .toRotationMatrix();
-}
-
-EulerAngles body_angles(const mbd::ChainModel& chain, const mbd::ChainData& data,
+mbd::StrokeAngles body_angles(const mbd::ChainModel& chain, const mbd::ChainData& data,
                         double stroke_plane_angle, int body) {
   const Eigen::Matrix3d r_gs = mbd::rotation_y(stroke_plane_angle);
   const Eigen::Matrix3d& r_gb = data.bodies[static_cast<std::size_t>(body)].rotation;
-  return euler_angles(r_gs.transpose() * r_gb * chain.root_rotation.transpose());
+  return mbd::stroke_angles(r_gs.transpose() * r_gb * chain.root_rotation.transpose());
 }
 
 int outer_body(const mbd::ChainModel& chain) {

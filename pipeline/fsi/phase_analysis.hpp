@@ -4,40 +4,29 @@
 /// angles of a body in the stroke-plane frame, cycle means, and the rotation phase of
 /// base and tip from the α = 90° crossings (the paper's point A, Fig. 10).
 ///
-/// Euler angles use the base convention R_SW = Rz(φ) · Rx(θ) · Ry(−α) (docs/kinematics.md):
-///   θ = asin(R₂₁), φ = atan2(−R₀₁, R₁₁), α = atan2(R₂₀, R₂₂).
+/// Euler angles are those of the base convention R_SW = Rz(φ) · Rx(θ) · Ry(−α)
+/// (mbd::stroke_rotation and its inverse mbd::stroke_angles, docs/kinematics.md).
 /// For a body of the chain the frame compared is R_GS^T R_GB R_WR^T: the body's rotation
 /// relative to the chain's undeformed orientation, so the tip's angles equal the base's
 /// when the wing does not deform.
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
+#include <Eigen/Core>
 
 #include <optional>
 #include <vector>
 
 #include "mbd/chain_data.hpp"
 #include "mbd/chain_model.hpp"
+#include "mbd/wing_kinematics.hpp"
 
 namespace flapsim::fsi {
-
-struct EulerAngles {
-  double sweep = 0.0;      ///< φ [rad]
-  double deviation = 0.0;  ///< θ [rad]
-  double rotation = 0.0;   ///< α [rad]
-};
-
-/// \brief Euler angles of a rotation R_SW (stroke-plane frame ← wing-like frame).
-EulerAngles euler_angles(const Eigen::Matrix3d& rotation_sw);
-
-/// \brief Rotation matrix Rz(φ) · Rx(θ) · Ry(−α) of given angles (the inverse of euler_angles).
-Eigen::Matrix3d euler_rotation(const EulerAngles& angles);
 
 /// \brief Euler angles of body \p body (0-based) of the chain relative to the chain's
 /// undeformed orientation, in the stroke-plane frame: euler_angles(R_GSᵀ R_GB R_WRᵀ) with
 /// R_GS = Ry(β). They equal the base's angles when the wing does not deform.
 /// \param stroke_plane_angle  β [rad]
-EulerAngles body_angles(const mbd::ChainModel& chain, const mbd::ChainData& data,
+mbd::StrokeAngles body_angles(const mbd::ChainModel& chain, const mbd::ChainData& data,
                         double stroke_plane_angle, int body);
 
 /// \brief The "outer" body (0-based): the one holding the point at 5/6 of the chain's

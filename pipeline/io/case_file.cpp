@@ -1,9 +1,10 @@
 #include "pipeline/io/case_file.hpp"
 
 #include <filesystem>
-#include <numbers>
+#include <optional>
 #include <stdexcept>
 
+#include "mbd/angle_units.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::io {
@@ -12,8 +13,6 @@ using wings::Bounds;
 using wings::TomlTable;
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::string existing_file(const TomlTable& t, std::string_view key) {
   const std::string path = t.get_path(key);
@@ -29,13 +28,13 @@ mbd::WingKinematics read_kinematics(const TomlTable& k) {
   mbd::WingKinematics kin;
   kin.frequency = k.get_double("frequency_hz", Bounds::positive());
   kin.rotation_phase = k.get_double("rotation_phase", 0.0, Bounds::closed(-1.0, 1.0));
-  kin.stroke_plane_angle = k.get_double("stroke_plane_deg", 0.0, Bounds::closed(-180.0, 180.0)) * kDeg;
+  kin.stroke_plane_angle = k.get_double("stroke_plane_deg", 0.0, Bounds::closed(-180.0, 180.0)) * kDegToRad;
   if (!k.has("sweep")) k.fail("sweep", "missing required key (the sweep angle signal)");
   if (!k.has("rotation")) k.fail("rotation", "missing required key (the rotation angle signal)");
   const mbd::PeriodicSignal zero;
-  kin.sweep = read_periodic_signal(k, "sweep", "_deg", "deg", kDeg, zero);
-  kin.deviation = read_periodic_signal(k, "deviation", "_deg", "deg", kDeg, zero);
-  kin.rotation = read_periodic_signal(k, "rotation", "_deg", "deg", kDeg, zero);
+  kin.sweep = read_periodic_signal(k, "sweep", "_deg", "deg", kDegToRad, zero);
+  kin.deviation = read_periodic_signal(k, "deviation", "_deg", "deg", kDegToRad, zero);
+  kin.rotation = read_periodic_signal(k, "rotation", "_deg", "deg", kDegToRad, zero);
   return kin;
 }
 
@@ -63,14 +62,11 @@ Case::Structure read_structure(const TomlTable& root) {
   Case::Structure s;
   const TomlTable t = root.get_table("structure");
   t.expect_only({"kind", "bodies"});
-  const std::string kind = t.get_choice("kind", {"rigid", "flexible"});
-  if (kind == "rigid") {
-    s.kind = Case::Structure::Kind::Rigid;
+  s.kind = t.get_choice("kind", kStructureKindNames);
+  if (s.kind == Case::Structure::Kind::Rigid)
     s.bodies = t.get_int("bodies", 1, Bounds::closed(1, 1));
-  } else {
-    s.kind = Case::Structure::Kind::Flexible;
+  else
     s.bodies = t.get_int("bodies", Bounds::closed(2, 1000));
-  }
   return s;
 }
 
@@ -85,8 +81,8 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
   n.chordwise_panels = t->get_int("chordwise_panels", n.chordwise_panels, Bounds::closed(1, 1000));
   n.spanwise_panels = t->get_int("spanwise_panels", n.spanwise_panels, Bounds::closed(1, 1000));
-  n.spacing = t->get_choice("spacing", {"uniform", "cosine"}, n.spacing);
-  n.core_model = t->get_choice("core_model", {"cutoff", "lamb_oseen"}, n.core_model);
+  n.spacing = t->get_choice("spacing", kSpacingNames, std::optional(n.spacing));
+  n.core_model = t->get_choice("core_model", kCoreModelNames, std::optional(n.core_model));
   n.core_radius = t->get_double("core_radius", n.core_radius, Bounds{0.0, 1.0, true, false});
   n.wake_order = t->get_int("wake_order", n.wake_order, Bounds::closed(1, 2));
   n.wake_max_rows = t->get_int("wake_max_rows", n.wake_max_rows, Bounds::non_negative());
@@ -108,7 +104,7 @@ PointLoad read_load(const TomlTable& t, int bodies) {
   PointLoad load;
   load.body = read_body(t, bodies);
   load.point = t.get_length_vector3("point", Eigen::Vector3d::Zero());
-  load.ground_frame = t.get_choice("frame", {"ground", "body"}) == "ground";
+  load.frame = t.get_choice("frame", kLoadFrameNames);
   const mbd::PeriodicSignal zero;
   const char* forces[3] = {"force_x", "force_y", "force_z"};
   const char* moments[3] = {"moment_x", "moment_y", "moment_z"};

@@ -1,8 +1,6 @@
 #pragma once
 /// \file case_file.hpp
 /// \brief Reading case files (docs/case_file.md) and periodic signals from TOML.
-/// load_case_file itself is declared in case_model.hpp; this header adds the pieces
-/// other readers (chain files, sweeps) reuse.
 
 #include <string>
 #include <string_view>
@@ -14,6 +12,11 @@
 #include "wings/toml_reader.hpp"
 
 namespace flapsim::io {
+
+/// Reads and checks a case file.
+/// \param path case file (TOML); wing and chain paths inside resolve against its folder
+/// \throws flapsim::InputError naming file, line and key for any bad input
+Case load_case_file(const std::string& path);
 
 /// Reads a case from an already parsed TOML document (top-level table); paths resolve
 /// against the document's folder.

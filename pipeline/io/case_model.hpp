@@ -7,11 +7,17 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
+#include "mbd/chain_loads.hpp"
 #include "mbd/periodic_signal.hpp"
 #include "mbd/wing_kinematics.hpp"
+#include "uvlm/planform_grid.hpp"
+#include "uvlm/vortex_core.hpp"
 
 namespace flapsim::io {
 
@@ -19,7 +25,7 @@ namespace flapsim::io {
 struct PointLoad {
   int body = 1;                                  ///< 1-based body index in the chain
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< application point [m], body frame
-  bool ground_frame = true;  ///< components in the ground frame (true) or the body frame
+  mbd::LoadFrame frame = mbd::LoadFrame::ground;  ///< frame of the components ("ground" | "body")
   mbd::PeriodicSignal force[3];   ///< [N] as functions of the phase s = f·t
   mbd::PeriodicSignal moment[3];  ///< [N m] as functions of the phase s = f·t
 };
@@ -56,8 +62,8 @@ struct Case {
     int cycles = 3;
     int chordwise_panels = 6;
     int spanwise_panels = 10;
-    std::string spacing = "uniform";        ///< panel spacing: "uniform" | "cosine"
-    std::string core_model = "lamb_oseen";  ///< vortex core: "cutoff" | "lamb_oseen"
+    uvlm::Spacing spacing = uvlm::Spacing::Uniform;           ///< panel spacing: "uniform" | "cosine"
+    uvlm::CoreModel core_model = uvlm::CoreModel::LambOseen;  ///< vortex core: "cutoff" | "lamb_oseen"
     double core_radius = 0.05;              ///< core radius as a fraction of the mean chord
     int wake_order = 1;                     ///< 1 | 2 (wake convection order)
     int wake_max_rows = 0;                  ///< 0 = keep all wake rows
@@ -74,9 +80,15 @@ struct Case {
   std::vector<Marker> markers;
 };
 
-/// Reads and checks a case file.
-/// \param path case file (TOML); wing and chain paths inside resolve against its folder
-/// \throws flapsim::InputError naming file, line and key for any bad input
-Case load_case_file(const std::string& path);
+/// The names the case file gives the choices above, each with its value
+/// (wings::TomlTable::get_choice reads them, wings::choice_name names a value).
+inline constexpr std::array<std::pair<std::string_view, Case::Structure::Kind>, 2> kStructureKindNames{
+    {{"rigid", Case::Structure::Kind::Rigid}, {"flexible", Case::Structure::Kind::Flexible}}};
+inline constexpr std::array<std::pair<std::string_view, uvlm::Spacing>, 2> kSpacingNames{
+    {{"uniform", uvlm::Spacing::Uniform}, {"cosine", uvlm::Spacing::Cosine}}};
+inline constexpr std::array<std::pair<std::string_view, uvlm::CoreModel>, 2> kCoreModelNames{
+    {{"cutoff", uvlm::CoreModel::CutOff}, {"lamb_oseen", uvlm::CoreModel::LambOseen}}};
+inline constexpr std::array<std::pair<std::string_view, mbd::LoadFrame>, 2> kLoadFrameNames{
+    {{"ground", mbd::LoadFrame::ground}, {"body", mbd::LoadFrame::body}}};
 
 }  // namespace flapsim::io

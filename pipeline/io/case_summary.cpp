@@ -4,11 +4,12 @@
 #include <cstdio>
 #include <numbers>
 
+#include "mbd/angle_units.hpp"
+#include "wings/toml_reader.hpp"
+
 namespace flapsim::io {
 
 namespace {
-
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 template <typename... Args>
 std::string line(const char* format, Args... args) {
@@ -60,8 +61,9 @@ std::string describe_case(const Case& c) {
   s += line("  time steps             %d per cycle x %d cycles = %d (dt = %.4g ms)", n.steps_per_cycle,
             n.cycles, n.steps_per_cycle * n.cycles, 1e3 / (k.frequency * n.steps_per_cycle));
   s += line("  panels                 %d chordwise x %d spanwise (%s)", n.chordwise_panels,
-            n.spanwise_panels, n.spacing.c_str());
-  s += line("  vortex core            %s, radius %.4g mean chords", n.core_model.c_str(), n.core_radius);
+            n.spanwise_panels, std::string(wings::choice_name(kSpacingNames, n.spacing)).c_str());
+  s += line("  vortex core            %s, radius %.4g mean chords",
+            std::string(wings::choice_name(kCoreModelNames, n.core_model)).c_str(), n.core_radius);
   s += line("  wake                   %s, order %d, %s", n.free_wake ? "free" : "prescribed", n.wake_order,
             n.wake_max_rows > 0 ? (std::to_string(n.wake_max_rows) + " rows kept").c_str()
                                 : "all rows kept");

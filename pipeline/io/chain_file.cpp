@@ -5,6 +5,7 @@
 #include "wings/input_error.hpp"
 #include "wings/toml_reader.hpp"
 
+#include <array>
 #include <sstream>
 #include <stdexcept>
 
@@ -14,6 +15,9 @@ namespace {
 
 using wings::Bounds;
 using wings::TomlTable;
+
+constexpr std::array<std::pair<std::string_view, mbd::RootAttachment>, 2> kRootNames{
+    {{"rigid", mbd::RootAttachment::rigid}, {"sprung", mbd::RootAttachment::sprung}}};
 
 Eigen::Matrix3d read_matrix3(const TomlTable& t, std::string_view key, double scale) {
   const auto rows = t.get_number_rows(key, 3, 3);
@@ -29,8 +33,7 @@ mbd::ChainModel parse_chain(const TomlTable& root) {
                     "description"});
   root.read_length_unit();
   mbd::ChainModel chain;
-  chain.root = root.get_choice("root", {"rigid", "sprung"}) == "sprung" ? mbd::RootAttachment::sprung
-                                                                         : mbd::RootAttachment::rigid;
+  chain.root = root.get_choice("root", kRootNames);
   chain.root_offset = root.get_length_vector3("root_offset", Eigen::Vector3d::Zero());
   if (root.has("root_rotation")) chain.root_rotation = read_matrix3(root, "root_rotation", 1.0);
   const auto bodies = root.get_tables("bodies", 1);
@@ -108,7 +111,7 @@ std::string format_chain_file(const mbd::ChainModel& chain) {
     << "# Body frame: origin at the inboard joint, y along the body, x toward the leading edge.\n"
     << "# Joint k: R = Rx(bend) * Ry(twist); inertia about the centre of mass, body axes.\n"
     << "length_unit = \"m\"\n"
-    << "root = \"" << (chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid") << "\"\n"
+    << "root = \"" << wings::choice_name(kRootNames, chain.root) << "\"\n"
     << "root_offset = " << vec3(chain.root_offset) << "\n"
     << "root_rotation = " << mat3(chain.root_rotation) << "   # R_WR, row by row\n";
   for (int k = 0; k < chain.num_bodies(); ++k) {

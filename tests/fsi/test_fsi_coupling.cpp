@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "mbd/angle_units.hpp"
 #include "mbd/chain_kinematics.hpp"
 #include "mbd/chain_model.hpp"
 #include "mbd/wing_kinematics.hpp"
@@ -20,7 +21,6 @@ namespace {
 
 using namespace flapsim;
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
 
 // A flat rectangular wing, chord 10 mm, span 40 mm, leading edge at x = 2.5 mm (the
 // flat plate of wings/flat_plate.toml), as a lattice grid in the wing frame.
@@ -41,7 +41,7 @@ mbd::ChainModel test_chain(int n, double stiffness) {
     j.bend_stiffness *= stiffness;
     j.twist_stiffness *= stiffness;
   }
-  c.root_rotation = mbd::rotation_z(5.0 * kDeg);
+  c.root_rotation = mbd::rotation_z(5.0 * kDegToRad);
   c.root_offset = Eigen::Vector3d(0.0005, 0.0, 0.0);
   return c;
 }
@@ -51,9 +51,9 @@ mbd::WingKinematics eq8_kinematics(double rotation_phase) {
   mbd::WingKinematics k;
   k.frequency = 26.1;
   k.rotation_phase = rotation_phase;
-  k.sweep = mbd::PeriodicSignal::harmonic(10.0 * kDeg, {50.0 * kDeg}, {});
+  k.sweep = mbd::PeriodicSignal::harmonic(10.0 * kDegToRad, {50.0 * kDegToRad}, {});
   k.deviation = mbd::PeriodicSignal::harmonic(0.0, {}, {});
-  k.rotation = mbd::PeriodicSignal::harmonic(90.0 * kDeg, {}, {-45.0 * kDeg});
+  k.rotation = mbd::PeriodicSignal::harmonic(90.0 * kDegToRad, {}, {-45.0 * kDegToRad});
   return k;
 }
 

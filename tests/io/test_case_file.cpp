@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include "mbd/angle_units.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/case_summary.hpp"
@@ -18,7 +19,7 @@ using flapsim::InputError;
 namespace {
 
 const std::string kSource = FLAPSIM_SOURCE_DIR;
-constexpr double kDeg = std::numbers::pi / 180.0;
+using flapsim::kDegToRad;
 
 // Case text placed (virtually) in tests/data/, next to valid_tiny_wing.toml.
 p::Case case_from_text(const std::string& text) {
@@ -62,13 +63,13 @@ TEST(CaseFile, HoverCaseIsEquation8) {
   const double f = 26.1;
   for (double s : {0.0, 0.1, 0.25, 0.6, 0.75}) {
     const auto a = c.kinematics.angles(s / f);
-    EXPECT_NEAR(a.sweep.value, (10.0 + 50.0 * std::cos(2 * std::numbers::pi * s)) * kDeg, 1e-12);
-    EXPECT_NEAR(a.rotation.value, (90.0 - 45.0 * std::sin(2 * std::numbers::pi * s)) * kDeg, 1e-12);
+    EXPECT_NEAR(a.sweep.value, (10.0 + 50.0 * std::cos(2 * std::numbers::pi * s)) * kDegToRad, 1e-12);
+    EXPECT_NEAR(a.rotation.value, (90.0 - 45.0 * std::sin(2 * std::numbers::pi * s)) * kDegToRad, 1e-12);
     EXPECT_NEAR(a.deviation.value, 0.0, 1e-15);
   }
   // DESIGN.md: geometric angle of attack 45° at mid-downstroke and at mid-upstroke.
-  EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.25 / f)), 45.0 * kDeg, 1e-12);
-  EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.75 / f)), 45.0 * kDeg, 1e-12);
+  EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.25 / f)), 45.0 * kDegToRad, 1e-12);
+  EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.75 / f)), 45.0 * kDegToRad, 1e-12);
   EXPECT_FALSE(p::geometric_angle_of_attack(c.kinematics.angles(0.0)));  // stroke reversal
 }
 
@@ -81,13 +82,13 @@ TEST(CaseFile, DefaultsWhenSectionsAreOmitted) {
   EXPECT_EQ(c.numerics.cycles, 3);
   EXPECT_EQ(c.numerics.chordwise_panels, 6);
   EXPECT_EQ(c.numerics.spanwise_panels, 10);
-  EXPECT_EQ(c.numerics.core_model, "lamb_oseen");
+  EXPECT_EQ(c.numerics.core_model, flapsim::uvlm::CoreModel::LambOseen);
   EXPECT_EQ(c.numerics.wake_order, 1);
   EXPECT_TRUE(c.numerics.free_wake);
   EXPECT_DOUBLE_EQ(c.air.density, 1.225);
   EXPECT_TRUE(c.air.freestream.isZero());
   // Eq. 7 in the DESIGN.md convention: α = 90° − 60° sin 2πft → AoA 30° at mid-downstroke.
-  EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.25 / 20.0)), 30.0 * kDeg, 1e-12);
+  EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.25 / 20.0)), 30.0 * kDegToRad, 1e-12);
 }
 
 TEST(CaseFile, TabulatedAndConstantSignalsVacuumLoadsMarkers) {
@@ -109,11 +110,11 @@ TEST(CaseFile, TabulatedAndConstantSignalsVacuumLoadsMarkers) {
       "body = 1\n"
       "point = [0.0, 10.0, 0.0]\n");
   // The spline passes through its knots (deg → rad).
-  EXPECT_NEAR(c.kinematics.deviation.at_phase(0.25).value, 5.0 * kDeg, 1e-12);
-  EXPECT_NEAR(c.kinematics.deviation.at_phase(0.75).value, -5.0 * kDeg, 1e-12);
+  EXPECT_NEAR(c.kinematics.deviation.at_phase(0.25).value, 5.0 * kDegToRad, 1e-12);
+  EXPECT_NEAR(c.kinematics.deviation.at_phase(0.75).value, -5.0 * kDegToRad, 1e-12);
   EXPECT_DOUBLE_EQ(c.air.freestream.x(), 1.5);
   ASSERT_EQ(c.loads.size(), 1u);
-  EXPECT_FALSE(c.loads[0].ground_frame);
+  EXPECT_EQ(c.loads[0].frame, flapsim::mbd::LoadFrame::body);
   EXPECT_NEAR(c.loads[0].point.y(), 0.01, 1e-15);  // 10 mm
   EXPECT_NEAR(c.loads[0].force[2].at_phase(0.25).value, 0.003, 1e-15);
   EXPECT_NEAR(c.loads[0].moment[0].at_phase(0.3).value, 0.5, 1e-15);
@@ -172,12 +173,12 @@ TEST(CaseFile, OverridesForSweeps) {
                                              {"kinematics.sweep.cos_deg", "[40.0]"},
                                              {"output.vtk_every", "0"}});
   EXPECT_DOUBLE_EQ(c.kinematics.rotation_phase, -0.1);
-  EXPECT_EQ(c.numerics.spacing, "cosine");
+  EXPECT_EQ(c.numerics.spacing, flapsim::uvlm::Spacing::Cosine);
   EXPECT_EQ(c.output.vtk_every, 0);
   EXPECT_EQ(c.numerics.chordwise_panels, 6);  // untouched keys keep their values
   // φ(0) = 10° + 40° cos(2π·(−0.1)) with the overridden amplitude and phase.
   EXPECT_NEAR(c.kinematics.angles(0.0).sweep.value,
-              (10.0 + 40.0 * std::cos(-0.2 * std::numbers::pi)) * kDeg, 1e-12);
+              (10.0 + 40.0 * std::cos(-0.2 * std::numbers::pi)) * kDegToRad, 1e-12);
   try {
     p::load_case_file(path, {{"numerics.wake_order", "3"}});
     ADD_FAILURE() << "wake_order 3 accepted";

@@ -1,6 +1,7 @@
 #pragma once
 // Chains, base motions and loads shared by the multibody tests.
 
+#include "mbd/angle_units.hpp"
 #include "mbd/base_motion.hpp"
 #include "mbd/chain_loads.hpp"
 #include "mbd/chain_model.hpp"
@@ -15,7 +16,6 @@
 namespace flapsim::mbd::test {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 
 // The rotation-phase paper's 3-body validation system (Table 1; also
 // cases/chains/three_body.toml): bodies of 1.61 cm, 13.27 / 13.01 / 7.48 mg, the
@@ -62,9 +62,9 @@ constexpr double kThreeBodyFrequency = 26.0;  // [Hz], rotation-phase paper eq. 
 inline WingKinematics three_body_kinematics() {
   WingKinematics k;
   k.frequency = kThreeBodyFrequency;
-  k.sweep = PeriodicSignal::harmonic(0.0, {60.0 * kDeg}, {});
-  k.deviation = PeriodicSignal::harmonic(0.0, {0.0, 10.0 * kDeg}, {});
-  k.rotation = PeriodicSignal::harmonic(90.0 * kDeg, {}, {-60.0 * kDeg});
+  k.sweep = PeriodicSignal::harmonic(0.0, {60.0 * kDegToRad}, {});
+  k.deviation = PeriodicSignal::harmonic(0.0, {0.0, 10.0 * kDegToRad}, {});
+  k.rotation = PeriodicSignal::harmonic(90.0 * kDegToRad, {}, {-60.0 * kDegToRad});
   return k;
 }
 

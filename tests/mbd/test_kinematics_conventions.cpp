@@ -3,6 +3,7 @@
 //   R_GW = R_GS · Rz(φ) · Rx(θ) · Ry(−α), chord x_W = cosα·x' + sinα·z_S,
 //   angle of attack α on the downstroke and 180° − α on the upstroke.
 
+#include "mbd/angle_units.hpp"
 #include "mbd/wing_kinematics.hpp"
 
 #include <gtest/gtest.h>
@@ -23,15 +24,15 @@ using flapsim::mbd::rotation_z;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using flapsim::kDegToRad;
 
 // Rotation-phase paper, eq. 8 (f = 26.1 Hz):
 //   φ = 10° + 50° cos(2π(ft + δψ)),  α = 90° − 45° sin(2πft).
 WingKinematics eq8(double rotation_phase) {
   WingKinematics k;
   k.frequency = 26.1;
-  k.sweep = PeriodicSignal::harmonic(10 * kDeg, {50 * kDeg}, {});
-  k.rotation = PeriodicSignal::harmonic(90 * kDeg, {}, {-45 * kDeg});
+  k.sweep = PeriodicSignal::harmonic(10 * kDegToRad, {50 * kDegToRad}, {});
+  k.rotation = PeriodicSignal::harmonic(90 * kDegToRad, {}, {-45 * kDegToRad});
   k.rotation_phase = rotation_phase;
   return k;
 }
@@ -42,8 +43,8 @@ WingKinematics eq8(double rotation_phase) {
 WingKinematics eq7() {
   WingKinematics k;
   k.frequency = 26.0;
-  k.sweep = PeriodicSignal::harmonic(0.0, {60 * kDeg}, {});
-  k.rotation = PeriodicSignal::harmonic(90 * kDeg, {}, {-60 * kDeg});
+  k.sweep = PeriodicSignal::harmonic(0.0, {60 * kDegToRad}, {});
+  k.rotation = PeriodicSignal::harmonic(90 * kDegToRad, {}, {-60 * kDegToRad});
   return k;
 }
 
@@ -143,11 +144,11 @@ TEST(KinematicsConventions, Eq8RotationIsAt90DegreesAtStrokeReversal) {
   const double T = 1.0 / k.frequency;
   for (double t : {0.0, 0.5 * T, T}) {
     const auto a = k.angles(t);
-    EXPECT_NEAR(a.rotation.value, 90 * kDeg, 1e-12) << "t/T = " << t / T;
+    EXPECT_NEAR(a.rotation.value, 90 * kDegToRad, 1e-12) << "t/T = " << t / T;
     EXPECT_NEAR(a.sweep.rate, 0.0, 1e-9) << "t/T = " << t / T;
   }
-  EXPECT_NEAR(k.angles(0.0).sweep.value, 60 * kDeg, 1e-12);
-  EXPECT_NEAR(k.angles(0.5 * T).sweep.value, -40 * kDeg, 1e-12);
+  EXPECT_NEAR(k.angles(0.0).sweep.value, 60 * kDegToRad, 1e-12);
+  EXPECT_NEAR(k.angles(0.5 * T).sweep.value, -40 * kDegToRad, 1e-12);
   EXPECT_LT(k.angles(0.0).sweep.acceleration, 0.0);     // a maximum
   EXPECT_GT(k.angles(0.5 * T).sweep.acceleration, 0.0);  // a minimum
 }
@@ -162,8 +163,8 @@ TEST(KinematicsConventions, Eq8AngleOfAttackIs45DegreesMidstrokeLeadingEdgeFirst
     const AttackState down = attack_at(k, 0.25 * T, r), up = attack_at(k, 0.75 * T, r);
     EXPECT_LT(down.sweep_rate, 0.0);
     EXPECT_GT(up.sweep_rate, 0.0);
-    EXPECT_NEAR(down.angle_of_attack / kDeg, 45.0, 1e-9);
-    EXPECT_NEAR(up.angle_of_attack / kDeg, 45.0, 1e-9);
+    EXPECT_NEAR(down.angle_of_attack / kDegToRad, 45.0, 1e-9);
+    EXPECT_NEAR(up.angle_of_attack / kDegToRad, 45.0, 1e-9);
     EXPECT_GT(down.lead, 0.0);  // leading edge leads on the downstroke …
     EXPECT_GT(up.lead, 0.0);    // … and on the upstroke
     EXPECT_GT(down.chord_up, 0.0);  // leading edge pitched up on both: lift is +z
@@ -177,9 +178,9 @@ TEST(KinematicsConventions, Eq7AngleOfAttackIs30DegreesMidstroke) {
   const WingKinematics k = eq7();
   const double T = 1.0 / k.frequency;
   const AttackState down = attack_at(k, 0.25 * T), up = attack_at(k, 0.75 * T);
-  EXPECT_NEAR(k.angles(0.25 * T).rotation.value / kDeg, 30.0, 1e-12);
-  EXPECT_NEAR(down.angle_of_attack / kDeg, 30.0, 1e-9);
-  EXPECT_NEAR(up.angle_of_attack / kDeg, 30.0, 1e-9);
+  EXPECT_NEAR(k.angles(0.25 * T).rotation.value / kDegToRad, 30.0, 1e-12);
+  EXPECT_NEAR(down.angle_of_attack / kDegToRad, 30.0, 1e-9);
+  EXPECT_NEAR(up.angle_of_attack / kDegToRad, 30.0, 1e-9);
   EXPECT_GT(down.lead, 0.0);
   EXPECT_GT(up.lead, 0.0);
 }
@@ -193,7 +194,7 @@ TEST(KinematicsConventions, NegativeRotationPhaseAdvancesRotationByThatFraction)
     const double T = 1.0 / k.frequency;
     const double t_flip = bisect([&](double t) { return k.angles(t).rotation.value - kPi / 2; }, -0.2 * T, 0.2 * T);
     const double t_reversal = bisect([&](double t) { return k.angles(t).sweep.rate; }, -0.24 * T, 0.24 * T);
-    EXPECT_GT(k.angles(t_reversal).sweep.value, 59.9 * kDeg);  // the maximum, φ = 60°
+    EXPECT_GT(k.angles(t_reversal).sweep.value, 59.9 * kDegToRad);  // the maximum, φ = 60°
     EXPECT_NEAR((t_reversal - t_flip) / T, -dpsi, 1e-9) << "δψ = " << dpsi;
   }
 }
@@ -201,7 +202,7 @@ TEST(KinematicsConventions, NegativeRotationPhaseAdvancesRotationByThatFraction)
 TEST(KinematicsConventions, RotationPhaseShiftsSweepAndDeviationNotRotation) {
   // φ(t) = φ_signal(f t + δψ), θ likewise, α(t) = α_signal(f t).
   WingKinematics k = eq8(0.0);
-  k.deviation = PeriodicSignal::harmonic(0.0, {0.0, 10 * kDeg}, {});
+  k.deviation = PeriodicSignal::harmonic(0.0, {0.0, 10 * kDegToRad}, {});
   WingKinematics shifted = k;
   shifted.rotation_phase = 0.13;
   const double t = 0.0071;
@@ -217,12 +218,35 @@ TEST(KinematicsConventions, RotationPhaseShiftsSweepAndDeviationNotRotation) {
 
 TEST(KinematicsConventions, OrientationIsARotation) {
   WingKinematics k = eq8(-0.07);
-  k.deviation = PeriodicSignal::harmonic(0.0, {0.0, 10 * kDeg}, {});
+  k.deviation = PeriodicSignal::harmonic(0.0, {0.0, 10 * kDegToRad}, {});
   k.stroke_plane_angle = 0.2;
   for (int i = 0; i < 50; ++i) {
     const Eigen::Matrix3d R = k.pose(i * 0.00137).rotation;
     EXPECT_TRUE((R.transpose() * R).isApprox(Eigen::Matrix3d::Identity(), 1e-14));
     EXPECT_NEAR(R.determinant(), 1.0, 1e-14);
+  }
+}
+
+TEST(KinematicsConventions, StrokeAnglesInvertTheStrokeRotation) {
+  // R_GW = R_GS · stroke_rotation(φ, θ, α) with R_GS = Ry(β); stroke_angles must return
+  // the kinematics' own angles from R_GSᵀ R_GW, and stroke_rotation must equal the same
+  // product built independently from angle-axis rotations.
+  WingKinematics k = eq8(-0.1);
+  k.deviation = PeriodicSignal::harmonic(0.0, {}, {8.0 * kDegToRad});
+  k.stroke_plane_angle = 0.2;
+  for (double t : {0.0, 0.003, 0.011, 0.025, 0.037}) {
+    const auto a = k.angles(t);
+    const Eigen::Matrix3d r_sw = rotation_y(k.stroke_plane_angle).transpose() * k.pose(t).rotation;
+    const flapsim::mbd::StrokeAngles e = flapsim::mbd::stroke_angles(r_sw);
+    EXPECT_NEAR(e.sweep, a.sweep.value, 1e-12);
+    EXPECT_NEAR(e.deviation, a.deviation.value, 1e-12);
+    EXPECT_NEAR(e.rotation, a.rotation.value, 1e-12);
+    const Eigen::Matrix3d by_axes = (Eigen::AngleAxisd(e.sweep, Eigen::Vector3d::UnitZ()) *
+                                     Eigen::AngleAxisd(e.deviation, Eigen::Vector3d::UnitX()) *
+                                     Eigen::AngleAxisd(-e.rotation, Eigen::Vector3d::UnitY()))
+                                        .toRotationMatrix();
+    EXPECT_LT((flapsim::mbd::stroke_rotation(e) - by_axes).norm(), 1e-14);
+    EXPECT_LT((flapsim::mbd::stroke_rotation(e) - r_sw).norm(), 1e-14);
   }
 }
 

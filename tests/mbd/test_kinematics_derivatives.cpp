@@ -3,6 +3,7 @@
 // (ω̂ = Ṙ Rᵀ) and ω̇ from ω, for harmonic and tabulated signals with deviation,
 // rotation phase and a tilted stroke plane.
 
+#include "mbd/angle_units.hpp"
 #include "mbd/wing_kinematics.hpp"
 
 #include <gtest/gtest.h>
@@ -20,7 +21,7 @@ using flapsim::mbd::WingKinematics;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using flapsim::kDegToRad;
 
 // Rotation-phase paper eq. 5 (3-body validation case, 26 Hz) in our convention:
 // φ = 60° cos 2πft, α = 90° − 60° sin 2πft, θ = 10° cos 4πft; here with an added
@@ -28,9 +29,9 @@ constexpr double kDeg = kPi / 180.0;
 WingKinematics harmonic_case() {
   WingKinematics k;
   k.frequency = 26.0;
-  k.sweep = PeriodicSignal::harmonic(0.0, {60 * kDeg}, {});
-  k.rotation = PeriodicSignal::harmonic(90 * kDeg, {}, {-60 * kDeg});
-  k.deviation = PeriodicSignal::harmonic(0.0, {0.0, 10 * kDeg}, {});
+  k.sweep = PeriodicSignal::harmonic(0.0, {60 * kDegToRad}, {});
+  k.rotation = PeriodicSignal::harmonic(90 * kDegToRad, {}, {-60 * kDegToRad});
+  k.deviation = PeriodicSignal::harmonic(0.0, {0.0, 10 * kDegToRad}, {});
   k.rotation_phase = 0.07;
   k.stroke_plane_angle = 0.3;
   return k;

@@ -6,6 +6,7 @@
 #include "chain_test_models.hpp"
 #include "three_body_trajectory.hpp"
 
+#include "mbd/angle_units.hpp"
 #include "mbd/chain_data.hpp"
 #include "mbd/chain_kinematics.hpp"
 #include "mbd/generalized_alpha.hpp"
@@ -28,7 +29,6 @@
 namespace flapsim::mbd {
 namespace {
 
-using test::kDeg;
 using test::kPi;
 using test::kThreeBodyFrequency;
 
@@ -77,13 +77,13 @@ test::Trajectory run_simbody(const ChainModel& model, double t_end, int samples)
   const Rotation z_to_x(Pi / 2, YAxis), z_to_y(-Pi / 2, XAxis);
 
   MobilizedBody::Pin sweep(matter.Ground(), Transform(), carrier, Transform());
-  Motion::Sinusoid(sweep, Motion::Position, 60 * kDeg, w, Pi / 2);  // φ = 60° cos ωt
+  Motion::Sinusoid(sweep, Motion::Position, 60 * kDegToRad, w, Pi / 2);  // φ = 60° cos ωt
   MobilizedBody::Pin deviation(sweep, Transform(z_to_x), carrier, Transform(z_to_x));
-  Motion::Sinusoid(deviation, Motion::Position, 10 * kDeg, 2 * w, Pi / 2);  // θ = 10° cos 2ωt
+  Motion::Sinusoid(deviation, Motion::Position, 10 * kDegToRad, 2 * w, Pi / 2);  // θ = 10° cos 2ωt
   // Ry(−α) = Ry(−90°) · Ry(60° sin ωt): the constant part in the inboard frame.
   MobilizedBody::Pin body1(deviation, Transform(Rotation(-Pi / 2, YAxis) * z_to_y),
                            simbody_body(model.bodies[0]), Transform(z_to_y));
-  Motion::Sinusoid(body1, Motion::Position, 60 * kDeg, w, 0.0);
+  Motion::Sinusoid(body1, Motion::Position, 60 * kDegToRad, w, 0.0);
 
   std::vector<MobilizedBody::Universal> joints;
   MobilizedBody* parent = &body1;
@@ -179,7 +179,7 @@ TEST(SimbodyThreeBody, TipTrajectoryAgreesWithSimbodyOverThreeCycles) {
     q_dev = std::max(q_dev, (ref.q[k] - ours.q[k]).cwiseAbs().maxCoeff());
   }
   std::printf("[three-body] largest joint angle %.3f deg, max joint-angle deviation %.3e deg "
-              "(%.3f %%)\n", q_max / kDeg, q_dev / kDeg, 100.0 * q_dev / q_max);
+              "(%.3f %%)\n", q_max / kDegToRad, q_dev / kDegToRad, 100.0 * q_dev / q_max);
   EXPECT_LT(q_dev, 0.01 * q_max);
 }
 

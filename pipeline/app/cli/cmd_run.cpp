@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "pipeline/io/case_model.hpp"
+#include "pipeline/io/case_file.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "wings/input_error.hpp"
