@@ -23,7 +23,7 @@
 namespace flapsim::fsi {
 
 /// \brief Euler angles of body \p body (0-based) of the chain relative to the chain's
-/// undeformed orientation, in the stroke-plane frame: euler_angles(R_GSᵀ R_GB R_WRᵀ) with
+/// undeformed orientation, in the stroke-plane frame: mbd::stroke_angles(R_GSᵀ R_GB R_WRᵀ) with
 /// R_GS = Ry(β). They equal the base's angles when the wing does not deform.
 /// \param stroke_plane_angle  β [rad]
 mbd::StrokeAngles body_angles(const mbd::ChainModel& chain, const mbd::ChainData& data,
