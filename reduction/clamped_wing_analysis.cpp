@@ -132,7 +132,7 @@ std::vector<double> ClampedWingAnalysis::cell_elastic_axis(const SectionSampler&
   for (int k = 0; k + 1 < sampler.num_sections(); ++k) {
     const double d1 = sampler.sample(k + 1, u1).phi - sampler.sample(k, u1).phi;
     const double d2 = sampler.sample(k + 1, u2).phi - sampler.sample(k, u2).phi;
-    // n_ea = (n₂Δφ₁ − n₁Δφ₂)/(Δφ₁ − Δφ₂)  (DESIGN.md, per cell)
+    // n_ea = (n₂Δφ₁ − n₁Δφ₂)/(Δφ₁ − Δφ₂), per cell (docs/reduction.md, "Elastic axis")
     out.push_back(std::abs(d1 - d2) > 0.0 ? (n2_ * d1 - n1_ * d2) / (d1 - d2)
                                           : std::numeric_limits<double>::quiet_NaN());
   }

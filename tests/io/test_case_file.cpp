@@ -67,7 +67,7 @@ TEST(CaseFile, HoverCaseIsEquation8) {
     EXPECT_NEAR(a.rotation.value, (90.0 - 45.0 * std::sin(2 * std::numbers::pi * s)) * kDegToRad, 1e-12);
     EXPECT_NEAR(a.deviation.value, 0.0, 1e-15);
   }
-  // DESIGN.md: geometric angle of attack 45° at mid-downstroke and at mid-upstroke.
+  // docs/kinematics.md: geometric angle of attack 45° at mid-downstroke and at mid-upstroke.
   EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.25 / f)), 45.0 * kDegToRad, 1e-12);
   EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.75 / f)), 45.0 * kDegToRad, 1e-12);
   EXPECT_FALSE(p::geometric_angle_of_attack(c.kinematics.angles(0.0)));  // stroke reversal
@@ -87,7 +87,7 @@ TEST(CaseFile, DefaultsWhenSectionsAreOmitted) {
   EXPECT_TRUE(c.numerics.free_wake);
   EXPECT_DOUBLE_EQ(c.air.density, 1.225);
   EXPECT_TRUE(c.air.freestream.isZero());
-  // Eq. 7 in the DESIGN.md convention: α = 90° − 60° sin 2πft → AoA 30° at mid-downstroke.
+  // Eq. 7 in the convention of docs/kinematics.md: α = 90° − 60° sin 2πft → AoA 30° at mid-downstroke.
   EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.25 / 20.0)), 30.0 * kDegToRad, 1e-12);
 }
 

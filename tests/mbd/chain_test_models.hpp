@@ -58,7 +58,7 @@ constexpr double kThreeBodyFrequency = 26.0;  // [Hz], rotation-phase paper eq. 
 
 // Eq. 5 of the rotation-phase paper in our convention R_GW = Rz(φ) Rx(θ) Ry(−α):
 // φ = 60° cos 2πft, θ = 10° cos 4πft, and the paper's α = −60° sin 2πft measured from
-// the vertical becomes α = 90° − 60° sin 2πft (as eq. 7, DESIGN.md).
+// the vertical becomes α = 90° − 60° sin 2πft (as eq. 7, docs/kinematics.md).
 inline WingKinematics three_body_kinematics() {
   WingKinematics k;
   k.frequency = kThreeBodyFrequency;

@@ -1,5 +1,5 @@
 // Wing-base kinematics against the rotation-phase paper (eqs. 7 and 8) and the
-// frame conventions of DESIGN.md / docs/kinematics.md:
+// frame conventions of docs/kinematics.md:
 //   R_GW = R_GS · Rz(φ) · Rx(θ) · Ry(−α), chord x_W = cosα·x' + sinα·z_S,
 //   angle of attack α on the downstroke and 180° − α on the upstroke.
 
@@ -102,8 +102,8 @@ TEST(KinematicsConventions, ElementaryRotationsAreRightHanded) {
   }
 }
 
-TEST(KinematicsConventions, FrameAxesFollowDesignConventions) {
-  // DESIGN.md: chord x_W = cosα·x' + sinα·z_S; θ > 0 lifts the span out of the
+TEST(KinematicsConventions, FrameAxesFollowTheConventions) {
+  // docs/kinematics.md: chord x_W = cosα·x' + sinα·z_S; θ > 0 lifts the span out of the
   // stroke plane (toward +z_S); the sweep turns the span about z_S.
   WingKinematics k;
   k.frequency = 1.0;

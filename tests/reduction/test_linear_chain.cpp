@@ -1,5 +1,6 @@
 // The reduction's linearised chain (small motions about the straight rest shape)
-// against mbd's mass matrix and against the Hencky numbers of DESIGN.md.
+// against mbd's mass matrix and against the Hencky cantilever of mbd's own eigen-analysis
+// (docs/validation.md R4, R5).
 
 #include <gtest/gtest.h>
 
@@ -41,7 +42,8 @@ TEST(LinearChain, HenckyCantileverFrequencies) {
   // Beam theory: ω₁ = 1.8751² √(EI/(m' L⁴)). The Hencky chain converges from below at
   // second order (error ratio 4 per halving of a). mbd's own eigen-analysis of the same
   // chains gives −2.79, −0.71, −0.18 % (docs/multibody.md, "Hencky cantilever"), an
-  // independent code; DESIGN.md's −3.9, −1.0, −0.25 % are for a different lumping.
+  // independent code; the often-quoted −3.9, −1.0, −0.25 % are for a different lumping
+  // (docs/validation.md M2).
   const double L = 0.05, EI = 1e-4, GJ = 5e-5, mpl = 7e-4, ia = 2e-9;
   const double f_beam = 1.8751 * 1.8751 / (2.0 * std::numbers::pi) * std::sqrt(EI / (mpl * std::pow(L, 4)));
   const double mbd_errors[3] = {-0.0279, -0.0071, -0.0018};

@@ -159,8 +159,9 @@ TEST(PlateStrip, HenckyChainConvergesToTheFemFromBelow) {
     std::printf("plate strip N_b=%2d: bending %+.2f %% torsion %+.2f %% tip w %+.2f %% MAC %.4f\n", nb,
                 100 * c.bending.relative_error, 100 * c.torsion.relative_error,
                 100 * c.tip_deflection.relative_error, c.bending.mac);
-    // DESIGN.md (Hencky chain, uniform cantilever): the first frequency converges from
-    // below at second order (−3.9, −1.0, −0.25 % against beam theory at 4, 8, 16 bodies).
+    // Hencky chain of a uniform cantilever ([Hencky 1920], docs/references.md): the first
+    // frequency converges from below at second order (−2.79, −0.71, −0.18 % against beam
+    // theory at 4, 8, 16 bodies, docs/validation.md M1).
     // Against the plate FEM (whose clamped root is stiffened over about a chord) we
     // require convergence from below faster than first order: error at least halves.
     EXPECT_LT(c.bending.relative_error, 0.0) << nb;
@@ -169,7 +170,7 @@ TEST(PlateStrip, HenckyChainConvergesToTheFemFromBelow) {
     EXPECT_NEAR(c.torsion.relative_error, 0.0, 0.01) << nb;
     EXPECT_GT(c.bending.mac, 0.99) << nb;
   }
-  EXPECT_LT(previous, 0.005);  // 16 bodies within 0.5 % (DESIGN.md: −0.25 % for the beam)
+  EXPECT_LT(previous, 0.005);  // 16 bodies within 0.5 % (−0.18 % for the beam, validation.md M1)
 }
 
 }  // namespace

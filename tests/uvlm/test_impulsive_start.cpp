@@ -39,7 +39,7 @@ std::map<int, std::pair<double, double>> impulsive_run(const RectangularWing& w,
 
 TEST(ImpulsiveStart, AspectRatio4AgainstIndependentUvlm) {
   // References: CL/CL_ss = 0.83, 0.88, 0.93, 0.98 at Ut/c = 0.5, 1, 2, 4 (an independent UVLM
-  // with a flat wake, DESIGN.md validation catalogue); AR 4, α = 5°, 16 × 32, UΔt = c/16.
+  // with a flat wake, docs/validation.md U6); AR 4, α = 5°, 16 × 32, UΔt = c/16.
   RectangularWing w;
   w.chordwise = 16;
   w.spanwise = 32;
@@ -57,7 +57,8 @@ TEST(ImpulsiveStart, AspectRatio4AgainstIndependentUvlm) {
 
 TEST(ImpulsiveStart, VeryHighAspectRatioFollowsWagner) {
   // Reference: Wagner's function in Jones' approximation,
-  // φ(s) = 1 − 0.165 e^(−0.0455 s) − 0.335 e^(−0.3 s), s = 2Ut/c (DESIGN.md), within 2 % for
+  // φ(s) = 1 − 0.165 e^(−0.0455 s) − 0.335 e^(−0.3 s), s = 2Ut/c ([Wagner 1925], [Jones 1940],
+  // docs/references.md), within 2 % for
   // Ut/c ≥ 1. AR = 1000, 32 chordwise panels, UΔt = c/32 (one wake panel per bound panel),
   // normalised by the steady lift of the same lattice.
   RectangularWing w;

@@ -1,7 +1,7 @@
-// Steady flat rectangular wings: lift against the references of DESIGN.md's validation
-// catalogue. Resolution: 8 chordwise panels (converged to < 0.05 %) and spanwise panels
+// Steady flat rectangular wings: lift against the vortex-lattice reference values of
+// docs/validation.md (U4, U5). Resolution: 8 chordwise panels (converged to < 0.05 %) and spanwise panels
 // c/16 wide. The lattice converges slowly (first order) in the spanwise panel count on a
-// rectangular tip: the catalogue values are met at this resolution; with 64 spanwise
+// rectangular tip: the reference values are met at this resolution; with 64 spanwise
 // panels per chord the AR = 1 slope drops to 1.48 (see docs/uvlm.md).
 #include "wing_cases.hpp"
 
@@ -12,7 +12,7 @@ using flapsim::uvlm::testing::RectangularWing;
 using flapsim::uvlm::testing::steady_lift;
 
 TEST(SteadyWing, AspectRatio4At5DegreesLiftCoefficient) {
-  // Reference: CL = 0.316 (DESIGN.md validation catalogue, flat rectangular wing AR 4, α = 5°).
+  // Reference: CL = 0.316 (docs/validation.md U4, flat rectangular wing AR 4, α = 5°).
   RectangularWing w;
   w.aspect_ratio = 4;
   w.chordwise = 8;
@@ -26,7 +26,7 @@ TEST(SteadyWing, AspectRatio4At5DegreesLiftCoefficient) {
 }
 
 TEST(SteadyWing, LiftSlopeAgainstAspectRatio) {
-  // References (DESIGN.md): CLα = 1.54, 2.54, 4.24, 4.86 /rad for AR = 1, 2, 6, 10.
+  // References (docs/validation.md U5): CLα = 1.54, 2.54, 4.24, 4.86 /rad for AR = 1, 2, 6, 10.
   const double alpha = 1.0 * M_PI / 180.0;
   for (const auto& [ar, ref] : {std::pair{1.0, 1.54}, {2.0, 2.54}, {6.0, 4.24}, {10.0, 4.86}}) {
     RectangularWing w;
