@@ -3,12 +3,18 @@
 #include <CLI/CLI.hpp>
 
 #include <exception>
+#include <filesystem>
 #include <iostream>
 
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::cli {
+
+void check_chain_option(const std::string& chain_file) {
+  if (!chain_file.empty() && !std::filesystem::is_regular_file(chain_file))
+    throw InputError(chain_file, 0, "--chain", "chain file not found");
+}
 
 int run(int argc, char** argv) {
   CLI::App app{

@@ -12,7 +12,6 @@
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/run_results.hpp"
-#include "wings/input_error.hpp"
 
 namespace flapsim::cli {
 
@@ -29,8 +28,7 @@ struct RunArgs {
 
 void run_command(const RunArgs& a) {
   const io::Case c = io::load_case_file(a.case_file);
-  if (!a.chain_file.empty() && !std::filesystem::is_regular_file(a.chain_file))
-    throw InputError(a.chain_file, 0, "--chain", "chain file not found");
+  check_chain_option(a.chain_file);
   app::RunOptions options;
   options.output_dir = a.output_dir.empty() ? std::filesystem::path("out") / c.name
                                           : std::filesystem::path(a.output_dir);

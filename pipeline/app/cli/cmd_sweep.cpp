@@ -13,7 +13,6 @@
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
-#include "wings/input_error.hpp"
 
 namespace flapsim::cli {
 
@@ -29,8 +28,7 @@ struct SweepArgs {
 
 void sweep_command(const SweepArgs& a) {
   const sweep::Variation variation = sweep::parse_variation(a.vary);
-  if (!a.chain_file.empty() && !std::filesystem::is_regular_file(a.chain_file))
-    throw InputError(a.chain_file, 0, "--chain", "chain file not found");
+  check_chain_option(a.chain_file);
   sweep::SweepOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;

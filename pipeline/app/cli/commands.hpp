@@ -5,6 +5,8 @@
 /// bad input by throwing flapsim::InputError (exit 2) and failed runs by throwing
 /// flapsim::NumericalFailure (exit 3).
 
+#include <string>
+
 namespace CLI { class App; }
 
 namespace flapsim::cli {
@@ -15,6 +17,10 @@ void add_modes_command(CLI::App& app);   ///< flapsim modes WING.toml -o DIR
 void add_reduce_command(CLI::App& app);  ///< flapsim reduce WING.toml -o DIR --bodies N
 void add_run_command(CLI::App& app);     ///< flapsim run CASE.toml -o DIR
 void add_sweep_command(CLI::App& app);   ///< flapsim sweep CASE.toml --vary KEY=VALUES -o DIR
+
+/// The --chain option of run and sweep: "" (none) or an existing file.
+/// \throws flapsim::InputError (key "--chain") if the file does not exist
+void check_chain_option(const std::string& chain_file);
 
 /// Parses argv, runs the chosen subcommand, returns the process exit status:
 /// 0 ok, 1 usage error, 2 bad input, 3 numerical failure.
