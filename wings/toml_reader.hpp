@@ -194,13 +194,6 @@ class TomlTable {
   /// \throws flapsim::InputError for a value that is not TOML or a path through a non-table
   void apply_overrides(const std::vector<std::pair<std::string, std::string>>& overrides);
 
-  // --- canonical form ---------------------------------------------------------------
-  /// The table's content in one canonical text, independent of key order, comments,
-  /// whitespace and number spelling (1e3 and 1000.0 agree; integers stay integers):
-  /// keys sorted, strings quoted with escapes, floats in shortest round-trip form.
-  /// Two files with the same values give the same text (input hashes, input_hash.hpp).
-  std::string canonical_text() const;
-
   // --- sub-tables -------------------------------------------------------------------
   /// Sub-table (a [section] or an inline { ... } table).
   TomlTable get_table(std::string_view key) const;

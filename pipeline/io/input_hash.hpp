@@ -1,52 +1,41 @@
 #pragma once
 /// \file input_hash.hpp
-/// \brief A stable hash of everything a run reads: the case file (with the overrides of a
-/// sweep applied), the wing file it names, the wing's outline CSV and the chain file (the
-/// case's, or one given on the command line). Two runs with the same hash read the same
-/// values, whatever the files' key order, comments, whitespace, number spelling or folder;
-/// a sweep can skip a case whose folder already holds the results of the same inputs.
+/// \brief A fingerprint of everything a run's results depend on: the resolved case
+/// (every field of io::Case after defaults, overrides and unit conversion), the wing it
+/// flaps (every field of wings::Wing: outline, veins, membrane, mesh sizes, clamp), the
+/// chain file's bytes and the joint-spring factor. Two runs with equal hashes read the
+/// same inputs; a sweep re-run skips a case whose summary.json carries the hash of its
+/// inputs (docs/sweeps.md, "Resuming a sweep").
 ///
-/// Hash: FNV-1a, 64 bits (Fowler, Noll and Vo; offset basis 14695981039346656037, prime
-/// 1099511628211, http://www.isthe.com/chongo/tech/comp/fnv/) over a canonical
-/// serialisation: each TOML file as wings::TomlTable::canonical_text(), the CSV as its
-/// bytes, each part introduced by its role ("case", "wing", "outline", "chain").
-/// Not a cryptographic hash: it detects changed inputs, not forged ones.
+/// The hash is FNV-1a 64 (Fowler, Noll, Vo; public-domain reference at
+/// http://www.isthe.com/chongo/tech/comp/fnv/) of a canonical text: one `name=value` line
+/// per field in a fixed order, numbers in shortest round-trip form (the same double
+/// gives the same text on any machine), periodic signals as their value and first two
+/// phase derivatives at 64 phases s = k/64. File paths are not part of it (moving a
+/// study does not change its hash); the chain file enters by its content.
 
 #include <cstdint>
 #include <string>
 #include <string_view>
-#include <utility>
-#include <vector>
+
+#include "pipeline/io/case_model.hpp"
+#include "wings/wing_model.hpp"
 
 namespace flapsim::io {
 
-inline constexpr std::uint64_t kFnv1a64Offset = 14695981039346656037ull;
-inline constexpr std::uint64_t kFnv1a64Prime = 1099511628211ull;
+/// \brief FNV-1a 64 of \p bytes (offset basis 14695981039346656037, prime 1099511628211).
+std::uint64_t fnv1a_64(std::string_view bytes);
 
-/// FNV-1a 64 of \p bytes, continuing from \p hash (the offset basis for a new hash).
-constexpr std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t hash = kFnv1a64Offset) {
-  for (unsigned char c : bytes) {
-    hash ^= c;
-    hash *= kFnv1a64Prime;
-  }
-  return hash;
-}
+/// \brief The canonical text the hash is taken of (for tests and for diagnosing a
+/// hash that changed).
+/// \param chain_file   the chain file the run uses instead of the case's ("" = the case's)
+/// \param spring_scale the joint-spring factor of the run
+std::string canonical_inputs(const Case& c, const wings::Wing* wing, const std::string& chain_file,
+                             double spring_scale);
 
-/// The hash as 16 lower-case hex digits.
-std::string hash_hex(std::uint64_t hash);
-
-/// The canonical serialisation the hash is computed over (for inspection and tests).
-/// \param case_file   the case file
-/// \param overrides   sweep overrides {"kinematics.rotation_phase", "-0.1"} (TOML values)
-/// \param chain_file  a chain file replacing the case's ("" = the case's own, if any)
-/// \throws flapsim::InputError if a file cannot be read or parsed
-std::string canonical_inputs(const std::string& case_file,
-                             const std::vector<std::pair<std::string, std::string>>& overrides = {},
-                             const std::string& chain_file = "");
-
-/// fnv1a64(canonical_inputs(...)).
-std::uint64_t input_hash(const std::string& case_file,
-                         const std::vector<std::pair<std::string, std::string>>& overrides = {},
-                         const std::string& chain_file = "");
+/// \brief The hash of canonical_inputs() as 16 lower-case hex digits.
+/// \throws flapsim::InputError if the chain file cannot be read
+std::string input_hash(const Case& c, const wings::Wing* wing, const std::string& chain_file,
+                       double spring_scale);
 
 }  // namespace flapsim::io

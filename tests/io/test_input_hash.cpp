@@ -1,80 +1,63 @@
-// The input hash: FNV-1a 64 against the published test values, and a hash that follows
-// the values a run reads, not how its files are written.
+// The fingerprint of a run's inputs (pipeline/io/input_hash): FNV-1a 64 against the
+// reference test vectors, and a hash that follows the inputs and not where they are.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "common/scratch_dir.hpp"
+#include "pipeline/io/case_file.hpp"
 #include "pipeline/io/input_hash.hpp"
-
-namespace io = flapsim::io;
+#include "wings/wing_file.hpp"
 
 namespace {
 
-const std::string kSource = FLAPSIM_SOURCE_DIR;
+namespace fs = std::filesystem;
+using namespace flapsim;
 
-TEST(InputHash, Fnv1a64MatchesTheReferenceValues) {
-  // Test vectors of the FNV reference code (Noll, fnv/test_fnv.c, FNV-1a 64):
-  // "" -> cbf29ce484222325 (the offset basis), "a" -> af63dc4c8601ec8c,
-  // "foobar" -> 85944171f73967e8.
-  EXPECT_EQ(io::fnv1a64(""), 0xcbf29ce484222325ull);
-  EXPECT_EQ(io::fnv1a64("a"), 0xaf63dc4c8601ec8cull);
-  EXPECT_EQ(io::fnv1a64("foobar"), 0x85944171f73967e8ull);
-  EXPECT_EQ(io::hash_hex(0xaf63dc4c8601ec8cull), "af63dc4c8601ec8c");
-  EXPECT_EQ(io::hash_hex(1), "0000000000000001");
+TEST(InputHash, Fnv1a64MatchesTheReferenceVectors) {
+  // Test vectors of the FNV reference code (Fowler/Noll/Vo, test_fnv.c, FNV-1a 64):
+  // "" -> the offset basis, "a" -> af63dc4c8601ec8c, "foobar" -> 85944171f73967e8.
+  EXPECT_EQ(io::fnv1a_64(""), 0xcbf29ce484222325ull);
+  EXPECT_EQ(io::fnv1a_64("a"), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(io::fnv1a_64("foobar"), 0x85944171f73967e8ull);
 }
 
-// A case and a wing (with its outline CSV), written into a folder.
-void write_inputs(const flapsim::test::ScratchDir& dir, const std::string& case_text, const std::string& wing_text) {
-  std::ofstream(dir / "case.toml") << case_text;
-  std::ofstream(dir / "wing.toml") << wing_text;
-  std::ofstream(dir / "o.csv") << "x,y\n0.1,0\n0.1,1\n-0.2,1\n-0.2,0\n";
-}
+TEST(InputHash, FollowsTheInputsNotTheirPlace) {
+  const fs::path data = fs::path(FLAPSIM_SOURCE_DIR) / "tests" / "data";
+  const io::Case c = io::load_case_file((data / "valid_tiny_case.toml").string());
+  const wings::Wing w = wings::load_wing_file((data / "valid_tiny_wing.toml").string());
+  const std::string h = io::input_hash(c, &w, "", 1.0);
+  EXPECT_EQ(h.size(), 16u);
+  EXPECT_EQ(h, io::input_hash(c, &w, "", 1.0));  // deterministic
 
-const std::string kCase =
-    "wing = \"wing.toml\"\n[kinematics]\nfrequency_hz = 26.1\nsweep = { mean_deg = 10.0, cos_deg = [50.0] }\n"
-    "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n[structure]\nkind = \"rigid\"\n";
-const std::string kWing =
-    "name = \"w\"\nlength_unit = \"mm\"\n[planform]\noutline_file = \"o.csv\"\nspan = 40.0\nclamp_y = 0.0\n"
-    "[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"
-    "[membrane]\nthickness = 0.05\nmaterial = \"film\"\n";
+  // The same files in another folder: the same hash (paths are not inputs).
+  const test::ScratchDir dir("input_hash");
+  fs::copy_file(data / "valid_tiny_case.toml", dir / "valid_tiny_case.toml");
+  fs::copy_file(data / "valid_tiny_wing.toml", dir / "valid_tiny_wing.toml");
+  const io::Case moved = io::load_case_file((dir / "valid_tiny_case.toml").string());
+  const wings::Wing moved_wing = wings::load_wing_file((dir / "valid_tiny_wing.toml").string());
+  EXPECT_EQ(io::input_hash(moved, &moved_wing, "", 1.0), h);
 
-TEST(InputHash, SameValuesGiveTheSameHashWhateverTheSpelling) {
-  flapsim::test::ScratchDir a("input_hash_a"), b("input_hash_b");
-  write_inputs(a, kCase, kWing);
-  write_inputs(b, kCase, kWing);
-  // Same values: other key order, comments, whitespace, 26.1 as 2.61e1, another folder.
-  std::ofstream(b / "case.toml")
-      << "# the same case\nwing = \"wing.toml\"\n[structure]\nkind = \"rigid\"\n\n[kinematics]\n"
-         "rotation = { sin_deg = [-45.0], mean_deg = 90.0 }\nsweep = {cos_deg=[50.0],mean_deg=10.0}\n"
-         "frequency_hz = 2.61e1\n";
-  EXPECT_EQ(io::input_hash((a / "case.toml").string()), io::input_hash((b / "case.toml").string()))
-      << io::canonical_inputs((a / "case.toml").string()) << "\n---\n"
-      << io::canonical_inputs((b / "case.toml").string());
-}
+  // Any change of a value changes it: a case key, a wing key, the spring factor, the wing.
+  const io::Case phase =
+      io::load_case_file((data / "valid_tiny_case.toml").string(), {{"kinematics.rotation_phase", "-0.05"}});
+  EXPECT_NE(io::input_hash(phase, &w, "", 1.0), h);
+  const io::Case tol =
+      io::load_case_file((data / "valid_tiny_case.toml").string(), {{"numerics.coupling_tolerance", "1e-7"}});
+  EXPECT_NE(io::input_hash(tol, &w, "", 1.0), h);
+  wings::Wing thick = w;
+  thick.membrane.thickness *= 1.0 + 1e-15;  // the last bits count
+  EXPECT_NE(io::input_hash(c, &thick, "", 1.0), h);
+  EXPECT_NE(io::input_hash(c, &w, "", 2.0), h);
+  EXPECT_NE(io::input_hash(c, nullptr, "", 1.0), h);
 
-TEST(InputHash, EveryInputChangesTheHash) {
-  flapsim::test::ScratchDir dir("input_hash_changes");
-  write_inputs(dir, kCase, kWing);
-  const std::string file = (dir / "case.toml").string();
-  const auto base = io::input_hash(file);
-  // An override (a sweep value) of the case.
-  EXPECT_NE(io::input_hash(file, {{"kinematics.rotation_phase", "-0.1"}}), base);
-  EXPECT_EQ(io::input_hash(file, {{"kinematics.frequency_hz", "26.1"}}), base);  // same value
-  // The integer 1 and the float 1.0 are different TOML values (a key may accept only one).
-  EXPECT_NE(io::input_hash(file, {{"kinematics.frequency_hz", "26"}}),
-            io::input_hash(file, {{"kinematics.frequency_hz", "26.0"}}));
-  // The wing file.
-  std::ofstream(dir / "wing.toml") << kWing << "nonstructural_mass_per_area = 0.01\n";
-  const auto wing_changed = io::input_hash(file);
-  EXPECT_NE(wing_changed, base);
-  // The outline CSV the wing names.
-  std::ofstream(dir / "o.csv") << "x,y\n0.1,0\n0.1,1\n-0.3,1\n-0.2,0\n";
-  EXPECT_NE(io::input_hash(file), wing_changed);
-  // A chain file given on the command line.
-  std::ofstream(dir / "chain.toml") << "root = \"rigid\"\n";
-  EXPECT_NE(io::input_hash(file, {}, (dir / "chain.toml").string()), io::input_hash(file));
+  // A chain file enters by its bytes.
+  std::ofstream(dir / "a.toml") << "# chain a\n";
+  std::ofstream(dir / "b.toml") << "# chain b\n";
+  EXPECT_NE(io::input_hash(c, &w, (dir / "a.toml").string(), 1.0),
+            io::input_hash(c, &w, (dir / "b.toml").string(), 1.0));
 }
 
 }  // namespace
