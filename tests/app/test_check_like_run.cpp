@@ -62,4 +62,21 @@ TEST(CheckLikeRun, AWingGmshCannotMeshFailsCheckAndMeshAlikeWithExit2) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+TEST(CheckLikeRun, AnOutlineOnlyGmshRefusesFailsCheckByItsDryRun) {
+  // A "C" whose slit is 1e-10 mm wide: a simple polygon of normal aspect ratio, so every
+  // geometric check passes, but gmsh cannot build its edges. check used to accept it
+  // (exit 0); mesh aborted. Now gmsh's dry run in check and mesh give exit 2 naming the
+  // planform.
+  ScratchDir dir("check_gmsh_dry_run");
+  std::ofstream(dir / "c.toml")
+      << "name = \"c\"\nlength_unit = \"mm\"\n[planform]\n"
+         "outline = [[2.0, 0.0], [2.0, 20.0], [-3.0, 20.0], [-3.0, 10.0000000001], [1.0, 10.0000000001], "
+         "[1.0, 10.0], [-3.0, 10.0], [-3.0, 0.0]]\nclamp_y = 0.0\n"
+         "[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"
+         "[membrane]\nthickness = 0.05\nmaterial = \"film\"\n";
+  EXPECT_EQ(run_flapsim("check " + (dir / "c.toml").string()), 2);
+  EXPECT_EQ(run_flapsim("mesh " + (dir / "c.toml").string() + " -o " + (dir / "out").string()), 2);
+  EXPECT_FALSE(fs::exists(dir / "out" / "mesh.msh"));
+}
+
 }  // namespace
