@@ -43,7 +43,7 @@ run-pipeline: build $(PIPELINE_CHAIN)
 	end=$$(date +%s.%N); \
 	echo "FSI run: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"; \
 	echo "ParaView: open $(OUT)/hover_flexible/wing.pvd, wake.pvd and chain.pvd together"; \
-	echo "          (the FEM and the chain: $(OUT)/hawkmoth/fem.vtu, reduction.vtp)"
+	echo "          (the FEM and the chain: $(OUT)/hawkmoth/fem.vtu, reduction.vtm)"
 
 phase-study: build $(PIPELINE_CHAIN)
 	@start=$$(date +%s.%N); \
