@@ -60,6 +60,13 @@ TEST(SweepRuns, TwoKeyGridGivesOneRowPerCombination) {
   }
   EXPECT_EQ(combinations.size(), 6u);
   EXPECT_EQ(table.rows[1].at("folder"), "01_-0.1_2");  // first key slowest
+
+  // The plot tool draws mean lift against each varied key (tools/plot_sweep.py).
+  const std::string plot = "/usr/bin/python3 '" + std::string(FLAPSIM_SOURCE_DIR) + "/tools/plot_sweep.py' '" +
+                           (dir / "out" / "sweep.csv").string() + "' '" + (dir / "plots").string() + "' > /dev/null";
+  ASSERT_EQ(std::system(plot.c_str()), 0);
+  for (const char* name : {"sweep_kinematics_rotation_phase.png", "sweep_spring_scale.png"})
+    EXPECT_EQ(read_text(dir / "plots" / name).substr(0, 4), "\x89PNG") << name;
 }
 
 TEST(SweepRuns, KilledSweepRerunsOnlyTheMissingCases) {

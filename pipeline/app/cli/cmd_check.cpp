@@ -33,7 +33,7 @@ void check_meshable(const wings::Wing& wing) { (void)fem::mesh_wing(wing); }
 std::string check_case_like_run(const io::Case& c) {
   std::string text;
   std::optional<wings::Wing> wing;
-  if (!c.wing_file.empty()) wing = wings::load_wing_file(c.wing_file);
+  if (!c.wing_file.empty()) wing = print_wing_warnings(wings::load_wing_file(c.wing_file));
   if (c.air.enabled && !wing)
     throw InputError(c.file, 0, "wing",
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "
@@ -66,7 +66,7 @@ std::string check_file(const std::string& path) {
     throw InputError(path, root.line_of("planform"), "planform",
                      "a file is either a wing file ([planform]) or a case file ([kinematics]), not both");
   if (wing) {
-    const wings::Wing w = wings::read_wing(root);
+    const wings::Wing w = print_wing_warnings(wings::read_wing(root));
     check_meshable(w);
     return wings::describe_wing(w);
   }

@@ -29,6 +29,7 @@ struct MeshArgs {
 void run_mesh(const MeshArgs& args) {
   // 1. Read and check the wing (InputError: exit 2, nothing written).
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
+  print_wing_warnings(wing);
   // 2. The output folder, writable before any work (else exit 4 naming it).
   const std::filesystem::path dir(args.out_dir);
   io::claim_output_folder(dir, "mesh", args.force);

@@ -37,6 +37,7 @@ void run_modes(const ModesArgs& args) {
     throw InputError("<command line>", 0, "--modes", "must be between 1 and 500, got " + std::to_string(args.modes));
   // 1. Wing; the output folder writable before any work (else exit 4 naming it).
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
+  print_wing_warnings(wing);
   const std::filesystem::path dir(args.out_dir);
   io::claim_output_folder(dir, "modes", args.force);
   // 2. Mesh, K and M, root clamp; a failing solver is a numerical failure (exit 3).
@@ -57,7 +58,7 @@ void run_modes(const ModesArgs& args) {
   });
   // 5. Outputs (each atomic).
   io::write_modes_csv(dir / "modes.csv", m.modes, m.kinds);
-  io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, results);
+  io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, m.kinds, results);
   io::record_command_status(dir, "modes", "complete");
 
   std::printf("%s: %d nodes, %zu triangles, %zu vein elements, FEM mass %.4f mg\n", wing.name.c_str(),
@@ -78,9 +79,11 @@ void add_modes_command(CLI::App& app) {
       "(Lanczos, shift-invert) classified as bending, torsion, chordwise or in-plane,\n"
       "and four static cases (unit tip force at the leading and at the trailing edge,\n"
       "unit tip bending moment, unit tip torque, at 90 % of the span).\n"
-      "Writes DIR/modes.csv (mode, frequency_hz, kind) and DIR/fem.vtu (point vectors\n"
-      "mode_NN, mass-normalised, and static_<case> [m]). Exit status: 0 ok, 2 bad input,\n"
-      "3 numerical failure of the FEM, 4 output error.");
+      "Writes DIR/modes.csv (mode, frequency_hz, kind) and DIR/fem.vtu: point vectors\n"
+      "mode_NN scaled so the largest displacement is 10 % of the span (field data\n"
+      "mode_NN_frequency_Hz, mode_NN_kind, mode_NN_scale) and static_<case>_m_per_N[_m]\n"
+      "(displacement per unit load). Exit status: 0 ok, 2 bad input, 3 numerical failure\n"
+      "of the FEM, 4 output error.");
   auto args = std::make_shared<ModesArgs>();
   cmd->add_option("WING", args->wing_file, "wing file (TOML)")->required();
   cmd->add_option("-o,--output", args->out_dir, "output directory")->capture_default_str();

@@ -41,6 +41,7 @@ struct ReduceOptions {
 
 void run_reduce(const ReduceOptions& o) {
   const wings::Wing wing = wings::load_wing_file(o.wing_file);  // InputError → exit 2
+  print_wing_warnings(wing);
   reduction::AnalysisOptions ao;
   ao.axis = o.axis == "span" ? reduction::AxisChoice::span : reduction::AxisChoice::fitted;
   const fs::path dir(o.out_dir);
@@ -59,7 +60,7 @@ void run_reduce(const ReduceOptions& o) {
 
   io::write_beam_csv(dir / "beam.csv", beam);
   io::write_chain_file(dir / "chain.toml", lc.chain);
-  io::write_reduction_vtp(dir / "reduction.vtp", beam, lc);
+  io::write_reduction_vtk(dir, beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
   io::write_reduction_summary(dir / "summary.json", beam, lc, cmp);
   io::record_command_status(dir, "reduce", "complete");
@@ -76,7 +77,7 @@ void add_reduce_command(CLI::App& app) {
       "reduce",
       "Reduce a wing's FEM to an equivalent beam and an N-body Hencky bar chain.\n"
       "Writes DIR/beam.csv (stations: s, y, m', x_cg, x_ea, EI, GJ, I_alpha),\n"
-      "DIR/chain.toml (bodies and springs, for 'flapsim run'), DIR/reduction.vtp,\n"
+      "DIR/chain.toml (bodies and springs, for 'flapsim run'), DIR/reduction.vtm (stations, bodies, joints, centres of mass),\n"
       "DIR/report.md and DIR/summary.json (chain vs FEM: first bending and torsion\n"
       "frequencies, MAC, static tip deflection and twist). Method: docs/reduction.md.");
   auto o = std::make_shared<ReduceOptions>();
