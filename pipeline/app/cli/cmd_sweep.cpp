@@ -119,7 +119,6 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("case", args->case_file, "case file (TOML)")->required();
   cmd->add_option("--vary", args->vary,
                   "KEY=VALUES, e.g. kinematics.rotation_phase=-0.10:0.05:0.10; repeat for a grid")
-      ->take_first()
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--cases", args->cases_table,
