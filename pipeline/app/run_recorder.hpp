@@ -61,7 +61,6 @@ class RunRecorder {
   std::filesystem::path dir_;
   int vtk_every_;
   std::chrono::steady_clock::time_point started_;
-  double dynamic_pressure_area_;  ///< ½ ρ U_ref² S [N]; 0 in vacuum
   int outer_body_;                ///< 0-based
   io::CsvTimeSeriesWriter history_;
   std::vector<double> row_;

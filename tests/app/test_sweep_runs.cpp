@@ -60,6 +60,13 @@ TEST(SweepRuns, TwoKeyGridGivesOneRowPerCombination) {
   }
   EXPECT_EQ(combinations.size(), 6u);
   EXPECT_EQ(table.rows[1].at("folder"), "01_-0.1_2");  // first key slowest
+
+  // The plot tool draws mean lift against each varied key (tools/plot_sweep.py).
+  const std::string plot = "/usr/bin/python3 '" + std::string(FLAPSIM_SOURCE_DIR) + "/tools/plot_sweep.py' '" +
+                           (dir / "out" / "sweep.csv").string() + "' '" + (dir / "plots").string() + "' > /dev/null";
+  ASSERT_EQ(std::system(plot.c_str()), 0);
+  for (const char* name : {"sweep_kinematics_rotation_phase.png", "sweep_spring_scale.png"})
+    EXPECT_EQ(read_text(dir / "plots" / name).substr(0, 4), "\x89PNG") << name;
 }
 
 TEST(SweepRuns, KilledSweepRerunsOnlyTheMissingCases) {
@@ -150,6 +157,12 @@ TEST(SweepRuns, CaseThatCannotRunIsRecordedAndTheOthersGoOn) {
   EXPECT_EQ(table.rows[2].at("status"), "ok");
   EXPECT_EQ(table.rows[0].at("rank"), "0");
   EXPECT_FALSE(table.rows[0].at("host").empty());
+
+  // --vary takes one value each time: the case file may follow it.
+  ASSERT_EQ(run_flapsim("sweep --vary kinematics.rotation_phase=0.1 --vary spring_scale=2 " +
+                        (dir / "case.toml").string() + " -o " + (dir / "order").string()),
+            0);
+  EXPECT_EQ(read_sweep_table((dir / "order" / "sweep.csv").string()).rows.size(), 1u);
 }
 
 }  // namespace

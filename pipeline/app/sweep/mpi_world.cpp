@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 
 namespace flapsim::sweep {
 
@@ -15,8 +16,24 @@ bool launched_by_mpi() {
   return false;
 }
 
+namespace {
+
+// Slurm's srun without an MPI plug-in starts N copies that each see a world of one:
+// they would all run every case. Refuse that.
+void check_not_split(int size) {
+  const char* tasks = std::getenv("SLURM_STEP_NUM_TASKS");
+  if (tasks && std::atoi(tasks) > 1 && size == 1)
+    throw std::runtime_error(std::string("srun started ") + tasks +
+                             " tasks but MPI sees one: start them with srun --mpi=pmix (or pmi2), or mpirun");
+}
+
+}  // namespace
+
 MpiWorld::MpiWorld() {
-  if (!launched_by_mpi()) return;
+  if (!launched_by_mpi()) {
+    check_not_split(1);
+    return;
+  }
   int provided = 0;
   if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided) != MPI_SUCCESS)
     throw std::runtime_error("MPI_Init_thread failed");
@@ -28,6 +45,14 @@ MpiWorld::MpiWorld() {
   MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &host);
   MPI_Comm_size(host, &local_size_);
   MPI_Comm_free(&host);
+  if (size_ == 1 && std::getenv("SLURM_STEP_NUM_TASKS")) {
+    try {
+      check_not_split(size_);
+    } catch (...) {
+      MPI_Finalize();
+      throw;
+    }
+  }
 }
 
 MpiWorld::~MpiWorld() {
