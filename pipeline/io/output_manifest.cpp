@@ -116,7 +116,7 @@ std::vector<std::string> command_outputs(const std::string& command) {
   if (command == "modes") return {"modes.csv", "fem.vtu"};
   if (command == "reduce") return {"beam.csv", "chain.toml", "reduction.vtp", "report.md", "summary.json"};
   if (command == "run")
-    return {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd",
+    return {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "run.pvsm",
             "vtk/wing_*.vtp", "vtk/wake_*.vtp", "vtk/chain_*.vtp"};
   return {};
 }

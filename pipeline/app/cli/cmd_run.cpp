@@ -65,7 +65,7 @@ void run_command(const RunArgs& a) {
   io::record_command_status(options.output_dir, "run", "complete");
   if (!a.quiet) {
     std::fputs(app::run_report(results).c_str(), stdout);
-    std::printf("outputs in %s (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd)\n",
+    std::printf("outputs in %s (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd, run.pvsm)\n",
                 options.output_dir.string().c_str());
   }
 }
@@ -82,7 +82,9 @@ void add_run_command(CLI::App& app) {
       "coupling iterations, joint angles, markers), summary.json (last-cycle mean lift and CL,\n"
       "rotation phases of base and tip, coupling statistics, wall time) and the ParaView series\n"
       "wing.pvd (deformed surface: pressure jump, circulation), wake.pvd, chain.pvd.\n"
-      "A flexible case takes its chain from --chain, else from the case's 'chain' key.\n"
+      "A flexible case takes its chain from --chain, else from the case's 'chain' key, else it\n"
+      "reduces the case's wing in process to structure.bodies bodies (as 'flapsim reduce').\n"
+      "Also writes run.pvsm, a ParaView state of the series and the lift (docs/fsi.md).\n"
       "One run per folder: a rerun replaces the previous run's files (DIR/flapsim_outputs.toml);\n"
       "another command's files that would be replaced need --force. A long run prints its\n"
       "estimate (memory, interactions, time) first; a run that cannot fit in memory is refused.\n"

@@ -119,8 +119,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("case", args->case_file, "case file (TOML)")->required();
   cmd->add_option("--vary", args->vary,
                   "KEY=VALUES, e.g. kinematics.rotation_phase=-0.10:0.05:0.10; repeat for a grid")
-      ->take_first()
-      ->expected(1)
+      ->allow_extra_args(false)  // one value per --vary: `--vary K=V CASE.toml` leaves CASE.toml alone
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--cases", args->cases_table,
                   "CSV table, one case per row; the header names the keys (instead of --vary)");
