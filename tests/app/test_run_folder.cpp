@@ -30,10 +30,10 @@ TEST(RunFolder, AShorterRerunLeavesNoStaleSeriesFiles) {
   std::ofstream(dir / "short.toml") << small_plate_case("rigid", 1, 6);  // 24 steps, every 6th
   const std::string out = " -o " + (dir / "out").string();
   ASSERT_EQ(run_flapsim("run " + (dir / "long.toml").string() + out), 0);
-  EXPECT_EQ(count_files(dir / "out" / "vtk", "wing_"), 48);
+  EXPECT_EQ(count_files(dir / "out" / "vtk", "wing_"), 49);  // steps 0 (the initial pose) ... 48
   ASSERT_EQ(run_flapsim("run " + (dir / "short.toml").string() + out), 0);
-  EXPECT_EQ(count_files(dir / "out" / "vtk", "wing_"), 4);  // steps 6, 12, 18, 24
-  EXPECT_EQ(count_files(dir / "out" / "vtk", "chain_"), 4);
+  EXPECT_EQ(count_files(dir / "out" / "vtk", "wing_"), 5);  // steps 0, 6, 12, 18, 24
+  EXPECT_EQ(count_files(dir / "out" / "vtk", "chain_"), 5);
   EXPECT_NE(read_text(dir / "out" / "flapsim_outputs.toml").find("complete"), std::string::npos);
 }
 
