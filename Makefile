@@ -1,13 +1,16 @@
 # flapsim — the commands users drive. Every target installs missing Debian
 # packages first (tools/install_deps.sh), then configures and builds as needed.
-#   make run             the full pipeline on the default hawkmoth wing:
-#                        wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz
+#   make run [CASE=cases/x.toml]   a case (default: the full pipeline on the hawkmoth
+#                        wing: wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz)
+#                        into out/<case>/, with a preview PNG and a ParaView state
+#   make model WING=wings/x.toml [BODIES=N]   regenerate out/<wing>/ (mesh, FEM, beam,
+#                        chain), re-running only the stages whose inputs changed
+#   make hawkmoth-model  the same for the default wing (out/hawkmoth/)
 #   make test            build and run every test (ctest)
 #   make test-asan       every test again, built with ASan + UBSan
-#   make hawkmoth-model  regenerate out/hawkmoth/ (mesh, FEM, beam, chain)
-#   make phase-study     the rotation-phase sweeps (rigid and flexible wing)
-#   make plots           PNG figures of the phase study in out/plots
-#   make sweep-plots SWEEP=DIR/sweep.csv   mean lift against each varied key
+#   make phase-study [CASE=...]   the rotation-phase sweeps (rigid and flexible wing)
+#   make plots           PDF and PNG figures of the phase study in out/plots
+#   make figures         docs/figures from a fresh phase study
 #   make validate        reference-vs-computed table of the validation cases
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
 #   make fuzz            the loader fuzzer with many more mutants (FUZZ_MUTANTS per loader)
@@ -20,12 +23,12 @@ CMAKE_ARGS ?=
 OUT        ?= out
 MAKEFLAGS  += --no-print-directory
 
-.PHONY: all deps build run test test-asan fuzz bench hawkmoth-model clean help
+.PHONY: all deps build test test-asan fuzz bench clean help
 
 all: build
 
 help:
-	@sed -n '1,15p' Makefile
+	@sed -n '1,17p' Makefile
 
 deps:
 	@tools/install_deps.sh
@@ -35,10 +38,6 @@ $(BUILD)/CMakeCache.txt: | deps
 
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j$(JOBS)
-
-run: build
-	@$(BUILD)/flapsim check wings/hawkmoth.toml
-	@$(MAKE) --no-print-directory run-pipeline
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
@@ -62,5 +61,6 @@ bench: build
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD)
 
-include tools/hawkmoth_model.mk
+include tools/case.mk
+include tools/model.mk
 include tools/pipeline.mk
