@@ -13,6 +13,7 @@
 #   make figures         docs/figures from a fresh phase study
 #   make validate        reference-vs-computed table of the validation cases
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
+#   make fuzz            the loader fuzzer with many more mutants (FUZZ_MUTANTS per loader)
 # See README.md for the rest.
 
 BUILD      ?= build
@@ -22,7 +23,7 @@ CMAKE_ARGS ?=
 OUT        ?= out
 MAKEFLAGS  += --no-print-directory
 
-.PHONY: all deps build test test-asan bench clean help
+.PHONY: all deps build test test-asan fuzz bench clean help
 
 all: build
 
@@ -47,6 +48,12 @@ $(ASAN_BUILD)/CMakeCache.txt: | deps
 test-asan: deps $(ASAN_BUILD)/CMakeCache.txt
 	cmake --build $(ASAN_BUILD) -j$(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
+
+# The loader fuzzer of `make test` (tests/io/test_fuzz_loaders.cpp) with more mutants:
+# FUZZ_MUTANTS per loader (wing, case, chain, outline CSV), same fixed seed.
+FUZZ_MUTANTS ?= 25000
+fuzz: build
+	FLAPSIM_FUZZ_MUTANTS=$(FUZZ_MUTANTS) $(BUILD)/tests/io/test_io --gtest_filter='FuzzLoaders.*'
 
 bench: build
 	@for b in $(BUILD)/bench/*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
