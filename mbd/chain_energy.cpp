@@ -13,11 +13,12 @@ double kinetic_energy(const ChainModel& model, const ChainData& data) {
 }
 
 double spring_energy(const ChainModel& model, const Eigen::VectorXd& q) {
-  return 0.5 * (model.stiffness_diagonal().array() * (q - model.rest_angles()).array().square()).sum();
+  const Eigen::VectorXd d = q - model.rest_angles();
+  return 0.5 * d.dot(model.stiffness() * d);
 }
 
 double damper_power(const ChainModel& model, const Eigen::VectorXd& v) {
-  return (model.damping_diagonal().array() * v.array().square()).sum();
+  return v.dot(model.damping() * v);
 }
 
 double base_power(const ChainModel& model, const ChainData& data, const BasePose& base,

@@ -16,7 +16,7 @@ namespace flapsim::mbd {
 /// Kinetic energy in the ground frame [J] at the state of the last forward_kinematics.
 double kinetic_energy(const ChainModel& model, const ChainData& data);
 
-/// Spring energy ½ Σ k (Φ − Φ_rest)² [J].
+/// Spring energy ½ (Φ − Φ_rest)ᵀ K (Φ − Φ_rest) [J].
 double spring_energy(const ChainModel& model, const Eigen::VectorXd& q);
 
 /// Power dissipated by the dampers Φ̇ᵀ C Φ̇ [W] (≥ 0).

@@ -102,10 +102,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   if (!(options.spring_scale > 0.0) || !std::isfinite(options.spring_scale))
     throw InputError("", 0, "--spring-scale", "must be a positive number");
   if (options.spring_scale != 1.0 && m.chain.num_dofs() > 0) {
-    for (auto& j : m.chain.joints) {
-      j.bend_stiffness *= options.spring_scale;
-      j.twist_stiffness *= options.spring_scale;
-    }
+    m.chain.scale_stiffness(options.spring_scale);
     char buf[64];
     std::snprintf(buf, sizeof buf, ", springs x %g", options.spring_scale);
     s.structure_source += buf;

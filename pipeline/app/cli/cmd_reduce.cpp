@@ -17,6 +17,8 @@
 #include "pipeline/io/reduction_files.hpp"
 #include "reduction/beam_properties.hpp"
 #include "reduction/chain_lumping.hpp"
+#include "reduction/reduction_failure.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
 #include "reduction/reduction_report.hpp"
 #include "wings/input_error.hpp"
 #include "wings/wing_file.hpp"
@@ -34,23 +36,33 @@ struct ReduceOptions {
   int stations = 40;
   int modes = 12;
   std::string axis = "fitted";
+  std::string springs = "full";
 };
 
 void run_reduce(const ReduceOptions& o) {
   const wings::Wing wing = wings::load_wing_file(o.wing_file);  // InputError → exit 2
   reduction::AnalysisOptions ao;
-  ao.axis = o.axis == "span" ? reduction::AxisChoice::span : reduction::AxisChoice::fitted;
+  ao.axis = o.axis == "span"     ? reduction::AxisChoice::span
+            : o.axis == "fitted" ? reduction::AxisChoice::fitted
+                                 : reduction::AxisChoice::flexural;
   const fem::WingFem fem = fem::build_wing_fem(wing);
   const fem::WingModes modes = fem::wing_modes(fem, o.modes);
   const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp, ao);
+  const fs::path dir(o.out_dir);
   const reduction::BeamProperties beam = reduction::extract_beam_properties(analysis, o.stations);
-  const reduction::LumpedChain lc = reduction::lump_into_chain(analysis, o.bodies);
+  io::ensure_directory(dir);
+  io::write_beam_csv(dir / "beam.csv", beam);  // written even if the chain cannot be made
+  reduction::LumpedChain lc;
+  try {
+    lc = reduction::lump_into_chain(analysis, o.bodies,
+                                    o.springs == "diagonal" ? reduction::SpringModel::diagonal
+                                                            : reduction::SpringModel::full);
+  } catch (const reduction::ReductionFailure& e) {
+    throw NumericalFailure("cannot reduce " + o.wing_file + " to " + std::to_string(o.bodies) +
+                           " bodies: " + e.what());
+  }
   const reduction::ChainFemComparison cmp =
       reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds);
-
-  const fs::path dir(o.out_dir);
-  io::ensure_directory(dir);
-  io::write_beam_csv(dir / "beam.csv", beam);
   io::write_chain_file(dir / "chain.toml", lc.chain);
   io::write_reduction_vtp(dir / "reduction.vtp", beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
@@ -68,7 +80,7 @@ void add_reduce_command(CLI::App& app) {
       "reduce",
       "Reduce a wing's FEM to an equivalent beam and an N-body Hencky bar chain.\n"
       "Writes DIR/beam.csv (stations: s, y, m', x_cg, x_ea, EI, GJ, I_alpha),\n"
-      "DIR/chain.toml (bodies and springs, for 'flapsim run'), DIR/reduction.vtp,\n"
+      "DIR/chain.toml (bodies and the joint stiffness, for 'flapsim run'), DIR/reduction.vtp,\n"
       "DIR/report.md and DIR/summary.json (chain vs FEM: first bending and torsion\n"
       "frequencies, MAC, static tip deflection and twist). Method: docs/reduction.md.");
   auto o = std::make_shared<ReduceOptions>();
@@ -79,8 +91,14 @@ void add_reduce_command(CLI::App& app) {
   cmd->add_option("--stations", o->stations, "number of beam stations (default 40)")
       ->check(CLI::Range(2, 10000));
   cmd->add_option("--modes", o->modes, "FEM modes to compute (default 12)")->check(CLI::Range(2, 200));
-  cmd->add_option("--axis", o->axis, "flexural axis: fitted (least squares through the pivot) or span (y_W)")
-      ->check(CLI::IsMember({"fitted", "span"}));
+  cmd->add_option("--axis", o->axis,
+                  "the chain's axis: flexural (least-squares line through the stations' flexural axes, "
+                  "default), fitted (line through the pivot and the cells' elastic axes) or span (y_W)")
+      ->check(CLI::IsMember({"flexural", "fitted", "span"}));
+  cmd->add_option("--springs", o->springs,
+                  "joint springs: full (the joint stiffness K by reciprocity, default) or diagonal "
+                  "(the papers' independent springs, coupling dropped)")
+      ->check(CLI::IsMember({"full", "diagonal"}));
   cmd->callback([o] { run_reduce(*o); });
 }
 
