@@ -9,6 +9,7 @@
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/fsi_vtk.hpp"
 #include "pipeline/io/vtk_writers.hpp"
+#include "wings/toml_reader.hpp"
 
 namespace flapsim::app {
 
@@ -37,8 +38,6 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
       dir_(existing_directory(output_dir)),
       vtk_every_(vtk_every),
       started_(started),
-      dynamic_pressure_area_(setup.model.air ? setup.reference.dynamic_pressure_area(setup.model.density)
-                                             : 0.0),
       outer_body_(fsi::outer_body(setup.model.chain)),
       history_(dir_ / "history.csv", history_header(c, setup.model.chain), 20),
       row_(history_.columns().size()) {
@@ -65,12 +64,17 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
   if (model.air) {
     r.set("reference_area_m2", setup.reference.area);
     r.set("reference_speed_m_s", setup.reference.speed);
+    r.set("reference_kind", setup.reference.kind_name());
+    r.set("flapping_speed_m_s", setup.reference.flapping_speed);
+    r.set("free_stream_speed_m_s", setup.reference.free_stream_speed);
+    r.set("load_method", std::string(wings::choice_name(io::kLoadMethodNames, c.numerics.load_method)));
+    r.set("leading_edge", std::string(wings::choice_name(io::kLeadingEdgeNames, c.numerics.leading_edge)));
     r.set("r2", setup.reference.r2);
   }
 }
 
 void RunRecorder::record(const fsi::FsiData& data) {
-  samples_.push_back(sample_step(setup_.model, data, case_.kinematics, dynamic_pressure_area_, outer_body_));
+  samples_.push_back(sample_step(setup_.model, data, case_.kinematics, setup_.reference, outer_body_));
   history_row(samples_.back(), case_, data, row_);
   history_.append(std::span<const double>(row_.data(), row_.size()));
   if (vtk_every_ > 0 && data.step % vtk_every_ == 0) write_series(data, data.step);
@@ -113,6 +117,19 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   r.set("mean_Fx_N", mean(series(samples_, [](const StepSample& s) { return s.force.x(); })));
   r.set("mean_Fy_N", mean(series(samples_, [](const StepSample& s) { return s.force.y(); })));
   r.set("mean_Fz_N", mean(series(samples_, [](const StepSample& s) { return s.force.z(); })));
+  if (setup_.model.air) {
+    r.set("mean_drag_N", mean(series(samples_, [](const StepSample& s) { return s.drag; })));
+    r.set("mean_CD", mean(series(samples_, [](const StepSample& s) { return s.cd; })));
+    r.set("mean_side_N", mean(series(samples_, [](const StepSample& s) { return s.side; })));
+    r.set("mean_Mx_base_Nm", mean(series(samples_, [](const StepSample& s) { return s.moment.x(); })));
+    r.set("mean_My_base_Nm", mean(series(samples_, [](const StepSample& s) { return s.moment.y(); })));
+    r.set("mean_Mz_base_Nm", mean(series(samples_, [](const StepSample& s) { return s.moment.z(); })));
+    const double power = mean(series(samples_, [](const StepSample& s) { return s.power; }));
+    r.set("mean_power_W", power);
+    r.set("mean_CP", mean(series(samples_, [](const StepSample& s) { return s.cp; })));
+    r.set("lift_per_power_N_W", power != 0.0 ? r.number("mean_lift_N") / power
+                                             : std::numeric_limits<double>::quiet_NaN());
+  }
 
   const auto base_phi = series(samples_, [](const StepSample& s) { return s.base.sweep.value; });
   const auto base_alpha = series(samples_, [](const StepSample& s) { return s.base.rotation.value; });

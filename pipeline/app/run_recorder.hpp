@@ -33,6 +33,9 @@ class RunRecorder {
   RunRecorder(const io::Case& c, const FsiSetup& setup, const std::filesystem::path& output_dir,
               int vtk_every, double spring_scale, std::chrono::steady_clock::time_point started);
 
+  /// \brief Sets the fingerprint of the run's inputs (io::input_hash), reported as inputs_hash.
+  void set_inputs_hash(std::string hash) { results_.set("inputs_hash", std::move(hash)); }
+
   /// \brief Records the state after a coupled step (before the wake is shed).
   void record(const fsi::FsiData& data);
 
@@ -53,7 +56,6 @@ class RunRecorder {
   std::filesystem::path dir_;
   int vtk_every_;
   std::chrono::steady_clock::time_point started_;
-  double dynamic_pressure_area_;  ///< ½ ρ U_ref² S [N]; 0 in vacuum
   int outer_body_;                ///< 0-based
   io::CsvTimeSeriesWriter history_;
   std::vector<double> row_;

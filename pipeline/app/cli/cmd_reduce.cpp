@@ -41,6 +41,7 @@ struct ReduceOptions {
 
 void run_reduce(const ReduceOptions& o) {
   const wings::Wing wing = wings::load_wing_file(o.wing_file);  // InputError → exit 2
+  print_wing_warnings(wing);
   reduction::AnalysisOptions ao;
   ao.axis = o.axis == "span"     ? reduction::AxisChoice::span
             : o.axis == "fitted" ? reduction::AxisChoice::fitted
@@ -64,7 +65,7 @@ void run_reduce(const ReduceOptions& o) {
   const reduction::ChainFemComparison cmp =
       reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds);
   io::write_chain_file(dir / "chain.toml", lc.chain);
-  io::write_reduction_vtp(dir / "reduction.vtp", beam, lc);
+  io::write_reduction_vtk(dir, beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
   io::write_reduction_summary(dir / "summary.json", beam, lc, cmp);
   std::cerr << "reduce: " << o.bodies << " bodies; first bending " << cmp.bending.chain_hz << " Hz (FEM "
@@ -80,7 +81,8 @@ void add_reduce_command(CLI::App& app) {
       "reduce",
       "Reduce a wing's FEM to an equivalent beam and an N-body Hencky bar chain.\n"
       "Writes DIR/beam.csv (stations: s, y, m', x_cg, x_ea, EI, GJ, I_alpha),\n"
-      "DIR/chain.toml (bodies and the joint stiffness, for 'flapsim run'), DIR/reduction.vtp,\n"
+      "DIR/chain.toml (bodies and the joint stiffness, for 'flapsim run'), DIR/reduction.vtm (stations, bodies,\n"
+      "joints, centres of mass),\n"
       "DIR/report.md and DIR/summary.json (chain vs FEM: first bending and torsion\n"
       "frequencies, MAC, static tip deflection and twist). Method: docs/reduction.md.");
   auto o = std::make_shared<ReduceOptions>();
@@ -92,8 +94,8 @@ void add_reduce_command(CLI::App& app) {
       ->check(CLI::Range(2, 10000));
   cmd->add_option("--modes", o->modes, "FEM modes to compute (default 12)")->check(CLI::Range(2, 200));
   cmd->add_option("--axis", o->axis,
-                  "the chain's axis: flexural (least-squares line through the stations' flexural axes, "
-                  "default), fitted (line through the pivot and the cells' elastic axes) or span (y_W)")
+                  "the chain's axis: fitted (line through the pivot and the cells' elastic axes, default), "
+                  "flexural (least-squares line through the stations' flexural axes) or span (y_W)")
       ->check(CLI::IsMember({"flexural", "fitted", "span"}));
   cmd->add_option("--springs", o->springs,
                   "joint springs: full (the joint stiffness K by reciprocity, default) or diagonal "
