@@ -7,7 +7,9 @@
 
 #include "pipeline/fsi/phase_analysis.hpp"
 #include "pipeline/io/atomic_file.hpp"
+#include "pipeline/fsi/wing_attachment.hpp"
 #include "pipeline/io/fsi_vtk.hpp"
+#include "pipeline/io/pvsm_state.hpp"
 #include "pipeline/io/vtk_writers.hpp"
 #include "wings/toml_reader.hpp"
 
@@ -49,6 +51,7 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
     }
     chain_pvd_.emplace(dir_ / "chain.pvd");
     io::ensure_directory(dir_ / "vtk");
+    write_state();
   }
   RunResults& r = results_;
   r.set("case", c.name);
@@ -80,20 +83,59 @@ void RunRecorder::record(const fsi::FsiData& data) {
   if (vtk_every_ > 0 && data.step % vtk_every_ == 0) write_series(data, data.step);
 }
 
+void RunRecorder::record_initial(const fsi::FsiData& data) {
+  if (vtk_every_ > 0) write_series(data, 0);
+}
+
 void RunRecorder::write_series(const fsi::FsiData& data, long step) {
   const fsi::FsiModel& model = setup_.model;
   const double t = data.state.time;
+  io::StepValues values;
+  values.step = step;
+  values.t_over_T = t / setup_.period;
+  if (step > 0) {
+    values.lift = samples_.back().lift;
+    values.cl = samples_.back().cl;
+  }
   if (model.air) {
+    // Step 0 is the pose before the first solve: the lattice placed on the chain, no loads.
+    io::PolyDataMesh wing;
+    if (step == 0) {
+      Eigen::Matrix3Xd nodes(3, model.lattice.nodes()), velocities(3, model.lattice.nodes());
+      fsi::deformed_nodes(model.attachment, data.chain, nodes, velocities);
+      wing = io::wing_surface_mesh(model.lattice, nodes, velocities, t);
+    } else {
+      wing = io::wing_surface_mesh(model.lattice, *data.lattice, t);
+      pressure_range_ = std::max(pressure_range_, data.lattice->loads.pressure_jump.cwiseAbs().maxCoeff());
+    }
+    io::add_step_values(wing, values);
     const auto wf = io::PvdSeries::step_file_name("vtk/wing", step, "vtp");
-    io::write_vtp(dir_ / wf, io::wing_surface_mesh(model.lattice, *data.lattice, t));
+    io::write_vtp(dir_ / wf, wing);
     wing_pvd_->add(t, dir_ / wf);
+    io::PolyDataMesh wake = io::wake_mesh(model.lattice, *data.lattice, t);
+    if (wake.cell_data.scalars.front().values.size() > 0)
+      circulation_range_ = std::max(circulation_range_, wake.cell_data.scalars.front().values.cwiseAbs().maxCoeff());
+    io::add_step_values(wake, values);
     const auto kf = io::PvdSeries::step_file_name("vtk/wake", step, "vtp");
-    io::write_vtp(dir_ / kf, io::wake_mesh(model.lattice, *data.lattice, t));
+    io::write_vtp(dir_ / kf, wake);
     wake_pvd_->add(t, dir_ / kf);
   }
+  io::PolyDataMesh chain = io::chain_mesh(model.chain, data.chain, t);
+  io::add_step_values(chain, values);
   const auto cf = io::PvdSeries::step_file_name("vtk/chain", step, "vtp");
-  io::write_vtp(dir_ / cf, io::chain_mesh(model.chain, data.chain, t));
+  io::write_vtp(dir_ / cf, chain);
   chain_pvd_->add(t, dir_ / cf);
+}
+
+void RunRecorder::write_state() const {
+  io::RunState state;
+  state.air = setup_.model.air;
+  double length = 0.0;
+  for (const auto& b : setup_.model.chain.bodies) length += b.length;
+  if (length > 0.0) state.length_scale = length;
+  if (pressure_range_ > 0.0) state.pressure_range = pressure_range_;
+  if (circulation_range_ > 0.0) state.circulation_range = circulation_range_;
+  io::write_run_state(dir_ / "run.pvsm", state);
 }
 
 // The results of the samples: means over the last complete cycle (or whatever was run,
@@ -182,6 +224,7 @@ RunResults RunRecorder::finish(const fsi::FsiData& data, const std::string& stat
   results_.set("wall_time_s",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count());
   summary_json(results_).write(dir_ / "summary.json");
+  if (vtk_every_ > 0) write_state();  // colour ranges of the whole run
   return results_;
 }
 
