@@ -119,6 +119,39 @@ void refuse_headers_toml_cannot_parse(std::string_view text, const std::string& 
     }
     i = end + 1;
   }
+  // toml++ 3.x also asserts in parse_value() on a '}' where an array element is expected
+  // ("[}", "[1, }"): outside strings and comments, a '}' right after '[' or ','
+  // (whitespace between) is refused. It is invalid TOML in every case.
+  char previous = '\n';
+  line = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    if (c == '#') {  // comment to the end of the line
+      while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+      continue;
+    }
+    if (c == '"' || c == '\'') {  // a string (multi-line ones too), escapes in basic strings
+      const bool triple = text.substr(i, 3) == std::string(3, c);
+      std::size_t j = i + (triple ? 3 : 1);
+      while (j < text.size()) {
+        if (c == '"' && text[j] == '\\') {
+          j += 2;
+          continue;
+        }
+        if (triple ? text.substr(j, 3) == std::string(3, c) : text[j] == c) break;
+        if (!triple && text[j] == '\n') break;
+        if (text[j] == '\n') ++line;
+        ++j;
+      }
+      i = std::min(text.size(), j + (triple ? 3 : 1)) - 1;
+      previous = c;
+      continue;
+    }
+    if (c == '}' && (previous == '[' || previous == ','))
+      throw InputError(name, line, "", "TOML syntax error: '}' where a value is expected");
+    if (c != ' ' && c != '\t' && c != '\r' && c != '\n') previous = c;
+  }
 }
 
 }  // namespace
