@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "wings/input_error.hpp"
 
@@ -28,6 +29,7 @@ int run(int argc, char** argv) {
   add_reduce_command(app);
   add_run_command(app);
   add_sweep_command(app);
+  for (CLI::App* command : app.get_subcommands({})) add_threads_option(*command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
@@ -33,7 +34,7 @@ void sweep_command(const SweepArgs& a) {
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;
   options.spring_scale = a.spring_scale;
-  options.threads = a.jobs;
+  options.threads = a.jobs > 0 ? a.jobs : command_threads();  // one OpenMP thread per case
   options.vtk_every = a.vtk_every;
   options.quiet = a.quiet;
   const auto rows = sweep::run_sweep(a.case_file, variation, options);
@@ -82,7 +83,7 @@ void add_sweep_command(CLI::App& app) {
       ->required();
   cmd->add_option("-o,--output", args->output_dir, "output folder")->required();
   cmd->add_option("--chain", args->chain_file, "chain file for every case (as flapsim run --chain)");
-  cmd->add_option("-j,--jobs", args->jobs, "cases run at the same time (default: the available cores)")
+  cmd->add_option("-j,--jobs", args->jobs, "cases run at the same time (default: --threads)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--vtk-every", args->vtk_every, "ParaView series per case every N steps (default 0: none)")
       ->check(CLI::NonNegativeNumber);
