@@ -7,6 +7,7 @@
 #   make hawkmoth-model  regenerate out/hawkmoth/ (mesh, FEM, beam, chain)
 #   make phase-study     the rotation-phase sweeps (rigid and flexible wing)
 #   make plots           PNG figures of the phase study in out/plots
+#   make sweep-plots SWEEP=DIR/sweep.csv   mean lift against each varied key
 #   make validate        reference-vs-computed table of the validation cases
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
 # See README.md for the rest.
@@ -23,7 +24,7 @@ MAKEFLAGS  += --no-print-directory
 all: build
 
 help:
-	@sed -n '1,14p' Makefile
+	@sed -n '1,15p' Makefile
 
 deps:
 	@tools/install_deps.sh

@@ -43,7 +43,7 @@ $(HAWKMOTH_OUT)/modes.csv $(HAWKMOTH_OUT)/fem.vtu &: $(HAWKMOTH_INPUTS) $(HAWKMO
 	$(HAWKMOTH_BIN) modes $(HAWKMOTH_WING) -o $(HAWKMOTH_OUT)
 
 # Stage 3: equivalent beam and bar chain, with the chain-vs-FEM report.
-$(HAWKMOTH_OUT)/chain.toml $(HAWKMOTH_OUT)/beam.csv $(HAWKMOTH_OUT)/reduction.vtp \
+$(HAWKMOTH_OUT)/chain.toml $(HAWKMOTH_OUT)/beam.csv $(HAWKMOTH_OUT)/reduction.vtm \
 $(HAWKMOTH_OUT)/report.md $(HAWKMOTH_OUT)/summary.json &: \
     $(HAWKMOTH_INPUTS) $(HAWKMOTH_BODIES_FILE) $(HAWKMOTH_OUT)/modes.csv
 	$(HAWKMOTH_BIN) reduce $(HAWKMOTH_WING) -o $(HAWKMOTH_OUT) --bodies $(HAWKMOTH_BODIES)

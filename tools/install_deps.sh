@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libtomlplusplus-dev libcli11-dev
   libsimbody-dev
+  libopenmpi-dev openmpi-bin
   python3-matplotlib
 )
 

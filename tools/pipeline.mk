@@ -5,7 +5,10 @@
 #   make run-pipeline   wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz
 #   make phase-study    rigid (dpsi = -0.20..+0.10) and flexible (-0.10..+0.10) sweeps,
 #                       5 cycles each, all 12 cases over the cores
-#   make plots          PNG figures of the study (the paper's Figs. 12-15) in $(OUT)/plots
+#   make plots          PNG figures of the study (the paper's Figs. 12-15) in $(OUT)/plots,
+#                       and mean lift against the phase of each table (tools/plot_sweep.py)
+#   make sweep-plots SWEEP=DIR/sweep.csv   mean lift (and power) against each varied key
+#                       of any sweep, in DIR/plots (or SWEEP_PLOTS=...)
 #   make validate       reference-vs-computed table of the validation cases
 #
 # The coupled runs are small (6 x 10 panels): one OpenMP thread per run is faster than
@@ -22,7 +25,7 @@ PHASE_OUT         ?= $(OUT)/phase_study
 PHASE_JOBS        ?= $(shell nproc)
 PLOTS_OUT         ?= $(OUT)/plots
 
-.PHONY: run-pipeline phase-study plots validate
+.PHONY: run-pipeline phase-study plots sweep-plots validate
 
 # The reduction stage of tools/hawkmoth_model.mk keeps the body count in a file it
 # refreshes only when `hawkmoth-model` is a goal; do the same for these goals, which
@@ -40,7 +43,7 @@ run-pipeline: build $(PIPELINE_CHAIN)
 	end=$$(date +%s.%N); \
 	echo "FSI run: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"; \
 	echo "ParaView: open $(OUT)/hover_flexible/wing.pvd, wake.pvd and chain.pvd together"; \
-	echo "          (the FEM and the chain: $(OUT)/hawkmoth/fem.vtu, reduction.vtp)"
+	echo "          (the FEM and the chain: $(OUT)/hawkmoth/fem.vtu, reduction.vtm)"
 
 phase-study: build $(PIPELINE_CHAIN)
 	@start=$$(date +%s.%N); \
@@ -61,6 +64,13 @@ plots:
 	@test -f $(PHASE_OUT)/rigid/sweep.csv -a -f $(PHASE_OUT)/flexible/sweep.csv || \
 	  $(MAKE) --no-print-directory phase-study
 	$(PIPELINE_PYTHON) tools/plot_phase_study.py $(PHASE_OUT) $(PLOTS_OUT)
+	$(PIPELINE_PYTHON) tools/plot_sweep.py $(PHASE_OUT)/rigid/sweep.csv $(PLOTS_OUT)/rigid
+	$(PIPELINE_PYTHON) tools/plot_sweep.py $(PHASE_OUT)/flexible/sweep.csv $(PLOTS_OUT)/flexible
+
+# Any sweep's table (docs/sweeps.md, "Plotting a sweep").
+sweep-plots:
+	@test -n "$(SWEEP)" || { echo "usage: make sweep-plots SWEEP=DIR/sweep.csv [SWEEP_PLOTS=OUTPUT_DIR]" >&2; exit 2; }
+	$(PIPELINE_PYTHON) tools/plot_sweep.py $(SWEEP) $(SWEEP_PLOTS)
 
 validate: build $(PIPELINE_CHAIN)
 	@test -f $(PHASE_OUT)/rigid/sweep.csv -a -f $(PHASE_OUT)/flexible/sweep.csv || \

@@ -1,14 +1,17 @@
 #include "wings/wing_file.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <sstream>
+#include <string_view>
 #include <utility>
 
 #include "wings/input_error.hpp"
 #include "wings/outline_csv.hpp"
+#include "wings/outline_shapes.hpp"
 #include "wings/planform_geometry.hpp"
 
 namespace flapsim::wings {
@@ -34,13 +37,63 @@ std::pair<double, double> read_taper(const TomlTable& t, std::string_view key) {
   return {v[0], v[1]};
 }
 
-Material read_material(const TomlTable& t) {
+void warn(std::vector<InputWarning>& warnings, const TomlTable& t, std::string_view key,
+          const std::string& message) {
+  warnings.push_back({t.file(), t.line_of(key), t.key_path(key), message});
+}
+
+// Plausibility (docs/wing_file.md, "Plausibility warnings"): values outside what any
+// wing material has, with the unit mistake that would explain them.
+void check_modulus(const TomlTable& t, double e, std::vector<InputWarning>& warnings) {
+  if (e < 1e6) {
+    std::string guess;
+    for (const auto& [unit, factor] : {std::pair{"GPa", 1e9}, std::pair{"MPa", 1e6}, std::pair{"kPa", 1e3}})
+      if (e * factor >= 1e6 && e * factor <= 1e12)
+        guess += std::string(guess.empty() ? "" : " or ") + unit + " (" + fmt(e) + " " + unit + " = " +
+                 fmt(e * factor) + ")";
+    warn(warnings, t, "youngs_modulus",
+         fmt(e) + " Pa is below 1 MPa, softer than any wing material; youngs_modulus is in Pa" +
+             (guess.empty() ? std::string(".") : ": was it meant in " + guess + "?"));
+  } else if (e > 1e12) {
+    warn(warnings, t, "youngs_modulus",
+         fmt(e) + " Pa is above 1 TPa, stiffer than diamond; youngs_modulus is in Pa: was it given in "
+                  "a smaller unit (e.g. kPa: " + fmt(e) + " kPa = " + fmt(e * 1e3) + " Pa), or is the exponent off?");
+  }
+}
+
+void check_density(const TomlTable& t, double rho, std::vector<InputWarning>& warnings) {
+  if (rho < 10.0)
+    warn(warnings, t, "density",
+         fmt(rho) + " kg/m³ is below 10 kg/m³, lighter than any wing material; density is in kg/m³: was it "
+                    "meant in g/cm³ (" + fmt(rho) + " g/cm³ = " + fmt(rho * 1e3) + " kg/m³)?");
+  else if (rho > 20000.0)
+    warn(warnings, t, "density",
+         fmt(rho) + " kg/m³ is above 20000 kg/m³, denser than any wing material; density is in kg/m³: was it "
+                    "meant in g/m³ (" + fmt(rho) + " g/m³ = " + fmt(rho * 1e-3) + " kg/m³)?");
+}
+
+void check_film(const TomlTable& t, double thickness_m, std::vector<InputWarning>& warnings) {
+  if (thickness_m >= 1e-6) return;
+  const double written = thickness_m / t.length_scale();
+  std::string message = "the membrane would be " + fmt(thickness_m * 1e6) +
+                        " µm thick, thinner than 1 µm; thickness is in length_unit = \"" + t.length_unit() + "\"";
+  if (t.length_unit() != "m" && written >= 1e-6 && written <= 1e-3)
+    message += ": was it written in metres? " + fmt(written) + " m is " + fmt(written / t.length_scale()) +
+               " " + t.length_unit();
+  else
+    message += ": is the value in that unit?";
+  warn(warnings, t, "thickness", message);
+}
+
+Material read_material(const TomlTable& t, std::vector<InputWarning>& warnings) {
   t.expect_only({"youngs_modulus", "poisson_ratio", "density"});
   Material m;
   m.youngs_modulus = t.get_double("youngs_modulus", Bounds::positive());
   // Isotropic stability: −1 < ν < 1/2.
   m.poisson_ratio = t.get_double("poisson_ratio", Bounds::open(-1.0, 0.5));
   m.density = t.get_double("density", Bounds::positive());
+  check_modulus(t, m.youngs_modulus, warnings);
+  check_density(t, m.density, warnings);
   return m;
 }
 
@@ -64,26 +117,81 @@ struct Planform {
   double clamp_y = 0.0;
 };
 
+// The outline of `shape = "..."` (ellipse, half_ellipse, rounded_rectangle) from its size keys.
+Polygon read_shape_outline(const TomlTable& p, int samples) {
+  constexpr std::array<std::pair<std::string_view, OutlineShape>, 3> kShapes{
+      {{"ellipse", OutlineShape::ellipse},
+       {"half_ellipse", OutlineShape::half_ellipse},
+       {"rounded_rectangle", OutlineShape::rounded_rectangle}}};
+  const OutlineShape shape = p.get_choice("shape", kShapes);
+  if (!p.has("span")) p.fail("span", "missing required key: a shape reaches from root_y to the tip at 'span'");
+  ShapeSize size;
+  size.tip_y = p.get_length("span", Bounds::positive());
+  size.chord = p.get_length("chord", Bounds::positive());
+  size.root_y = p.get_length("root_y", 0.0, Bounds::at_least(0.0));
+  if (!(size.root_y < size.tip_y)) p.fail("root_y", "must be smaller than the span");
+  size.leading_edge_x = p.get_length("leading_edge_x", 0.25 * size.chord, Bounds::any());
+  if (shape == OutlineShape::rounded_rectangle) {
+    const double limit = std::min(0.5 * size.chord, size.tip_y - size.root_y);
+    size.tip_radius = p.get_length("tip_radius", 0.5 * size.chord, Bounds::positive());
+    if (size.tip_radius > limit * (1 + 1e-12))
+      p.fail("tip_radius", "must not exceed half the chord nor the length span - root_y (" +
+                               fmt(limit / p.length_scale()) + " " + p.length_unit() + ")");
+  } else if (p.has("tip_radius")) {
+    p.fail("tip_radius", "only applies to shape = \"rounded_rectangle\"");
+  }
+  return shape_outline(shape, size, samples);
+}
+
 Planform read_planform(const TomlTable& p) {
-  p.expect_only({"outline", "outline_file", "span", "area", "clamp_y"});
-  const bool inline_pts = p.has("outline"), from_file = p.has("outline_file");
-  if (inline_pts == from_file)
-    p.fail(inline_pts ? "outline_file" : "outline",
-           "give exactly one of 'outline' (inline [[x, y], ...]) or 'outline_file' (CSV)");
+  p.expect_only({"outline", "outline_file", "spline", "shape", "outline_points", "chord", "root_y",
+                 "leading_edge_x", "tip_radius", "span", "area", "clamp_y"});
+  const std::array<std::string_view, 4> sources{"outline", "outline_file", "spline", "shape"};
+  std::string outline_key;
+  for (const auto key : sources)
+    if (p.has(key)) {
+      if (!outline_key.empty())
+        p.fail(key, "give exactly one of 'outline' (inline [[x, y], ...]), 'outline_file' (CSV), "
+                    "'spline' (control points of a closed spline) or 'shape' (ellipse, half_ellipse, "
+                    "rounded_rectangle); '" + outline_key + "' is given too");
+      outline_key = key;
+    }
+  if (outline_key.empty())
+    p.fail("outline", "missing: give one of 'outline', 'outline_file', 'spline' or 'shape'");
+  const bool from_file = outline_key == "outline_file";
+  if (outline_key != "shape")
+    for (const char* k : {"chord", "root_y", "leading_edge_x", "tip_radius"})
+      if (p.has(k)) p.fail(k, "only applies to 'shape'");
+  const int samples = p.get_int("outline_points", 96, Bounds::closed(16, 10000));
+  if (p.has("outline_points") && outline_key != "spline" && outline_key != "shape")
+    p.fail("outline_points", "only applies to 'spline' and 'shape'");
 
   Planform out;
-  std::string outline_key;
   if (from_file) {
-    outline_key = "outline_file";
     // The CSV is in units of the wing length; 'span' scales it.
     if (!p.has("span")) p.fail("span", "missing required key: a CSV outline is scaled to 'span'");
     out.outline = read_outline_csv(p.get_path("outline_file"), p.key_path("outline_file"));
+  } else if (outline_key == "shape") {
+    out.outline = read_shape_outline(p, samples);
   } else {
-    outline_key = "outline";
-    const auto rows = p.get_number_rows("outline", 2);
-    if (rows.size() < 3)
-      p.fail("outline", "an outline needs at least 3 points, found " + std::to_string(rows.size()));
+    const auto rows = p.get_number_rows(outline_key, 2);
     for (const auto& r : rows) out.outline.emplace_back(r[0] * p.length_scale(), r[1] * p.length_scale());
+  }
+  // A closing point repeating the first (as drawing programs write it) is accepted.
+  if (outline_key != "shape") {
+    double extent = 0.0;
+    for (const auto& q : out.outline) extent = std::max(extent, q.cwiseAbs().maxCoeff());
+    drop_closing_point(out.outline, 1e-9 * extent);
+    if (out.outline.size() < 3)
+      p.fail(outline_key, "an outline needs at least 3 points, found " + std::to_string(out.outline.size()));
+  }
+  if (outline_key == "spline") {
+    for (std::size_t i = 0; i < out.outline.size(); ++i)
+      if (out.outline[i] == out.outline[(i + 1) % out.outline.size()])
+        p.fail_at(p.line_of_element("spline", (i + 1) % out.outline.size()), "spline",
+                  "control points " + std::to_string(i + 1) + " and " +
+                      std::to_string((i + 1) % out.outline.size() + 1) + " coincide");
+    out.outline = closed_spline(out.outline, samples);
   }
 
   // 1. Scale uniformly so the largest y equals the span (pivot to tip).
@@ -99,8 +207,8 @@ Planform read_planform(const TomlTable& p) {
 
   // 2. The polygon must be simple (checked before stretching, which keeps simplicity).
   if (const auto hit = find_self_intersection(out.outline)) {
-    const int line = from_file ? p.line_of(outline_key)
-                               : p.line_of_element(outline_key, static_cast<std::size_t>(hit->first));
+    const int line = outline_key == "outline" ? p.line_of_element(outline_key, static_cast<std::size_t>(hit->first))
+                                              : p.line_of(outline_key);
     p.fail_at(line, outline_key,
               "the outline is not a simple polygon: edge " + std::to_string(hit->first) +
                   " (points " + std::to_string(hit->first) + "-" +
@@ -152,7 +260,7 @@ Section read_section_end(const std::string& shape, const std::pair<double, doubl
 Vein read_vein(const TomlTable& v, std::size_t index, const Polygon& outline,
                const std::map<std::string, Material>& materials) {
   v.expect_only({"name", "material", "points", "chord_points", "subdivide", "shape",
-                 "outer_diameter", "wall", "width", "height"});
+                 "outer_diameter", "wall", "diameter", "width", "height"});
   Vein vein;
   vein.name = v.get_string("name", "vein " + std::to_string(index + 1));
   vein.material = find_material(v, "material", materials);
@@ -223,8 +331,18 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Polygon& outline,
     }
   }
 
-  const std::string shape = v.get_choice("shape", {"hollow_circle", "rectangle"}, "hollow_circle");
-  if (shape == "hollow_circle") {
+  const std::string shape =
+      v.get_choice("shape", {"hollow_circle", "solid_circle", "rectangle"}, "hollow_circle");
+  if (shape != "solid_circle" && v.has("diameter"))
+    v.fail("diameter", "only applies to shape = \"solid_circle\" (a hollow circle has 'outer_diameter' and 'wall')");
+  if (shape == "solid_circle") {
+    // A solid round rod: the hollow circle whose wall is half its diameter (A = π D²/4).
+    for (const char* k : {"outer_diameter", "wall", "width", "height"})
+      if (v.has(k)) v.fail(k, "does not apply to shape = \"solid_circle\" (give 'diameter')");
+    const auto d = read_taper(v, "diameter");
+    vein.root_section = read_section_end("hollow_circle", d, {d.first / 2, d.second / 2}, true);
+    vein.tip_section = read_section_end("hollow_circle", d, {d.first / 2, d.second / 2}, false);
+  } else if (shape == "hollow_circle") {
     for (const char* k : {"width", "height"})
       if (v.has(k)) v.fail(k, "only applies to shape = \"rectangle\"");
     const auto d = read_taper(v, "outer_diameter");
@@ -260,7 +378,7 @@ Wing read_wing(TomlTable root) {
   // Materials first: membrane and veins refer to them by name.
   std::map<std::string, Material> materials;
   const TomlTable mats = root.get_table("materials");
-  for (const auto& name : mats.keys()) materials[name] = read_material(mats.get_table(name));
+  for (const auto& name : mats.keys()) materials[name] = read_material(mats.get_table(name), wing.warnings);
 
   const Planform planform = read_planform(root.get_table("planform"));
   wing.outline = planform.outline;
@@ -271,6 +389,7 @@ Wing read_wing(TomlTable root) {
   const TomlTable mem = root.get_table("membrane");
   mem.expect_only({"thickness", "material", "nonstructural_mass_per_area"});
   wing.membrane.thickness = mem.get_length("thickness", Bounds::positive());
+  check_film(mem, wing.membrane.thickness, wing.warnings);
   wing.membrane.material = find_material(mem, "material", materials);
   wing.membrane.nonstructural_mass_per_area =
       mem.get_double("nonstructural_mass_per_area", 0.0, Bounds::non_negative());

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "wings/input_warning.hpp"
+
 namespace flapsim::wings {
 
 /// Isotropic linear-elastic material.
@@ -64,6 +66,8 @@ struct Wing {
   MeshSettings mesh;
   /// FEM root boundary: nodes with y <= clamp_y are clamped [m].
   double clamp_y = 0.0;
+  /// Accepted but implausible values (wing_file.hpp, "Plausibility"), in file order.
+  std::vector<InputWarning> warnings;
 };
 
 }  // namespace flapsim::wings

@@ -7,6 +7,7 @@
 #include "pipeline/app/run_recorder.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
+#include "pipeline/io/input_hash.hpp"
 
 namespace flapsim::app {
 
@@ -37,10 +38,13 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
 RunResults run_case(const io::Case& c, const RunOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   // 1. Setup: structure, lattice, attachment, base motion, references.
-  const FsiSetup setup = build_fsi_setup(c, SetupOptions{options.chain_file, options.spring_scale});
+  const FsiSetup setup =
+      build_fsi_setup(c, SetupOptions{options.chain_file, options.spring_scale, options.wing_overrides});
   // 2. The recorder: the output folder, history.csv, the series.
   RunRecorder recorder(c, setup, options.output_dir, options.vtk_every.value_or(c.output.vtk_every),
                        options.spring_scale, started);
+  recorder.set_inputs_hash(
+      io::input_hash(c, setup.wing ? &*setup.wing : nullptr, options.chain_file, options.spring_scale));
   fsi::FsiData data(setup.model);
   ProgressLine progress(setup.steps, stderr, options.progress);
   // 3. The time loop; a numerical failure still leaves a complete summary.json.

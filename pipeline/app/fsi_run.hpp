@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "pipeline/app/progress.hpp"
 #include "pipeline/app/run_results.hpp"
@@ -24,6 +26,8 @@ struct RunOptions {
   std::string chain_file;            ///< overrides the case's chain file ("" = none)
   double spring_scale = 1.0;         ///< joint-spring factor of a flexible chain (SetupOptions)
   std::optional<int> vtk_every;      ///< overrides output.vtk_every (0 = no VTK)
+  /// Values set in the wing file before it is read (SetupOptions::wing_overrides).
+  std::vector<std::pair<std::string, std::string>> wing_overrides;
   ProgressLine::Mode progress = ProgressLine::Mode::automatic;
 };
 

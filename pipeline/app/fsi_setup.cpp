@@ -90,13 +90,27 @@ ExternalLoads point_loads(const Case& c) {
 
 }  // namespace
 
+std::optional<wings::Wing> load_case_wing(const Case& c,
+                                          const std::vector<std::pair<std::string, std::string>>& overrides) {
+  if (c.wing_file.empty()) {
+    if (!overrides.empty())
+      throw InputError(c.file, 0, "wing." + overrides.front().first,
+                       "the case names no wing file whose key could be set");
+    return std::nullopt;
+  }
+  if (overrides.empty()) return wings::load_wing_file(c.wing_file);
+  wings::TomlTable root = wings::parse_toml_file(c.wing_file);
+  root.apply_overrides(overrides);
+  return wings::read_wing(root);
+}
+
 FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   FsiSetup s;
   s.period = 1.0 / c.kinematics.frequency;
   s.steps_per_cycle = c.numerics.steps_per_cycle;
   s.steps = c.numerics.steps_per_cycle * c.numerics.cycles;
   s.dt = s.period / s.steps_per_cycle;
-  if (!c.wing_file.empty()) s.wing = wings::load_wing_file(c.wing_file);
+  s.wing = load_case_wing(c, options.wing_overrides);
   if (c.air.enabled && !s.wing)
     throw InputError(c.file, 0, "wing",
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "

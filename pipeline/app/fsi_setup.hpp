@@ -7,6 +7,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mbd/chain_model.hpp"
 #include "pipeline/io/case_model.hpp"
@@ -44,7 +46,16 @@ struct SetupOptions {
   /// Multiplies every joint spring (k_θ, k_α) of a flexible chain: a stiffness
   /// calibration factor (natural frequencies scale by √S); 1 = the chain as given.
   double spring_scale = 1.0;
+  /// Values set in the wing file before it is read (parameter sweeps), as for a case
+  /// file: {"membrane.thickness", "0.015"} (TOML text, in the file's length unit).
+  std::vector<std::pair<std::string, std::string>> wing_overrides;
 };
+
+/// \brief The case's wing file read with \p overrides applied; std::nullopt if the case
+/// names no wing.
+/// \throws flapsim::InputError naming the file and key (an overridden key says so)
+std::optional<wings::Wing> load_case_wing(const io::Case& c,
+                                          const std::vector<std::pair<std::string, std::string>>& overrides);
 
 /// \brief A one-body chain welded to the wing base: the rigid wing (no dofs). The body
 /// carries the wing's estimated mass and the inertia of a uniform plate of its planform

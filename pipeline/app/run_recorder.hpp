@@ -33,6 +33,9 @@ class RunRecorder {
   RunRecorder(const io::Case& c, const FsiSetup& setup, const std::filesystem::path& output_dir,
               int vtk_every, double spring_scale, std::chrono::steady_clock::time_point started);
 
+  /// \brief Sets the fingerprint of the run's inputs (io::input_hash), reported as inputs_hash.
+  void set_inputs_hash(std::string hash) { results_.set("inputs_hash", std::move(hash)); }
+
   /// \brief Records the state after a coupled step (before the wake is shed).
   void record(const fsi::FsiData& data);
 

@@ -36,6 +36,12 @@ void RunResults::put(std::size_t index, ResultKind kind, Value value) {
   values_[index] = std::move(value);
 }
 
+void RunResults::set_value(std::size_t i, Value value) {
+  static constexpr ResultKind kinds[] = {ResultKind::number, ResultKind::integer, ResultKind::text,
+                                         ResultKind::flag};  // in the order of Value's alternatives
+  put(i, kinds[value.index()], std::move(value));
+}
+
 void RunResults::set(Key key, double value) { put(key.index(), ResultKind::number, Value(value)); }
 void RunResults::set(Key key, std::string value) {
   put(key.index(), ResultKind::text, Value(std::move(value)));

@@ -42,8 +42,9 @@ inline constexpr auto kRunResults = [] {
   return std::array{
       // The case and the setup, known before the first step.
       ResultDefinition{"case", "", K::text, "", "", "name of the case"},
-      ResultDefinition{"structure", "", K::text, "", "",
-                       "where the structure came from: rigid wing, chain file, or the wing reduced in process"},
+      ResultDefinition{
+          "structure", "", K::text, "", "",
+          "where the structure came from: rigid wing, chain file, or the wing reduced in process"},
       ResultDefinition{"air", "", K::flag, "", "", "true: in air (vortex lattice); false: in vacuum"},
       ResultDefinition{"frequency_hz", "Hz", K::number, "%.6g", "", "flapping frequency f"},
       ResultDefinition{"rotation_phase", "", K::number, "%.4f", "",
@@ -54,6 +55,9 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"bodies", "", K::integer, "", "", "bodies of the chain (1: rigid wing)"},
       ResultDefinition{"spring_scale", "", K::number, "%.6g", "",
                        "factor on every joint spring (flapsim run --spring-scale)"},
+      ResultDefinition{"inputs_hash", "", K::text, "", "",
+                       "fingerprint of the resolved case, wing, chain file and spring factor "
+                       "(FNV-1a 64, io::input_hash); a sweep re-run keeps a case whose hash is unchanged"},
       ResultDefinition{"reference_area_m2", "m^2", K::number, "%.6g", "",
                        "S of CL: planform area of the outline (in air)"},
       ResultDefinition{"reference_speed_m_s", "m/s", K::number, "%.6g", "",
@@ -61,7 +65,8 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"r2", "", K::number, "%.4f", "",
                        "non-dimensional radius of gyration of the outline's area (in air)"},
       // How the run ended.
-      ResultDefinition{"error", "", K::text, "", "", "the numerical failure that stopped the run (failed runs)"},
+      ResultDefinition{"error", "", K::text, "", "",
+                       "the numerical failure that stopped the run (failed runs)"},
       ResultDefinition{"status", "", K::text, "", "", "\"ok\", or \"failed\" (exit status 3)"},
       ResultDefinition{"steps", "", K::integer, "", "", "time steps completed"},
       ResultDefinition{"time_s", "s", K::number, "%.6g", "", "simulated time reached"},
@@ -70,9 +75,12 @@ inline constexpr auto kRunResults = [] {
                        "mean lift (ground +z of the aerodynamic force) over the last cycle"},
       ResultDefinition{"mean_CL", "", K::number, "%.4f", "mean CL",
                        "mean lift coefficient L / (½ ρ U_ref² S) over the last cycle"},
-      ResultDefinition{"mean_Fx_N", "N", K::number, "%.6g", "", "mean aerodynamic force, ground x, last cycle"},
-      ResultDefinition{"mean_Fy_N", "N", K::number, "%.6g", "", "mean aerodynamic force, ground y, last cycle"},
-      ResultDefinition{"mean_Fz_N", "N", K::number, "%.6g", "", "mean aerodynamic force, ground z, last cycle"},
+      ResultDefinition{"mean_Fx_N", "N", K::number, "%.6g", "",
+                       "mean aerodynamic force, ground x, last cycle"},
+      ResultDefinition{"mean_Fy_N", "N", K::number, "%.6g", "",
+                       "mean aerodynamic force, ground y, last cycle"},
+      ResultDefinition{"mean_Fz_N", "N", K::number, "%.6g", "",
+                       "mean aerodynamic force, ground z, last cycle"},
       // Rotation phases and lags over the last cycle, fractions of the period (docs/fsi.md).
       ResultDefinition{"base_rotation_phase", "", K::number, "%.4f", "",
                        "rotation phase of the base measured from its angles (reproduces the case's δψ)"},
@@ -91,7 +99,8 @@ inline constexpr auto kRunResults = [] {
       // The numerics.
       ResultDefinition{"mean_coupling_iterations", "", K::number, "%.2f", "iterations",
                        "lattice solves per step, mean over the run"},
-      ResultDefinition{"max_coupling_iterations", "", K::integer, "", "", "lattice solves of the hardest step"},
+      ResultDefinition{"max_coupling_iterations", "", K::integer, "", "",
+                       "lattice solves of the hardest step"},
       ResultDefinition{"coupling_tolerance_rad", "rad", K::number, "%.3g", "",
                        "convergence tolerance of the coupling sub-iterations"},
       ResultDefinition{"wake_panels", "", K::integer, "", "", "wake panels at the end of the run (in air)"},
@@ -132,6 +141,10 @@ class RunResults {
   void set(Key key, std::string value);
   void set(Key key, const char* value) { set(key, std::string(value)); }
   void set(Key key, bool value);
+
+  /// The i-th result of kRunResults set at run time (results read back from summary.json).
+  /// \throws std::logic_error if the value does not have the result's kind
+  void set_value(std::size_t i, Value value);
 
   bool has(Key key) const { return values_[key.index()].has_value(); }
   /// The number (NaN if not set).
@@ -182,5 +195,26 @@ std::vector<std::size_t> sweep_results();
 
 /// \brief Their sweep.csv cells: numbers in shortest round-trip form, "nan" if not set.
 std::vector<std::string> sweep_cells(const RunResults& results);
+
+/// A column of sweep.csv that is not a result of a run: how and where a case of the sweep
+/// ran. sweep.csv is: one column per varied key (its dotted name), the results with a
+/// sweep label (sweep_results()), then these, in this order.
+struct SweepColumn {
+  std::string_view key;          ///< column name
+  std::string_view description;  ///< what it holds (docs/sweeps.md)
+};
+
+inline constexpr std::array kSweepColumns = {
+    SweepColumn{"folder",
+                "the case's sub-folder of the sweep's output folder (its summary.json, history.csv)"},
+    SweepColumn{"status",
+                "ok; failed (numerical failure, exit status 3 of a run); error (the case could not run, "
+                "e.g. a wing the reduction refuses or a file that cannot be written)"},
+    SweepColumn{"message",
+                "why the case failed; \"kept\" for a case whose summary.json from an earlier run matched "
+                "its inputs (not run again); else empty"},
+    SweepColumn{"rank", "MPI rank that ran the case (0 without mpirun)"},
+    SweepColumn{"host", "name of the machine that ran the case"},
+};
 
 }  // namespace flapsim::app

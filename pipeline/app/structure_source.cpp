@@ -24,6 +24,14 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
   const std::string path = !chain_override.empty() ? chain_override : c.chain_file;
   if (!path.empty()) {
     s.chain = io::read_chain_file(path);
+    // The case's body count must be the chain's: markers and loads name bodies by number.
+    if (s.chain.num_bodies() != c.structure.bodies)
+      throw InputError(c.file, c.structure.bodies_line, "structure.bodies",
+                       "the case says " + std::to_string(c.structure.bodies) + " bodies, but the chain file " +
+                           path + " has " + std::to_string(s.chain.num_bodies()) +
+                           ": set bodies = " + std::to_string(s.chain.num_bodies()) +
+                           " or reduce the wing again with 'flapsim reduce --bodies " +
+                           std::to_string(c.structure.bodies) + "'");
     s.description = "chain file " + path + " (" + std::to_string(s.chain.num_bodies()) + " bodies)";
     return s;
   }

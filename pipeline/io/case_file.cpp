@@ -67,6 +67,7 @@ Case::Structure read_structure(const TomlTable& root) {
     s.bodies = t.get_int("bodies", 1, Bounds::closed(1, 1));
   else
     s.bodies = t.get_int("bodies", Bounds::closed(2, 1000));
+  if (t.has("bodies")) s.bodies_line = t.line_of("bodies");
   return s;
 }
 

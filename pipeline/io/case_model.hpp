@@ -56,6 +56,7 @@ struct Case {
     enum class Kind { Rigid, Flexible };
     Kind kind = Kind::Rigid;
     int bodies = 1;  ///< number of chain bodies (1 for a rigid wing)
+    int bodies_line = 0;  ///< line of structure.bodies in the case file (0: not given), for messages
   } structure;
 
   struct Numerics {

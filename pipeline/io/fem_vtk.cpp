@@ -1,6 +1,9 @@
 #include "pipeline/io/fem_vtk.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "pipeline/io/csv_writer.hpp"
 
@@ -38,15 +41,58 @@ void add_nodal_vector(UnstructuredMesh& grid, const std::string& name, const Eig
   if (with_rotations) grid.point_data.add_vector(name + "_rotation", r);
 }
 
+namespace {
+
+// Largest nodal translation |(u_x, u_y, u_z)| of a full DOF vector.
+double largest_translation(const Eigen::VectorXd& dofs) {
+  double m = 0.0;
+  for (Eigen::Index i = 0; i + 2 < dofs.size(); i += fem::kDofsPerNode)
+    m = std::max(m, dofs.segment<3>(i).norm());
+  return m;
+}
+
+}  // namespace
+
 void write_fem_vtu(const std::filesystem::path& path, const fem::Mesh& mesh, double clamp_y,
-                   const fem::ModalResult& modes, const std::vector<StaticResult>& statics) {
+                   const fem::ModalResult& modes, const std::vector<fem::ModeKind>& kinds,
+                   const std::vector<StaticResult>& statics) {
+  if (kinds.size() != static_cast<std::size_t>(modes.shapes.cols()))
+    throw std::invalid_argument("write_fem_vtu: " + std::to_string(kinds.size()) + " mode kinds for " +
+                                std::to_string(modes.shapes.cols()) + " modes");
   UnstructuredMesh g = fem_unstructured_mesh(mesh, clamp_y);
+  double span = 0.0;
+  for (const auto& p : mesh.nodes) span = std::max(span, p.y());
+  const double shown = kModeViewFraction * span;  // [m]
+  g.field_data.add_number("span_m", span);
+  g.field_data.add_number("mode_view_fraction", kModeViewFraction);
   for (Eigen::Index k = 0; k < modes.shapes.cols(); ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "mode_%02d", static_cast<int>(k + 1));
-    add_nodal_vector(g, name, modes.shapes.col(k));
+    const double largest = largest_translation(modes.shapes.col(k));
+    const double scale = largest > 0.0 ? shown / largest : 1.0;
+    add_nodal_vector(g, name, modes.shapes.col(k) * scale);
+    g.field_data.add_number(std::string(name) + "_frequency_Hz", modes.frequencies_hz(k));
+    g.field_data.add_text(std::string(name) + "_kind", fem::to_string(kinds[static_cast<std::size_t>(k)]));
+    g.field_data.add_number(std::string(name) + "_scale", scale);
   }
-  for (const StaticResult& s : statics) add_nodal_vector(g, "static_" + s.load.name, s.displacement, true);
+  for (const StaticResult& s : statics) {
+    // A force case loads translations [N], a moment case rotations [N·m] (fem/load_cases.hpp).
+    double force = 0.0;
+    for (Eigen::Index i = 0; i + 2 < s.load.loads.size(); i += fem::kDofsPerNode)
+      force += s.load.loads.segment<3>(i).norm();
+    const std::string per = force > 0.0 ? "_per_N" : "_per_N_m";
+    const std::string base = "static_" + s.load.name;
+    const Eigen::Index n = g.points.cols();
+    Eigen::Matrix3Xd t(3, n), r(3, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      t.col(i) = s.displacement.segment<3>(fem::kDofsPerNode * i);
+      r.col(i) = s.displacement.segment<3>(fem::kDofsPerNode * i + 3);
+    }
+    g.point_data.add_vector(base + "_m" + per, t);
+    g.point_data.add_vector(base + "_rotation_rad" + per, r);
+    const double largest = largest_translation(s.displacement);
+    g.field_data.add_number(base + "_view_scale", largest > 0.0 ? shown / largest : 1.0);
+  }
   write_vtu(path, g);
 }
 

@@ -34,12 +34,25 @@ struct StaticResult {
   Eigen::VectorXd displacement;  ///< full DOF vector [m, rad]
 };
 
-/// \brief Writes fem.vtu: the mesh plus, as point vectors, "mode_NN" for each
-/// mode (mass-normalised shape, translations) and "static_<case>" for each
-/// static case (displacement [m] under the unit load). Field data cannot carry
-/// text, so frequencies and kinds go to modes.csv.
+/// Largest displacement of a mode shape in fem.vtu, as a fraction of the span R
+/// (the largest y of the mesh): ParaView's "Warp By Vector" at its default scale 1
+/// then shows the mode clearly without leaving the picture.
+inline constexpr double kModeViewFraction = 0.1;
+
+/// \brief Writes fem.vtu: the mesh plus, as point vectors,
+///  - "mode_NN" for each mode: the mass-normalised shape (translations) times the
+///    factor that makes its largest nodal displacement kModeViewFraction · R [m];
+///    field data "mode_NN_frequency_Hz", "mode_NN_kind" (bending, torsion, ...,
+///    text) and "mode_NN_scale" (the factor, [m per mass-normalised unit, m·kg^½]);
+///  - "static_<case>_m_per_N" (force cases) or "static_<case>_m_per_N_m" (moment
+///    cases): the displacement under the unit load, and its rotations
+///    "static_<case>_rotation_rad_per_N[_m]"; field data "static_<case>_view_scale",
+///    the Warp By Vector scale factor that moves the largest node by kModeViewFraction · R.
+/// Field data also carries "span_m" and "mode_view_fraction".
+/// \param kinds  one per mode (fem::classify_modes)
 void write_fem_vtu(const std::filesystem::path& path, const fem::Mesh& mesh, double clamp_y,
-                   const fem::ModalResult& modes, const std::vector<StaticResult>& statics);
+                   const fem::ModalResult& modes, const std::vector<fem::ModeKind>& kinds,
+                   const std::vector<StaticResult>& statics);
 
 /// \brief Writes modes.csv: columns mode, frequency_hz, kind.
 void write_modes_csv(const std::filesystem::path& path, const fem::ModalResult& modes,

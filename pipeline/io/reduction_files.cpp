@@ -1,9 +1,12 @@
 #include "pipeline/io/reduction_files.hpp"
 
 #include <cstdio>
+#include <ostream>
+#include <utility>
 #include <sstream>
 #include <vector>
 
+#include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "pipeline/io/summary_json.hpp"
 #include "pipeline/io/vtk_writers.hpp"
@@ -23,52 +26,98 @@ void write_beam_csv(const fs::path& path, const reduction::BeamProperties& beam)
             rows);
 }
 
-void write_reduction_vtp(const fs::path& path, const reduction::BeamProperties& beam,
+void write_reduction_vtk(const fs::path& dir, const reduction::BeamProperties& beam,
                          const reduction::LumpedChain& lc) {
   const auto& ax = beam.axis;
+  const Eigen::Matrix3d r = ax.rotation();
   const int ns = static_cast<int>(beam.stations.size());
   const int nb = lc.chain.num_bodies();
-  const int np = ns + (nb + 1) + nb;
-  PolyDataMesh mesh;
-  mesh.points.resize(3, np);
-  Eigen::VectorXd kind = Eigen::VectorXd::Zero(np), ei = kind, gj = kind, mpl = kind, ia = kind,
-                  nea = kind, ncg = kind, bmass = kind;
+  ensure_directory(dir / "reduction");
+
+  PolyDataMesh stations;
+  stations.points.resize(3, ns);
+  Eigen::VectorXd s(ns), ei(ns), gj(ns), mpl(ns), ia(ns), nea(ns), ncg(ns), tip(ns);
+  std::vector<int> axis_line;
   for (int k = 0; k < ns; ++k) {
     const auto& st = beam.stations[static_cast<std::size_t>(k)];
-    mesh.points.col(k) = ax.point(st.s, 0.0);
+    stations.points.col(k) = ax.point(st.s, 0.0);
+    s[k] = st.s;
     ei[k] = st.EI;
     gj[k] = st.GJ;
     mpl[k] = st.mass_per_length;
     ia[k] = st.I_alpha;
     nea[k] = st.n_ea;
     ncg[k] = st.n_cg;
+    tip[k] = st.in_tip_zone ? 1.0 : 0.0;
+    axis_line.push_back(k);
   }
-  std::vector<int> axis_line;
-  for (int k = 0; k < ns; ++k) axis_line.push_back(k);
-  mesh.lines.push_back(axis_line);
-  const Eigen::Matrix3d r = ax.rotation();
-  for (int k = 0; k <= nb; ++k) {
-    mesh.points.col(ns + k) = ax.point(lc.body_length * k, 0.0);
-    kind[ns + k] = 1.0;
-  }
+  if (ns >= 2) stations.lines.push_back(axis_line);
+  stations.point_data.add_scalar("EI_N_m2", ei);
+  stations.point_data.add_scalar("GJ_N_m2", gj);
+  stations.point_data.add_scalar("m_per_length_kg_per_m", mpl);
+  stations.point_data.add_scalar("I_alpha_kg_m", ia);
+  stations.point_data.add_scalar("n_ea_m", nea);
+  stations.point_data.add_scalar("n_cg_m", ncg);
+  stations.point_data.add_scalar("s_m", s);
+  stations.point_data.add_scalar("in_tip_zone", tip);
+
+  PolyDataMesh bodies;
+  bodies.points.resize(3, nb + 1);
+  for (int k = 0; k <= nb; ++k) bodies.points.col(k) = ax.point(lc.body_length * k, 0.0);
+  Eigen::VectorXd body(nb), mass(nb), length(nb);
   for (int k = 0; k < nb; ++k) {
     const auto& b = lc.chain.bodies[static_cast<std::size_t>(k)];
-    const int c = ns + nb + 1 + k;
-    mesh.points.col(c) = ax.point(lc.body_length * k, 0.0) + r * b.center_of_mass;
-    kind[c] = 2.0;
-    bmass[c] = b.mass;
-    mesh.lines.push_back({ns + k, ns + k + 1});
-    mesh.lines.push_back({ns + k, c});
+    bodies.lines.push_back({k, k + 1});
+    body[k] = k + 1;
+    mass[k] = b.mass;
+    length[k] = b.length;
   }
-  mesh.point_data.add_scalar("kind_station0_joint1_com2", kind);
-  mesh.point_data.add_scalar("EI_N_m2", ei);
-  mesh.point_data.add_scalar("GJ_N_m2", gj);
-  mesh.point_data.add_scalar("m_per_length_kg_per_m", mpl);
-  mesh.point_data.add_scalar("I_alpha_kg_m", ia);
-  mesh.point_data.add_scalar("n_ea_m", nea);
-  mesh.point_data.add_scalar("n_cg_m", ncg);
-  mesh.point_data.add_scalar("body_mass_kg", bmass);
-  write_vtp(path, mesh);
+  bodies.cell_data.add_scalar("body", body);
+  bodies.cell_data.add_scalar("mass_kg", mass);
+  bodies.cell_data.add_scalar("length_m", length);
+
+  // Joints with springs only: with a rigid root, body 1 is welded to the base (no joint 0).
+  const int first = lc.chain.first_jointed_body();
+  PolyDataMesh joints;
+  joints.points.resize(3, nb - first);
+  Eigen::VectorXd joint(nb - first), k_theta(nb - first), k_alpha(nb - first);
+  for (int k = first; k < nb; ++k) {
+    const int i = k - first;
+    const auto& j = lc.chain.joints[static_cast<std::size_t>(k)];
+    joints.points.col(i) = ax.point(lc.body_length * k, 0.0);
+    joints.vertices.push_back(i);
+    joint[i] = k + 1;
+    k_theta[i] = j.bend_stiffness;
+    k_alpha[i] = j.twist_stiffness;
+  }
+  joints.point_data.add_scalar("joint", joint);
+  joints.point_data.add_scalar("k_theta_N_m_per_rad", k_theta);
+  joints.point_data.add_scalar("k_alpha_N_m_per_rad", k_alpha);
+
+  PolyDataMesh coms;
+  coms.points.resize(3, nb);
+  for (int k = 0; k < nb; ++k) {
+    const auto& b = lc.chain.bodies[static_cast<std::size_t>(k)];
+    coms.points.col(k) = ax.point(lc.body_length * k, 0.0) + r * b.center_of_mass;
+    coms.vertices.push_back(k);
+  }
+  coms.point_data.add_scalar("body", body);
+  coms.point_data.add_scalar("mass_kg", mass);
+
+  const std::pair<const char*, const PolyDataMesh*> blocks[] = {
+      {"stations", &stations}, {"bodies", &bodies}, {"joints", &joints}, {"centres_of_mass", &coms}};
+  for (const auto& [name, mesh] : blocks) write_vtp(dir / "reduction" / (std::string(name) + ".vtp"), *mesh);
+  write_file_atomically(dir / "reduction.vtm", [&](std::ostream& out) {
+    out << "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+           "  <vtkMultiBlockDataSet>\n";
+    int index = 0;
+    for (const auto& [name, mesh] : blocks)
+      out << "    <DataSet index=\"" << index++ << "\" name=\"" << name << "\" file=\"reduction/" << name
+          << ".vtp\"/>\n";
+    out << "  </vtkMultiBlockDataSet>\n"
+           "</VTKFile>\n";
+  });
 }
 
 std::string format_percent(double x) {

@@ -18,11 +18,21 @@ namespace flapsim::io {
 /// \throws OutputError
 void write_beam_csv(const std::filesystem::path& path, const reduction::BeamProperties& beam);
 
-/// \brief reduction.vtp: the beam stations along the flexural axis (point data EI, GJ,
-/// m', I_α, n_ea, n_cg), the chain's joints and the bodies' centres of mass (body_mass_kg);
-/// point data kind_station0_joint1_com2 tells them apart.
+/// \brief The equivalent beam and the chain for ParaView, one data set per kind of
+/// thing, each with only the fields that apply to it (docs/reduction.md, "Files"):
+///  - DIR/reduction/stations.vtp: the beam stations along the flexural axis, one
+///    polyline; point data s_m, EI_N_m2, GJ_N_m2, m_per_length_kg_per_m, I_alpha_kg_m,
+///    n_ea_m, n_cg_m, in_tip_zone;
+///  - DIR/reduction/bodies.vtp: one line per body from its inboard to its outboard
+///    joint; cell data body, mass_kg, length_m;
+///  - DIR/reduction/joints.vtp: the jointed bodies' inboard joints as vertices; point
+///    data joint (the body it carries, 1-based), k_theta_N_m_per_rad, k_alpha_N_m_per_rad;
+///  - DIR/reduction/centres_of_mass.vtp: one vertex per body; point data body, mass_kg;
+///  - DIR/reduction.vtm: a VTK multiblock file naming the four as blocks, so ParaView
+///    opens them together.
+/// \param dir  the output folder
 /// \throws OutputError
-void write_reduction_vtp(const std::filesystem::path& path, const reduction::BeamProperties& beam,
+void write_reduction_vtk(const std::filesystem::path& dir, const reduction::BeamProperties& beam,
                          const reduction::LumpedChain& chain);
 
 /// \brief report.md: method, masses, chain against FEM (first bending and torsion

@@ -12,6 +12,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
@@ -75,13 +76,28 @@ void add_fields(Attributes* attributes, const FieldData& data) {
   }
 }
 
-void add_time(vtkDataObject* data, const std::optional<double>& time) {
-  if (!time) return;
-  vtkNew<vtkDoubleArray> t;
-  t->SetName("TimeValue");
-  t->SetNumberOfTuples(1);
-  t->SetValue(0, *time);
-  data->GetFieldData()->AddArray(t);
+void add_time_and_fields(vtkDataObject* data, const std::optional<double>& time, const DataSetFields& fields) {
+  if (time) {
+    vtkNew<vtkDoubleArray> t;
+    t->SetName("TimeValue");
+    t->SetNumberOfTuples(1);
+    t->SetValue(0, *time);
+    data->GetFieldData()->AddArray(t);
+  }
+  for (const auto& [name, value] : fields.numbers) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name.c_str());
+    a->SetNumberOfTuples(1);
+    a->SetValue(0, value);
+    data->GetFieldData()->AddArray(a);
+  }
+  for (const auto& [name, value] : fields.texts) {
+    vtkNew<vtkStringArray> a;
+    a->SetName(name.c_str());
+    a->SetNumberOfValues(1);
+    a->SetValue(0, value);
+    data->GetFieldData()->AddArray(a);
+  }
 }
 
 /// Binary, appended, zlib-compressed: compact and the default ParaView reads fastest.
@@ -117,16 +133,24 @@ void write_vtp(const std::filesystem::path& path, const PolyDataMesh& mesh) {
       lines->InsertCellPoint(i);
     }
   }
+  vtkNew<vtkCellArray> verts;
+  for (int i : mesh.vertices) {
+    check_index(i, np, what);
+    verts->InsertNextCell(1);
+    verts->InsertCellPoint(i);
+  }
   check_fields(mesh.point_data, np, what + ": point");
-  check_fields(mesh.cell_data, static_cast<long>(mesh.polygons.size() + mesh.lines.size()), what + ": cell");
+  check_fields(mesh.cell_data, static_cast<long>(mesh.vertices.size() + mesh.polygons.size() + mesh.lines.size()),
+               what + ": cell");
 
   vtkNew<vtkPolyData> data;
   data->SetPoints(make_points(mesh.points));
   if (!mesh.polygons.empty()) data->SetPolys(polys);
   if (!mesh.lines.empty()) data->SetLines(lines);
+  if (!mesh.vertices.empty()) data->SetVerts(verts);
   add_fields(data->GetPointData(), mesh.point_data);
   add_fields(data->GetCellData(), mesh.cell_data);
-  add_time(data, mesh.time);
+  add_time_and_fields(data, mesh.time, mesh.field_data);
 
   publish_file_atomically(path, [&](const std::filesystem::path& tmp) {
     vtkNew<vtkXMLPolyDataWriter> writer;
@@ -159,7 +183,7 @@ void write_vtu(const std::filesystem::path& path, const UnstructuredMesh& mesh) 
   for (const auto& s : mesh.segments) insert(VTK_LINE, s);
   add_fields(grid->GetPointData(), mesh.point_data);
   add_fields(grid->GetCellData(), mesh.cell_data);
-  add_time(grid, mesh.time);
+  add_time_and_fields(grid, mesh.time, mesh.field_data);
 
   publish_file_atomically(path, [&](const std::filesystem::path& tmp) {
     vtkNew<vtkXMLUnstructuredGridWriter> writer;

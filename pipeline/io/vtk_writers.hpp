@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flapsim::io {
@@ -41,16 +42,30 @@ struct FieldData {
   bool empty() const { return scalars.empty() && vectors.empty(); }
 };
 
-/// Surfaces and polylines (.vtp): wing surface, wake sheet, bar chain.
-/// Cell numbering follows VTK's order for poly data: the lines first
-/// (0 … lines.size()−1), then the polygons. cell_data fields have
-/// lines.size() + polygons.size() entries in that order.
+/// Field data: values of the whole data set (not per point or cell), e.g. a mode's
+/// frequency or a time step's lift. ParaView shows them in the Information panel and
+/// plots them over time with "Plot Data Over Time"; VTK readers return them from
+/// GetFieldData().
+struct DataSetFields {
+  std::vector<std::pair<std::string, double>> numbers;     ///< one double each (vtkDoubleArray)
+  std::vector<std::pair<std::string, std::string>> texts;  ///< one string each (vtkStringArray)
+
+  void add_number(std::string name, double value) { numbers.emplace_back(std::move(name), value); }
+  void add_text(std::string name, std::string value) { texts.emplace_back(std::move(name), std::move(value)); }
+};
+
+/// Points, surfaces and polylines (.vtp): wing surface, wake sheet, bar chain, joints.
+/// Cell numbering follows VTK's order for poly data: the vertices first, then the
+/// lines, then the polygons. cell_data fields have vertices.size() + lines.size() +
+/// polygons.size() entries in that order.
 struct PolyDataMesh {
   Eigen::Matrix3Xd points;                   ///< [m], one column per point
   std::vector<std::vector<int>> polygons;    ///< point indices, ≥ 3 each, counter-clockwise seen from the normal
   std::vector<std::vector<int>> lines;       ///< polylines, ≥ 2 point indices each
+  std::vector<int> vertices;                 ///< points shown as vertex cells (VTK_VERTEX), one index each
   FieldData point_data;                      ///< points.cols() values per field
   FieldData cell_data;                       ///< lines.size() + polygons.size() values per field
+  DataSetFields field_data;                  ///< values of the whole data set
   std::optional<double> time;                ///< [s] stored as field data "TimeValue" if set
 };
 
@@ -64,6 +79,7 @@ struct UnstructuredMesh {
   std::vector<std::array<int, 2>> segments;   ///< VTK_LINE
   FieldData point_data;                       ///< points.cols() values per field
   FieldData cell_data;                        ///< one value per cell, in the order above
+  DataSetFields field_data;                   ///< values of the whole data set
   std::optional<double> time;                 ///< [s] stored as field data "TimeValue" if set
 };
 

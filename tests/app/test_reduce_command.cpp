@@ -22,7 +22,7 @@ TEST(ReduceCommand, WritesBeamChainReportAndVtp) {
   const fs::path dir = scratch / "out";
   const std::string wing = std::string(FLAPSIM_SOURCE_DIR) + "/wings/hawkmoth.toml";
   ASSERT_EQ(run_flapsim("reduce " + wing + " -o " + dir.string() + " --bodies 3"), 0);
-  for (const char* f : {"beam.csv", "chain.toml", "reduction.vtp", "report.md", "summary.json"})
+  for (const char* f : {"beam.csv", "chain.toml", "reduction.vtm", "reduction/stations.vtp", "reduction/joints.vtp", "report.md", "summary.json"})
     EXPECT_TRUE(fs::is_regular_file(dir / f)) << f;
   // The chain file reads back with the run stage's reader: 3 bodies, sprung root,
   // and a total mass equal to the FEM's (summary.json, strip sums to round-off).

@@ -145,8 +145,9 @@ TEST(RunResults, SummaryReportAndSweepComeFromTheOneDefinition) {
                 " (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd)\n");
   EXPECT_NE(app::run_report(results).find("mean lift (last cycle) "), std::string::npos);
 
-  // 3. `flapsim sweep`: sweep.csv = the varied key, the results with a sweep label, folder
-  //    and status; each cell is the number of that case's summary.json.
+  // 3. `flapsim sweep`: sweep.csv = the varied key, the results with a sweep label, then
+  //    the sweep-only columns (folder, status, message, rank, host); each result cell is
+  //    the number of that case's summary.json.
   ASSERT_EQ(run_flapsim("sweep " + (dir / "case.toml").string() +
                             " --vary kinematics.rotation_phase=-0.1,0.05 -j 1 -o " + (dir / "sweep").string(),
                         dir / "sweep.txt"),
@@ -160,16 +161,18 @@ TEST(RunResults, SummaryReportAndSweepComeFromTheOneDefinition) {
     header.emplace_back(kRunResults[i].key);
     labels.emplace_back(kRunResults[i].sweep_label);
   }
-  header.insert(header.end(), {"folder", "status"});
+  for (const app::SweepColumn& c : app::kSweepColumns) header.emplace_back(c.key);
   EXPECT_EQ(csv_split(line), header);
+  const std::size_t folder = 1 + labels.size();
+  ASSERT_EQ(header[folder], "folder");
   int rows = 0;
   while (std::getline(table, line)) {
     const auto cells = csv_split(line);
     ASSERT_EQ(cells.size(), header.size()) << line;
     std::map<std::string, std::string> summary;
-    for (const auto& [k, v] : json_items(read_text(dir / "sweep" / cells[header.size() - 2] / "summary.json")))
+    for (const auto& [k, v] : json_items(read_text(dir / "sweep" / cells[folder] / "summary.json")))
       summary[k] = v;
-    for (std::size_t c = 1; c + 2 < header.size(); ++c)
+    for (std::size_t c = 1; c < folder; ++c)
       EXPECT_EQ(std::strtod(cells[c].c_str(), nullptr), std::strtod(summary.at(header[c]).c_str(), nullptr))
           << header[c] << " of " << cells.front();
     ++rows;

@@ -1,10 +1,14 @@
-// The --vary argument of flapsim sweep and the case it makes for each value
-// (pipeline/app/sweep/sweep_values).
+// The --vary arguments of flapsim sweep, their grid, the --cases table and the case made
+// for each point (pipeline/app/sweep/sweep_values, case_table, sweep_case).
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include "common/scratch_dir.hpp"
+#include "pipeline/app/sweep/case_table.hpp"
+#include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
 #include "wings/input_error.hpp"
 
@@ -35,6 +39,79 @@ TEST(SweepValues, CaseIsReReadWithTheValue) {
   EXPECT_THROW(sweep::load_case_with(hover, "numerics.cycles", 2.5), InputError);
   EXPECT_THROW(sweep::load_case_with(hover, "kinematics.rotation_phase", 3.0), InputError);
   EXPECT_THROW(sweep::load_case_with(hover, "name.x", 1.0), InputError);
+}
+
+TEST(SweepValues, GridIsTheCartesianProductFirstKeySlowest) {
+  const auto points = sweep::cartesian_grid({sweep::parse_variation("kinematics.rotation_phase=-0.1,0.1"),
+                                             sweep::parse_variation("spring_scale=1,2,4")});
+  ASSERT_EQ(points.size(), 6u);  // 2 × 3 combinations
+  const double phase[6] = {-0.1, -0.1, -0.1, 0.1, 0.1, 0.1}, scale[6] = {1, 2, 4, 1, 2, 4};
+  for (std::size_t i = 0; i < 6; ++i) {
+    ASSERT_EQ(points[i].size(), 2u);
+    EXPECT_EQ(points[i][0].key, "kinematics.rotation_phase");
+    EXPECT_EQ(points[i][0].value, phase[i]);
+    EXPECT_EQ(points[i][1].key, "spring_scale");
+    EXPECT_EQ(points[i][1].value, scale[i]);
+  }
+  EXPECT_THROW(sweep::cartesian_grid({sweep::parse_variation("k=1,2"), sweep::parse_variation("k=3")}),
+               InputError);
+  EXPECT_EQ(sweep::case_folder(3, 6, points[3]), "03_0.1_1");
+  EXPECT_EQ(sweep::case_folder(7, 1200, points[5]), "0007_0.1_4");
+}
+
+TEST(SweepValues, CaseTableRowsAndErrorsWithTheirLine) {
+  const test::ScratchDir dir("sweep_case_table");
+  std::ofstream(dir / "good.csv")
+      << "# a comment\nkinematics.rotation_phase, spring_scale\n-0.1,1\n\n0.05,2.5\n";
+  const auto table = sweep::read_case_table((dir / "good.csv").string());
+  EXPECT_EQ(table.keys, (std::vector<std::string>{"kinematics.rotation_phase", "spring_scale"}));
+  ASSERT_EQ(table.points.size(), 2u);
+  EXPECT_EQ(table.points[1][0].value, 0.05);
+  EXPECT_EQ(table.points[1][1].value, 2.5);
+  std::ofstream(dir / "bad.csv") << "a,b\n1,2\n3,x\n";
+  try {
+    sweep::read_case_table((dir / "bad.csv").string());
+    ADD_FAILURE() << "a cell that is not a number must be refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_EQ(e.key(), "b");
+  }
+  std::ofstream(dir / "short.csv") << "a,b\n1\n";
+  EXPECT_THROW(sweep::read_case_table((dir / "short.csv").string()), InputError);
+  std::ofstream(dir / "empty.csv") << "a,b\n";
+  EXPECT_THROW(sweep::read_case_table((dir / "empty.csv").string()), InputError);
+}
+
+TEST(SweepValues, WingKeysAndSpringScaleChangeTheCaseAndItsHash) {
+  const std::string hover = std::string(FLAPSIM_SOURCE_DIR) + "/cases/hover.toml";
+  const sweep::SweepInputs inputs{hover, "", 1.0};
+  const auto base = sweep::resolve_case(inputs, {});
+  const auto same =
+      sweep::resolve_case(inputs, {{"kinematics.rotation_phase", base.c.kinematics.rotation_phase}});
+  EXPECT_EQ(same.inputs_hash, base.inputs_hash);  // the same inputs, however given
+  const auto thick = sweep::resolve_case(inputs, {{"wing.membrane.thickness", 0.02}});
+  ASSERT_EQ(thick.wing_overrides.size(), 1u);
+  EXPECT_EQ(thick.wing_overrides[0].first, "membrane.thickness");
+  EXPECT_NE(thick.inputs_hash, base.inputs_hash);
+  const auto stiff = sweep::resolve_case(inputs, {{"spring_scale", 2.0}});
+  EXPECT_EQ(stiff.spring_scale, 2.0);
+  EXPECT_NE(stiff.inputs_hash, base.inputs_hash);
+  const auto phase = sweep::resolve_case(inputs, {{"kinematics.rotation_phase", 0.05}});
+  EXPECT_EQ(phase.c.kinematics.rotation_phase, 0.05);
+  EXPECT_NE(phase.inputs_hash, base.inputs_hash);
+  // A bad wing value names the wing file and the key, and says which case it was.
+  try {
+    sweep::resolve_case(inputs, {{"wing.membrane.thickness", -1.0}});
+    ADD_FAILURE() << "a negative membrane thickness must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.file().find("hawkmoth"), std::string::npos) << e.what();
+    EXPECT_EQ(e.key(), "membrane.thickness");
+    EXPECT_NE(e.message().find("with wing.membrane.thickness = -1"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(sweep::resolve_case(inputs, {{"spring_scale", 0.0}}), InputError);
+  EXPECT_EQ(sweep::key_target("wing.membrane.thickness"), sweep::KeyTarget::wing_file);
+  EXPECT_EQ(sweep::key_target("spring_scale"), sweep::KeyTarget::spring_scale);
+  EXPECT_EQ(sweep::key_target("air.density"), sweep::KeyTarget::case_file);
 }
 
 }  // namespace

@@ -3,17 +3,22 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkStringArray.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include "fem/load_cases.hpp"
+#include "fem/mode_classification.hpp"
 #include "fem/static_solver.hpp"
 #include "fem/structured_mesh.hpp"
 #include "fem/structural_model.hpp"
@@ -43,7 +48,8 @@ TEST(FemVtu, ModeShapesAndStaticCasesReadBackWithVtk) {
   for (auto& lc : fem::tip_load_cases(model.mesh, fem::tip_station(model.mesh)))
     st.push_back({lc, statics.solve(lc.loads)});
   const test::ScratchDir dir("fem_vtu");
-  io::write_fem_vtu(dir / "fem.vtu", model.mesh, 0.0, modes, st);
+  const auto kinds = fem::classify_modes(model.mesh, sys, modes.shapes, modes.frequencies_hz);
+  io::write_fem_vtu(dir / "fem.vtu", model.mesh, 0.0, modes, kinds, st);
 
   auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
   reader->SetFileName((dir / "fem.vtu").c_str());
@@ -55,13 +61,47 @@ TEST(FemVtu, ModeShapesAndStaticCasesReadBackWithVtk) {
   vtkDataArray* m1 = g->GetPointData()->GetArray("mode_01");
   ASSERT_NE(m1, nullptr);
   ASSERT_EQ(m1->GetNumberOfComponents(), 3);
-  // Values survive the round trip: uz of mode 1 at the last node.
-  const int last = model.mesh.num_nodes() - 1;
-  EXPECT_NEAR(m1->GetComponent(last, 2), modes.shapes(fem::dof_index(last, fem::UZ), 0),
-              1e-12 * modes.shapes.col(0).cwiseAbs().maxCoeff());
-  for (const char* name : {"mode_03", "static_tip_force_le", "static_tip_force_te", "static_tip_moment",
-                           "static_tip_torque", "static_tip_torque_rotation", "clamped"})
+  vtkFieldData* fd = g->GetFieldData();
+  const double span = 40e-3;  // the plate reaches y = 40 mm
+  ASSERT_NE(fd->GetArray("span_m"), nullptr);
+  EXPECT_DOUBLE_EQ(fd->GetArray("span_m")->GetTuple1(0), span);
+  // Each mode: its frequency and kind as field data, and a shape scaled so that
+  // ParaView's Warp By Vector at scale 1 moves no node more than 20 % of the span
+  // (the writer aims at io::kModeViewFraction = 10 %).
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "mode_0" + std::to_string(k + 1);
+    vtkDataArray* m = g->GetPointData()->GetArray(name.c_str());
+    ASSERT_NE(m, nullptr) << name;
+    double largest = 0.0;
+    for (vtkIdType i = 0; i < m->GetNumberOfTuples(); ++i) {
+      double v[3];
+      m->GetTuple(i, v);
+      largest = std::max(largest, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    }
+    EXPECT_LE(largest, 0.2 * span) << name;
+    EXPECT_NEAR(largest, io::kModeViewFraction * span, 1e-12 * span) << name;
+    vtkDataArray* f = fd->GetArray((name + "_frequency_Hz").c_str());
+    ASSERT_NE(f, nullptr) << name;
+    EXPECT_DOUBLE_EQ(f->GetTuple1(0), modes.frequencies_hz(k));
+    auto* kind = vtkStringArray::SafeDownCast(fd->GetAbstractArray((name + "_kind").c_str()));
+    ASSERT_NE(kind, nullptr) << name;
+    EXPECT_EQ(kind->GetValue(0), fem::to_string(kinds[static_cast<std::size_t>(k)]));
+    // The stored shape is the mass-normalised one times the stored scale.
+    vtkDataArray* scale = fd->GetArray((name + "_scale").c_str());
+    ASSERT_NE(scale, nullptr) << name;
+    const int last = model.mesh.num_nodes() - 1;
+    EXPECT_NEAR(m->GetComponent(last, 2), scale->GetTuple1(0) * modes.shapes(fem::dof_index(last, fem::UZ), k),
+                1e-12 * span)
+        << name;
+  }
+  // The first mode of a clamped plate strip is its first bending mode (Leissa).
+  EXPECT_EQ(vtkStringArray::SafeDownCast(fd->GetAbstractArray("mode_01_kind"))->GetValue(0), "bending");
+  // Static cases carry the unit of their unit load in their names.
+  for (const char* name : {"static_tip_force_le_m_per_N", "static_tip_force_te_m_per_N",
+                           "static_tip_moment_m_per_N_m", "static_tip_torque_m_per_N_m",
+                           "static_tip_torque_rotation_rad_per_N_m", "clamped"})
     EXPECT_NE(g->GetPointData()->GetArray(name), nullptr) << name;
+  EXPECT_NE(fd->GetArray("static_tip_force_le_view_scale"), nullptr);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -9,12 +10,18 @@
 #include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "wings/input_error.hpp"
+#include "wings/wing_model.hpp"
 
 namespace flapsim::cli {
 
 void check_chain_option(const std::string& chain_file) {
   if (!chain_file.empty() && !std::filesystem::is_regular_file(chain_file))
     throw InputError(chain_file, 0, "--chain", "chain file not found");
+}
+
+const wings::Wing& print_wing_warnings(const wings::Wing& wing) {
+  for (const InputWarning& w : wing.warnings) std::fprintf(stderr, "flapsim: warning: %s\n", w.text().c_str());
+  return wing;
 }
 
 int run(int argc, char** argv) {

@@ -27,11 +27,11 @@ std::string check_file(const std::string& path) {
   if (wing && case_file)
     throw InputError(path, root.line_of("planform"), "planform",
                      "a file is either a wing file ([planform]) or a case file ([kinematics]), not both");
-  if (wing) return wings::describe_wing(wings::read_wing(root));
+  if (wing) return wings::describe_wing(print_wing_warnings(wings::read_wing(root)));
   if (case_file) {
     const io::Case c = io::read_case(root);
     std::string text = io::describe_case(c);
-    if (!c.wing_file.empty()) text += "\n" + wings::describe_wing(wings::load_wing_file(c.wing_file));
+    if (!c.wing_file.empty()) text += "\n" + wings::describe_wing(print_wing_warnings(wings::load_wing_file(c.wing_file)));
     return text;
   }
   throw InputError(path, 1, "",

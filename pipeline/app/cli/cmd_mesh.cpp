@@ -27,6 +27,7 @@ struct MeshArgs {
 void run_mesh(const MeshArgs& args) {
   // 1. Read and check the wing (InputError: exit 2, nothing written).
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
+  print_wing_warnings(wing);
   // 2. Mesh; gmsh saves mesh.msh (atomically) on the way.
   const std::filesystem::path dir(args.out_dir);
   io::ensure_directory(dir);

@@ -33,6 +33,7 @@ void run_modes(const ModesArgs& args) {
     throw InputError("<command line>", 0, "--modes", "must be between 1 and 500, got " + std::to_string(args.modes));
   // 1. Wing, mesh, K and M, root clamp.
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
+  print_wing_warnings(wing);
   const fem::WingFem fem = fem::build_wing_fem(wing);
   const fem::Mesh& mesh = fem.model.mesh;
   // 2. Lowest modes of the clamped wing, classified by shape.
@@ -48,7 +49,7 @@ void run_modes(const ModesArgs& args) {
   const std::filesystem::path dir(args.out_dir);
   io::ensure_directory(dir);
   io::write_modes_csv(dir / "modes.csv", m.modes, m.kinds);
-  io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, results);
+  io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, m.kinds, results);
 
   std::printf("%s: %d nodes, %zu triangles, %zu vein elements, FEM mass %.4f mg\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), fem.system.total_mass * 1e6);
@@ -68,8 +69,10 @@ void add_modes_command(CLI::App& app) {
       "(Lanczos, shift-invert) classified as bending, torsion, chordwise or in-plane,\n"
       "and four static cases (unit tip force at the leading and at the trailing edge,\n"
       "unit tip bending moment, unit tip torque, at 90 % of the span).\n"
-      "Writes DIR/modes.csv (mode, frequency_hz, kind) and DIR/fem.vtu (point vectors\n"
-      "mode_NN, mass-normalised, and static_<case> [m]). Exit status: 0 ok, 2 bad input.");
+      "Writes DIR/modes.csv (mode, frequency_hz, kind) and DIR/fem.vtu: point vectors\n"
+      "mode_NN scaled so the largest displacement is 10 % of the span (field data\n"
+      "mode_NN_frequency_Hz, mode_NN_kind, mode_NN_scale) and static_<case>_m_per_N[_m]\n"
+      "(displacement per unit load). Exit status: 0 ok, 2 bad input.");
   auto args = std::make_shared<ModesArgs>();
   cmd->add_option("WING", args->wing_file, "wing file (TOML)")->required();
   cmd->add_option("-o,--output", args->out_dir, "output directory")->capture_default_str();

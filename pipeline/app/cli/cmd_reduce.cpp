@@ -38,6 +38,7 @@ struct ReduceOptions {
 
 void run_reduce(const ReduceOptions& o) {
   const wings::Wing wing = wings::load_wing_file(o.wing_file);  // InputError → exit 2
+  print_wing_warnings(wing);
   reduction::AnalysisOptions ao;
   ao.axis = o.axis == "span" ? reduction::AxisChoice::span : reduction::AxisChoice::fitted;
   const fem::WingFem fem = fem::build_wing_fem(wing);
@@ -52,7 +53,7 @@ void run_reduce(const ReduceOptions& o) {
   io::ensure_directory(dir);
   io::write_beam_csv(dir / "beam.csv", beam);
   io::write_chain_file(dir / "chain.toml", lc.chain);
-  io::write_reduction_vtp(dir / "reduction.vtp", beam, lc);
+  io::write_reduction_vtk(dir, beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
   io::write_reduction_summary(dir / "summary.json", beam, lc, cmp);
   std::cerr << "reduce: " << o.bodies << " bodies; first bending " << cmp.bending.chain_hz << " Hz (FEM "
@@ -68,7 +69,7 @@ void add_reduce_command(CLI::App& app) {
       "reduce",
       "Reduce a wing's FEM to an equivalent beam and an N-body Hencky bar chain.\n"
       "Writes DIR/beam.csv (stations: s, y, m', x_cg, x_ea, EI, GJ, I_alpha),\n"
-      "DIR/chain.toml (bodies and springs, for 'flapsim run'), DIR/reduction.vtp,\n"
+      "DIR/chain.toml (bodies and springs, for 'flapsim run'), DIR/reduction.vtm (stations, bodies, joints, centres of mass),\n"
       "DIR/report.md and DIR/summary.json (chain vs FEM: first bending and torsion\n"
       "frequencies, MAC, static tip deflection and twist). Method: docs/reduction.md.");
   auto o = std::make_shared<ReduceOptions>();

@@ -1,4 +1,5 @@
-// flapsim sweep CASE.toml --vary KEY=VALUES -o DIR [--chain FILE] [--jobs N] [--vtk-every N]
+// flapsim sweep CASE.toml (--vary KEY=VALUES ... | --cases TABLE.csv) -o DIR [--chain FILE]
+//   [--spring-scale S] [--jobs N] [--vtk-every N] [--force] [--quiet]
 #include "pipeline/app/cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
@@ -12,34 +13,28 @@
 
 #include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/app/run_results.hpp"
+#include "pipeline/app/sweep/case_table.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
+#include "wings/input_error.hpp"
 
 namespace flapsim::cli {
 
 namespace {
 
 struct SweepArgs {
-  std::string case_file, vary, output_dir, chain_file;
+  std::string case_file, cases_table, output_dir, chain_file;
+  std::vector<std::string> vary;
   int jobs = 0;
   int vtk_every = 0;
   double spring_scale = 1.0;
+  bool force = false;
   bool quiet = false;
 };
 
-void sweep_command(const SweepArgs& a) {
-  const sweep::Variation variation = sweep::parse_variation(a.vary);
-  check_chain_option(a.chain_file);
-  sweep::SweepOptions options;
-  options.output_dir = a.output_dir;
-  options.chain_file = a.chain_file;
-  options.spring_scale = a.spring_scale;
-  options.threads = a.jobs > 0 ? a.jobs : command_threads();  // one OpenMP thread per case
-  options.vtk_every = a.vtk_every;
-  options.quiet = a.quiet;
-  const auto rows = sweep::run_sweep(a.case_file, variation, options);
-  if (a.quiet) return;
-  // The table of sweep.csv's result columns (run_results.hpp), one row per value.
+// The table of sweep.csv's columns on stdout: the varied keys, the results with a sweep
+// label (run_results.hpp) titled by it, the status.
+void print_table(const sweep::SweepPlan& plan, const sweep::SweepReport& report) {
   struct Column {
     std::size_t result;
     std::string title;
@@ -52,18 +47,55 @@ void sweep_command(const SweepArgs& a) {
     if (!d.unit.empty()) title += " [" + std::string(d.unit) + "]";
     columns.push_back({i, title, std::max(static_cast<int>(title.size()) + 1, 10)});
   }
-  std::printf("%-16s", variation.key.substr(variation.key.rfind('.') + 1).c_str());
+  for (const std::string& key : plan.keys) std::printf("%-16s", key.substr(key.rfind('.') + 1).c_str());
   for (const Column& col : columns) std::printf(" %*s", col.width, col.title.c_str());
   std::printf("  status\n");
-  for (const auto& r : rows) {
-    std::printf("%-16s", sweep::value_label(r.value).c_str());
+  for (const auto& r : report.rows) {
+    for (const auto& a : r.point) std::printf("%-16s", sweep::value_label(a.value).c_str());
     for (const Column& col : columns) {
-      const std::string cell = r.results.at(col.result) ? app::format_result(r.results, col.result) : "nan";
+      const std::string cell =
+          r.outcome.results.at(col.result) ? app::format_result(r.outcome.results, col.result) : "nan";
       std::printf(" %*s", col.width, cell.c_str());
     }
-    std::printf("  %s\n", r.status.c_str());
+    std::printf("  %s%s\n", r.done ? r.outcome.status.c_str() : "not run",
+                r.outcome.message == "kept" ? " (kept)" : "");
   }
-  std::printf("table: %s\n", (std::filesystem::path(a.output_dir) / "sweep.csv").string().c_str());
+}
+
+void sweep_command(const SweepArgs& a) {
+  if (a.vary.empty() == a.cases_table.empty())
+    throw InputError("", 0, "--vary",
+                     "give the values either with --vary KEY=VALUES (one or more) or with --cases TABLE.csv");
+  sweep::SweepPlan plan;
+  if (!a.cases_table.empty()) {
+    const sweep::CaseTable table = sweep::read_case_table(a.cases_table);
+    plan.keys = table.keys;
+    plan.points = table.points;
+  } else {
+    std::vector<sweep::Variation> variations;
+    for (const std::string& v : a.vary) variations.push_back(sweep::parse_variation(v));
+    plan = sweep::grid_plan(variations);
+  }
+  check_chain_option(a.chain_file);
+  sweep::SweepOptions options;
+  options.output_dir = a.output_dir;
+  options.chain_file = a.chain_file;
+  options.spring_scale = a.spring_scale;
+  options.threads = a.jobs > 0 ? a.jobs : requested_threads();  // 0: the runner's default
+  options.vtk_every = a.vtk_every;
+  options.force = a.force;
+  options.quiet = a.quiet;
+  const sweep::SweepReport report = sweep::run_sweep(a.case_file, plan, options);
+  if (!report.root || a.quiet) return;
+  print_table(plan, report);
+  const std::size_t ran = report.stats.cases;
+  std::printf("%zu cases: %zu run, %zu kept from an earlier run; %d rank%s x %d thread%s; %.1f s wall",
+              report.rows.size(), ran, report.kept, report.ranks, report.ranks == 1 ? "" : "s",
+              report.threads, report.threads == 1 ? "" : "s", report.wall_s);
+  if (ran > 0)
+    std::printf("; scheduling overhead %.1f ms per case (max %.1f ms)", 1e3 * report.stats.overhead_s / ran,
+                1e3 * report.stats.max_overhead_s);
+  std::printf("\ntable: %s\n", (std::filesystem::path(a.output_dir) / "sweep.csv").string().c_str());
 }
 
 }  // namespace
@@ -72,24 +104,38 @@ void add_sweep_command(CLI::App& app) {
   auto args = std::make_shared<SweepArgs>();
   auto* cmd = app.add_subcommand(
       "sweep",
-      "Run a case for several values of one case-file key, in parallel over the cores.\n"
-      "VALUES: start:step:stop (inclusive) or a comma list, e.g.\n"
-      "  flapsim sweep cases/rotation_phase_rigid.toml --vary kinematics.rotation_phase=-0.20:0.05:0.10 -o out/rigid\n"
-      "Each value runs in DIR/<index>_<value>/ (history.csv, summary.json; VTK with --vtk-every);\n"
-      "DIR/sweep.csv lists value, mean lift, mean CL, tip rotation phase and lag, coupling\n"
-      "iterations, wall time and status of each case (a failed case does not stop the others).");
+      "Run a case for many values of its keys: a grid (--vary, several make a Cartesian product)\n"
+      "or a table (--cases), in parallel over the cores, and over MPI ranks under mpirun/srun.\n"
+      "VALUES: start:step:stop (inclusive) or a comma list. KEY: a numeric case-file key, wing.<key>\n"
+      "of the wing file (e.g. wing.membrane.thickness) or spring_scale, e.g.\n"
+      "  flapsim sweep cases/rotation_phase_rigid.toml --vary kinematics.rotation_phase=-0.20:0.05:0.10 -o "
+      "out/rigid\n"
+      "  mpirun -np 4 flapsim sweep CASE.toml --vary kinematics.rotation_phase=-0.1:0.05:0.1 --vary "
+      "spring_scale=1,2 -o DIR\n"
+      "Each case runs in DIR/<index>_<values>/ (history.csv, summary.json; VTK with --vtk-every);\n"
+      "DIR/sweep.csv lists the values, mean lift, mean CL, tip rotation phase and lag, coupling\n"
+      "iterations, wall time, folder, status, message, rank and host of each case (a failed case\n"
+      "does not stop the others). Run again, it keeps the cases whose summary.json matches their\n"
+      "inputs and runs the rest (--force: all). See docs/sweeps.md.");
   cmd->add_option("case", args->case_file, "case file (TOML)")->required();
-  cmd->add_option("--vary", args->vary, "KEY=VALUES, e.g. kinematics.rotation_phase=-0.10:0.05:0.10")
-      ->required();
+  cmd->add_option("--vary", args->vary,
+                  "KEY=VALUES, e.g. kinematics.rotation_phase=-0.10:0.05:0.10; repeat for a grid")
+      ->allow_extra_args(false)  // one value per --vary: `--vary K=V CASE.toml` leaves CASE.toml alone
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd->add_option("--cases", args->cases_table,
+                  "CSV table, one case per row; the header names the keys (instead of --vary)");
   cmd->add_option("-o,--output", args->output_dir, "output folder")->required();
   cmd->add_option("--chain", args->chain_file, "chain file for every case (as flapsim run --chain)");
-  cmd->add_option("-j,--jobs", args->jobs, "cases run at the same time (default: --threads)")
+  cmd->add_option(
+         "-j,--jobs", args->jobs,
+         "cases run at the same time per process/rank (default: --threads if given, else the cores, shared by the ranks on a machine)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--vtk-every", args->vtk_every, "ParaView series per case every N steps (default 0: none)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--spring-scale", args->spring_scale,
                   "joint-spring factor for every case (as flapsim run --spring-scale)")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--force", args->force, "run every case, also those an earlier run of the sweep completed");
   cmd->add_flag("-q,--quiet", args->quiet, "no progress lines and no table on stdout");
   cmd->callback([args] { sweep_command(*args); });
 }

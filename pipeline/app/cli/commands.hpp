@@ -8,6 +8,7 @@
 #include <string>
 
 namespace CLI { class App; }
+namespace flapsim::wings { struct Wing; }
 
 namespace flapsim::cli {
 
@@ -21,6 +22,10 @@ void add_sweep_command(CLI::App& app);   ///< flapsim sweep CASE.toml --vary KEY
 /// The --chain option of run and sweep: "" (none) or an existing file.
 /// \throws flapsim::InputError (key "--chain") if the file does not exist
 void check_chain_option(const std::string& chain_file);
+
+/// Prints the wing's plausibility warnings on stderr ("flapsim: warning: FILE:LINE: key
+/// 'KEY': MESSAGE", docs/wing_file.md) and returns the wing.
+const wings::Wing& print_wing_warnings(const wings::Wing& wing);
 
 /// Parses argv, runs the chosen subcommand, returns the process exit status:
 /// 0 ok, 1 usage error, 2 bad input, 3 numerical failure.

@@ -32,4 +32,6 @@ void add_threads_option(CLI::App& command) {
 
 int command_threads() { return g_threads > 0 ? g_threads : omp_get_max_threads(); }
 
+int requested_threads() { return g_threads; }
+
 }  // namespace flapsim::cli

@@ -24,4 +24,7 @@ void add_threads_option(CLI::App& command);
 /// The thread count in effect: --threads if given, else OpenMP's default.
 int command_threads();
 
+/// --threads if given, else 0.
+int requested_threads();
+
 }  // namespace flapsim::cli

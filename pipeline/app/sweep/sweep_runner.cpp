@@ -1,112 +1,165 @@
 #include "pipeline/app/sweep/sweep_runner.hpp"
 
+#define OMPI_SKIP_MPICXX 1
+#define MPICH_SKIP_MPICXX 1
+#include <mpi.h>
 #include <omp.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
-#include <mutex>
+#include <optional>
 #include <thread>
 
 #include "pipeline/app/fsi_run.hpp"
+#include "pipeline/app/sweep/summary_reader.hpp"
+#include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/atomic_file.hpp"
-#include "pipeline/io/csv_writer.hpp"
+#include "wings/input_error.hpp"
 
 namespace flapsim::sweep {
 
 namespace {
 
-void write_table(const std::filesystem::path& path, const std::string& key,
-                 const std::vector<SweepRow>& rows, const std::vector<bool>& done) {
-  std::vector<std::string> header{key};
-  for (std::size_t i : app::sweep_results()) header.emplace_back(app::kRunResults[i].key);
-  header.insert(header.end(), {"folder", "status"});
-  std::vector<std::vector<std::string>> cells;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (!done[i]) continue;
-    const SweepRow& r = rows[i];
-    std::vector<std::string> row{io::format_number(r.value)};
-    for (std::string& cell : app::sweep_cells(r.results)) row.push_back(std::move(cell));
-    row.push_back(r.folder);
-    row.push_back(r.status);
-    cells.push_back(std::move(row));
-  }
-  io::write_csv(path, header, cells);
+using Clock = std::chrono::steady_clock;
+
+// Rank 0 checks every case; the others learn whether to go on (and stop as it does).
+void share_check(const MpiWorld& world, bool ok) {
+  if (!world.active()) return;
+  int flag = ok ? 1 : 0;
+  MPI_Bcast(&flag, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (!flag && world.rank() != 0)
+    throw InputError("", 0, "", "rank 0 found bad input and stopped the sweep (its message says why)");
+}
+
+int default_threads(const MpiWorld& world, std::size_t cases) {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int per_rank = std::max(1, cores / std::max(1, world.ranks_on_host()));
+  // Without MPI, no more threads than cases.
+  return world.active() ? per_rank : std::max(1, std::min<int>(per_rank, static_cast<int>(cases)));
+}
+
+// One line per finished case on stderr.
+void progress_line(std::size_t finished, std::size_t total, const SweepRow& r, double wall) {
+  std::fprintf(stderr, "sweep %zu/%zu  %s  mean lift %.5g N  CL %.3f  %s%s%s  (rank %d, %.1f s)\n", finished,
+               total, describe(r.point).c_str(), r.outcome.results.number("mean_lift_N"),
+               r.outcome.results.number("mean_CL"), r.outcome.status == "ok" ? "ok" : "FAILED",
+               r.outcome.message.empty() ? "" : ": ", r.outcome.message.c_str(), r.outcome.rank, wall);
 }
 
 }  // namespace
 
-std::vector<SweepRow> run_sweep(const std::string& case_file, const Variation& variation,
-                                const SweepOptions& options) {
-  const std::size_t n = variation.values.size();
-  std::vector<io::Case> cases;
-  cases.reserve(n);
-  for (double v : variation.values) cases.push_back(load_case_with(case_file, variation.key, v));
+SweepPlan grid_plan(const std::vector<Variation>& variations) {
+  SweepPlan plan;
+  for (const Variation& v : variations) plan.keys.push_back(v.key);
+  plan.points = cartesian_grid(variations);
+  return plan;
+}
 
-  io::ensure_directory(options.output_dir);
-  std::vector<SweepRow> rows(n);
-  std::vector<bool> done(n, false);
-  for (std::size_t i = 0; i < n; ++i) {
-    rows[i].value = variation.values[i];
-    char name[96];
-    std::snprintf(name, sizeof name, "%02zu_%s", i, value_label(variation.values[i]).c_str());
-    rows[i].folder = name;
-  }
-  const int threads = std::max(
-      1, std::min<int>(static_cast<int>(n), options.threads > 0
-                                               ? options.threads
-                                               : static_cast<int>(std::thread::hardware_concurrency())));
-  std::atomic<std::size_t> next{0};
-  std::mutex mutex;
-  std::size_t finished = 0;
-  const auto start = std::chrono::steady_clock::now();
-  std::exception_ptr fatal;
+SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const SweepOptions& options) {
+  const auto start = Clock::now();
+  MpiWorld world;
+  SweepReport report;
+  report.root = world.rank() == 0;
+  report.ranks = world.size();
+  const std::size_t n = plan.points.size();
+  const SweepInputs inputs{case_file, options.chain_file, options.spring_scale};
+  const std::string host = host_name();
 
-  auto worker = [&] {
-    omp_set_num_threads(1);  // the cases fill the cores; no nested parallelism
-    for (;;) {
-      const std::size_t i = next.fetch_add(1);
-      if (i >= n) return;
-      app::RunOptions ro;
-      ro.output_dir = options.output_dir / rows[i].folder;
-      ro.chain_file = options.chain_file;
-      ro.spring_scale = options.spring_scale;
-      ro.vtk_every = options.vtk_every;
-      ro.progress = app::ProgressLine::Mode::quiet;
-      SweepRow r = rows[i];
-      try {
-        r.results = app::run_case(cases[i], ro);
-        r.status = "ok";
-      } catch (const NumericalFailure& e) {
-        r.status = std::string("failed: ") + e.what();
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!fatal) fatal = std::current_exception();
-        next = n;  // stop handing out cases
-        return;
-      }
-      std::lock_guard<std::mutex> lock(mutex);
-      rows[i] = r;
-      done[i] = true;
-      ++finished;
-      write_table(options.output_dir / "sweep.csv", variation.key, rows, done);
-      if (!options.quiet) {
-        const double wall =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "sweep %zu/%zu  %s = %s  mean lift %.5g N  CL %.3f  %s  (%.1f s)\n",
-                     finished, n, variation.key.c_str(), value_label(r.value).c_str(),
-                     r.results.number("mean_lift_N"), r.results.number("mean_CL"),
-                     r.status == "ok" ? "ok" : "FAILED", wall);
+  // 1. Rank 0 resolves and checks every case, and finds those an earlier run completed.
+  std::vector<ResolvedCase> resolved;
+  std::vector<std::size_t> todo;
+  std::vector<SweepRow>& rows = report.rows;
+  if (report.root) {
+    try {
+      resolved.reserve(n);
+      for (const CasePoint& p : plan.points) resolved.push_back(resolve_case(inputs, p));
+    } catch (...) {
+      share_check(world, false);
+      throw;
+    }
+    io::ensure_directory(options.output_dir);
+    rows.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      rows[i].point = plan.points[i];
+      rows[i].folder = case_folder(i, n, plan.points[i]);
+      std::optional<app::RunResults> kept;
+      if (!options.force)
+        kept = kept_results(options.output_dir / rows[i].folder / "summary.json", resolved[i].inputs_hash);
+      if (kept) {
+        rows[i].done = true;
+        rows[i].outcome = CaseOutcome{"ok", "kept", world.rank(), host, std::move(*kept), 0.0};
+        ++report.kept;
+      } else {
+        todo.push_back(i);
       }
     }
+    write_sweep_table(options.output_dir / "sweep.csv", plan.keys, rows);
+    if (!options.quiet && report.kept > 0)
+      std::fprintf(stderr, "sweep: %zu of %zu cases kept from an earlier run (their summary.json matches)\n",
+                   report.kept, n);
+  }
+  share_check(world, true);
+
+  // 2. The cases, over the threads (and ranks).
+  report.threads = options.threads > 0 ? options.threads : default_threads(world, todo.size());
+  const RunCase run = [&](std::size_t i) {
+    omp_set_num_threads(1);  // the cases fill the cores; no nested parallelism
+    CaseOutcome o;
+    o.rank = world.rank();
+    o.host = host;
+    const auto t0 = Clock::now();
+    try {
+      // Rank 0 resolved every case; the others resolve the ones they are given.
+      std::optional<ResolvedCase> own;
+      if (resolved.empty()) own = resolve_case(inputs, plan.points[i]);
+      const ResolvedCase& r = own ? *own : resolved[i];
+      app::RunOptions ro;
+      ro.output_dir = options.output_dir / case_folder(i, n, plan.points[i]);
+      ro.chain_file = options.chain_file;
+      ro.spring_scale = r.spring_scale;
+      ro.wing_overrides = r.wing_overrides;
+      ro.vtk_every = options.vtk_every;
+      ro.progress = app::ProgressLine::Mode::quiet;
+      o.overhead_s = std::chrono::duration<double>(Clock::now() - t0).count();  // resolving
+      o.results = app::run_case(r.c, ro);
+      o.status = "ok";
+    } catch (const NumericalFailure& e) {
+      o.status = "failed";
+      o.message = e.what();
+      // The failed run's summary.json holds what it reached (steps, time, status).
+      if (auto partial =
+              read_summary_results(options.output_dir / case_folder(i, n, plan.points[i]) / "summary.json"))
+        o.results = std::move(*partial);
+    } catch (const std::exception& e) {
+      o.status = "error";
+      o.message = e.what();
+    } catch (...) {
+      o.status = "error";
+      o.message = "unknown error";
+    }
+    return o;
   };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
-  if (fatal) std::rethrow_exception(fatal);
-  return rows;
+  std::size_t finished = report.kept;
+  auto last_write = Clock::now();
+  const CaseDone done = [&](std::size_t i, CaseOutcome&& o) {
+    rows[i].outcome = std::move(o);
+    rows[i].done = true;
+    ++finished;
+    const auto now = Clock::now();
+    if (n <= 1000 || now - last_write > std::chrono::seconds(5) || finished == n) {
+      write_sweep_table(options.output_dir / "sweep.csv", plan.keys, rows);
+      last_write = now;
+    }
+    if (!options.quiet)
+      progress_line(finished, n, rows[i], std::chrono::duration<double>(now - start).count());
+  };
+  report.stats = schedule_cases(world, todo, report.threads, run, done);
+  if (report.root) write_sweep_table(options.output_dir / "sweep.csv", plan.keys, rows);
+  report.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  return report;
 }
 
 }  // namespace flapsim::sweep

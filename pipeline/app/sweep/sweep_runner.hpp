@@ -1,22 +1,26 @@
 #pragma once
 /// \file sweep_runner.hpp
-/// \brief Runs the cases of a sweep in parallel and tabulates them in sweep.csv.
+/// \brief Runs the cases of a sweep and tabulates them in sweep.csv (docs/sweeps.md).
 ///
-/// Every case is read and checked before the first one starts (a bad value stops the
-/// sweep with nothing run). Cases run in worker threads, one case per thread at a time,
-/// as many threads as requested (default: the available cores); inside a case OpenMP is
-/// limited to one thread, since the cases already fill the cores. Each case writes its
-/// own sub-folder `DIR/<index>_<value>/` (history.csv, summary.json, VTK if asked); a
-/// case that fails numerically is recorded with its status and the others go on.
-/// sweep.csv is rewritten (atomically) after every finished case: the varied key, the
-/// results with a sweep label (run_results.hpp; "nan" for a failed case), folder, status.
+/// 1. Every case is resolved and checked (case file, wing file, chain file) before the
+///    first one starts: a bad value stops the sweep with nothing run.
+/// 2. Resuming: a case whose folder holds a summary.json with status "ok" and the hash
+///    of the case's inputs (io::input_hash) is kept, not run again (unless `force`).
+/// 3. The other cases are scheduled dynamically (case_scheduler.hpp) over worker threads
+///    — and over MPI ranks when launched by mpirun/srun — one case per thread at a time,
+///    with OpenMP limited to one thread inside a case. Each case writes its own
+///    sub-folder `DIR/<index>_<values>/` (history.csv, summary.json; VTK if asked).
+///    A case that fails (numerically, or cannot run) is recorded with its status and
+///    message, and the others go on.
+/// 4. sweep.csv (sweep_table.hpp) is rewritten atomically as cases finish (after every
+///    case for tables up to 1000 rows, then at most every 5 s) and at the end.
 
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "pipeline/app/run_results.hpp"
+#include "pipeline/app/sweep/case_scheduler.hpp"
+#include "pipeline/app/sweep/sweep_table.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
 
 namespace flapsim::sweep {
@@ -25,21 +29,33 @@ struct SweepOptions {
   std::filesystem::path output_dir;
   std::string chain_file;        ///< passed to every case (flapsim run --chain)
   double spring_scale = 1.0;     ///< passed to every case (flapsim run --spring-scale)
-  int threads = 0;               ///< 0 = std::thread::hardware_concurrency()
+  int threads = 0;               ///< per rank; 0 = the machine's cores / the ranks on it
   int vtk_every = 0;             ///< VTK series per case (0 = none, the default for sweeps)
+  bool force = false;            ///< run every case, also those an earlier run completed
   bool quiet = false;            ///< no progress lines
 };
 
-struct SweepRow {
-  double value = 0.0;     ///< the value of the varied key
-  std::string folder;     ///< the case's sub-folder, "<index>_<value>"
-  std::string status;     ///< "ok", "failed: ..."
-  app::RunResults results;  ///< the run's results (none for a failed case)
+/// The cases of a sweep: the varied keys and one point (their values) per case.
+struct SweepPlan {
+  std::vector<std::string> keys;
+  std::vector<CasePoint> points;
 };
 
-/// \brief Runs the sweep; returns one row per value, in the order of the values.
+struct SweepReport {
+  bool root = true;            ///< this process holds the table (rank 0, or no MPI)
+  std::vector<SweepRow> rows;  ///< one per case, in order (rank 0 only)
+  int ranks = 1;
+  int threads = 1;       ///< worker threads per rank
+  std::size_t kept = 0;  ///< cases kept from an earlier run
+  ScheduleStats stats;   ///< the cases run (rank 0: over all ranks)
+  double wall_s = 0.0;   ///< wall time of the sweep [s]
+};
+
+/// \brief The plan of `--vary` arguments (their Cartesian grid).
+SweepPlan grid_plan(const std::vector<Variation>& variations);
+
+/// \brief Runs the sweep.
 /// \throws flapsim::InputError before anything runs if a case is invalid
-std::vector<SweepRow> run_sweep(const std::string& case_file, const Variation& variation,
-                                const SweepOptions& options);
+SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const SweepOptions& options);
 
 }  // namespace flapsim::sweep

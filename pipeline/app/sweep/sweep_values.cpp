@@ -1,14 +1,12 @@
 #include "pipeline/app/sweep/sweep_values.hpp"
 
-#include <toml++/toml.h>
-
 #include <cmath>
 #include <cstdio>
-#include <sstream>
+#include <set>
 
 #include "pipeline/io/case_file.hpp"
+#include "pipeline/io/csv_writer.hpp"
 #include "wings/input_error.hpp"
-#include "wings/toml_reader.hpp"
 
 namespace flapsim::sweep {
 
@@ -78,46 +76,32 @@ Variation parse_variation(const std::string& text) {
   return v;
 }
 
+std::vector<CasePoint> cartesian_grid(const std::vector<Variation>& variations) {
+  std::set<std::string> keys;
+  double count = 1.0;
+  for (const Variation& v : variations) {
+    if (!keys.insert(v.key).second) bad(v.key, "the key is varied twice");
+    count *= static_cast<double>(v.values.size());
+  }
+  if (count > 1e6) throw InputError("", 0, "--vary", "the grid has more than 1000000 cases");
+  std::vector<CasePoint> points{CasePoint{}};
+  for (const Variation& v : variations) {
+    std::vector<CasePoint> next;
+    next.reserve(points.size() * v.values.size());
+    for (const CasePoint& p : points)
+      for (double value : v.values) {
+        CasePoint q = p;
+        q.push_back({v.key, value});
+        next.push_back(std::move(q));
+      }
+    points = std::move(next);
+  }
+  return points;
+}
+
 io::Case load_case_with(const std::string& case_file, const std::string& key, double value) {
-  // Make sure the file itself is valid first (errors then point at its real lines).
-  (void)io::load_case_file(case_file);
-  toml::table doc;
-  try {
-    doc = toml::parse_file(case_file);
-  } catch (const toml::parse_error& e) {
-    throw InputError(case_file, 0, "", e.what());
-  }
-  const auto parts = split(key, '.');
-  toml::table* table = &doc;
-  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
-    toml::node* n = table->get(parts[i]);
-    if (!n) {
-      table->insert(parts[i], toml::table{});
-      n = table->get(parts[i]);
-    }
-    if (!n->is_table())
-      throw InputError(case_file, 0, key, "'" + parts[i] + "' is not a table, cannot vary '" + key + "'");
-    table = n->as_table();
-  }
-  const std::string& leaf = parts.back();
-  if (leaf.empty()) throw InputError(case_file, 0, key, "empty key");
-  const toml::node* old = table->get(leaf);
-  if (old && !old->is_number())
-    throw InputError(case_file, 0, key, "only numeric keys can be varied");
-  if (old && old->is_integer()) {
-    if (std::abs(value - std::round(value)) > 1e-9)
-      throw InputError(case_file, 0, key, "is an integer; cannot set it to " + value_label(value));
-    table->insert_or_assign(leaf, static_cast<int64_t>(std::llround(value)));
-  } else {
-    table->insert_or_assign(leaf, value);
-  }
-  std::ostringstream text;
-  text << doc;
-  try {
-    return io::read_case(wings::parse_toml_string(text.str(), case_file));
-  } catch (const InputError& e) {
-    throw InputError(case_file, 0, key, "with " + key + " = " + value_label(value) + ": " + e.message());
-  }
+  (void)io::load_case_file(case_file);  // errors in the file itself point at its real lines
+  return io::load_case_file(case_file, {{key, value_text(value)}});
 }
 
 std::string value_label(double value) {
@@ -125,5 +109,7 @@ std::string value_label(double value) {
   std::snprintf(buf, sizeof buf, "%.10g", value);
   return buf;
 }
+
+std::string value_text(double value) { return io::format_number(value); }
 
 }  // namespace flapsim::sweep

@@ -1,0 +1,80 @@
+#include "pipeline/app/sweep/case_table.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include "wings/input_error.hpp"
+
+namespace flapsim::sweep {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cur;
+  for (char c : line) {
+    if (c == ',') {
+      cells.push_back(trim(cur));
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  cells.push_back(trim(cur));
+  return cells;
+}
+
+}  // namespace
+
+CaseTable read_case_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "--cases", "cannot open the case table for reading");
+  CaseTable table;
+  std::string line;
+  int number = 0;
+  bool header = true;
+  while (std::getline(in, line)) {
+    ++number;
+    const std::string t = trim(line);
+    if (t.empty() || t.front() == '#') continue;
+    const auto cells = cells_of(t);
+    if (header) {
+      std::set<std::string> seen;
+      for (const std::string& k : cells) {
+        if (k.empty()) throw InputError(path, number, "", "empty column name in the header");
+        if (!seen.insert(k).second) throw InputError(path, number, k, "the column appears twice");
+      }
+      table.keys = cells;
+      header = false;
+      continue;
+    }
+    if (cells.size() != table.keys.size())
+      throw InputError(path, number, "",
+                       "the row has " + std::to_string(cells.size()) + " cells, the header " +
+                           std::to_string(table.keys.size()));
+    CasePoint point;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const std::string& s = cells[i];
+      double v = 0.0;
+      const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+      if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v))
+        throw InputError(path, number, table.keys[i], "'" + s + "' is not a number");
+      point.push_back({table.keys[i], v});
+    }
+    table.points.push_back(std::move(point));
+  }
+  if (header) throw InputError(path, 0, "--cases", "the case table has no header");
+  if (table.points.empty()) throw InputError(path, 0, "--cases", "the case table has no rows");
+  return table;
+}
+
+}  // namespace flapsim::sweep

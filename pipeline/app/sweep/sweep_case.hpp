@@ -1,0 +1,53 @@
+#pragma once
+/// \file sweep_case.hpp
+/// \brief One case of a sweep, resolved from the base case file and the values of its
+/// varied keys: the checked case, the wing-file values to set, the spring factor, the
+/// fingerprint of its inputs (io::input_hash) and its sub-folder name.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pipeline/app/sweep/sweep_values.hpp"
+#include "pipeline/io/case_model.hpp"
+
+namespace flapsim::sweep {
+
+/// Where a varied key goes.
+enum class KeyTarget {
+  case_file,     ///< a dotted key of the case file
+  wing_file,     ///< "wing.<key>": a dotted key of the case's wing file
+  spring_scale,  ///< "spring_scale": the factor on every joint spring
+};
+
+/// \brief The target of a varied key (by its name only; the value is checked when the
+/// case is resolved).
+KeyTarget key_target(const std::string& key);
+
+/// What every case of a sweep shares (the command line's options).
+struct SweepInputs {
+  std::string case_file;
+  std::string chain_file;     ///< flapsim sweep --chain ("" = the case's)
+  double spring_scale = 1.0;  ///< flapsim sweep --spring-scale (a varied spring_scale replaces it)
+};
+
+struct ResolvedCase {
+  io::Case c;
+  std::vector<std::pair<std::string, std::string>> wing_overrides;  ///< (key in the wing file, TOML text)
+  double spring_scale = 1.0;
+  std::string inputs_hash;  ///< io::input_hash of the case, its wing, chain file and spring factor
+};
+
+/// \brief Reads and checks the case (and its wing) with the point's values set.
+/// \throws flapsim::InputError naming the file and key; the message starts with the
+///         point's values, e.g. "with kinematics.rotation_phase = 3: ..."
+ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point);
+
+/// \brief The sub-folder of case \p index of \p count: the index (at least two digits,
+/// as many as the count needs) and the values, e.g. "03_-0.05" or "07_0.1_2".
+std::string case_folder(std::size_t index, std::size_t count, const CasePoint& point);
+
+/// \brief "key = value, key = value" of a point, for messages.
+std::string describe(const CasePoint& point);
+
+}  // namespace flapsim::sweep

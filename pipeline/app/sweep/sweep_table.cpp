@@ -1,0 +1,93 @@
+#include "pipeline/app/sweep/sweep_table.hpp"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <stdexcept>
+
+#include "pipeline/app/sweep/summary_reader.hpp"
+#include "pipeline/io/csv_writer.hpp"
+
+namespace flapsim::sweep {
+
+std::vector<std::string> sweep_table_header(const std::vector<std::string>& keys) {
+  std::vector<std::string> header = keys;
+  for (std::size_t i : app::sweep_results()) header.emplace_back(app::kRunResults[i].key);
+  for (const app::SweepColumn& c : app::kSweepColumns) header.emplace_back(c.key);
+  return header;
+}
+
+void write_sweep_table(const std::filesystem::path& path, const std::vector<std::string>& keys,
+                       const std::vector<SweepRow>& rows) {
+  std::vector<std::vector<std::string>> cells;
+  for (const SweepRow& r : rows) {
+    if (!r.done) continue;
+    std::vector<std::string> row;
+    for (const Assignment& a : r.point) row.push_back(io::format_number(a.value));
+    for (std::string& cell : app::sweep_cells(r.outcome.results)) row.push_back(std::move(cell));
+    // In the order of app::kSweepColumns.
+    row.push_back(r.folder);
+    row.push_back(r.outcome.status);
+    row.push_back(r.outcome.message);
+    row.push_back(std::to_string(r.outcome.rank));
+    row.push_back(r.outcome.host);
+    cells.push_back(std::move(row));
+  }
+  static_assert(app::kSweepColumns.size() == 5, "write_sweep_table writes five sweep-only columns");
+  io::write_csv(path, sweep_table_header(keys), cells);
+}
+
+namespace {
+
+void put(std::string& out, std::string_view field) {
+  out += std::to_string(field.size());
+  out += ':';
+  out += field;
+}
+
+std::string_view take(const std::string& in, std::size_t& at) {
+  const auto colon = in.find(':', at);
+  std::size_t n = 0;
+  if (colon == std::string::npos || std::from_chars(in.data() + at, in.data() + colon, n).ec != std::errc() ||
+      colon + 1 + n > in.size())
+    throw std::runtime_error("sweep: a case outcome from another rank is garbled");
+  at = colon + 1 + n;
+  return std::string_view(in).substr(colon + 1, n);
+}
+
+}  // namespace
+
+std::string encode_outcome(std::size_t index, const CaseOutcome& o) {
+  std::string out;
+  put(out, std::to_string(index));
+  put(out, o.status);
+  put(out, o.message);
+  put(out, std::to_string(o.rank));
+  put(out, o.host);
+  put(out, io::format_number(o.overhead_s));
+  put(out, app::summary_json(o.results).to_string());
+  return out;
+}
+
+CaseOutcome decode_outcome(const std::string& bytes, std::size_t& index) {
+  std::size_t at = 0;
+  CaseOutcome o;
+  index = std::stoul(std::string(take(bytes, at)));
+  o.status = take(bytes, at);
+  o.message = take(bytes, at);
+  o.rank = std::stoi(std::string(take(bytes, at)));
+  o.host = take(bytes, at);
+  o.overhead_s = std::stod(std::string(take(bytes, at)));
+  auto results = parse_summary_json(take(bytes, at));
+  if (!results) throw std::runtime_error("sweep: the results from another rank do not read");
+  o.results = std::move(*results);
+  return o;
+}
+
+std::string host_name() {
+  char buf[256] = {};
+  if (gethostname(buf, sizeof buf - 1) != 0 || buf[0] == '\0') return "unknown";
+  return buf;
+}
+
+}  // namespace flapsim::sweep

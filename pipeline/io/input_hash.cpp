@@ -1,0 +1,188 @@
+#include "pipeline/io/input_hash.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "pipeline/io/csv_writer.hpp"
+#include "wings/input_error.hpp"
+
+namespace flapsim::io {
+
+// A field added to one of these structs must be added to canonical_inputs() below too,
+// else two runs that differ in it would share a hash (and a sweep re-run would keep a
+// stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
+// serialise the new field below and update the size.
+// (Case::Structure::bodies_line and Wing::warnings locate messages and change no result.)
+static_assert(sizeof(Case) == 728, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::Wing) == 208, "wings::Wing changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::Vein) == 160, "wings::Vein changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::Section) == 40,
+              "wings::Section changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::Membrane) == 40,
+              "wings::Membrane changed: add the new field to canonical_inputs()");
+
+namespace {
+
+class Canonical {
+ public:
+  void line(std::string_view name, double v) { text_ += std::string(name) + "=" + format_number(v) + "\n"; }
+  void line(std::string_view name, int v) { text_ += std::string(name) + "=" + std::to_string(v) + "\n"; }
+  void line(std::string_view name, bool v) { text_ += std::string(name) + (v ? "=true\n" : "=false\n"); }
+  void line(std::string_view name, std::string_view v) {
+    text_ += std::string(name) + "=" + std::to_string(v.size()) + ":" + std::string(v) + "\n";
+  }
+  template <typename Vec>
+  void vector(std::string_view name, const Vec& v) {
+    text_ += std::string(name) + "=";
+    for (Eigen::Index i = 0; i < v.size(); ++i) text_ += (i ? "," : "") + format_number(v[i]);
+    text_ += "\n";
+  }
+  // A periodic signal is known by its samples: value, d/ds, d²/ds² at s = k/64.
+  void signal(std::string_view name, const mbd::PeriodicSignal& s) {
+    text_ += std::string(name) + "=";
+    for (int k = 0; k < 64; ++k) {
+      const mbd::AngleSample a = s.at_phase(k / 64.0);
+      text_ +=
+          format_number(a.value) + "/" + format_number(a.rate) + "/" + format_number(a.acceleration) + ";";
+    }
+    text_ += "\n";
+  }
+  std::string& text() { return text_; }
+
+ private:
+  std::string text_;
+};
+
+void material(Canonical& out, const std::string& p, const wings::Material& m) {
+  out.line(p + ".E", m.youngs_modulus);
+  out.line(p + ".nu", m.poisson_ratio);
+  out.line(p + ".rho", m.density);
+}
+
+void section(Canonical& out, const std::string& p, const wings::Section& s) {
+  out.line(p + ".shape", static_cast<int>(s.shape));
+  out.line(p + ".D", s.outer_diameter);
+  out.line(p + ".wall", s.wall);
+  out.line(p + ".width", s.width);
+  out.line(p + ".height", s.height);
+}
+
+void wing_fields(Canonical& out, const wings::Wing& w) {
+  out.line("wing.name", w.name);
+  out.line("wing.outline.size", static_cast<int>(w.outline.size()));
+  for (const auto& p : w.outline) out.vector("wing.outline", p);
+  out.line("wing.span", w.span);
+  out.line("wing.veins.size", static_cast<int>(w.veins.size()));
+  for (std::size_t i = 0; i < w.veins.size(); ++i) {
+    const wings::Vein& v = w.veins[i];
+    const std::string p = "wing.veins[" + std::to_string(i) + "]";
+    out.line(p + ".name", v.name);
+    out.line(p + ".points.size", static_cast<int>(v.points.size()));
+    for (const auto& q : v.points) out.vector(p + ".points", q);
+    section(out, p + ".root", v.root_section);
+    section(out, p + ".tip", v.tip_section);
+    material(out, p + ".material", v.material);
+  }
+  out.line("wing.membrane.thickness", w.membrane.thickness);
+  material(out, "wing.membrane.material", w.membrane.material);
+  out.line("wing.membrane.nonstructural_mass_per_area", w.membrane.nonstructural_mass_per_area);
+  out.line("wing.mesh.element_size", w.mesh.element_size);
+  out.line("wing.mesh.vein_element_size", w.mesh.vein_element_size);
+  out.line("wing.clamp_y", w.clamp_y);
+}
+
+void case_fields(Canonical& out, const Case& c) {
+  out.line("case.name", c.name);
+  const mbd::WingKinematics& k = c.kinematics;
+  out.line("kinematics.frequency", k.frequency);
+  out.signal("kinematics.sweep", k.sweep);
+  out.signal("kinematics.deviation", k.deviation);
+  out.signal("kinematics.rotation", k.rotation);
+  out.line("kinematics.rotation_phase", k.rotation_phase);
+  out.line("kinematics.stroke_plane_angle", k.stroke_plane_angle);
+  out.line("air.enabled", c.air.enabled);
+  out.line("air.density", c.air.density);
+  out.vector("air.freestream", c.air.freestream);
+  out.line("structure.kind", static_cast<int>(c.structure.kind));
+  out.line("structure.bodies", c.structure.bodies);
+  const Case::Numerics& n = c.numerics;
+  out.line("numerics.steps_per_cycle", n.steps_per_cycle);
+  out.line("numerics.cycles", n.cycles);
+  out.line("numerics.chordwise_panels", n.chordwise_panels);
+  out.line("numerics.spanwise_panels", n.spanwise_panels);
+  out.line("numerics.spacing", static_cast<int>(n.spacing));
+  out.line("numerics.core_model", static_cast<int>(n.core_model));
+  out.line("numerics.core_radius", n.core_radius);
+  out.line("numerics.wake_order", n.wake_order);
+  out.line("numerics.wake_max_rows", n.wake_max_rows);
+  out.line("numerics.free_wake", n.free_wake);
+  out.line("numerics.max_coupling_iterations", n.max_coupling_iterations);
+  out.line("numerics.coupling_tolerance", n.coupling_tolerance);
+  out.line("output.vtk_every", c.output.vtk_every);
+  out.line("loads.size", static_cast<int>(c.loads.size()));
+  for (std::size_t i = 0; i < c.loads.size(); ++i) {
+    const PointLoad& l = c.loads[i];
+    const std::string p = "loads[" + std::to_string(i) + "]";
+    out.line(p + ".body", l.body);
+    out.vector(p + ".point", l.point);
+    out.line(p + ".frame", static_cast<int>(l.frame));
+    for (int j = 0; j < 3; ++j) {
+      out.signal(p + ".force" + std::to_string(j), l.force[j]);
+      out.signal(p + ".moment" + std::to_string(j), l.moment[j]);
+    }
+  }
+  out.line("markers.size", static_cast<int>(c.markers.size()));
+  for (std::size_t i = 0; i < c.markers.size(); ++i) {
+    const std::string p = "markers[" + std::to_string(i) + "]";
+    out.line(p + ".name", c.markers[i].name);
+    out.line(p + ".body", c.markers[i].body);
+    out.vector(p + ".point", c.markers[i].point);
+  }
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "chain", "cannot open the chain file for reading");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+std::uint64_t fnv1a_64(std::string_view bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char b : bytes) {
+    h ^= b;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string canonical_inputs(const Case& c, const wings::Wing* wing, const std::string& chain_file,
+                             double spring_scale) {
+  Canonical out;
+  out.line("format", 1);
+  case_fields(out, c);
+  out.line("wing.present", wing != nullptr);
+  if (wing) wing_fields(out, *wing);
+  const std::string& chain = chain_file.empty() ? c.chain_file : chain_file;
+  out.line("chain.present", !chain.empty());
+  if (!chain.empty()) out.line("chain.bytes", file_bytes(chain));
+  out.line("spring_scale", spring_scale);
+  return std::move(out.text());
+}
+
+std::string input_hash(const Case& c, const wings::Wing* wing, const std::string& chain_file,
+                       double spring_scale) {
+  char hex[17];
+  std::snprintf(
+      hex, sizeof hex, "%016llx",
+      static_cast<unsigned long long>(fnv1a_64(canonical_inputs(c, wing, chain_file, spring_scale))));
+  return hex;
+}
+
+}  // namespace flapsim::io

@@ -1,0 +1,63 @@
+// The fingerprint of a run's inputs (pipeline/io/input_hash): FNV-1a 64 against the
+// reference test vectors, and a hash that follows the inputs and not where they are.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/scratch_dir.hpp"
+#include "pipeline/io/case_file.hpp"
+#include "pipeline/io/input_hash.hpp"
+#include "wings/wing_file.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace flapsim;
+
+TEST(InputHash, Fnv1a64MatchesTheReferenceVectors) {
+  // Test vectors of the FNV reference code (Fowler/Noll/Vo, test_fnv.c, FNV-1a 64):
+  // "" -> the offset basis, "a" -> af63dc4c8601ec8c, "foobar" -> 85944171f73967e8.
+  EXPECT_EQ(io::fnv1a_64(""), 0xcbf29ce484222325ull);
+  EXPECT_EQ(io::fnv1a_64("a"), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(io::fnv1a_64("foobar"), 0x85944171f73967e8ull);
+}
+
+TEST(InputHash, FollowsTheInputsNotTheirPlace) {
+  const fs::path data = fs::path(FLAPSIM_SOURCE_DIR) / "tests" / "data";
+  const io::Case c = io::load_case_file((data / "valid_tiny_case.toml").string());
+  const wings::Wing w = wings::load_wing_file((data / "valid_tiny_wing.toml").string());
+  const std::string h = io::input_hash(c, &w, "", 1.0);
+  EXPECT_EQ(h.size(), 16u);
+  EXPECT_EQ(h, io::input_hash(c, &w, "", 1.0));  // deterministic
+
+  // The same files in another folder: the same hash (paths are not inputs).
+  const test::ScratchDir dir("input_hash");
+  fs::copy_file(data / "valid_tiny_case.toml", dir / "valid_tiny_case.toml");
+  fs::copy_file(data / "valid_tiny_wing.toml", dir / "valid_tiny_wing.toml");
+  const io::Case moved = io::load_case_file((dir / "valid_tiny_case.toml").string());
+  const wings::Wing moved_wing = wings::load_wing_file((dir / "valid_tiny_wing.toml").string());
+  EXPECT_EQ(io::input_hash(moved, &moved_wing, "", 1.0), h);
+
+  // Any change of a value changes it: a case key, a wing key, the spring factor, the wing.
+  const io::Case phase =
+      io::load_case_file((data / "valid_tiny_case.toml").string(), {{"kinematics.rotation_phase", "-0.05"}});
+  EXPECT_NE(io::input_hash(phase, &w, "", 1.0), h);
+  const io::Case tol =
+      io::load_case_file((data / "valid_tiny_case.toml").string(), {{"numerics.coupling_tolerance", "1e-7"}});
+  EXPECT_NE(io::input_hash(tol, &w, "", 1.0), h);
+  wings::Wing thick = w;
+  thick.membrane.thickness *= 1.0 + 1e-15;  // the last bits count
+  EXPECT_NE(io::input_hash(c, &thick, "", 1.0), h);
+  EXPECT_NE(io::input_hash(c, &w, "", 2.0), h);
+  EXPECT_NE(io::input_hash(c, nullptr, "", 1.0), h);
+
+  // A chain file enters by its bytes.
+  std::ofstream(dir / "a.toml") << "# chain a\n";
+  std::ofstream(dir / "b.toml") << "# chain b\n";
+  EXPECT_NE(io::input_hash(c, &w, (dir / "a.toml").string(), 1.0),
+            io::input_hash(c, &w, (dir / "b.toml").string(), 1.0));
+}
+
+}  // namespace

@@ -1,0 +1,102 @@
+// Plausibility warnings of wing files (docs/wing_file.md, "Plausibility warnings"):
+// each implausible value is accepted, located by file, line and key, and the message
+// names the likely unit mistake; plausible wings (the shipped ones) give none.
+// Also the solid round rod section.
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <string>
+
+#include "wings/input_error.hpp"
+#include "wings/toml_reader.hpp"
+#include "wings/wing_file.hpp"
+#include "wings/wing_mass_properties.hpp"
+
+namespace w = flapsim::wings;
+
+namespace {
+
+const std::string kSource = FLAPSIM_SOURCE_DIR;
+
+// A 10 x 5 mm plate; the material and membrane lines are numbered for the tests.
+w::Wing plate(const std::string& modulus, const std::string& density, const std::string& thickness,
+              const std::string& veins = "") {
+  const std::string text =
+      "length_unit = \"mm\"\n"                                            // 1
+      "[planform]\n"                                                      // 2
+      "outline = [[2.0, 0.0], [2.0, 10.0], [-3.0, 10.0], [-3.0, 0.0]]\n"  // 3
+      "clamp_y = 0.0\n"                                                   // 4
+      "[materials.film]\n"                                                // 5
+      "youngs_modulus = " + modulus + "\n"                                // 6
+      "poisson_ratio = 0.3\n"                                             // 7
+      "density = " + density + "\n"                                       // 8
+      "[membrane]\n"                                                      // 9
+      "material = \"film\"\n"                                             // 10
+      "thickness = " + thickness + "\n" +                                 // 11
+      veins;
+  return w::read_wing(w::parse_toml_string(text, kSource + "/tests/data/inline.toml"));
+}
+
+void expect_one_warning(const w::Wing& wing, const std::string& key, int line, const std::string& hint) {
+  ASSERT_EQ(wing.warnings.size(), 1u);
+  const flapsim::InputWarning& warning = wing.warnings[0];
+  EXPECT_EQ(warning.key, key);
+  EXPECT_EQ(warning.line, line);
+  EXPECT_NE(warning.text().find("inline.toml:" + std::to_string(line)), std::string::npos) << warning.text();
+  EXPECT_NE(warning.message.find(hint), std::string::npos) << warning.message;
+}
+
+TEST(WingPlausibility, PlausibleWingsGiveNoWarning) {
+  EXPECT_TRUE(plate("4.0e9", "1400.0", "0.02").warnings.empty());
+  for (const char* f : {"hawkmoth.toml", "hawkmoth_thin_membrane.toml", "flat_plate.toml", "robofly.toml"})
+    EXPECT_TRUE(w::load_wing_file(kSource + "/wings/" + f).warnings.empty()) << f;
+}
+
+TEST(WingPlausibility, FilmThinnerThanOneMicrometre) {
+  // 25e-6 with length_unit = "mm" is 25 nm: the value was written in metres; in mm
+  // the 25 µm film is 0.025.
+  const w::Wing wing = plate("4.0e9", "1400.0", "25e-6");
+  EXPECT_DOUBLE_EQ(wing.membrane.thickness, 25e-9);  // accepted as written
+  expect_one_warning(wing, "membrane.thickness", 11, "was it written in metres? 2.5e-05 m is 0.025 mm");
+}
+
+TEST(WingPlausibility, ModulusBelowOneMegapascal) {
+  // 4.0 read as Pa; 4 GPa (4e9 Pa) is a typical insect cuticle or polyester film.
+  expect_one_warning(plate("4.0", "1400.0", "0.02"), "materials.film.youngs_modulus", 6,
+                     "GPa (4 GPa = 4e+09)");
+}
+
+TEST(WingPlausibility, ModulusAboveOneTerapascal) {
+  expect_one_warning(plate("6.0e12", "1400.0", "0.02"), "materials.film.youngs_modulus", 6, "above 1 TPa");
+}
+
+TEST(WingPlausibility, DensityOutsideTenToTwentyThousand) {
+  // 1.4 read as kg/m³ is g/cm³: 1.4 g/cm³ = 1400 kg/m³.
+  expect_one_warning(plate("4.0e9", "1.4", "0.02"), "materials.film.density", 8, "g/cm³ (1.4 g/cm³ = 1400 kg/m³)");
+  expect_one_warning(plate("4.0e9", "1.4e6", "0.02"), "materials.film.density", 8, "above 20000 kg/m³");
+  // The limits themselves are plausible.
+  EXPECT_TRUE(plate("1.0e6", "10.0", "0.002").warnings.empty());
+  EXPECT_TRUE(plate("1.0e12", "20000.0", "0.002").warnings.empty());
+}
+
+TEST(WingSolidRod, SolidCircleIsTheFullDisc) {
+  // shape = "solid_circle", diameter D: area π D²/4 along the whole rod, mass ρ A L.
+  const w::Wing wing = plate("4.0e9", "1400.0", "0.02",
+                             "[[veins]]\nmaterial = \"film\"\nshape = \"solid_circle\"\n"
+                             "points = [[1.0, 0.0], [1.0, 9.0]]\ndiameter = [0.4, 0.2]\n");
+  ASSERT_EQ(wing.veins.size(), 1u);
+  const w::Vein& v = wing.veins[0];
+  const double d0 = 0.4e-3, d1 = 0.2e-3;
+  EXPECT_NEAR(w::section_area(v.root_section), std::numbers::pi * d0 * d0 / 4, 1e-18);
+  EXPECT_NEAR(w::section_area(v.tip_section), std::numbers::pi * d1 * d1 / 4, 1e-18);
+  // Linear taper of D: ∫_0^1 (D0 + u (D1 − D0))² du = (D0² + D0 D1 + D1²) / 3.
+  const double mean_d2 = (d0 * d0 + d0 * d1 + d1 * d1) / 3;
+  EXPECT_NEAR(w::vein_mass(v), 1400.0 * std::numbers::pi / 4 * mean_d2 * 9e-3, 1e-15);
+  // 'wall' belongs to the hollow circle only.
+  EXPECT_THROW(plate("4.0e9", "1400.0", "0.02",
+                     "[[veins]]\nmaterial = \"film\"\nshape = \"solid_circle\"\n"
+                     "points = [[1.0, 0.0], [1.0, 9.0]]\ndiameter = 0.4\nwall = 0.1\n"),
+               flapsim::InputError);
+}
+
+}  // namespace

@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""Figures of any flapsim sweep (docs/sweeps.md, "Plotting a sweep"): for each varied key
+of a sweep.csv, the mean lift against that key — and the mean aerodynamic power, when the
+table has a power column — with one line per combination of the other varied keys.
+
+  sweep_<key>.png   one figure per varied key
+
+The varied keys are the leading columns of sweep.csv: case keys and wing keys are dotted
+(kinematics.rotation_phase, wing.membrane.thickness), and spring_scale; result columns
+are not. Cases whose status is not "ok" are left out (and counted on the figure).
+
+Usage: plot_sweep.py SWEEP.csv [OUTPUT_DIR]   (default OUTPUT_DIR: plots/ next to SWEEP.csv;
+Debian's python3-matplotlib)
+"""
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def varied_keys(header):
+    keys = []
+    for name in header:
+        if "." in name or name == "spring_scale":
+            keys.append(name)
+        else:
+            break
+    return keys
+
+
+def power_column(header):
+    for name in header:
+        if name.startswith("mean_power") or name.startswith("mean_aerodynamic_power"):
+            return name
+    return None
+
+
+def number(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def label(name):
+    return name.rsplit(".", 1)[-1].replace("_", " ")
+
+
+def plot_key(rows, key, others, power, out_path, failed):
+    panels = [("mean_lift_N", "mean lift [mN]", 1e3)]
+    if power:
+        unit = power.rsplit("_", 1)[-1] if "_" in power else ""
+        scale, shown = (1e3, "m" + unit) if unit == "W" else (1.0, unit)
+        panels.append((power, "mean power [%s]" % shown, scale))
+    fig, axes = plt.subplots(len(panels), 1, figsize=(6.0, 3.2 * len(panels)), sharex=True, squeeze=False)
+    groups = {}
+    for r in rows:
+        groups.setdefault(tuple(r[o] for o in others), []).append(r)
+    for (column, title, scale), ax in zip(panels, axes[:, 0]):
+        for group, members in sorted(groups.items(), key=lambda g: tuple(number(v) for v in g[0])):
+            members = sorted(members, key=lambda r: number(r[key]))
+            x = [number(r[key]) for r in members]
+            y = [number(r[column]) * scale for r in members]
+            name = ", ".join("%s = %s" % (label(o), v) for o, v in zip(others, group))
+            ax.plot(x, y, "o-", ms=4, label=name or None)
+        ax.set_ylabel(title)
+        ax.grid(True, alpha=0.3)
+        if others and len(groups) <= 12:
+            ax.legend(fontsize=7)
+    axes[-1, 0].set_xlabel(key)
+    if failed:
+        axes[0, 0].set_title("%d case(s) not ok, left out" % failed, fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out_path, dpi=120)
+    plt.close(fig)
+
+
+def main(argv):
+    if len(argv) < 2 or argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if len(argv) >= 2 else 1
+    table = argv[1]
+    out_dir = argv[2] if len(argv) > 2 else os.path.join(os.path.dirname(os.path.abspath(table)), "plots")
+    with open(table, newline="") as f:
+        reader = csv.DictReader(f)
+        header = reader.fieldnames or []
+        all_rows = list(reader)
+    keys = varied_keys(header)
+    if not keys or "mean_lift_N" not in header:
+        print("plot_sweep: %s is not a flapsim sweep.csv (no varied key or no mean_lift_N)" % table, file=sys.stderr)
+        return 2
+    rows = [r for r in all_rows if r.get("status", "ok") == "ok"]
+    failed = len(all_rows) - len(rows)
+    power = power_column(header)
+    os.makedirs(out_dir, exist_ok=True)
+    for key in keys:
+        others = [k for k in keys if k != key]
+        path = os.path.join(out_dir, "sweep_%s.png" % key.replace(".", "_"))
+        plot_key(rows, key, others, power, path, failed)
+        print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

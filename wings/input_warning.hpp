@@ -1,0 +1,28 @@
+#pragma once
+/// \file input_warning.hpp
+/// \brief A value that is accepted but implausible (a film thinner than 1 µm, a Young's
+/// modulus of a few pascal): located like flapsim::InputError and naming the likely unit
+/// mistake. Loaders collect them; the command line prints each on stderr as
+/// "flapsim: warning: FILE:LINE: key 'KEY': MESSAGE" and carries on.
+
+#include <string>
+
+namespace flapsim {
+
+struct InputWarning {
+  std::string file;
+  int line = 0;         ///< 1-based, 0 if unknown
+  std::string key;      ///< dotted key, e.g. "membrane.thickness"
+  std::string message;
+
+  /// "FILE:LINE: key 'KEY': MESSAGE", as InputError::what().
+  std::string text() const {
+    std::string s = file.empty() ? std::string("<input>") : file;
+    if (line > 0) s += ":" + std::to_string(line);
+    s += ": ";
+    if (!key.empty()) s += "key '" + key + "': ";
+    return s + message;
+  }
+};
+
+}  // namespace flapsim
