@@ -2,7 +2,8 @@
 /// \file base_motion.hpp
 /// \brief The prescribed motion of the wing base (the chain's root frame), as
 /// the multibody stage needs it: orientation, angular velocity and angular
-/// acceleration at time t. The pivot itself is fixed in the ground frame.
+/// acceleration at time t, and the position, velocity and acceleration of the pivot
+/// (zero unless the base translates: heave, surge, lateral).
 
 #include <Eigen/Core>
 
@@ -15,6 +16,9 @@ struct BasePose {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< R_GW: W coordinates -> G coordinates
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();      ///< ω [rad/s], in G
   Eigen::Vector3d angular_acceleration = Eigen::Vector3d::Zero();  ///< ω̇ [rad/s²], in G
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();      ///< pivot position [m], in G
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();      ///< pivot velocity [m/s], in G
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();  ///< pivot acceleration [m/s²], in G
 };
 
 /// t [s] -> pose of the base. Built from WingKinematics (mbd/wing_kinematics.hpp)

@@ -22,23 +22,27 @@ double damper_power(const ChainModel& model, const Eigen::VectorXd& v) {
 
 double base_power(const ChainModel& model, const ChainData& data, const BasePose& base,
                   const Loads& loads) {
-  // Moment balance about the fixed pivot (ground origin) for the whole chain:
-  // N_base + Σ (moments of loads and gravity) = Σ d/dt (c × m v_c + I ω).
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  // Force and moment balance about the pivot O for the whole chain: the base's force F and
+  // moment N (about O) plus the loads and gravity make Σ m a_c and Σ (c − O) × m a_c + I ω̇ + ω × I ω.
+  // The base's power is ω · N + v_O · F.
+  Eigen::Vector3d n = Eigen::Vector3d::Zero(), force = Eigen::Vector3d::Zero();
   const bool has_loads = loads.num_bodies() == model.num_bodies();
+  const Eigen::Vector3d& o = base.position;
   for (int i = 0; i < model.num_bodies(); ++i) {
     const BodyKinematics& b = data.bodies[i];
     const double m = model.bodies[i].mass;
-    n += b.com.cross(m * b.com_acceleration) + b.inertia_ground * b.angular_acceleration +
+    n += (b.com - o).cross(m * b.com_acceleration) + b.inertia_ground * b.angular_acceleration +
          b.angular_velocity.cross(b.inertia_ground * b.angular_velocity);
-    n -= b.com.cross(m * model.gravity);
+    n -= (b.com - o).cross(m * model.gravity);
+    force += m * (b.com_acceleration - model.gravity);
     if (has_loads) {
       Eigen::Vector3d f, mo;
       loads.resultant(i, b.rotation, f, mo);
-      n -= b.origin.cross(f) + mo;
+      n -= (b.origin - o).cross(f) + mo;
+      force -= f;
     }
   }
-  return base.angular_velocity.dot(n);
+  return base.angular_velocity.dot(n) + base.velocity.dot(force);
 }
 
 }  // namespace flapsim::mbd

@@ -22,9 +22,9 @@ double spring_energy(const ChainModel& model, const Eigen::VectorXd& q);
 /// Power dissipated by the dampers Φ̇ᵀ C Φ̇ [W] (≥ 0).
 double damper_power(const ChainModel& model, const Eigen::VectorXd& v);
 
-/// Power the base puts into the chain [W]: ω_base · N, where N is the moment about the
-/// (fixed) pivot that the base exerts on the chain, from the chain's rate of angular
-/// momentum minus the moments of the loads and gravity. Needs full accelerations
+/// Power the base puts into the chain [W]: ω_base · N + v_pivot · F, where N (about the
+/// pivot) and F are the moment and force the base exerts on the chain, from the chain's
+/// rates of momentum and angular momentum minus the loads and gravity. Needs full accelerations
 /// (forward_dynamics, or forward_kinematics + update_accelerations).
 double base_power(const ChainModel& model, const ChainData& data, const BasePose& base,
                   const Loads& loads);

@@ -20,11 +20,11 @@ void forward_kinematics(const ChainModel& model, ChainData& data, const BasePose
   const Eigen::Vector3d& wb = base.angular_velocity;
   const Eigen::Vector3d& dwb = base.angular_acceleration;
 
-  // The root frame: rotates with the base about the fixed pivot (ground origin).
+  // The root frame: rotates with the base about the pivot, which translates with the base.
   Eigen::Matrix3d parent_rot = root_rot;
-  Eigen::Vector3d parent_origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d parent_origin = base.position;
   Eigen::Vector3d parent_w = wb, parent_dw = dwb;
-  Eigen::Vector3d parent_vel = Eigen::Vector3d::Zero(), parent_acc = Eigen::Vector3d::Zero();
+  Eigen::Vector3d parent_vel = base.velocity, parent_acc = base.acceleration;
   Eigen::Vector3d joint_in_parent = model.root_offset;  // in W; root_rot maps R coords, so use base
 
   for (int i = 0; i < nb; ++i) {

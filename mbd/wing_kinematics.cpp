@@ -95,6 +95,14 @@ BasePose WingKinematics::pose(double t) const {
   p.rotation = R_GS * stroke_rotation({phi, theta, alpha});
   p.angular_velocity = R_GS * omega_S;  // S does not rotate relative to G
   p.angular_acceleration = R_GS * domega_S;
+  const double phase = frequency * t;
+  const PeriodicSignal* axes[3] = {&surge, &lateral, &heave};
+  for (int i = 0; i < 3; ++i) {
+    const AngleSample x = per_second(axes[i]->at_phase(phase), frequency);
+    p.position(i) = x.value;
+    p.velocity(i) = x.rate;
+    p.acceleration(i) = x.acceleration;
+  }
   return p;
 }
 

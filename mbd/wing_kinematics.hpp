@@ -26,6 +26,9 @@ struct WingKinematics {
   PeriodicSignal rotation;          ///< α(s) [rad]
   double rotation_phase = 0.0;      ///< δψ [cycles]
   double stroke_plane_angle = 0.0;  ///< β [rad]
+  /// Translation of the pivot in the ground frame [m] as signals of the phase s = f·t (not
+  /// shifted by δψ): surge along x_G, lateral along y_G, heave along z_G; zero by default.
+  PeriodicSignal surge, lateral, heave;
 
   struct Angles {
     AngleSample sweep, deviation, rotation;  ///< [rad], [rad/s], [rad/s²]
@@ -33,7 +36,8 @@ struct WingKinematics {
   /// Euler angles and their time derivatives at time t [s] (δψ applied).
   Angles angles(double t) const;
 
-  /// Orientation R_GW, angular velocity and angular acceleration (ground frame) at t [s].
+  /// Orientation R_GW, angular velocity and angular acceleration (ground frame) at t [s],
+  /// and the pivot's position, velocity and acceleration.
   BasePose pose(double t) const;
 };
 

@@ -15,6 +15,7 @@ packages=(
   libsimbody-dev
   libopenmpi-dev openmpi-bin
   python3-matplotlib
+  python3-vtk9 xvfb xauth
 )
 
 missing=()

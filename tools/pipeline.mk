@@ -42,7 +42,10 @@ run-pipeline: build $(PIPELINE_CHAIN)
 	  --spring-scale $(PIPELINE_SPRINGS) -o $(OUT)/hover_flexible || exit $$?; \
 	end=$$(date +%s.%N); \
 	echo "FSI run: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"; \
-	echo "ParaView: open $(OUT)/hover_flexible/wing.pvd, wake.pvd and chain.pvd together"; \
+	xvfb-run -a $(PIPELINE_PYTHON) tools/render_run.py $(OUT)/hover_flexible --phases 0.25 \
+	  -o $(OUT)/hover_flexible/preview.png > /dev/null || exit $$?; \
+	echo "preview: $(OUT)/hover_flexible/preview.png (the wing at mid-downstroke of the last wingbeat)"; \
+	echo "ParaView: cd $(OUT)/hover_flexible && paraview --state=run.pvsm"; \
 	echo "          (the FEM and the chain: $(OUT)/hawkmoth/fem.vtu, reduction.vtm)"
 
 phase-study: build $(PIPELINE_CHAIN)

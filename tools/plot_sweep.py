@@ -34,8 +34,9 @@ def varied_keys(header):
 
 
 def power_column(header):
+    # The mean aerodynamic power, once the results have it (a column such as mean_power_W).
     for name in header:
-        if name.startswith("mean_power") or name.startswith("mean_aerodynamic_power"):
+        if name.startswith("mean_") and "power" in name:
             return name
     return None
 

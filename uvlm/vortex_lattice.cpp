@@ -40,6 +40,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   wake_velocity.setZero(3, np);
   gamma.setZero(np);
   gamma_accepted.setZero(np);
+  gamma_accepted_before.setZero(np);
   influence.setZero(np, np);
   lu = Eigen::PartialPivLU<Eigen::MatrixXd>(np);
   factorised_nodes.setZero(3, nn);
@@ -66,6 +67,9 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
 
   loads.force.setZero(3, np);
   loads.point.setZero(3, np);
+  loads.point_velocity.setZero(3, np);
+  loads.leading_edge_force.setZero(3, np);
+  loads.suction.setZero(3, ns);
   loads.pressure_jump.setZero(np);
 }
 
@@ -295,6 +299,7 @@ void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen
   for (int k = 0; k < np; ++k) d.rhs(k) = -free_stream.dot(d.normal.col(k));
   d.gamma = d.lu.solve(d.rhs);
   d.gamma_accepted = d.gamma;
+  d.gamma_accepted_before = d.gamma;
   for (int j = 0; j < ns; ++j) d.wake_gamma[j] = d.gamma(m.panel(nc - 1, j));
   detail::build_wake_segments(m, d, detail::WakeView::Wing);
   wake_velocity_at_collocation(m, d);

@@ -47,8 +47,15 @@ enum class WakeSum {
   Tree     ///< Barnes–Hut tree code with multipoles (segment_tree.hpp), O(N log N)
 };
 enum class LoadMethod {
-  Bernoulli,      ///< unsteady Bernoulli pressure jump per panel (Katz & Plotkin §13.8)
+  Bernoulli,      ///< unsteady Bernoulli pressure jump per panel from the surface gradient of Γ
   KuttaJoukowski  ///< ρ Γ (V × dl) on every bound segment, plus the ∂Γ/∂t term
+};
+/// What becomes of the leading-edge suction, the in-plane Kutta–Joukowski force on the
+/// leading-edge bound segments (docs/uvlm.md, "Loads").
+enum class LeadingEdge {
+  None,      ///< dropped: normal (pressure) forces only
+  Attached,  ///< kept in the panel plane (potential flow: induced drag, thrust)
+  Separated  ///< its magnitude turned to the panel normal (Polhamus' suction analogy, NASA TN D-3767)
 };
 
 /// What the lattice is: constant during a run.
@@ -65,6 +72,7 @@ struct VortexLatticeModel {
   WakeModel wake_model = WakeModel::Free;
   WakeIntegrator wake_integrator = WakeIntegrator::AdamsBashforth2;
   LoadMethod load_method = LoadMethod::Bernoulli;
+  LeadingEdge leading_edge = LeadingEdge::Attached;
   /// Evaluate the wake's self-induced velocity (the free-wake convection, the cost of a
   /// run) in single precision: about twice as fast, relative error ~1e-6 in the wake
   /// velocity. The circulations and loads are always computed in double precision.
@@ -102,10 +110,19 @@ struct VortexLatticeModel {
 
 /// Aerodynamic loads on the panels of the last solve (ground frame).
 struct PanelLoads {
-  Eigen::Matrix3Xd force;          ///< force on each panel [N]
+  Eigen::Matrix3Xd force;          ///< force on each panel, leading-edge force included [N]
   Eigen::Matrix3Xd point;          ///< its point of action (panel quarter chord, mid-span) [m]
+  Eigen::Matrix3Xd point_velocity; ///< velocity of that point [m/s]
+  /// The leading-edge part of `force` (zero off the leading-edge row): the suction in the
+  /// panel plane (attached), the same magnitude along the normal (separated), or zero [N].
+  Eigen::Matrix3Xd leading_edge_force;
+  /// Suction of each strip, 3 × ns: the in-plane Kutta–Joukowski forces on its spanwise
+  /// bound segments summed, before the leading-edge model acts on it [N]
+  Eigen::Matrix3Xd suction;
   Eigen::VectorXd pressure_jump;   ///< force·n / area: pressure below minus above [Pa]
   Eigen::Vector3d total_force = Eigen::Vector3d::Zero();  ///< Σ force [N]
+  /// Aerodynamic power the wing spends on the air, −Σ force · point_velocity [W]
+  double power = 0.0;
 };
 
 /// Moment [N·m] of the panel forces about `point` [m].
@@ -135,6 +152,7 @@ struct VortexLatticeData {
   // Circulations [m²/s], panel index i + nc j.
   Eigen::VectorXd gamma;           ///< last solve
   Eigen::VectorXd gamma_accepted;  ///< last accepted step (for ∂Γ/∂t); zero before the first
+  Eigen::VectorXd gamma_accepted_before;  ///< the accepted step before that (BDF2 ∂Γ/∂t)
 
   // Influence matrix and its factorisation (reused while the surface does not change).
   Eigen::MatrixXd influence;
@@ -198,12 +216,30 @@ void solve_steady(const VortexLatticeModel& model, VortexLatticeData& data,
                   const Eigen::Matrix3Xd& nodes, const Eigen::Vector3d& free_stream, double rho,
                   double wake_length);
 
-/// Loads by the unsteady Bernoulli equation on the last solve (fills data.loads).
+/// Loads by the unsteady Bernoulli equation on the last solve (fills data.loads):
+///   Δp = ρ (V · ∇_s Γ + ∂Γ/∂t)
+/// with ∇_s Γ the surface gradient of Γ from its differences along the panel's two edge
+/// directions through the panel's dual basis (right on any quadrilateral, not only on
+/// orthogonal panels), V the air velocity relative to the panel at its collocation point,
+/// and ∂Γ/∂t following the panel (BDF2 over the accepted steps). The leading-edge row gets
+/// the leading-edge force of model.leading_edge in addition.
 void compute_bernoulli_loads(const VortexLatticeModel& model, VortexLatticeData& data);
 
 /// Loads by Kutta–Joukowski on each bound segment (velocity at its midpoint without the
 /// segment's own influence; the trailing-edge segment is part of the shed wake and
-/// carries no load) plus ρ ∂Γ/∂t A n per panel (fills data.loads).
+/// carries no load) plus ρ ∂Γ/∂t A n per panel (fills data.loads). The in-plane force on
+/// the leading-edge segments is the suction: kept, turned or dropped by model.leading_edge.
 void compute_kutta_joukowski_loads(const VortexLatticeModel& model, VortexLatticeData& data);
+
+/// Lift and induced drag of a steady solve (solve_steady) from the circulation its
+/// straight wake carries far downstream (the Trefftz plane; Katz & Plotkin §8.3):
+///   D = (ρ/2) Σ_j Γ_j w_j |s_j|,  L = ρ |V∞| Σ_j Γ_j |s_j|,
+/// s_j the trailing-edge segment of strip j projected onto the plane normal to V∞, w_j the
+/// downwash at its midpoint from the trailing vortices Γ_j − Γ_(j−1) as 2-D point vortices.
+struct TrefftzPlaneLoads {
+  double lift = 0.0;  ///< [N]
+  double drag = 0.0;  ///< induced drag [N]
+};
+TrefftzPlaneLoads trefftz_plane_loads(const VortexLatticeModel& model, const VortexLatticeData& data);
 
 }  // namespace flapsim::uvlm

@@ -159,6 +159,7 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
   d.wake_row_age[d.wake_rows] = 0.0;
   detail::attach_wake_to_trailing_edge(m, d);
 
+  d.gamma_accepted_before = d.gamma_accepted;
   d.gamma_accepted = d.gamma;
   ++d.accepted_steps;
 }

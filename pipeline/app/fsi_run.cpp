@@ -19,6 +19,7 @@ namespace {
 void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder, ProgressLine& progress) {
   const fsi::FsiModel& model = setup.model;
   fsi::initialize(model, data, 0.0);
+  recorder.record_initial(data);
   for (long n = 0; n < setup.steps; ++n) {
     fsi::coupled_step(model, data, setup.dt);
     recorder.record(data);

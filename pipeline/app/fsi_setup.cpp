@@ -35,14 +35,15 @@ mbd::ChainModel make_rigid_chain(const wings::Wing& wing) {
   return chain;
 }
 
+Eigen::Vector3d span_point_velocity(const mbd::WingKinematics& kinematics, double radius, double t) {
+  const mbd::BasePose pose = kinematics.pose(t);
+  return pose.velocity + pose.angular_velocity.cross(pose.rotation * Eigen::Vector3d(0.0, radius, 0.0));
+}
+
 double mean_speed_at_radius(const mbd::WingKinematics& kinematics, double radius, int samples) {
   const double period = 1.0 / kinematics.frequency;
-  const Eigen::Vector3d r_w(0.0, radius, 0.0);
   double sum = 0.0;
-  for (int i = 0; i < samples; ++i) {
-    const mbd::BasePose pose = kinematics.pose(period * i / samples);
-    sum += pose.angular_velocity.cross(pose.rotation * r_w).norm();
-  }
+  for (int i = 0; i < samples; ++i) sum += span_point_velocity(kinematics, radius, period * i / samples).norm();
   return sum / samples;
 }
 
@@ -57,7 +58,8 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, int ste
   m.wake_model = c.numerics.free_wake ? uvlm::WakeModel::Free : uvlm::WakeModel::Prescribed;
   m.wake_integrator = c.numerics.wake_order == 2 ? uvlm::WakeIntegrator::AdamsBashforth2
                                                  : uvlm::WakeIntegrator::Euler;
-  m.load_method = uvlm::LoadMethod::Bernoulli;  // as the rotation-phase paper
+  m.load_method = c.numerics.load_method;
+  m.leading_edge = c.numerics.leading_edge;
   m.max_wake_rows = c.numerics.wake_max_rows;
   m.wake_capacity = c.numerics.wake_max_rows > 0 ? c.numerics.wake_max_rows : steps;
   m.core_growth.enabled = c.numerics.core_growth;
@@ -159,8 +161,8 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
     uvlm::PlanformGridOptions g;
     g.chordwise = c.numerics.chordwise_panels;
     g.spanwise = c.numerics.spanwise_panels;
-    g.chordwise_spacing = c.numerics.spacing;
-    g.spanwise_spacing = c.numerics.spacing;
+    g.chordwise_spacing = c.numerics.chordwise_spacing;
+    g.spanwise_spacing = c.numerics.spanwise_spacing;
     s.grid = uvlm::make_planform_grid(s.wing->outline, g);
     m.lattice = lattice_model(c, p.mean_chord, s.steps);
     m.attachment = fsi::attach_wing(m.chain, s.grid->nodes, g.chordwise, g.spanwise);
@@ -168,7 +170,26 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
     s.reference.span = p.span;
     s.reference.mean_chord = p.mean_chord;
     s.reference.r2 = p.r2;
-    s.reference.speed = mean_speed_at_radius(c.kinematics, p.r2 * p.span);
+    LiftReference& ref = s.reference;
+    ref.flapping_speed = mean_speed_at_radius(c.kinematics, p.r2 * p.span);
+    ref.free_stream_speed = c.air.freestream.norm();
+    if (ref.free_stream_speed > 0.0) {
+      ref.kind = LiftReference::Kind::FreeStream;
+      ref.speed = ref.free_stream_speed;
+      ref.drag_direction = c.air.freestream / ref.free_stream_speed;
+      const Eigen::Vector3d up = Eigen::Vector3d::UnitZ() - ref.drag_direction.z() * ref.drag_direction;
+      if (up.norm() < 1e-9)
+        throw InputError(c.file, 0, "air.freestream",
+                         "a vertical free stream leaves lift and drag undefined (lift is normal to it, "
+                         "in the vertical plane)");
+      ref.lift_direction = up.normalized();
+    } else {
+      ref.kind = LiftReference::Kind::Flapping;
+      ref.speed = ref.flapping_speed;
+    }
+    if (!(ref.speed > 0.0))
+      throw InputError(c.file, 0, "air.freestream",
+                       "neither a free stream nor a moving wing: no reference speed for the coefficients");
   }
   return s;
 }

@@ -19,13 +19,27 @@
 namespace flapsim::app {
 
 /// Reference values of the lift coefficient CL = L / (½ ρ U_ref² S).
+/// The references of the coefficients and the force directions (docs/fsi.md, "Coefficients").
+/// Rule: U_ref is the free-stream speed if the case has a free stream, else the cycle-mean
+/// speed of the span axis at r2·R (flapping, with any base translation); a case with
+/// neither has no coefficients (setup refuses it).
 struct LiftReference {
+  enum class Kind { Flapping, FreeStream };
+  Kind kind = Kind::Flapping;
   double area = 0.0;   ///< S: planform area of the wing outline [m²]
-  double speed = 0.0;  ///< U_ref: cycle-mean speed of the span axis at r2·R [m/s]
+  double speed = 0.0;  ///< U_ref [m/s], by the rule above
+  double flapping_speed = 0.0;     ///< cycle-mean speed of the span axis at r2·R [m/s]
+  double free_stream_speed = 0.0;  ///< |U∞| [m/s]
   double r2 = 0.0;     ///< non-dimensional radius of gyration of the area [-]
   double span = 0.0;   ///< R [m]
   double mean_chord = 0.0;  ///< c̄ = S / R [m]
+  /// Lift direction: +z_G in hover, else the part of +z_G normal to U∞ (unit).
+  Eigen::Vector3d lift_direction = Eigen::Vector3d::UnitZ();
+  /// Drag direction in a free stream: along U∞ (unit); zero in hover, where the drag is
+  /// taken against the wing's horizontal motion at r2·R, step by step.
+  Eigen::Vector3d drag_direction = Eigen::Vector3d::Zero();
   double dynamic_pressure_area(double rho) const { return 0.5 * rho * speed * speed * area; }
+  const char* kind_name() const { return kind == Kind::FreeStream ? "free_stream" : "flapping_r2"; }
 };
 
 struct FsiSetup {
@@ -65,6 +79,9 @@ mbd::ChainModel make_rigid_chain(const wings::Wing& wing);
 /// \brief The cycle-mean speed [m/s] of the point at distance \p radius [m] along y_W,
 /// sampled at \p samples points of one period.
 double mean_speed_at_radius(const mbd::WingKinematics& kinematics, double radius, int samples = 720);
+
+/// Velocity [m/s] of the span-axis point at `radius` [m] at time t (rotation and base translation).
+Eigen::Vector3d span_point_velocity(const mbd::WingKinematics& kinematics, double radius, double t);
 
 /// \brief Builds the coupled model of a case.
 /// \throws flapsim::InputError when the structure cannot be obtained (flexible case without

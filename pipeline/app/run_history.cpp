@@ -25,8 +25,19 @@ constexpr HistoryColumn kColumns[] = {
     {"Fx_N", "aerodynamic force, ground x", [](const StepSample& s) { return s.force.x(); }},
     {"Fy_N", "aerodynamic force, ground y", [](const StepSample& s) { return s.force.y(); }},
     {"Fz_N", "aerodynamic force, ground z", [](const StepSample& s) { return s.force.z(); }},
-    {"lift_N", "lift: ground +z of the aerodynamic force", [](const StepSample& s) { return s.lift; }},
+    {"lift_N", "lift: the aerodynamic force along the lift direction (+z_G in hover; normal to U∞ in a free stream)",
+     [](const StepSample& s) { return s.lift; }},
+    {"drag_N", "drag: the force along the air's motion past the wing (U∞; in hover against the horizontal motion at r2·R); negative = thrust",
+     [](const StepSample& s) { return s.drag; }},
+    {"side_N", "side force: along drag direction × lift direction", [](const StepSample& s) { return s.side; }},
+    {"Mx_base_Nm", "aerodynamic moment about the pivot, ground x", [](const StepSample& s) { return s.moment.x(); }},
+    {"My_base_Nm", "aerodynamic moment about the pivot, ground y", [](const StepSample& s) { return s.moment.y(); }},
+    {"Mz_base_Nm", "aerodynamic moment about the pivot, ground z", [](const StepSample& s) { return s.moment.z(); }},
+    {"power_W", "aerodynamic power −Σ F·v over the panels (what the wing spends on the air)",
+     [](const StepSample& s) { return s.power; }},
     {"CL", "lift coefficient L / (½ ρ U_ref² S)", [](const StepSample& s) { return s.cl; }},
+    {"CD", "drag coefficient D / (½ ρ U_ref² S)", [](const StepSample& s) { return s.cd; }},
+    {"CP", "power coefficient P / (½ ρ U_ref³ S)", [](const StepSample& s) { return s.cp; }},
     {"coupling_iterations", "lattice solves of the step",
      [](const StepSample& s) { return static_cast<double>(s.coupling_iterations); }},
     {"coupling_change_rad", "structure change at the end of the step's sub-iterations",
@@ -43,7 +54,7 @@ constexpr HistoryColumn kColumns[] = {
 std::span<const HistoryColumn> history_columns() { return kColumns; }
 
 StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
-                       const mbd::WingKinematics& kinematics, double dynamic_pressure_area,
+                       const mbd::WingKinematics& kinematics, const LiftReference& reference,
                        int outer_body) {
   StepSample s;
   s.time = data.state.time;
@@ -51,9 +62,27 @@ StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
   s.tip = fsi::body_angles(model.chain, data.chain, kinematics.stroke_plane_angle,
                            model.chain.num_bodies() - 1);
   s.outer = fsi::body_angles(model.chain, data.chain, kinematics.stroke_plane_angle, outer_body);
-  if (model.air) s.force = data.lattice->loads.total_force;
-  s.lift = s.force.z();
-  s.cl = dynamic_pressure_area > 0.0 ? s.lift / dynamic_pressure_area : 0.0;
+  if (model.air) {
+    const uvlm::PanelLoads& loads = data.lattice->loads;
+    s.force = loads.total_force;
+    s.moment = uvlm::moment_about(loads, kinematics.pose(s.time).position);
+    s.power = loads.power;
+    const Eigen::Vector3d up = reference.lift_direction;
+    Eigen::Vector3d along = reference.drag_direction;
+    if (reference.kind == LiftReference::Kind::Flapping) {
+      // Hover: against the wing's horizontal motion (normal to the lift direction) at r2·R.
+      const Eigen::Vector3d v = span_point_velocity(kinematics, reference.r2 * reference.span, s.time);
+      const Eigen::Vector3d horizontal = v - v.dot(up) * up;
+      along = horizontal.norm() > 0.0 ? Eigen::Vector3d(-horizontal.normalized()) : Eigen::Vector3d::Zero();
+    }
+    s.lift = s.force.dot(up);
+    s.drag = s.force.dot(along);
+    s.side = s.force.dot(along.cross(up));
+    const double qs = reference.dynamic_pressure_area(model.density);
+    s.cl = s.lift / qs;
+    s.cd = s.drag / qs;
+    s.cp = s.power / (qs * reference.speed);
+  }
   s.coupling_iterations = data.last_iterations;
   s.coupling_change = data.last_change;
   return s;

@@ -15,6 +15,7 @@
 #include "mbd/chain_data.hpp"
 #include "mbd/chain_model.hpp"
 #include "mbd/wing_kinematics.hpp"
+#include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/fsi/phase_analysis.hpp"
 #include "pipeline/io/case_model.hpp"
@@ -28,18 +29,24 @@ struct StepSample {
   mbd::StrokeAngles tip;            ///< last body, relative to the undeformed chain [rad]
   mbd::StrokeAngles outer;          ///< the outer body (fsi::outer_body) [rad]
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< total aerodynamic force, ground [N]
-  double lift = 0.0;                 ///< ground +z of the force [N]
+  double lift = 0.0;                 ///< force along the lift direction [N] (LiftReference)
+  double drag = 0.0;                 ///< force along the air's motion relative to the wing [N]; < 0: thrust
+  double side = 0.0;                 ///< force along drag direction × lift direction [N]
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  ///< aerodynamic moment about the pivot, ground [N m]
+  double power = 0.0;                ///< aerodynamic power, −Σ F_panel · v_panel [W]
   double cl = 0.0;                   ///< lift coefficient [-] (0 in vacuum)
+  double cd = 0.0;                   ///< drag coefficient [-]
+  double cp = 0.0;                   ///< power coefficient P / (½ ρ U_ref³ S) [-]
   int coupling_iterations = 0;       ///< lattice solves of the step
   double coupling_change = 0.0;      ///< structure change at the end of the step [rad]
 };
 
 /// \brief The sample of the step just taken (after fsi::coupled_step).
-/// \param kinematics             the case's base kinematics (angles, stroke plane)
-/// \param dynamic_pressure_area  ½ ρ U_ref² S [N] of CL (0: CL = 0, as in vacuum)
-/// \param outer_body             0-based index of the outer body (fsi::outer_body)
+/// \param kinematics  the case's base kinematics (angles, stroke plane)
+/// \param reference   references and directions of the coefficients (ignored in vacuum)
+/// \param outer_body  0-based index of the outer body (fsi::outer_body)
 StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
-                       const mbd::WingKinematics& kinematics, double dynamic_pressure_area,
+                       const mbd::WingKinematics& kinematics, const LiftReference& reference,
                        int outer_body);
 
 /// A column every run writes.

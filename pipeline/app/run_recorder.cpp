@@ -7,8 +7,11 @@
 
 #include "pipeline/fsi/phase_analysis.hpp"
 #include "pipeline/io/atomic_file.hpp"
+#include "pipeline/fsi/wing_attachment.hpp"
 #include "pipeline/io/fsi_vtk.hpp"
+#include "pipeline/io/pvsm_state.hpp"
 #include "pipeline/io/vtk_writers.hpp"
+#include "wings/toml_reader.hpp"
 
 namespace flapsim::app {
 
@@ -37,8 +40,6 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
       dir_(existing_directory(output_dir)),
       vtk_every_(vtk_every),
       started_(started),
-      dynamic_pressure_area_(setup.model.air ? setup.reference.dynamic_pressure_area(setup.model.density)
-                                             : 0.0),
       outer_body_(fsi::outer_body(setup.model.chain)),
       history_(dir_ / "history.csv", history_header(c, setup.model.chain), 20),
       row_(history_.columns().size()) {
@@ -50,6 +51,7 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
     }
     chain_pvd_.emplace(dir_ / "chain.pvd");
     io::ensure_directory(dir_ / "vtk");
+    write_state();
   }
   RunResults& r = results_;
   r.set("case", c.name);
@@ -65,31 +67,75 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
   if (model.air) {
     r.set("reference_area_m2", setup.reference.area);
     r.set("reference_speed_m_s", setup.reference.speed);
+    r.set("reference_kind", setup.reference.kind_name());
+    r.set("flapping_speed_m_s", setup.reference.flapping_speed);
+    r.set("free_stream_speed_m_s", setup.reference.free_stream_speed);
+    r.set("load_method", std::string(wings::choice_name(io::kLoadMethodNames, c.numerics.load_method)));
+    r.set("leading_edge", std::string(wings::choice_name(io::kLeadingEdgeNames, c.numerics.leading_edge)));
     r.set("r2", setup.reference.r2);
   }
 }
 
 void RunRecorder::record(const fsi::FsiData& data) {
-  samples_.push_back(sample_step(setup_.model, data, case_.kinematics, dynamic_pressure_area_, outer_body_));
+  samples_.push_back(sample_step(setup_.model, data, case_.kinematics, setup_.reference, outer_body_));
   history_row(samples_.back(), case_, data, row_);
   history_.append(std::span<const double>(row_.data(), row_.size()));
   if (vtk_every_ > 0 && data.step % vtk_every_ == 0) write_series(data, data.step);
 }
 
+void RunRecorder::record_initial(const fsi::FsiData& data) {
+  if (vtk_every_ > 0) write_series(data, 0);
+}
+
 void RunRecorder::write_series(const fsi::FsiData& data, long step) {
   const fsi::FsiModel& model = setup_.model;
   const double t = data.state.time;
+  io::StepValues values;
+  values.step = step;
+  values.t_over_T = t / setup_.period;
+  if (step > 0) {
+    values.lift = samples_.back().lift;
+    values.cl = samples_.back().cl;
+  }
   if (model.air) {
+    // Step 0 is the pose before the first solve: the lattice placed on the chain, no loads.
+    io::PolyDataMesh wing;
+    if (step == 0) {
+      Eigen::Matrix3Xd nodes(3, model.lattice.nodes()), velocities(3, model.lattice.nodes());
+      fsi::deformed_nodes(model.attachment, data.chain, nodes, velocities);
+      wing = io::wing_surface_mesh(model.lattice, nodes, velocities, t);
+    } else {
+      wing = io::wing_surface_mesh(model.lattice, *data.lattice, t);
+      pressure_range_ = std::max(pressure_range_, data.lattice->loads.pressure_jump.cwiseAbs().maxCoeff());
+    }
+    io::add_step_values(wing, values);
     const auto wf = io::PvdSeries::step_file_name("vtk/wing", step, "vtp");
-    io::write_vtp(dir_ / wf, io::wing_surface_mesh(model.lattice, *data.lattice, t));
+    io::write_vtp(dir_ / wf, wing);
     wing_pvd_->add(t, dir_ / wf);
+    io::PolyDataMesh wake = io::wake_mesh(model.lattice, *data.lattice, t);
+    if (wake.cell_data.scalars.front().values.size() > 0)
+      circulation_range_ = std::max(circulation_range_, wake.cell_data.scalars.front().values.cwiseAbs().maxCoeff());
+    io::add_step_values(wake, values);
     const auto kf = io::PvdSeries::step_file_name("vtk/wake", step, "vtp");
-    io::write_vtp(dir_ / kf, io::wake_mesh(model.lattice, *data.lattice, t));
+    io::write_vtp(dir_ / kf, wake);
     wake_pvd_->add(t, dir_ / kf);
   }
+  io::PolyDataMesh chain = io::chain_mesh(model.chain, data.chain, t);
+  io::add_step_values(chain, values);
   const auto cf = io::PvdSeries::step_file_name("vtk/chain", step, "vtp");
-  io::write_vtp(dir_ / cf, io::chain_mesh(model.chain, data.chain, t));
+  io::write_vtp(dir_ / cf, chain);
   chain_pvd_->add(t, dir_ / cf);
+}
+
+void RunRecorder::write_state() const {
+  io::RunState state;
+  state.air = setup_.model.air;
+  double length = 0.0;
+  for (const auto& b : setup_.model.chain.bodies) length += b.length;
+  if (length > 0.0) state.length_scale = length;
+  if (pressure_range_ > 0.0) state.pressure_range = pressure_range_;
+  if (circulation_range_ > 0.0) state.circulation_range = circulation_range_;
+  io::write_run_state(dir_ / "run.pvsm", state);
 }
 
 // The results of the samples: means over the last complete cycle (or whatever was run,
@@ -113,6 +159,19 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   r.set("mean_Fx_N", mean(series(samples_, [](const StepSample& s) { return s.force.x(); })));
   r.set("mean_Fy_N", mean(series(samples_, [](const StepSample& s) { return s.force.y(); })));
   r.set("mean_Fz_N", mean(series(samples_, [](const StepSample& s) { return s.force.z(); })));
+  if (setup_.model.air) {
+    r.set("mean_drag_N", mean(series(samples_, [](const StepSample& s) { return s.drag; })));
+    r.set("mean_CD", mean(series(samples_, [](const StepSample& s) { return s.cd; })));
+    r.set("mean_side_N", mean(series(samples_, [](const StepSample& s) { return s.side; })));
+    r.set("mean_Mx_base_Nm", mean(series(samples_, [](const StepSample& s) { return s.moment.x(); })));
+    r.set("mean_My_base_Nm", mean(series(samples_, [](const StepSample& s) { return s.moment.y(); })));
+    r.set("mean_Mz_base_Nm", mean(series(samples_, [](const StepSample& s) { return s.moment.z(); })));
+    const double power = mean(series(samples_, [](const StepSample& s) { return s.power; }));
+    r.set("mean_power_W", power);
+    r.set("mean_CP", mean(series(samples_, [](const StepSample& s) { return s.cp; })));
+    r.set("lift_per_power_N_W", power != 0.0 ? r.number("mean_lift_N") / power
+                                             : std::numeric_limits<double>::quiet_NaN());
+  }
 
   const auto base_phi = series(samples_, [](const StepSample& s) { return s.base.sweep.value; });
   const auto base_alpha = series(samples_, [](const StepSample& s) { return s.base.rotation.value; });
@@ -154,6 +213,7 @@ RunResults RunRecorder::finish(const fsi::FsiData& data, const std::string& stat
   results_.set("wall_time_s",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count());
   summary_json(results_).write(dir_ / "summary.json");
+  if (vtk_every_ > 0) write_state();  // colour ranges of the whole run
   return results_;
 }
 

@@ -39,6 +39,10 @@ class RunRecorder {
   /// \brief Records the state after a coupled step (before the wake is shed).
   void record(const fsi::FsiData& data);
 
+  /// \brief Writes the ParaView frame of the initial state (t = 0, after fsi::initialize,
+  /// before the first step): the chain and the lattice in their starting pose, no loads.
+  void record_initial(const fsi::FsiData& data);
+
   /// The sample of the last recorded step (valid after the first record()).
   const StepSample& last() const { return samples_.back(); }
 
@@ -49,6 +53,7 @@ class RunRecorder {
 
  private:
   void write_series(const fsi::FsiData& data, long step);
+  void write_state() const;  ///< run.pvsm (io/pvsm_state.hpp), colour ranges as seen so far
   void analyse(const fsi::FsiData& data);
 
   const io::Case& case_;
@@ -56,11 +61,12 @@ class RunRecorder {
   std::filesystem::path dir_;
   int vtk_every_;
   std::chrono::steady_clock::time_point started_;
-  double dynamic_pressure_area_;  ///< ½ ρ U_ref² S [N]; 0 in vacuum
   int outer_body_;                ///< 0-based
   io::CsvTimeSeriesWriter history_;
   std::vector<double> row_;
   std::optional<io::PvdSeries> wing_pvd_, wake_pvd_, chain_pvd_;
+  double pressure_range_ = 0.0;     ///< largest |Δp| written [Pa]
+  double circulation_range_ = 0.0;  ///< largest |Γ| of the wake written [m²/s]
   std::vector<StepSample> samples_;
   RunResults results_;
 };

@@ -61,7 +61,16 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"reference_area_m2", "m^2", K::number, "%.6g", "",
                        "S of CL: planform area of the outline (in air)"},
       ResultDefinition{"reference_speed_m_s", "m/s", K::number, "%.6g", "",
-                       "U_ref of CL: cycle-mean speed of the span axis at r2·R (in air)"},
+                       "U_ref of the coefficients: the free-stream speed if there is a free stream, else "
+                       "the cycle-mean speed of the span axis at r2·R (in air)"},
+      ResultDefinition{"reference_kind", "", K::text, "", "",
+                       "which speed U_ref is: \"free_stream\" or \"flapping_r2\" (in air)"},
+      ResultDefinition{"flapping_speed_m_s", "m/s", K::number, "%.6g", "",
+                       "cycle-mean speed of the span axis at r2·R, base translation included (in air)"},
+      ResultDefinition{"free_stream_speed_m_s", "m/s", K::number, "%.6g", "", "|U∞| (in air)"},
+      ResultDefinition{"load_method", "", K::text, "", "", "load route: bernoulli or kutta_joukowski (in air)"},
+      ResultDefinition{"leading_edge", "", K::text, "", "",
+                       "leading-edge model: none, attached or separated (in air)"},
       ResultDefinition{"r2", "", K::number, "%.4f", "",
                        "non-dimensional radius of gyration of the outline's area (in air)"},
       // How the run ended.
@@ -72,7 +81,8 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"time_s", "s", K::number, "%.6g", "", "simulated time reached"},
       // Loads: means over the last cycle (or what was run, if less), trapezoidal rule.
       ResultDefinition{"mean_lift_N", "N", K::number, "%.6g", "mean lift",
-                       "mean lift (ground +z of the aerodynamic force) over the last cycle"},
+                       "mean lift (the force along the lift direction: +z_G in hover, normal to U∞ in a "
+                       "free stream) over the last cycle"},
       ResultDefinition{"mean_CL", "", K::number, "%.4f", "mean CL",
                        "mean lift coefficient L / (½ ρ U_ref² S) over the last cycle"},
       ResultDefinition{"mean_Fx_N", "N", K::number, "%.6g", "",
@@ -81,6 +91,23 @@ inline constexpr auto kRunResults = [] {
                        "mean aerodynamic force, ground y, last cycle"},
       ResultDefinition{"mean_Fz_N", "N", K::number, "%.6g", "",
                        "mean aerodynamic force, ground z, last cycle"},
+      ResultDefinition{"mean_drag_N", "N", K::number, "%.6g", "mean drag",
+                       "mean drag over the last cycle (along U∞; in hover against the horizontal motion at "
+                       "r2·R); negative = thrust (in air)"},
+      ResultDefinition{"mean_CD", "", K::number, "%.4f", "", "mean drag coefficient D / (½ ρ U_ref² S) (in air)"},
+      ResultDefinition{"mean_side_N", "N", K::number, "%.6g", "", "mean side force, last cycle (in air)"},
+      ResultDefinition{"mean_Mx_base_Nm", "Nm", K::number, "%.6g", "",
+                       "mean aerodynamic moment about the pivot, ground x, last cycle (in air)"},
+      ResultDefinition{"mean_My_base_Nm", "Nm", K::number, "%.6g", "",
+                       "mean aerodynamic moment about the pivot, ground y, last cycle (in air)"},
+      ResultDefinition{"mean_Mz_base_Nm", "Nm", K::number, "%.6g", "",
+                       "mean aerodynamic moment about the pivot, ground z, last cycle (in air)"},
+      ResultDefinition{"mean_power_W", "W", K::number, "%.6g", "mean power",
+                       "cycle-mean aerodynamic power −Σ F·v over the panels, last cycle (in air)"},
+      ResultDefinition{"mean_CP", "", K::number, "%.4f", "",
+                       "mean power coefficient P / (½ ρ U_ref³ S), last cycle (in air)"},
+      ResultDefinition{"lift_per_power_N_W", "N/W", K::number, "%.4g", "lift/power",
+                       "mean lift / mean aerodynamic power, last cycle (in air)"},
       // Rotation phases and lags over the last cycle, fractions of the period (docs/fsi.md).
       ResultDefinition{"base_rotation_phase", "", K::number, "%.4f", "",
                        "rotation phase of the base measured from its angles (reproduces the case's δψ)"},
@@ -175,6 +202,9 @@ struct ReportLine {
 inline constexpr std::array kRunReport = {
     ReportLine{"case {case}: {structure}"},
     ReportLine{"mean lift (last cycle) {mean_lift_N}, mean CL {mean_CL}"},
+    ReportLine{"mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W}, lift/power "
+               "{lift_per_power_N_W}; coefficients on {reference_speed_m_s} ({reference_kind})",
+               [](const RunResults& r) { return r.has("mean_power_W"); }},
     ReportLine{"coupling: {mean_coupling_iterations} sub-iterations per step on average "
                "(max {max_coupling_iterations})",
                [](const RunResults& r) { return r.integer("max_coupling_iterations") > 1; }},

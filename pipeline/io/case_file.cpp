@@ -24,7 +24,7 @@ std::string existing_file(const TomlTable& t, std::string_view key) {
 
 mbd::WingKinematics read_kinematics(const TomlTable& k) {
   k.expect_only({"frequency_hz", "rotation_phase", "stroke_plane_deg", "sweep", "deviation",
-                 "rotation"});
+                 "rotation", "surge", "lateral", "heave"});
   mbd::WingKinematics kin;
   kin.frequency = k.get_double("frequency_hz", Bounds::positive());
   kin.rotation_phase = k.get_double("rotation_phase", 0.0, Bounds::closed(-1.0, 1.0));
@@ -35,6 +35,10 @@ mbd::WingKinematics read_kinematics(const TomlTable& k) {
   kin.sweep = read_periodic_signal(k, "sweep", "_deg", "deg", kDegToRad, zero);
   kin.deviation = read_periodic_signal(k, "deviation", "_deg", "deg", kDegToRad, zero);
   kin.rotation = read_periodic_signal(k, "rotation", "_deg", "deg", kDegToRad, zero);
+  // Translation of the pivot [m] along the ground axes.
+  kin.surge = read_periodic_signal(k, "surge", "_m", "m", 1.0, zero);
+  kin.lateral = read_periodic_signal(k, "lateral", "_m", "m", 1.0, zero);
+  kin.heave = read_periodic_signal(k, "heave", "_m", "m", 1.0, zero);
   return kin;
 }
 
@@ -76,15 +80,19 @@ Case::Numerics read_numerics(const TomlTable& root) {
   const auto t = root.find_table("numerics");
   if (!t) return n;
   t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
-                  "core_model", "core_radius", "wake_order", "wake_max_rows", "free_wake",
-                  "core_growth", "core_growth_a1", "kinematic_viscosity", "near_wing_core",
-                  "frozen_wake_cycles", "wake_sum", "tree_tolerance", "max_coupling_iterations",
-                  "coupling_tolerance"});
+                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "core_model",
+                  "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
+                  "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles",
+                  "wake_sum", "tree_tolerance", "max_coupling_iterations", "coupling_tolerance"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
   n.chordwise_panels = t->get_int("chordwise_panels", n.chordwise_panels, Bounds::closed(1, 1000));
   n.spanwise_panels = t->get_int("spanwise_panels", n.spanwise_panels, Bounds::closed(1, 1000));
-  n.spacing = t->get_choice("spacing", kSpacingNames, std::optional(n.spacing));
+  const uvlm::Spacing both = t->get_choice("spacing", kSpacingNames, std::optional(n.chordwise_spacing));
+  n.chordwise_spacing = t->get_choice("chordwise_spacing", kSpacingNames, std::optional(both));
+  n.spanwise_spacing = t->get_choice("spanwise_spacing", kSpacingNames, std::optional(both));
+  n.load_method = t->get_choice("load_method", kLoadMethodNames, std::optional(n.load_method));
+  n.leading_edge = t->get_choice("leading_edge", kLeadingEdgeNames, std::optional(n.leading_edge));
   n.core_model = t->get_choice("core_model", kCoreModelNames, std::optional(n.core_model));
   n.core_radius = t->get_double("core_radius", n.core_radius, Bounds{0.0, 1.0, true, false});
   n.wake_order = t->get_int("wake_order", n.wake_order, Bounds::closed(1, 2));

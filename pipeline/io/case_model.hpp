@@ -64,7 +64,10 @@ struct Case {
     int cycles = 3;
     int chordwise_panels = 6;
     int spanwise_panels = 10;
-    uvlm::Spacing spacing = uvlm::Spacing::Uniform;           ///< panel spacing: "uniform" | "cosine"
+    uvlm::Spacing chordwise_spacing = uvlm::Spacing::Uniform;  ///< "uniform" | "cosine" (`spacing` sets both)
+    uvlm::Spacing spanwise_spacing = uvlm::Spacing::Uniform;   ///< "uniform" | "cosine"
+    uvlm::LoadMethod load_method = uvlm::LoadMethod::Bernoulli;  ///< "bernoulli" | "kutta_joukowski"
+    uvlm::LeadingEdge leading_edge = uvlm::LeadingEdge::Separated;  ///< "none" | "attached" | "separated"
     uvlm::CoreModel core_model = uvlm::CoreModel::LambOseen;  ///< vortex core: "cutoff" | "lamb_oseen"
     double core_radius = 0.05;              ///< core radius as a fraction of the mean chord
     int wake_order = 1;                     ///< 1 | 2 (wake convection order)
@@ -95,6 +98,12 @@ inline constexpr std::array<std::pair<std::string_view, Case::Structure::Kind>, 
     {{"rigid", Case::Structure::Kind::Rigid}, {"flexible", Case::Structure::Kind::Flexible}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::Spacing>, 2> kSpacingNames{
     {{"uniform", uvlm::Spacing::Uniform}, {"cosine", uvlm::Spacing::Cosine}}};
+inline constexpr std::array<std::pair<std::string_view, uvlm::LoadMethod>, 2> kLoadMethodNames{
+    {{"bernoulli", uvlm::LoadMethod::Bernoulli}, {"kutta_joukowski", uvlm::LoadMethod::KuttaJoukowski}}};
+inline constexpr std::array<std::pair<std::string_view, uvlm::LeadingEdge>, 3> kLeadingEdgeNames{
+    {{"none", uvlm::LeadingEdge::None},
+     {"attached", uvlm::LeadingEdge::Attached},
+     {"separated", uvlm::LeadingEdge::Separated}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::CoreModel>, 2> kCoreModelNames{
     {{"cutoff", uvlm::CoreModel::CutOff}, {"lamb_oseen", uvlm::CoreModel::LambOseen}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::WakeSum>, 2> kWakeSumNames{

@@ -67,8 +67,12 @@ std::string describe_case(const Case& c) {
   const auto& n = c.numerics;
   s += line("  time steps             %d per cycle x %d cycles = %d (dt = %.4g ms)", n.steps_per_cycle,
             n.cycles, n.steps_per_cycle * n.cycles, 1e3 / (k.frequency * n.steps_per_cycle));
-  s += line("  panels                 %d chordwise x %d spanwise (%s)", n.chordwise_panels,
-            n.spanwise_panels, std::string(wings::choice_name(kSpacingNames, n.spacing)).c_str());
+  s += line("  panels                 %d chordwise x %d spanwise (%s x %s spacing)", n.chordwise_panels,
+            n.spanwise_panels, std::string(wings::choice_name(kSpacingNames, n.chordwise_spacing)).c_str(),
+            std::string(wings::choice_name(kSpacingNames, n.spanwise_spacing)).c_str());
+  s += line("  loads                  %s, leading edge %s",
+            std::string(wings::choice_name(kLoadMethodNames, n.load_method)).c_str(),
+            std::string(wings::choice_name(kLeadingEdgeNames, n.leading_edge)).c_str());
   s += line("  vortex core            %s, radius %.4g mean chords",
             std::string(wings::choice_name(kCoreModelNames, n.core_model)).c_str(), n.core_radius);
   s += line("  wake                   %s, order %d, %s", n.free_wake ? "free" : "prescribed", n.wake_order,

@@ -29,6 +29,29 @@ PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& m,
   return mesh;
 }
 
+PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& m, const Eigen::Matrix3Xd& nodes,
+                               const Eigen::Matrix3Xd& node_velocities, double time) {
+  PolyDataMesh mesh;
+  mesh.time = time;
+  mesh.points = nodes;
+  const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0; i < nc; ++i)
+      mesh.polygons.push_back({m.node(i, j), m.node(i, j + 1), m.node(i + 1, j + 1), m.node(i + 1, j)});
+  mesh.cell_data.add_scalar("pressure_jump_Pa", Eigen::VectorXd::Zero(np));
+  mesh.cell_data.add_scalar("circulation_m2_s", Eigen::VectorXd::Zero(np));
+  mesh.cell_data.add_vector("force_N", Eigen::Matrix3Xd::Zero(3, np));
+  mesh.point_data.add_vector("velocity_m_s", node_velocities);
+  return mesh;
+}
+
+void add_step_values(PolyDataMesh& mesh, const StepValues& v) {
+  mesh.field_data.add_number("step", static_cast<double>(v.step));
+  mesh.field_data.add_number("t_over_T", v.t_over_T);
+  mesh.field_data.add_number("lift_N", v.lift);
+  mesh.field_data.add_number("CL", v.cl);
+}
+
 PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& m, const uvlm::VortexLatticeData& d,
                                double time) {
   PolyDataMesh mesh;

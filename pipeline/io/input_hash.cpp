@@ -14,7 +14,7 @@ namespace flapsim::io {
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
 // (Case::Structure::bodies_line and Wing::warnings locate messages and change no result.)
-static_assert(sizeof(Case) == 784, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1208, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 208, "wings::Wing changed: add the new field to canonical_inputs()");
@@ -103,6 +103,9 @@ void case_fields(Canonical& out, const Case& c) {
   out.signal("kinematics.rotation", k.rotation);
   out.line("kinematics.rotation_phase", k.rotation_phase);
   out.line("kinematics.stroke_plane_angle", k.stroke_plane_angle);
+  out.signal("kinematics.surge", k.surge);
+  out.signal("kinematics.lateral", k.lateral);
+  out.signal("kinematics.heave", k.heave);
   out.line("air.enabled", c.air.enabled);
   out.line("air.density", c.air.density);
   out.vector("air.freestream", c.air.freestream);
@@ -113,7 +116,10 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.cycles", n.cycles);
   out.line("numerics.chordwise_panels", n.chordwise_panels);
   out.line("numerics.spanwise_panels", n.spanwise_panels);
-  out.line("numerics.spacing", static_cast<int>(n.spacing));
+  out.line("numerics.chordwise_spacing", static_cast<int>(n.chordwise_spacing));
+  out.line("numerics.spanwise_spacing", static_cast<int>(n.spanwise_spacing));
+  out.line("numerics.load_method", static_cast<int>(n.load_method));
+  out.line("numerics.leading_edge", static_cast<int>(n.leading_edge));
   out.line("numerics.core_model", static_cast<int>(n.core_model));
   out.line("numerics.core_radius", n.core_radius);
   out.line("numerics.wake_order", n.wake_order);

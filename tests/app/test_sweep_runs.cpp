@@ -72,9 +72,12 @@ TEST(SweepRuns, TwoKeyGridGivesOneRowPerCombination) {
 TEST(SweepRuns, KilledSweepRerunsOnlyTheMissingCases) {
   const test::ScratchDir dir("sweep_resume");
   std::ofstream(dir / "case.toml") << test::tiny_plate_case(48);
-  const std::string args = "sweep " + (dir / "case.toml").string() +
-                           " --vary kinematics.rotation_phase=-0.15:0.05:0.15 -j 1 -o " +
-                           (dir / "out").string();
+  // A case table (--cases): a short first case, then longer ones, so that the kill
+  // lands while the later cases are still to run.
+  std::ofstream(dir / "cases.csv") << "kinematics.rotation_phase,numerics.steps_per_cycle\n"
+                                      "-0.15,12\n-0.1,96\n-0.05,96\n0,96\n0.05,96\n0.1,96\n0.15,96\n";
+  const std::string args = "sweep " + (dir / "case.toml").string() + " --cases " +
+                           (dir / "cases.csv").string() + " -j 1 -o " + (dir / "out").string();
   // Start the sweep in the background and kill it (SIGKILL: no clean-up) as soon as
   // its first case has finished.
   const std::string start = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' " +
@@ -113,7 +116,7 @@ TEST(SweepRuns, KilledSweepRerunsOnlyTheMissingCases) {
   ASSERT_EQ(run_flapsim(args), 0);
   const auto table = read_sweep_table((dir / "out" / "sweep.csv").string());
   ASSERT_TRUE(table.rectangular);
-  ASSERT_EQ(table.rows.size(), 7u);  // −0.15 … 0.15
+  ASSERT_EQ(table.rows.size(), 7u);  // the table's rows
   int kept = 0, ran = 0;
   for (const auto& row : table.rows) {
     EXPECT_EQ(row.at("status"), "ok");

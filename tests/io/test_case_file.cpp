@@ -173,7 +173,8 @@ TEST(CaseFile, OverridesForSweeps) {
                                              {"kinematics.sweep.cos_deg", "[40.0]"},
                                              {"output.vtk_every", "0"}});
   EXPECT_DOUBLE_EQ(c.kinematics.rotation_phase, -0.1);
-  EXPECT_EQ(c.numerics.spacing, flapsim::uvlm::Spacing::Cosine);
+  EXPECT_EQ(c.numerics.chordwise_spacing, flapsim::uvlm::Spacing::Cosine);  // `spacing` sets both
+  EXPECT_EQ(c.numerics.spanwise_spacing, flapsim::uvlm::Spacing::Cosine);
   EXPECT_EQ(c.output.vtk_every, 0);
   EXPECT_EQ(c.numerics.chordwise_panels, 6);  // untouched keys keep their values
   // φ(0) = 10° + 40° cos(2π·(−0.1)) with the overridden amplitude and phase.
@@ -189,4 +190,43 @@ TEST(CaseFile, OverridesForSweeps) {
   }
   EXPECT_THROW(p::load_case_file(path, {{"numerics.spacing", "cosine"}}), InputError);  // unquoted
   EXPECT_THROW(p::load_case_file(path, {{"numerics.cylces", "2"}}), InputError);        // typo
+}
+
+TEST(CaseFile, LoadModelAndSpacingKeys) {
+  // docs/case_file.md: `spacing` sets both directions, the per-direction keys override it;
+  // the load route and the leading-edge model are named choices.
+  const p::Case c = case_from_text(kHead +
+                                   "[numerics]\n"
+                                   "spacing = \"cosine\"\n"
+                                   "spanwise_spacing = \"uniform\"\n"
+                                   "load_method = \"kutta_joukowski\"\n"
+                                   "leading_edge = \"attached\"\n");
+  EXPECT_EQ(c.numerics.chordwise_spacing, flapsim::uvlm::Spacing::Cosine);
+  EXPECT_EQ(c.numerics.spanwise_spacing, flapsim::uvlm::Spacing::Uniform);
+  EXPECT_EQ(c.numerics.load_method, flapsim::uvlm::LoadMethod::KuttaJoukowski);
+  EXPECT_EQ(c.numerics.leading_edge, flapsim::uvlm::LeadingEdge::Attached);
+  const p::Case d = case_from_text(kHead);
+  EXPECT_EQ(d.numerics.load_method, flapsim::uvlm::LoadMethod::Bernoulli);
+  EXPECT_EQ(d.numerics.leading_edge, flapsim::uvlm::LeadingEdge::Separated);  // the documented default
+  const auto e = error_of(kHead + "[numerics]\nleading_edge = \"polhamus\"\n");  // line 9
+  EXPECT_EQ(e.key(), "numerics.leading_edge");
+  EXPECT_EQ(e.line(), 9);
+}
+
+TEST(CaseFile, BaseTranslationSignals) {
+  // docs/case_file.md: heave, surge and lateral move the pivot along z_G, x_G, y_G [m], as
+  // signals of s = f t; pose() gives their position, velocity and acceleration.
+  auto with_kinematics = [](const std::string& extra) {
+    std::string text = kHead;
+    return text.insert(text.find("[structure]"), extra);
+  };
+  const p::Case c = case_from_text(with_kinematics("heave = { sin_m = [0.01] }\nsurge = 0.002\n"));
+  const double f = 20.0, w = 2 * std::numbers::pi * f, t = 0.3 / f;
+  const auto pose = c.kinematics.pose(t);
+  EXPECT_NEAR(pose.position.z(), 0.01 * std::sin(w * t), 1e-15);
+  EXPECT_NEAR(pose.velocity.z(), 0.01 * w * std::cos(w * t), 1e-12);
+  EXPECT_NEAR(pose.acceleration.z(), -0.01 * w * w * std::sin(w * t), 1e-9);
+  EXPECT_DOUBLE_EQ(pose.position.x(), 0.002);
+  EXPECT_DOUBLE_EQ(pose.position.y(), 0.0);
+  EXPECT_EQ(error_of(with_kinematics("heave = { sin_deg = [1.0] }\n")).key(), "kinematics.heave.sin_deg");
 }

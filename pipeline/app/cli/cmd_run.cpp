@@ -39,7 +39,7 @@ void run_command(const RunArgs& a) {
   const app::RunResults results = app::run_case(c, options);
   if (!a.quiet) {
     std::fputs(app::run_report(results).c_str(), stdout);
-    std::printf("outputs in %s (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd)\n",
+    std::printf("outputs in %s (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd, run.pvsm)\n",
                 options.output_dir.string().c_str());
   }
 }
@@ -56,7 +56,9 @@ void add_run_command(CLI::App& app) {
       "coupling iterations, joint angles, markers), summary.json (last-cycle mean lift and CL,\n"
       "rotation phases of base and tip, coupling statistics, wall time) and the ParaView series\n"
       "wing.pvd (deformed surface: pressure jump, circulation), wake.pvd, chain.pvd.\n"
-      "A flexible case takes its chain from --chain, else from the case's 'chain' key.\n"
+      "A flexible case takes its chain from --chain, else from the case's 'chain' key, else it\n"
+      "reduces the case's wing in process to structure.bodies bodies (as 'flapsim reduce').\n"
+      "Also writes run.pvsm, a ParaView state of the series and the lift (docs/fsi.md).\n"
       "Exit status: 0 ok, 2 bad input, 3 numerical failure (outputs so far stay valid).");
   cmd->add_option("case", args->case_file, "case file (TOML, docs/case_file.md)")->required();
   cmd->add_option("-o,--output", args->output_dir, "output folder (default out/<case name>)");

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <exception>
 #include <mutex>
 #include <string>
@@ -123,7 +124,15 @@ ScheduleStats master(const std::vector<std::size_t>& todo, int threads, int remo
              MPI_STATUS_IGNORE);
     if (bytes > 0) {
       std::size_t index = 0;
-      CaseOutcome outcome = decode_outcome(buffer, index);
+      CaseOutcome outcome;
+      try {
+        outcome = decode_outcome(buffer, index);
+      } catch (const std::exception& e) {
+        // Cannot happen between two copies of this program; if it does, the other ranks
+        // would wait forever: end the whole job.
+        std::fprintf(stderr, "flapsim sweep: %s (from rank %d)\n", e.what(), status.MPI_SOURCE);
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      }
       list.finish(index, std::move(outcome));
     }
     long next = list.take();

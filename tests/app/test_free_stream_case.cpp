@@ -1,0 +1,83 @@
+// A wing that does not flap, held at 5° in a free stream: the coefficients are based on
+// the free stream (docs/fsi.md, "Coefficients, forces and power"), and after the start-up
+// transient the lift and drag are those of the steady solution of the same lattice.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include "common/run_flapsim.hpp"
+#include "common/scratch_dir.hpp"
+#include "uvlm/planform_grid.hpp"
+#include "uvlm/vortex_lattice.hpp"
+#include <Eigen/Geometry>
+
+namespace {
+
+using flapsim::test::read_text;
+using flapsim::test::run_flapsim;
+
+const std::string kSource = FLAPSIM_SOURCE_DIR;
+
+double number_in(const std::string& json, const std::string& key) {
+  const auto at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) {
+    ADD_FAILURE() << key << " not in summary.json:\n" << json;
+    return 0.0;
+  }
+  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+}
+
+}  // namespace
+
+TEST(FreeStreamCase, CoefficientsUseTheFreeStreamWhenTheWingDoesNotFlap) {
+  // wings/flat_plate.toml (AR 4, chord 10 mm) at α = 5° (rotation 5°, no sweep) in
+  // U∞ = 5 m/s along −x, 4 × 8 panels, flat wake, two periods of 25 chords (UΔt = c).
+  // Reference: the steady solution of the same lattice (uvlm::solve_steady, attached
+  // leading edge): CL within 1.5 %, CD within 3 % (what is left of the start-up transient
+  // over the second period); and the lattice value for this wing, CL = 0.316 at 8 × 64
+  // (docs/validation.md U4), within 10 % at this coarse lattice.
+  flapsim::test::ScratchDir dir("free_stream_case");
+  std::ofstream(dir / "case.toml")
+      << "name = \"glide\"\nwing = \"" + kSource + "/wings/flat_plate.toml\"\n"
+         "[kinematics]\nfrequency_hz = 20.0\nsweep = 0.0\nrotation = 5.0\n"
+         "[air]\nfreestream = [-5.0, 0.0, 0.0]\n"
+         "[structure]\nkind = \"rigid\"\n"
+         "[numerics]\nsteps_per_cycle = 25\ncycles = 2\nchordwise_panels = 4\nspanwise_panels = 8\n"
+         "free_wake = false\nleading_edge = \"attached\"\n[output]\nvtk_every = 0\n";
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
+  const std::string summary = read_text(dir / "out" / "summary.json");
+  EXPECT_NE(summary.find("\"reference_kind\": \"free_stream\""), std::string::npos) << summary;
+  EXPECT_DOUBLE_EQ(number_in(summary, "reference_speed_m_s"), 5.0);
+  EXPECT_DOUBLE_EQ(number_in(summary, "flapping_speed_m_s"), 0.0);
+  const double cl = number_in(summary, "mean_CL"), cd = number_in(summary, "mean_CD");
+
+  // The same lattice, steady: the plate's outline in the wing frame, turned nose up by 5°.
+  namespace uvlm = flapsim::uvlm;
+  uvlm::PlanformGridOptions g;
+  g.chordwise = 4;
+  g.spanwise = 8;
+  const std::vector<Eigen::Vector2d> outline = {{2.5e-3, 0.0}, {2.5e-3, 40e-3}, {-7.5e-3, 40e-3}, {-7.5e-3, 0.0}};
+  const Eigen::Matrix3Xd nodes =
+      Eigen::AngleAxisd(-5.0 * std::numbers::pi / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix() *
+      uvlm::make_planform_grid(outline, g).nodes;
+  uvlm::VortexLatticeModel m;
+  m.chordwise = 4;
+  m.spanwise = 8;
+  m.wake_capacity = 2;
+  m.leading_edge = uvlm::LeadingEdge::Attached;
+  m.core = {uvlm::CoreModel::LambOseen, 1e-8};
+  uvlm::VortexLatticeData d(m);
+  uvlm::solve_steady(m, d, nodes, Eigen::Vector3d(-5.0, 0.0, 0.0), 1.225, 100.0);
+  const double qs = 0.5 * 1.225 * 25.0 * 400e-6;  // ½ ρ U∞² S, S = 400 mm²
+  const double cl_steady = d.loads.total_force.z() / qs, cd_steady = -d.loads.total_force.x() / qs;
+  std::printf("[ value ] glide at 5 deg: CL %.4f (steady lattice %.4f, U4 0.316), CD %.5f (steady %.5f)\n", cl,
+              cl_steady, cd, cd_steady);
+  EXPECT_NEAR(cl / cl_steady, 1.0, 0.015);
+  EXPECT_NEAR(cd / cd_steady, 1.0, 0.03);
+  EXPECT_NEAR(cl / 0.316, 1.0, 0.10);
+  EXPECT_NEAR(number_in(summary, "mean_lift_N") / qs, cl, 1e-3 * cl);
+}

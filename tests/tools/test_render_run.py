@@ -1,0 +1,91 @@
+#!/usr/bin/python3
+"""ctest tools.RenderRun.SnapshotShowsTheWing: a tiny flapsim run (flat plate, rigid,
+3 x 4 panels, 12 steps) rendered offscreen under Xvfb by tools/render_run.py with VTK's
+Python; the PNG read back with VTK's PNG reader must show the wing: with the wing drawn
+in one colour (orange, the chain black, the background white), at least 2 % of the
+pixels are that orange and their centre lies in the middle of the picture, where the
+script's camera frames the wing; the default picture (pressure colours) is not blank.
+A folder without the series is bad input (exit status 2)."""
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+p = argparse.ArgumentParser()
+p.add_argument("--flapsim", required=True)
+p.add_argument("--source", required=True)
+p.add_argument("--work", required=True)
+a = p.parse_args()
+
+work = os.path.abspath(a.work)
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+case = os.path.join(work, "case.toml")
+with open(case, "w") as f:
+    f.write(f'name = "plate"\nwing = "{a.source}/wings/flat_plate.toml"\n'
+            "[kinematics]\nfrequency_hz = 26.1\n"
+            "sweep = { mean_deg = 10.0, cos_deg = [50.0] }\n"
+            "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
+            '[structure]\nkind = "rigid"\n'
+            "[numerics]\nsteps_per_cycle = 12\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 4\n"
+            "core_radius = 0.2\n[output]\nvtk_every = 3\n")
+env = dict(os.environ, FLAPSIM_QUIET="1", OMP_NUM_THREADS="1")
+run = os.path.join(work, "run")
+subprocess.run([a.flapsim, "run", case, "-o", run, "-q"], check=True, env=env)
+
+script = os.path.join(a.source, "tools", "render_run.py")
+xvfb = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24"]
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def render(extra, png):
+    subprocess.run(xvfb + ["/usr/bin/python3", script, run, "--phases", "0.25", "-o", png,
+                           "--size", "600", "400"] + extra, check=True)
+    reader = vtk.vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    rgb = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3] / 255.0
+    return rgb
+
+
+# 1. The wing in one colour: orange (1, 0.5, 0) shaded keeps g ≈ r/2 and b ≈ 0.
+rgb = render(["--wing-color", "1", "0.5", "0", "--no-wake"], os.path.join(work, "orange.png"))
+h, w, _ = rgb.shape
+r, g, b = rgb[:, :, 0], rgb[:, :, 1], rgb[:, :, 2]
+orange = (r > 0.2) & (g > 0.3 * r) & (g < 0.7 * r) & (b < 0.15 * r + 0.02)
+share = orange.mean()
+print(f"orange pixels: {100 * share:.1f} % of {w} x {h}")
+check(share > 0.02, f"the wing covers {100 * share:.2f} % of the picture, expected > 2 %")
+if orange.any():
+    ys, xs = orange.nonzero()
+    cx, cy = xs.mean() / w, ys.mean() / h
+    print(f"centre of the wing pixels: ({cx:.2f}, {cy:.2f}) of the picture")
+    check(0.2 < cx < 0.8 and 0.2 < cy < 0.8, f"the wing's centre ({cx:.2f}, {cy:.2f}) is not in the middle")
+white = (rgb > 0.98).all(axis=2).mean()
+check(white > 0.3, f"only {100 * white:.1f} % background: the camera does not frame the wing")
+
+# 2. The default picture (pressure jump colours, wake) is not blank.
+rgb = render([], os.path.join(work, "default.png"))
+non_white = 1.0 - (rgb > 0.98).all(axis=2).mean()
+print(f"default picture: {100 * non_white:.1f} % not background")
+check(non_white > 0.02, "the default picture is blank")
+
+# 3. Bad input: a folder without series.
+empty = os.path.join(work, "empty")
+os.makedirs(empty)
+status = subprocess.run(xvfb + ["/usr/bin/python3", script, empty], capture_output=True).returncode
+check(status == 2, f"a folder without chain.pvd gave exit status {status}, expected 2")
+
+sys.exit(1 if failures else 0)

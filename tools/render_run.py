@@ -1,0 +1,250 @@
+#!/usr/bin/python3
+"""Pictures of a flapsim run without opening ParaView: PNG snapshots of the wing
+(coloured by the pressure jump), its wake (by circulation) and the bar chain at chosen
+phases of the last wingbeat, rendered offscreen with VTK's Python (python3-vtk9).
+
+    xvfb-run -a tools/render_run.py out/hover_flexible                 # phases 0, 0.25, 0.5, 0.75
+    xvfb-run -a tools/render_run.py out/hover_flexible --phases 0.25 -o preview.png
+
+VTK's render window needs an X display: on a machine without one, run the script under
+xvfb-run (Debian packages xvfb, xauth; tools/install_deps.sh installs them). The phase is
+t/T of the run's kinematics (t = 0 at the start of the run, where the case's
+phase-0 angles hold), taken within the last complete wingbeat written. Each picture is
+titled with t/T, t and the lift of its frame. Exit status 0, or 2 on bad input (a folder
+without wing.pvd or chain.pvd, a phase outside [0, 1)). docs/fsi.md, "Pictures".
+"""
+import argparse
+import json
+import math
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import vtk
+
+
+def fail(message):
+    print(f"render_run: error: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def read_pvd(path):
+    """[(time, absolute data file)] of a .pvd collection, files relative to it."""
+    root = ET.parse(path).getroot()
+    folder = os.path.dirname(os.path.abspath(path))
+    return [(float(d.get("timestep")), os.path.join(folder, d.get("file")))
+            for d in root.iter("DataSet")]
+
+
+def read_vtp(path):
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = vtk.vtkPolyData()
+    data.DeepCopy(reader.GetOutput())
+    return data
+
+
+def field(data, name, default=float("nan")):
+    a = data.GetFieldData().GetArray(name)
+    return a.GetTuple1(0) if a is not None else default
+
+
+def diverging(range_):
+    """ParaView's "Cool to Warm" over [-range, range]."""
+    ctf = vtk.vtkColorTransferFunction()
+    ctf.SetColorSpaceToDiverging()
+    ctf.AddRGBPoint(-range_, 0.231373, 0.298039, 0.752941)
+    ctf.AddRGBPoint(0.0, 0.865003, 0.865003, 0.865003)
+    ctf.AddRGBPoint(range_, 0.705882, 0.0156863, 0.14902)
+    return ctf
+
+
+def cell_range(data, name):
+    a = data.GetCellData().GetArray(name)
+    if a is None or a.GetNumberOfTuples() == 0:
+        return 0.0
+    lo, hi = a.GetRange()
+    return max(abs(lo), abs(hi))
+
+
+def normalized(v):
+    n = math.sqrt(sum(x * x for x in v))
+    return [x / n for x in v] if n > 0 else [0.0, 0.0, 1.0]
+
+
+def view_direction(wing, chain):
+    """Unit vector from the wing toward the camera: the mean panel normal (pointing up),
+    plus 0.4 of the vertical; for a chain alone, horizontal across its span, 30° up."""
+    if wing is not None and wing.GetNumberOfCells() > 0:
+        normals = vtk.vtkPolyDataNormals()
+        normals.SetInputData(wing)
+        normals.ComputeCellNormalsOn()
+        normals.ComputePointNormalsOff()
+        normals.SplittingOff()
+        normals.ConsistencyOff()
+        normals.Update()
+        cell = normals.GetOutput().GetCellData().GetNormals()
+        n = [0.0, 0.0, 0.0]
+        for i in range(cell.GetNumberOfTuples()):
+            t = cell.GetTuple3(i)
+            n = [a + b for a, b in zip(n, t)]
+        n = normalized(n)
+        if n[2] < 0:
+            n = [-x for x in n]
+        return normalized([n[0], n[1], n[2] + 0.4])
+    p0, p1 = chain.GetPoint(0), chain.GetPoint(chain.GetNumberOfPoints() - 1)
+    span = normalized([b - a for a, b in zip(p0, p1)])
+    across = normalized([-span[1], span[0], 0.0])
+    return normalized([across[0], across[1], 0.58])
+
+
+def frame_at(series, frequency, phase):
+    """The entry of the series closest to t/T = phase within the last complete wingbeat."""
+    last = series[-1][0] * frequency
+    start = math.floor(last - phase + 1e-9) + phase if last >= phase else phase
+    target = start if start <= last + 1e-9 else start - 1.0
+    target = max(target, 0.0)
+    return min(series, key=lambda e: abs(e[0] * frequency - target))
+
+
+def render(run, time_index, phase, args, output):
+    wing_series, wake_series, chain_series, frequency = run
+    t, chain_file = chain_series[time_index]
+    renderer = vtk.vtkRenderer()
+    renderer.SetBackground(1.0, 1.0, 1.0)
+    renderer.TwoSidedLightingOn()
+    lift = float("nan")
+    wing = None
+    if wing_series:
+        wing = read_vtp(wing_series[time_index][1])
+        lift = field(wing, "lift_N")
+        mapper = vtk.vtkPolyDataMapper()
+        mapper.SetInputData(wing)
+        if args.wing_color:
+            mapper.ScalarVisibilityOff()
+        else:
+            mapper.SetScalarModeToUseCellFieldData()
+            mapper.SelectColorArray("pressure_jump_Pa")
+            mapper.SetLookupTable(diverging(max(cell_range(wing, "pressure_jump_Pa"), 1e-12)))
+            mapper.SetColorModeToMapScalars()
+        actor = vtk.vtkActor()
+        actor.SetMapper(mapper)
+        if args.wing_color:
+            actor.GetProperty().SetColor(*args.wing_color)
+        actor.GetProperty().SetAmbient(0.25)
+        actor.GetProperty().SetDiffuse(0.75)
+        actor.GetProperty().SetSpecular(0.0)
+        actor.GetProperty().EdgeVisibilityOn()
+        actor.GetProperty().SetEdgeColor(0.2, 0.2, 0.2)
+        renderer.AddActor(actor)
+        if wake_series and not args.no_wake:
+            wake = read_vtp(wake_series[time_index][1])
+            if wake.GetNumberOfCells() > 0:
+                wm = vtk.vtkPolyDataMapper()
+                wm.SetInputData(wake)
+                wm.SetScalarModeToUseCellFieldData()
+                wm.SelectColorArray("circulation_m2_s")
+                wm.SetLookupTable(diverging(max(cell_range(wake, "circulation_m2_s"), 1e-12)))
+                wa = vtk.vtkActor()
+                wa.SetMapper(wm)
+                wa.GetProperty().SetOpacity(0.35)
+                renderer.AddActor(wa)
+    chain = read_vtp(chain_file)
+    if math.isnan(lift):
+        lift = field(chain, "lift_N")
+    tubes = vtk.vtkTubeFilter()
+    tubes.SetInputData(chain)
+    bounds = (wing if wing is not None else chain).GetBounds()
+    size = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-6)
+    tubes.SetRadius(0.008 * size)
+    tubes.SetNumberOfSides(12)
+    cm = vtk.vtkPolyDataMapper()
+    cm.SetInputConnection(tubes.GetOutputPort())
+    cm.ScalarVisibilityOff()
+    ca = vtk.vtkActor()
+    ca.SetMapper(cm)
+    ca.GetProperty().SetColor(0.05, 0.05, 0.05)
+    renderer.AddActor(ca)
+
+    # The camera frames the wing (or the chain), looking at the wing's face (its mean
+    # panel normal, turned upward), tilted up a little so the stroke plane shows.
+    cx, cy, cz = [(bounds[2 * i] + bounds[2 * i + 1]) / 2 for i in range(3)]
+    direction = view_direction(wing, chain)
+    camera = renderer.GetActiveCamera()
+    camera.SetFocalPoint(cx, cy, cz)
+    camera.SetPosition(*[c + 3.0 * size * d for c, d in zip((cx, cy, cz), direction)])
+    camera.SetViewUp(0, 0, 1) if abs(direction[2]) < 0.95 else camera.SetViewUp(0, 1, 0)
+    renderer.ResetCamera(bounds)
+    renderer.ResetCameraClippingRange()
+
+    text = vtk.vtkTextActor()
+    text.SetInput(f"t/T = {t * frequency:.3f} (phase {phase:.2f})   t = {t * 1e3:.2f} ms   lift = {lift * 1e3:.4g} mN")
+    text.GetTextProperty().SetColor(0, 0, 0)
+    text.GetTextProperty().SetFontSize(max(12, args.size[1] // 40))
+    text.SetDisplayPosition(10, 10)
+    renderer.AddViewProp(text)
+
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    window.SetSize(*args.size)
+    window.Render()
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    tmp = output + f".tmp.{os.getpid()}"
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(tmp)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+    os.replace(tmp, output)  # atomic: a reader never sees half a picture
+    print(f"wrote {output}")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("run", help="the output folder of 'flapsim run'")
+    p.add_argument("--phases", type=float, nargs="+", default=[0.0, 0.25, 0.5, 0.75],
+                   help="phases t/T of the last wingbeat, in [0, 1) (default 0 0.25 0.5 0.75)")
+    p.add_argument("-o", "--output", help="PNG file (one phase) or folder (default: RUN/snapshots)")
+    p.add_argument("--size", type=int, nargs=2, default=[1200, 800], metavar=("W", "H"))
+    p.add_argument("--wing-color", type=float, nargs=3, metavar=("R", "G", "B"),
+                   help="one colour for the wing instead of the pressure jump")
+    p.add_argument("--no-wake", action="store_true", help="leave the wake out")
+    args = p.parse_args()
+
+    chain_pvd = os.path.join(args.run, "chain.pvd")
+    if not os.path.isfile(chain_pvd):
+        fail(f"{args.run}: no chain.pvd (a run with [output] vtk_every = 0 writes no pictures)")
+    for ph in args.phases:
+        if not 0.0 <= ph < 1.0:
+            fail(f"--phases: {ph} is outside [0, 1)")
+    summary = os.path.join(args.run, "summary.json")
+    frequency = json.load(open(summary))["frequency_hz"] if os.path.isfile(summary) else None
+    chain_series = read_pvd(chain_pvd)
+    if not chain_series:
+        fail(f"{chain_pvd}: no frames")
+    wing_pvd, wake_pvd = os.path.join(args.run, "wing.pvd"), os.path.join(args.run, "wake.pvd")
+    wing_series = read_pvd(wing_pvd) if os.path.isfile(wing_pvd) else []
+    wake_series = read_pvd(wake_pvd) if os.path.isfile(wake_pvd) else []
+    if frequency is None:  # a run still going: t/T of the frames themselves
+        first = read_vtp(chain_series[-1][1])
+        t_over_T, t = field(first, "t_over_T"), chain_series[-1][0]
+        frequency = t_over_T / t if t > 0 else 1.0
+    run = (wing_series, wake_series, chain_series, frequency)
+
+    single = len(args.phases) == 1 and args.output and args.output.endswith(".png")
+    folder = os.path.dirname(args.output) if single else (args.output or os.path.join(args.run, "snapshots"))
+    if folder:
+        os.makedirs(folder, exist_ok=True)
+    for phase in args.phases:
+        entry = frame_at(chain_series, frequency, phase)
+        index = chain_series.index(entry)
+        output = args.output if single else os.path.join(folder, f"phase_{phase:.2f}.png")
+        render(run, index, phase, args, output)
+
+
+if __name__ == "__main__":
+    main()
