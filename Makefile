@@ -1,15 +1,19 @@
 # flapsim — the commands users drive. Every target installs missing Debian
 # packages first (tools/install_deps.sh), then configures and builds as needed.
-#   make run             the full pipeline on the default hawkmoth wing:
-#                        wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz
+#   make run [CASE=cases/x.toml]   a case (default: the full pipeline on the hawkmoth
+#                        wing: wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz)
+#                        into out/<case>/, with a preview PNG and a ParaView state
+#   make model WING=wings/x.toml [BODIES=N]   regenerate out/<wing>/ (mesh, FEM, beam,
+#                        chain), re-running only the stages whose inputs changed
+#   make hawkmoth-model  the same for the default wing (out/hawkmoth/)
 #   make test            build and run every test (ctest)
 #   make test-asan       every test again, built with ASan + UBSan
-#   make hawkmoth-model  regenerate out/hawkmoth/ (mesh, FEM, beam, chain)
-#   make phase-study     the rotation-phase sweeps (rigid and flexible wing)
-#   make plots           PNG figures of the phase study in out/plots
-#   make sweep-plots SWEEP=DIR/sweep.csv   mean lift against each varied key
+#   make phase-study [CASE=...]   the rotation-phase sweeps (rigid and flexible wing)
+#   make plots           PDF and PNG figures of the phase study in out/plots
+#   make figures         docs/figures from a fresh phase study
 #   make validate        reference-vs-computed table of the validation cases
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
+#   make fuzz            the loader fuzzer with many more mutants (FUZZ_MUTANTS per loader)
 # See README.md for the rest.
 
 BUILD      ?= build
@@ -19,12 +23,12 @@ CMAKE_ARGS ?=
 OUT        ?= out
 MAKEFLAGS  += --no-print-directory
 
-.PHONY: all deps build run test test-asan bench hawkmoth-model clean help
+.PHONY: all deps build test test-asan fuzz bench clean help
 
 all: build
 
 help:
-	@sed -n '1,15p' Makefile
+	@sed -n '1,17p' Makefile
 
 deps:
 	@tools/install_deps.sh
@@ -34,10 +38,6 @@ $(BUILD)/CMakeCache.txt: | deps
 
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j$(JOBS)
-
-run: build
-	@$(BUILD)/flapsim check wings/hawkmoth.toml
-	@$(MAKE) --no-print-directory run-pipeline
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
@@ -49,11 +49,18 @@ test-asan: deps $(ASAN_BUILD)/CMakeCache.txt
 	cmake --build $(ASAN_BUILD) -j$(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
 
+# The loader fuzzer of `make test` (tests/io/test_fuzz_loaders.cpp) with more mutants:
+# FUZZ_MUTANTS per loader (wing, case, chain, outline CSV), same fixed seed.
+FUZZ_MUTANTS ?= 25000
+fuzz: build
+	FLAPSIM_FUZZ_MUTANTS=$(FUZZ_MUTANTS) $(BUILD)/tests/io/test_io --gtest_filter='FuzzLoaders.*'
+
 bench: build
 	@for b in $(BUILD)/bench/*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD)
 
-include tools/hawkmoth_model.mk
+include tools/case.mk
+include tools/model.mk
 include tools/pipeline.mk

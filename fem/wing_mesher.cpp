@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <new>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -192,23 +193,50 @@ Mesh mesh_locked(const wings::Wing& wing, const MeshOptions& options) {
 
 }  // namespace
 
+namespace {
+
+/// gmsh::clear() may itself throw (gmsh throws its messages as std::string); inside an
+/// error handler that would end the process (std::terminate), so it is made silent.
+void clear_quietly() noexcept {
+  try {
+    gmsh::clear();
+  } catch (...) {
+  }
+}
+
+/// gmsh failed on the wing's geometry or mesh sizes: bad input (exit 2) naming the keys
+/// that decide them.
+[[noreturn]] void throw_meshing_failed(const wings::Wing& wing, const std::string& detail) {
+  throw InputError(wing.source_file, 0, "planform",
+                   "gmsh cannot mesh this wing (" + detail +
+                       "); check the outline (planform.outline or planform.outline_file: no slivers or "
+                       "near-touching edges), the veins and mesh.element_size");
+}
+
+}  // namespace
+
 Mesh mesh_wing(const wings::Wing& wing, const MeshOptions& options) {
   std::lock_guard<std::mutex> lock(gmsh_mutex());
   ensure_gmsh_initialized();
   try {
     return mesh_locked(wing, options);
   } catch (const InputError&) {
-    gmsh::clear();
+    clear_quietly();
+    throw;
+  } catch (const std::bad_alloc&) {
+    clear_quietly();
     throw;
   } catch (const std::exception& e) {
-    gmsh::clear();
-    throw InputError(wing.source_file, 0, "", std::string("meshing failed (gmsh): ") + e.what());
+    clear_quietly();
+    throw_meshing_failed(wing, e.what());
+  } catch (const std::string& message) {  // gmsh's own errors
+    clear_quietly();
+    throw_meshing_failed(wing, message);
   } catch (...) {
-    // gmsh reports errors by throwing non-standard types; its log has the message.
     std::string last;
     try { gmsh::logger::getLastError(last); } catch (...) {}
-    gmsh::clear();
-    throw InputError(wing.source_file, 0, "", "meshing failed (gmsh): " + (last.empty() ? std::string("unknown error") : last));
+    clear_quietly();
+    throw_meshing_failed(wing, last.empty() ? std::string("unknown error") : last);
   }
 }
 

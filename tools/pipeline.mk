@@ -1,12 +1,18 @@
-# tools/pipeline.mk — the whole pipeline and the rotation-phase study (docs/fsi.md,
+# tools/pipeline.mk — runs, the rotation-phase study and the figures (docs/fsi.md,
 # docs/hawkmoth_walkthrough.md). Included from the top-level Makefile, which defines
-# BUILD, OUT and `build`; uses the hawkmoth model of tools/hawkmoth_model.mk.
+# BUILD, OUT and `build`; uses the case of tools/case.mk and the model of tools/model.mk.
 #
-#   make run-pipeline   wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz
+#   make run [CASE=cases/x.toml]   run a case (default cases/hover_flexible.toml: the
+#                       hawkmoth wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz)
+#                       into out/<case name>/, with the model of its wing when it needs
+#                       one; leaves out/<case name>/preview.png and run.pvsm
 #   make phase-study    rigid (dpsi = -0.20..+0.10) and flexible (-0.10..+0.10) sweeps,
 #                       5 cycles each, all 12 cases over the cores
-#   make plots          PNG figures of the study (the paper's Figs. 12-15) in $(OUT)/plots,
-#                       and mean lift against the phase of each table (tools/plot_sweep.py)
+#   make phase-study CASE=cases/x.toml [PHASES=-0.2:0.05:0.1]
+#                       the rotation-phase sweep of any case, into out/phase_study/<case name>/
+#   make plots          figures of the study (the paper's Figs. 12-15), PDF and PNG, in
+#                       $(OUT)/plots, and mean lift against the phase of each table (tools/plot_sweep.py)
+#   make figures        docs/figures from a fresh phase study
 #   make sweep-plots SWEEP=DIR/sweep.csv   mean lift (and power) against each varied key
 #                       of any sweep, in DIR/plots (or SWEEP_PLOTS=...)
 #   make validate       reference-vs-computed table of the validation cases
@@ -16,7 +22,7 @@
 
 PIPELINE_BIN      := $(BUILD)/flapsim
 PIPELINE_PYTHON   ?= /usr/bin/python3
-PIPELINE_CHAIN    ?= $(OUT)/hawkmoth/chain.toml
+PIPELINE_CHAIN    ?= $(MODEL_OUT)/chain.toml
 # Factor on every joint spring of the reduced chain (flapsim run --spring-scale); 1 = the
 # springs as reduced from the calibrated wings/hawkmoth.toml. Override for sensitivity
 # studies, e.g. 'make phase-study PIPELINE_SPRINGS=4'.
@@ -24,31 +30,39 @@ PIPELINE_SPRINGS  ?= 1
 PHASE_OUT         ?= $(OUT)/phase_study
 PHASE_JOBS        ?= $(shell nproc)
 PLOTS_OUT         ?= $(OUT)/plots
+PHASES            ?= -0.20:0.05:0.10
+RUN_OUT           ?= $(OUT)/$(CASE_NAME)
+# A flexible case without its own chain runs with its wing's chain (tools/case.mk).
+RUN_CHAIN         := $(if $(CASE_NEEDS_MODEL),$(PIPELINE_CHAIN))
 
-.PHONY: run-pipeline phase-study plots sweep-plots validate
+.PHONY: run run-pipeline phase-study plots figures sweep-plots validate
 
-# The reduction stage of tools/hawkmoth_model.mk keeps the body count in a file it
-# refreshes only when `hawkmoth-model` is a goal; do the same for these goals, which
-# need the chain too (same file and default as there).
-ifneq ($(filter run run-pipeline phase-study plots validate,$(MAKECMDGOALS)),)
-$(shell mkdir -p $(OUT)/hawkmoth && \
-  if [ "$$(cat $(OUT)/hawkmoth/.bodies 2>/dev/null)" != "$(or $(HAWKMOTH_BODIES),10)" ]; then \
-    echo "$(or $(HAWKMOTH_BODIES),10)" > $(OUT)/hawkmoth/.bodies; fi)
-endif
 
-run-pipeline: build $(PIPELINE_CHAIN)
+run: build $(RUN_CHAIN)
+	@$(PIPELINE_BIN) check $(CASE) > /dev/null
 	@start=$$(date +%s.%N); \
-	OMP_NUM_THREADS=1 $(PIPELINE_BIN) run cases/hover_flexible.toml --chain $(PIPELINE_CHAIN) \
-	  --spring-scale $(PIPELINE_SPRINGS) -o $(OUT)/hover_flexible || exit $$?; \
+	OMP_NUM_THREADS=1 $(PIPELINE_BIN) run $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) \
+	  --spring-scale $(PIPELINE_SPRINGS) -o $(RUN_OUT) || exit $$?; \
 	end=$$(date +%s.%N); \
 	echo "FSI run: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"; \
-	xvfb-run -a $(PIPELINE_PYTHON) tools/render_run.py $(OUT)/hover_flexible --phases 0.25 \
-	  -o $(OUT)/hover_flexible/preview.png > /dev/null || exit $$?; \
-	echo "preview: $(OUT)/hover_flexible/preview.png (the wing at mid-downstroke of the last wingbeat)"; \
-	echo "ParaView: cd $(OUT)/hover_flexible && paraview --state=run.pvsm"; \
-	echo "          (the FEM and the chain: $(OUT)/hawkmoth/fem.vtu, reduction.vtm)"
+	xvfb-run -a $(PIPELINE_PYTHON) tools/render_run.py $(RUN_OUT) --phases 0.25 \
+	  -o $(RUN_OUT)/preview.png > /dev/null || exit $$?; \
+	echo "preview: $(RUN_OUT)/preview.png (the wing at mid-downstroke of the last wingbeat)"; \
+	echo "ParaView: cd $(RUN_OUT) && paraview --state=run.pvsm"; \
+	$(if $(RUN_CHAIN),echo "          (the FEM and the chain: $(MODEL_OUT)/fem.vtu, reduction.vtm)")
 
+run-pipeline: run
+
+ifeq ($(origin CASE),command line)
+# The rotation-phase sweep of the given case.
+phase-study: build $(RUN_CHAIN)
+	@mkdir -p $(PHASE_OUT)
+	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) \
+	  --spring-scale $(PIPELINE_SPRINGS) --vary kinematics.rotation_phase=$(PHASES) \
+	  -o $(PHASE_OUT)/$(CASE_NAME) -j $(PHASE_JOBS)
+else
 phase-study: build $(PIPELINE_CHAIN)
+	@mkdir -p $(PHASE_OUT)
 	@start=$$(date +%s.%N); \
 	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep cases/rotation_phase_rigid_coupled.toml \
 	  --vary kinematics.rotation_phase=-0.20:0.05:0.10 -o $(PHASE_OUT)/rigid -j $(PHASE_JOBS) \
@@ -62,6 +76,7 @@ phase-study: build $(PIPELINE_CHAIN)
 	end=$$(date +%s.%N); \
 	echo "phase study: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall; tables $(PHASE_OUT)/rigid/sweep.csv, $(PHASE_OUT)/flexible/sweep.csv"; \
 	test $$r -eq 0 -a $$f -eq 0
+endif
 
 plots:
 	@test -f $(PHASE_OUT)/rigid/sweep.csv -a -f $(PHASE_OUT)/flexible/sweep.csv || \
@@ -69,6 +84,14 @@ plots:
 	$(PIPELINE_PYTHON) tools/plot_phase_study.py $(PHASE_OUT) $(PLOTS_OUT)
 	$(PIPELINE_PYTHON) tools/plot_sweep.py $(PHASE_OUT)/rigid/sweep.csv $(PLOTS_OUT)/rigid
 	$(PIPELINE_PYTHON) tools/plot_sweep.py $(PHASE_OUT)/flexible/sweep.csv $(PLOTS_OUT)/flexible
+
+# docs/figures from a fresh phase study (its own folder, emptied first), PDF and PNG.
+FIGURES_OUT   ?= docs/figures
+FIGURES_STUDY ?= $(OUT)/figures/phase_study
+figures: build $(PIPELINE_CHAIN)
+	rm -rf $(FIGURES_STUDY)
+	$(MAKE) --no-print-directory phase-study PHASE_OUT=$(FIGURES_STUDY)
+	$(PIPELINE_PYTHON) tools/plot_phase_study.py $(FIGURES_STUDY) $(FIGURES_OUT) --prefix phase_
 
 # Any sweep's table (docs/sweeps.md, "Plotting a sweep").
 sweep-plots:

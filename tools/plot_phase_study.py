@@ -1,24 +1,31 @@
 #!/usr/bin/python3
 """Figures of the rotation-phase study (the rotation-phase paper's Figs. 12-15) from the
-outputs of `make phase-study`:
+outputs of `make phase-study`, each as PDF (vector, for papers) and PNG (200 dpi):
 
-  fig12a_mean_lift_vs_phase.png   mean lift against the rotation phase, rigid and flexible
-  fig12b_rigid_lift_cycle.png     lift over the last cycle, rigid wing, three phases
-  fig13b_flexible_lift_cycle.png  lift over the last cycle, flexible wing, three phases
-  fig14_euler_angles.png          base, tip and outer-body Euler angles of the flexible wing (dpsi = -0.05, +0.05)
-  fig15_tip_base_phase.png        tip rotation phase and tip-minus-base rotation lag
+  fig12a_mean_lift_vs_phase       mean lift against the rotation phase, rigid and flexible
+  fig12b_rigid_lift_cycle         lift over the last cycle, rigid wing, three phases
+  fig13b_flexible_lift_cycle      lift over the last cycle, flexible wing, three phases
+  fig14_euler_angles              base, tip and outer-body Euler angles of the flexible wing (dpsi = -0.05, +0.05)
+  fig15_tip_base_phase            tip rotation phase and tip-minus-base rotation lag
 
-Usage: plot_phase_study.py PHASE_STUDY_DIR OUTPUT_DIR   (Debian's python3-matplotlib)
+Time axes are t/T of the last computed wingbeat: t = 0 is the start of the run, where the
+kinematics are at phase 0 (eq. 8: phi = 10 deg + 50 deg cos 2 pi (f t + dpsi)), so the
+base downstroke (phi decreasing) is 0 < t/T + dpsi < 0.5; it is shaded grey.
+
+Usage: plot_phase_study.py PHASE_STUDY_DIR OUTPUT_DIR [--prefix P]   (Debian's python3-matplotlib)
 """
+import argparse
 import csv
 import os
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+plt.rcParams.update({"font.size": 10, "axes.titlesize": 10, "legend.fontsize": 8,
+                     "savefig.bbox": "tight", "pdf.fonttype": 42})
 
 
 def read_sweep(path):
@@ -58,100 +65,124 @@ def pick(rows, value):
     return None
 
 
+def shade_strokes(ax, dpsi=0.0):
+    """Grey band over the base downstroke (0 < t/T + dpsi < 0.5 modulo 1) of a last-cycle axis."""
+    start = (-dpsi) % 1.0
+    for lo in (start - 1.0, start):
+        ax.axvspan(max(lo, 0.0), min(lo + 0.5, 1.0), color="0.9", zorder=0, lw=0)
+    ax.set_xlim(0.0, 1.0)
+
+
+def legend_below(ax, ncol=3):
+    """The legend under the axes, where it hides no data."""
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=ncol, frameon=False)
+
+
+def save(fig, out, prefix, name, written):
+    for ext, kw in (("pdf", {}), ("png", {"dpi": 200})):
+        path = os.path.join(out, f"{prefix}{name}.{ext}")
+        fig.savefig(path, **kw)
+        written.append(path)
+    plt.close(fig)
+
+
+T_LABEL = "t/T, last wingbeat (t = 0: run start; grey: downstroke)"
+
+
 def main():
-    if len(sys.argv) != 3:
-        sys.exit(__doc__)
-    study, out = sys.argv[1], sys.argv[2]
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("study")
+    p.add_argument("out")
+    p.add_argument("--prefix", default="", help="prefix of the file names (docs/figures: phase_)")
+    a = p.parse_args()
+    study, out, prefix = a.study, a.out, a.prefix
     os.makedirs(out, exist_ok=True)
     rigid = read_sweep(os.path.join(study, "rigid", "sweep.csv"))
     flexible = read_sweep(os.path.join(study, "flexible", "sweep.csv"))
     written = []
 
     # Fig. 12a / 13a: mean lift against the rotation phase.
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for rows, label, marker in ((rigid, "rigid", "o"), (flexible, "flexible", "s")):
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    for rows, label, marker in ((rigid, "rigid wing", "o"), (flexible, "flexible wing", "s")):
         ok = [r for r in rows if r["status"] == "ok"]
-        ax.plot([100 * r["value"] for r in ok], [1e3 * r["lift"] for r in ok], marker=marker, label=label)
-    ax.axvline(-10, color="C0", ls=":", lw=1, label="paper: rigid max (-10 %)")
-    ax.axvspan(5, 7, color="C1", alpha=0.15, label="paper: flexible max (+5...7 %)")
+        ax.plot([100 * r["value"] for r in ok], [1e3 * r["lift"] for r in ok], marker=marker, label=label, zorder=3)
+    ax.axvline(-10, color="C0", ls=":", lw=1, label="paper: rigid maximum (δψ = −10 %)")
+    ax.axvspan(5, 7, color="C1", alpha=0.15, label="paper: flexible maximum (δψ = +5 … 7 %)")
     ax.set_xlabel("rotation phase δψ [% of the period]")
-    ax.set_ylabel("mean lift, last cycle [mN]")
+    ax.set_ylabel("mean lift over the last wingbeat [mN]")
     ax.set_title("Mean lift against rotation phase (hawkmoth, 26.1 Hz)")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    written.append(os.path.join(out, "fig12a_mean_lift_vs_phase.png"))
-    fig.savefig(written[-1], dpi=120)
-    plt.close(fig)
+    legend_below(ax, ncol=2)
+    save(fig, out, prefix, "fig12a_mean_lift_vs_phase", written)
 
     # Fig. 12b / 13b: lift over the last cycle for three phases.
-    for rows, values, name, title in (
-            (rigid, (-0.15, -0.10, 0.05), "fig12b_rigid_lift_cycle.png", "rigid wing"),
-            (flexible, (-0.10, 0.0, 0.10), "fig13b_flexible_lift_cycle.png", "flexible wing")):
-        fig, ax = plt.subplots(figsize=(6, 4))
+    for rows, sub, values, name, title in (
+            (rigid, "rigid", (-0.15, -0.10, 0.05), "fig12b_rigid_lift_cycle", "rigid wing"),
+            (flexible, "flexible", (-0.10, 0.0, 0.10), "fig13b_flexible_lift_cycle", "flexible wing")):
+        fig, ax = plt.subplots(figsize=(6.5, 4.2))
+        shade_strokes(ax)
         for v in values:
             r = pick(rows, v)
             if r is None:
                 continue
-            h = read_history(os.path.join(case_dir(os.path.join(study, "rigid" if rows is rigid else "flexible"), r),
-                                          "history.csv"))
+            h = read_history(os.path.join(case_dir(os.path.join(study, sub), r), "history.csv"))
             keep, s = last_cycle(h)
-            ax.plot(s, 1e3 * h["lift_N"][keep], label="δψ = %+.0f %%" % (100 * v))
-        ax.set_xlabel("t / T (last cycle)")
+            ax.plot(s, 1e3 * h["lift_N"][keep], label="δψ = %+.0f %%" % (100 * v), zorder=3)
+        ax.set_xlabel(T_LABEL + ", shown for δψ = 0")
         ax.set_ylabel("lift [mN]")
-        ax.set_title("Lift over a cycle, " + title)
+        ax.set_title("Lift over a wingbeat, " + title)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-        fig.tight_layout()
-        written.append(os.path.join(out, name))
-        fig.savefig(written[-1], dpi=120)
-        plt.close(fig)
+        legend_below(ax)
+        save(fig, out, prefix, name, written)
 
     # Fig. 14: base and tip Euler angles of the flexible wing.
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), sharey=True)
     for ax, v in zip(axes, (-0.05, 0.05)):
+        shade_strokes(ax, v)
         r = pick(flexible, v)
         if r is None:
             continue
         h = read_history(os.path.join(study, "flexible", r["folder"], "history.csv"))
         keep, s = last_cycle(h)
-        for col, label, style in (("phi_base_deg", "φ_b", "C0-"), ("phi_tip_deg", "φ_t", "C0--"),
-                                  ("alpha_base_deg", "α_b", "C1-"), ("alpha_tip_deg", "α_t", "C1--"),
-                                  ("phi_outer_deg", "φ outer", "C0:"), ("alpha_outer_deg", "α outer", "C1:"),
-                                  ("theta_tip_deg", "θ_t", "C2--")):
+        # Base and tip drawn bold on top; the outer body thin and beneath, so it hides nothing.
+        for col, label, style, lw, z in (
+                ("phi_base_deg", r"$\varphi_\mathrm{base}$", "C0-", 2.0, 3),
+                ("phi_tip_deg", r"$\varphi_\mathrm{tip}$", "C0--", 2.0, 4),
+                ("alpha_base_deg", r"$\alpha_\mathrm{base}$", "C1-", 2.0, 3),
+                ("alpha_tip_deg", r"$\alpha_\mathrm{tip}$", "C1--", 2.0, 4),
+                ("theta_tip_deg", r"$\theta_\mathrm{tip}$", "C2--", 1.5, 4),
+                ("phi_outer_deg", r"$\varphi_\mathrm{outer\ body}$", "C0:", 1.0, 2),
+                ("alpha_outer_deg", r"$\alpha_\mathrm{outer\ body}$", "C1:", 1.0, 2)):
+            if col not in h.dtype.names:
+                continue
             y = h[col][keep]
             if col.startswith("alpha"):  # a twisting tip may pass ±180°: draw it continuous
                 y = np.degrees(np.unwrap(np.radians(y)))
-            ax.plot(s, y, style, label=label)
+            ax.plot(s, y, style, label=label, lw=lw, zorder=z)
         ax.set_title("flexible wing, δψ = %+.0f %%" % (100 * v))
-        ax.set_xlabel("t / T (last cycle)")
+        ax.set_xlabel(T_LABEL)
         ax.grid(alpha=0.3)
-    axes[0].set_ylabel("angle [deg]")
-    axes[0].legend(fontsize=8, ncol=2)
-    fig.tight_layout()
-    written.append(os.path.join(out, "fig14_euler_angles.png"))
-    fig.savefig(written[-1], dpi=120)
-    plt.close(fig)
+    axes[0].set_ylabel("Euler angle [deg]")
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=7, frameon=False, bbox_to_anchor=(0.5, -0.06))
+    save(fig, out, prefix, "fig14_euler_angles", written)
 
     # Fig. 15: rotation phase at the tip against the base.
-    fig, ax = plt.subplots(figsize=(6, 4))
+    fig, ax = plt.subplots(figsize=(6.5, 4.6))
     ok = [r for r in flexible if r["status"] == "ok"]
     x = [100 * r["value"] for r in ok]
     ax.plot(x, x, "k:", label="base (= δψ)")
-    ax.plot(x, [100 * r["tip_phase"] for r in ok], "s-", label="tip rotation phase (α_t = 90° vs φ_t reversal)")
-    ax.plot(x, [100 * r["tip_lag"] for r in ok], "o--", label="tip − base α = 90° crossing")
-    ax.plot(x, [100 * r["outer_phase"] for r in ok], "^-", label="outer body (5/6 span) rotation phase")
-    ax.plot(x, [100 * r["outer_lag"] for r in ok], "v--", label="outer − base α = 90° crossing")
+    ax.plot(x, [100 * r["tip_phase"] for r in ok], "s-", label="tip rotation phase (α = 90° vs φ reversal)", zorder=3)
+    ax.plot(x, [100 * r["tip_lag"] for r in ok], "o--", label="tip − base lag of the α = 90° crossing", zorder=3)
+    ax.plot(x, [100 * r["outer_phase"] for r in ok], "^-", lw=1, ms=4, label="outer body (5/6 span) rotation phase")
+    ax.plot(x, [100 * r["outer_lag"] for r in ok], "v--", lw=1, ms=4, label="outer − base lag of the α = 90° crossing")
     ax.plot([-10, 10], [-15, -3], "x", color="C3", ms=9, label="paper: tip phase at δψ = ∓10 %")
-    ax.set_xlabel("base rotation phase δψ [%]")
-    ax.set_ylabel("[% of the period]")
+    ax.set_xlabel("base rotation phase δψ [% of the period]")
+    ax.set_ylabel("rotation phase or lag [% of the period]")
     ax.set_title("Rotation phase at the tip, flexible wing")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    written.append(os.path.join(out, "fig15_tip_base_phase.png"))
-    fig.savefig(written[-1], dpi=120)
-    plt.close(fig)
+    legend_below(ax, ncol=2)
+    save(fig, out, prefix, "fig15_tip_base_phase", written)
 
     for w in written:
         print("wrote", w)

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 #include "wings/input_error.hpp"
@@ -25,20 +26,34 @@ bool parse_number(const std::string& field, double& out) {
   char* end = nullptr;
   errno = 0;
   out = std::strtod(f.c_str(), &end);
-  return errno == 0 && end == f.c_str() + f.size() && std::isfinite(out);
+  // Finite and not denormal (as every number of an input file, toml_reader.hpp).
+  return errno == 0 && end == f.c_str() + f.size() && std::isfinite(out) &&
+         (out == 0.0 || std::fpclassify(out) == FP_NORMAL);
 }
 
 }  // namespace
 
-Polygon read_outline_csv(const std::string& path, const std::string& key) {
-  std::ifstream in(path);
+OutlineCsv read_outline_csv_lines(const std::string& path, const std::string& key) {
+  // Bounded: a regular file of limited size (not /dev/zero, a FIFO or a folder).
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw InputError(path, 0, key, "the outline file does not exist");
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError(path, 0, key, "the outline file is not a regular file (a device, FIFO or folder)");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxOutlineFileBytes)
+    throw InputError(path, 0, key,
+                     "the outline file is larger than " + std::to_string(kMaxOutlineFileBytes) + " bytes");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, key, "cannot open the outline file");
-  Polygon poly;
+  OutlineCsv out;
   std::string line;
   int line_no = 0;
   bool header_seen = false;
   while (std::getline(in, line)) {
     ++line_no;
+    if (line.find('\0') != std::string::npos)
+      throw InputError(path, line_no, key, "the outline file holds a NUL byte: not a text file");
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
     if (!header_seen) {
@@ -53,13 +68,24 @@ Polygon read_outline_csv(const std::string& path, const std::string& key) {
     double x = 0.0, y = 0.0;
     if (comma == std::string::npos || t.find(',', comma + 1) != std::string::npos ||
         !parse_number(t.substr(0, comma), x) || !parse_number(t.substr(comma + 1), y))
-      throw InputError(path, line_no, key, "expected a line \"x,y\" with two numbers, found \"" + t + "\"");
-    poly.emplace_back(x, y);
+      throw InputError(path, line_no, key,
+                       "expected a line \"x,y\" with two finite numbers (no denormals), found \"" +
+                           t.substr(0, 80) + (t.size() > 80 ? "..." : "") + "\"");
+    if (out.points.size() >= kMaxOutlinePoints)
+      throw InputError(path, line_no, key,
+                       "more than " + std::to_string(kMaxOutlinePoints) + " outline points");
+    out.points.emplace_back(x, y);
+    out.lines.push_back(line_no);
   }
-  if (poly.size() < 3)
+  if (in.bad()) throw InputError(path, line_no, key, "reading the outline file failed");
+  if (out.points.size() < 3)
     throw InputError(path, line_no, key,
-                     "an outline needs at least 3 points, found " + std::to_string(poly.size()));
-  return poly;
+                     "an outline needs at least 3 points, found " + std::to_string(out.points.size()));
+  return out;
+}
+
+Polygon read_outline_csv(const std::string& path, const std::string& key) {
+  return read_outline_csv_lines(path, key).points;
 }
 
 }  // namespace flapsim::wings

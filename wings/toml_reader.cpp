@@ -2,7 +2,10 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -226,8 +229,26 @@ namespace {
 void check_finite_and_bounds(const TomlTable& t, std::string_view key, int line, double v,
                              const Bounds& b) {
   if (!std::isfinite(v)) t.fail_at(line, key, "must be a finite number");
+  if (std::fpclassify(v) == FP_SUBNORMAL)
+    t.fail_at(line, key,
+              "value " + format_number(v) + " is a denormal number (magnitude below " +
+                  format_number(kSmallestNormal) + "): too small to compute with");
   if (!b.contains(v))
     t.fail_at(line, key, "value " + format_number(v) + " out of range: must be " + b.describe());
+}
+
+/// The value of a number node as a double. An integer is accepted only if the double
+/// holds it exactly (|n| <= 2^53): -9223372036854775808 is not silently read as -9.2e18.
+double exact_number(const TomlTable& t, std::string_view key, int line, const toml::node& n) {
+  if (n.is_integer()) {
+    const int64_t i = *n.value<int64_t>();
+    if (i > kMaxExactInteger || i < -kMaxExactInteger)
+      t.fail_at(line, key,
+                "integer " + std::to_string(i) + " cannot be represented exactly as a number (|value| <= 2^53 = " +
+                    std::to_string(kMaxExactInteger) + "); write it as a floating-point number if meant");
+    return static_cast<double>(i);
+  }
+  return *n.value<double>();
 }
 }  // namespace
 
@@ -235,7 +256,7 @@ std::optional<double> TomlTable::find_double(std::string_view key, const Bounds&
   const auto* n = as_node(node(key));
   if (!n) return std::nullopt;
   if (!n->is_number()) fail_type(key, "a number");
-  const double v = *n->value<double>();
+  const double v = exact_number(*this, key, line_of(key), *n);
   check_finite_and_bounds(*this, key, line_of(key), v, bounds);
   return v;
 }
@@ -256,10 +277,21 @@ int TomlTable::get_int(std::string_view key, const Bounds& bounds) const {
   if (!n->is_integer()) fail_type(key, "an integer");
   const auto v = *n->value<int64_t>();
   if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
-    fail(key, "integer out of range");
+    fail(key, "integer " + std::to_string(v) + " out of range: must be " + bounds.describe());
   if (!bounds.contains(static_cast<double>(v)))
     fail(key, "value " + std::to_string(v) + " out of range: must be " + bounds.describe());
   return static_cast<int>(v);
+}
+
+int64_t TomlTable::get_int64(std::string_view key, int64_t min, int64_t max) const {
+  const auto* n = as_node(node(key));
+  if (!n) fail(key, "missing required key (an integer)");
+  if (!n->is_integer()) fail_type(key, "an integer");
+  const int64_t v = *n->value<int64_t>();
+  if (v < min || v > max)
+    fail(key, "value " + std::to_string(v) + " out of range: must be in [" + std::to_string(min) + ", " +
+                  std::to_string(max) + "]");
+  return v;
 }
 
 int TomlTable::get_int(std::string_view key, int fallback, const Bounds& bounds) const {
@@ -331,7 +363,7 @@ std::vector<double> TomlTable::find_doubles(std::string_view key, const Bounds& 
     const std::string ek = std::string(key) + "[" + std::to_string(i) + "]";
     if (!e.is_number())
       fail_at(line, ek, std::string("expected a number, found ") + type_name(e));
-    const double v = *e.value<double>();
+    const double v = exact_number(*this, ek, line, e);
     check_finite_and_bounds(*this, ek, line, v, bounds);
     out.push_back(v);
   }
@@ -368,8 +400,8 @@ std::vector<std::vector<double>> TomlTable::get_number_rows(std::string_view key
     for (const auto& x : *e.as_array()) {
       if (!x.is_number())
         fail_at(line_of_node(x, line), ek, std::string("expected a number, found ") + type_name(x));
-      const double v = *x.value<double>();
-      if (!std::isfinite(v)) fail_at(line, ek, "must be finite numbers");
+      const double v = exact_number(*this, ek, line, x);
+      check_finite_and_bounds(*this, ek, line, v, Bounds::any());
       row.push_back(v);
     }
     rows.push_back(std::move(row));
@@ -396,7 +428,10 @@ const std::string& TomlTable::length_unit() const { return doc_->length_unit; }
 std::optional<double> TomlTable::find_length(std::string_view key, const Bounds& bounds) const {
   auto v = find_double(key, bounds);
   if (!v) return std::nullopt;
-  return *v * doc_->length_scale;
+  const double metres = *v * doc_->length_scale;
+  if (*v != 0.0 && std::fpclassify(metres) != FP_NORMAL)
+    fail(key, "value " + format_number(*v) + " " + doc_->length_unit + " is too small to compute with in metres");
+  return metres;
 }
 
 double TomlTable::get_length(std::string_view key, const Bounds& bounds) const {
@@ -411,7 +446,13 @@ double TomlTable::get_length(std::string_view key, double fallback_m, const Boun
 std::vector<double> TomlTable::get_lengths(std::string_view key, const Bounds& bounds,
                                            std::size_t min_size) const {
   auto v = get_doubles(key, bounds, min_size);
-  for (double& x : v) x *= doc_->length_scale;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const double metres = v[i] * doc_->length_scale;
+    if (v[i] != 0.0 && std::fpclassify(metres) != FP_NORMAL)
+      fail_at(line_of_element(key, i), std::string(key) + "[" + std::to_string(i) + "]",
+              "value " + format_number(v[i]) + " " + doc_->length_unit + " is too small to compute with in metres");
+    v[i] = metres;
+  }
   return v;
 }
 

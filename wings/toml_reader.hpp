@@ -27,6 +27,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -46,6 +47,13 @@ std::string_view choice_name(const std::array<std::pair<std::string_view, E>, N>
     if (v == value) return name;
   return "?";
 }
+
+/// The largest integer every number key accepts: a double holds every integer up to
+/// 2^53 exactly; larger integers in a number key are rejected, not rounded.
+inline constexpr std::int64_t kMaxExactInteger = std::int64_t{1} << 53;
+/// The smallest positive normal double (about 2.2e-308); non-zero values of smaller
+/// magnitude (denormals) are rejected by every number key.
+inline constexpr double kSmallestNormal = 2.2250738585072014e-308;
 
 /// Allowed interval of a number; open or closed at each end.
 struct Bounds {
@@ -101,7 +109,8 @@ class TomlTable {
   void expect_only(const std::vector<std::string>& known) const;
 
   // --- scalars ----------------------------------------------------------------------
-  /// Number (integers are accepted as numbers). Missing or out of bounds: error.
+  /// Number (integers are accepted as numbers if |n| <= 2^53, exactly representable).
+  /// Missing, infinite, NaN, denormal or out of bounds: error.
   double get_double(std::string_view key, const Bounds& bounds = {}) const;
   double get_double(std::string_view key, double fallback, const Bounds& bounds) const;
   std::optional<double> find_double(std::string_view key, const Bounds& bounds = {}) const;
@@ -109,6 +118,8 @@ class TomlTable {
   /// Integer (a float such as 3.0 is rejected, as TOML keeps the two apart).
   int get_int(std::string_view key, const Bounds& bounds = {}) const;
   int get_int(std::string_view key, int fallback, const Bounds& bounds) const;
+  /// A 64-bit integer in [min, max] (counts that may exceed an int).
+  std::int64_t get_int64(std::string_view key, std::int64_t min, std::int64_t max) const;
 
   std::string get_string(std::string_view key) const;
   std::string get_string(std::string_view key, std::string_view fallback) const;

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "wings/input_error.hpp"
+#include "wings/mesh_budget.hpp"
 #include "wings/outline_csv.hpp"
 #include "wings/outline_shapes.hpp"
 #include "wings/planform_geometry.hpp"
@@ -167,10 +168,12 @@ Planform read_planform(const TomlTable& p) {
     p.fail("outline_points", "only applies to 'spline' and 'shape'");
 
   Planform out;
+  OutlineCsv csv;  // with the CSV line of each point, for messages
   if (from_file) {
     // The CSV is in units of the wing length; 'span' scales it.
     if (!p.has("span")) p.fail("span", "missing required key: a CSV outline is scaled to 'span'");
-    out.outline = read_outline_csv(p.get_path("outline_file"), p.key_path("outline_file"));
+    csv = read_outline_csv_lines(p.get_path("outline_file"), p.key_path("outline_file"));
+    out.outline = csv.points;
   } else if (outline_key == "shape") {
     out.outline = read_shape_outline(p, samples);
   } else {
@@ -207,16 +210,26 @@ Planform read_planform(const TomlTable& p) {
 
   // 2. The polygon must be simple (checked before stretching, which keeps simplicity).
   if (const auto hit = find_self_intersection(out.outline)) {
+    const std::string what = "the outline is not a simple polygon: edge " + std::to_string(hit->first) +
+                             " (points " + std::to_string(hit->first) + "-" +
+                             std::to_string((hit->first + 1) % out.outline.size()) + ") touches or crosses edge " +
+                             std::to_string(hit->second);
+    if (from_file)  // the CSV's file and line of the edge's first point
+      throw InputError(p.get_path("outline_file"), csv.lines[static_cast<std::size_t>(hit->first)],
+                       p.key_path("outline_file"), what);
     const int line = outline_key == "outline" ? p.line_of_element(outline_key, static_cast<std::size_t>(hit->first))
                                               : p.line_of(outline_key);
-    p.fail_at(line, outline_key,
-              "the outline is not a simple polygon: edge " + std::to_string(hit->first) +
-                  " (points " + std::to_string(hit->first) + "-" +
-                  std::to_string((hit->first + 1) % out.outline.size()) + ") touches or crosses edge " +
-                  std::to_string(hit->second));
+    p.fail_at(line, outline_key, what);
   }
   const double signed_area = polygon_signed_area(out.outline);
   if (signed_area == 0.0) p.fail(outline_key, "the outline has zero area");
+  {  // A sliver is not a wing, and gmsh cannot mesh it (mesh_budget.hpp).
+    double y_max = -1e300;
+    for (const auto& q : out.outline) y_max = std::max(y_max, q.y());
+    if (y_max > 0.0 && y_max * y_max / std::abs(signed_area) > kMaxAspectRatio)
+      p.fail(outline_key, "the outline is a sliver: aspect ratio R^2/S = " + fmt(y_max * y_max / std::abs(signed_area)) +
+                              " exceeds " + fmt(kMaxAspectRatio));
+  }
   if (signed_area < 0.0) std::reverse(out.outline.begin(), out.outline.end());
   max_y = -1e300;
   double min_y = 1e300;
@@ -410,6 +423,18 @@ Wing read_wing(TomlTable root) {
       mesh->fail("vein_element_size", "must not exceed element_size");
     if (wing.mesh.element_size > 0.5 * wing.span)
       mesh->fail("element_size", "must not exceed half the span");
+  }
+  // The mesh-size budget (mesh_budget.hpp): refused here, before gmsh runs out of memory.
+  if (const double n = estimated_mesh_elements(wing); n > kMaxMeshElements) {
+    const auto mesh = root.find_table("mesh");
+    const std::string key = mesh && mesh->has("vein_element_size") &&
+                                    wing.mesh.vein_element_size < wing.mesh.element_size
+                                ? "vein_element_size"
+                                : "element_size";
+    const std::string what = "the mesh would have about " + fmt(n) + " elements, more than the budget of " +
+                             fmt(kMaxMeshElements) + "; use a larger mesh." + key;
+    if (mesh) mesh->fail(key, what);
+    root.fail("mesh", what);
   }
   return wing;
 }

@@ -2,8 +2,11 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 #include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/app/interruption.hpp"
+#include "pipeline/app/numerical_stage.hpp"
 #include "pipeline/app/run_recorder.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
@@ -31,6 +34,8 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
     } else {
       progress.update(data.step, data.state.time);
     }
+    // SIGINT/SIGTERM: the step is complete and recorded; stop here (interruption.hpp).
+    throw_if_interrupted("after step " + std::to_string(data.step) + " of " + std::to_string(setup.steps));
   }
 }
 
@@ -39,8 +44,10 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
 RunResults run_case(const io::Case& c, const RunOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   // 1. Setup: structure, lattice, attachment, base motion, references.
-  const FsiSetup setup =
-      build_fsi_setup(c, SetupOptions{options.chain_file, options.spring_scale, options.wing_overrides});
+  const FsiSetup setup = numerical_stage("run setup", [&] {
+    return build_fsi_setup(c, SetupOptions{options.chain_file, options.spring_scale, options.wing_overrides});
+  });
+  if (options.before_start) options.before_start(setup);
   // 2. The recorder: the output folder, history.csv, the series.
   RunRecorder recorder(c, setup, options.output_dir, options.vtk_every.value_or(c.output.vtk_every),
                        options.spring_scale, started);
@@ -53,6 +60,9 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
     time_loop(setup, data, recorder, progress);
   } catch (const NumericalFailure& e) {
     recorder.finish(data, "failed", e.what());
+    throw;
+  } catch (const Interrupted& e) {
+    recorder.finish(data, "interrupted", e.what());
     throw;
   }
   const RunResults results = recorder.finish(data, "ok");

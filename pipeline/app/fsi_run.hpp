@@ -7,14 +7,17 @@
 ///     wing.pvd, wake.pvd, chain.pvd every `output.vtk_every` steps, and at the end the
 ///     run's results (run_results.hpp) as summary.json.
 /// A run that fails numerically writes summary.json with status "failed" and the error,
-/// keeps history.csv and the series up to the last good step, and rethrows.
+/// keeps history.csv and the series up to the last good step, and rethrows; a run
+/// interrupted by SIGINT/SIGTERM finishes its step and does the same with "interrupted".
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/progress.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/io/case_model.hpp"
@@ -29,12 +32,17 @@ struct RunOptions {
   /// Values set in the wing file before it is read (SetupOptions::wing_overrides).
   std::vector<std::pair<std::string, std::string>> wing_overrides;
   ProgressLine::Mode progress = ProgressLine::Mode::automatic;
+  /// Called with the setup before the recorder creates any file (the resource estimate
+  /// of flapsim run); may throw to refuse the run.
+  std::function<void(const FsiSetup&)> before_start;
 };
 
 /// \brief Runs a case and writes its outputs into options.output_dir.
 /// \return the run's results (also in summary.json)
 /// \throws flapsim::InputError on bad input (before anything is written),
-///         flapsim::NumericalFailure when the run diverges (outputs so far stay valid)
+///         flapsim::NumericalFailure when the run diverges (outputs so far stay valid),
+///         Interrupted after SIGINT/SIGTERM (interruption.hpp; summary.json says
+///         "interrupted", outputs up to the last step stay valid), io::OutputError
 RunResults run_case(const io::Case& c, const RunOptions& options);
 
 }  // namespace flapsim::app

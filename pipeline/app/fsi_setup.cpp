@@ -49,7 +49,7 @@ double mean_speed_at_radius(const mbd::WingKinematics& kinematics, double radius
 
 namespace {
 
-uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, int steps) {
+uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, std::int64_t steps) {
   uvlm::VortexLatticeModel m;
   m.chordwise = c.numerics.chordwise_panels;
   m.spanwise = c.numerics.spanwise_panels;
@@ -61,7 +61,7 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, int ste
   m.load_method = c.numerics.load_method;
   m.leading_edge = c.numerics.leading_edge;
   m.max_wake_rows = c.numerics.wake_max_rows;
-  m.wake_capacity = c.numerics.wake_max_rows > 0 ? c.numerics.wake_max_rows : steps;
+  m.wake_capacity = c.numerics.wake_max_rows > 0 ? c.numerics.wake_max_rows : static_cast<int>(steps);  // <= 1e8
   m.core_growth.enabled = c.numerics.core_growth;
   m.core_growth.squire_a1 = c.numerics.core_growth_a1;
   m.core_growth.kinematic_viscosity = c.numerics.kinematic_viscosity;
@@ -110,7 +110,10 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   FsiSetup s;
   s.period = 1.0 / c.kinematics.frequency;
   s.steps_per_cycle = c.numerics.steps_per_cycle;
-  s.steps = c.numerics.steps_per_cycle * c.numerics.cycles;
+  s.steps = c.numerics.total_steps();
+  if (s.steps > io::kMaxTotalSteps)
+    throw InputError(c.file, 0, "numerics.cycles",
+                     std::to_string(s.steps) + " time steps, more than the maximum " + std::to_string(io::kMaxTotalSteps));
   s.dt = s.period / s.steps_per_cycle;
   s.wing = load_case_wing(c, options.wing_overrides);
   if (c.air.enabled && !s.wing)

@@ -5,6 +5,7 @@
 /// process), the attachment of one to the other, the base motion, the numerics and the
 /// reference values of the lift coefficient.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -49,7 +50,7 @@ struct FsiSetup {
   LiftReference reference;                ///< valid if air
   std::string structure_source;           ///< how the structure was obtained (for the log)
   int steps_per_cycle = 0;
-  int steps = 0;                          ///< total steps of the run
+  std::int64_t steps = 0;                 ///< total steps of the run (<= io::kMaxTotalSteps)
   double period = 0.0;                    ///< 1/f [s]
   double dt = 0.0;                        ///< time step [s]
 };

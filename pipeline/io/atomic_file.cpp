@@ -1,5 +1,6 @@
 #include "pipeline/io/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -20,11 +21,52 @@ void ensure_directory(const fs::path& dir) {
   if (!fs::is_directory(dir, ec)) throw OutputError(dir, "exists and is not a directory");
 }
 
+void prepare_output_directory(const fs::path& dir) {
+  ensure_directory(dir);
+  const fs::path probe = temporary_path(dir / ".flapsim_write_probe");
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw OutputError(dir, std::string("the output folder is not writable: ") + std::strerror(errno));
+  ::close(fd);
+  std::error_code ignored;
+  fs::remove(probe, ignored);
+}
+
 fs::path temporary_path(const fs::path& path) {
   fs::path tmp = path;
   tmp += ".tmp." + std::to_string(static_cast<long>(::getpid()));
   return tmp;
 }
+
+void sync_file(const fs::path& file, const fs::path& reported) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw OutputError(reported, std::string("cannot open the written file: ") + std::strerror(errno));
+  const int rc = ::fsync(fd);
+  const int err = errno;
+  ::close(fd);
+  if (rc != 0) throw OutputError(reported, std::string("flushing to disk failed: ") + std::strerror(err));
+}
+
+bool file_ends_with(const fs::path& file, std::string_view tail) {
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  if (!in) return false;
+  const std::streamoff size = in.tellg();
+  if (size < static_cast<std::streamoff>(tail.size())) return false;
+  std::string end(tail.size(), '\0');
+  in.seekg(size - static_cast<std::streamoff>(tail.size()));
+  in.read(end.data(), static_cast<std::streamsize>(end.size()));
+  return in && end == tail;
+}
+
+namespace {
+/// Synchronises a directory's entries (a rename in it) with the disk; best effort: some
+/// file systems refuse fsync on a directory, and the data itself is already on disk.
+void sync_directory(const fs::path& dir) {
+  const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  (void)::fsync(fd);
+  ::close(fd);
+}
+}  // namespace
 
 void replace_file(const fs::path& from, const fs::path& to) {
   std::error_code ec;
@@ -34,6 +76,7 @@ void replace_file(const fs::path& from, const fs::path& to) {
     fs::remove(from, ignored);
     throw OutputError(to, "cannot rename the temporary file onto it: " + ec.message());
   }
+  sync_directory(to.parent_path());
 }
 
 namespace {
@@ -66,22 +109,26 @@ void write_file_atomically(const fs::path& path, const std::function<void(std::o
     if (!out) throw OutputError(path, std::string("cannot open a temporary file: ") + std::strerror(errno));
     write(out);
     out.flush();
-    if (!out) throw OutputError(path, "write failed (disk full?)");
+    if (!out) throw OutputError(path, "write failed (disk full or file-size limit?)");
     out.close();
-    if (out.fail()) throw OutputError(path, "closing the temporary file failed");
+    if (out.fail()) throw OutputError(path, "closing the temporary file failed (disk full?)");
   }
+  sync_file(tmp, path);
   replace_file(tmp, path);
   guard.release();
 }
 
-void publish_file_atomically(const fs::path& path,
-                             const std::function<void(const fs::path& tmp)>& write) {
+void publish_file_atomically(const fs::path& path, const std::function<void(const fs::path& tmp)>& write,
+                             std::string_view required_tail) {
   ensure_directory(path.parent_path());
   const fs::path tmp = temporary_path(path);
   TemporaryGuard guard(tmp);
   write(tmp);
   std::error_code ec;
   if (!fs::is_regular_file(tmp, ec)) throw OutputError(path, "the writer produced no file");
+  if (!required_tail.empty() && !file_ends_with(tmp, required_tail))
+    throw OutputError(path, "the written file is incomplete (disk full or file-size limit?)");
+  sync_file(tmp, path);
   replace_file(tmp, path);
   guard.release();
 }

@@ -1,10 +1,12 @@
 #pragma once
 /// \file atomic_file.hpp
 /// \brief Writing output files so that a reader never sees a half-written file:
-/// the content goes to "<path>.tmp.<pid>" in the same directory and is then
-/// renamed onto <path> (a rename within one file system replaces the target in
-/// one step). On any error the temporary file is removed and <path> is left as it
-/// was.
+/// the content goes to "<path>.tmp.<pid>" in the same directory, every write is
+/// checked, the data is flushed to the disk (fsync) and the file is then renamed onto
+/// <path> (a rename within one file system replaces the target in one step); the
+/// directory is synchronised after the rename. On any error (a full disk, a file-size
+/// limit, no permission) the temporary file is removed, <path> is left as it was and
+/// OutputError is thrown: the command line exits with status 4.
 
 #include <filesystem>
 #include <functional>
@@ -32,6 +34,12 @@ class OutputError : public std::runtime_error {
 /// \throws OutputError if it cannot be created or exists as a non-directory
 void ensure_directory(const std::filesystem::path& dir);
 
+/// \brief An output folder made ready before any work: created if missing, and a file
+/// created and removed in it, so that an unwritable folder is reported as such (exit 4)
+/// before a long computation, not blamed on an input.
+/// \throws OutputError naming the folder
+void prepare_output_directory(const std::filesystem::path& dir);
+
 /// \brief The temporary name used for \p path by this process: "<path>.tmp.<pid>".
 std::filesystem::path temporary_path(const std::filesystem::path& path);
 
@@ -46,12 +54,26 @@ void replace_file(const std::filesystem::path& from, const std::filesystem::path
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write);
 
-/// \brief Writes a file atomically through a writer that needs a file name (e.g. VTK).
-/// \param path   final file name; its directory is created if missing
-/// \param write  writes the complete file to the temporary name it is given; may throw
-/// \throws OutputError if \p write leaves no file or renaming fails; rethrows what \p write throws
+/// \brief Writes a file atomically through a writer that needs a file name (e.g. VTK,
+/// gmsh). Such writers may not report a failed write (a full disk, a file-size limit),
+/// so the file is checked to end with \p required_tail, the closing text of its format
+/// (e.g. "</VTKFile>\n"), before it is flushed to disk and renamed.
+/// \param path           final file name; its directory is created if missing
+/// \param write          writes the complete file to the temporary name it is given; may throw
+/// \param required_tail  text the complete file ends with ("" = no check)
+/// \throws OutputError if \p write leaves no file or a truncated one, or flushing or
+///         renaming fails; rethrows what \p write throws
 void publish_file_atomically(const std::filesystem::path& path,
-                             const std::function<void(const std::filesystem::path& tmp)>& write);
+                             const std::function<void(const std::filesystem::path& tmp)>& write,
+                             std::string_view required_tail = {});
+
+/// \brief Flushes a written file's data to the disk (fsync).
+/// \param reported  the name errors report (the final name of a temporary file)
+/// \throws OutputError if the file cannot be opened or synchronised
+void sync_file(const std::filesystem::path& file, const std::filesystem::path& reported);
+
+/// \brief Whether the file ends with \p tail (false if it cannot be read).
+bool file_ends_with(const std::filesystem::path& file, std::string_view tail);
 
 /// \brief Writes \p text to \p path atomically.
 void write_text_atomically(const std::filesystem::path& path, std::string_view text);

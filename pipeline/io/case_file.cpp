@@ -26,7 +26,7 @@ mbd::WingKinematics read_kinematics(const TomlTable& k) {
   k.expect_only({"frequency_hz", "rotation_phase", "stroke_plane_deg", "sweep", "deviation",
                  "rotation", "surge", "lateral", "heave"});
   mbd::WingKinematics kin;
-  kin.frequency = k.get_double("frequency_hz", Bounds::positive());
+  kin.frequency = k.get_double("frequency_hz", Bounds{0.0, kMaxFrequencyHz, true, false});
   kin.rotation_phase = k.get_double("rotation_phase", 0.0, Bounds::closed(-1.0, 1.0));
   kin.stroke_plane_angle = k.get_double("stroke_plane_deg", 0.0, Bounds::closed(-180.0, 180.0)) * kDegToRad;
   if (!k.has("sweep")) k.fail("sweep", "missing required key (the sweep angle signal)");
@@ -86,6 +86,12 @@ Case::Numerics read_numerics(const TomlTable& root) {
                   "wake_sum", "tree_tolerance", "max_coupling_iterations", "coupling_tolerance"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
+  // The product in 64 bits, against a documented maximum (an int would wrap).
+  if (n.total_steps() > kMaxTotalSteps)
+    t->fail(t->has("cycles") ? "cycles" : "steps_per_cycle",
+            "steps_per_cycle x cycles = " + std::to_string(n.steps_per_cycle) + " x " + std::to_string(n.cycles) +
+                " = " + std::to_string(n.total_steps()) + " time steps, more than the maximum " +
+                std::to_string(kMaxTotalSteps));
   n.chordwise_panels = t->get_int("chordwise_panels", n.chordwise_panels, Bounds::closed(1, 1000));
   n.spanwise_panels = t->get_int("spanwise_panels", n.spanwise_panels, Bounds::closed(1, 1000));
   const uvlm::Spacing both = t->get_choice("spacing", kSpacingNames, std::optional(n.chordwise_spacing));
@@ -193,6 +199,14 @@ Case read_case(TomlTable root) {
   Case c;
   c.file = root.file();
   c.name = root.get_string("name", std::filesystem::path(root.file()).stem().string());
+  // A name is a label, never a path: "../../x" or "/tmp/x" would lead the default output
+  // folder (out/<name>) elsewhere.
+  if (root.has("name")) {
+    if (c.name.empty() || c.name.size() > 128 || folder_name_of(c.name) != c.name)
+      root.fail("name",
+                "a case name is 1 to 128 letters, digits, '-', '_' or '.', not starting with '.' "
+                "(it names the default output folder out/<name>), found \"" + c.name + "\"");
+  }
   if (root.has("description")) root.get_string("description");
   if (!root.has("wing") && !root.has("chain"))
     root.fail("wing", "missing required key: a case names a wing file ('wing') or a chain file ('chain')");
@@ -213,6 +227,18 @@ Case read_case(TomlTable root) {
   for (std::size_t i = 0; i < markers.size(); ++i)
     c.markers.push_back(read_marker(markers[i], i, c.structure.bodies));
   return c;
+}
+
+std::string folder_name_of(const std::string& name) {
+  std::string out;
+  for (char ch : name) {
+    const bool safe = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+                      ch == '-' || ch == '_' || ch == '.';
+    out += safe ? ch : '_';
+  }
+  if (out.empty()) return "case";
+  if (out[0] == '.') out[0] = '_';
+  return out.substr(0, 128);
 }
 
 Case load_case_file(const std::string& path) { return read_case(wings::parse_toml_file(path)); }

@@ -45,4 +45,10 @@ mbd::PeriodicSignal read_periodic_signal(const wings::TomlTable& table, std::str
                                          std::string_view suffix, std::string_view values_key,
                                          double scale, const mbd::PeriodicSignal& fallback);
 
+/// \brief A case name made safe as one folder name (flapsim run's default output folder
+/// out/<name>): letters, digits, '-', '_' and '.' kept, anything else (a '/', a space)
+/// replaced by '_'; a leading '.' becomes '_' ("..", ".hidden"); empty gives "case".
+/// A case name is never used as a path.
+std::string folder_name_of(const std::string& name);
+
 }  // namespace flapsim::io

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -62,6 +63,8 @@ struct Case {
   struct Numerics {
     int steps_per_cycle = 100;
     int cycles = 3;
+    /// steps_per_cycle × cycles, in 64 bits (the reader checks it against kMaxTotalSteps).
+    std::int64_t total_steps() const { return std::int64_t{steps_per_cycle} * cycles; }
     int chordwise_panels = 6;
     int spanwise_panels = 10;
     uvlm::Spacing chordwise_spacing = uvlm::Spacing::Uniform;  ///< "uniform" | "cosine" (`spacing` sets both)
@@ -91,6 +94,12 @@ struct Case {
   std::vector<PointLoad> loads;
   std::vector<Marker> markers;
 };
+
+/// The largest number of time steps of one run (steps_per_cycle × cycles), documented in
+/// docs/case_file.md: 10^8 steps already need tens of GB for the history alone.
+inline constexpr std::int64_t kMaxTotalSteps = 100'000'000;
+/// The largest wingbeat frequency a case accepts [Hz] (documented in docs/case_file.md).
+inline constexpr double kMaxFrequencyHz = 1e6;
 
 /// The names the case file gives the choices above, each with its value
 /// (wings::TomlTable::get_choice reads them, wings::choice_name names a value).

@@ -65,8 +65,8 @@ std::string describe_case(const Case& c) {
   else
     s += line("  structure              flexible, %d bodies", c.structure.bodies);
   const auto& n = c.numerics;
-  s += line("  time steps             %d per cycle x %d cycles = %d (dt = %.4g ms)", n.steps_per_cycle,
-            n.cycles, n.steps_per_cycle * n.cycles, 1e3 / (k.frequency * n.steps_per_cycle));
+  s += line("  time steps             %d per cycle x %d cycles = %lld (dt = %.4g ms)", n.steps_per_cycle,
+            n.cycles, static_cast<long long>(n.total_steps()), 1e3 / (k.frequency * n.steps_per_cycle));
   s += line("  panels                 %d chordwise x %d spanwise (%s x %s spacing)", n.chordwise_panels,
             n.spanwise_panels, std::string(wings::choice_name(kSpacingNames, n.chordwise_spacing)).c_str(),
             std::string(wings::choice_name(kSpacingNames, n.spanwise_spacing)).c_str());

@@ -101,6 +101,12 @@ void CsvTimeSeriesWriter::publish() {
     fs::remove(staging_, ec);
     throw OutputError(path_, "cannot copy the working file: " + ec.message());
   }
+  try {
+    sync_file(staging_, path_);
+  } catch (...) {
+    fs::remove(staging_, ec);
+    throw;
+  }
   replace_file(staging_, path_);
   published_ = rows_;
 }
@@ -115,6 +121,13 @@ void CsvTimeSeriesWriter::close() {
     std::error_code ignored;
     fs::remove(working_, ignored);
     throw OutputError(path_, "write failed (disk full?); the file holds the rows up to the last publication");
+  }
+  try {
+    sync_file(working_, path_);
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(working_, ignored);
+    throw;
   }
   replace_file(working_, path_);
   published_ = rows_;

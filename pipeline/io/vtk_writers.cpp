@@ -20,10 +20,14 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace flapsim::io {
 
 namespace {
+
+/// The closing text of every VTK XML file (a file without it is truncated).
+constexpr std::string_view kVtkFileTail = "</VTKFile>\n";
 
 void check_index(long index, long n_points, const std::string& what) {
   if (index < 0 || index >= n_points)
@@ -156,8 +160,9 @@ void write_vtp(const std::filesystem::path& path, const PolyDataMesh& mesh) {
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputData(data);
     configure(writer.GetPointer(), tmp);
-    if (writer->Write() != 1) throw OutputError(path, "VTK could not write the file");
-  });
+    if (writer->Write() != 1 || writer->GetErrorCode() != 0)
+      throw OutputError(path, "VTK could not write the file (disk full or file-size limit?)");
+  }, kVtkFileTail);
 }
 
 void write_vtu(const std::filesystem::path& path, const UnstructuredMesh& mesh) {
@@ -189,8 +194,9 @@ void write_vtu(const std::filesystem::path& path, const UnstructuredMesh& mesh) 
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
     writer->SetInputData(grid);
     configure(writer.GetPointer(), tmp);
-    if (writer->Write() != 1) throw OutputError(path, "VTK could not write the file");
-  });
+    if (writer->Write() != 1 || writer->GetErrorCode() != 0)
+      throw OutputError(path, "VTK could not write the file (disk full or file-size limit?)");
+  }, kVtkFileTail);
 }
 
 }  // namespace flapsim::io

@@ -168,4 +168,27 @@ TEST(SweepRuns, CaseThatCannotRunIsRecordedAndTheOthersGoOn) {
   EXPECT_EQ(read_sweep_table((dir / "order" / "sweep.csv").string()).rows.size(), 1u);
 }
 
+TEST(SweepRuns, NumericalFailureIsRecordedAndTheOthersGoOn) {
+  // A flexible plate (2 bodies, reduced in process) allowed one coupling sub-iteration
+  // per step cannot converge (the first iterate always moves the structure): that case
+  // fails numerically; with 50 it runs.
+  const test::ScratchDir dir("sweep_failed");
+  std::string c = test::tiny_plate_case(12);
+  c.replace(c.find("kind = \"rigid\""), 14, "kind = \"flexible\"\nbodies = 2");
+  std::ofstream(dir / "case.toml") << c;
+  ASSERT_EQ(run_flapsim("sweep " + (dir / "case.toml").string() +
+                        " --vary numerics.max_coupling_iterations=1,50 -j 1 -o " + (dir / "out").string()),
+            0);
+  const auto table = read_sweep_table((dir / "out" / "sweep.csv").string());
+  ASSERT_TRUE(table.rectangular);
+  ASSERT_EQ(table.rows.size(), 2u);
+  EXPECT_EQ(table.rows[0].at("status"), "failed");
+  EXPECT_NE(table.rows[0].at("message").find("did not converge"), std::string::npos) << table.rows[0].at("message");
+  EXPECT_EQ(table.rows[0].at("mean_lift_N"), "nan");
+  EXPECT_NE(read_text(dir / "out" / table.rows[0].at("folder") / "summary.json").find("\"status\": \"failed\""),
+            std::string::npos);
+  EXPECT_EQ(table.rows[1].at("status"), "ok");
+  EXPECT_GT(std::stod(table.rows[1].at("mean_lift_N")), 0.0);
+}
+
 }  // namespace

@@ -22,6 +22,14 @@ inline int run_flapsim(const std::string& args, const std::filesystem::path& std
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+/// Runs `PREFIX flapsim ARGS` in /bin/sh (e.g. PREFIX "ulimit -f 8; exec"); as run_flapsim.
+inline int run_flapsim_in_shell(const std::string& prefix, const std::string& args) {
+  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1; export FLAPSIM_QUIET OMP_NUM_THREADS; " + prefix +
+                          " '" + std::string(FLAPSIM_BINARY) + "' " + args + " > /dev/null 2> /dev/null";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 /// The whole text of a file ("" if it cannot be read).
 inline std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path);

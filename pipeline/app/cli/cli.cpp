@@ -6,9 +6,13 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <new>
 
 #include "pipeline/app/cli/thread_options.hpp"
+#include "pipeline/app/cli/exit_status.hpp"
+#include "pipeline/app/interruption.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
+#include "pipeline/io/atomic_file.hpp"
 #include "wings/input_error.hpp"
 #include "wings/wing_model.hpp"
 
@@ -37,22 +41,35 @@ int run(int argc, char** argv) {
   add_run_command(app);
   add_sweep_command(app);
   for (CLI::App* command : app.get_subcommands({})) add_threads_option(*command);
+  // The exit-status contract (exit_status.hpp, README.md): each kind of error has one status.
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help and --version print and succeed; any other parse error is a usage error.
-    return app.exit(e) == 0 ? 0 : 1;
+    return app.exit(e) == 0 ? kExitOk : kExitUsage;
   } catch (const InputError& e) {
     std::cerr << "flapsim: error: " << e.what() << "\n";
-    return 2;
+    return kExitInput;
   } catch (const NumericalFailure& e) {
     std::cerr << "flapsim: numerical failure: " << e.what() << "\n";
-    return 3;
+    return kExitNumerical;
+  } catch (const app::Interrupted& e) {
+    std::cerr << "flapsim: " << e.what() << "\n";
+    return exit_status_of_signal(e.signal_number());
+  } catch (const io::OutputError& e) {
+    std::cerr << "flapsim: output error: " << e.what() << "\n";
+    return kExitOutput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "flapsim: system error: out of memory (the run's estimate is printed by 'flapsim check')\n";
+    return kExitOutput;
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::cerr << "flapsim: output error: " << e.what() << "\n";
+    return kExitOutput;
   } catch (const std::exception& e) {
-    std::cerr << "flapsim: error: " << e.what() << "\n";
-    return 1;
+    std::cerr << "flapsim: system error: " << e.what() << "\n";
+    return kExitOutput;
   }
-  return 0;
+  return kExitOk;
 }
 
 }  // namespace flapsim::cli

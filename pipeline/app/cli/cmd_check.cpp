@@ -5,8 +5,12 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "fem/wing_mesher.hpp"
+#include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_summary.hpp"
 #include "wings/input_error.hpp"
@@ -18,21 +22,57 @@ namespace flapsim::cli {
 
 namespace {
 
+/// gmsh's dry run: the wing is meshed (no file written), so an outline or mesh sizes
+/// gmsh cannot handle fail here, as they would in mesh, modes, reduce and run.
+void check_meshable(const wings::Wing& wing) { (void)fem::mesh_wing(wing); }
+
+/// Everything `flapsim run` checks before its first step, without running: the chain file,
+/// a wing for a run in air, loads and markers on existing bodies, the wing meshable when
+/// it is reduced in process, and the run's size against the memory (the estimate is part
+/// of the summary).
+std::string check_case_like_run(const io::Case& c) {
+  std::string text;
+  std::optional<wings::Wing> wing;
+  if (!c.wing_file.empty()) wing = print_wing_warnings(wings::load_wing_file(c.wing_file));
+  if (c.air.enabled && !wing)
+    throw InputError(c.file, 0, "wing",
+                     "a run in air needs the wing's outline for the vortex lattice: name a wing "
+                     "file, or set air = \"none\" for a vacuum run of the chain");
+  int bodies = c.structure.bodies;
+  const bool reduced_in_process = c.structure.kind == io::Case::Structure::Kind::Flexible && c.chain_file.empty();
+  if (reduced_in_process && wing) {
+    check_meshable(*wing);
+  } else {
+    const app::FsiSetup setup = app::build_fsi_setup(c, app::SetupOptions{});  // reads the chain file
+    bodies = setup.model.chain.num_bodies();
+  }
+  const app::RunEstimate estimate = app::estimate_run(c, bodies);
+  app::refuse_if_it_cannot_fit(estimate, c);
+  text += "  " + app::describe(estimate) + "\n";
+  if (wing) {
+    if (!reduced_in_process) check_meshable(*wing);
+    text += "\n" + wings::describe_wing(*wing);
+  }
+  return text;
+}
+
 /// Reads the file, decides whether it is a wing ([planform]) or a case ([kinematics]),
-/// checks it completely (a case's wing file too) and returns the summary text.
-/// Nothing is printed until everything has been checked.
+/// checks it completely (a case as `run` would: its wing, chain file and size) and returns
+/// the summary text. Nothing is printed until everything has been checked.
 std::string check_file(const std::string& path) {
   const wings::TomlTable root = wings::parse_toml_file(path);
   const bool wing = wings::is_wing_document(root), case_file = io::is_case_document(root);
   if (wing && case_file)
     throw InputError(path, root.line_of("planform"), "planform",
                      "a file is either a wing file ([planform]) or a case file ([kinematics]), not both");
-  if (wing) return wings::describe_wing(print_wing_warnings(wings::read_wing(root)));
+  if (wing) {
+    const wings::Wing w = print_wing_warnings(wings::read_wing(root));
+    check_meshable(w);
+    return wings::describe_wing(w);
+  }
   if (case_file) {
     const io::Case c = io::read_case(root);
-    std::string text = io::describe_case(c);
-    if (!c.wing_file.empty()) text += "\n" + wings::describe_wing(print_wing_warnings(wings::load_wing_file(c.wing_file)));
-    return text;
+    return io::describe_case(c) + check_case_like_run(c);
   }
   throw InputError(path, 1, "",
                    "not a wing file (no [planform] table) nor a case file (no [kinematics] table)");
@@ -49,6 +89,9 @@ void add_check_command(CLI::App& app) {
       "A case file (it has a [kinematics] table) prints sweep, deviation, rotation and\n"
       "the geometric angle of attack at phases 0, 0.25, 0.5, 0.75, then air, structure\n"
       "and numerics, and checks the wing file it names.\n"
+      "Check validates what run and mesh would: the chain file, a wing for a run in air,\n"
+      "loads and markers on existing bodies, the wing meshed by gmsh (no file written), the\n"
+      "mesh-size budget, and the run's estimate (memory, interactions, time) against the memory.\n"
       "Exit status: 0 valid, 2 bad input (the message names file, line and key).\n"
       "Formats: docs/wing_file.md, docs/case_file.md.");
   auto file = std::make_shared<std::string>();

@@ -13,6 +13,7 @@
 #include "fem/wing_mesher.hpp"
 #include "pipeline/io/fem_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/output_manifest.hpp"
 #include "wings/wing_file.hpp"
 
 namespace flapsim::cli {
@@ -22,22 +23,41 @@ namespace {
 struct MeshArgs {
   std::string wing_file;
   std::string out_dir = "out";
+  bool force = false;
 };
 
 void run_mesh(const MeshArgs& args) {
   // 1. Read and check the wing (InputError: exit 2, nothing written).
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
   print_wing_warnings(wing);
-  // 2. Mesh; gmsh saves mesh.msh (atomically) on the way.
+  // 2. The output folder, writable before any work (else exit 4 naming it).
   const std::filesystem::path dir(args.out_dir);
-  io::ensure_directory(dir);
+  io::claim_output_folder(dir, "mesh", args.force);
+  // 3. Mesh; gmsh saves the mesh to a staging name (with the .msh extension gmsh needs);
+  // it is published as mesh.msh only if complete (gmsh does not report a failed write:
+  // the file must end with its $EndElements section), flushed to disk and renamed.
+  const std::filesystem::path msh = dir / "mesh.msh";
+  std::filesystem::path staged = io::temporary_path(msh);
+  staged += ".msh";
   fem::MeshOptions opt;
-  opt.msh_path = dir / "mesh.msh";
+  opt.msh_path = staged;
   const fem::Mesh mesh = fem::mesh_wing(wing, opt);
-  // 3. The same mesh for ParaView.
+  io::publish_file_atomically(
+      msh,
+      [&](const std::filesystem::path& tmp) {
+        std::error_code ec;
+        std::filesystem::rename(staged, tmp, ec);
+        if (ec) {
+          std::filesystem::remove(staged, ec);
+          throw io::OutputError(msh, "cannot rename gmsh's file: " + ec.message());
+        }
+      },
+      "$EndElements\n");
+  // 4. The same mesh for ParaView.
   io::write_vtu(dir / "mesh.vtu", io::fem_unstructured_mesh(mesh, wing.clamp_y));
   std::printf("%s: %d nodes, %zu membrane triangles, %zu vein elements (%zu veins)\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), mesh.vein_names.size());
+  io::record_command_status(dir, "mesh", "complete");
   std::printf("wrote %s, %s\n", (dir / "mesh.msh").string().c_str(), (dir / "mesh.vtu").string().c_str());
 }
 
@@ -49,10 +69,12 @@ void add_mesh_command(CLI::App& app) {
       "Mesh a wing for the FEM: the outline as a membrane surface, the veins as beam\n"
       "elements sharing its nodes (gmsh). Sizes from the wing file's [mesh] table.\n"
       "Writes DIR/mesh.msh (gmsh) and DIR/mesh.vtu (ParaView; cell data 'vein', point\n"
-      "data 'clamped'). Exit status: 0 ok, 2 bad input.");
+      "data 'clamped'). Exit status: 0 ok, 2 bad input (gmsh errors name the key),\n"
+      "4 output error (nothing truncated is left under a final name).");
   auto args = std::make_shared<MeshArgs>();
   cmd->add_option("WING", args->wing_file, "wing file (TOML)")->required();
   cmd->add_option("-o,--output", args->out_dir, "output directory")->capture_default_str();
+  cmd->add_flag("--force", args->force, "replace another command's outputs in the folder that this command would overwrite");
   cmd->callback([args] { run_mesh(*args); });
 }
 

@@ -13,8 +13,11 @@
 #include "fem/load_cases.hpp"
 #include "fem/static_solver.hpp"
 #include "fem/wing_fem.hpp"
+#include "pipeline/app/numerical_stage.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/fem_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/output_manifest.hpp"
 #include "wings/input_error.hpp"
 #include "wings/wing_file.hpp"
 
@@ -26,30 +29,37 @@ struct ModesArgs {
   std::string wing_file;
   std::string out_dir = "out";
   int modes = 20;
+  bool force = false;
 };
 
 void run_modes(const ModesArgs& args) {
   if (args.modes < 1 || args.modes > 500)
     throw InputError("<command line>", 0, "--modes", "must be between 1 and 500, got " + std::to_string(args.modes));
-  // 1. Wing, mesh, K and M, root clamp.
+  // 1. Wing; the output folder writable before any work (else exit 4 naming it).
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
   print_wing_warnings(wing);
-  const fem::WingFem fem = fem::build_wing_fem(wing);
-  const fem::Mesh& mesh = fem.model.mesh;
-  // 2. Lowest modes of the clamped wing, classified by shape.
-  const fem::WingModes m = fem::wing_modes(fem, args.modes);
-  // 3. Static tip load cases (unit loads) with one factorisation.
-  const fem::StaticSolver statics(fem.system.stiffness, fem.root_clamp);
-  std::vector<io::StaticResult> results;
-  for (auto& lc : fem::tip_load_cases(mesh, fem::tip_station(mesh))) {
-    Eigen::VectorXd u = statics.solve(lc.loads);
-    results.push_back({std::move(lc), std::move(u)});
-  }
-  // 4. Outputs (each atomic).
   const std::filesystem::path dir(args.out_dir);
-  io::ensure_directory(dir);
+  io::claim_output_folder(dir, "modes", args.force);
+  // 2. Mesh, K and M, root clamp; a failing solver is a numerical failure (exit 3).
+  const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
+  const fem::Mesh& mesh = fem.model.mesh;
+  // 3. Lowest modes of the clamped wing, classified by shape.
+  const fem::WingModes m = app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, args.modes); });
+  // 4. Static tip load cases (unit loads) with one factorisation.
+  std::vector<io::StaticResult> results = app::numerical_stage("FEM static load cases", [&] {
+    const fem::StaticSolver statics(fem.system.stiffness, fem.root_clamp);
+    std::vector<io::StaticResult> out;
+    for (auto& lc : fem::tip_load_cases(mesh, fem::tip_station(mesh))) {
+      Eigen::VectorXd u = statics.solve(lc.loads);
+      if (!u.allFinite()) throw NumericalFailure("FEM static load case '" + lc.name + "': non-finite displacements");
+      out.push_back({std::move(lc), std::move(u)});
+    }
+    return out;
+  });
+  // 5. Outputs (each atomic).
   io::write_modes_csv(dir / "modes.csv", m.modes, m.kinds);
   io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, m.kinds, results);
+  io::record_command_status(dir, "modes", "complete");
 
   std::printf("%s: %d nodes, %zu triangles, %zu vein elements, FEM mass %.4f mg\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), fem.system.total_mass * 1e6);
@@ -72,11 +82,13 @@ void add_modes_command(CLI::App& app) {
       "Writes DIR/modes.csv (mode, frequency_hz, kind) and DIR/fem.vtu: point vectors\n"
       "mode_NN scaled so the largest displacement is 10 % of the span (field data\n"
       "mode_NN_frequency_Hz, mode_NN_kind, mode_NN_scale) and static_<case>_m_per_N[_m]\n"
-      "(displacement per unit load). Exit status: 0 ok, 2 bad input.");
+      "(displacement per unit load). Exit status: 0 ok, 2 bad input, 3 numerical failure\n"
+      "of the FEM, 4 output error.");
   auto args = std::make_shared<ModesArgs>();
   cmd->add_option("WING", args->wing_file, "wing file (TOML)")->required();
   cmd->add_option("-o,--output", args->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--modes", args->modes, "number of modes")->capture_default_str();
+  cmd->add_flag("--force", args->force, "replace another command's outputs in the folder that this command would overwrite");
   cmd->callback([args] { run_modes(*args); });
 }
 

@@ -12,8 +12,10 @@
 #include <string>
 
 #include "fem/wing_fem.hpp"
+#include "pipeline/app/numerical_stage.hpp"
 #include "pipeline/io/chain_file.hpp"
 #include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/output_manifest.hpp"
 #include "pipeline/io/reduction_files.hpp"
 #include "reduction/beam_properties.hpp"
 #include "reduction/chain_lumping.hpp"
@@ -34,6 +36,7 @@ struct ReduceOptions {
   int stations = 40;
   int modes = 12;
   std::string axis = "fitted";
+  bool force = false;
 };
 
 void run_reduce(const ReduceOptions& o) {
@@ -41,21 +44,26 @@ void run_reduce(const ReduceOptions& o) {
   print_wing_warnings(wing);
   reduction::AnalysisOptions ao;
   ao.axis = o.axis == "span" ? reduction::AxisChoice::span : reduction::AxisChoice::fitted;
-  const fem::WingFem fem = fem::build_wing_fem(wing);
-  const fem::WingModes modes = fem::wing_modes(fem, o.modes);
-  const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp, ao);
-  const reduction::BeamProperties beam = reduction::extract_beam_properties(analysis, o.stations);
-  const reduction::LumpedChain lc = reduction::lump_into_chain(analysis, o.bodies);
-  const reduction::ChainFemComparison cmp =
-      reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds);
-
   const fs::path dir(o.out_dir);
-  io::ensure_directory(dir);
+  io::claim_output_folder(dir, "reduce", o.force);  // unwritable: exit 4 before any work
+  // A failing solve in the FEM or the reduction is a numerical failure (exit 3).
+  const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
+  const fem::WingModes modes = app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, o.modes); });
+  const reduction::ClampedWingAnalysis analysis = app::numerical_stage(
+      "reduction", [&] { return reduction::ClampedWingAnalysis(fem.model.mesh, fem.system, fem.root_clamp, ao); });
+  const reduction::BeamProperties beam =
+      app::numerical_stage("reduction", [&] { return reduction::extract_beam_properties(analysis, o.stations); });
+  const reduction::LumpedChain lc =
+      app::numerical_stage("reduction", [&] { return reduction::lump_into_chain(analysis, o.bodies); });
+  const reduction::ChainFemComparison cmp = app::numerical_stage(
+      "reduction", [&] { return reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds); });
+
   io::write_beam_csv(dir / "beam.csv", beam);
   io::write_chain_file(dir / "chain.toml", lc.chain);
   io::write_reduction_vtk(dir, beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
   io::write_reduction_summary(dir / "summary.json", beam, lc, cmp);
+  io::record_command_status(dir, "reduce", "complete");
   std::cerr << "reduce: " << o.bodies << " bodies; first bending " << cmp.bending.chain_hz << " Hz (FEM "
             << cmp.bending.fem_hz << " Hz, " << io::format_percent(cmp.bending.relative_error) << "), first torsion "
             << cmp.torsion.chain_hz << " Hz (FEM " << cmp.torsion.fem_hz << " Hz, "
@@ -82,6 +90,7 @@ void add_reduce_command(CLI::App& app) {
   cmd->add_option("--modes", o->modes, "FEM modes to compute (default 12)")->check(CLI::Range(2, 200));
   cmd->add_option("--axis", o->axis, "flexural axis: fitted (least squares through the pivot) or span (y_W)")
       ->check(CLI::IsMember({"fitted", "span"}));
+  cmd->add_flag("--force", o->force, "replace another command's outputs in the folder that this command would overwrite");
   cmd->callback([o] { run_reduce(*o); });
 }
 

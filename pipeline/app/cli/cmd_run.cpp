@@ -9,9 +9,13 @@
 #include <optional>
 #include <string>
 
-#include "pipeline/io/case_file.hpp"
 #include "pipeline/app/fsi_run.hpp"
+#include "pipeline/app/interruption.hpp"
+#include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/app/run_results.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
+#include "pipeline/io/case_file.hpp"
+#include "pipeline/io/output_manifest.hpp"
 
 namespace flapsim::cli {
 
@@ -24,19 +28,41 @@ struct RunArgs {
   int vtk_every = -1;
   double spring_scale = 1.0;
   bool quiet = false;
+  bool force = false;
 };
 
 void run_command(const RunArgs& a) {
   const io::Case c = io::load_case_file(a.case_file);
   check_chain_option(a.chain_file);
   app::RunOptions options;
-  options.output_dir = a.output_dir.empty() ? std::filesystem::path("out") / c.name
-                                          : std::filesystem::path(a.output_dir);
+  // The case name is never a path: the default folder is out/ plus the name made safe.
+  options.output_dir = a.output_dir.empty() ? std::filesystem::path("out") / io::folder_name_of(c.name)
+                                            : std::filesystem::path(a.output_dir);
   options.chain_file = a.chain_file;
   options.spring_scale = a.spring_scale;
   if (a.vtk_every >= 0) options.vtk_every = a.vtk_every;
   if (a.quiet) options.progress = app::ProgressLine::Mode::quiet;
-  const app::RunResults results = app::run_case(c, options);
+  // Before any file is written: the size of the run (printed before a long one, refused
+  // if its memory cannot fit), then the folder claimed for this run (output_manifest.hpp).
+  options.before_start = [&](const app::FsiSetup& setup) {
+    const app::RunEstimate estimate = app::estimate_run(c, setup.model.chain.num_bodies());
+    if (!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9))
+      std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
+    app::refuse_if_it_cannot_fit(estimate, c);
+    io::claim_output_folder(options.output_dir, "run", a.force);
+  };
+  app::install_interrupt_handlers();  // SIGINT/SIGTERM: finish the step, exit 130/143
+  app::RunResults results;
+  try {
+    results = app::run_case(c, options);
+  } catch (const NumericalFailure&) {
+    io::record_command_status(options.output_dir, "run", "failed");
+    throw;
+  } catch (const app::Interrupted&) {
+    io::record_command_status(options.output_dir, "run", "interrupted");
+    throw;
+  }
+  io::record_command_status(options.output_dir, "run", "complete");
   if (!a.quiet) {
     std::fputs(app::run_report(results).c_str(), stdout);
     std::printf("outputs in %s (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd, run.pvsm)\n",
@@ -59,7 +85,13 @@ void add_run_command(CLI::App& app) {
       "A flexible case takes its chain from --chain, else from the case's 'chain' key, else it\n"
       "reduces the case's wing in process to structure.bodies bodies (as 'flapsim reduce').\n"
       "Also writes run.pvsm, a ParaView state of the series and the lift (docs/fsi.md).\n"
-      "Exit status: 0 ok, 2 bad input, 3 numerical failure (outputs so far stay valid).");
+      "One run per folder: a rerun replaces the previous run's files (DIR/flapsim_outputs.toml);\n"
+      "another command's files that would be replaced need --force. A long run prints its\n"
+      "estimate (memory, interactions, time) first; a run that cannot fit in memory is refused.\n"
+      "SIGINT/SIGTERM finish the step, flush the outputs and write summary.json (status\n"
+      "\"interrupted\").\n"
+      "Exit status: 0 ok, 1 usage, 2 bad input, 3 numerical failure (outputs so far stay valid),\n"
+      "4 output or system error, 130/143 interrupted by SIGINT/SIGTERM.");
   cmd->add_option("case", args->case_file, "case file (TOML, docs/case_file.md)")->required();
   cmd->add_option("-o,--output", args->output_dir, "output folder (default out/<case name>)");
   cmd->add_option("--chain", args->chain_file,
@@ -72,6 +104,8 @@ void add_run_command(CLI::App& app) {
                   "frequencies scale by sqrt(S)); default 1")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("-q,--quiet", args->quiet, "no progress line and no report on stdout");
+  cmd->add_flag("--force", args->force,
+                "replace another command's outputs in DIR (e.g. the summary.json of 'flapsim reduce')");
   cmd->callback([args] { run_command(*args); });
 }
 

@@ -2,8 +2,8 @@
 /// \file commands.hpp
 /// \brief The flapsim subcommands. Each add_*_command registers one subcommand
 /// (its options, --help text and callback) on the application; callbacks report
-/// bad input by throwing flapsim::InputError (exit 2) and failed runs by throwing
-/// flapsim::NumericalFailure (exit 3).
+/// bad input by throwing flapsim::InputError (exit 2), failed runs by throwing
+/// flapsim::NumericalFailure (exit 3) and output errors by io::OutputError (exit 4).
 
 #include <string>
 
@@ -27,8 +27,9 @@ void check_chain_option(const std::string& chain_file);
 /// 'KEY': MESSAGE", docs/wing_file.md) and returns the wing.
 const wings::Wing& print_wing_warnings(const wings::Wing& wing);
 
-/// Parses argv, runs the chosen subcommand, returns the process exit status:
-/// 0 ok, 1 usage error, 2 bad input, 3 numerical failure.
+/// Parses argv, runs the chosen subcommand, returns the process exit status
+/// (exit_status.hpp): 0 ok, 1 usage error, 2 bad input, 3 numerical failure,
+/// 4 output or system error, 130/143 interrupted by SIGINT/SIGTERM.
 int run(int argc, char** argv);
 
 }  // namespace flapsim::cli

@@ -128,11 +128,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       o.status = "ok";
     } catch (const NumericalFailure& e) {
       o.status = "failed";
-      o.message = e.what();
-      // The failed run's summary.json holds what it reached (steps, time, status).
-      if (auto partial =
-              read_summary_results(options.output_dir / case_folder(i, n, plan.points[i]) / "summary.json"))
-        o.results = std::move(*partial);
+      o.message = e.what();  // no results in the table (nan): its summary.json tells how far it got
     } catch (const std::exception& e) {
       o.status = "error";
       o.message = e.what();

@@ -1,0 +1,116 @@
+#include "pipeline/app/resource_estimate.hpp"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "pipeline/app/run_history.hpp"
+#include "wings/input_error.hpp"
+
+namespace flapsim::app {
+
+namespace {
+
+std::string bytes_text(double b) {
+  char buf[32];
+  if (b >= 1e9) std::snprintf(buf, sizeof buf, "%.3g GB", b / 1e9);
+  else if (b >= 1e6) std::snprintf(buf, sizeof buf, "%.3g MB", b / 1e6);
+  else std::snprintf(buf, sizeof buf, "%.3g kB", b / 1e3);
+  return buf;
+}
+
+std::string seconds_text(double s) {
+  char buf[32];
+  if (s >= 86400.0) std::snprintf(buf, sizeof buf, "%.2g days", s / 86400.0);
+  else if (s >= 3600.0) std::snprintf(buf, sizeof buf, "%.2g h", s / 3600.0);
+  else if (s >= 60.0) std::snprintf(buf, sizeof buf, "%.2g min", s / 60.0);
+  else std::snprintf(buf, sizeof buf, "%.2g s", s);
+  return buf;
+}
+
+}  // namespace
+
+RunEstimate estimate_run(const io::Case& c, int bodies) {
+  RunEstimate e;
+  const auto& n = c.numerics;
+  e.steps = n.total_steps();
+  const double steps = static_cast<double>(e.steps);
+  const double nc = n.chordwise_panels, ns = n.spanwise_panels;
+  const double panels = nc * ns;
+  // Mean coupling iterations per step: a few (docs/fsi.md); the cap bounds it.
+  const double iterations = std::min(5.0, static_cast<double>(n.max_coupling_iterations));
+
+  double memory = 64e6;  // the program, libraries, VTK and the wing: a fixed allowance [B]
+  memory += steps * static_cast<double>(sizeof(StepSample));
+  if (c.air.enabled) {
+    // Wake storage for rows = wake capacity + 1 (vortex_lattice.cpp): per node the
+    // position and the AB2 velocity (6 doubles), per ring a circulation, per segment
+    // two end points, a circulation and a core (8 doubles).
+    const double rows = (n.wake_max_rows > 0 ? std::min<double>(n.wake_max_rows, steps) : steps) + 1.0;
+    e.wake_panels = static_cast<std::int64_t>((rows - 1.0) * ns);
+    const double wake_nodes = (rows + 1.0) * (ns + 1.0);
+    const double wake_segments = (rows + 1.0) * ns + rows * (ns + 1.0);
+    memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
+    memory += 2.0 * panels * panels * 8;  // influence matrix and its LU
+    // Interactions: at step k the wake has r = min(k, max_rows) rows.
+    const double max_rows = n.wake_max_rows > 0 ? n.wake_max_rows : steps;
+    const double bound_segments = (nc + 1) * ns + nc * (ns + 1);
+    auto step_cost = [&](double r) {
+      const double segs = (r + 1) * ns + r * (ns + 1);
+      const double free_wake = n.free_wake ? (r + 1) * (ns + 1) * (segs + bound_segments) : 0.0;
+      return free_wake + iterations * panels * (segs + bound_segments);
+    };
+    // Sum over steps, in closed form per part (growing wake, then a wake of max_rows).
+    const double growing = std::min(steps, max_rows);
+    double sum = 0.0;
+    // step_cost is a quadratic in r: sum it exactly with three sample points.
+    const double c0 = step_cost(0), c1 = step_cost(1), c2 = step_cost(2);
+    const double a2 = (c2 - 2 * c1 + c0) / 2, a1 = c1 - c0 - a2, a0 = c0;
+    const double m = growing;  // r = 1..m
+    sum += a2 * m * (m + 1) * (2 * m + 1) / 6 + a1 * m * (m + 1) / 2 + a0 * m;
+    sum += std::max(0.0, steps - growing) * step_cost(max_rows);
+    e.interactions = sum;
+  }
+  // The chain: 2 dofs per joint (bending, torsion); dense LU of the Newton matrix per
+  // Newton iteration (~3) per coupling iteration.
+  const double dofs = 2.0 * std::max(bodies, 1);
+  memory += 8.0 * dofs * dofs * 8;
+  e.structure_flops = bodies > 1 ? steps * iterations * 3.0 * (2.0 / 3.0) * dofs * dofs * dofs : 0.0;
+  e.memory_bytes = memory;
+  e.seconds = e.interactions / kInteractionsPerSecond + e.structure_flops / kFlopsPerSecond;
+  return e;
+}
+
+std::string describe(const RunEstimate& e) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "estimate: %lld steps, up to %lld wake panels, memory ~%s, %.2g Biot-Savart interactions, "
+                "%.2g chain flop, time of the order of %s (one thread)",
+                static_cast<long long>(e.steps), static_cast<long long>(e.wake_panels),
+                bytes_text(e.memory_bytes).c_str(), e.interactions, e.structure_flops,
+                seconds_text(e.seconds).c_str());
+  return buf;
+}
+
+double usable_memory_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  double bytes = pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 1e18;
+  struct rlimit lim {};
+  if (::getrlimit(RLIMIT_AS, &lim) == 0 && lim.rlim_cur != RLIM_INFINITY)
+    bytes = std::min(bytes, static_cast<double>(lim.rlim_cur));
+  return bytes;
+}
+
+void refuse_if_it_cannot_fit(const RunEstimate& e, const io::Case& c) {
+  const double usable = usable_memory_bytes();
+  if (e.memory_bytes <= usable) return;
+  throw InputError(c.file, 0, "numerics.cycles",
+                   "the run needs about " + bytes_text(e.memory_bytes) + " of memory, more than the " +
+                       bytes_text(usable) + " this machine offers (" + describe(e) +
+                       "); shorten it (numerics.cycles, numerics.steps_per_cycle) or bound the wake "
+                       "(numerics.wake_max_rows)");
+}
+
+}  // namespace flapsim::app

@@ -1,0 +1,169 @@
+#include "pipeline/io/output_manifest.hpp"
+
+#include <toml++/toml.h>
+
+#include <map>
+#include <sstream>
+#include <system_error>
+
+#include "pipeline/io/atomic_file.hpp"
+
+namespace flapsim::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Entry {
+  std::string status;
+  std::vector<std::string> outputs;
+};
+using Manifest = std::map<std::string, Entry>;
+
+Manifest read_manifest(const fs::path& dir) {
+  Manifest m;
+  const fs::path file = dir / kManifestName;
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) return m;
+  toml::table t;
+  try {
+    t = toml::parse_file(file.string());
+  } catch (const toml::parse_error& e) {
+    throw OutputError(file, "the folder's manifest is not readable (" + std::string(e.description()) +
+                                "); remove it or choose another folder");
+  }
+  for (auto&& [command, node] : t) {
+    const toml::table* entry = node.as_table();
+    if (!entry) continue;
+    Entry e;
+    e.status = entry->get("status") ? entry->get("status")->value_or(std::string()) : std::string();
+    if (const toml::array* outputs = entry->get_as<toml::array>("outputs"))
+      for (const auto& o : *outputs)
+        if (o.is_string()) e.outputs.push_back(*o.value<std::string>());
+    m[std::string(command.str())] = std::move(e);
+  }
+  return m;
+}
+
+void write_manifest(const fs::path& dir, const Manifest& m) {
+  toml::table t;
+  for (const auto& [command, e] : m) {
+    toml::array outputs;
+    for (const auto& o : e.outputs) outputs.push_back(o);
+    t.insert(command, toml::table{{"status", e.status}, {"outputs", outputs}});
+  }
+  std::ostringstream text;
+  text << "# Written by flapsim: which command wrote which files in this folder (docs/output_files.md).\n"
+       << t << "\n";
+  write_text_atomically(dir / kManifestName, text.str());
+}
+
+/// The files under \p dir a pattern names ("history.csv", "vtk/wing_*.vtp"), with
+/// temporaries of the same names left by a killed process.
+std::vector<fs::path> matching_files(const fs::path& dir, const std::string& pattern) {
+  std::vector<fs::path> out;
+  const fs::path p(pattern);
+  const fs::path folder = dir / p.parent_path();
+  const std::string name = p.filename().string();
+  const auto star = name.find('*');
+  const std::string prefix = name.substr(0, star), suffix = star == std::string::npos ? "" : name.substr(star + 1);
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) return out;
+  for (const auto& f : fs::directory_iterator(folder, ec)) {
+    const std::string n = f.path().filename().string();
+    const bool exact = star == std::string::npos && (n == name || n.rfind(name + ".tmp.", 0) == 0);
+    const bool series = star != std::string::npos && n.size() >= prefix.size() + suffix.size() &&
+                        n.rfind(prefix, 0) == 0 &&
+                        (n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0 ||
+                         n.find(suffix + ".tmp.") != std::string::npos);
+    if ((exact || series) && f.is_regular_file(ec)) out.push_back(f.path());
+  }
+  return out;
+}
+
+void remove_outputs(const fs::path& dir, const std::vector<std::string>& patterns) {
+  for (const auto& pattern : patterns) {
+    for (const auto& f : matching_files(dir, pattern)) {
+      std::error_code ec;
+      fs::remove(f, ec);
+      if (ec) throw OutputError(f, "cannot remove the earlier output: " + ec.message());
+    }
+    // A series' folder ("vtk/") goes too once empty.
+    const fs::path folder = dir / fs::path(pattern).parent_path();
+    std::error_code ec;
+    if (folder != dir && fs::is_directory(folder, ec) && fs::is_empty(folder, ec)) fs::remove(folder, ec);
+  }
+}
+
+bool any_present(const fs::path& dir, const std::vector<std::string>& patterns) {
+  for (const auto& p : patterns)
+    if (!matching_files(dir, p).empty()) return true;
+  return false;
+}
+
+std::vector<std::string> shared(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  std::vector<std::string> out;
+  for (const auto& x : a)
+    for (const auto& y : b)
+      if (x == y) out.push_back(x);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> command_outputs(const std::string& command) {
+  if (command == "mesh") return {"mesh.msh", "mesh.vtu"};
+  if (command == "modes") return {"modes.csv", "fem.vtu"};
+  if (command == "reduce") return {"beam.csv", "chain.toml", "reduction.vtp", "report.md", "summary.json"};
+  if (command == "run")
+    return {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "run.pvsm",
+            "vtk/wing_*.vtp", "vtk/wake_*.vtp", "vtk/chain_*.vtp"};
+  return {};
+}
+
+void claim_output_folder(const fs::path& dir, const std::string& command, bool force) {
+  prepare_output_directory(dir);
+  Manifest m = read_manifest(dir);
+  const std::vector<std::string> mine = command_outputs(command);
+  // Another command's outputs that this command would replace.
+  for (const std::string& other : {"mesh", "modes", "reduce", "run"}) {
+    if (other == command) continue;
+    const auto clash = shared(mine, command_outputs(other));
+    if (clash.empty()) continue;
+    // Known from the manifest; without one, judged by the other command's own files
+    // (e.g. reduce's chain.toml next to a summary.json).
+    const bool present = m.count(other) ? any_present(dir, clash)
+                                        : any_present(dir, clash) && [&] {
+                                            std::vector<std::string> own;
+                                            for (const auto& o : command_outputs(other))
+                                              if (shared({o}, mine).empty()) own.push_back(o);
+                                            return any_present(dir, own);
+                                          }();
+    if (!present) continue;
+    if (!force) {
+      std::string names;
+      for (const auto& c : clash) names += (names.empty() ? "" : ", ") + c;
+      throw OutputError(dir, "the folder holds the outputs of 'flapsim " + other + "' (" + names +
+                                 "), which 'flapsim " + command +
+                                 "' would replace; choose another folder (-o) or add --force to replace them");
+    }
+    remove_outputs(dir, command_outputs(other));
+    m.erase(other);
+  }
+  // This command's earlier outputs: all of them go, so the folder holds one run's files.
+  std::vector<std::string> earlier = mine;
+  if (m.count(command))
+    for (const auto& o : m[command].outputs) earlier.push_back(o);
+  remove_outputs(dir, earlier);
+  m[command] = Entry{"running", mine};
+  write_manifest(dir, m);
+}
+
+void record_command_status(const fs::path& dir, const std::string& command, const std::string& status) {
+  Manifest m = read_manifest(dir);
+  m[command].status = status;
+  if (m[command].outputs.empty()) m[command].outputs = command_outputs(command);
+  write_manifest(dir, m);
+}
+
+}  // namespace flapsim::io

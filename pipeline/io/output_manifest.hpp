@@ -1,0 +1,40 @@
+#pragma once
+/// \file output_manifest.hpp
+/// \brief One run per output folder. Each command that writes into a folder (mesh, modes,
+/// reduce, run) records there, in DIR/flapsim_outputs.toml, which files it writes and
+/// whether it completed. Before it writes anything, a command claims the folder:
+///  - its own earlier outputs (listed in the manifest, or present under its names) are
+///    removed, so a rerun replaces the previous outputs entirely: no stale `.vtp` of a
+///    longer earlier run, no earlier summary.json next to an interrupted rerun;
+///  - if another command's outputs would be replaced (run and reduce both write
+///    summary.json), it refuses (io::OutputError, exit 4) unless forced (--force), which
+///    removes that command's outputs too.
+/// Commands that share no file name (mesh, modes and reduce of `make hawkmoth-model`)
+/// live side by side in one folder. Format: docs/output_files.md, "The output folder".
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace flapsim::io {
+
+/// The manifest's file name in an output folder.
+inline constexpr const char* kManifestName = "flapsim_outputs.toml";
+
+/// The outputs of a command: file names relative to the folder; a name may hold one '*'
+/// in its file part ("vtk/wing_*.vtp") for a series.
+std::vector<std::string> command_outputs(const std::string& command);
+
+/// \brief Claims \p dir for \p command (see the file comment).
+/// \param command  "mesh", "modes", "reduce" or "run"
+/// \param force    replace another command's outputs that clash with this command's
+/// \throws OutputError naming the folder and the clashing command if not forced, or if
+///         the folder or the manifest cannot be written
+void claim_output_folder(const std::filesystem::path& dir, const std::string& command, bool force);
+
+/// \brief Records in the manifest how \p command ended: "complete", "failed" or "interrupted".
+/// \throws OutputError
+void record_command_status(const std::filesystem::path& dir, const std::string& command,
+                           const std::string& status);
+
+}  // namespace flapsim::io

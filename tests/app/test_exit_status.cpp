@@ -1,0 +1,71 @@
+// The exit-status contract (README.md, "Exit status"): one test per status.
+// 0 ok, 1 usage, 2 bad input, 3 numerical failure, 4 output or system error,
+// 130/143 interrupted (test_run_signals.cpp).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "robustness_helpers.hpp"
+
+namespace fs = std::filesystem;
+using namespace flapsim::test;
+
+namespace {
+
+const std::string kTinyWing = kSourceDir + "/tests/data/valid_tiny_wing.toml";
+const std::string kTinyCase = kSourceDir + "/tests/data/valid_tiny_case.toml";
+
+TEST(ExitStatus, ZeroForSuccess) {
+  EXPECT_EQ(run_flapsim("check " + kTinyWing), 0);
+  EXPECT_EQ(run_flapsim("--help"), 0);
+}
+
+TEST(ExitStatus, OneForUsageErrorsOnly) {
+  EXPECT_EQ(run_flapsim("run"), 1);                            // missing CASE
+  EXPECT_EQ(run_flapsim("check " + kTinyWing + " --bogus"), 1);  // unknown option
+  EXPECT_EQ(run_flapsim("frobnicate"), 1);                     // unknown command
+}
+
+TEST(ExitStatus, TwoForBadInput) {
+  ScratchDir dir("exit_input");
+  EXPECT_EQ(run_flapsim("check " + (dir / "missing.toml").string()), 2);
+  EXPECT_EQ(run_flapsim("mesh " + (dir / "missing.toml").string() + " -o " + (dir / "out").string()), 2);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(ExitStatus, ThreeForANumericalFailureOfTheRun) {
+  // A two-body chain with almost no joint stiffness and a heavy tip (as in
+  // test_run_command.cpp): the implicit step fails and names the step.
+  ScratchDir dir("exit_numerical");
+  std::ofstream(dir / "chain.toml")
+      << "root = \"rigid\"\n"
+         "[[bodies]]\nlength = 0.02\nmass = 1e-5\ncenter_of_mass = [0, 0.01, 0]\n"
+         "inertia = [[4e-10,0,0],[0,1e-11,0],[0,0,4e-10]]\n"
+         "[[bodies]]\nlength = 0.02\nmass = 1e-3\ncenter_of_mass = [-0.02, 0.01, 0]\n"
+         "inertia = [[4e-8,0,0],[0,1e-12,0],[0,0,4e-8]]\n"
+         "[bodies.joint]\nbend_stiffness = 1e-12\ntwist_stiffness = 1e-12\n";
+  const std::string c = replace_once(small_plate_case("flexible", 40, 0), "steps_per_cycle = 24", "steps_per_cycle = 4");
+  std::ofstream(dir / "case.toml") << c;
+  const int status = run_flapsim("run " + (dir / "case.toml").string() + " --chain " + (dir / "chain.toml").string() +
+                                 " -o " + (dir / "out").string());
+  if (status == 0) GTEST_SKIP() << "the chain did not diverge";
+  EXPECT_EQ(status, 3);
+  EXPECT_NE(read_text(dir / "out" / "summary.json").find("\"status\": \"failed\""), std::string::npos);
+}
+
+TEST(ExitStatus, FourForAnUnwritableOutputFolderOfEveryCommand) {
+  // A regular file where the output folder should be: an output error (4), not blamed on
+  // the input file (the issue: mesh blamed the wing file, run exited 1).
+  ScratchDir dir("exit_output");
+  std::ofstream(dir / "file") << "x\n";
+  std::ofstream(dir / "case.toml") << small_plate_case();
+  const std::string out = " -o " + (dir / "file" / "sub").string();
+  EXPECT_EQ(run_flapsim("mesh " + kTinyWing + out), 4);
+  EXPECT_EQ(run_flapsim("modes " + kTinyWing + " --modes 4" + out), 4);
+  EXPECT_EQ(run_flapsim("reduce " + kTinyWing + " --bodies 2 --modes 4" + out), 4);
+  EXPECT_EQ(run_flapsim("run " + (dir / "case.toml").string() + out), 4);
+}
+
+}  // namespace

@@ -1,0 +1,106 @@
+// One run per output folder: a rerun removes the previous outputs of the same command,
+// another command's outputs are replaced only when forced.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/scratch_dir.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/output_manifest.hpp"
+
+namespace fs = std::filesystem;
+namespace io = flapsim::io;
+
+namespace {
+
+void touch(const fs::path& p) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << "x\n";
+}
+
+TEST(OutputManifest, ARerunRemovesEveryFileOfTheEarlierRun) {
+  // The issue: 270 stale .vtp after a shorter rerun, and an earlier summary.json saying
+  // "ok" next to an interrupted rerun.
+  flapsim::test::ScratchDir dir("manifest_rerun");
+  io::claim_output_folder(dir.path(), "run", false);
+  for (int i = 0; i < 270; ++i) touch(dir / ("vtk/wing_" + std::to_string(i) + ".vtp"));
+  touch(dir / "summary.json");
+  touch(dir / "history.csv");
+  touch(dir / "vtk/chain_000001.vtp.tmp.99");  // a temporary left by a killed run
+  touch(dir / "notes.txt");                    // not flapsim's: kept
+  touch(dir / "vtk/mine.txt");                 // not flapsim's: kept
+  io::record_command_status(dir.path(), "run", "complete");
+  io::claim_output_folder(dir.path(), "run", false);
+  EXPECT_FALSE(fs::exists(dir / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "history.csv"));
+  EXPECT_FALSE(fs::exists(dir / "vtk/wing_5.vtp"));
+  EXPECT_FALSE(fs::exists(dir / "vtk/chain_000001.vtp.tmp.99"));
+  EXPECT_TRUE(fs::exists(dir / "notes.txt"));
+  EXPECT_TRUE(fs::exists(dir / "vtk/mine.txt"));
+  const std::string manifest = [&] {
+    std::ifstream in(dir / io::kManifestName);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  EXPECT_NE(manifest.find("[run]"), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("running"), std::string::npos) << manifest;
+}
+
+TEST(OutputManifest, AnotherCommandsOutputsAreReplacedOnlyWhenForced) {
+  // run -o into a reduce folder replaced its summary.json.
+  flapsim::test::ScratchDir dir("manifest_clash");
+  io::claim_output_folder(dir.path(), "reduce", false);
+  for (const auto& f : io::command_outputs("reduce")) touch(dir / f);
+  io::record_command_status(dir.path(), "reduce", "complete");
+  try {
+    io::claim_output_folder(dir.path(), "run", false);
+    ADD_FAILURE() << "run claimed a reduce folder";
+  } catch (const io::OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("flapsim reduce"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--force"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(dir / "summary.json"));
+  EXPECT_TRUE(fs::exists(dir / "chain.toml"));
+  io::claim_output_folder(dir.path(), "run", true);
+  EXPECT_FALSE(fs::exists(dir / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "chain.toml"));  // the whole reduce output goes
+}
+
+TEST(OutputManifest, CommandsWithoutSharedNamesShareAFolder) {
+  // make hawkmoth-model: mesh, modes and reduce into out/hawkmoth.
+  flapsim::test::ScratchDir dir("manifest_share");
+  for (const char* c : {"mesh", "modes", "reduce"}) {
+    io::claim_output_folder(dir.path(), c, false);
+    for (const auto& f : io::command_outputs(c)) touch(dir / f);
+    io::record_command_status(dir.path(), c, "complete");
+  }
+  io::claim_output_folder(dir.path(), "mesh", false);  // rerun of mesh: only its files go
+  EXPECT_FALSE(fs::exists(dir / "mesh.msh"));
+  EXPECT_TRUE(fs::exists(dir / "fem.vtu"));
+  EXPECT_TRUE(fs::exists(dir / "chain.toml"));
+}
+
+TEST(OutputManifest, AFolderWithoutManifestIsJudgedByItsFiles) {
+  // Outputs of an older flapsim (no manifest): reduce's files make summary.json reduce's.
+  flapsim::test::ScratchDir dir("manifest_none");
+  touch(dir / "summary.json");
+  touch(dir / "chain.toml");
+  EXPECT_THROW(io::claim_output_folder(dir.path(), "run", false), io::OutputError);
+  // An older run folder: its own summary.json is replaced.
+  flapsim::test::ScratchDir run("manifest_none_run");
+  touch(run / "summary.json");
+  touch(run / "vtk/wing_000010.vtp");
+  io::claim_output_folder(run.path(), "run", false);
+  EXPECT_FALSE(fs::exists(run / "summary.json"));
+  EXPECT_FALSE(fs::exists(run / "vtk/wing_000010.vtp"));
+}
+
+TEST(OutputManifest, AnUnwritableFolderIsAnOutputError) {
+  // A regular file where the folder should be (independent of the user's permissions).
+  flapsim::test::ScratchDir dir("manifest_unwritable");
+  touch(dir / "file");
+  EXPECT_THROW(io::claim_output_folder(dir / "file" / "sub", "run", false), io::OutputError);
+}
+
+}  // namespace

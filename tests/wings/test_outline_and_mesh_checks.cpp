@@ -1,0 +1,122 @@
+// Outline CSV files (line of every error, bounded reading) and the checks that a wing can
+// be meshed before gmsh runs (no sliver outline, a mesh-size budget).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/scratch_dir.hpp"
+#include "wings/input_error.hpp"
+#include "wings/mesh_budget.hpp"
+#include "wings/outline_csv.hpp"
+#include "wings/toml_reader.hpp"
+#include "wings/wing_file.hpp"
+
+namespace w = flapsim::wings;
+using flapsim::InputError;
+
+namespace {
+
+template <typename F>
+InputError expect_input_error(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError thrown";
+  return InputError("", 0, "", "");
+}
+
+// A 40 x 10 mm rectangle with one vein; `outline` and `mesh` replace those parts.
+std::string wing_text(const std::string& outline, const std::string& mesh = "") {
+  return "name = \"t\"\nlength_unit = \"mm\"\n[planform]\n" + outline +
+         "clamp_y = 0.0\n"
+         "[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"
+         "[membrane]\nthickness = 0.05\nmaterial = \"film\"\n"
+         "[[veins]]\nname = \"spar\"\npoints = [[1.0, 0.0], [1.0, 30.0]]\nouter_diameter = [0.5, 0.3]\n"
+         "wall = [0.1, 0.05]\nmaterial = \"film\"\n" + mesh;
+}
+const std::string kRectangle = "outline = [[5.0, 0.0], [5.0, 40.0], [-5.0, 40.0], [-5.0, 0.0]]\n";
+
+TEST(OutlineCsv, EveryBadRowIsNamedByItsLine) {
+  flapsim::test::ScratchDir dir("outline_csv_lines");
+  std::ofstream(dir / "o.csv") << "# comment\nx,y\n0,0\n1,0.5\n1e-320,1\n";
+  auto e = expect_input_error([&] { w::read_outline_csv((dir / "o.csv").string(), "planform.outline_file"); });
+  EXPECT_EQ(e.file(), (dir / "o.csv").string());
+  EXPECT_EQ(e.line(), 5);  // the denormal on line 5
+  EXPECT_EQ(e.key(), "planform.outline_file");
+  std::ofstream(dir / "p.csv") << "x,y\n0,0\n1,0\n\n2,abc\n";
+  EXPECT_EQ(expect_input_error([&] { w::read_outline_csv((dir / "p.csv").string(), "k"); }).line(), 5);
+  const auto lines = w::read_outline_csv_lines(std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/hawkmoth1_outline.csv", "k");
+  EXPECT_EQ(lines.points.size(), lines.lines.size());
+}
+
+TEST(OutlineCsv, ASelfIntersectionIsReportedAtTheCsvLineOfItsEdge) {
+  // A bow tie: edge 0 (points 0-1, lines 2-3) crosses edge 2 (points 2-3).
+  flapsim::test::ScratchDir dir("outline_csv_bowtie");
+  std::ofstream(dir / "bow.csv") << "x,y\n0,0\n1,1\n0,1\n1,0\n";
+  std::ofstream(dir / "w.toml") << wing_text("outline_file = \"bow.csv\"\nspan = 40.0\n");
+  auto e = expect_input_error([&] { w::load_wing_file((dir / "w.toml").string()); });
+  EXPECT_EQ(e.file(), (dir / "bow.csv").lexically_normal().string()) << e.what();
+  EXPECT_GE(e.line(), 2) << e.what();
+  EXPECT_EQ(e.key(), "planform.outline_file");
+}
+
+TEST(OutlineCsv, DevicesAndHugeFilesAreRefusedWithoutReading) {
+  // /dev/zero read without bound (the issue); now refused at once as not a regular file.
+  const auto start = std::chrono::steady_clock::now();
+  auto e = expect_input_error([&] { w::read_outline_csv("/dev/zero", "planform.outline_file"); });
+  EXPECT_NE(e.message().find("not a regular file"), std::string::npos) << e.what();
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+  flapsim::test::ScratchDir dir("outline_csv_huge");
+  {
+    std::ofstream big(dir / "big.csv");
+    const std::string row = "0.5,0.5\n";
+    for (std::size_t n = 0; n <= w::kMaxOutlineFileBytes / row.size(); ++n) big << row;
+  }
+  e = expect_input_error([&] { w::read_outline_csv((dir / "big.csv").string(), "k"); });
+  EXPECT_NE(e.message().find("larger than"), std::string::npos) << e.what();
+}
+
+TEST(MeshChecks, ASliverOutlinePassesNoLongerAndNamesTheOutline) {
+  // The issue's outline [[0,0],[1e-15,20],[0,40]]: aspect ratio R^2/S = 40^2 / (0.5 * 40 * 1e-15)
+  // = 8e16, accepted by check and then fatal to gmsh.
+  auto e = expect_input_error([&] {
+    w::read_wing(w::parse_toml_string(wing_text("outline = [[0,0],[1e-15,20],[0,40]]\n"), "s.toml"));
+  });
+  EXPECT_EQ(e.key(), "planform.outline") << e.what();
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_NE(e.message().find("sliver"), std::string::npos) << e.what();
+}
+
+TEST(MeshChecks, EstimatedElementCountFollowsAreaOverTriangleArea) {
+  // 40 x 10 mm rectangle, h = h_v = 1 mm: S / (sqrt(3)/4 h^2) = 400 / 0.4330 = 923.8
+  // membrane triangles, plus the vein band 2 * 30 mm * (0.5 + 3) mm = 210 mm^2 at the same
+  // size (485.0) and 30 vein elements.
+  const w::Wing wing = w::read_wing(
+      w::parse_toml_string(wing_text(kRectangle, "[mesh]\nelement_size = 1.0\n"), "r.toml"));
+  const double tri = std::sqrt(3.0) / 4.0;
+  EXPECT_NEAR(w::estimated_mesh_elements(wing), 400.0 / tri + 210.0 / tri + 30.0, 1e-6);
+}
+
+TEST(MeshChecks, ATinyElementSizeIsRefusedBeforeMeshing) {
+  // element_size = 1e-6 mm aborted with std::bad_alloc; 0.01 mm meshed for minutes.
+  for (const char* h : {"1e-6", "0.01"}) {
+    auto e = expect_input_error([&] {
+      w::read_wing(w::parse_toml_string(wing_text(kRectangle, std::string("[mesh]\nelement_size = ") + h + "\n"),
+                                        "r.toml"));
+    });
+    EXPECT_EQ(e.key(), "mesh.element_size") << e.what();
+    EXPECT_EQ(e.line(), 20) << e.what();
+    EXPECT_NE(e.message().find("budget"), std::string::npos) << e.what();
+  }
+  // The shipped wings stay well inside the budget.
+  const w::Wing hawkmoth = w::load_wing_file(std::string(FLAPSIM_SOURCE_DIR) + "/wings/hawkmoth.toml");
+  EXPECT_LT(w::estimated_mesh_elements(hawkmoth), 0.1 * w::kMaxMeshElements);
+}
+
+}  // namespace

@@ -1,0 +1,17 @@
+# tools/case.mk — the case of `make run CASE=...` and `make phase-study CASE=...`
+# (default cases/hover_flexible.toml). Included by the top-level Makefile before
+# tools/model.mk: a flexible case without its own chain file runs with the chain of its
+# wing's model, so its wing becomes the WING of `make model` (out/<wing>/chain.toml).
+
+CASE ?= cases/hover_flexible.toml
+
+CASE_GOALS := run run-pipeline phase-study
+ifneq ($(filter $(CASE_GOALS),$(MAKECMDGOALS)),)
+$(foreach v,$(shell /usr/bin/python3 tools/toml_inputs.py case $(CASE)),$(eval $(v)))
+ifeq ($(CASE_KIND):$(CASE_CHAIN),flexible:)
+ifneq ($(CASE_WING),)
+WING ?= $(CASE_WING)
+CASE_NEEDS_MODEL := 1
+endif
+endif
+endif
