@@ -14,14 +14,16 @@ ChainData::ChainData(const ChainModel& model) {
   inertial_bias = Eigen::VectorXd::Zero(n);
   spring_force = Eigen::VectorXd::Zero(n);
   generalized_load = Eigen::VectorXd::Zero(n);
-  stiffness = model.stiffness_diagonal();
-  damping = model.damping_diagonal();
+  stiffness = model.stiffness();
+  damping = model.damping();
+  stiffness_abs = stiffness.cwiseAbs();
   rest = model.rest_angles();
+  deflection = Eigen::VectorXd::Zero(n);
   inertia_times_jacobian = Eigen::MatrixXd::Zero(3, n);
   step.jacobian = Eigen::MatrixXd::Zero(n, n);
   step.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
   for (Eigen::VectorXd* v : {&step.x, &step.dx, &step.r, &step.r_new, &step.dr, &step.jdx, &step.q,
-                             &step.v, &step.a, &step.scratch})
+                             &step.v, &step.a, &step.scratch, &step.scratch2})
     *v = Eigen::VectorXd::Zero(n);
 }
 

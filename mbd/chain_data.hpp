@@ -42,7 +42,7 @@ struct StepWorkspace {
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
   bool jacobian_valid = false;
   double jacobian_dt = 0.0;             ///< step size the Jacobian was built for [s]
-  Eigen::VectorXd x, dx, r, r_new, dr, jdx, q, v, a, scratch;
+  Eigen::VectorXd x, dx, r, r_new, dr, jdx, q, v, a, scratch, scratch2;
   int last_iterations = 0;              ///< quasi-Newton iterations of the last step
   int last_refreshes = 0;               ///< Jacobian rebuilds in the last step
   long total_refreshes = 0;             ///< Jacobian rebuilds since construction
@@ -56,7 +56,10 @@ struct ChainData {
   Eigen::VectorXd inertial_bias;    ///< velocity-product and base-motion terms of H [N m]
   Eigen::VectorXd spring_force;     ///< K(Φ − Φ_rest) + C Φ̇ [N m]
   Eigen::VectorXd generalized_load; ///< Q from the Loads and gravity [N m]
-  Eigen::VectorXd stiffness, damping, rest;  ///< copies of the model's diagonals
+  Eigen::MatrixXd stiffness, damping;  ///< copies of the model's K and C (full)
+  Eigen::MatrixXd stiffness_abs;       ///< |K| entry by entry (round-off bound of K Φ)
+  Eigen::VectorXd rest;                ///< the model's rest angles [rad]
+  Eigen::VectorXd deflection;          ///< scratch Φ − Φ_rest [rad]
   Eigen::MatrixXd inertia_times_jacobian;    ///< 3 × n scratch for the mass matrix
   StepWorkspace step;
 };

@@ -33,7 +33,10 @@ void compute_mass_matrix_and_bias(const ChainModel& model, ChainData& data) {
 
 void compute_spring_forces(const ChainModel& model, ChainData& data, const Eigen::VectorXd& q,
                            const Eigen::VectorXd& v) {
-  data.spring_force = data.stiffness.cwiseProduct(q - data.rest) + data.damping.cwiseProduct(v);
+  // Full matrices (bend–twist and joint-to-joint coupling); no heap temporaries.
+  data.deflection = q - data.rest;
+  data.spring_force.noalias() = data.stiffness * data.deflection;
+  data.spring_force.noalias() += data.damping * v;
 }
 
 void compute_all_terms(const ChainModel& model, ChainData& data, const BasePose& base,

@@ -4,7 +4,7 @@
 /// the mass matrix M = Σ J_vᵀ m J_v + J_ωᵀ I J_ω (the composite-rigid-body matrix,
 /// assembled from the body Jacobians), the inertial bias of H by Newton–Euler with the
 /// bias accelerations of forward_kinematics (base ω, ω̇ included), and the springs
-/// and dampers K(Φ − Φ_rest) + C Φ̇.
+/// and dampers K(Φ − Φ_rest) + C Φ̇ with the full K and C of the model.
 
 #include "mbd/base_motion.hpp"
 #include "mbd/chain_data.hpp"

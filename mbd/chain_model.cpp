@@ -8,22 +8,36 @@
 
 namespace flapsim::mbd {
 
-Eigen::VectorXd ChainModel::stiffness_diagonal() const {
+Eigen::MatrixXd ChainModel::stiffness() const {
+  if (stiffness_matrix.size() > 0) return stiffness_matrix;
   Eigen::VectorXd k(num_dofs());
   for (int b = first_jointed_body(); b < num_bodies(); ++b) {
     k(dof_of_body(b)) = joints[b].bend_stiffness;
     k(dof_of_body(b) + 1) = joints[b].twist_stiffness;
   }
-  return k;
+  return k.asDiagonal();
 }
 
-Eigen::VectorXd ChainModel::damping_diagonal() const {
+Eigen::MatrixXd ChainModel::damping() const {
+  if (damping_matrix.size() > 0) return damping_matrix;
   Eigen::VectorXd c(num_dofs());
   for (int b = first_jointed_body(); b < num_bodies(); ++b) {
     c(dof_of_body(b)) = joints[b].bend_damping;
     c(dof_of_body(b) + 1) = joints[b].twist_damping;
   }
-  return c;
+  return c.asDiagonal();
+}
+
+Eigen::VectorXd ChainModel::stiffness_diagonal() const { return stiffness().diagonal(); }
+
+Eigen::VectorXd ChainModel::damping_diagonal() const { return damping().diagonal(); }
+
+void ChainModel::scale_stiffness(double factor) {
+  for (auto& j : joints) {
+    j.bend_stiffness *= factor;
+    j.twist_stiffness *= factor;
+  }
+  stiffness_matrix *= factor;
 }
 
 Eigen::VectorXd ChainModel::rest_angles() const {
@@ -54,9 +68,13 @@ void ChainModel::validate() const {
     fail("root rotation is not a proper rotation matrix");
   for (int i = 0; i < num_bodies(); ++i) {
     const ChainBody& b = bodies[i];
-    const std::string name = "body " + std::to_string(i) + ": ";
+    const std::string name = "body " + std::to_string(i + 1) + ": ";  // 1-based, as in the chain file
     if (!(b.length > 0.0) || !std::isfinite(b.length)) fail(name + "length must be > 0");
-    if (!(b.mass > 0.0) || !std::isfinite(b.mass)) fail(name + "mass must be > 0");
+    // A welded body may be massless (the part of the span inside a root clamp that the
+    // wing does not reach, e.g. the robofly's); a moving body needs mass.
+    const bool welded = i < first_jointed_body();
+    if (!std::isfinite(b.mass) || !(welded ? b.mass >= 0.0 : b.mass > 0.0))
+      fail(name + (welded ? "mass must be >= 0" : "mass must be > 0"));
     if (!b.center_of_mass.allFinite() || !b.outboard_joint.allFinite() || !b.inertia.allFinite())
       fail(name + "non-finite centre of mass, outboard joint or inertia");
     const double scale = b.inertia.norm();
@@ -68,9 +86,30 @@ void ChainModel::validate() const {
     if (p(0) + p(1) < p(2) * (1.0 - 1e-9))
       fail(name + "principal moments violate the triangle inequality I1 + I2 >= I3");
   }
+  if (root == RootAttachment::rigid && (welded_bodies < 1 || welded_bodies > num_bodies()))
+    fail("welded bodies must be between 1 and the number of bodies (" + std::to_string(num_bodies()) +
+         "), got " + std::to_string(welded_bodies));
+  const int n = num_dofs();
+  auto check_matrix = [&](const Eigen::MatrixXd& m, const std::string& what) {
+    if (m.size() == 0) return;
+    if (m.rows() != n || m.cols() != n)
+      fail(what + " must be " + std::to_string(n) + " x " + std::to_string(n) + " (2 per joint), got " +
+           std::to_string(m.rows()) + " x " + std::to_string(m.cols()));
+    if (!m.allFinite()) fail(what + " has non-finite entries");
+    const double scale = m.cwiseAbs().maxCoeff();
+    if ((m - m.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) fail(what + " is not symmetric");
+    if (n > 0) {
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (m + m.transpose()), Eigen::EigenvaluesOnly);
+      if (es.eigenvalues()(0) < -1e-10 * scale)
+        fail(what + " is not positive semi-definite (smallest eigenvalue " +
+             std::to_string(es.eigenvalues()(0)) + ")");
+    }
+  };
+  check_matrix(stiffness_matrix, "stiffness matrix");
+  check_matrix(damping_matrix, "damping matrix");
   for (int k = first_jointed_body(); k < num_bodies(); ++k) {
     const ChainJoint& j = joints[k];
-    const std::string name = "joint " + std::to_string(k) + ": ";
+    const std::string name = "joint " + std::to_string(k + 1) + ": ";  // joint k+1 is inboard of body k+1
     if (!(j.bend_stiffness >= 0.0) || !(j.twist_stiffness >= 0.0) || !std::isfinite(j.bend_stiffness) ||
         !std::isfinite(j.twist_stiffness))
       fail(name + "spring stiffness must be finite and >= 0");

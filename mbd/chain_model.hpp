@@ -19,7 +19,9 @@
 ///
 /// Root attachment. Rigid (the papers): body 0 is welded to the root frame, so
 /// Φ = [θ₁, α₁, …, θ_{N−1}, α_{N−1}] (0-based; [θ₂, α₂, …] in the papers' 1-based
-/// numbering). Sprung (a Hencky cantilever, the reduction stage): joint 0 joins the
+/// numbering). With `welded_bodies` = w > 1 (a wing clamped over more than the first
+/// body, e.g. the robofly's root edge) bodies 0 … w−1 are all welded and Φ starts at
+/// joint w. Sprung (a Hencky cantilever, the reduction stage): joint 0 joins the
 /// root frame to body 0 with its own springs (2EI/a for a uniform beam) and
 /// Φ = [θ₀, α₀, …].
 
@@ -39,7 +41,9 @@ struct ChainBody {
   Eigen::Vector3d outboard_joint = Eigen::Vector3d::Zero();  ///< next joint [m]; usually (0, length, 0)
 };
 
-/// The joint inboard of a body: two rotational springs with optional dampers.
+/// The joint inboard of a body: two rotational springs with optional dampers. When the
+/// chain has a full stiffness (ChainModel::stiffness_matrix) the springs here are not
+/// used; the dampers and rest angles are used unless a damping matrix is given.
 struct ChainJoint {
   double bend_stiffness = 0.0;    ///< k_θ [N m/rad]
   double twist_stiffness = 0.0;   ///< k_α [N m/rad]
@@ -60,6 +64,15 @@ struct ChainModel {
   /// joints[0] is not used.
   std::vector<ChainJoint> joints;
   RootAttachment root = RootAttachment::rigid;
+  /// Bodies welded to the root frame with a rigid root (≥ 1; ignored for a sprung root).
+  int welded_bodies = 1;
+  /// Full joint stiffness K over Φ [N m/rad]: the elastic energy is
+  /// ½ (Φ − Φ_rest)ᵀ K (Φ − Φ_rest), with bend–twist and joint-to-joint coupling
+  /// (docs/multibody.md, "Joint stiffness"). Empty: the diagonal of the joints' springs.
+  Eigen::MatrixXd stiffness_matrix;
+  /// Full damping C over Φ [N m s/rad] (Rayleigh dissipation ½ Φ̇ᵀ C Φ̇). Empty: the
+  /// diagonal of the joints' dampers.
+  Eigen::MatrixXd damping_matrix;
   Eigen::Vector3d root_offset = Eigen::Vector3d::Zero();      ///< root point in W [m]
   Eigen::Matrix3d root_rotation = Eigen::Matrix3d::Identity();  ///< R_WR
   /// Gravity in the ground frame [m/s²]. Default off: the papers flap in vacuum and
@@ -69,7 +82,9 @@ struct ChainModel {
 
   int num_bodies() const { return static_cast<int>(bodies.size()); }
   /// First body with a joint (its own dofs): 1 for a rigid root, 0 for a sprung one.
-  int first_jointed_body() const { return root == RootAttachment::rigid ? 1 : 0; }
+  int first_jointed_body() const {
+    return root == RootAttachment::rigid ? (welded_bodies > 1 ? welded_bodies : 1) : 0;
+  }
   /// Number of generalized coordinates, 2 per jointed body.
   int num_dofs() const { return 2 * (num_bodies() - first_jointed_body()); }
   /// Index of θ of the joint inboard of `body` in Φ (α is the next one); −1 if none.
@@ -77,18 +92,27 @@ struct ChainModel {
     return body < first_jointed_body() ? -1 : 2 * (body - first_jointed_body());
   }
 
-  /// Spring stiffnesses k_θ, k_α as a diagonal over Φ [N m/rad].
+  /// The joint stiffness K over Φ: stiffness_matrix, or the joints' k_θ, k_α on the
+  /// diagonal [N m/rad].
+  Eigen::MatrixXd stiffness() const;
+  /// The damping C over Φ: damping_matrix, or the joints' c_θ, c_α on the diagonal [N m s/rad].
+  Eigen::MatrixXd damping() const;
+  /// Diagonal of stiffness() [N m/rad].
   Eigen::VectorXd stiffness_diagonal() const;
-  /// Damping c_θ, c_α over Φ [N m s/rad].
+  /// Diagonal of damping() [N m s/rad].
   Eigen::VectorXd damping_diagonal() const;
+  /// Multiplies every spring (the joints' and the full matrix) by \p factor (> 0).
+  void scale_stiffness(double factor);
   /// Rest angles over Φ [rad].
   Eigen::VectorXd rest_angles() const;
 
   /// Total mass [kg].
   double total_mass() const;
 
-  /// Checks sizes, positive masses and lengths, symmetric positive semi-definite
-  /// inertia satisfying the triangle inequality, non-negative springs and dampers.
+  /// Checks sizes, positive masses (≥ 0 for welded bodies) and lengths, symmetric positive semi-definite
+  /// inertia satisfying the triangle inequality, non-negative springs and dampers,
+  /// and full stiffness and damping matrices (when given) of size num_dofs, symmetric
+  /// and positive semi-definite.
   /// \throws std::invalid_argument naming the body or joint
   void validate() const;
 };

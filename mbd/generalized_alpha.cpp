@@ -78,15 +78,15 @@ struct StepProblem {
     ws.scratch.noalias() = data.mass_matrix * x;
     r = ws.scratch + data.inertial_bias + data.spring_force - data.generalized_load;
     // Force scale: the size of the terms that make up r, so that the tolerance is
-    // relative; plus a round-off floor: K∘|Φ| (not K∘|Φ − Φ_rest|) bounds the round-off
+    // relative; plus a round-off floor: |K| |Φ| (not |K| |Φ − Φ_rest|) bounds the round-off
     // of the spring term, which matters for tiny motions about a bent rest shape.
     const double terms = ws.scratch.lpNorm<Eigen::Infinity>() +
                          data.inertial_bias.lpNorm<Eigen::Infinity>() +
                          data.spring_force.lpNorm<Eigen::Infinity>() +
                          data.generalized_load.lpNorm<Eigen::Infinity>();
-    roundoff = 1e3 * std::numeric_limits<double>::epsilon() *
-               (terms + data.stiffness.cwiseProduct(ws.q.cwiseAbs() + data.rest.cwiseAbs())
-                            .lpNorm<Eigen::Infinity>());
+    ws.scratch = ws.q.cwiseAbs() + data.rest.cwiseAbs();
+    ws.scratch2.noalias() = data.stiffness_abs * ws.scratch;
+    roundoff = 1e3 * std::numeric_limits<double>::epsilon() * (terms + ws.scratch2.lpNorm<Eigen::Infinity>());
     return terms;
   }
 

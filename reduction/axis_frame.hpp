@@ -1,7 +1,8 @@
 #pragma once
 /// \file axis_frame.hpp
-/// \brief The flexural-axis frame of the reduction: a straight line through the
-/// pivot (wing-frame origin) in the wing plane, at an angle ψ to y_W
+/// \brief The flexural-axis frame of the reduction: a straight line in the wing plane
+/// at an angle ψ to y_W, passing the pivot (wing-frame origin) at the chordwise
+/// offset n₀ (zero: through the pivot)
 /// (docs/reduction.md, "Frames and the flexural axis").
 
 #include <Eigen/Core>
@@ -14,7 +15,8 @@ namespace flapsim::reduction {
 /// the leading edge, e_z = e_n × e_s = z_W. Body frames of the chain are this frame
 /// translated to each joint (body x = e_n, body y = e_s).
 struct AxisFrame {
-  double psi = 0.0;  ///< angle from y_W toward +x_W [rad]
+  double psi = 0.0;     ///< angle from y_W toward +x_W [rad]
+  double offset = 0.0;  ///< n₀: the line's point nearest the pivot is n₀ e_n [m]
 
   /// Unit vector along the axis, in W.
   Eigen::Vector3d e_s() const { return {std::sin(psi), std::cos(psi), 0.0}; }
@@ -33,10 +35,10 @@ struct AxisFrame {
   /// Span coordinate s of a point in W [m].
   double s(const Eigen::Vector3d& p) const { return p.dot(e_s()); }
   /// Chordwise coordinate n (from the axis, + toward the leading edge) [m].
-  double n(const Eigen::Vector3d& p) const { return p.dot(e_n()); }
+  double n(const Eigen::Vector3d& p) const { return p.dot(e_n()) - offset; }
   /// The point (s, n, z) of the axis frame, in W [m].
   Eigen::Vector3d point(double s, double n, double z = 0.0) const {
-    return s * e_s() + n * e_n() + z * e_z();
+    return s * e_s() + (n + offset) * e_n() + z * e_z();
   }
 };
 

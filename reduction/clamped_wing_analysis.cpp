@@ -1,5 +1,10 @@
 #include "reduction/clamped_wing_analysis.hpp"
 
+#include <Eigen/QR>
+
+#include "reduction/joint_stiffness.hpp"
+#include "reduction/station_compliance.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -67,6 +72,28 @@ ClampedWingAnalysis::ClampedWingAnalysis(const fem::Mesh& mesh, const fem::Assem
     }
     const double psi = den > 0.0 ? std::atan(num / den) : 0.0;
     setup_frame(AxisFrame{psi}, zone_length);
+    solve_load_cases();
+  } else if (options.axis == AxisChoice::flexural) {
+    // Stations on the span (ψ = 0) frame, each over its whole strip; the flexural axis
+    // of each from the station compliance (n_fa = C_φw / C_φφ, joint_stiffness.hpp);
+    // the line n = n₀ + s tan ψ through them by least squares (weights: strip length).
+    const int ns = std::max(options.flexural_axis_stations, 3);
+    const double a = (s_tip_ - s_root_) / ns;
+    std::vector<double> positions;
+    for (int k = 0; k < ns; ++k) positions.push_back(s_root_ + a * (k + 0.5));
+    const StationCompliance st = station_compliance(*this, positions, 0.5 * a);
+    const std::vector<double> nfa = flexural_axis_offsets(st.compliance);
+    Eigen::MatrixX2d b(ns, 2);
+    Eigen::VectorXd y(ns);
+    for (int k = 0; k < ns; ++k) {
+      b.row(k) << 1.0, positions[static_cast<std::size_t>(k)];
+      y[k] = nfa[static_cast<std::size_t>(k)];
+    }
+    const Eigen::Vector2d c = b.colPivHouseholderQr().solve(y);  // n = c₀ + c₁ s in the ψ = 0 frame
+    AxisFrame f;
+    f.psi = std::atan(c[1]);
+    f.offset = c[0] * std::cos(f.psi);  // distance of the line from the pivot along e_n
+    setup_frame(f, zone_length);
     solve_load_cases();
   }
 }

@@ -24,15 +24,17 @@ namespace flapsim::reduction {
 
 /// How the flexural axis is chosen.
 enum class AxisChoice {
-  fitted,  ///< least-squares line through the pivot and the per-cell elastic-axis points
-  span,    ///< y_W itself (ψ = 0)
-  given,   ///< AnalysisOptions::psi
+  fitted,    ///< least-squares line through the pivot and the per-cell elastic-axis points
+  flexural,  ///< least-squares line n = n₀ + s tan ψ through the stations' flexural axes
+  span,      ///< y_W itself (ψ = 0)
+  given,     ///< AnalysisOptions::psi
 };
 
 struct AnalysisOptions {
   AxisChoice axis = AxisChoice::fitted;
   double psi = 0.0;                   ///< axis angle for AxisChoice::given [rad]
   int axis_fit_cells = 20;            ///< cells of the first (ψ = 0) pass for the axis fit
+  int flexural_axis_stations = 10;    ///< stations of the flexural-axis fit (AxisChoice::flexural)
   double tip_zone_fraction = 0.025;    ///< loaded tip zone, fraction of the span [-]
   double unit_moment = 1e-6;          ///< magnitude of the load cases [N m] (linear: any value)
   double unit_force = 1e-4;           ///< [N]
@@ -84,6 +86,9 @@ class ClampedWingAnalysis {
   /// FEM mass matrix and stiffness (for strip sums and modes).
   const fem::AssembledSystem& system() const { return *system_; }
   const fem::Constraints& constraints() const { return *constraints_; }
+  /// Static displacements of the clamped FEM for the loads \p loads (one column per
+  /// case, full DOF numbering), from the analysis's one factorisation [m, rad].
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& loads) const { return solver_->solve(loads); }
 
   /// \brief A section sampler at axis positions \p sections, band half-width at least
   /// \p half_width and four element sizes.
@@ -108,6 +113,7 @@ class ClampedWingAnalysis {
   AnalysisOptions options_;
   std::unique_ptr<fem::StaticSolver> solver_;  // one factorisation for both passes
   Eigen::Matrix3Xd nodes_;
+
   std::vector<bool> clamped_;
   AxisFrame axis_;
   Eigen::VectorXd s_, n_;

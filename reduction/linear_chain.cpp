@@ -1,6 +1,7 @@
 #include "reduction/linear_chain.hpp"
 #include "reduction/skew.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
@@ -20,7 +21,7 @@ LinearChain::LinearChain(const mbd::ChainModel& chain) : chain_(&chain) {
   for (int k = 1; k < nb; ++k)
     joints_[static_cast<std::size_t>(k)] =
         joints_[static_cast<std::size_t>(k - 1)] + chain.bodies[static_cast<std::size_t>(k - 1)].outboard_joint;
-  stiffness_ = chain.stiffness_diagonal();
+  stiffness_ = chain.stiffness();
   const int n = chain.num_dofs();
   mass_ = Eigen::MatrixXd::Zero(n, n);
   // Body k's spatial velocity about its origin: v = Σ_j q̇_j e_j × (r_k − r_j), ω = Σ_j q̇_j e_j.
@@ -59,8 +60,7 @@ std::vector<ChainMode> LinearChain::modes() const {
   const int n = num_dofs();
   std::vector<ChainMode> out;
   if (n == 0) return out;
-  const Eigen::MatrixXd k = stiffness_.asDiagonal();
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(k, mass_);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness_, mass_);
   if (solver.info() != Eigen::Success)
     throw std::runtime_error("LinearChain: eigenvalue problem of the chain failed");
   for (int i = 0; i < n; ++i) {
@@ -68,13 +68,10 @@ std::vector<ChainMode> LinearChain::modes() const {
     const double lambda = std::max(solver.eigenvalues()[i], 0.0);
     m.frequency_hz = std::sqrt(lambda) / (2.0 * std::numbers::pi);
     m.shape = solver.eigenvectors().col(i);
-    double e_bend = 0.0, e_all = 0.0;
-    for (int d = 0; d < n; ++d) {
-      const double e = stiffness_[d] * m.shape[d] * m.shape[d];
-      e_all += e;
-      if (d % 2 == 0) e_bend += e;
-    }
-    m.bending_energy_fraction = e_all > 0.0 ? e_bend / e_all : 0.0;
+    Eigen::VectorXd bend = m.shape, twist = m.shape;
+    for (int d = 0; d < n; ++d) (d % 2 == 0 ? twist : bend)[d] = 0.0;
+    const double e_bend = bend.dot(stiffness_ * bend), e_twist = twist.dot(stiffness_ * twist);
+    m.bending_energy_fraction = e_bend + e_twist > 0.0 ? e_bend / (e_bend + e_twist) : 0.0;
     out.push_back(std::move(m));
   }
   return out;
@@ -94,13 +91,10 @@ Eigen::VectorXd LinearChain::generalized_force(int body, const Eigen::Vector3d& 
 }
 
 Eigen::VectorXd LinearChain::static_response(const Eigen::VectorXd& generalized_force) const {
-  Eigen::VectorXd q(num_dofs());
-  for (int d = 0; d < num_dofs(); ++d) {
-    if (!(stiffness_[d] > 0.0))
-      throw std::runtime_error("LinearChain: joint DOF " + std::to_string(d) + " has no spring");
-    q[d] = generalized_force[d] / stiffness_[d];
-  }
-  return q;
+  Eigen::LLT<Eigen::MatrixXd> llt(stiffness_);
+  if (llt.info() != Eigen::Success)
+    throw std::runtime_error("the chain's joint stiffness is not positive definite: no static response");
+  return llt.solve(generalized_force);
 }
 
 Eigen::Vector3d LinearChain::displacement(int body, const Eigen::Vector3d& point,

@@ -21,7 +21,8 @@ namespace flapsim::reduction {
 struct ChainMode {
   double frequency_hz = 0.0;  ///< [Hz]
   Eigen::VectorXd shape;      ///< over Φ, mass-normalised
-  double bending_energy_fraction = 0.0;  ///< share of spring energy in the θ springs [-]
+  /// Share of the spring energy in the θ block of K, θᵀK_θθθ / (θᵀK_θθθ + αᵀK_ααα) [-].
+  double bending_energy_fraction = 0.0;
   bool is_bending() const { return bending_energy_fraction >= 0.5; }
 };
 
@@ -31,11 +32,11 @@ class LinearChain {
   /// \throws std::invalid_argument if the chain is not straight at rest or invalid
   explicit LinearChain(const mbd::ChainModel& chain);
 
-  int num_dofs() const { return static_cast<int>(stiffness_.size()); }
+  int num_dofs() const { return static_cast<int>(stiffness_.rows()); }
   /// Linearised mass matrix M_c = Σ_k J_kᵀ R_k J_k [kg m²].
   const Eigen::MatrixXd& mass_matrix() const { return mass_; }
-  /// Spring stiffnesses over Φ [N m/rad].
-  const Eigen::VectorXd& stiffness() const { return stiffness_; }
+  /// Joint stiffness over Φ (full) [N m/rad].
+  const Eigen::MatrixXd& stiffness() const { return stiffness_; }
   /// Rest position of body k's inboard joint in R [m].
   const Eigen::Vector3d& joint_position(int body) const {
     return joints_[static_cast<std::size_t>(body)];
@@ -66,7 +67,7 @@ class LinearChain {
   const mbd::ChainModel* chain_ = nullptr;
   std::vector<Eigen::Vector3d> joints_;
   Eigen::MatrixXd mass_;
-  Eigen::VectorXd stiffness_;
+  Eigen::MatrixXd stiffness_;
 };
 
 }  // namespace flapsim::reduction

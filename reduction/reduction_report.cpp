@@ -32,9 +32,14 @@ ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
     out.chain_hz.push_back(m.frequency_hz);
     out.chain_kinds.push_back(m.is_bending() ? "bending" : "torsion");
   }
+  // FEM modes named from the motion of the chain's stations (film modes are not beam modes).
+  const std::vector<StationModeMeasures> station_kinds = classify_modes_by_stations(lumped, modes.shapes);
   for (Eigen::Index i = 0; i < modes.frequencies_hz.size(); ++i) {
+    const auto& sk = station_kinds[static_cast<std::size_t>(i)];
     out.fem_hz.push_back(modes.frequencies_hz[i]);
-    out.fem_kinds.push_back(i < static_cast<Eigen::Index>(kinds.size()) ? fem::to_string(kinds[static_cast<std::size_t>(i)]) : "?");
+    out.fem_kinds.push_back(to_string(sk.kind));
+    out.fem_shape_kinds.push_back(i < static_cast<Eigen::Index>(kinds.size()) ? fem::to_string(kinds[static_cast<std::size_t>(i)]) : "?");
+    out.fem_beam_share.push_back(sk.beam_share);
   }
 
   // Sample points: two per body at its mid-span, at the leading and trailing nodes of the band.
@@ -60,10 +65,10 @@ ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
     }
     return v;
   };
-  auto match = [&](fem::ModeKind kind, bool bending) {
+  auto match = [&](StationModeKind kind, bool bending) {
     ModeMatch mm;
-    for (std::size_t i = 0; i < kinds.size(); ++i)
-      if (kinds[i] == kind) {
+    for (std::size_t i = 0; i < station_kinds.size(); ++i)
+      if (station_kinds[i].kind == kind) {
         mm.fem_mode = static_cast<int>(i);
         break;
       }
@@ -81,8 +86,8 @@ ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
                              chain_samples(cmodes[static_cast<std::size_t>(mm.chain_mode)].shape));
     return mm;
   };
-  out.bending = match(fem::ModeKind::Bending, true);
-  out.torsion = match(fem::ModeKind::Torsion, false);
+  out.bending = match(StationModeKind::bending, true);
+  out.torsion = match(StationModeKind::torsion, false);
 
   // Statics at the inboard edge of the loaded tip zone, the same wrenches on both.
   const TipZone& zone = analysis.tip_zone();

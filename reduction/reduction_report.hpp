@@ -11,6 +11,7 @@
 #include "fem/mode_classification.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/linear_chain.hpp"
+#include "reduction/station_mode_kind.hpp"
 
 namespace flapsim::reduction {
 
@@ -39,7 +40,9 @@ struct ChainFemComparison {
   StaticMatch tip_bending_rotation; ///< θ under the tip bending moment
   StaticMatch tip_twist;            ///< φ under the tip torque
   std::vector<double> fem_hz;       ///< all FEM modes [Hz]
-  std::vector<std::string> fem_kinds;
+  std::vector<std::string> fem_kinds;        ///< from the stations: "bending", "torsion", "film"
+  std::vector<std::string> fem_shape_kinds;  ///< fem::classify_modes (strip fits of the whole shape)
+  std::vector<double> fem_beam_share;        ///< share of u_z the stations' rigid sections carry [-]
   std::vector<double> chain_hz;     ///< all chain modes [Hz]
   std::vector<std::string> chain_kinds;  ///< "bending" / "torsion" by spring energy
 };
@@ -48,7 +51,8 @@ struct ChainFemComparison {
 /// \param analysis  the clamped FEM with its load cases
 /// \param lumped    the chain lumped from it
 /// \param modes     clamped-root FEM modes (fem::wing_modes or fem::solve_modes)
-/// \param kinds     the FEM's classification of each mode
+/// \param kinds     the FEM's shape classification of each mode (reported beside the
+///                  stations' kinds, which decide the first bending and torsion modes)
 ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
                                           const LumpedChain& lumped, const fem::ModalResult& modes,
                                           const std::vector<fem::ModeKind>& kinds);

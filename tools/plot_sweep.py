@@ -3,7 +3,7 @@
 of a sweep.csv, the mean lift against that key — and the mean aerodynamic power, when the
 table has a power column — with one line per combination of the other varied keys.
 
-  sweep_<key>.png   one figure per varied key
+  sweep_<key>.png, sweep_<key>.pdf   one figure per varied key (PNG 200 dpi, PDF vector)
 
 The varied keys are the leading columns of sweep.csv: case keys and wing keys are dotted
 (kinematics.rotation_phase, wing.membrane.thickness), and spring_scale; result columns
@@ -77,7 +77,8 @@ def plot_key(rows, key, others, power, out_path, failed):
     if failed:
         axes[0, 0].set_title("%d case(s) not ok, left out" % failed, fontsize=8)
     fig.tight_layout()
-    fig.savefig(out_path, dpi=120)
+    fig.savefig(out_path, dpi=200)
+    fig.savefig(os.path.splitext(out_path)[0] + ".pdf")
     plt.close(fig)
 
 

@@ -148,7 +148,7 @@ def render(run, time_index, phase, args, output):
                 wm.SetLookupTable(diverging(max(cell_range(wake, "circulation_m2_s"), 1e-12)))
                 wa = vtk.vtkActor()
                 wa.SetMapper(wm)
-                wa.GetProperty().SetOpacity(0.35)
+                wa.GetProperty().SetOpacity(0.15)
                 renderer.AddActor(wa)
     chain = read_vtp(chain_file)
     if math.isnan(lift):

@@ -246,6 +246,15 @@ Planform read_planform(const TomlTable& p) {
     for (auto& q : out.outline) q.x() *= k;
   }
 
+  // Every coordinate usable in metres after scaling and stretching: 0 or a normal number
+  // (a point written as 2.2e-308 mm is a denormal in metres).
+  for (std::size_t i = 0; i < out.outline.size(); ++i)
+    for (double c : {out.outline[i].x(), out.outline[i].y()})
+      if (c != 0.0 && std::fpclassify(c) != FP_NORMAL)
+        p.fail_at(outline_key == "outline" ? p.line_of_element(outline_key, i) : p.line_of(outline_key), outline_key,
+                  "point " + std::to_string(i) + " has a coordinate too small to compute with in metres (" +
+                      fmt(c) + " m)");
+
   out.clamp_y = p.get_length("clamp_y");
   if (!(out.clamp_y >= min_y && out.clamp_y < max_y))
     p.fail("clamp_y", "must lie within the outline's span range [" + fmt(min_y / p.length_scale()) +
@@ -292,6 +301,10 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Polygon& outline,
     if (v.has("subdivide")) v.fail("subdivide", "only applies to 'chord_points'");
     for (std::size_t i = 0; i < rows.size(); ++i) {
       vein.points.emplace_back(rows[i][0] * v.length_scale(), rows[i][1] * v.length_scale());
+      for (double c : {vein.points.back().x(), vein.points.back().y()})
+        if (c != 0.0 && std::fpclassify(c) != FP_NORMAL)
+          v.fail_at(v.line_of_element("points", i), "points",
+                    "point " + std::to_string(i) + " has a coordinate too small to compute with in metres");
       source_row.push_back(i);
     }
   } else {

@@ -128,10 +128,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   if (!(options.spring_scale > 0.0) || !std::isfinite(options.spring_scale))
     throw InputError("", 0, "--spring-scale", "must be a positive number");
   if (options.spring_scale != 1.0 && m.chain.num_dofs() > 0) {
-    for (auto& j : m.chain.joints) {
-      j.bend_stiffness *= options.spring_scale;
-      j.twist_stiffness *= options.spring_scale;
-    }
+    m.chain.scale_stiffness(options.spring_scale);
     char buf[64];
     std::snprintf(buf, sizeof buf, ", springs x %g", options.spring_scale);
     s.structure_source += buf;
@@ -150,6 +147,21 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
                        "marker '" + mk.name + "' on body " + std::to_string(mk.body) +
                            " is outside the chain of " + std::to_string(m.chain.num_bodies()) + " bodies");
 
+  m.chain.gravity = c.structure.gravity;
+  m.integrator.rho_infinity = c.numerics.rho_infinity;
+  const int n = m.chain.num_dofs();
+  auto initial = [&](const std::vector<double>& values, int line, const char* key) {
+    if (values.empty()) return Eigen::VectorXd();
+    if (static_cast<int>(values.size()) != n)
+      throw InputError(c.file, line, std::string("structure.") + key,
+                       "expected " + std::to_string(n) + " values (bend and twist of each of the " +
+                           std::to_string(n / 2) + " joints " + std::to_string(m.chain.first_jointed_body() + 1) +
+                           " ... " + std::to_string(m.chain.num_bodies()) + "), found " +
+                           std::to_string(values.size()));
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(values.data(), n));
+  };
+  m.initial_q = initial(c.structure.initial_angles, c.structure.initial_angles_line, "initial_angles_deg");
+  m.initial_v = initial(c.structure.initial_rates, c.structure.initial_rates_line, "initial_rates_deg_per_s");
   m.base = mbd::make_base_motion(c.kinematics);
   m.frequency = c.kinematics.frequency;
   m.coupling.max_iterations = c.numerics.max_coupling_iterations;

@@ -1,6 +1,7 @@
 #include "pipeline/app/run_history.hpp"
 
 #include "mbd/angle_units.hpp"
+#include "mbd/chain_energy.hpp"
 #include "mbd/chain_kinematics.hpp"
 
 namespace flapsim::app {
@@ -35,6 +36,14 @@ constexpr HistoryColumn kColumns[] = {
     {"Mz_base_Nm", "aerodynamic moment about the pivot, ground z", [](const StepSample& s) { return s.moment.z(); }},
     {"power_W", "aerodynamic power −Σ F·v over the panels (what the wing spends on the air)",
      [](const StepSample& s) { return s.power; }},
+    {"Mx_drive_Nm", "moment the base exerts on the wing about the pivot (inertial + aerodynamic + gravity), ground x",
+     [](const StepSample& s) { return s.drive_moment.x(); }},
+    {"My_drive_Nm", "moment the base exerts on the wing about the pivot, ground y",
+     [](const StepSample& s) { return s.drive_moment.y(); }},
+    {"Mz_drive_Nm", "moment the base exerts on the wing about the pivot, ground z",
+     [](const StepSample& s) { return s.drive_moment.z(); }},
+    {"drive_power_W", "power the base supplies to the wing, ω·M + v·F at the pivot (inertial plus aerodynamic)",
+     [](const StepSample& s) { return s.drive_power; }},
     {"CL", "lift coefficient L / (½ ρ U_ref² S)", [](const StepSample& s) { return s.cl; }},
     {"CD", "drag coefficient D / (½ ρ U_ref² S)", [](const StepSample& s) { return s.cd; }},
     {"CP", "power coefficient P / (½ ρ U_ref³ S)", [](const StepSample& s) { return s.cp; }},
@@ -83,6 +92,9 @@ StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
     s.cd = s.drag / qs;
     s.cp = s.power / (qs * reference.speed);
   }
+  const mbd::BasePose pose = model.base(s.time);
+  s.drive_moment = mbd::base_reaction(model.chain, data.chain, pose, data.loads).moment;
+  s.drive_power = mbd::base_power(model.chain, data.chain, pose, data.loads);
   s.coupling_iterations = data.last_iterations;
   s.coupling_change = data.last_change;
   return s;

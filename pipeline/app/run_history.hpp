@@ -34,6 +34,10 @@ struct StepSample {
   double side = 0.0;                 ///< force along drag direction × lift direction [N]
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  ///< aerodynamic moment about the pivot, ground [N m]
   double power = 0.0;                ///< aerodynamic power, −Σ F_panel · v_panel [W]
+  /// Moment the base (the drive) exerts on the wing about the pivot, ground [N m]:
+  /// inertial, aerodynamic, gravity and point loads together (mbd::base_moment).
+  Eigen::Vector3d drive_moment = Eigen::Vector3d::Zero();
+  double drive_power = 0.0;          ///< power the base supplies, ω·M + v·F at the pivot (mbd::base_power) [W]
   double cl = 0.0;                   ///< lift coefficient [-] (0 in vacuum)
   double cd = 0.0;                   ///< drag coefficient [-]
   double cp = 0.0;                   ///< power coefficient P / (½ ρ U_ref³ S) [-]

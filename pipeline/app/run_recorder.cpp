@@ -173,6 +173,17 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
                                              : std::numeric_limits<double>::quiet_NaN());
   }
 
+  r.set("mean_drive_power_W", mean(series(samples_, [](const StepSample& s) { return s.drive_power; })));
+  {
+    double peak_power = -std::numeric_limits<double>::infinity(), peak_moment = 0.0;
+    for (const StepSample& s : samples_)
+      if (s.time >= t_begin - 1e-12 * (t_end - t_begin)) {
+        peak_power = std::max(peak_power, s.drive_power);
+        peak_moment = std::max(peak_moment, s.drive_moment.norm());
+      }
+    if (std::isfinite(peak_power)) r.set("peak_drive_power_W", peak_power);
+    r.set("peak_drive_moment_Nm", peak_moment);
+  }
   const auto base_phi = series(samples_, [](const StepSample& s) { return s.base.sweep.value; });
   const auto base_alpha = series(samples_, [](const StepSample& s) { return s.base.rotation.value; });
   const auto tip_phi = series(samples_, [](const StepSample& s) { return s.tip.sweep; });

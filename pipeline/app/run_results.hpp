@@ -108,6 +108,13 @@ inline constexpr auto kRunResults = [] {
                        "mean power coefficient P / (½ ρ U_ref³ S), last cycle (in air)"},
       ResultDefinition{"lift_per_power_N_W", "N/W", K::number, "%.4g", "lift/power",
                        "mean lift / mean aerodynamic power, last cycle (in air)"},
+      ResultDefinition{"mean_drive_power_W", "W", K::number, "%.6g", "drive power",
+                       "cycle-mean power the base supplies to the wing, ω·M + v·F at the pivot (inertial "
+                       "plus aerodynamic), last cycle"},
+      ResultDefinition{"peak_drive_power_W", "W", K::number, "%.6g", "",
+                       "largest power the base supplies in the last cycle"},
+      ResultDefinition{"peak_drive_moment_Nm", "Nm", K::number, "%.6g", "",
+                       "largest magnitude of the moment the base exerts on the wing about the pivot, last cycle"},
       // Rotation phases and lags over the last cycle, fractions of the period (docs/fsi.md).
       ResultDefinition{"base_rotation_phase", "", K::number, "%.4f", "",
                        "rotation phase of the base measured from its angles (reproduces the case's δψ)"},
@@ -205,6 +212,8 @@ inline constexpr std::array kRunReport = {
     ReportLine{"mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W}, lift/power "
                "{lift_per_power_N_W}; coefficients on {reference_speed_m_s} ({reference_kind})",
                [](const RunResults& r) { return r.has("mean_power_W"); }},
+    ReportLine{"drive: mean power {mean_drive_power_W} (peak {peak_drive_power_W}), peak moment "
+               "{peak_drive_moment_Nm}"},
     ReportLine{"coupling: {mean_coupling_iterations} sub-iterations per step on average "
                "(max {max_coupling_iterations})",
                [](const RunResults& r) { return r.integer("max_coupling_iterations") > 1; }},

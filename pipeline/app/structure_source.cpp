@@ -3,6 +3,8 @@
 #include "fem/wing_fem.hpp"
 #include "pipeline/io/chain_file.hpp"
 #include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
+#include "reduction/reduction_failure.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/clamped_wing_analysis.hpp"
 #include "wings/input_error.hpp"
@@ -40,7 +42,12 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
     // (docs/reduction.md), without writing its files.
     const fem::WingFem fem = fem::build_wing_fem(*wing);
     const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp, {});
-    s.chain = reduction::lump_into_chain(analysis, c.structure.bodies).chain;
+    try {
+      s.chain = reduction::lump_into_chain(analysis, c.structure.bodies).chain;
+    } catch (const reduction::ReductionFailure& e) {
+      throw NumericalFailure("cannot reduce the wing " + c.wing_file + " to " +
+                             std::to_string(c.structure.bodies) + " bodies: " + e.what());
+    }
     s.description = "wing reduced in process (FEM + reduction, " +
                     std::to_string(s.chain.num_bodies()) + " bodies)";
     return s;

@@ -75,8 +75,8 @@ double change(const FsiModel& model, const mbd::ChainState& a, const mbd::ChainS
 
 void initialize(const FsiModel& model, FsiData& data, double t0) {
   const int n = model.chain.num_dofs();
-  const Eigen::VectorXd q0 = model.chain.rest_angles();
-  const Eigen::VectorXd v0 = Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd q0 = model.initial_q.size() == n ? model.initial_q : model.chain.rest_angles();
+  const Eigen::VectorXd v0 = model.initial_v.size() == n ? model.initial_v : Eigen::VectorXd::Zero(n);
   external_loads(model, t0, data.loads);
   try {
     data.state = mbd::make_initial_state(model.chain, data.chain, model.base, t0, q0, v0, data.loads);

@@ -54,6 +54,8 @@ struct FsiModel {
   mbd::ChainModel chain;                 ///< the structure (no dofs: a rigid wing)
   mbd::BaseMotion base;                  ///< prescribed wing-base motion
   mbd::GeneralizedAlphaSettings integrator;
+  /// Φ(t₀), Φ̇(t₀) [rad, rad/s]; empty: the chain's rest angles, at rest.
+  Eigen::VectorXd initial_q, initial_v;
   double frequency = 1.0;                ///< flapping frequency f [Hz] (rate scale of the test)
   CouplingSettings coupling;
   ExternalLoads external_loads;

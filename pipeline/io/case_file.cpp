@@ -65,13 +65,29 @@ Case::Air read_air(const TomlTable& root) {
 Case::Structure read_structure(const TomlTable& root) {
   Case::Structure s;
   const TomlTable t = root.get_table("structure");
-  t.expect_only({"kind", "bodies"});
+  t.expect_only({"kind", "bodies", "gravity", "initial_angles_deg", "initial_rates_deg_per_s"});
   s.kind = t.get_choice("kind", kStructureKindNames);
   if (s.kind == Case::Structure::Kind::Rigid)
     s.bodies = t.get_int("bodies", 1, Bounds::closed(1, 1));
   else
     s.bodies = t.get_int("bodies", Bounds::closed(2, 1000));
   if (t.has("bodies")) s.bodies_line = t.line_of("bodies");
+  if (t.has("gravity")) {
+    const auto g = t.get_doubles("gravity");
+    if (g.size() != 3)
+      t.fail("gravity", "expected [g_x, g_y, g_z] in m/s² (3 numbers), found " + std::to_string(g.size()));
+    s.gravity = Eigen::Vector3d(g[0], g[1], g[2]);
+  }
+  for (const char* key : {"initial_angles_deg", "initial_rates_deg_per_s"}) {
+    if (!t.has(key)) continue;
+    if (s.kind == Case::Structure::Kind::Rigid)
+      t.fail(key, "a rigid wing has no joints: give initial angles for a flexible structure");
+    std::vector<double> v = t.get_doubles(key, Bounds::any(), 1);
+    for (double& x : v) x *= kDegToRad;
+    const bool angles = std::string_view(key) == "initial_angles_deg";
+    (angles ? s.initial_angles : s.initial_rates) = v;
+    (angles ? s.initial_angles_line : s.initial_rates_line) = t.line_of(key);
+  }
   return s;
 }
 
@@ -83,7 +99,8 @@ Case::Numerics read_numerics(const TomlTable& root) {
                   "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "core_model",
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles",
-                  "wake_sum", "tree_tolerance", "max_coupling_iterations", "coupling_tolerance"});
+                  "wake_sum", "tree_tolerance", "max_coupling_iterations", "coupling_tolerance",
+                  "rho_infinity"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
   // The product in 64 bits, against a documented maximum (an int would wrap).
@@ -115,6 +132,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
       t->get_int("max_coupling_iterations", n.max_coupling_iterations, Bounds::closed(1, 100000));
   n.coupling_tolerance =
       t->get_double("coupling_tolerance", n.coupling_tolerance, Bounds{0.0, 1.0, true, true});
+  n.rho_infinity = t->get_double("rho_infinity", n.rho_infinity, Bounds::closed(0.0, 1.0));
   return n;
 }
 

@@ -58,6 +58,12 @@ struct Case {
     Kind kind = Kind::Rigid;
     int bodies = 1;  ///< number of chain bodies (1 for a rigid wing)
     int bodies_line = 0;  ///< line of structure.bodies in the case file (0: not given), for messages
+    /// Gravity in the ground frame [m/s²] (`gravity = [0, 0, -9.81]`; default none).
+    Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+    /// Initial joint angles Φ(0) and rates Φ̇(0) [rad, rad/s], bend and twist per jointed
+    /// body (`initial_angles_deg`, `initial_rates_deg_per_s`); empty: the rest angles, at rest.
+    std::vector<double> initial_angles, initial_rates;
+    int initial_angles_line = 0, initial_rates_line = 0;  ///< their lines (0: not given)
   } structure;
 
   struct Numerics {
@@ -85,6 +91,7 @@ struct Case {
     double tree_tolerance = 1e-4;           ///< relative error of the tree code's velocities
     int max_coupling_iterations = 50;       ///< strong-coupling sub-iterations per step
     double coupling_tolerance = 1e-6;       ///< relative change that ends the sub-iterations
+    double rho_infinity = 0.9;              ///< generalized-α spectral radius ρ∞ in [0, 1]
   } numerics;
 
   struct Output {

@@ -29,11 +29,17 @@ Eigen::Matrix3d read_matrix3(const TomlTable& t, std::string_view key, double sc
 }
 
 mbd::ChainModel parse_chain(const TomlTable& root) {
-  root.expect_only({"length_unit", "root", "root_offset", "root_rotation", "bodies", "name",
-                    "description"});
+  root.expect_only({"length_unit", "root", "welded_bodies", "root_offset", "root_rotation",
+                    "joint_stiffness", "joint_damping", "bodies", "name", "description"});
   root.read_length_unit();
   mbd::ChainModel chain;
   chain.root = root.get_choice("root", kRootNames);
+  if (root.has("welded_bodies")) {
+    if (chain.root != mbd::RootAttachment::rigid)
+      root.fail("welded_bodies", "only a rigid root welds bodies to it (root = \"rigid\")");
+    chain.welded_bodies = root.get_int("welded_bodies", Bounds::closed(1, 1e9));
+  }
+  const bool full_stiffness = root.has("joint_stiffness");
   chain.root_offset = root.get_length_vector3("root_offset", Eigen::Vector3d::Zero());
   if (root.has("root_rotation")) chain.root_rotation = read_matrix3(root, "root_rotation", 1.0);
   const auto bodies = root.get_tables("bodies", 1);
@@ -43,17 +49,22 @@ mbd::ChainModel parse_chain(const TomlTable& root) {
     t.expect_only({"length", "mass", "center_of_mass", "inertia", "outboard_joint", "joint", "name"});
     mbd::ChainBody b;
     b.length = t.get_length("length", Bounds::positive());
-    b.mass = t.get_double("mass", Bounds::positive());
+    b.mass = t.get_double("mass", Bounds::non_negative());  // > 0 unless welded (checked below)
     b.center_of_mass = t.get_length_vector3("center_of_mass");
     b.inertia = read_matrix3(t, "inertia", 1.0);
     b.outboard_joint = t.get_length_vector3("outboard_joint", Eigen::Vector3d(0.0, b.length, 0.0));
     mbd::ChainJoint j;
-    const bool needs_joint = !(i == 0 && chain.root == mbd::RootAttachment::rigid);
+    const bool needs_joint =
+        !full_stiffness && !(chain.root == mbd::RootAttachment::rigid && static_cast<int>(i) < chain.welded_bodies);
     if (auto jt = t.find_table("joint")) {
-      jt->expect_only({"bend_stiffness", "twist_stiffness", "bend_damping", "twist_damping",
-                       "bend_rest", "twist_rest"});
-      j.bend_stiffness = jt->get_double("bend_stiffness", Bounds::non_negative());
-      j.twist_stiffness = jt->get_double("twist_stiffness", Bounds::non_negative());
+      if (full_stiffness) {  // the springs are the matrix: no per-joint springs
+        jt->expect_only({"bend_damping", "twist_damping", "bend_rest", "twist_rest"});
+      } else {
+        jt->expect_only({"bend_stiffness", "twist_stiffness", "bend_damping", "twist_damping",
+                         "bend_rest", "twist_rest"});
+        j.bend_stiffness = jt->get_double("bend_stiffness", Bounds::non_negative());
+        j.twist_stiffness = jt->get_double("twist_stiffness", Bounds::non_negative());
+      }
       j.bend_damping = jt->get_double("bend_damping", 0.0, Bounds::non_negative());
       j.twist_damping = jt->get_double("twist_damping", 0.0, Bounds::non_negative());
       j.bend_rest = jt->get_double("bend_rest", 0.0, Bounds::closed(-3.2, 3.2));
@@ -70,12 +81,32 @@ mbd::ChainModel parse_chain(const TomlTable& root) {
       one.validate();
     } catch (const std::invalid_argument& e) {
       std::string msg = e.what();
-      const auto pos = msg.find("body 0: ");
+      const auto pos = msg.find("body 1: ");
       if (pos != std::string::npos) msg = msg.substr(pos + 8);
       t.fail("inertia", msg);
     }
     chain.bodies.push_back(b);
     chain.joints.push_back(j);
+  }
+  if (chain.root == mbd::RootAttachment::rigid && chain.welded_bodies > chain.num_bodies())
+    root.fail("welded_bodies", "the chain has only " + std::to_string(chain.num_bodies()) + " bodies");
+  for (const char* key : {"joint_stiffness", "joint_damping"}) {
+    if (!root.has(key)) continue;
+    const std::size_t n = static_cast<std::size_t>(chain.num_dofs());
+    const auto rows = root.get_number_rows(key, n, n);
+    if (rows.size() != n)
+      root.fail(key, "expected " + std::to_string(n) + " rows of " + std::to_string(n) +
+                         " numbers (bend and twist of each of the " + std::to_string(n / 2) + " joints)");
+    Eigen::MatrixXd m(n, n);
+    for (std::size_t r = 0; r < n; ++r)
+      for (std::size_t c = 0; c < n; ++c) m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = rows[r][c];
+    (std::string_view(key) == "joint_stiffness" ? chain.stiffness_matrix : chain.damping_matrix) = m;
+    try {
+      chain.validate();
+    } catch (const std::invalid_argument& e) {
+      const std::string msg = e.what();
+      if (msg.find("matrix") != std::string::npos) root.fail(key, msg);
+    }
   }
   try {
     chain.validate();
@@ -114,6 +145,22 @@ std::string format_chain_file(const mbd::ChainModel& chain) {
     << "root = \"" << wings::choice_name(kRootNames, chain.root) << "\"\n"
     << "root_offset = " << vec3(chain.root_offset) << "\n"
     << "root_rotation = " << mat3(chain.root_rotation) << "   # R_WR, row by row\n";
+  if (chain.root == mbd::RootAttachment::rigid && chain.welded_bodies > 1)
+    s << "welded_bodies = " << chain.welded_bodies << "   # bodies in the root clamp, welded to the root\n";
+  auto matrix = [&](const char* key, const Eigen::MatrixXd& m, const char* what) {
+    s << "# " << what << " over [bend, twist] of joints " << chain.first_jointed_body() + 1 << " ... "
+      << chain.num_bodies() << ", row by row\n"
+      << key << " = [\n";
+    for (Eigen::Index r = 0; r < m.rows(); ++r) {
+      s << "  [";
+      for (Eigen::Index c = 0; c < m.cols(); ++c) s << (c ? ", " : "") << format_number(m(r, c));
+      s << "],\n";
+    }
+    s << "]\n";
+  };
+  const bool full = chain.stiffness_matrix.size() > 0;
+  if (full) matrix("joint_stiffness", chain.stiffness_matrix, "Joint stiffness K [N m/rad]");
+  if (chain.damping_matrix.size() > 0) matrix("joint_damping", chain.damping_matrix, "Joint damping C [N m s/rad]");
   for (int k = 0; k < chain.num_bodies(); ++k) {
     const auto& b = chain.bodies[static_cast<std::size_t>(k)];
     const auto& j = chain.joints[static_cast<std::size_t>(k)];
@@ -123,11 +170,12 @@ std::string format_chain_file(const mbd::ChainModel& chain) {
       << "center_of_mass = " << vec3(b.center_of_mass) << "\n"
       << "inertia = " << mat3(b.inertia) << "\n"
       << "outboard_joint = " << vec3(b.outboard_joint) << "\n";
-    if (k == 0 && chain.root == mbd::RootAttachment::rigid) continue;  // welded: no joint
-    s << "[bodies.joint]   # inboard of this body\n"
-      << "bend_stiffness = " << format_number(j.bend_stiffness) << "\n"
-      << "twist_stiffness = " << format_number(j.twist_stiffness) << "\n"
-      << "bend_damping = " << format_number(j.bend_damping) << "\n"
+    if (k < chain.first_jointed_body()) continue;  // welded: no joint
+    s << "[bodies.joint]   # inboard of this body\n";
+    if (!full)
+      s << "bend_stiffness = " << format_number(j.bend_stiffness) << "\n"
+        << "twist_stiffness = " << format_number(j.twist_stiffness) << "\n";
+    s << "bend_damping = " << format_number(j.bend_damping) << "\n"
       << "twist_damping = " << format_number(j.twist_damping) << "\n"
       << "bend_rest = " << format_number(j.bend_rest) << "\n"
       << "twist_rest = " << format_number(j.twist_rest) << "\n";

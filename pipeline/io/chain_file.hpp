@@ -8,6 +8,9 @@
 ///   root = "rigid"                    # or "sprung" (joint of body 1 has springs)
 ///   root_offset = [0.0, 0.0, 0.0]     # root point in the wing frame W
 ///   root_rotation = [[1,0,0],[0,1,0],[0,0,1]]   # R_WR, row by row (optional)
+///   welded_bodies = 1                 # optional, rigid root: bodies welded to the root
+///   joint_stiffness = [[...], ...]    # optional: full K over [θ, α] per joint [N m/rad]
+///   joint_damping = [[...], ...]      # optional: full C [N m s/rad]
 ///   [[bodies]]
 ///   length = 0.0161                   # [length unit]
 ///   mass = 13.27e-6                   # [kg]
@@ -22,7 +25,8 @@
 ///   bend_rest = 0.0                   # optional [rad]
 ///   twist_rest = 0.0                  # optional [rad]
 /// \endcode
-/// With a rigid root the first body's joint is optional and ignored. Masses, inertias
+/// With a rigid root the welded bodies' joints are optional and ignored. With
+/// joint_stiffness the joints carry no springs (only dampers and rest angles). Masses, inertias
 /// and springs are SI whatever the length unit.
 
 #include "mbd/chain_model.hpp"

@@ -13,8 +13,8 @@ namespace flapsim::io {
 // else two runs that differ in it would share a hash (and a sweep re-run would keep a
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
-// (Case::Structure::bodies_line and Wing::warnings locate messages and change no result.)
-static_assert(sizeof(Case) == 1208, "io::Case changed: add the new field to canonical_inputs()");
+// (Case::Structure::bodies_line, initial_angles_line, initial_rates_line and Wing::warnings locate messages and change no result.)
+static_assert(sizeof(Case) == 1296, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 208, "wings::Wing changed: add the new field to canonical_inputs()");
@@ -111,6 +111,11 @@ void case_fields(Canonical& out, const Case& c) {
   out.vector("air.freestream", c.air.freestream);
   out.line("structure.kind", static_cast<int>(c.structure.kind));
   out.line("structure.bodies", c.structure.bodies);
+  out.vector("structure.gravity", c.structure.gravity);
+  for (std::size_t i = 0; i < c.structure.initial_angles.size(); ++i)
+    out.line("structure.initial_angles", c.structure.initial_angles[i]);
+  for (std::size_t i = 0; i < c.structure.initial_rates.size(); ++i)
+    out.line("structure.initial_rates", c.structure.initial_rates[i]);
   const Case::Numerics& n = c.numerics;
   out.line("numerics.steps_per_cycle", n.steps_per_cycle);
   out.line("numerics.cycles", n.cycles);
@@ -134,6 +139,7 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.tree_tolerance", n.tree_tolerance);
   out.line("numerics.max_coupling_iterations", n.max_coupling_iterations);
   out.line("numerics.coupling_tolerance", n.coupling_tolerance);
+  out.line("numerics.rho_infinity", n.rho_infinity);
   out.line("output.vtk_every", c.output.vtk_every);
   out.line("loads.size", static_cast<int>(c.loads.size()));
   for (std::size_t i = 0; i < c.loads.size(); ++i) {

@@ -160,22 +160,39 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
   static_row("tip twist under the tip torque [rad]", c.tip_twist);
   s << "\nStatic responses at s = " << c.measure_s
     << " m (mid-point of the outermost body clear of the loaded tip zone); the FEM load cases of the beam extraction, the same wrenches on the chain.\n\n"
-    << "## FEM modes\n\n| mode | f [Hz] | kind |\n|---|---|---|\n";
+    << "## FEM modes\n\nKind from the stations' motion (docs/reduction.md, \"Mode kinds from the stations\"); "
+       "beam share: the share of the motion the stations' rigid sections carry; shape: the FEM's own "
+       "shape classification.\n\n| mode | f [Hz] | kind | beam share | shape |\n|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < c.fem_hz.size(); ++i)
-    s << "| " << i + 1 << " | " << c.fem_hz[i] << " | " << c.fem_kinds[i] << " |\n";
+    s << "| " << i + 1 << " | " << c.fem_hz[i] << " | " << c.fem_kinds[i] << " | " << c.fem_beam_share[i] << " | "
+      << c.fem_shape_kinds[i] << " |\n";
   s << "\n## Chain modes\n\n| mode | f [Hz] | kind |\n|---|---|---|\n";
   for (std::size_t i = 0; i < c.chain_hz.size() && i < 12; ++i)
     s << "| " << i + 1 << " | " << c.chain_hz[i] << " | " << c.chain_kinds[i] << " |\n";
-  s << "\n## Bodies (body frame: origin at the inboard joint, y along the axis, x toward the LE)\n\n"
-    << "| body | length [m] | mass [kg] | com x, y, z [m] | I_xx, I_yy, I_zz about com [kg m²] | k_theta "
-       "[N m/rad] | k_alpha [N m/rad] |\n|---|---|---|---|---|---|---|\n";
+  const Eigen::VectorXd kdiag = lc.chain.stiffness_diagonal();
+  s << "\n## Joint stiffness\n\n"
+    << (lc.springs == reduction::SpringModel::full
+            ? "Full joint stiffness K = (D C_rr D^T)^-1 from the stations' compliance by reciprocity "
+              "(docs/reduction.md): bend-twist and joint-to-joint coupling kept; the chain's joint angles "
+              "equal the FEM's relative station rotations under every joint load."
+            : "Diagonal springs k = 1/(K^-1)_jj from the stations' compliance: coupling dropped "
+              "(docs/reduction.md, \"Diagonal springs\").")
+    << " Eigenvalues of K: " << lc.joint_stiffness.min_eigenvalue << " ... " << lc.joint_stiffness.max_eigenvalue
+    << " N m/rad.\n\n"
+    << "## Bodies (body frame: origin at the inboard joint, y along the axis, x toward the LE)\n\n"
+    << "| body | length [m] | mass [kg] | com x, y, z [m] | I_xx, I_yy, I_zz about com [kg m²] | K_theta,theta "
+       "[N m/rad] | K_alpha,alpha [N m/rad] | flexural axis n at mid-span [m] |\n|---|---|---|---|---|---|---|---|\n";
   for (int k = 0; k < lc.chain.num_bodies(); ++k) {
     const auto& b = lc.chain.bodies[static_cast<std::size_t>(k)];
-    const auto& j = lc.chain.joints[static_cast<std::size_t>(k)];
     s << "| " << k + 1 << " | " << b.length << " | " << b.mass << " | " << b.center_of_mass.x() << ", "
       << b.center_of_mass.y() << ", " << b.center_of_mass.z() << " | " << b.inertia(0, 0) << ", "
-      << b.inertia(1, 1) << ", " << b.inertia(2, 2) << " | " << j.bend_stiffness << " | "
-      << j.twist_stiffness << " |\n";
+      << b.inertia(1, 1) << ", " << b.inertia(2, 2) << " | ";
+    const int d = lc.chain.dof_of_body(k);
+    if (d < 0) {
+      s << "welded | welded | |\n";
+      continue;
+    }
+    s << kdiag[d] << " | " << kdiag[d + 1] << " | " << lc.flexural_axis_n[static_cast<std::size_t>(d / 2)] << " |\n";
   }
   return s.str();
 }
@@ -187,6 +204,10 @@ void write_reduction_summary(const fs::path& path, const reduction::BeamProperti
   j.set("num_stations", static_cast<int>(beam.stations.size()));
   j.set("axis_psi_rad", beam.axis.psi);
   j.set("root", lc.chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid");
+  j.set("welded_bodies", lc.chain.root == mbd::RootAttachment::sprung ? 0 : lc.chain.welded_bodies);
+  j.set("springs", lc.springs == reduction::SpringModel::full ? "full" : "diagonal");
+  j.set("stiffness_min_eigenvalue_N_m_per_rad", lc.joint_stiffness.min_eigenvalue);
+  j.set("stiffness_max_eigenvalue_N_m_per_rad", lc.joint_stiffness.max_eigenvalue);
   j.set("fem_mass_kg", c.fem_mass);
   j.set("chain_mass_kg", c.chain_mass);
   j.set("n_ea_tip_m", beam.n_ea_tip);

@@ -55,6 +55,16 @@ TEST(ExitStatus, ThreeForANumericalFailureOfTheRun) {
   EXPECT_NE(read_text(dir / "out" / "summary.json").find("\"status\": \"failed\""), std::string::npos);
 }
 
+TEST(ExitStatus, ThreeForAFailureOfTheReduction) {
+  // The tiny wing clamped up to y = 9.6 of its 10 mm: the reduction finds no beam section
+  // outside the clamp and the loaded tip zone and fails (it exited 1, the usage status).
+  ScratchDir dir("exit_reduction");
+  std::ofstream(dir / "w.toml") << replace_once(read_text(kTinyWing), "clamp_y = 0.0", "clamp_y = 9.6");
+  EXPECT_EQ(run_flapsim("reduce " + (dir / "w.toml").string() + " --bodies 2 --modes 4 -o " + (dir / "out").string()),
+            3);
+  EXPECT_FALSE(fs::exists(dir / "out" / "chain.toml"));
+}
+
 TEST(ExitStatus, FourForAnUnwritableOutputFolderOfEveryCommand) {
   // A regular file where the output folder should be: an output error (4), not blamed on
   // the input file (the issue: mesh blamed the wing file, run exited 1).

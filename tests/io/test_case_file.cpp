@@ -230,3 +230,37 @@ TEST(CaseFile, BaseTranslationSignals) {
   EXPECT_DOUBLE_EQ(pose.position.y(), 0.0);
   EXPECT_EQ(error_of(with_kinematics("heave = { sin_deg = [1.0] }\n")).key(), "kinematics.heave.sin_deg");
 }
+
+// Issue 17: gravity, the initial state of the chain and the integrator's ρ∞ as case keys
+// (docs/case_file.md); angles in degrees, read in radians.
+TEST(CaseFile, GravityInitialStateAndRhoInfinity) {
+  const std::string head =
+      "wing = \"valid_tiny_wing.toml\"\n"
+      "[kinematics]\n"
+      "frequency_hz = 20.0\n"
+      "sweep = { cos_deg = [60.0] }\n"
+      "rotation = 90.0\n"
+      "[structure]\n"
+      "kind = \"flexible\"\n"
+      "bodies = 3\n"
+      "gravity = [0.0, 0.0, -9.81]\n"
+      "initial_angles_deg = [10.0, -5.0, 0.0, 2.0]\n"
+      "initial_rates_deg_per_s = [100.0, 0.0, 0.0, 0.0]\n"
+      "[numerics]\n"
+      "rho_infinity = 0.6\n";
+  const p::Case c = case_from_text(head);
+  EXPECT_DOUBLE_EQ(c.structure.gravity.z(), -9.81);
+  ASSERT_EQ(c.structure.initial_angles.size(), 4u);
+  EXPECT_NEAR(c.structure.initial_angles[0], 10.0 * kDegToRad, 1e-15);
+  EXPECT_NEAR(c.structure.initial_angles[1], -5.0 * kDegToRad, 1e-15);
+  EXPECT_NEAR(c.structure.initial_rates[0], 100.0 * kDegToRad, 1e-13);
+  EXPECT_DOUBLE_EQ(c.numerics.rho_infinity, 0.6);
+  EXPECT_DOUBLE_EQ(case_from_text(kHead).numerics.rho_infinity, 0.9);  // the default
+  // Out of [0, 1], and gravity that is not a 3-vector: bad input at the key.
+  EXPECT_NE(std::string(error_of(kHead + "[numerics]\nrho_infinity = 1.5\n").what()).find("rho_infinity"),
+            std::string::npos);
+  EXPECT_NE(std::string(error_of(kHead + "gravity = [0.0, -9.81]\n").what()).find("gravity"), std::string::npos);
+  // A rigid wing has no joints to start bent.
+  EXPECT_NE(std::string(error_of(kHead + "initial_angles_deg = [1.0, 2.0]\n").what()).find("rigid"),
+            std::string::npos);
+}

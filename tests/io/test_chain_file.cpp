@@ -18,6 +18,9 @@ void expect_same_chain(const ChainModel& a, const ChainModel& b) {
   EXPECT_EQ(a.root, b.root);
   EXPECT_EQ(a.root_offset, b.root_offset);
   EXPECT_EQ(a.root_rotation, b.root_rotation);
+  EXPECT_EQ(a.first_jointed_body(), b.first_jointed_body());
+  EXPECT_EQ(a.stiffness(), b.stiffness());
+  EXPECT_EQ(a.damping(), b.damping());
   for (int i = 0; i < a.num_bodies(); ++i) {
     EXPECT_EQ(a.bodies[i].length, b.bodies[i].length);
     EXPECT_EQ(a.bodies[i].mass, b.bodies[i].mass);
@@ -25,8 +28,10 @@ void expect_same_chain(const ChainModel& a, const ChainModel& b) {
     EXPECT_EQ(a.bodies[i].inertia, b.bodies[i].inertia);
     EXPECT_EQ(a.bodies[i].outboard_joint, b.bodies[i].outboard_joint);
     if (i < a.first_jointed_body()) continue;
-    EXPECT_EQ(a.joints[i].bend_stiffness, b.joints[i].bend_stiffness);
-    EXPECT_EQ(a.joints[i].twist_stiffness, b.joints[i].twist_stiffness);
+    if (a.stiffness_matrix.size() == 0) {  // with a full K the joints' springs are not used
+      EXPECT_EQ(a.joints[i].bend_stiffness, b.joints[i].bend_stiffness);
+      EXPECT_EQ(a.joints[i].twist_stiffness, b.joints[i].twist_stiffness);
+    }
     EXPECT_EQ(a.joints[i].bend_damping, b.joints[i].bend_damping);
     EXPECT_EQ(a.joints[i].twist_damping, b.joints[i].twist_damping);
     EXPECT_EQ(a.joints[i].bend_rest, b.joints[i].bend_rest);
@@ -37,6 +42,32 @@ void expect_same_chain(const ChainModel& a, const ChainModel& b) {
 TEST(ChainFile, RoundTripIsExact) {
   const ChainModel chain = test::general_chain();  // sprung root, offsets, full tensors
   expect_same_chain(chain, io::parse_chain_text(io::format_chain_file(chain), "rt.toml"));
+}
+
+// Issue 17: the chain file stores the full joint stiffness and damping (and welded
+// bodies) exactly; per-joint springs are then absent from the file.
+TEST(ChainFile, FullJointStiffnessRoundTripIsExact) {
+  ChainModel chain = test::three_body_chain_coupled();
+  const std::string text = io::format_chain_file(chain);
+  EXPECT_NE(text.find("joint_stiffness = ["), std::string::npos);
+  EXPECT_EQ(text.find("bend_stiffness"), std::string::npos);
+  expect_same_chain(chain, io::parse_chain_text(text, "rt.toml"));
+  chain = test::three_body_chain();  // two welded bodies, one joint with a 2 x 2 K
+  chain.welded_bodies = 2;
+  chain.stiffness_matrix = Eigen::Matrix2d{{3e-3, 4e-4}, {4e-4, 1e-3}};
+  expect_same_chain(chain, io::parse_chain_text(io::format_chain_file(chain), "rt.toml"));
+}
+
+TEST(ChainFile, IndefiniteJointStiffnessIsAnInputErrorAtItsKey) {
+  ChainModel chain = test::three_body_chain_coupled();
+  chain.stiffness_matrix(0, 0) = -1e-3;  // not positive semi-definite
+  try {
+    io::parse_chain_text(io::format_chain_file(chain), "bad.toml");
+    FAIL() << "accepted an indefinite stiffness";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("joint_stiffness"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("positive semi-definite"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ChainFile, ShippedThreeBodyChainIsTheTestedChain) {

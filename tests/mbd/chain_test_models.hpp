@@ -54,6 +54,27 @@ inline ChainModel three_body_chain() {
   return m;
 }
 
+// The same system with a full joint stiffness and damping over Φ = [θ₂, α₂, θ₃, α₃]:
+// the diagonal of three_body_chain plus bend–twist coupling within each joint and
+// coupling between the two joints (symmetric positive definite: checked by the tests),
+// as `flapsim reduce` produces (docs/reduction.md, "Joint stiffness by reciprocity").
+inline ChainModel three_body_chain_coupled() {
+  ChainModel m = three_body_chain();
+  Eigen::Matrix4d k;
+  k << 4e-3, 8e-4, -1.2e-3, 3e-4,  //
+      8e-4, 1e-3, 2e-4, -2e-4,     //
+      -1.2e-3, 2e-4, 2e-3, 4e-4,   //
+      3e-4, -2e-4, 4e-4, 5e-4;
+  Eigen::Matrix4d c;
+  c << 1e-6, 1e-7, -2e-7, 0.0,  //
+      1e-7, 1e-7, 0.0, -1e-8,   //
+      -2e-7, 0.0, 1e-6, 2e-8,   //
+      0.0, -1e-8, 2e-8, 1e-7;
+  m.stiffness_matrix = k;
+  m.damping_matrix = c;
+  return m;
+}
+
 constexpr double kThreeBodyFrequency = 26.0;  // [Hz], rotation-phase paper eq. 5
 
 // Eq. 5 of the rotation-phase paper in our convention R_GW = Rz(φ) Rx(θ) Ry(−α):

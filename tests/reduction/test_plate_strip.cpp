@@ -151,9 +151,6 @@ TEST(PlateStrip, HenckyChainConvergesToTheFemFromBelow) {
   double previous = 1.0;
   for (int nb : {4, 8, 16}) {
     const LumpedChain lc = lump_into_chain(analysis, nb);
-    // Interior springs of a uniform beam are EI/a (Hencky); EI = E h³ b/12 as above.
-    const double ei = p.E * std::pow(p.h, 3) * p.b / 12.0;
-    EXPECT_NEAR(lc.chain.joints[2].bend_stiffness * lc.body_length / ei, 1.0, 0.02) << nb;
     const ChainFemComparison c = compare_chain_with_fem(analysis, lc, modes, kinds);
     ASSERT_TRUE(c.bending.found && c.torsion.found) << nb;
     std::printf("plate strip N_b=%2d: bending %+.2f %% torsion %+.2f %% tip w %+.2f %% MAC %.4f\n", nb,

@@ -3,7 +3,7 @@
 rigid and on a stiff 2-body chain, 3 x 4 panels, 12 steps per wingbeat, 2 wingbeats,
 five phases each) made with `flapsim sweep`, then `make plots` on it: every figure of
 tools/plot_phase_study.py exists as a PDF (a PDF file, vector) and as a PNG of at least
-1000 pixels width; the per-sweep figures of tools/plot_sweep.py are written too."""
+1000 pixels width; the per-sweep figures of tools/plot_sweep.py too, PDF and PNG."""
 import argparse
 import os
 import shutil
@@ -64,8 +64,9 @@ for name in ("fig12a_mean_lift_vs_phase", "fig12b_rigid_lift_cycle", "fig13b_fle
     if head[:8] != b"\x89PNG\r\n\x1a\n" or width < 1000:
         failures.append(f"{name}.png is not a PNG of at least 1000 px width ({width})")
 for sub in ("rigid", "flexible"):
-    if not any(f.endswith(".png") for f in os.listdir(os.path.join(plots, sub))):
-        failures.append(f"no sweep figure in plots/{sub}")
+    for ext in (".png", ".pdf"):
+        if not any(f.endswith(ext) for f in os.listdir(os.path.join(plots, sub))):
+            failures.append(f"no sweep figure ({ext}) in plots/{sub}")
 for f in failures:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)

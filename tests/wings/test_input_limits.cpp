@@ -9,6 +9,7 @@
 #include "wings/checked_integer.hpp"
 #include "wings/input_error.hpp"
 #include "wings/toml_reader.hpp"
+#include "wings/wing_file.hpp"
 
 using flapsim::InputError;
 using flapsim::wings::Bounds;
@@ -75,6 +76,19 @@ TEST(Denormals, ALengthThatBecomesDenormalInMetresIsRejected) {
   t.read_length_unit();
   EXPECT_EQ(expect_input_error([&] { t.get_length("thickness", Bounds::positive()); }).line(), 2);
   EXPECT_EQ(expect_input_error([&] { t.get_lengths("list"); }).key(), "list[1]");
+}
+
+TEST(Denormals, AnOutlinePointThatBecomesDenormalInMetresIsRejected) {
+  // Found by the loader fuzzer (make fuzz): 2.2250738585072014e-308 mm is the smallest
+  // normal double as written, 2.2e-311 m (denormal) once converted.
+  const std::string wing =
+      "name = \"t\"\nlength_unit = \"mm\"\n[planform]\n"
+      "outline = [[2.0, 0.0], [2.0, 10.0], [-3.0, 10.0], [2.2250738585072014e-308, 0.0]]\nclamp_y = 0.0\n"
+      "[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"
+      "[membrane]\nthickness = 0.05\nmaterial = \"film\"\n";
+  const auto e = expect_input_error([&] { flapsim::wings::read_wing(parse_toml_string(wing, "w.toml")); });
+  EXPECT_EQ(e.key(), "planform.outline") << e.what();
+  EXPECT_EQ(e.line(), 4);
 }
 
 TEST(CheckedIntegers, ProductsAndSumsReportOverflow) {

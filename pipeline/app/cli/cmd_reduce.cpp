@@ -36,6 +36,7 @@ struct ReduceOptions {
   int stations = 40;
   int modes = 12;
   std::string axis = "fitted";
+  std::string springs = "full";
   bool force = false;
 };
 
@@ -43,7 +44,9 @@ void run_reduce(const ReduceOptions& o) {
   const wings::Wing wing = wings::load_wing_file(o.wing_file);  // InputError → exit 2
   print_wing_warnings(wing);
   reduction::AnalysisOptions ao;
-  ao.axis = o.axis == "span" ? reduction::AxisChoice::span : reduction::AxisChoice::fitted;
+  ao.axis = o.axis == "span"     ? reduction::AxisChoice::span
+            : o.axis == "fitted" ? reduction::AxisChoice::fitted
+                                 : reduction::AxisChoice::flexural;
   const fs::path dir(o.out_dir);
   io::claim_output_folder(dir, "reduce", o.force);  // unwritable: exit 4 before any work
   // A failing solve in the FEM or the reduction is a numerical failure (exit 3).
@@ -53,12 +56,14 @@ void run_reduce(const ReduceOptions& o) {
       "reduction", [&] { return reduction::ClampedWingAnalysis(fem.model.mesh, fem.system, fem.root_clamp, ao); });
   const reduction::BeamProperties beam =
       app::numerical_stage("reduction", [&] { return reduction::extract_beam_properties(analysis, o.stations); });
-  const reduction::LumpedChain lc =
-      app::numerical_stage("reduction", [&] { return reduction::lump_into_chain(analysis, o.bodies); });
+  io::write_beam_csv(dir / "beam.csv", beam);  // written even if the chain cannot be made
+  const reduction::SpringModel springs =
+      o.springs == "diagonal" ? reduction::SpringModel::diagonal : reduction::SpringModel::full;
+  const reduction::LumpedChain lc = app::numerical_stage("cannot reduce " + o.wing_file + " to " +
+                                                             std::to_string(o.bodies) + " bodies",
+                                                         [&] { return reduction::lump_into_chain(analysis, o.bodies, springs); });
   const reduction::ChainFemComparison cmp = app::numerical_stage(
       "reduction", [&] { return reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds); });
-
-  io::write_beam_csv(dir / "beam.csv", beam);
   io::write_chain_file(dir / "chain.toml", lc.chain);
   io::write_reduction_vtk(dir, beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
@@ -77,7 +82,8 @@ void add_reduce_command(CLI::App& app) {
       "reduce",
       "Reduce a wing's FEM to an equivalent beam and an N-body Hencky bar chain.\n"
       "Writes DIR/beam.csv (stations: s, y, m', x_cg, x_ea, EI, GJ, I_alpha),\n"
-      "DIR/chain.toml (bodies and springs, for 'flapsim run'), DIR/reduction.vtm (stations, bodies, joints, centres of mass),\n"
+      "DIR/chain.toml (bodies and the joint stiffness, for 'flapsim run'), DIR/reduction.vtm (stations, bodies,\n"
+      "joints, centres of mass),\n"
       "DIR/report.md and DIR/summary.json (chain vs FEM: first bending and torsion\n"
       "frequencies, MAC, static tip deflection and twist). Method: docs/reduction.md.");
   auto o = std::make_shared<ReduceOptions>();
@@ -88,8 +94,14 @@ void add_reduce_command(CLI::App& app) {
   cmd->add_option("--stations", o->stations, "number of beam stations (default 40)")
       ->check(CLI::Range(2, 10000));
   cmd->add_option("--modes", o->modes, "FEM modes to compute (default 12)")->check(CLI::Range(2, 200));
-  cmd->add_option("--axis", o->axis, "flexural axis: fitted (least squares through the pivot) or span (y_W)")
-      ->check(CLI::IsMember({"fitted", "span"}));
+  cmd->add_option("--axis", o->axis,
+                  "the chain's axis: fitted (line through the pivot and the cells' elastic axes, default), "
+                  "flexural (least-squares line through the stations' flexural axes) or span (y_W)")
+      ->check(CLI::IsMember({"flexural", "fitted", "span"}));
+  cmd->add_option("--springs", o->springs,
+                  "joint springs: full (the joint stiffness K by reciprocity, default) or diagonal "
+                  "(the papers' independent springs, coupling dropped)")
+      ->check(CLI::IsMember({"full", "diagonal"}));
   cmd->add_flag("--force", o->force, "replace another command's outputs in the folder that this command would overwrite");
   cmd->callback([o] { run_reduce(*o); });
 }

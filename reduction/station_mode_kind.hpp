@@ -1,0 +1,39 @@
+#pragma once
+/// \file station_mode_kind.hpp
+/// \brief Names an FEM mode from the motion of the chain's stations (the beam), so that
+/// film modes are not called bending (docs/reduction.md, "Mode kinds from the stations").
+///
+/// In each station's band the nodes' u_z is split into the rigid-section motion
+/// B u_k (u_k = A_kᵀ x, the station's averaged motion) and the rest (camber, film
+/// bulging). The *beam share* is the mass-weighted share of the rigid-section part,
+/// Σ W (B u)² / Σ W u_z², over all bands. A mode with a beam share below one half is a
+/// film mode; otherwise it is bending or torsion by where the joint stiffness stores its
+/// energy: Φ = D r from the station rotations r, bending when Φ_θᵀ K_θθ Φ_θ ≥ Φ_αᵀ K_αα Φ_α.
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+#include "reduction/chain_lumping.hpp"
+
+namespace flapsim::reduction {
+
+enum class StationModeKind { bending, torsion, film };
+
+/// "bending", "torsion", "film".
+std::string to_string(StationModeKind kind);
+
+struct StationModeMeasures {
+  double beam_share = 0.0;     ///< mass-weighted share of u_z that the stations' rigid sections carry [-]
+  double bending_share = 0.0;  ///< share of the joint-stiffness energy in the θ block [-]
+  StationModeKind kind = StationModeKind::film;
+};
+
+/// \brief Measures and kind of the FEM mode shape \p shape (full DOF vector).
+StationModeMeasures classify_by_stations(const LumpedChain& chain, const Eigen::VectorXd& shape);
+
+/// \brief Kinds of every column of \p shapes.
+std::vector<StationModeMeasures> classify_modes_by_stations(const LumpedChain& chain, const Eigen::MatrixXd& shapes);
+
+}  // namespace flapsim::reduction
