@@ -1,12 +1,15 @@
 // Throughput of the Biot–Savart kernel: point–segment interactions per second, on a
 // wake-sized problem (6000 segments, 3300 target points), one and two threads, in double
-// precision and in the single precision the free-wake convection uses.
+// precision and in the single precision the free-wake convection uses, for each kernel
+// variant this CPU runs (uvlm/kernel_dispatch.hpp: scalar, avx2, avx512).
 #include "uvlm/biot_savart.hpp"
+#include "uvlm/kernel_dispatch.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
 #include <random>
+#include <string>
 
 using namespace flapsim::uvlm;
 
@@ -14,6 +17,13 @@ namespace {
 
 void BM_BiotSavart(benchmark::State& state, CoreModel model, bool single) {
   const int threads = static_cast<int>(state.range(0));
+  const auto isa = static_cast<KernelIsa>(state.range(1));
+  if (!kernel_isa_supported(isa)) {
+    state.SkipWithError("kernel variant not supported by this CPU");
+    return;
+  }
+  set_kernel_isa(isa);
+  state.SetLabel(std::string(kernel_isa_name(isa)));
   const std::size_t n_seg = 6000, n_pts = 3300;
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> u(0.0, 0.05);
@@ -45,10 +55,17 @@ void BM_BiotSavart(benchmark::State& state, CoreModel model, bool single) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_BiotSavart, LambOseen, CoreModel::LambOseen, false)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BiotSavart, CutOff, CoreModel::CutOff, false)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BiotSavart, Vatistas, CoreModel::Vatistas, false)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BiotSavart, LambOseenSingle, CoreModel::LambOseen, true)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BiotSavart, CutOffSingle, CoreModel::CutOff, true)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+void Args(benchmark::internal::Benchmark* b) {
+  for (int threads : {1, 2})
+    for (KernelIsa isa : {KernelIsa::Scalar, KernelIsa::Avx2, KernelIsa::Avx512})
+      b->Args({threads, static_cast<int>(isa)});
+  b->ArgNames({"threads", "isa"})->UseRealTime()->Unit(benchmark::kMillisecond);
+}
+
+BENCHMARK_CAPTURE(BM_BiotSavart, LambOseen, CoreModel::LambOseen, false)->Apply(Args);
+BENCHMARK_CAPTURE(BM_BiotSavart, CutOff, CoreModel::CutOff, false)->Apply(Args);
+BENCHMARK_CAPTURE(BM_BiotSavart, Vatistas, CoreModel::Vatistas, false)->Apply(Args);
+BENCHMARK_CAPTURE(BM_BiotSavart, LambOseenSingle, CoreModel::LambOseen, true)->Apply(Args);
+BENCHMARK_CAPTURE(BM_BiotSavart, CutOffSingle, CoreModel::CutOff, true)->Apply(Args);
 
 BENCHMARK_MAIN();

@@ -14,6 +14,8 @@
 
 #include "wings/input_error.hpp"
 
+#include <omp.h>
+
 namespace flapsim::fem {
 
 namespace {
@@ -26,7 +28,11 @@ std::mutex& gmsh_mutex() {
 void ensure_gmsh_initialized() {
   static bool done = false;
   if (done) return;
+  // gmsh's initialisation sets OpenMP's thread count (its General.NumThreads); keep the
+  // one the command chose (--threads, docs/performance.md).
+  const int threads = omp_get_max_threads();
   gmsh::initialize(0, nullptr, false);
+  omp_set_num_threads(threads);
   gmsh::option::setNumber("General.Terminal", std::getenv("FLAPSIM_GMSH_VERBOSE") ? 1 : 0);
   gmsh::option::setNumber("General.Verbosity", 1);
   std::atexit([] { gmsh::finalize(); });

@@ -22,7 +22,11 @@ class SegmentSet {
   void reserve(std::size_t capacity);
   void clear() { size_ = 0; }
   /// Append A→B with circulation gamma [m²/s]. Throws std::length_error beyond capacity.
-  void push(double ax, double ay, double az, double bx, double by, double bz, double gamma);
+  /// \param core_ratio2  (r_c / r_c,k)²: this segment's core r_c,k relative to the core r_c
+  ///                     the sum is called with (1: the same core; < 1: a larger core,
+  ///                     e.g. grown with age, core_growth.hpp)
+  void push(double ax, double ay, double az, double bx, double by, double bz, double gamma,
+            double core_ratio2 = 1.0);
   void push(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double gamma) {
     push(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), gamma);
   }
@@ -37,8 +41,11 @@ class SegmentSet {
   const double* by() const { return by_.data(); }
   const double* bz() const { return bz_.data(); }
   const double* gamma() const { return gamma_.data(); }
-  /// 1/|B − A|² [1/m²] per segment (0 for zero length), so the kernel needs no division for it.
+  /// (r_c/r_c,k)²/|B − A|² [1/m²] per segment (0 for zero length), so the kernel needs no
+  /// division for it: the kernel's x = h²/r_c,k² = |r1×r2|² · inv_length2 / r_c².
   const double* inv_length2() const { return inv_len2_.data(); }
+  /// (r_c/r_c,k)² per segment, as pushed (1 unless the segment has its own core).
+  const double* core_ratio2() const { return core_ratio2_.data(); }
 
   /// Copy the segments into the single-precision arrays that
   /// add_induced_velocity_single reads (no allocation).
@@ -47,7 +54,7 @@ class SegmentSet {
   const float* single(int array) const { return single_[array].data(); }
 
  private:
-  std::vector<double> ax_, ay_, az_, bx_, by_, bz_, gamma_, inv_len2_;
+  std::vector<double> ax_, ay_, az_, bx_, by_, bz_, gamma_, inv_len2_, core_ratio2_;
   std::vector<float> single_[8];
   std::size_t size_ = 0;
 };
@@ -83,5 +90,10 @@ void add_induced_velocity(const SegmentSet& segments, const double* x, const dou
 /// free-wake convection where a relative error of about 1e-6 in the velocity is far below
 /// the time-integration error. Reads the copies made by segments.update_single_precision().
 void add_induced_velocity_single(const SegmentSet& segments, PointSet& points, const VortexCore& core);
+
+/// Raw-array form of add_induced_velocity_single.
+void add_induced_velocity_single(const SegmentSet& segments, const double* x, const double* y,
+                                 const double* z, std::size_t n, double* u, double* v, double* w,
+                                 const VortexCore& core);
 
 }  // namespace flapsim::uvlm

@@ -2,7 +2,9 @@
 /// \file biot_savart_kernel.hpp
 /// \brief The inline, branch-free point–segment Biot–Savart interaction shared by
 /// every loop in uvlm/ (induced velocities, influence matrix). Branch-free so that
-/// the loops over segments vectorise (`#pragma omp simd`).
+/// the loops over segments vectorise (`#pragma omp simd`). Always inlined: the kernel
+/// variants (biot_savart_lanes.hpp) compile it for several instruction sets, and an
+/// out-of-line copy built for one of them must never be called from another.
 
 #include "uvlm/vortex_core.hpp"
 
@@ -20,7 +22,7 @@ template <> constexpr float kTiny<float> = 1e-36f;
 /// degree-10 Taylor polynomial on [0, 0.625]; relative error < 1e-12 for y < 20, and the
 /// argument is clamped at 40 where e^(−40) ≈ 4e-18 no longer matters next to 1.
 template <class T>
-inline T exp_neg(T y) {
+[[gnu::always_inline]] inline T exp_neg(T y) {
   y = y < T(40) ? y : T(40);
   const T z = -y * T(1.0 / 64.0);
   T p = T(1.0 / 3628800.0);
@@ -40,7 +42,7 @@ inline T exp_neg(T y) {
 
 /// Core factor f(x), x = h²/r_c² (see vortex_core.hpp).
 template <CoreModel M, class T>
-inline T core_factor(T x) {
+[[gnu::always_inline]] inline T core_factor(T x) {
   if constexpr (M == CoreModel::CutOff) {
     return x > T(1) ? T(1) : T(0);  // compiles to a mask/blend, not a branch
   } else if constexpr (M == CoreModel::LambOseen) {
@@ -50,12 +52,18 @@ inline T core_factor(T x) {
   }
 }
 
-/// Velocity induced at P by the straight segment A→B of circulation Γ, added to (u, v, w).
-/// Uses v = Γ/(4π) · f · (|r1|+|r2|)(|r1||r2| − r1·r2) / (|r1||r2| |r1×r2|²) · (r1×r2),
-/// r1 = P − A, r2 = P − B (algebraically the textbook r0·(r1/|r1| − r2/|r2|)/|r1×r2|² form).
-/// \param scale  1/(r_c² |B − A|²) [1/m⁴] (0 for a zero-length segment), so that x = |r1×r2|²·scale
+/// Velocity induced at P by the straight segment A→B of circulation Γ, added to (u, v, w):
+///   v = Γ/(4π) · f(h²/r_c²) · (|r1|+|r2|)(|r1||r2| − r1·r2) / (|r1||r2| |r1×r2|²) · (r1×r2),
+/// r1 = P − A, r2 = P − B (algebraically the textbook r0·(r1/|r1| − r2/|r2|)/|r1×r2|² form
+/// [Katz & Plotkin eq. 2.68]); (|r1||r2| − r1·r2)/|r1×r2|² is evaluated as 1/(|r1||r2| + r1·r2)
+/// where r1·r2 ≥ 0 (no cancellation beyond the ends). h is the distance from P to the
+/// segment: to its line where P projects inside it, to the nearer end beyond the ends (a
+/// point far beyond a segment's end is not in its core, so far away every core model is
+/// the singular kernel, which the tree code's expansions assume).
+/// \param scale  1/(r_c² |B − A|²) [1/m⁴] (0 for a zero-length segment), so that
+///               h²/r_c² = |r1×r2|²·scale inside and |r_end|² |B − A|²·scale beyond an end
 template <CoreModel M, class T>
-inline void segment_velocity(T px, T py, T pz, T ax, T ay, T az, T bx, T by, T bz, T gamma, T scale,
+[[gnu::always_inline]] inline void segment_velocity(T px, T py, T pz, T ax, T ay, T az, T bx, T by, T bz, T gamma, T scale,
                              T& u, T& v, T& w) {
   using Real = T;  // the precision of this evaluation
   const Real r1x = px - ax, r1y = py - ay, r1z = pz - az;
@@ -64,12 +72,22 @@ inline void segment_velocity(T px, T py, T pz, T ax, T ay, T az, T bx, T by, T b
   const Real cy = r1z * r2x - r1x * r2z;
   const Real cz = r1x * r2y - r1y * r2x;
   const Real cross2 = cx * cx + cy * cy + cz * cz;
-  const Real n1 = std::sqrt(r1x * r1x + r1y * r1y + r1z * r1z);
-  const Real n2 = std::sqrt(r2x * r2x + r2y * r2y + r2z * r2z);
+  const Real s1 = r1x * r1x + r1y * r1y + r1z * r1z;
+  const Real s2 = r2x * r2x + r2y * r2y + r2z * r2z;
+  const Real n1 = std::sqrt(s1);
+  const Real n2 = std::sqrt(s2);
   const Real dot12 = r1x * r2x + r1y * r2y + r1z * r2z;
-  const Real x = cross2 * scale;  // h²/r_c²
+  // P projects beyond an end exactly when r1·r2 exceeds the smaller of |r1|², |r2|².
+  const Real near2 = s1 < s2 ? s1 : s2;
+  const Real lx = bx - ax, ly = by - ay, lz = bz - az;
+  const Real len2 = lx * lx + ly * ly + lz * lz;  // |B − A|² (not s1 + s2 − 2 r1·r2: cancellation far away)
+  const Real x = dot12 > near2 ? near2 * len2 * scale : cross2 * scale;  // h²/r_c²
   const Real f = core_factor<M>(x);
-  const Real k = gamma * T(kInvFourPi) * f * (n1 + n2) * (n1 * n2 - dot12) / (n1 * n2 * cross2 + kTiny<T>);
+  const Real p12 = n1 * n2;
+  const bool between = dot12 < Real(0);
+  const Real num = between ? p12 - dot12 : Real(1);
+  const Real den = between ? p12 * cross2 : p12 * (p12 + dot12);
+  const Real k = gamma * T(kInvFourPi) * f * (n1 + n2) * num / (den + kTiny<T>);
   u += k * cx;
   v += k * cy;
   w += k * cz;

@@ -17,8 +17,13 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d);
 /// Unique bound segments with their net circulation from d.gamma.
 void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d);
 
-/// Unique wake segments with their net circulation (row wake_rows must sit on the trailing edge).
-void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d);
+/// Who looks at the wake segments: the wing (cores at least model.near_wing_core) or the
+/// wake itself (each segment's own, possibly grown, core).
+enum class WakeView { Wing, Wake };
+
+/// Unique wake segments with their net circulation and core (row wake_rows must sit on
+/// the trailing edge), as seen from `view`.
+void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, WakeView view);
 
 /// Put the wake's newest node row on the current trailing edge (ring nodes of row nc).
 void attach_wake_to_trailing_edge(const VortexLatticeModel& m, VortexLatticeData& d);

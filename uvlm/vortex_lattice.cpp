@@ -15,6 +15,13 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
     throw std::invalid_argument("vortex lattice: core radius and bound core fraction must be > 0");
   if (m.wake_capacity < 1) throw std::invalid_argument("vortex lattice: wake_capacity must be >= 1");
   if (m.max_wake_rows < 0) throw std::invalid_argument("vortex lattice: max_wake_rows must be >= 0");
+  if (m.wake_sum == WakeSum::Tree && !(m.tree_tolerance > 0.0))
+    throw std::invalid_argument("vortex lattice: tree tolerance must be > 0");
+  if (!(m.near_wing_core >= 0.0) || !(m.frozen_wake_age >= 0.0) || !(m.near_wing_min_age >= 0.0))
+    throw std::invalid_argument("vortex lattice: near-wing core and frozen-wake age must be >= 0");
+  if (m.core_growth.enabled &&
+      (!(m.core_growth.kinematic_viscosity > 0.0) || !(m.core_growth.squire_a1 >= 0.0)))
+    throw std::invalid_argument("vortex lattice: core growth needs a viscosity > 0 and a1 >= 0");
   const int nc = m.chordwise, ns = m.spanwise, np = m.panels(), nn = m.nodes();
   spanwise = ns;
   wake_capacity = m.wake_capacity;
@@ -48,11 +55,13 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   wake_prev_v.assign(wake_nodes_n, 0.0);
   wake_prev_w.assign(wake_nodes_n, 0.0);
   wake_row_has_prev.assign(rows + 1, 0);
+  wake_row_age.assign(rows + 1, 0.0);
 
   const std::size_t bound_n = static_cast<std::size_t>((nc + 1) * ns + nc * (ns + 1));
   bound_segments.reserve(bound_n);
   trailing_edge_segments.reserve(ns);
   wake_segments.reserve((rows + 1) * ns + rows * (ns + 1));
+  if (m.wake_sum == WakeSum::Tree) wake_tree.reserve(wake_segments.capacity());
   for (auto& s : ring_side) s.reserve(np);
   eval.reserve(std::max<std::size_t>(bound_n, np));
 
@@ -235,7 +244,7 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   detail::update_geometry(m, d, nodes, node_velocities);
   refactorise_if_moved(m, d);
   detail::attach_wake_to_trailing_edge(m, d);
-  detail::build_wake_segments(m, d);
+  detail::build_wake_segments(m, d, detail::WakeView::Wing);
   wake_velocity_at_collocation(m, d);
   const int np = m.panels();
   for (int k = 0; k < np; ++k)
@@ -292,7 +301,7 @@ void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen
   d.gamma_accepted = d.gamma;
   d.gamma_accepted_before = d.gamma;
   for (int j = 0; j < ns; ++j) d.wake_gamma[j] = d.gamma(m.panel(nc - 1, j));
-  detail::build_wake_segments(m, d);
+  detail::build_wake_segments(m, d, detail::WakeView::Wing);
   wake_velocity_at_collocation(m, d);
   detail::build_bound_segments(m, d);
   detail::compute_loads(m, d);

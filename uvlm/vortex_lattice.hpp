@@ -24,6 +24,8 @@
 /// trailing edge); for a wing in the wing frame n = +z_W (lift for positive incidence).
 
 #include "uvlm/biot_savart.hpp"
+#include "uvlm/core_growth.hpp"
+#include "uvlm/segment_tree.hpp"
 #include "uvlm/vortex_core.hpp"
 
 #include <Eigen/Core>
@@ -39,6 +41,11 @@ enum class WakeModel {
   Prescribed  ///< wake nodes move with the free stream only (flat wake; verification cases)
 };
 enum class WakeIntegrator { Euler, AdamsBashforth2 };
+/// How the wake's velocity at its own nodes is summed.
+enum class WakeSum {
+  Direct,  ///< every node × every segment (biot_savart.hpp)
+  Tree     ///< Barnes–Hut tree code with multipoles (segment_tree.hpp), O(N log N)
+};
 enum class LoadMethod {
   Bernoulli,      ///< unsteady Bernoulli pressure jump per panel from the surface gradient of Γ
   KuttaJoukowski  ///< ρ Γ (V × dl) on every bound segment, plus the ∂Γ/∂t term
@@ -72,6 +79,27 @@ struct VortexLatticeModel {
   bool single_precision_wake = true;
   int max_wake_rows = 0;   ///< keep at most this many wake rows (oldest dropped); 0 = keep all
   int wake_capacity = 0;   ///< wake rows the workspace holds (the run's step count, or max_wake_rows)
+  /// Viscous growth of the wake's cores with age (core_growth.hpp); off: every wake
+  /// segment keeps `core`.
+  CoreGrowth core_growth;
+  /// Near-wing treatment: the wing (collocation and load points) sees every wake segment
+  /// older than near_wing_min_age through a core of at least this radius [m], so a wake
+  /// vortex that comes back close to or through the lattice cannot put a spike into the
+  /// circulations; 0: the wake's own cores. Far from the segment the core makes no
+  /// difference. The younger wake (the vorticity just shed, which sets the Kutta
+  /// condition with the trailing-edge segments) keeps its own core. The wake nodes see the
+  /// bound segments (not the trailing edge) through this core too.
+  double near_wing_core = 0.0;
+  double near_wing_min_age = 0.0;  ///< [s]
+  /// Far wake: wake nodes older than this [s] no longer move (they still induce velocity,
+  /// and their velocity is not computed any more); 0: the whole wake is free.
+  double frozen_wake_age = 0.0;
+  /// The wake's self-induced velocity: direct sum or tree code (in double precision, to
+  /// a relative error of tree_tolerance; the direct sum is used while the wake has fewer
+  /// than tree_min_segments segments, where the tree does not pay).
+  WakeSum wake_sum = WakeSum::Direct;
+  double tree_tolerance = 1e-4;
+  std::size_t tree_min_segments = 2000;
 
   VortexCore bound_core() const { return {core.model, core.radius * bound_core_fraction}; }
   int panels() const { return chordwise * spanwise; }
@@ -140,11 +168,13 @@ struct VortexLatticeData {
   std::vector<double> wake_gamma;
   std::vector<double> wake_prev_u, wake_prev_v, wake_prev_w;  ///< velocity of the last step (AB2)
   std::vector<char> wake_row_has_prev;
+  std::vector<double> wake_row_age;  ///< time since each node row left the trailing edge [s]
 
   // Segment sets (unique segments with net circulation) and evaluation points.
   SegmentSet bound_segments;          ///< bound segments except the trailing edge
   SegmentSet trailing_edge_segments;  ///< the last rings' trailing segments (wake core)
   SegmentSet wake_segments;
+  SegmentTree wake_tree;              ///< the tree code's storage (model.wake_sum = Tree)
   SegmentSet ring_side[4];  ///< unit-circulation ring sides for the influence matrix
   PointSet eval;
 

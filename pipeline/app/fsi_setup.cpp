@@ -62,6 +62,13 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, std::in
   m.leading_edge = c.numerics.leading_edge;
   m.max_wake_rows = c.numerics.wake_max_rows;
   m.wake_capacity = c.numerics.wake_max_rows > 0 ? c.numerics.wake_max_rows : static_cast<int>(steps);  // <= 1e8
+  m.core_growth.enabled = c.numerics.core_growth;
+  m.core_growth.squire_a1 = c.numerics.core_growth_a1;
+  m.core_growth.kinematic_viscosity = c.numerics.kinematic_viscosity;
+  m.near_wing_core = c.numerics.near_wing_core * mean_chord;
+  m.frozen_wake_age = c.numerics.frozen_wake_cycles / c.kinematics.frequency;
+  m.wake_sum = c.numerics.wake_sum;
+  m.tree_tolerance = c.numerics.tree_tolerance;
   return m;
 }
 

@@ -96,8 +96,11 @@ Case::Numerics read_numerics(const TomlTable& root) {
   const auto t = root.find_table("numerics");
   if (!t) return n;
   t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
-                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "core_model", "core_radius", "wake_order", "wake_max_rows", "free_wake",
-                  "max_coupling_iterations", "coupling_tolerance", "rho_infinity"});
+                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "core_model",
+                  "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
+                  "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles",
+                  "wake_sum", "tree_tolerance", "max_coupling_iterations", "coupling_tolerance",
+                  "rho_infinity"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
   // The product in 64 bits, against a documented maximum (an int would wrap).
@@ -118,6 +121,13 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.wake_order = t->get_int("wake_order", n.wake_order, Bounds::closed(1, 2));
   n.wake_max_rows = t->get_int("wake_max_rows", n.wake_max_rows, Bounds::non_negative());
   n.free_wake = t->get_bool("free_wake", n.free_wake);
+  n.core_growth = t->get_bool("core_growth", n.core_growth);
+  n.core_growth_a1 = t->get_double("core_growth_a1", n.core_growth_a1, Bounds::closed(0.0, 1.0));
+  n.kinematic_viscosity = t->get_double("kinematic_viscosity", n.kinematic_viscosity, Bounds::positive());
+  n.near_wing_core = t->get_double("near_wing_core", n.near_wing_core, Bounds::closed(0.0, 1.0));
+  n.frozen_wake_cycles = t->get_double("frozen_wake_cycles", n.frozen_wake_cycles, Bounds::non_negative());
+  n.wake_sum = t->get_choice("wake_sum", kWakeSumNames, std::optional(n.wake_sum));
+  n.tree_tolerance = t->get_double("tree_tolerance", n.tree_tolerance, Bounds{1e-8, 1e-2, false, false});
   n.max_coupling_iterations =
       t->get_int("max_coupling_iterations", n.max_coupling_iterations, Bounds::closed(1, 100000));
   n.coupling_tolerance =

@@ -82,6 +82,13 @@ struct Case {
     int wake_order = 1;                     ///< 1 | 2 (wake convection order)
     int wake_max_rows = 0;                  ///< 0 = keep all wake rows
     bool free_wake = true;                  ///< false: wake convected by U∞ and the body only
+    bool core_growth = false;               ///< wake cores grow with age (uvlm/core_growth.hpp)
+    double core_growth_a1 = 2e-4;           ///< a1 of Squire's δ = 1 + a1 Γ/ν
+    double kinematic_viscosity = 1.5e-5;    ///< ν of the air for the core growth [m²/s]
+    double near_wing_core = 0.0;            ///< min. core of the wake seen from the wing, fraction of the mean chord
+    double frozen_wake_cycles = 0.0;        ///< wake older than this many cycles stops moving; 0 = never
+    uvlm::WakeSum wake_sum = uvlm::WakeSum::Direct;  ///< wake velocity sum: "direct" | "tree"
+    double tree_tolerance = 1e-4;           ///< relative error of the tree code's velocities
     int max_coupling_iterations = 50;       ///< strong-coupling sub-iterations per step
     double coupling_tolerance = 1e-6;       ///< relative change that ends the sub-iterations
     double rho_infinity = 0.9;              ///< generalized-α spectral radius ρ∞ in [0, 1]
@@ -115,6 +122,8 @@ inline constexpr std::array<std::pair<std::string_view, uvlm::LeadingEdge>, 3> k
      {"separated", uvlm::LeadingEdge::Separated}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::CoreModel>, 2> kCoreModelNames{
     {{"cutoff", uvlm::CoreModel::CutOff}, {"lamb_oseen", uvlm::CoreModel::LambOseen}}};
+inline constexpr std::array<std::pair<std::string_view, uvlm::WakeSum>, 2> kWakeSumNames{
+    {{"direct", uvlm::WakeSum::Direct}, {"tree", uvlm::WakeSum::Tree}}};
 inline constexpr std::array<std::pair<std::string_view, mbd::LoadFrame>, 2> kLoadFrameNames{
     {{"ground", mbd::LoadFrame::ground}, {"body", mbd::LoadFrame::body}}};
 

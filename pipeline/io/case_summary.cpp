@@ -18,6 +18,13 @@ std::string line(const char* format, Args... args) {
   return std::string(buf) + "\n";
 }
 
+/// %g of a number, without a newline.
+std::string line_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
 }  // namespace
 
 std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angles& a) {
@@ -71,6 +78,17 @@ std::string describe_case(const Case& c) {
   s += line("  wake                   %s, order %d, %s", n.free_wake ? "free" : "prescribed", n.wake_order,
             n.wake_max_rows > 0 ? (std::to_string(n.wake_max_rows) + " rows kept").c_str()
                                 : "all rows kept");
+  s += line("  wake cores             %s, near-wing core %.4g mean chords, %s",
+            n.core_growth ? ("growing with age (a1 = " + line_number(n.core_growth_a1) +
+                             ", nu = " + line_number(n.kinematic_viscosity) + " m^2/s)").c_str()
+                          : "constant",
+            n.near_wing_core,
+            n.frozen_wake_cycles > 0 ? ("frozen after " + line_number(n.frozen_wake_cycles) + " cycles").c_str()
+                                     : "never frozen");
+  s += line("  wake velocity sum      %s",
+            n.wake_sum == uvlm::WakeSum::Tree
+                ? ("tree code, relative error " + line_number(n.tree_tolerance)).c_str()
+                : "direct");
   s += line("  coupling               at most %d iterations, tolerance %.3g", n.max_coupling_iterations,
             n.coupling_tolerance);
   if (c.output.vtk_every > 0)

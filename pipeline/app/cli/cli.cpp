@@ -8,6 +8,7 @@
 #include <iostream>
 #include <new>
 
+#include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/app/cli/exit_status.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
@@ -39,6 +40,7 @@ int run(int argc, char** argv) {
   add_reduce_command(app);
   add_run_command(app);
   add_sweep_command(app);
+  for (CLI::App* command : app.get_subcommands({})) add_threads_option(*command);
   // The exit-status contract (exit_status.hpp, README.md): each kind of error has one status.
   try {
     app.parse(argc, argv);

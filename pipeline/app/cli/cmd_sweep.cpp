@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/app/sweep/case_table.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
@@ -80,7 +81,7 @@ void sweep_command(const SweepArgs& a) {
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;
   options.spring_scale = a.spring_scale;
-  options.threads = a.jobs;
+  options.threads = a.jobs > 0 ? a.jobs : requested_threads();  // 0: the runner's default
   options.vtk_every = a.vtk_every;
   options.force = a.force;
   options.quiet = a.quiet;
@@ -127,7 +128,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--chain", args->chain_file, "chain file for every case (as flapsim run --chain)");
   cmd->add_option(
          "-j,--jobs", args->jobs,
-         "cases run at the same time per process/rank (default: the cores, shared by the ranks on a machine)")
+         "cases run at the same time per process/rank (default: --threads if given, else the cores, shared by the ranks on a machine)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--vtk-every", args->vtk_every, "ParaView series per case every N steps (default 0: none)")
       ->check(CLI::NonNegativeNumber);

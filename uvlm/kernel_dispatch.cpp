@@ -1,0 +1,59 @@
+#include "uvlm/kernel_dispatch.hpp"
+
+#include <atomic>
+#include <stdexcept>
+#include <string>
+
+namespace flapsim::uvlm {
+
+namespace {
+
+KernelIsa widest_supported() {
+  if (kernel_isa_supported(KernelIsa::Avx512)) return KernelIsa::Avx512;
+  if (kernel_isa_supported(KernelIsa::Avx2)) return KernelIsa::Avx2;
+  return KernelIsa::Scalar;
+}
+
+std::atomic<KernelIsa>& current() {
+  static std::atomic<KernelIsa> isa{widest_supported()};
+  return isa;
+}
+
+}  // namespace
+
+std::string_view kernel_isa_name(KernelIsa isa) {
+  switch (isa) {
+    case KernelIsa::Scalar: return "scalar";
+    case KernelIsa::Avx2: return "avx2";
+    case KernelIsa::Avx512: return "avx512";
+  }
+  return "?";
+}
+
+bool kernel_isa_supported(KernelIsa isa) {
+  __builtin_cpu_init();
+  switch (isa) {
+    case KernelIsa::Scalar: return true;
+    case KernelIsa::Avx2: return __builtin_cpu_supports("avx2");
+    case KernelIsa::Avx512: return __builtin_cpu_supports("avx512f");
+  }
+  return false;
+}
+
+std::vector<KernelIsa> supported_kernel_isas() {
+  std::vector<KernelIsa> out;
+  for (KernelIsa isa : {KernelIsa::Scalar, KernelIsa::Avx2, KernelIsa::Avx512})
+    if (kernel_isa_supported(isa)) out.push_back(isa);
+  return out;
+}
+
+KernelIsa kernel_isa() { return current().load(std::memory_order_relaxed); }
+
+void set_kernel_isa(KernelIsa isa) {
+  if (!kernel_isa_supported(isa))
+    throw std::invalid_argument("Biot-Savart kernel: this CPU does not support " +
+                                std::string(kernel_isa_name(isa)));
+  current().store(isa, std::memory_order_relaxed);
+}
+
+}  // namespace flapsim::uvlm

@@ -1,0 +1,372 @@
+#include "uvlm/segment_tree.hpp"
+
+#include "uvlm/biot_savart_kernel.hpp"
+#include "uvlm/biot_savart_lanes.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace flapsim::uvlm {
+
+namespace {
+
+constexpr int kMaxOrder = 4;                 // p ≤ 4
+constexpr int kMaxDerivative = kMaxOrder + 1;  // ∂ⁿφ up to |n| = p + 1
+constexpr int terms_up_to(int q) { return (q + 1) * (q + 2) * (q + 3) / 6; }
+constexpr int kMaxTerms = terms_up_to(kMaxDerivative);  // 56
+constexpr int kLanes = detail::kLanes<double>;
+
+/// Multi-indices n = (a, b, c) in graded order (|n| = 0, 1, 2, …) and their neighbours.
+struct MultiIndexTable {
+  int a[kMaxTerms], b[kMaxTerms], c[kMaxTerms], order[kMaxTerms];
+  int minus[kMaxTerms][3];   // index of n − e_i (−1 if n_i = 0)
+  int minus2[kMaxTerms][3];  // index of n − 2e_i (−1 if n_i < 2)
+  int plus[kMaxTerms][3];    // index of n + e_i (−1 beyond kMaxDerivative)
+  int index[kMaxDerivative + 1][kMaxDerivative + 1][kMaxDerivative + 1];
+  double factor[kMaxTerms];  // (−1)^|n| / (n! 4π)
+  double binomial[kMaxDerivative + 1][kMaxDerivative + 1];
+  MultiIndexTable() {
+    int t = 0;
+    for (auto& x : index)
+      for (auto& y : x)
+        for (int& z : y) z = -1;
+    for (int m = 0; m <= kMaxDerivative; ++m)
+      for (int i = m; i >= 0; --i)
+        for (int j = m - i; j >= 0; --j) {
+          a[t] = i; b[t] = j; c[t] = m - i - j; order[t] = m;
+          index[i][j][m - i - j] = t++;
+        }
+    auto idx = [&](int i, int j, int k) {
+      return (i < 0 || j < 0 || k < 0 || i + j + k > kMaxDerivative) ? -1 : index[i][j][k];
+    };
+    auto fact = [](int n) { double f = 1; for (int i = 2; i <= n; ++i) f *= i; return f; };
+    for (t = 0; t < kMaxTerms; ++t) {
+      const int i = a[t], j = b[t], k = c[t];
+      minus[t][0] = idx(i - 1, j, k); minus[t][1] = idx(i, j - 1, k); minus[t][2] = idx(i, j, k - 1);
+      minus2[t][0] = idx(i - 2, j, k); minus2[t][1] = idx(i, j - 2, k); minus2[t][2] = idx(i, j, k - 2);
+      plus[t][0] = idx(i + 1, j, k); plus[t][1] = idx(i, j + 1, k); plus[t][2] = idx(i, j, k + 1);
+      factor[t] = ((order[t] % 2) ? -1.0 : 1.0) / (fact(i) * fact(j) * fact(k)) * detail::kInvFourPi;
+    }
+    for (int n = 0; n <= kMaxDerivative; ++n)
+      for (int k = 0; k <= n; ++k) binomial[n][k] = fact(n) / (fact(k) * fact(n - k));
+  }
+};
+
+const MultiIndexTable& table() {
+  static const MultiIndexTable t;
+  return t;
+}
+
+/// Interleave the low 20 bits of x, y, z into a 60-bit Morton key.
+std::uint64_t spread(std::uint64_t v) {
+  v &= 0xFFFFF;
+  v = (v | v << 32) & 0x1F00000000FFFFull;
+  v = (v | v << 16) & 0x1F0000FF0000FFull;
+  v = (v | v << 8) & 0x100F00F00F00F00Full;
+  v = (v | v << 4) & 0x10C30C30C30C30C3ull;
+  v = (v | v << 2) & 0x1249249249249249ull;
+  return v;
+}
+
+/// Distance from a segment, in units of its core radius, beyond which the core factor
+/// f(h²/r_c²) differs from 1 by less than `tolerance` (vortex_core.hpp).
+double core_free_distance(CoreModel model, double tolerance) {
+  switch (model) {
+    case CoreModel::CutOff: return 1.0;
+    case CoreModel::LambOseen: return std::sqrt(std::log(1.0 / tolerance) / detail::kLambOseen);
+    case CoreModel::Vatistas: return std::pow(0.5 / tolerance, 0.25);  // 1 − f ≈ 1/(2x²)
+  }
+  return 1.0;
+}
+
+}  // namespace
+
+TreeParameters tree_parameters(double tolerance) {
+  if (!(tolerance > 0.0)) throw std::invalid_argument("tree code: tolerance must be > 0");
+  // Measured against the direct sum on a hover wake (docs/uvlm.md, "Tree code").
+  if (tolerance >= 1e-3) return {3, 0.5, tolerance};
+  if (tolerance >= 1e-4) return {4, 0.4, tolerance};
+  if (tolerance >= 1e-5) return {4, 0.25, tolerance};
+  return {4, 0.15, tolerance};
+}
+
+void SegmentTree::reserve(std::size_t n) {
+  for (auto* a : {&sx_, &sy_, &sz_, &tx_, &ty_, &tz_, &sg_, &srat_}) a->assign(n, 0.0);
+  for (auto* a : {&pax_, &pay_, &paz_, &pbx_, &pby_, &pbz_, &pg_, &pil_}) a->assign(n * kLanes, 0.0);
+  keys_.assign(2 * n, 0);
+  order_.assign(n, 0);
+  nodes_.assign(2 * n + 1, Node{});
+  moments_.assign((2 * n + 1) * 3 * terms_up_to(kMaxOrder), 0.0);
+  stack_.assign(2 * n + 1, 0);
+  size_ = node_count_ = 0;
+}
+
+void SegmentTree::build(const SegmentSet& s, const VortexCore& core, const TreeParameters& params) {
+  const std::size_t n = s.size();
+  if (n > order_.size()) throw std::length_error("tree code: more segments than reserved");
+  if (params.order < 0 || params.order > kMaxOrder || !(params.theta > 0.0 && params.theta < 1.0))
+    throw std::invalid_argument("tree code: order must be 0..4 and opening angle in (0, 1)");
+  params_ = params;
+  core_ = core;
+  terms_ = terms_up_to(params.order);
+  size_ = n;
+  node_count_ = 0;
+  if (n == 0) return;
+
+  // Morton keys of the midpoints, sorted (ties by index: deterministic).
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (std::size_t k = 0; k < n; ++k) {
+    const double m[3] = {0.5 * (s.ax()[k] + s.bx()[k]), 0.5 * (s.ay()[k] + s.by()[k]),
+                         0.5 * (s.az()[k] + s.bz()[k])};
+    for (int i = 0; i < 3; ++i) { lo[i] = std::min(lo[i], m[i]); hi[i] = std::max(hi[i], m[i]); }
+  }
+  const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300});
+  const double q = 1048575.0 / extent;  // 2^20 − 1 cells per axis
+  std::uint64_t* key = keys_.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    auto cell = [&](double a, double b, int i) {
+      return static_cast<std::uint64_t>((0.5 * (a + b) - lo[i]) * q);
+    };
+    key[k] = spread(cell(s.ax()[k], s.bx()[k], 0)) | spread(cell(s.ay()[k], s.by()[k], 1)) << 1 |
+             spread(cell(s.az()[k], s.bz()[k], 2)) << 2;
+    order_[k] = static_cast<std::uint32_t>(k);
+  }
+  std::sort(order_.begin(), order_.begin() + n, [key](std::uint32_t i, std::uint32_t j) {
+    return key[i] < key[j] || (key[i] == key[j] && i < j);
+  });
+  std::uint64_t* skey = keys_.data() + n;  // sorted keys
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t o = order_[k];
+    skey[k] = key[o];
+    sx_[k] = s.ax()[o]; sy_[k] = s.ay()[o]; sz_[k] = s.az()[o];
+    tx_[k] = s.bx()[o]; ty_[k] = s.by()[o]; tz_[k] = s.bz()[o];
+    sg_[k] = s.gamma()[o]; srat_[k] = s.core_ratio2()[o];
+  }
+
+  // Octree: split a range at the highest octal digit where its first and last keys
+  // differ (every internal node has ≥ 2 children, so nodes < 2n).
+  const double core_factor_distance = core_free_distance(core.model, 0.1 * params.tolerance);
+  nodes_[0] = Node{};
+  nodes_[0].seg_begin = 0;
+  nodes_[0].seg_end = static_cast<std::uint32_t>(n);
+  node_count_ = 1;
+  std::size_t top = 0;
+  stack_[top++] = 0;
+  std::uint32_t padded = 0;
+  while (top > 0) {
+    const std::uint32_t id = stack_[--top];
+    const std::uint32_t b = nodes_[id].seg_begin, e = nodes_[id].seg_end;
+    const std::uint64_t diff = skey[b] ^ skey[e - 1];
+    if (e - b <= static_cast<std::uint32_t>(kLeafSegments) || diff == 0) {
+      Node& leaf = nodes_[id];
+      leaf.child_count = 0;
+      leaf.begin = padded;
+      leaf.count = (e - b + kLanes - 1) / kLanes * kLanes;
+      for (std::uint32_t k = 0; k < leaf.count; ++k) {
+        const std::uint32_t p = padded + k;
+        if (b + k < e) {
+          const std::uint32_t g = b + k;
+          pax_[p] = sx_[g]; pay_[p] = sy_[g]; paz_[p] = sz_[g];
+          pbx_[p] = tx_[g]; pby_[p] = ty_[g]; pbz_[p] = tz_[g];
+          pg_[p] = sg_[g];
+          pil_[p] = detail::segment_scale(sx_[g], sy_[g], sz_[g], tx_[g], ty_[g], tz_[g], srat_[g]);
+        } else {  // padding: no circulation, zero length
+          pax_[p] = pay_[p] = paz_[p] = pbx_[p] = pby_[p] = pbz_[p] = pg_[p] = pil_[p] = 0.0;
+        }
+      }
+      padded += leaf.count;
+      continue;
+    }
+    const int shift = (63 - __builtin_clzll(diff)) / 3 * 3;
+    const std::uint32_t first = static_cast<std::uint32_t>(node_count_);
+    std::uint32_t start = b;
+    while (start < e) {
+      const std::uint64_t digit = (skey[start] >> shift) & 7;
+      std::uint32_t stop = start + 1;
+      while (stop < e && ((skey[stop] >> shift) & 7) == digit) ++stop;
+      Node child{};
+      child.seg_begin = start;
+      child.seg_end = stop;
+      nodes_[node_count_++] = child;
+      start = stop;
+    }
+    nodes_[id].first_child = first;
+    nodes_[id].child_count = static_cast<std::uint32_t>(node_count_) - first;
+    for (std::uint32_t c = nodes_[id].child_count; c-- > 0;) stack_[top++] = first + c;
+  }
+
+  // Geometry of each node: centre of the bounding box of its segment ends, radius, and
+  // the distance beyond which the largest core in it no longer matters.
+  for (std::size_t id = 0; id < node_count_; ++id) {
+    Node& nd = nodes_[id];
+    double l[3] = {1e300, 1e300, 1e300}, h[3] = {-1e300, -1e300, -1e300}, ratio_min = 1e300;
+    for (std::uint32_t k = nd.seg_begin; k < nd.seg_end; ++k) {
+      const double p[6] = {sx_[k], sy_[k], sz_[k], tx_[k], ty_[k], tz_[k]};
+      for (int i = 0; i < 3; ++i) {
+        l[i] = std::min({l[i], p[i], p[i + 3]});
+        h[i] = std::max({h[i], p[i], p[i + 3]});
+      }
+      ratio_min = std::min(ratio_min, srat_[k]);
+    }
+    nd.cx = 0.5 * (l[0] + h[0]); nd.cy = 0.5 * (l[1] + h[1]); nd.cz = 0.5 * (l[2] + h[2]);
+    double r2 = 0;
+    for (std::uint32_t k = nd.seg_begin; k < nd.seg_end; ++k) {
+      const double da = (sx_[k] - nd.cx) * (sx_[k] - nd.cx) + (sy_[k] - nd.cy) * (sy_[k] - nd.cy) + (sz_[k] - nd.cz) * (sz_[k] - nd.cz);
+      const double db = (tx_[k] - nd.cx) * (tx_[k] - nd.cx) + (ty_[k] - nd.cy) * (ty_[k] - nd.cy) + (tz_[k] - nd.cz) * (tz_[k] - nd.cz);
+      r2 = std::max({r2, da, db});
+    }
+    nd.radius = std::sqrt(r2);
+    const double rc_max = core.radius / std::sqrt(std::max(ratio_min, 1e-300));
+    nd.safe_distance = core_factor_distance * rc_max;
+  }
+  // Moments: leaves from their segments, parents from their children (children have
+  // larger indices than their parent).
+  for (std::size_t id = node_count_; id-- > 0;) compute_moments(id);
+}
+
+void SegmentTree::compute_moments(std::size_t id) {
+  const MultiIndexTable& T = table();
+  const Node& nd = nodes_[id];
+  double* Q = moments_.data() + id * 3 * terms_;
+  for (int t = 0; t < 3 * terms_; ++t) Q[t] = 0.0;
+  const int p = params_.order;
+  if (nd.child_count == 0) {
+    // Q_n = Σ Γ (B − A) ∫₀¹ (y(s) − c)^n ds, 3-point Gauss–Legendre (exact to degree 5).
+    static const double gs[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
+    static const double gw[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+    for (std::uint32_t k = nd.seg_begin; k < nd.seg_end; ++k) {
+      const double lx = tx_[k] - sx_[k], ly = ty_[k] - sy_[k], lz = tz_[k] - sz_[k];
+      for (int g = 0; g < 3; ++g) {
+        const double d[3] = {sx_[k] + gs[g] * lx - nd.cx, sy_[k] + gs[g] * ly - nd.cy,
+                             sz_[k] + gs[g] * lz - nd.cz};
+        double pw[3][kMaxOrder + 1];
+        for (int i = 0; i < 3; ++i) {
+          pw[i][0] = 1.0;
+          for (int e = 1; e <= p; ++e) pw[i][e] = pw[i][e - 1] * d[i];
+        }
+        const double w = gw[g] * sg_[k];
+        for (int t = 0; t < terms_; ++t) {
+          const double m = w * pw[0][T.a[t]] * pw[1][T.b[t]] * pw[2][T.c[t]];
+          Q[3 * t] += m * lx;
+          Q[3 * t + 1] += m * ly;
+          Q[3 * t + 2] += m * lz;
+        }
+      }
+    }
+    return;
+  }
+  // Translation of each child's moments to this centre:
+  // Q_n = Σ_{m ≤ n} C(n, m) d^(n − m) Q_m(child), d = c_child − c.
+  for (std::uint32_t c = 0; c < nd.child_count; ++c) {
+    const std::size_t cid = nd.first_child + c;
+    const Node& ch = nodes_[cid];
+    const double* Qc = moments_.data() + cid * 3 * terms_;
+    const double d[3] = {ch.cx - nd.cx, ch.cy - nd.cy, ch.cz - nd.cz};
+    double pw[3][kMaxOrder + 1];
+    for (int i = 0; i < 3; ++i) {
+      pw[i][0] = 1.0;
+      for (int e = 1; e <= p; ++e) pw[i][e] = pw[i][e - 1] * d[i];
+    }
+    for (int t = 0; t < terms_; ++t) {
+      const int a = T.a[t], b = T.b[t], cc = T.c[t];
+      for (int i = 0; i <= a; ++i)
+        for (int j = 0; j <= b; ++j)
+          for (int k = 0; k <= cc; ++k) {
+            const int m = T.index[i][j][k];
+            const double f = T.binomial[a][i] * T.binomial[b][j] * T.binomial[cc][k] *
+                             pw[0][a - i] * pw[1][b - j] * pw[2][cc - k];
+            Q[3 * t] += f * Qc[3 * m];
+            Q[3 * t + 1] += f * Qc[3 * m + 1];
+            Q[3 * t + 2] += f * Qc[3 * m + 2];
+          }
+    }
+  }
+}
+
+void SegmentTree::multipole_velocity(const Node& nd, const double* Q, double x, double y, double z,
+                                     double& u, double& v, double& w) const {
+  const MultiIndexTable& T = table();
+  const double R[3] = {x - nd.cx, y - nd.cy, z - nd.cz};
+  const double r2 = R[0] * R[0] + R[1] * R[1] + R[2] * R[2];
+  const double inv_r2 = 1.0 / r2;
+  const int derivatives = terms_up_to(params_.order + 1);
+  double D[kMaxTerms];
+  D[0] = std::sqrt(inv_r2);
+  for (int t = 1; t < derivatives; ++t) {
+    const int m = T.order[t];
+    const int n[3] = {T.a[t], T.b[t], T.c[t]};
+    double s1 = 0.0, s2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      if (n[i] >= 1) s1 += n[i] * R[i] * D[T.minus[t][i]];
+      if (n[i] >= 2) s2 += n[i] * (n[i] - 1) * D[T.minus2[t][i]];
+    }
+    D[t] = -((2 * m - 1) * s1 + (m - 1) * s2) * inv_r2 / m;
+  }
+  double su = 0.0, sv = 0.0, sw = 0.0;
+  for (int t = 0; t < terms_; ++t) {
+    const double gx = D[T.plus[t][0]], gy = D[T.plus[t][1]], gz = D[T.plus[t][2]];
+    const double f = T.factor[t];
+    const double qx = Q[3 * t], qy = Q[3 * t + 1], qz = Q[3 * t + 2];
+    su += f * (gy * qz - gz * qy);
+    sv += f * (gz * qx - gx * qz);
+    sw += f * (gx * qy - gy * qx);
+  }
+  u += su;
+  v += sv;
+  w += sw;
+}
+
+void SegmentTree::add_induced_velocity(const double* x, const double* y, const double* z,
+                                       std::size_t n, double* u, double* v, double* w) const {
+  last_multipoles_ = last_direct_ = 0;
+  if (size_ == 0 || n == 0) return;
+  const double theta = params_.theta;
+  const double inv_rc2 = 1.0 / (core_.radius * core_.radius);
+  std::size_t multipoles = 0, direct = 0;
+  const long nt = static_cast<long>(n);
+#pragma omp parallel for schedule(dynamic, 16) reduction(+ : multipoles, direct)
+  for (long i = 0; i < nt; ++i) {
+    alignas(64) double su[kLanes] = {}, sv[kLanes] = {}, sw[kLanes] = {};
+    double mu = 0.0, mv = 0.0, mw = 0.0;
+    std::uint32_t stack[8 * 64];
+    int top = 0;
+    stack[top++] = 0;
+    detail::PointRangeCall call{0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                                nullptr, inv_rc2, core_.model, x[i], y[i], z[i], su, sv, sw};
+    while (top > 0) {
+      const Node& nd = nodes_[stack[--top]];
+      const double dx = x[i] - nd.cx, dy = y[i] - nd.cy, dz = z[i] - nd.cz;
+      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      if (r * theta > nd.radius && r - nd.radius > nd.safe_distance) {
+        multipole_velocity(nd, moments_.data() + (&nd - nodes_.data()) * 3 * terms_, x[i], y[i],
+                           z[i], mu, mv, mw);
+        ++multipoles;
+      } else if (nd.child_count == 0) {
+        const std::size_t b = nd.begin;
+        call.count = nd.count;
+        call.ax = pax_.data() + b; call.ay = pay_.data() + b; call.az = paz_.data() + b;
+        call.bx = pbx_.data() + b; call.by = pby_.data() + b; call.bz = pbz_.data() + b;
+        call.gamma = pg_.data() + b; call.inv_length2 = pil_.data() + b;
+        detail::point_range_dispatch(call);
+        direct += nd.count;
+      } else {
+        for (std::uint32_t c = nd.child_count; c-- > 0;) stack[top++] = nd.first_child + c;
+      }
+    }
+    double tu = 0, tv = 0, tw = 0;
+    for (int l = 0; l < kLanes; ++l) {
+      tu += su[l];
+      tv += sv[l];
+      tw += sw[l];
+    }
+    u[i] += tu + mu;
+    v[i] += tv + mv;
+    w[i] += tw + mw;
+  }
+  last_multipoles_ = multipoles;
+  last_direct_ = direct;
+}
+
+}  // namespace flapsim::uvlm
