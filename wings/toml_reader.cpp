@@ -107,7 +107,9 @@ void refuse_headers_toml_cannot_parse(std::string_view text, const std::string& 
       if (j < end && text[j] == '[') ++j;
       if (j < end && text[j] == '[' && j == k + 2)
         throw InputError(name, line, "", "TOML syntax error: \"[[[\" (a table header needs a name)");
-      while (j < end && (text[j] == ' ' || text[j] == '\t')) ++j;
+      while (j < end && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r')) ++j;
+      if (j == end && j == k + 2)  // "[[" alone: an array-of-tables header without a name
+        throw InputError(name, line, "", "TOML syntax error: \"[[\" (a table header needs a name)");
       if (j < end) {
         const unsigned char c = static_cast<unsigned char>(text[j]);
         const bool ok = std::isalnum(c) || c == '_' || c == '-' || c == '"' || c == '\'' || c == ']' || c == '[' ||

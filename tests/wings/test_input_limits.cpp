@@ -94,7 +94,7 @@ TEST(Denormals, AnOutlinePointThatBecomesDenormalInMetresIsRejected) {
 TEST(TomlHeaders, HeadersTomlppCannotParseAreRefusedWithTheirLine) {
   // toml++ 3.x asserts on these (found by the loader fuzzer under ASan; upstream
   // marzer/tomlplusplus pull request 301): each must be an InputError at its line.
-  for (const char* text : {"a = 1\n[=\n", "a = 1\n[[=\n", "a = 1\n[[[1]]]\n", "a = 1\n[ =\n", "a = 1\n[[ =]]\n"}) {
+  for (const char* text : {"a = 1\n[[\n", "a = 1\n[=\n", "a = 1\n[[=\n", "a = 1\n[[[1]]]\n", "a = 1\n[ =\n", "a = 1\n[[ =]]\n"}) {
     const auto e = expect_input_error([&] { parse_toml_string(text, "h.toml"); });
     EXPECT_EQ(e.line(), 2) << text;
   }
