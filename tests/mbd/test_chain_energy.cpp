@@ -229,5 +229,38 @@ TEST(ChainEnergy, SmallFreeVibrationsRunAtEigenfrequenciesOfLinearisedKAndM) {
   }
 }
 
+// The moment the base exerts on a rigid wing swept about the vertical (issue 17's drive
+// moment, mbd::base_reaction): rotation about the fixed z axis, so N_z = dH_z/dt =
+// I_zz,O φ̈ with I_zz,O = Σ (I_c,zz + m (x_c² + y_c²)) about the pivot (Euler's law for a
+// fixed axis), and the base power ω·N = I_zz,O φ̇ φ̈.
+TEST(ChainEnergy, DriveMomentOfARigidWingSweptAboutTheVerticalIsIzzTimesPhiDoubleDot) {
+  ChainModel model = test::three_body_chain();
+  model.welded_bodies = 3;  // all three welded: a rigid wing
+  double izz = 0.0;
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  for (const ChainBody& b : model.bodies) {
+    const Eigen::Vector3d c = origin + b.center_of_mass;
+    izz += b.inertia(2, 2) + b.mass * (c.x() * c.x() + c.y() * c.y());
+    origin += b.outboard_joint;
+  }
+  WingKinematics k;
+  k.frequency = 26.0;
+  k.sweep = PeriodicSignal::harmonic(0.0, {60.0 * kDegToRad}, {});  // φ = 60° cos ωt
+  const BaseMotion base = make_base_motion(k);
+  ChainData data(model);
+  const Eigen::VectorXd none(0);
+  Loads loads(model.num_bodies());
+  const double w = 2.0 * kPi * k.frequency;
+  for (double t : {0.0, 0.003, 0.011, 0.02}) {
+    const BasePose pose = base(t);
+    forward_kinematics(model, data, pose, none, none);
+    const BaseReaction r = base_reaction(model, data, pose, loads);
+    const double phidd = -60.0 * kDegToRad * w * w * std::cos(w * t);
+    const double phid = -60.0 * kDegToRad * w * std::sin(w * t);
+    EXPECT_NEAR(r.moment.z(), izz * phidd, 1e-10 * izz * w * w) << t;
+    EXPECT_NEAR(base_power(model, data, pose, loads), izz * phid * phidd, 1e-10 * izz * w * w * w) << t;
+  }
+}
+
 }  // namespace
 }  // namespace flapsim::mbd
