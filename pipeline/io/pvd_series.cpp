@@ -2,6 +2,7 @@
 
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
+#include "pipeline/io/xml_text.hpp"
 
 #include <cstdio>
 #include <ostream>
@@ -9,24 +10,6 @@
 namespace flapsim::io {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-std::string xml_attribute(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 PvdSeries::PvdSeries(fs::path path) : path_(std::move(path)) { write(); }
 

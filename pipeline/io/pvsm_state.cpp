@@ -7,24 +7,11 @@
 
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
+#include "pipeline/io/xml_text.hpp"
 
 namespace flapsim::io {
 
 namespace {
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // One <Proxy> of the state: its properties as element values or proxy references.
 class ProxyXml {
@@ -36,7 +23,7 @@ class ProxyXml {
     body_ << "      <Property name=\"" << name << "\" id=\"" << id_ << "." << name << "\" number_of_elements=\""
           << v.size() << "\">\n";
     for (std::size_t i = 0; i < v.size(); ++i)
-      body_ << "        <Element index=\"" << i << "\" value=\"" << xml_escape(v[i]) << "\"/>\n";
+      body_ << "        <Element index=\"" << i << "\" value=\"" << xml_attribute(v[i]) << "\"/>\n";
     body_ << "      </Property>\n";
     return *this;
   }
@@ -203,7 +190,7 @@ std::string run_state_xml(const RunState& s) {
     << "    </Proxy>\n";
   const auto collection = [&](const std::string& name, const std::vector<std::pair<int, std::string>>& items) {
     x << "    <ProxyCollection name=\"" << name << "\">\n";
-    for (const auto& [id, item] : items) x << "      <Item id=\"" << id << "\" name=\"" << xml_escape(item) << "\"/>\n";
+    for (const auto& [id, item] : items) x << "      <Item id=\"" << id << "\" name=\"" << xml_attribute(item) << "\"/>\n";
     x << "    </ProxyCollection>\n";
   };
   collection("animation", {{kScene, "AnimationScene1"}, {kTimeCue, "TimeAnimationCue1"}});
