@@ -7,17 +7,11 @@
 #include <fstream>
 
 #include "wings/input_error.hpp"
+#include "wings/text_trim.hpp"
 
 namespace flapsim::wings {
 
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
 
 // Whole-field parse: "1.5e-3" ok, "1.5mm" or "" rejected.
 bool parse_number(const std::string& field, double& out) {

@@ -77,19 +77,25 @@ void work(const RunCase& run, Next next, Report report) {
   }
 }
 
-ScheduleStats local_threads(const std::vector<std::size_t>& todo, int threads, const RunCase& run,
-                            const CaseDone& done) {
-  CaseList list(todo, done);
+// Starts `threads` local worker threads taking their cases from `list`.
+std::vector<std::thread> start_local_workers(CaseList& list, int threads, const RunCase& run) {
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&] {
+    pool.emplace_back([&list, &run] {
       work(
-          run, [&] { return list.take(); },
-          [&](std::size_t i, CaseOutcome&& o, Clock::time_point since) {
+          run, [&list] { return list.take(); },
+          [&list](std::size_t i, CaseOutcome&& o, Clock::time_point since) {
             o.overhead_s += seconds(Clock::now() - since);
             list.finish(i, std::move(o));
           });
     });
+  return pool;
+}
+
+ScheduleStats local_threads(const std::vector<std::size_t>& todo, int threads, const RunCase& run,
+                            const CaseDone& done) {
+  CaseList list(todo, done);
+  std::vector<std::thread> pool = start_local_workers(list, threads, run);
   for (auto& t : pool) t.join();
   list.rethrow();
   return list.stats();
@@ -98,16 +104,7 @@ ScheduleStats local_threads(const std::vector<std::size_t>& todo, int threads, c
 ScheduleStats master(const std::vector<std::size_t>& todo, int threads, int remote_threads,
                      const RunCase& run, const CaseDone& done) {
   CaseList list(todo, done);
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&] {
-      work(
-          run, [&] { return list.take(); },
-          [&](std::size_t i, CaseOutcome&& o, Clock::time_point since) {
-            o.overhead_s += seconds(Clock::now() - since);
-            list.finish(i, std::move(o));
-          });
-    });
+  std::vector<std::thread> pool = start_local_workers(list, threads, run);
   std::string buffer;
   for (int active = remote_threads; active > 0;) {
     int flag = 0;

@@ -6,17 +6,13 @@
 #include <set>
 
 #include "wings/input_error.hpp"
+#include "wings/text_trim.hpp"
 
 namespace flapsim::sweep {
 
-namespace {
+using wings::trim;
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
+namespace {
 
 std::vector<std::string> cells_of(const std::string& line) {
   std::vector<std::string> cells;
