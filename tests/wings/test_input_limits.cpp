@@ -7,6 +7,7 @@
 #include <string>
 
 #include "wings/checked_integer.hpp"
+#include "expect_input_error.hpp"
 #include "wings/input_error.hpp"
 #include "wings/toml_reader.hpp"
 #include "wings/wing_file.hpp"
@@ -16,17 +17,6 @@ using flapsim::wings::Bounds;
 using flapsim::wings::parse_toml_string;
 
 namespace {
-
-template <typename F>
-InputError expect_input_error(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return InputError("", 0, "", "");
-}
 
 // 2^53 = 9007199254740992 is the largest integer n with every integer up to n exact in a
 // double (IEEE 754 binary64: 53-bit significand).

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/scratch_dir.hpp"
+#include "expect_input_error.hpp"
 #include "wings/input_error.hpp"
 #include "wings/mesh_budget.hpp"
 #include "wings/outline_csv.hpp"
@@ -19,17 +20,6 @@ namespace w = flapsim::wings;
 using flapsim::InputError;
 
 namespace {
-
-template <typename F>
-InputError expect_input_error(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return InputError("", 0, "", "");
-}
 
 // A 40 x 10 mm rectangle with one vein; `outline` and `mesh` replace those parts.
 std::string wing_text(const std::string& outline, const std::string& mesh = "") {

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "expect_input_error.hpp"
 #include "wings/input_error.hpp"
 #include "wings/toml_reader.hpp"
 
@@ -12,18 +13,6 @@ using flapsim::wings::parse_toml_string;
 using flapsim::wings::TomlTable;
 
 namespace {
-
-// Runs f, expects an InputError and returns it.
-template <typename F>
-InputError expect_input_error(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return InputError("", 0, "", "");
-}
 
 const char* kDoc =
     "length_unit = \"mm\"\n"          // 1
