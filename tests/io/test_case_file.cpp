@@ -7,6 +7,7 @@
 #include <string>
 
 #include "mbd/angle_units.hpp"
+#include "inline_case.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/case_summary.hpp"
@@ -20,21 +21,6 @@ namespace {
 
 const std::string kSource = FLAPSIM_SOURCE_DIR;
 using flapsim::kDegToRad;
-
-// Case text placed (virtually) in tests/data/, next to valid_tiny_wing.toml.
-p::Case case_from_text(const std::string& text) {
-  return p::read_case(flapsim::wings::parse_toml_string(text, kSource + "/tests/data/inline_case.toml"));
-}
-
-InputError error_of(const std::string& text) {
-  try {
-    case_from_text(text);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError for:\n" << text;
-  return InputError("", 0, "", "");
-}
 
 const std::string kHead =
     "wing = \"valid_tiny_wing.toml\"\n"                                   // 1

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "inline_case.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/case_summary.hpp"
@@ -14,22 +15,6 @@ namespace p = flapsim::io;
 using flapsim::InputError;
 
 namespace {
-
-const std::string kSource = FLAPSIM_SOURCE_DIR;
-
-p::Case case_from_text(const std::string& text) {
-  return p::read_case(flapsim::wings::parse_toml_string(text, kSource + "/tests/data/inline_case.toml"));
-}
-
-InputError error_of(const std::string& text) {
-  try {
-    case_from_text(text);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError for:\n" << text;
-  return InputError("", 0, "", "");
-}
 
 std::string case_text(const std::string& numerics, const std::string& head = "",
                       const std::string& frequency = "20.0") {
