@@ -94,7 +94,7 @@ TreeParameters tree_parameters(double tolerance) {
 
 void SegmentTree::reserve(std::size_t n) {
   for (auto* a : {&sx_, &sy_, &sz_, &tx_, &ty_, &tz_, &sg_, &srat_}) a->assign(n, 0.0);
-  for (auto* a : {&pax_, &pay_, &paz_, &pbx_, &pby_, &pbz_, &pg_, &pil_}) a->assign(n * kLanes, 0.0);
+  for (auto* a : {&pax_, &pay_, &paz_, &pbx_, &pby_, &pbz_, &pg_, &pil_, &prat_}) a->assign(n * kLanes, 0.0);
   keys_.assign(2 * n, 0);
   order_.assign(n, 0);
   nodes_.assign(2 * n + 1, Node{});
@@ -171,9 +171,10 @@ void SegmentTree::build(const SegmentSet& s, const VortexCore& core, const TreeP
           pax_[p] = sx_[g]; pay_[p] = sy_[g]; paz_[p] = sz_[g];
           pbx_[p] = tx_[g]; pby_[p] = ty_[g]; pbz_[p] = tz_[g];
           pg_[p] = sg_[g];
+          prat_[p] = srat_[g];
           pil_[p] = detail::segment_scale(sx_[g], sy_[g], sz_[g], tx_[g], ty_[g], tz_[g], srat_[g]);
         } else {  // padding: no circulation, zero length
-          pax_[p] = pay_[p] = paz_[p] = pbx_[p] = pby_[p] = pbz_[p] = pg_[p] = pil_[p] = 0.0;
+          pax_[p] = pay_[p] = paz_[p] = pbx_[p] = pby_[p] = pbz_[p] = pg_[p] = pil_[p] = prat_[p] = 0.0;
         }
       }
       padded += leaf.count;
@@ -333,8 +334,8 @@ void SegmentTree::add_induced_velocity(const double* x, const double* y, const d
     std::uint32_t stack[8 * 64];
     int top = 0;
     stack[top++] = 0;
-    detail::PointRangeCall call{0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
-                                nullptr, inv_rc2, core_.model, x[i], y[i], z[i], su, sv, sw};
+    detail::PointRangeCall call{0,       nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                                nullptr, nullptr, nullptr, inv_rc2, core_.model, x[i], y[i], z[i], su, sv, sw};
     while (top > 0) {
       const Node& nd = nodes_[stack[--top]];
       const double dx = x[i] - nd.cx, dy = y[i] - nd.cy, dz = z[i] - nd.cz;
@@ -349,6 +350,7 @@ void SegmentTree::add_induced_velocity(const double* x, const double* y, const d
         call.ax = pax_.data() + b; call.ay = pay_.data() + b; call.az = paz_.data() + b;
         call.bx = pbx_.data() + b; call.by = pby_.data() + b; call.bz = pbz_.data() + b;
         call.gamma = pg_.data() + b; call.inv_length2 = pil_.data() + b;
+        call.core_ratio2 = prat_.data() + b;
         detail::point_range_dispatch(call);
         direct += nd.count;
       } else {
