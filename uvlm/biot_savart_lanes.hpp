@@ -64,10 +64,37 @@ struct TailBlock {  // the last, partial block of segments, padded with Γ = 0
   Lanes<T> lanes() const { return {ax, ay, az, bx, by, bz, g, il, cr}; }
 };
 
+/// The segment_velocity formula (biot_savart_kernel.hpp) for one pair, given r1 = P − A,
+/// r2 = P − B, their squares s and lengths n: k·(cx, cy, cz) is the velocity without the
+/// core factor (times it already unless the model is Lamb–Oseen, whose factor the callers
+/// apply or skip per block), x = h²/r_c,k² the core factor's argument.
+template <CoreModel M, class T>
+[[gnu::always_inline]] inline void pair_terms(T r1x, T r1y, T r1z, T s1, T n1, T r2x, T r2y,
+                                              T r2z, T s2, T n2, T g, T il, T cr, T inv_rc2,
+                                              T& k, T& x, T& cx, T& cy, T& cz) {
+  cx = r1y * r2z - r1z * r2y;
+  cy = r1z * r2x - r1x * r2z;
+  cz = r1x * r2y - r1y * r2x;
+  const T cross2 = cx * cx + cy * cy + cz * cz;
+  const T dot12 = r1x * r2x + r1y * r2y + r1z * r2z;
+  // P projects beyond an end exactly when r1·r2 exceeds the smaller of |r1|², |r2|²;
+  // h² is then that end's |r|², and h²/r_c,k² = |r_end|² (r_c/r_c,k)²/r_c².
+  const T near2 = s1 < s2 ? s1 : s2;
+  const T x_end = near2 * (inv_rc2 * cr);  // both evaluated: no masked loads
+  const T x_line = cross2 * (inv_rc2 * il);
+  x = dot12 > near2 ? x_end : x_line;
+  const T p12 = n1 * n2;
+  const bool between = dot12 < T(0);
+  const T num = between ? p12 - dot12 : T(1);
+  const T den = between ? p12 * cross2 : p12 * (p12 + dot12);
+  k = g * T(kInvFourPi) * (n1 + n2) * num / (den + kTiny<T>);
+  if constexpr (M != CoreModel::LambOseen) k *= core_factor<M>(x);
+}
+
 /// NP target points against one block of kLanes<T> segments, added to the points' lane
 /// sums su/sv/sw[NP × kLanes<T>]: the segment_velocity formula (biot_savart_kernel.hpp) in
 /// three steps, (1) everything but the core factor, (2) the core factor, skipped for the
-/// Lamb–Oseen model when every pair of the block has x ≥ kLambOseenUnity (where it is 1
+/// Lamb–Oseen model when every pair of the block has x ≥ kLambOseenUnity<T> (where it is 1
 /// exactly, so skipping does not change a bit), (3) the sums. Several points per block
 /// give the processor independent work while one waits for a square root or division;
 /// each point's arithmetic is the same whatever NP.
@@ -82,27 +109,11 @@ template <CoreModel M, int NP, class T>
     for (int l = 0; l < L; ++l) {
       const T r1x = px[p] - s.ax[l], r1y = py[p] - s.ay[l], r1z = pz[p] - s.az[l];
       const T r2x = px[p] - s.bx[l], r2y = py[p] - s.by[l], r2z = pz[p] - s.bz[l];
-      const T cx = r1y * r2z - r1z * r2y;
-      const T cy = r1z * r2x - r1x * r2z;
-      const T cz = r1x * r2y - r1y * r2x;
-      const T cross2 = cx * cx + cy * cy + cz * cz;
       const T s1 = r1x * r1x + r1y * r1y + r1z * r1z;
       const T s2 = r2x * r2x + r2y * r2y + r2z * r2z;
-      const T n1 = std::sqrt(s1);
-      const T n2 = std::sqrt(s2);
-      const T dot12 = r1x * r2x + r1y * r2y + r1z * r2z;
-      // P projects beyond an end exactly when r1·r2 exceeds the smaller of |r1|², |r2|²;
-      // h² is then that end's |r|², and h²/r_c,k² = |r_end|² (r_c/r_c,k)²/r_c².
-      const T near2 = s1 < s2 ? s1 : s2;
-      const T x_end = near2 * (inv_rc2 * s.cr[l]);  // both evaluated: no masked loads
-      const T x_line = cross2 * (inv_rc2 * s.il[l]);
-      const T x = dot12 > near2 ? x_end : x_line;
-      const T p12 = n1 * n2;
-      const bool between = dot12 < T(0);
-      const T num = between ? p12 - dot12 : T(1);
-      const T den = between ? p12 * cross2 : p12 * (p12 + dot12);
-      T k = s.g[l] * T(kInvFourPi) * (n1 + n2) * num / (den + kTiny<T>);
-      if constexpr (M != CoreModel::LambOseen) k *= core_factor<M>(x);
+      T k, x, cx, cy, cz;
+      pair_terms<M>(r1x, r1y, r1z, s1, std::sqrt(s1), r2x, r2y, r2z, s2, std::sqrt(s2), s.g[l],
+                    s.il[l], s.cr[l], inv_rc2, k, x, cx, cy, cz);
       kk[p * L + l] = k;
       xx[p * L + l] = x;
       cxs[p * L + l] = cx;
@@ -112,8 +123,9 @@ template <CoreModel M, int NP, class T>
   }
   if constexpr (M == CoreModel::LambOseen) {
     T nearest = xx[0];
-    for (int l = 1; l < NP * L; ++l) nearest = xx[l] < nearest ? xx[l] : nearest;
-    if (nearest < T(kLambOseenUnity)) {
+#pragma omp simd reduction(min : nearest)
+    for (int l = 0; l < NP * L; ++l) nearest = xx[l] < nearest ? xx[l] : nearest;
+    if (nearest < kLambOseenUnity<T>) {
 #pragma omp simd
       for (int l = 0; l < NP * L; ++l) kk[l] *= core_factor<M>(xx[l]);
     }
