@@ -124,7 +124,7 @@ TEST(KernelDispatch, EveryVariantMatchesTheTextbookSegmentFormula) {
 }
 
 TEST(KernelDispatch, PolynomialExpAgreesWithStdExp) {
-XX
+  // The kernels' e^(−y) (biot_savart_kernel.hpp: (e^(−y/64))^64, degree-10 Taylor polynomial)
   // against the C library on the whole range it is used on, y = 1.25643 h²/r_c² ∈ [0, 40].
   // What the Lamb–Oseen factor 1 − e^(−y) needs is its absolute error: below 128 ulp of 1
   // (2.8e-14) in double — measured 1.1e-14, the polynomial's rounding amplified 64× by the
