@@ -120,6 +120,10 @@ TEST(HawkmothThinMembrane, ChainAgainstFemForFourToSixteenBodies) {
     std::printf("thin membrane N_b=%2d  bending %.2f/%.2f Hz (%+.2f %%, MAC %.3f)  torsion %.2f/%.2f Hz (%+.2f %%, MAC %.3f)\n",
                 nb, c.bending.chain_hz, c.bending.fem_hz, 100 * c.bending.relative_error, c.bending.mac,
                 c.torsion.chain_hz, c.torsion.fem_hz, 100 * c.torsion.relative_error, c.torsion.mac);
+    for (const ModeMatch& p : c.beam_mode_pairs)
+      std::printf("  FEM beam mode %2d (%s) %7.2f Hz ~ chain mode %2d %7.2f Hz (%+.1f %%, MAC %.3f)\n", p.fem_mode + 1,
+                  c.fem_kinds[static_cast<std::size_t>(p.fem_mode)].c_str(), p.fem_hz, p.chain_mode + 1, p.chain_hz,
+                  100 * p.relative_error, p.mac);
     ASSERT_TRUE(c.bending.found && c.torsion.found) << nb;
     // The first bending mode is a beam mode and the chain follows it (MAC > 0.9).
     EXPECT_GT(c.bending.mac, 0.9) << nb;
