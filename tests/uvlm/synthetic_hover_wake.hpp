@@ -1,6 +1,7 @@
 #pragma once
 // A hover-like wake of any number of cycles without simulating it (the tree code's
-// benchmark and its 20-cycle test): a 10-panel span of wake rows, 100 per cycle, swept
+// 20-cycle test; the same wake as bench/bench_wake_tree.cpp builds, which may include
+// module headers only): a 10-panel span of wake rows, 100 per cycle, swept
 // back and forth at 26.1 Hz through ±60° about the z axis like the hawkmoth's wing (root
 // 5 mm, tip 48.3 mm), sinking at 0.5 m/s with a small waviness, with the circulation of a
 // flapping wing (sin of the span position × sin of the stroke) and Lamb–Oseen cores
