@@ -139,7 +139,9 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
     << c.chain_mass << " kg. Mean elastic axis from the tip twists: n = " << beam.n_ea_tip
     << " m from the axis. Bending–torsion coupling (twist under the unit moment / twist under "
        "the unit torque): "
-    << beam.bend_twist_coupling << " (not represented by the chain).\n\n"
+    << beam.bend_twist_coupling
+    << (lc.springs == reduction::SpringModel::full ? " (carried by the chain's full joint stiffness).\n\n"
+                                                     : " (not represented by the diagonal springs).\n\n")
     << "## Chain vs FEM\n\n| quantity | FEM | chain | error | MAC |\n|---|---|---|---|---|\n";
   auto mode_row = [&](const char* name, const reduction::ModeMatch& m) {
     if (!m.found) {
