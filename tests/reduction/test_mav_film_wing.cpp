@@ -42,6 +42,10 @@ TEST(MavFilmWing, ReducesForFourToSixteenBodiesWithPositiveDefiniteStiffness) {
                 "chain %.2f Hz (%+.1f %%, MAC %.3f)\n",
                 nb, c.bending.fem_hz, c.bending.chain_hz, 100 * c.bending.relative_error, c.bending.mac,
                 c.torsion.fem_hz, c.torsion.chain_hz, 100 * c.torsion.relative_error, c.torsion.mac);
+    for (const ModeMatch& p : c.beam_mode_pairs)
+      std::printf("  FEM beam mode %2d (%s) %7.2f Hz ~ chain mode %2d %7.2f Hz (%+.1f %%, MAC %.3f)\n", p.fem_mode + 1,
+                  c.fem_kinds[static_cast<std::size_t>(p.fem_mode)].c_str(), p.fem_hz, p.chain_mode + 1, p.chain_hz,
+                  100 * p.relative_error, p.mac);
     // The first FEM mode is a beam (torsion) mode the chain follows: a guard at about twice
     // the largest error measured above.
     ASSERT_TRUE(c.torsion.found) << nb;
