@@ -7,7 +7,7 @@
 #                       into out/<case name>/, with the model of its wing when it needs
 #                       one; leaves out/<case name>/preview.png and run.pvsm
 #   make phase-study    rigid (dpsi = -0.20..+0.10) and flexible (-0.10..+0.10) sweeps,
-#                       5 cycles each, all 12 cases over the cores
+#                       6 cycles each (nothing truncated), all 12 cases over the cores
 #   make phase-study CASE=cases/x.toml [PHASES=-0.2:0.05:0.1]
 #                       the rotation-phase sweep of any case, into out/phase_study/<case name>/
 #   make plots          figures of the study (the paper's Figs. 12-15), PDF and PNG, in
