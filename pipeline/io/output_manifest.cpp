@@ -188,4 +188,26 @@ void record_command_status(const fs::path& dir, const std::string& command, cons
   write_manifest(dir, m);
 }
 
+OutputFolderClaim::OutputFolderClaim(fs::path dir, std::string command)
+    : dir_(std::move(dir)), command_(std::move(command)) {}
+
+OutputFolderClaim::~OutputFolderClaim() {
+  if (!open_) return;
+  try {
+    record_command_status(dir_, command_, "failed");
+  } catch (...) {
+    // The folder cannot be written any more: the error that ended the command is reported.
+  }
+}
+
+void OutputFolderClaim::claim(bool force) {
+  claim_output_folder(dir_, command_, force);
+  open_ = true;
+}
+
+void OutputFolderClaim::finish(const std::string& status) {
+  open_ = false;
+  record_command_status(dir_, command_, status);
+}
+
 }  // namespace flapsim::io

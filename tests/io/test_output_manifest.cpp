@@ -140,4 +140,28 @@ TEST(OutputManifest, AManifestTomlppCannotReadSafelyIsAnOutputError) {
   }
 }
 
+// A command that leaves by an exception after claiming its folder records "failed" (the
+// issue's case: an output error in a run left "running" for good).
+TEST(OutputManifest, ACommandEndedByAnExceptionIsRecordedFailed) {
+  flapsim::test::ScratchDir dir("manifest_failed");
+  const auto status = [&] {
+    std::ifstream in(dir / io::kManifestName);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  try {
+    io::OutputFolderClaim claim(dir.path(), "run");
+    claim.claim(false);
+    EXPECT_NE(status().find("'running'"), std::string::npos) << status();
+    throw io::OutputError(dir / "history.csv", "no space left on device");
+  } catch (const io::OutputError&) {
+  }
+  EXPECT_NE(status().find("'failed'"), std::string::npos) << status();
+  {
+    io::OutputFolderClaim claim(dir.path(), "run");
+    claim.claim(false);
+    claim.finish("complete");
+  }
+  EXPECT_NE(status().find("'complete'"), std::string::npos) << status();
+}
+
 }  // namespace
