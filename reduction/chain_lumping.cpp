@@ -78,17 +78,21 @@ LumpedChain lump_into_chain(const ClampedWingAnalysis& analysis, int num_bodies,
   chain.welded_bodies = std::max(welded, 1);
   chain.joints.assign(static_cast<std::size_t>(nb), mbd::ChainJoint{});
 
-  // One station per jointed body at its mid-span; bands of a quarter body either side.
+  // Two stations per jointed body: its mid-span (twist) and its outboard joint (deflection);
+  // bands of a quarter body either side (joint_stiffness.hpp).
   std::vector<double> positions;
   std::vector<int> bodies_1based;
   for (int k = welded; k < nb; ++k) {
     positions.push_back(a * (k + 0.5));
+    positions.push_back(a * (k + 1));
     out.station_body.push_back(k);
+    bodies_1based.push_back(k + 1);
     bodies_1based.push_back(k + 1);
   }
   out.stations = station_compliance(analysis, positions, 0.25 * a, bodies_1based);
-  out.flexural_axis_n = flexural_axis_offsets(out.stations.compliance);
-  out.joint_stiffness = joint_stiffness(out.stations.compliance);
+  const std::vector<double> nfa = flexural_axis_offsets(out.stations.compliance);
+  for (std::size_t i = 0; i < nfa.size(); i += 2) out.flexural_axis_n.push_back(nfa[i]);
+  out.joint_stiffness = joint_stiffness(out.stations.compliance, a);
   if (springs == SpringModel::full) {
     chain.stiffness_matrix = out.joint_stiffness.stiffness;
   } else {

@@ -26,12 +26,13 @@ struct LumpedChain {
   double body_length = 0.0;      ///< a = s_tip / N_b [m]
   std::vector<double> joint_s;   ///< axis position of each body's inboard joint [m]
   double fem_mass = 0.0;         ///< Φᵀ M Φ mass of the FEM [kg]
-  /// The stations of the jointed bodies (their mid-spans) and their compliance.
+  /// The stations of the jointed bodies (mid-span and outboard joint of each, in turn)
+  /// and their compliance.
   StationCompliance stations;
-  /// The stations' bodies (0-based) and flexural axis n_fa from C [m].
+  /// The jointed bodies (0-based) and the flexural axis n_fa at their mid-spans from C [m].
   std::vector<int> station_body;
   std::vector<double> flexural_axis_n;
-  /// K = (D C_rr Dᵀ)⁻¹ over the chain's Φ and its inverse.
+  /// K = (T C Tᵀ)⁻¹ over the chain's Φ and its inverse.
   JointStiffness joint_stiffness;
   SpringModel springs = SpringModel::full;
 };

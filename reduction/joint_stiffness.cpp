@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
+#include <string>
 
 #include "reduction/reduction_failure.hpp"
 
@@ -11,17 +12,29 @@ namespace flapsim::reduction {
 
 Eigen::VectorXd JointStiffness::diagonal_springs() const { return compliance.diagonal().cwiseInverse(); }
 
-JointStiffness joint_stiffness(const Eigen::MatrixXd& c) {
-  const int ns = static_cast<int>(c.rows()) / 3;
-  const int n = 2 * ns;
+Eigen::MatrixXd chain_joint_map(int nb, double a) {
+  // Station i's coordinates in u: 3 i + {0: w, 1: θ, 2: φ}; body i has stations 2i (mid) and 2i + 1 (joint).
+  auto w_joint = [](int i) { return 3 * (2 * i + 1); };
+  auto phi_mid = [](int i) { return 3 * (2 * i) + 2; };
+  Eigen::MatrixXd t = Eigen::MatrixXd::Zero(2 * nb, 6 * nb);
+  for (int i = 0; i < nb; ++i) {
+    // θ-joint i = θ_i − θ_{i−1} = (w_i − 2 w_{i−1} + w_{i−2}) / a
+    t(2 * i, w_joint(i)) += 1.0 / a;
+    if (i >= 1) t(2 * i, w_joint(i - 1)) -= 2.0 / a;
+    if (i >= 2) t(2 * i, w_joint(i - 2)) += 1.0 / a;
+    // α-joint i = φ_i − φ_{i−1}
+    t(2 * i + 1, phi_mid(i)) = 1.0;
+    if (i >= 1) t(2 * i + 1, phi_mid(i - 1)) = -1.0;
+  }
+  return t;
+}
+
+JointStiffness joint_stiffness(const Eigen::MatrixXd& c, double body_length) {
+  const int nb = static_cast<int>(c.rows()) / 6;
+  const int n = 2 * nb;
   JointStiffness out;
-  // C_rr: the rotations (θ, φ) of every station.
-  Eigen::MatrixXd crr(n, n);
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b) crr(a, b) = c(3 * (a / 2) + 1 + a % 2, 3 * (b / 2) + 1 + b % 2);
-  out.difference = Eigen::MatrixXd::Identity(n, n);
-  for (int j = 2; j < n; ++j) out.difference(j, j - 2) = -1.0;
-  out.compliance = out.difference * crr * out.difference.transpose();
+  out.joint_map = chain_joint_map(nb, body_length);
+  out.compliance = out.joint_map * c * out.joint_map.transpose();
   out.compliance = (0.5 * (out.compliance + out.compliance.transpose())).eval();
   Eigen::LLT<Eigen::MatrixXd> llt(out.compliance);
   if (llt.info() != Eigen::Success)

@@ -88,6 +88,25 @@ ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
   };
   out.bending = match(StationModeKind::bending, true);
   out.torsion = match(StationModeKind::torsion, false);
+  for (std::size_t i = 0; i < station_kinds.size(); ++i) {
+    if (station_kinds[i].kind == StationModeKind::film || cmodes.empty()) continue;
+    ModeMatch mm;
+    mm.found = true;
+    mm.fem_mode = static_cast<int>(i);
+    const Eigen::VectorXd a_fem = fem_samples(modes.shapes.col(static_cast<Eigen::Index>(i)));
+    for (std::size_t j = 0; j < cmodes.size(); ++j) {
+      const double mac = modal_assurance(a_fem, chain_samples(cmodes[j].shape));
+      if (mac > mm.mac) {
+        mm.mac = mac;
+        mm.chain_mode = static_cast<int>(j);
+      }
+    }
+    if (mm.chain_mode < 0) continue;
+    mm.fem_hz = modes.frequencies_hz[static_cast<Eigen::Index>(i)];
+    mm.chain_hz = cmodes[static_cast<std::size_t>(mm.chain_mode)].frequency_hz;
+    mm.relative_error = rel(mm.chain_hz, mm.fem_hz);
+    out.beam_mode_pairs.push_back(mm);
+  }
 
   // Statics at the inboard edge of the loaded tip zone, the same wrenches on both.
   const TipZone& zone = analysis.tip_zone();

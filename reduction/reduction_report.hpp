@@ -43,6 +43,9 @@ struct ChainFemComparison {
   std::vector<std::string> fem_kinds;        ///< from the stations: "bending", "torsion", "film"
   std::vector<std::string> fem_shape_kinds;  ///< fem::classify_modes (strip fits of the whole shape)
   std::vector<double> fem_beam_share;        ///< share of u_z the stations' rigid sections carry [-]
+  /// Every FEM beam mode (kind bending or torsion) with the chain mode whose shape
+  /// correlates best with it (largest MAC), in the order of the FEM modes.
+  std::vector<ModeMatch> beam_mode_pairs;
   std::vector<double> chain_hz;     ///< all chain modes [Hz]
   std::vector<std::string> chain_kinds;  ///< "bending" / "torsion" by spring energy
 };

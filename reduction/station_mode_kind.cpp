@@ -19,7 +19,6 @@ StationModeMeasures classify_by_stations(const LumpedChain& lc, const Eigen::Vec
   const int ns = st.size();
   const Eigen::VectorXd u = st.station_motion(x);
   double rigid = 0.0, all = 0.0;
-  Eigen::VectorXd r(2 * ns);
   for (int k = 0; k < ns; ++k) {
     const StationBand& b = st.stations[static_cast<std::size_t>(k)];
     const Eigen::Vector3d uk = u.segment<3>(3 * k);
@@ -29,10 +28,9 @@ StationModeMeasures classify_by_stations(const LumpedChain& lc, const Eigen::Vec
       rigid += b.mass[static_cast<Eigen::Index>(i)] * fit * fit;
       all += b.mass[static_cast<Eigen::Index>(i)] * uz * uz;
     }
-    r.segment<2>(2 * k) = uk.tail<2>();
   }
   m.beam_share = all > 0.0 ? rigid / all : 0.0;
-  const Eigen::VectorXd phi = lc.joint_stiffness.difference * r;
+  const Eigen::VectorXd phi = lc.joint_stiffness.joint_angles(u);
   Eigen::VectorXd bend = phi, twist = phi;
   for (Eigen::Index d = 0; d < phi.size(); ++d) (d % 2 == 0 ? twist : bend)[d] = 0.0;
   const Eigen::MatrixXd& k = lc.joint_stiffness.stiffness;

@@ -8,7 +8,7 @@
 /// bulging). The *beam share* is the mass-weighted share of the rigid-section part,
 /// Σ W (B u)² / Σ W u_z², over all bands. A mode with a beam share below one half is a
 /// film mode; otherwise it is bending or torsion by where the joint stiffness stores its
-/// energy: Φ = D r from the station rotations r, bending when Φ_θᵀ K_θθ Φ_θ ≥ Φ_αᵀ K_αα Φ_α.
+/// energy: Φ = T u from the stations' motion u (joint_stiffness.hpp), bending when Φ_θᵀ K_θθ Φ_θ ≥ Φ_αᵀ K_αα Φ_α.
 
 #include <Eigen/Core>
 

@@ -256,10 +256,18 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
 
 void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
                   const Eigen::Vector3d& free_stream, double rho, double wake_length) {
+  solve_steady(m, d, nodes, free_stream, rho, wake_length, free_stream);
+}
+
+void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
+                  const Eigen::Vector3d& free_stream, double rho, double wake_length,
+                  const Eigen::Vector3d& wake_direction) {
   const Eigen::Matrix3Xd zero = Eigen::Matrix3Xd::Zero(3, m.nodes());
   check_inputs(m, nodes, zero, 1.0, rho);
   if (!(free_stream.norm() > 0.0) || !(wake_length > 0.0))
     throw std::invalid_argument("steady vortex lattice: needs a free stream and a wake length > 0");
+  if (!(wake_direction.dot(free_stream) > 0.0))
+    throw std::invalid_argument("steady vortex lattice: the wake must leave downstream");
   const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
   d.free_stream = free_stream;
   d.dt = 1.0;
@@ -269,7 +277,7 @@ void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen
   d.has_factorisation = false;  // the matrix below includes the wake
 
   // One straight wake row, trailing-edge row 1 and far row 0, carried by the trailing-edge ring.
-  const Eigen::Vector3d dir = free_stream.normalized();
+  const Eigen::Vector3d dir = wake_direction.normalized();
   d.wake_rows = 1;
   d.wake_nodes.size = 2 * (ns + 1);
   for (int j = 0; j <= ns; ++j) {

@@ -216,6 +216,14 @@ void solve_steady(const VortexLatticeModel& model, VortexLatticeData& data,
                   const Eigen::Matrix3Xd& nodes, const Eigen::Vector3d& free_stream, double rho,
                   double wake_length);
 
+/// The same with the straight wake along wake_direction (need not be unit; its component
+/// along the free stream must be > 0) instead of the free stream: e.g. in the wing's plane,
+/// the wake of linear lifting-surface theory, which Polhamus' potential-lift constant
+/// assumes (docs/uvlm.md, "Leading edge").
+void solve_steady(const VortexLatticeModel& model, VortexLatticeData& data,
+                  const Eigen::Matrix3Xd& nodes, const Eigen::Vector3d& free_stream, double rho,
+                  double wake_length, const Eigen::Vector3d& wake_direction);
+
 /// Loads by the unsteady Bernoulli equation on the last solve (fills data.loads):
 ///   Δp = ρ (V · ∇_s Γ + ∂Γ/∂t)
 /// with ∇_s Γ the surface gradient of Γ from its differences along the panel's two edge

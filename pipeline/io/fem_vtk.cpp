@@ -54,10 +54,10 @@ double largest_translation(const Eigen::VectorXd& dofs) {
 }  // namespace
 
 void write_fem_vtu(const std::filesystem::path& path, const fem::Mesh& mesh, double clamp_y,
-                   const fem::ModalResult& modes, const std::vector<fem::ModeKind>& kinds,
+                   const fem::ModalResult& modes, const std::vector<ModeLabel>& labels,
                    const std::vector<StaticResult>& statics) {
-  if (kinds.size() != static_cast<std::size_t>(modes.shapes.cols()))
-    throw std::invalid_argument("write_fem_vtu: " + std::to_string(kinds.size()) + " mode kinds for " +
+  if (labels.size() != static_cast<std::size_t>(modes.shapes.cols()))
+    throw std::invalid_argument("write_fem_vtu: " + std::to_string(labels.size()) + " mode labels for " +
                                 std::to_string(modes.shapes.cols()) + " modes");
   UnstructuredMesh g = fem_unstructured_mesh(mesh, clamp_y);
   double span = 0.0;
@@ -72,7 +72,10 @@ void write_fem_vtu(const std::filesystem::path& path, const fem::Mesh& mesh, dou
     const double scale = largest > 0.0 ? shown / largest : 1.0;
     add_nodal_vector(g, name, modes.shapes.col(k) * scale);
     g.field_data.add_number(std::string(name) + "_frequency_Hz", modes.frequencies_hz(k));
-    g.field_data.add_text(std::string(name) + "_kind", fem::to_string(kinds[static_cast<std::size_t>(k)]));
+    const ModeLabel& label = labels[static_cast<std::size_t>(k)];
+    g.field_data.add_text(std::string(name) + "_kind", label.kind);
+    g.field_data.add_number(std::string(name) + "_beam_share", label.beam_share);
+    g.field_data.add_text(std::string(name) + "_shape_kind", label.shape_kind);
     g.field_data.add_number(std::string(name) + "_scale", scale);
   }
   for (const StaticResult& s : statics) {
@@ -97,12 +100,14 @@ void write_fem_vtu(const std::filesystem::path& path, const fem::Mesh& mesh, dou
 }
 
 void write_modes_csv(const std::filesystem::path& path, const fem::ModalResult& modes,
-                     const std::vector<fem::ModeKind>& kinds) {
+                     const std::vector<ModeLabel>& labels) {
   std::vector<std::vector<std::string>> rows;
-  for (Eigen::Index k = 0; k < modes.frequencies_hz.size(); ++k)
-    rows.push_back({std::to_string(k + 1), format_number(modes.frequencies_hz(k)),
-                    fem::to_string(kinds.at(static_cast<size_t>(k)))});
-  write_csv(path, {"mode", "frequency_hz", "kind"}, rows);
+  for (Eigen::Index k = 0; k < modes.frequencies_hz.size(); ++k) {
+    const ModeLabel& label = labels.at(static_cast<std::size_t>(k));
+    rows.push_back({std::to_string(k + 1), format_number(modes.frequencies_hz(k)), label.kind,
+                    format_number(label.beam_share), label.shape_kind});
+  }
+  write_csv(path, {"mode", "frequency_hz", "kind", "beam_share", "shape_kind"}, rows);
 }
 
 }  // namespace flapsim::io

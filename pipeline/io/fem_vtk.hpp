@@ -39,23 +39,31 @@ struct StaticResult {
 /// then shows the mode clearly without leaving the picture.
 inline constexpr double kModeViewFraction = 0.1;
 
+/// How a mode is named (docs/reduction.md, "Mode kinds from the stations").
+struct ModeLabel {
+  std::string kind;        ///< from the chain's stations: "bending", "torsion" or "film"
+  double beam_share = 0.0; ///< share of the motion the stations' rigid sections carry [-]
+  std::string shape_kind;  ///< fem::classify_modes (strip fits of the whole shape)
+};
+
 /// \brief Writes fem.vtu: the mesh plus, as point vectors,
 ///  - "mode_NN" for each mode: the mass-normalised shape (translations) times the
 ///    factor that makes its largest nodal displacement kModeViewFraction · R [m];
-///    field data "mode_NN_frequency_Hz", "mode_NN_kind" (bending, torsion, ...,
-///    text) and "mode_NN_scale" (the factor, [m per mass-normalised unit, m·kg^½]);
+///    field data "mode_NN_frequency_Hz", "mode_NN_kind" (bending, torsion or film,
+///    text), "mode_NN_beam_share", "mode_NN_shape_kind" (text) and "mode_NN_scale"
+///    (the factor, [m per mass-normalised unit, m·kg^½]);
 ///  - "static_<case>_m_per_N" (force cases) or "static_<case>_m_per_N_m" (moment
 ///    cases): the displacement under the unit load, and its rotations
 ///    "static_<case>_rotation_rad_per_N[_m]"; field data "static_<case>_view_scale",
 ///    the Warp By Vector scale factor that moves the largest node by kModeViewFraction · R.
 /// Field data also carries "span_m" and "mode_view_fraction".
-/// \param kinds  one per mode (fem::classify_modes)
+/// \param labels  one per mode
 void write_fem_vtu(const std::filesystem::path& path, const fem::Mesh& mesh, double clamp_y,
-                   const fem::ModalResult& modes, const std::vector<fem::ModeKind>& kinds,
+                   const fem::ModalResult& modes, const std::vector<ModeLabel>& labels,
                    const std::vector<StaticResult>& statics);
 
-/// \brief Writes modes.csv: columns mode, frequency_hz, kind.
+/// \brief Writes modes.csv: columns mode, frequency_hz, kind, beam_share, shape_kind.
 void write_modes_csv(const std::filesystem::path& path, const fem::ModalResult& modes,
-                     const std::vector<fem::ModeKind>& kinds);
+                     const std::vector<ModeLabel>& labels);
 
 }  // namespace flapsim::io

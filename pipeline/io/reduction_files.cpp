@@ -139,7 +139,9 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
     << c.chain_mass << " kg. Mean elastic axis from the tip twists: n = " << beam.n_ea_tip
     << " m from the axis. Bending–torsion coupling (twist under the unit moment / twist under "
        "the unit torque): "
-    << beam.bend_twist_coupling << " (not represented by the chain).\n\n"
+    << beam.bend_twist_coupling
+    << (lc.springs == reduction::SpringModel::full ? " (carried by the chain's full joint stiffness).\n\n"
+                                                     : " (not represented by the diagonal springs).\n\n")
     << "## Chain vs FEM\n\n| quantity | FEM | chain | error | MAC |\n|---|---|---|---|---|\n";
   auto mode_row = [&](const char* name, const reduction::ModeMatch& m) {
     if (!m.found) {
@@ -166,6 +168,12 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
   for (std::size_t i = 0; i < c.fem_hz.size(); ++i)
     s << "| " << i + 1 << " | " << c.fem_hz[i] << " | " << c.fem_kinds[i] << " | " << c.fem_beam_share[i] << " | "
       << c.fem_shape_kinds[i] << " |\n";
+  s << "\n## FEM beam modes and the chain mode that correlates best\n\n"
+       "| FEM mode | kind | FEM f [Hz] | chain mode | chain f [Hz] | error | MAC |\n|---|---|---|---|---|---|---|\n";
+  for (const auto& p : c.beam_mode_pairs)
+    s << "| " << p.fem_mode + 1 << " | " << c.fem_kinds[static_cast<std::size_t>(p.fem_mode)] << " | " << p.fem_hz
+      << " | " << p.chain_mode + 1 << " | " << p.chain_hz << " | " << format_percent(p.relative_error) << " | "
+      << p.mac << " |\n";
   s << "\n## Chain modes\n\n| mode | f [Hz] | kind |\n|---|---|---|\n";
   for (std::size_t i = 0; i < c.chain_hz.size() && i < 12; ++i)
     s << "| " << i + 1 << " | " << c.chain_hz[i] << " | " << c.chain_kinds[i] << " |\n";

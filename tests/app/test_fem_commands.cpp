@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
@@ -27,7 +30,7 @@ TEST(FemCommands, MeshAndModesWriteTheirFiles) {
   std::string header, first;
   std::getline(csv, header);
   std::getline(csv, first);
-  EXPECT_EQ(header, "mode,frequency_hz,kind");
+  EXPECT_EQ(header, "mode,frequency_hz,kind,beam_share,shape_kind");
   EXPECT_EQ(first.substr(0, 2), "1,");
   EXPECT_TRUE(fs::exists(dir / "fem.vtu"));
   // Bad input: exit status 2 and nothing written.
@@ -35,6 +38,45 @@ TEST(FemCommands, MeshAndModesWriteTheirFiles) {
   EXPECT_EQ(run_flapsim("modes " + wing + " -o " + bad.string() + " --modes 0"), 2);
   EXPECT_EQ(run_flapsim("mesh " + (scratch / "missing.toml").string() + " -o " + bad.string()), 2);
   EXPECT_FALSE(fs::exists(bad / "modes.csv"));
+}
+
+// Cell \p index of a CSV line or markdown table row split by \p sep, trimmed.
+std::string cell(const std::string& line, char sep, int index) {
+  std::stringstream ss(line);
+  std::string c;
+  for (int i = 0; i <= index && std::getline(ss, c, sep); ++i) {
+  }
+  while (!c.empty() && c.front() == ' ') c.erase(c.begin());
+  while (!c.empty() && c.back() == ' ') c.pop_back();
+  return c;
+}
+
+// Issue 17: `flapsim modes` names the modes as `flapsim reduce` does — from the motion of
+// the chain's stations (docs/reduction.md, "Mode kinds from the stations"), so the MAV
+// film wing's film modes are "film", not "bending" (its 12 lowest modes: 7 film).
+TEST(FemCommands, ModesNamesModesAsTheReductionReportDoes) {
+  const flapsim::test::ScratchDir scratch("modes_names");
+  const std::string wing = std::string(FLAPSIM_SOURCE_DIR) + "/wings/mav_film_wing.toml";
+  ASSERT_EQ(run_flapsim("modes " + wing + " -o " + (scratch / "modes").string() + " --modes 12 --bodies 10"), 0);
+  ASSERT_EQ(run_flapsim("reduce " + wing + " -o " + (scratch / "reduce").string() + " --modes 12 --bodies 10"), 0);
+  std::vector<std::string> from_modes, from_report;
+  std::ifstream csv(scratch / "modes" / "modes.csv");
+  std::string line;
+  std::getline(csv, line);  // header
+  while (std::getline(csv, line))
+    if (!line.empty()) from_modes.push_back(cell(line, ',', 2));
+  std::ifstream report(scratch / "reduce" / "report.md");
+  bool in_table = false;
+  while (std::getline(report, line)) {
+    if (line.rfind("## ", 0) == 0) in_table = line == "## FEM modes";
+    if (in_table && line.size() > 2 && line[0] == '|' && std::isdigit(static_cast<unsigned char>(line[2])))
+      from_report.push_back(cell(line, '|', 3));
+  }
+  ASSERT_EQ(from_modes.size(), 12u);
+  EXPECT_EQ(from_modes, from_report);
+  int film = 0;
+  for (const auto& k : from_modes) film += k == "film";
+  EXPECT_GE(film, 1);
 }
 
 }  // namespace

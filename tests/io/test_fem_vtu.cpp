@@ -49,7 +49,9 @@ TEST(FemVtu, ModeShapesAndStaticCasesReadBackWithVtk) {
     st.push_back({lc, statics.solve(lc.loads)});
   const test::ScratchDir dir("fem_vtu");
   const auto kinds = fem::classify_modes(model.mesh, sys, modes.shapes, modes.frequencies_hz);
-  io::write_fem_vtu(dir / "fem.vtu", model.mesh, 0.0, modes, kinds, st);
+  std::vector<io::ModeLabel> labels;
+  for (const auto k : kinds) labels.push_back({fem::to_string(k), 1.0, fem::to_string(k)});
+  io::write_fem_vtu(dir / "fem.vtu", model.mesh, 0.0, modes, labels, st);
 
   auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
   reader->SetFileName((dir / "fem.vtu").c_str());

@@ -51,22 +51,23 @@ class HawkmothReduction : public ::testing::Test {
   static inline std::unique_ptr<ClampedWingAnalysis> analysis_;
 };
 
-// Issue 7's acceptance test, with the joint stiffness by reciprocity (issue 17,
-// docs/reduction.md): the 10-body chain against the root-clamped FEM of the calibrated
-// wings/hawkmoth.toml. Measured: first bending −3.1 % (MAC 0.998), first torsion −9.3 %
-// (MAC 0.95), tip deflection +1.9 %, tip twist −3.0 %. The earlier diagonal springs from
-// tip-load section fits gave +1.6 % / +2.8 %; the full K is exact at the stations under
-// every joint load but its rigid sections carry more torsional inertia than the FEM's
-// torsion mode, whose torsional compliance is spread across cells (the diagonal of the
-// same K, coupling dropped, gives +91 %). Issue 17's 3 % for torsion is not met.
+// Issue 7's acceptance test and issue 17's: the 10-body chain with the joint stiffness by
+// reciprocity (docs/reduction.md, "Joint stiffness by reciprocity") against the
+// root-clamped FEM of the calibrated wings/hawkmoth.toml. Measured: first bending −0.24 %
+// (MAC 1.000), first torsion +0.61 % (MAC 0.994), tip deflection +0.04 %, tip twist −3.0 %.
+// (The first reciprocity chain, with a body's bending rotation fitted in its mid-span band
+// instead of the chord slope between its joints, gave −3.1 % / −9.3 %: the twist rate
+// aliased into the fitted slope and the chain's torsion mode carried 31 % more kinetic
+// energy than the FEM's.)
 TEST_F(HawkmothReduction, TenBodiesMatchTheFem) {
   const ChainFemComparison c = compare(10);
   print(c);
   ASSERT_TRUE(c.bending.found);
   ASSERT_TRUE(c.torsion.found);
-  // Issue 7 acceptance: chain vs FEM within 5 % (bending, statics); torsion within 10 %.
-  EXPECT_NEAR(c.bending.relative_error, 0.0, 0.05);
-  EXPECT_NEAR(c.torsion.relative_error, 0.0, 0.10);
+  // Issue 17: first bending and first torsion within 3 % of the FEM.
+  EXPECT_NEAR(c.bending.relative_error, 0.0, 0.03);
+  EXPECT_NEAR(c.torsion.relative_error, 0.0, 0.03);
+  // Issue 7 acceptance: statics within 5 %.
   EXPECT_NEAR(c.tip_deflection.relative_error, 0.0, 0.05);
   EXPECT_NEAR(c.tip_twist.relative_error, 0.0, 0.05);
   // The chain's bodies carry the FEM mass (strip sums, docs/reduction.md).
@@ -92,16 +93,21 @@ TEST_F(HawkmothReduction, ErrorsAtFourEightTenSixteenBodies) {
       ++slot;
     }
   }
-  // More bodies, smaller errors: 16 bodies closer to the FEM than 4 (measured bending
-  // −4.3 → −2.4 %, torsion −7.2 → −6.0 %).
-  EXPECT_LT(std::abs(bending[2]), std::abs(bending[0]));
-  EXPECT_LT(std::abs(torsion[2]), std::abs(torsion[0]));
+  // The chain converges as N_b doubles: the change 8 -> 16 is smaller than half the change
+  // 4 -> 8 (Hencky lumping error of second order in the body length; measured bending
+  // −1.67 / −0.38 / −0.09 %, torsion +2.16 / +0.83 / +0.58 % at 4 / 8 / 16 bodies).
+  EXPECT_LT(std::abs(bending[2] - bending[1]), 0.5 * std::abs(bending[1] - bending[0]));
+  EXPECT_LT(std::abs(torsion[2] - torsion[1]), 0.5 * std::abs(torsion[1] - torsion[0]));
 }
 
 // The literal 12 µm cuticle membrane (wings/hawkmoth_thin_membrane.toml): its sections
 // camber between the veins. With the joint stiffness by reciprocity it reduces for 4 … 16
-// bodies (K positive definite, test_joint_stiffness.cpp); chain vs FEM reported here
-// (issue 17) — the earlier lumping missed by +28 % / +46 %.
+// bodies (K positive definite, test_joint_stiffness.cpp); chain vs FEM (issue 17). Measured
+// at 4 / 8 / 10 / 16 bodies: bending −0.92 / −0.02 / −0.11 / +0.11 % (MAC 0.995–0.996),
+// torsion +0.30 / +2.10 / +2.05 / +2.08 % (MAC 0.76–0.83: the FEM's torsion mode cambers
+// the film, which rigid sections cannot). The tip-load section fits of issue 7 missed by
+// +28 % / +46 %; the first reciprocity chain (mid-span fitted slopes) by −28 … −38 % in
+// bending with no torsion match.
 TEST(HawkmothThinMembrane, ChainAgainstFemForFourToSixteenBodies) {
   const wings::Wing wing =
       wings::load_wing_file(std::string(FLAPSIM_SOURCE_DIR) + "/wings/hawkmoth_thin_membrane.toml");
@@ -114,9 +120,16 @@ TEST(HawkmothThinMembrane, ChainAgainstFemForFourToSixteenBodies) {
     std::printf("thin membrane N_b=%2d  bending %.2f/%.2f Hz (%+.2f %%, MAC %.3f)  torsion %.2f/%.2f Hz (%+.2f %%, MAC %.3f)\n",
                 nb, c.bending.chain_hz, c.bending.fem_hz, 100 * c.bending.relative_error, c.bending.mac,
                 c.torsion.chain_hz, c.torsion.fem_hz, 100 * c.torsion.relative_error, c.torsion.mac);
-    ASSERT_TRUE(c.bending.found) << nb;
+    for (const ModeMatch& p : c.beam_mode_pairs)
+      std::printf("  FEM beam mode %2d (%s) %7.2f Hz ~ chain mode %2d %7.2f Hz (%+.1f %%, MAC %.3f)\n", p.fem_mode + 1,
+                  c.fem_kinds[static_cast<std::size_t>(p.fem_mode)].c_str(), p.fem_hz, p.chain_mode + 1, p.chain_hz,
+                  100 * p.relative_error, p.mac);
+    ASSERT_TRUE(c.bending.found && c.torsion.found) << nb;
     // The first bending mode is a beam mode and the chain follows it (MAC > 0.9).
     EXPECT_GT(c.bending.mac, 0.9) << nb;
+    // Issue 17's 3 % (set for the calibrated wing) holds here too for both frequencies.
+    EXPECT_NEAR(c.bending.relative_error, 0.0, 0.03) << nb;
+    EXPECT_NEAR(c.torsion.relative_error, 0.0, 0.03) << nb;
     // The first bending frequency lies below the 26.1 Hz wingbeat (both papers).
     EXPECT_LT(c.bending.fem_hz, 26.1);
   }

@@ -3,6 +3,12 @@
 // lumping failed for every number of bodies ("non-positive spring"); with the joint
 // stiffness by reciprocity it reduces for 4, 8, 10 and 16 bodies with K symmetric
 // positive definite, its film modes are named "film", and chain vs FEM is reported.
+// Measured (4 / 8 / 10 / 16 bodies): the FEM's first mode (13.60 Hz, the film and batten
+// rotating about the leading-edge rod, beam share 0.98, named torsion) against the chain's
+// first torsion mode −5.6 / −3.2 / +2.1 / −0.2 % (MAC 0.90); the first reciprocity chain
+// (mid-span fitted slopes) gave −32.6 % at 10 bodies. The FEM's beam share of its higher
+// modes is low (film modes from 47 Hz); the station classification finds a bending mode
+// among the first 12 only at 4 and 8 bodies, and the chain misses it (+144 %, +91 %).
 
 #include <gtest/gtest.h>
 
@@ -36,6 +42,16 @@ TEST(MavFilmWing, ReducesForFourToSixteenBodiesWithPositiveDefiniteStiffness) {
                 "chain %.2f Hz (%+.1f %%, MAC %.3f)\n",
                 nb, c.bending.fem_hz, c.bending.chain_hz, 100 * c.bending.relative_error, c.bending.mac,
                 c.torsion.fem_hz, c.torsion.chain_hz, 100 * c.torsion.relative_error, c.torsion.mac);
+    for (const ModeMatch& p : c.beam_mode_pairs)
+      std::printf("  FEM beam mode %2d (%s) %7.2f Hz ~ chain mode %2d %7.2f Hz (%+.1f %%, MAC %.3f)\n", p.fem_mode + 1,
+                  c.fem_kinds[static_cast<std::size_t>(p.fem_mode)].c_str(), p.fem_hz, p.chain_mode + 1, p.chain_hz,
+                  100 * p.relative_error, p.mac);
+    // The first FEM mode is a beam (torsion) mode the chain follows: a guard at about twice
+    // the largest error measured above.
+    ASSERT_TRUE(c.torsion.found) << nb;
+    EXPECT_EQ(c.torsion.fem_mode, 0) << nb;
+    EXPECT_NEAR(c.torsion.relative_error, 0.0, 0.10) << nb;
+    EXPECT_GT(c.torsion.mac, 0.8) << nb;
     if (nb == 10) {
       int film = 0;
       for (std::size_t i = 0; i < c.fem_kinds.size(); ++i) {

@@ -54,7 +54,9 @@ struct SteadyLoads {
   std::vector<double> strip_gamma, strip_mid;  // trailing-edge circulation and mid-span y of each strip
 };
 
-inline SteadyLoads steady_loads(const PlanformWing& w, double alpha, LeadingEdge leading_edge) {
+/// planar_wake: the wake leaves in the wing's plane (toward −x) instead of along V∞.
+inline SteadyLoads steady_loads(const PlanformWing& w, double alpha, LeadingEdge leading_edge,
+                                bool planar_wake = false) {
   VortexLatticeModel m;
   m.chordwise = w.chordwise;
   m.spanwise = w.spanwise();
@@ -66,7 +68,8 @@ inline SteadyLoads steady_loads(const PlanformWing& w, double alpha, LeadingEdge
   const Eigen::Vector3d v(-std::cos(alpha), 0.0, std::sin(alpha));
   const Eigen::Vector3d lift(std::sin(alpha), 0.0, std::cos(alpha));
   const Eigen::Matrix3Xd nodes = w.nodes();
-  solve_steady(m, d, nodes, v, 1.0, 1e4 * (w.stations.back() - w.stations.front()));
+  solve_steady(m, d, nodes, v, 1.0, 1e4 * (w.stations.back() - w.stations.front()),
+               planar_wake ? Eigen::Vector3d(-1.0, 0.0, 0.0) : v);
   SteadyLoads r;
   r.area = d.area.sum();
   r.span = w.stations.back() - w.stations.front();

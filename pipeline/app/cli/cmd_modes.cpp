@@ -5,7 +5,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <iostream>
+#include <limits>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -18,6 +21,9 @@
 #include "pipeline/io/fem_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
+#include "reduction/chain_lumping.hpp"
+#include "reduction/reduction_failure.hpp"
+#include "reduction/station_mode_kind.hpp"
 #include "wings/input_error.hpp"
 #include "wings/wing_file.hpp"
 
@@ -29,8 +35,29 @@ struct ModesArgs {
   std::string wing_file;
   std::string out_dir = "out";
   int modes = 20;
+  int bodies = 10;
   bool force = false;
 };
+
+// The modes named from the stations of the N-body chain, as `flapsim reduce` names them;
+// a wing that cannot be reduced to N bodies keeps the shape classification (with a warning).
+std::vector<io::ModeLabel> mode_labels(const fem::WingFem& fem, const fem::WingModes& m, int bodies) {
+  std::vector<io::ModeLabel> labels;
+  for (const fem::ModeKind k : m.kinds) labels.push_back({fem::to_string(k), std::numeric_limits<double>::quiet_NaN(), fem::to_string(k)});
+  try {
+    const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp);
+    const reduction::LumpedChain lc = reduction::lump_into_chain(analysis, bodies);
+    const auto measures = reduction::classify_modes_by_stations(lc, m.modes.shapes);
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      labels[i].kind = reduction::to_string(measures[i].kind);
+      labels[i].beam_share = measures[i].beam_share;
+    }
+  } catch (const reduction::ReductionFailure& e) {
+    std::cerr << "warning: modes named by their shape, not by the stations of a " << bodies
+              << "-body chain: " << e.what() << "\n";
+  }
+  return labels;
+}
 
 void run_modes(const ModesArgs& args) {
   if (args.modes < 1 || args.modes > 500)
@@ -57,17 +84,22 @@ void run_modes(const ModesArgs& args) {
     }
     return out;
   });
-  // 5. Outputs (each atomic).
-  io::write_modes_csv(dir / "modes.csv", m.modes, m.kinds);
-  io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, m.kinds, results);
+  // 5. Mode names from the stations of the chain (docs/reduction.md).
+  const std::vector<io::ModeLabel> labels =
+      app::numerical_stage("mode names", [&] { return mode_labels(fem, m, args.bodies); });
+  // 6. Outputs (each atomic).
+  io::write_modes_csv(dir / "modes.csv", m.modes, labels);
+  io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, labels, results);
   claim.finish("complete");
 
   std::printf("%s: %d nodes, %zu triangles, %zu vein elements, FEM mass %.4f mg\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), fem.system.total_mass * 1e6);
-  std::printf("%5s %12s  %s\n", "mode", "f [Hz]", "kind");
-  for (Eigen::Index k = 0; k < m.modes.frequencies_hz.size(); ++k)
-    std::printf("%5d %12.3f  %s\n", static_cast<int>(k + 1), m.modes.frequencies_hz(k),
-                fem::to_string(m.kinds[static_cast<size_t>(k)]).c_str());
+  std::printf("%5s %12s  %-8s %10s  %s\n", "mode", "f [Hz]", "kind", "beam share", "shape");
+  for (Eigen::Index k = 0; k < m.modes.frequencies_hz.size(); ++k) {
+    const io::ModeLabel& l = labels[static_cast<std::size_t>(k)];
+    std::printf("%5d %12.3f  %-8s %10.3f  %s\n", static_cast<int>(k + 1), m.modes.frequencies_hz(k), l.kind.c_str(),
+                l.beam_share, l.shape_kind.c_str());
+  }
   std::printf("wrote %s, %s\n", (dir / "modes.csv").string().c_str(), (dir / "fem.vtu").string().c_str());
 }
 
@@ -77,18 +109,25 @@ void add_modes_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "modes",
       "FEM of the wing clamped at its root (nodes with y <= clamp_y): the lowest modes\n"
-      "(Lanczos, shift-invert) classified as bending, torsion, chordwise or in-plane,\n"
+      "(Lanczos, shift-invert) named bending, torsion or film from the motion of the\n"
+      "stations of the N-body chain, as 'flapsim reduce' names them (beam share: the part\n"
+      "of the motion the stations' rigid sections carry; below 1/2 a film mode), beside\n"
+      "their shape classification (bending, torsion, chordwise, in-plane),\n"
       "and four static cases (unit tip force at the leading and at the trailing edge,\n"
       "unit tip bending moment, unit tip torque, at 90 % of the span).\n"
-      "Writes DIR/modes.csv (mode, frequency_hz, kind) and DIR/fem.vtu: point vectors\n"
-      "mode_NN scaled so the largest displacement is 10 % of the span (field data\n"
-      "mode_NN_frequency_Hz, mode_NN_kind, mode_NN_scale) and static_<case>_m_per_N[_m]\n"
+      "Writes DIR/modes.csv (mode, frequency_hz, kind, beam_share, shape_kind) and DIR/fem.vtu:\n"
+      "point vectors mode_NN scaled so the largest displacement is 10 % of the span (field data\n"
+      "mode_NN_frequency_Hz, mode_NN_kind, mode_NN_beam_share, mode_NN_shape_kind,\n"
+      "mode_NN_scale) and static_<case>_m_per_N[_m]\n"
       "(displacement per unit load). Exit status: 0 ok, 2 bad input, 3 numerical failure\n"
       "of the FEM, 4 output error.");
   auto args = std::make_shared<ModesArgs>();
   cmd->add_option("WING", args->wing_file, "wing file (TOML)")->required();
   cmd->add_option("-o,--output", args->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--modes", args->modes, "number of modes")->capture_default_str();
+  cmd->add_option("--bodies", args->bodies, "bodies of the chain whose stations name the modes (as flapsim reduce --bodies)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
   cmd->add_flag("--force", args->force, "replace another command's outputs in the folder that this command would overwrite");
   cmd->callback([args] { run_modes(*args); });
 }
