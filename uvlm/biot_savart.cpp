@@ -15,8 +15,8 @@ void SegmentSet::reserve(std::size_t capacity) {
 }
 
 void SegmentSet::update_single_precision() {
-  const std::vector<double>* src[8] = {&ax_, &ay_, &az_, &bx_, &by_, &bz_, &gamma_, &inv_len2_};
-  for (int a = 0; a < 8; ++a)
+  const std::vector<double>* src[9] = {&ax_, &ay_, &az_, &bx_, &by_, &bz_, &gamma_, &inv_len2_, &core_ratio2_};
+  for (int a = 0; a < 9; ++a)
     for (std::size_t k = 0; k < size_; ++k) single_[a][k] = static_cast<float>((*src[a])[k]);
 }
 
@@ -83,7 +83,8 @@ void add_induced_velocity(const SegmentSet& segments, const double* x, const dou
   if (segments.size() == 0 || n == 0) return;
   const SegmentSet& s = segments;
   detail::KernelCall<double> c{s.size(), s.ax(), s.ay(), s.az(), s.bx(), s.by(), s.bz(),
-                               s.gamma(), s.inv_length2(), 1.0 / (core.radius * core.radius),
+                               s.gamma(), s.inv_length2(), s.core_ratio2(),
+                               1.0 / (core.radius * core.radius),
                                core.model, n, x, y, z, u, v, w};
   dispatch(c);
 }
@@ -100,7 +101,7 @@ void add_induced_velocity_single(const SegmentSet& segments, const double* x, co
   if (segments.size() == 0 || n == 0) return;
   const SegmentSet& s = segments;
   detail::KernelCall<float> c{s.size(), s.single(0), s.single(1), s.single(2), s.single(3),
-                              s.single(4), s.single(5), s.single(6), s.single(7),
+                              s.single(4), s.single(5), s.single(6), s.single(7), s.single(8),
                               static_cast<float>(1.0 / (core.radius * core.radius)), core.model,
                               n, x, y, z, u, v, w};
   dispatch(c);

@@ -50,12 +50,13 @@ class SegmentSet {
   /// Copy the segments into the single-precision arrays that
   /// add_induced_velocity_single reads (no allocation).
   void update_single_precision();
-  /// Single-precision copies, in the order ax, ay, az, bx, by, bz, gamma, 1/length².
+  /// Single-precision copies, in the order ax, ay, az, bx, by, bz, gamma, inv_length2,
+  /// core_ratio2.
   const float* single(int array) const { return single_[array].data(); }
 
  private:
   std::vector<double> ax_, ay_, az_, bx_, by_, bz_, gamma_, inv_len2_, core_ratio2_;
-  std::vector<float> single_[8];
+  std::vector<float> single_[9];
   std::size_t size_ = 0;
 };
 

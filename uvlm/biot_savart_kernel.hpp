@@ -18,26 +18,48 @@ constexpr double kLambOseen = 1.25643;  // makes the Lamb–Oseen peak velocity 
 template <class T> constexpr T kTiny = T(1e-300);
 template <> constexpr float kTiny<float> = 1e-36f;
 
-/// exp(−y) for y ≥ 0 without a library call (vectorisable): e^(−y) = (e^(−y/64))^64 with a
-/// degree-10 Taylor polynomial on [0, 0.625]; relative error < 1e-12 for y < 20, and the
-/// argument is clamped at 40 where e^(−40) ≈ 4e-18 no longer matters next to 1.
+/// x = h²/r_c² from which the Lamb–Oseen factor is exactly 1 in precision T. Double:
+/// e^(−1.25643·30) = 4.3e-17 < 2^-54, so 1 − e^(−1.25643 x) rounds to 1 for x ≥ 30;
+/// float: e^(−1.25643·14) = 2.3e-8 < 2^-25. The kernels skip the exponential for a block
+/// of segments all this far from the point, with the same result as evaluating it.
+template <class T> inline constexpr T kLambOseenUnity = T(30);
+template <> inline constexpr float kLambOseenUnity<float> = 14.0f;
+
+/// exp(−y) for 0 ≤ y ≤ 40 without a library call (vectorisable, only +, × and no fused
+/// multiply–add, so every instruction set rounds alike). Double: e^(−y) = (e^(−y/64))^64,
+/// e^z for z = −y/64 ∈ [−0.625, 0] by its degree-10 Taylor polynomial (truncation below
+/// 1.2e-19 absolute; rounding, amplified 64× by the squarings, about 1e-14 absolute).
+/// Float, used up to y = 1.25643·kLambOseenUnity<float> = 17.6: (e^(−y/32))^32 with the
+/// degree-6 polynomial (truncation below 2e-10 absolute, rounding about 2e-6). Both by
+/// Estrin's scheme (a short dependency chain); tests/uvlm/test_kernel_dispatch.cpp
+/// checks them against std::exp.
 template <class T>
 [[gnu::always_inline]] inline T exp_neg(T y) {
-  y = y < T(40) ? y : T(40);
-  const T z = -y * T(1.0 / 64.0);
-  T p = T(1.0 / 3628800.0);
-  p = p * z + T(1.0 / 362880.0);
-  p = p * z + T(1.0 / 40320.0);
-  p = p * z + T(1.0 / 5040.0);
-  p = p * z + T(1.0 / 720.0);
-  p = p * z + T(1.0 / 120.0);
-  p = p * z + T(1.0 / 24.0);
-  p = p * z + T(1.0 / 6.0);
-  p = p * z + T(0.5);
-  p = p * z + T(1);
-  p = p * z + T(1);
-  p *= p; p *= p; p *= p; p *= p; p *= p; p *= p;
-  return p;
+  y = y < T(40) ? y : T(40);  // keeps lanes that are not used (x ≥ kLambOseenUnity<T>) finite
+  if constexpr (sizeof(T) == sizeof(float)) {
+    const T z = y * T(-1.0 / 32.0);
+    const T z2 = z * z, z4 = z2 * z2;
+    const T a0 = T(1) + z;
+    const T a1 = T(1.0 / 2.0) + T(1.0 / 6.0) * z;
+    const T a2 = T(1.0 / 24.0) + T(1.0 / 120.0) * z;
+    const T a3 = T(1.0 / 720.0);
+    T p = (a0 + a1 * z2) + (a2 + a3 * z2) * z4;
+    p *= p; p *= p; p *= p; p *= p; p *= p;
+    return p;
+  } else {
+    const T z = y * T(-1.0 / 64.0);
+    const T z2 = z * z, z4 = z2 * z2, z8 = z4 * z4;
+    const T a0 = T(1) + z;
+    const T a1 = T(1.0 / 2.0) + T(1.0 / 6.0) * z;
+    const T a2 = T(1.0 / 24.0) + T(1.0 / 120.0) * z;
+    const T a3 = T(1.0 / 720.0) + T(1.0 / 5040.0) * z;
+    const T a4 = T(1.0 / 40320.0) + T(1.0 / 362880.0) * z;
+    const T a5 = T(1.0 / 3628800.0);
+    const T b0 = a0 + a1 * z2, b1 = a2 + a3 * z2, b2 = a4 + a5 * z2;
+    T p = (b0 + b1 * z4) + b2 * z8;
+    p *= p; p *= p; p *= p; p *= p; p *= p; p *= p;
+    return p;
+  }
 }
 
 /// Core factor f(x), x = h²/r_c² (see vortex_core.hpp).
@@ -46,7 +68,7 @@ template <CoreModel M, class T>
   if constexpr (M == CoreModel::CutOff) {
     return x > T(1) ? T(1) : T(0);  // compiles to a mask/blend, not a branch
   } else if constexpr (M == CoreModel::LambOseen) {
-    return T(1) - exp_neg(T(kLambOseen) * x);
+    return x < kLambOseenUnity<T> ? T(1) - exp_neg(T(kLambOseen) * x) : T(1);
   } else {
     return x / std::sqrt(T(1) + x * x);
   }

@@ -22,7 +22,8 @@ struct KernelCall {
   std::size_t segments = 0;
   const T *ax, *ay, *az, *bx, *by, *bz;  ///< segment ends [m]
   const T* gamma;                         ///< circulations [m²/s]
-  const T* inv_length2;                   ///< 1/(|B−A|² (r_c,k/r_c)²) per segment [1/m²]
+  const T* inv_length2;                   ///< (r_c/r_c,k)²/|B−A|² per segment [1/m²]
+  const T* core_ratio2;                   ///< (r_c/r_c,k)² per segment [-]
   T inv_rc2;                              ///< 1/r_c² [1/m²]
   CoreModel model;
   std::size_t points = 0;
@@ -34,7 +35,7 @@ struct KernelCall {
 /// kLanes<double> (padded with Γ = 0), accumulating into the point's lane sums.
 struct PointRangeCall {
   std::size_t count = 0;
-  const double *ax, *ay, *az, *bx, *by, *bz, *gamma, *inv_length2;
+  const double *ax, *ay, *az, *bx, *by, *bz, *gamma, *inv_length2, *core_ratio2;
   double inv_rc2;
   CoreModel model;
   double px, py, pz;        ///< the point [m]
@@ -49,24 +50,130 @@ inline constexpr std::size_t kParallelThreshold = 100000;
 
 namespace {  // TU-local: one copy per instruction set
 
+/// kLanes<T> consecutive segments (pointers to their first entries).
+template <class T>
+struct Lanes {
+  const T *__restrict ax, *__restrict ay, *__restrict az, *__restrict bx, *__restrict by,
+      *__restrict bz, *__restrict g, *__restrict il, *__restrict cr;
+};
+
 template <class T>
 struct TailBlock {  // the last, partial block of segments, padded with Γ = 0
   T ax[kLanes<T>], ay[kLanes<T>], az[kLanes<T>], bx[kLanes<T>], by[kLanes<T>], bz[kLanes<T>];
-  T g[kLanes<T>], il[kLanes<T>];
+  T g[kLanes<T>], il[kLanes<T>], cr[kLanes<T>];
+  Lanes<T> lanes() const { return {ax, ay, az, bx, by, bz, g, il, cr}; }
 };
 
+/// The segment_velocity formula (biot_savart_kernel.hpp) for one pair, given r1 = P − A,
+/// r2 = P − B, their squares s and lengths n: k·(cx, cy, cz) is the velocity without the
+/// core factor (times it already unless the model is Lamb–Oseen, whose factor the callers
+/// apply or skip per block), x = h²/r_c,k² the core factor's argument.
 template <CoreModel M, class T>
-[[gnu::always_inline]] inline void lane_block(const T* __restrict ax, const T* __restrict ay,
-                                              const T* __restrict az, const T* __restrict bx,
-                                              const T* __restrict by, const T* __restrict bz,
-                                              const T* __restrict g, const T* __restrict il, T px,
-                                              T py, T pz, T inv_rc2, T* __restrict su,
-                                              T* __restrict sv, T* __restrict sw) {
-#pragma omp simd
-  for (int l = 0; l < kLanes<T>; ++l)
-    segment_velocity<M>(px, py, pz, ax[l], ay[l], az[l], bx[l], by[l], bz[l], g[l], inv_rc2 * il[l],
-                        su[l], sv[l], sw[l]);
+[[gnu::always_inline]] inline void pair_terms(T r1x, T r1y, T r1z, T s1, T n1, T r2x, T r2y,
+                                              T r2z, T s2, T n2, T g, T il, T cr, T inv_rc2,
+                                              T& k, T& x, T& cx, T& cy, T& cz) {
+  cx = r1y * r2z - r1z * r2y;
+  cy = r1z * r2x - r1x * r2z;
+  cz = r1x * r2y - r1y * r2x;
+  const T cross2 = cx * cx + cy * cy + cz * cz;
+  const T dot12 = r1x * r2x + r1y * r2y + r1z * r2z;
+  // P projects beyond an end exactly when r1·r2 exceeds the smaller of |r1|², |r2|²;
+  // h² is then that end's |r|², and h²/r_c,k² = |r_end|² (r_c/r_c,k)²/r_c².
+  const T near2 = s1 < s2 ? s1 : s2;
+  const T x_end = near2 * (inv_rc2 * cr);  // both evaluated: no masked loads
+  const T x_line = cross2 * (inv_rc2 * il);
+  x = dot12 > near2 ? x_end : x_line;
+  const T p12 = n1 * n2;
+  const bool between = dot12 < T(0);
+  const T num = between ? p12 - dot12 : T(1);
+  const T den = between ? p12 * cross2 : p12 * (p12 + dot12);
+  k = g * T(kInvFourPi) * (n1 + n2) * num / (den + kTiny<T>);
+  if constexpr (M != CoreModel::LambOseen) k *= core_factor<M>(x);
 }
+
+/// NP target points against one block of kLanes<T> segments, added to the points' lane
+/// sums su/sv/sw[NP × kLanes<T>]: the segment_velocity formula (biot_savart_kernel.hpp) in
+/// three steps, (1) everything but the core factor, (2) the core factor, skipped for the
+/// Lamb–Oseen model when every pair of the block has x ≥ kLambOseenUnity<T> (where it is 1
+/// exactly, so skipping does not change a bit), (3) the sums. Several points per block
+/// give the processor independent work while one waits for a square root or division;
+/// each point's arithmetic is the same whatever NP.
+template <CoreModel M, int NP, class T>
+[[gnu::always_inline]] inline void lane_block(const Lanes<T>& s, const T* px, const T* py,
+                                              const T* pz, T inv_rc2, T* __restrict su,
+                                              T* __restrict sv, T* __restrict sw) {
+  constexpr int L = kLanes<T>;
+  alignas(64) T kk[NP * L], xx[NP * L], cxs[NP * L], cys[NP * L], czs[NP * L];
+  for (int p = 0; p < NP; ++p) {
+#pragma omp simd
+    for (int l = 0; l < L; ++l) {
+      const T r1x = px[p] - s.ax[l], r1y = py[p] - s.ay[l], r1z = pz[p] - s.az[l];
+      const T r2x = px[p] - s.bx[l], r2y = py[p] - s.by[l], r2z = pz[p] - s.bz[l];
+      const T s1 = r1x * r1x + r1y * r1y + r1z * r1z;
+      const T s2 = r2x * r2x + r2y * r2y + r2z * r2z;
+      T k, x, cx, cy, cz;
+      pair_terms<M>(r1x, r1y, r1z, s1, std::sqrt(s1), r2x, r2y, r2z, s2, std::sqrt(s2), s.g[l],
+                    s.il[l], s.cr[l], inv_rc2, k, x, cx, cy, cz);
+      kk[p * L + l] = k;
+      xx[p * L + l] = x;
+      cxs[p * L + l] = cx;
+      cys[p * L + l] = cy;
+      czs[p * L + l] = cz;
+    }
+  }
+  if constexpr (M == CoreModel::LambOseen) {
+    T nearest = xx[0];
+#pragma omp simd reduction(min : nearest)
+    for (int l = 0; l < NP * L; ++l) nearest = xx[l] < nearest ? xx[l] : nearest;
+    if (nearest < kLambOseenUnity<T>) {
+#pragma omp simd
+      for (int l = 0; l < NP * L; ++l) kk[l] *= core_factor<M>(xx[l]);
+    }
+  }
+#pragma omp simd
+  for (int l = 0; l < NP * L; ++l) {
+    su[l] += kk[l] * cxs[l];
+    sv[l] += kk[l] * cys[l];
+    sw[l] += kk[l] * czs[l];
+  }
+}
+
+template <class T>
+Lanes<T> lanes_at(const KernelCall<T>& c, std::size_t k) {
+  return {c.ax + k, c.ay + k, c.az + k, c.bx + k, c.by + k, c.bz + k, c.gamma + k,
+          c.inv_length2 + k, c.core_ratio2 + k};
+}
+
+/// Points i0 … i0+NP−1 against every segment, added to their velocities.
+template <CoreModel M, int NP, class T>
+void points_against_segments(const KernelCall<T>& c, const TailBlock<T>& tail, std::size_t full,
+                             std::size_t i0) {
+  constexpr int L = kLanes<T>;
+  T px[NP], py[NP], pz[NP];
+  for (int p = 0; p < NP; ++p) {
+    px[p] = static_cast<T>(c.x[i0 + p]);
+    py[p] = static_cast<T>(c.y[i0 + p]);
+    pz[p] = static_cast<T>(c.z[i0 + p]);
+  }
+  alignas(64) T su[NP * L] = {}, sv[NP * L] = {}, sw[NP * L] = {};
+  for (std::size_t k = 0; k < full; k += L)
+    lane_block<M, NP>(lanes_at(c, k), px, py, pz, c.inv_rc2, su, sv, sw);
+  if (full < c.segments) lane_block<M, NP>(tail.lanes(), px, py, pz, c.inv_rc2, su, sv, sw);
+  for (int p = 0; p < NP; ++p) {
+    T tu = 0, tv = 0, tw = 0;
+    for (int l = 0; l < L; ++l) {
+      tu += su[p * L + l];
+      tv += sv[p * L + l];
+      tw += sw[p * L + l];
+    }
+    c.u[i0 + p] += tu;
+    c.v[i0 + p] += tv;
+    c.w[i0 + p] += tw;
+  }
+}
+
+/// Points taken two at a time (one more alone when their number is odd).
+inline constexpr int kPointsPerPass = 2;
 
 template <CoreModel M, class T>
 void sum_over_segments(const KernelCall<T>& c) {
@@ -77,38 +184,25 @@ void sum_over_segments(const KernelCall<T>& c) {
     const std::size_t l = k - full;
     tail.ax[l] = c.ax[k]; tail.ay[l] = c.ay[k]; tail.az[l] = c.az[k];
     tail.bx[l] = c.bx[k]; tail.by[l] = c.by[k]; tail.bz[l] = c.bz[k];
-    tail.g[l] = c.gamma[k]; tail.il[l] = c.inv_length2[k];
+    tail.g[l] = c.gamma[k]; tail.il[l] = c.inv_length2[k]; tail.cr[l] = c.core_ratio2[k];
   }
-  const long n = static_cast<long>(c.points);
+  const long passes = static_cast<long>(c.points / kPointsPerPass);
 #pragma omp parallel for schedule(static) if (c.points * c.segments > kParallelThreshold)
-  for (long i = 0; i < n; ++i) {
-    const T px = static_cast<T>(c.x[i]), py = static_cast<T>(c.y[i]), pz = static_cast<T>(c.z[i]);
-    alignas(64) T su[L] = {}, sv[L] = {}, sw[L] = {};
-    for (std::size_t k = 0; k < full; k += L)
-      lane_block<M>(c.ax + k, c.ay + k, c.az + k, c.bx + k, c.by + k, c.bz + k, c.gamma + k,
-                    c.inv_length2 + k, px, py, pz, c.inv_rc2, su, sv, sw);
-    if (full < c.segments)
-      lane_block<M>(tail.ax, tail.ay, tail.az, tail.bx, tail.by, tail.bz, tail.g, tail.il, px, py,
-                    pz, c.inv_rc2, su, sv, sw);
-    T tu = 0, tv = 0, tw = 0;
-    for (int l = 0; l < L; ++l) {
-      tu += su[l];
-      tv += sv[l];
-      tw += sw[l];
-    }
-    c.u[i] += tu;
-    c.v[i] += tv;
-    c.w[i] += tw;
-  }
+  for (long q = 0; q < passes; ++q)
+    points_against_segments<M, kPointsPerPass>(c, tail, full, static_cast<std::size_t>(q) * kPointsPerPass);
+  for (std::size_t i = static_cast<std::size_t>(passes) * kPointsPerPass; i < c.points; ++i)
+    points_against_segments<M, 1>(c, tail, full, i);
 }
 
 /// One point against `count` segments (count a multiple of kLanes<double>), added to the
 /// point's lane sums su/sv/sw[kLanes<double>] (the tree code's direct part).
 template <CoreModel M>
 void point_range(const PointRangeCall& c) {
-  for (std::size_t k = 0; k < c.count; k += kLanes<double>)
-    lane_block<M>(c.ax + k, c.ay + k, c.az + k, c.bx + k, c.by + k, c.bz + k, c.gamma + k,
-                  c.inv_length2 + k, c.px, c.py, c.pz, c.inv_rc2, c.su, c.sv, c.sw);
+  for (std::size_t k = 0; k < c.count; k += kLanes<double>) {
+    const Lanes<double> s{c.ax + k, c.ay + k, c.az + k, c.bx + k, c.by + k, c.bz + k,
+                          c.gamma + k, c.inv_length2 + k, c.core_ratio2 + k};
+    lane_block<M, 1>(s, &c.px, &c.py, &c.pz, c.inv_rc2, c.su, c.sv, c.sw);
+  }
 }
 
 inline void point_range_any_model(const PointRangeCall& c) {

@@ -1,6 +1,7 @@
 #include "uvlm/kernel_dispatch.hpp"
 
 #include <atomic>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -14,8 +15,19 @@ KernelIsa widest_supported() {
   return KernelIsa::Scalar;
 }
 
+// FLAPSIM_KERNEL=scalar|avx2|avx512 chooses a narrower variant (to measure what a CPU
+// without the wider units gets; the results are the same bits); unknown or unsupported
+// values are ignored.
+KernelIsa initial() {
+  const char* env = std::getenv("FLAPSIM_KERNEL");
+  if (env != nullptr)
+    for (KernelIsa isa : {KernelIsa::Scalar, KernelIsa::Avx2, KernelIsa::Avx512})
+      if (kernel_isa_name(isa) == env && kernel_isa_supported(isa)) return isa;
+  return widest_supported();
+}
+
 std::atomic<KernelIsa>& current() {
-  static std::atomic<KernelIsa> isa{widest_supported()};
+  static std::atomic<KernelIsa> isa{initial()};
   return isa;
 }
 

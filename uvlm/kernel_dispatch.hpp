@@ -27,7 +27,8 @@ bool kernel_isa_supported(KernelIsa isa);
 /// The variants this CPU supports, narrowest first.
 std::vector<KernelIsa> supported_kernel_isas();
 
-/// The variant in use: the widest supported one unless set_kernel_isa chose another.
+/// The variant in use: the widest supported one unless the environment variable
+/// FLAPSIM_KERNEL (scalar, avx2, avx512; read once) or set_kernel_isa chose another.
 KernelIsa kernel_isa();
 
 /// Use `isa` for every later kernel call (tests, benchmarks: identical results by design).

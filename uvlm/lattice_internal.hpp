@@ -22,8 +22,18 @@ void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d);
 enum class WakeView { Wing, Wake };
 
 /// Unique wake segments with their net circulation and core (row wake_rows must sit on
-/// the trailing edge), as seen from `view`.
+/// the trailing edge), as seen from `view`. With model.far_wake_by_tree() the far wake's
+/// segments go to d.far_wake_segments and the tree is built over them.
 void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, WakeView view);
+
+/// Number of wake node rows (a prefix, oldest first) older than the frozen or far-wake
+/// age: they do not move with their induced velocity.
+int far_wake_node_rows(const VortexLatticeModel& m, const VortexLatticeData& d);
+
+/// Add the convected far wake's velocity (the tree of d.far_wake_segments, targets moved
+/// back by d.far_tree_shift) at n points; nothing when there is no far-wake tree.
+void add_far_wake_velocity(VortexLatticeData& d, const double* x, const double* y, const double* z,
+                           std::size_t n, double* u, double* v, double* w);
 
 /// Put the wake's newest node row on the current trailing edge (ring nodes of row nc).
 void attach_wake_to_trailing_edge(const VortexLatticeModel& m, VortexLatticeData& d);

@@ -90,7 +90,7 @@ class SegmentTree {
   std::vector<std::uint64_t> keys_;          // Morton key << 20 | ... (sorted pairs)
   std::vector<std::uint32_t> order_;         // sorted position → segment index
   std::vector<double> sx_, sy_, sz_, tx_, ty_, tz_, sg_, srat_;  // segments in sorted order
-  std::vector<double> pax_, pay_, paz_, pbx_, pby_, pbz_, pg_, pil_;  // leaves, padded
+  std::vector<double> pax_, pay_, paz_, pbx_, pby_, pbz_, pg_, pil_, prat_;  // leaves, padded
   std::vector<Node> nodes_;
   std::vector<double> moments_;  // 3 × terms_ per node, scaled by (−1)^|n|/(n! 4π)
   std::vector<std::uint32_t> stack_;  // build stack

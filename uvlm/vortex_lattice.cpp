@@ -19,6 +19,10 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
     throw std::invalid_argument("vortex lattice: tree tolerance must be > 0");
   if (!(m.near_wing_core >= 0.0) || !(m.frozen_wake_age >= 0.0) || !(m.near_wing_min_age >= 0.0))
     throw std::invalid_argument("vortex lattice: near-wing core and frozen-wake age must be >= 0");
+  if (!(m.far_wake_age >= 0.0) || (m.far_wake_age > 0.0 && m.frozen_wake_age > 0.0))
+    throw std::invalid_argument("vortex lattice: far-wake age must be >= 0 and excludes a frozen wake");
+  if (m.far_wake_age > 0.0 && (!(m.far_wake_disk_area > 0.0) || !(m.far_wake_speed_factor > 0.0)))
+    throw std::invalid_argument("vortex lattice: a convected far wake needs a disk area and speed factor > 0");
   if (m.core_growth.enabled &&
       (!(m.core_growth.kinematic_viscosity > 0.0) || !(m.core_growth.squire_a1 >= 0.0)))
     throw std::invalid_argument("vortex lattice: core growth needs a viscosity > 0 and a1 >= 0");
@@ -61,6 +65,10 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   bound_segments.reserve(bound_n);
   trailing_edge_segments.reserve(ns);
   wake_segments.reserve((rows + 1) * ns + rows * (ns + 1));
+  if (m.far_wake_by_tree()) {
+    far_wake_segments.reserve(wake_segments.capacity());
+    far_targets.reserve(std::max(wake_nodes_n, std::max<std::size_t>(bound_n, np)));
+  }
   if (m.wake_sum == WakeSum::Tree) wake_tree.reserve(wake_segments.capacity());
   for (auto& s : ring_side) s.reserve(np);
   eval.reserve(std::max<std::size_t>(bound_n, np));
@@ -189,6 +197,8 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
   d.eval.size = n;
   d.eval.zero_velocity();
   if (d.wake_segments.size() > 0) add_induced_velocity(d.wake_segments, d.eval, m.core);
+  add_far_wake_velocity(d, d.eval.x.data(), d.eval.y.data(), d.eval.z.data(), n, d.eval.u.data(),
+                        d.eval.v.data(), d.eval.w.data());
   if (include_bound) {
     add_induced_velocity(d.bound_segments, d.eval, m.bound_core());
     add_induced_velocity(d.trailing_edge_segments, d.eval, m.core);

@@ -94,6 +94,24 @@ struct VortexLatticeModel {
   /// Far wake: wake nodes older than this [s] no longer move (they still induce velocity,
   /// and their velocity is not computed any more); 0: the whole wake is free.
   double frozen_wake_age = 0.0;
+  /// Convected far wake: wake nodes older than this [s] move with the far-wake velocity of
+  /// momentum theory (far_wake_velocity) instead of their induced velocity; they keep
+  /// inducing velocity on the wing and on the younger wake, nothing is dropped. 0: off.
+  /// Excludes frozen_wake_age.
+  double far_wake_age = 0.0;
+  /// The disk the stroke sweeps [m²] (momentum theory's actuator disk; for a wing of
+  /// length R sweeping the angle Φ: Φ R²/2). Needed when far_wake_age > 0.
+  double far_wake_disk_area = 0.0;
+  /// The far wake moves with this multiple of the momentum-theory induced velocity v_i:
+  /// 1 = the slipstream boundary, which moves with the mean of the jet's 2 v_i inside and
+  /// the still air outside (docs/uvlm.md, "Far wake").
+  double far_wake_speed_factor = 1.0;
+  /// True when the far wake is convected and summed by the tree code (for the wing and
+  /// the younger wake alike), the younger wake by the direct sum.
+  /// Steps between rebuilds of the far wake's tree (it translates exactly in between;
+  /// with core growth its cores are up to this many steps old).
+  int far_tree_rebuild_steps = 10;
+  bool far_wake_by_tree() const { return far_wake_age > 0.0 && wake_sum == WakeSum::Tree; }
   /// The wake's self-induced velocity: direct sum or tree code (in double precision, to
   /// a relative error of tree_tolerance; the direct sum is used while the wake has fewer
   /// than tree_min_segments segments, where the tree does not pay).
@@ -174,6 +192,13 @@ struct VortexLatticeData {
   SegmentSet bound_segments;          ///< bound segments except the trailing edge
   SegmentSet trailing_edge_segments;  ///< the last rings' trailing segments (wake core)
   SegmentSet wake_segments;
+  /// The convected far wake's segments when it is summed by the tree code
+  /// (far_wake_age > 0 and wake_sum = Tree); empty otherwise (all in wake_segments).
+  SegmentSet far_wake_segments;
+  int far_tree_rows = 0;     ///< node rows of the far wake in the tree (0: no tree)
+  long far_tree_step = 0;    ///< accepted_steps when the tree was built
+  Eigen::Vector3d far_tree_shift = Eigen::Vector3d::Zero();  ///< far-wake displacement since [m]
+  PointSet far_targets;      ///< target points moved back by far_tree_shift (scratch)
   SegmentTree wake_tree;              ///< the tree code's storage (model.wake_sum = Tree)
   SegmentSet ring_side[4];  ///< unit-circulation ring sides for the influence matrix
   PointSet eval;
@@ -185,6 +210,10 @@ struct VortexLatticeData {
   double dt = 0.0;    ///< [s]
   double rho = 0.0;   ///< [kg/m³]
   long accepted_steps = 0;
+  /// Σ total_force dt over the accepted steps [N s] and Σ dt [s]: the mean aerodynamic
+  /// force so far (the thrust of the far wake's momentum theory).
+  Eigen::Vector3d force_impulse = Eigen::Vector3d::Zero();
+  double force_time = 0.0;
 
   int spanwise = 0;       ///< ns (copied from the model)
   int wake_capacity = 0;  ///< wake rows the storage holds
@@ -206,6 +235,14 @@ void solve(const VortexLatticeModel& model, VortexLatticeData& data, const Eigen
 /// Accept the last solve: convect the wake over dt and shed one row from the trailing edge.
 /// \throws std::length_error when the wake would exceed model.wake_capacity rows
 void advance(const VortexLatticeModel& model, VortexLatticeData& data);
+
+/// Velocity [m/s] of the convected far wake (model.far_wake_age): the free stream plus
+/// k v_i along −F̄/|F̄|, with F̄ the mean aerodynamic force of the accepted steps, k =
+/// model.far_wake_speed_factor and v_i the induced velocity of momentum theory at the disk
+/// of area A = model.far_wake_disk_area (Glauert's relation, Leishman 2006 ch. 2):
+///     v_i |V∞ − v_i F̂| = |F̄| / (2 ρ A),   hover (V∞ = 0): v_i = sqrt(|F̄| / (2 ρ A)).
+/// The free stream alone before any step was accepted or while F̄ = 0.
+Eigen::Vector3d far_wake_velocity(const VortexLatticeModel& model, const VortexLatticeData& data);
 
 /// Steady solution of a fixed surface in a uniform stream: the wake is one straight row of
 /// length wake_length along the free stream with the trailing-edge circulation (a

@@ -1,11 +1,13 @@
 /// \file wake.cpp
 /// \brief The wake of a vortex lattice: its segments, its convection (free or prescribed,
-/// Euler or Adams–Bashforth 2), shedding from the trailing edge and truncation.
+/// Euler or Adams–Bashforth 2; frozen or convected far wake), shedding from the trailing
+/// edge and truncation.
 
 #include "uvlm/lattice_internal.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -39,8 +41,47 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
   const auto& age = d.wake_row_age;
   d.wake_segments.clear();
   if (W == 0) return;
-  // Spanwise, node row q, direction j → j+1: rear side of ring q minus front side of ring q−1.
-  for (int q = 0; q <= W; ++q)
+  // Convected far wake by the tree: the far wake moves as a whole (far_wake_velocity), so
+  // a tree built over its node rows q < T stays exact for them when the targets are moved
+  // back by the far wake's displacement since the build (d.far_tree_shift). It is rebuilt
+  // every far_tree_rebuild_steps steps (and whenever rows were dropped); rows that joined
+  // the far wake since go to the direct sum. The far wake is seen through its own cores
+  // from the wing too: the near-wing floor is for the wake the wing meets.
+  int T = 0;
+  if (m.far_wake_by_tree()) {
+    const int F = far_wake_node_rows(m, d);
+    const bool stale = d.far_tree_rows == 0 || d.far_tree_rows > F || m.max_wake_rows > 0 ||
+                       d.accepted_steps - d.far_tree_step >= m.far_tree_rebuild_steps;
+    if (stale && F > 1) {
+      d.far_wake_segments.clear();
+      auto far_ratio = [&](double g, double a) { return rc0_2 / grown_core_radius2(m.core_growth, rc0, a, g); };
+      for (int q = 0; q < F; ++q)
+        for (int j = 0; j < ns; ++j) {
+          const std::size_t a = static_cast<std::size_t>(q) * n1 + j;
+          const double g = G(q, j) - G(q - 1, j);
+          d.far_wake_segments.push(P.x[a], P.y[a], P.z[a], P.x[a + 1], P.y[a + 1], P.z[a + 1], g, far_ratio(g, age[q]));
+        }
+      for (int r = 0; r + 1 < F; ++r)
+        for (int j = 0; j <= ns; ++j) {
+          const std::size_t a = static_cast<std::size_t>(r + 1) * n1 + j;
+          const std::size_t b = static_cast<std::size_t>(r) * n1 + j;
+          const double g = G(r, j) - G(r, j - 1);
+          d.far_wake_segments.push(P.x[a], P.y[a], P.z[a], P.x[b], P.y[b], P.z[b], g,
+                                   far_ratio(g, 0.5 * (age[r] + age[r + 1])));
+        }
+      d.wake_tree.build(d.far_wake_segments, m.core, tree_parameters(m.tree_tolerance));
+      d.far_tree_rows = F;
+      d.far_tree_step = d.accepted_steps;
+      d.far_tree_shift.setZero();
+    } else if (stale) {
+      d.far_tree_rows = 0;
+      d.far_wake_segments.clear();
+    }
+    T = d.far_tree_rows;
+  }
+  // The rest, by the direct sum. Spanwise, node row q, direction j → j+1: rear side of
+  // ring q minus front side of ring q−1.
+  for (int q = T; q <= W; ++q)
     for (int j = 0; j < ns; ++j) {
       const std::size_t a = static_cast<std::size_t>(q) * n1 + j;
       const double g = G(q, j) - G(q - 1, j);
@@ -49,7 +90,7 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
     }
   // Streamwise, column j, from row r+1 (upstream) to row r: root side of ring (r, j) minus
   // tip side of ring (r, j−1).
-  for (int r = 0; r < W; ++r)
+  for (int r = std::max(T - 1, 0); r < W; ++r)
     for (int j = 0; j <= ns; ++j) {
       const std::size_t a = static_cast<std::size_t>(r + 1) * n1 + j;
       const std::size_t b = static_cast<std::size_t>(r) * n1 + j;
@@ -57,6 +98,27 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
       d.wake_segments.push(P.x[a], P.y[a], P.z[a], P.x[b], P.y[b], P.z[b], g,
                            ratio(g, 0.5 * (age[r] + age[r + 1])));
     }
+}
+
+void add_far_wake_velocity(VortexLatticeData& d, const double* x, const double* y, const double* z,
+                           std::size_t n, double* u, double* v, double* w) {
+  if (d.far_tree_rows == 0 || d.far_wake_segments.size() == 0) return;
+  PointSet& s = d.far_targets;
+  const Eigen::Vector3d& o = d.far_tree_shift;
+  for (std::size_t i = 0; i < n; ++i) {
+    s.x[i] = x[i] - o.x();
+    s.y[i] = y[i] - o.y();
+    s.z[i] = z[i] - o.z();
+  }
+  d.wake_tree.add_induced_velocity(s.x.data(), s.y.data(), s.z.data(), n, u, v, w);
+}
+
+int far_wake_node_rows(const VortexLatticeModel& m, const VortexLatticeData& d) {
+  const double far_age = m.far_wake_age > 0.0 ? m.far_wake_age : m.frozen_wake_age;
+  int rows = 0;
+  if (far_age > 0.0)
+    while (rows <= d.wake_rows && d.wake_row_age[rows] > far_age) ++rows;
+  return rows;
 }
 
 }  // namespace detail
@@ -84,15 +146,33 @@ void drop_oldest_row(VortexLatticeData& d) {
 
 }  // namespace
 
+Eigen::Vector3d far_wake_velocity(const VortexLatticeModel& m, const VortexLatticeData& d) {
+  const Eigen::Vector3d& V = d.free_stream;
+  if (!(d.force_time > 0.0) || !(m.far_wake_disk_area > 0.0) || !(d.rho > 0.0)) return V;
+  const Eigen::Vector3d F = d.force_impulse / d.force_time;
+  const double T = F.norm();
+  if (!(T > 0.0)) return V;
+  const Eigen::Vector3d down = -F / T;  // the jet leaves against the force
+  const double c = T / (2.0 * d.rho * m.far_wake_disk_area);  // v_i |V∞ + v_i down| = c [m²/s²]
+  // f(v) = v |V∞ + v down| grows from f(0) = 0 without bound: bisect on [0, hi] with f(hi) ≥ c.
+  auto f = [&](double v) { return v * (V + v * down).norm(); };
+  double lo = 0.0, hi = std::sqrt(c) + V.norm();
+  while (f(hi) < c) hi *= 2.0;
+  for (int i = 0; i < 100 && hi - lo > 1e-14 * hi; ++i) (f(0.5 * (lo + hi)) < c ? lo : hi) = 0.5 * (lo + hi);
+  return V + m.far_wake_speed_factor * 0.5 * (lo + hi) * down;
+}
+
 void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
   const int nc = m.chordwise, ns = m.spanwise;
   const std::size_t n1 = ns + 1;
   detail::attach_wake_to_trailing_edge(m, d);  // rows 0..wake_rows
 
-  // Rows older than the frozen-wake age (a prefix: row 0 is the oldest) keep their place.
-  int first_free = 0;
-  if (m.frozen_wake_age > 0.0)
-    while (first_free <= d.wake_rows && d.wake_row_age[first_free] > m.frozen_wake_age) ++first_free;
+  d.force_impulse += d.loads.total_force * d.dt;
+  d.force_time += d.dt;
+  // Rows older than the frozen- or far-wake age (a prefix: row 0 is the oldest) keep their
+  // place (frozen) or move with the far-wake velocity (convected); either way their own
+  // velocity is not summed.
+  const int first_free = detail::far_wake_node_rows(m, d);
   const std::size_t first = static_cast<std::size_t>(first_free) * n1;
 
   // Velocity of every free wake node.
@@ -103,7 +183,8 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
     double *x = P.x.data() + first, *y = P.y.data() + first, *z = P.z.data() + first;
     double *u = P.u.data() + first, *v = P.v.data() + first, *w = P.w.data() + first;
     detail::build_wake_segments(m, d, detail::WakeView::Wake);
-    if (m.wake_sum == WakeSum::Tree && d.wake_segments.size() >= m.tree_min_segments) {
+    detail::add_far_wake_velocity(d, x, y, z, n, u, v, w);  // the far wake by the tree, if so
+    if (m.wake_sum == WakeSum::Tree && !m.far_wake_by_tree() && d.wake_segments.size() >= m.tree_min_segments) {
       d.wake_tree.build(d.wake_segments, m.core, tree_parameters(m.tree_tolerance));
       d.wake_tree.add_induced_velocity(x, y, z, n, u, v, w);
     } else if (d.wake_segments.size() > 0) {
@@ -122,6 +203,18 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
   }
   const double dt = d.dt;
   const Eigen::Vector3d& V = d.free_stream;
+  if (m.far_wake_age > 0.0 && first_free > 0) {
+    const Eigen::Vector3d vf = far_wake_velocity(m, d);
+    d.far_tree_shift += dt * vf;  // the tree's rows move with the rest of the far wake
+    for (std::size_t k = 0; k < first; ++k) {
+      P.x[k] += dt * vf.x();
+      P.y[k] += dt * vf.y();
+      P.z[k] += dt * vf.z();
+      d.wake_prev_u[k] = vf.x();
+      d.wake_prev_v[k] = vf.y();
+      d.wake_prev_w[k] = vf.z();
+    }
+  }
   for (int r = first_free; r <= d.wake_rows; ++r) {
     const bool ab2 = m.wake_integrator == WakeIntegrator::AdamsBashforth2 && d.wake_row_has_prev[r];
     for (std::size_t j = 0; j < n1; ++j) {

@@ -1,5 +1,6 @@
 #include "pipeline/app/fsi_setup.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -47,9 +48,21 @@ double mean_speed_at_radius(const mbd::WingKinematics& kinematics, double radius
   return sum / samples;
 }
 
+double stroke_disk_area(const mbd::WingKinematics& kinematics, double span, int samples) {
+  const double period = 1.0 / kinematics.frequency;
+  std::vector<Eigen::Vector3d> axis(static_cast<std::size_t>(samples));
+  for (int i = 0; i < samples; ++i)
+    axis[i] = kinematics.pose(period * i / samples).rotation * Eigen::Vector3d::UnitY();
+  double stroke = 0.0;  // Φ [rad]
+  for (int i = 0; i < samples; ++i)
+    for (int j = i + 1; j < samples; ++j)
+      stroke = std::max(stroke, std::atan2(axis[i].cross(axis[j]).norm(), axis[i].dot(axis[j])));
+  return 0.5 * stroke * span * span;
+}
+
 namespace {
 
-uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, std::int64_t steps) {
+uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double span, std::int64_t steps) {
   uvlm::VortexLatticeModel m;
   m.chordwise = c.numerics.chordwise_panels;
   m.spanwise = c.numerics.spanwise_panels;
@@ -67,6 +80,8 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, std::in
   m.core_growth.kinematic_viscosity = c.numerics.kinematic_viscosity;
   m.near_wing_core = c.numerics.near_wing_core * mean_chord;
   m.frozen_wake_age = c.numerics.frozen_wake_cycles / c.kinematics.frequency;
+  m.far_wake_age = c.numerics.far_wake_cycles / c.kinematics.frequency;
+  if (m.far_wake_age > 0.0) m.far_wake_disk_area = stroke_disk_area(c.kinematics, span);
   m.wake_sum = c.numerics.wake_sum;
   m.tree_tolerance = c.numerics.tree_tolerance;
   return m;
@@ -179,7 +194,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
     g.chordwise_spacing = c.numerics.chordwise_spacing;
     g.spanwise_spacing = c.numerics.spanwise_spacing;
     s.grid = uvlm::make_planform_grid(s.wing->outline, g);
-    m.lattice = lattice_model(c, p.mean_chord, s.steps);
+    m.lattice = lattice_model(c, p.mean_chord, p.span, s.steps);
     m.attachment = fsi::attach_wing(m.chain, s.grid->nodes, g.chordwise, g.spanwise);
     s.reference.area = p.area;
     s.reference.span = p.span;

@@ -98,7 +98,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
   t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
                   "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "core_model",
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
-                  "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles",
+                  "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
                   "wake_sum", "tree_tolerance", "max_coupling_iterations", "coupling_tolerance",
                   "rho_infinity"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
@@ -126,6 +126,9 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.kinematic_viscosity = t->get_double("kinematic_viscosity", n.kinematic_viscosity, Bounds::positive());
   n.near_wing_core = t->get_double("near_wing_core", n.near_wing_core, Bounds::closed(0.0, 1.0));
   n.frozen_wake_cycles = t->get_double("frozen_wake_cycles", n.frozen_wake_cycles, Bounds::non_negative());
+  n.far_wake_cycles = t->get_double("far_wake_cycles", n.far_wake_cycles, Bounds::non_negative());
+  if (n.far_wake_cycles > 0.0 && n.frozen_wake_cycles > 0.0)
+    t->fail("far_wake_cycles", "a far wake is either frozen (frozen_wake_cycles) or convected (far_wake_cycles), not both");
   n.wake_sum = t->get_choice("wake_sum", kWakeSumNames, std::optional(n.wake_sum));
   n.tree_tolerance = t->get_double("tree_tolerance", n.tree_tolerance, Bounds{1e-8, 1e-2, false, false});
   n.max_coupling_iterations =

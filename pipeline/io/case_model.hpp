@@ -87,6 +87,7 @@ struct Case {
     double kinematic_viscosity = 1.5e-5;    ///< ν of the air for the core growth [m²/s]
     double near_wing_core = 0.0;            ///< min. core of the wake seen from the wing, fraction of the mean chord
     double frozen_wake_cycles = 0.0;        ///< wake older than this many cycles stops moving; 0 = never
+    double far_wake_cycles = 0.0;           ///< wake older than this many cycles moves with momentum theory's velocity; 0 = never
     uvlm::WakeSum wake_sum = uvlm::WakeSum::Direct;  ///< wake velocity sum: "direct" | "tree"
     double tree_tolerance = 1e-4;           ///< relative error of the tree code's velocities
     int max_coupling_iterations = 50;       ///< strong-coupling sub-iterations per step

@@ -84,7 +84,9 @@ std::string describe_case(const Case& c) {
                           : "constant",
             n.near_wing_core,
             n.frozen_wake_cycles > 0 ? ("frozen after " + line_number(n.frozen_wake_cycles) + " cycles").c_str()
-                                     : "never frozen");
+            : n.far_wake_cycles > 0
+                ? ("convected by momentum theory after " + line_number(n.far_wake_cycles) + " cycles").c_str()
+                : "free throughout");
   s += line("  wake velocity sum      %s",
             n.wake_sum == uvlm::WakeSum::Tree
                 ? ("tree code, relative error " + line_number(n.tree_tolerance)).c_str()

@@ -14,7 +14,7 @@ namespace flapsim::io {
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
 // (Case::Structure::bodies_line, initial_angles_line, initial_rates_line and Wing::warnings locate messages and change no result.)
-static_assert(sizeof(Case) == 1296, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1304, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 208, "wings::Wing changed: add the new field to canonical_inputs()");
@@ -135,6 +135,7 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.kinematic_viscosity", n.kinematic_viscosity);
   out.line("numerics.near_wing_core", n.near_wing_core);
   out.line("numerics.frozen_wake_cycles", n.frozen_wake_cycles);
+  out.line("numerics.far_wake_cycles", n.far_wake_cycles);
   out.line("numerics.wake_sum", static_cast<int>(n.wake_sum));
   out.line("numerics.tree_tolerance", n.tree_tolerance);
   out.line("numerics.max_coupling_iterations", n.max_coupling_iterations);

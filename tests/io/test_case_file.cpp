@@ -124,6 +124,9 @@ TEST(CaseFileErrors, EachProblemNamesLineAndKey) {
       {kHead + "[numerics]\nsteps_per_cycle = -5\n", 9, "numerics.steps_per_cycle"},
       {kHead + "[numerics]\ncore_model = \"vatistas\"\n", 9, "numerics.core_model"},
       {kHead + "[numerics]\ncylces = 3\n", 9, "numerics.cylces"},
+      {kHead + "[numerics]\nfrozen_wake_cycles = 2\nfar_wake_cycles = -1\n", 10, "numerics.far_wake_cycles"},
+      // a far wake is frozen or convected, not both
+      {kHead + "[numerics]\nfrozen_wake_cycles = 2\nfar_wake_cycles = 1\n", 10, "numerics.far_wake_cycles"},
       {"length_unit = \"furlong\"\n" + kHead, 1, "length_unit"},
       {"air = \"vacuum\"\n" + kHead, 1, "air"},
       {kHead + "[[markers]]\nbody = 2\npoint = [0, 0, 0]\n", 9, "markers[0].body"},
