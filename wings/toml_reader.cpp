@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "wings/input_error.hpp"
+#include "wings/toml_preflight.hpp"
 
 namespace flapsim::wings {
 
@@ -89,77 +90,8 @@ std::optional<double> length_unit_in_metres(std::string_view unit) {
 TomlTable::TomlTable(std::shared_ptr<Document> doc, const void* table, std::string path, int line)
     : doc_(std::move(doc)), table_(table), path_(std::move(path)), line_(line > 0 ? line : 1) {}
 
-namespace {
-
-/// toml++ 3.x asserts (debug builds; undefined behaviour with NDEBUG) on a table header
-/// whose name starts with a character that cannot start a key, e.g. "[=", "[[=" or
-/// "[[[1]]]" (upstream: marzer/tomlplusplus pull request 301). Such lines are refused
-/// before parsing: a line starting with "[[[", or with "[" or "[[" and then a character
-/// that neither starts a key nor can follow "[" in an array value continued on that line.
-void refuse_headers_toml_cannot_parse(std::string_view text, const std::string& name) {
-  int line = 1;
-  for (std::size_t i = 0; i < text.size(); ++line) {
-    const std::size_t end = std::min(text.find('\n', i), text.size());
-    std::size_t k = i;
-    while (k < end && (text[k] == ' ' || text[k] == '\t')) ++k;
-    if (k < end && text[k] == '[') {
-      std::size_t j = k + 1;
-      if (j < end && text[j] == '[') ++j;
-      if (j < end && text[j] == '[' && j == k + 2)
-        throw InputError(name, line, "", "TOML syntax error: \"[[[\" (a table header needs a name)");
-      while (j < end && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r')) ++j;
-      if (j == end && j == k + 2)  // "[[" alone: an array-of-tables header without a name
-        throw InputError(name, line, "", "TOML syntax error: \"[[\" (a table header needs a name)");
-      if (j < end) {
-        const unsigned char c = static_cast<unsigned char>(text[j]);
-        const bool ok = std::isalnum(c) || c == '_' || c == '-' || c == '"' || c == '\'' || c == ']' || c == '[' ||
-                        c == '+' || c == '{' || c == '#' || c == '\r';
-        if (!ok)
-          throw InputError(name, line, "", std::string("TOML syntax error: a table header cannot start with '") +
-                                               static_cast<char>(c) + "'");
-      }
-    }
-    i = end + 1;
-  }
-  // toml++ 3.x also asserts in parse_value() on a '}' where an array element is expected
-  // ("[}", "[1, }"): outside strings and comments, a '}' right after '[' or ','
-  // (whitespace between) is refused. It is invalid TOML in every case.
-  char previous = '\n';
-  line = 1;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '\n') ++line;
-    if (c == '#') {  // comment to the end of the line
-      while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
-      continue;
-    }
-    if (c == '"' || c == '\'') {  // a string (multi-line ones too), escapes in basic strings
-      const bool triple = text.substr(i, 3) == std::string(3, c);
-      std::size_t j = i + (triple ? 3 : 1);
-      while (j < text.size()) {
-        if (c == '"' && text[j] == '\\') {
-          j += 2;
-          continue;
-        }
-        if (triple ? text.substr(j, 3) == std::string(3, c) : text[j] == c) break;
-        if (!triple && text[j] == '\n') break;
-        if (text[j] == '\n') ++line;
-        ++j;
-      }
-      i = std::min(text.size(), j + (triple ? 3 : 1)) - 1;
-      previous = c;
-      continue;
-    }
-    if (c == '}' && (previous == '[' || previous == ','))
-      throw InputError(name, line, "", "TOML syntax error: '}' where a value is expected");
-    if (c != ' ' && c != '\t' && c != '\r' && c != '\n') previous = c;
-  }
-}
-
-}  // namespace
-
 TomlTable parse_toml_string(std::string_view text, const std::string& name) {
-  refuse_headers_toml_cannot_parse(text, name);
+  refuse_toml_the_parser_cannot_read_safely(text, name);
   auto doc = std::make_shared<TomlTable::Document>();
   doc->file = name;
   try {
@@ -179,7 +111,10 @@ void TomlTable::apply_overrides(const std::vector<std::pair<std::string, std::st
     toml::table parsed;
     try {
       const std::string text = "v = " + value_text;
+      refuse_toml_the_parser_cannot_read_safely(text, "override");
       parsed = toml::parse(std::string_view(text), std::string_view("override"));
+    } catch (const InputError& e) {
+      throw InputError(file(), 0, dotted, "override: \"" + value_text + "\" is not a TOML value (" + e.message() + ")");
     } catch (const toml::parse_error& e) {
       throw InputError(file(), 0, dotted,
                        "override: \"" + value_text + "\" is not a TOML value (" +

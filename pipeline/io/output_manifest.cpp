@@ -2,11 +2,14 @@
 
 #include <toml++/toml.h>
 
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <system_error>
 
 #include "pipeline/io/atomic_file.hpp"
+#include "wings/input_error.hpp"
+#include "wings/toml_preflight.hpp"
 
 namespace flapsim::io {
 
@@ -20,17 +23,36 @@ struct Entry {
 };
 using Manifest = std::map<std::string, Entry>;
 
+/// True for a name one of the commands writes. A manifest is a file in the output folder
+/// that anyone may edit: the names it lists are removed on a rerun, so only these are
+/// taken (never "../x", "/x" or "*").
+bool is_known_output(const std::string& name) {
+  for (const char* command : {"mesh", "modes", "reduce", "run"})
+    for (const auto& o : command_outputs(command))
+      if (o == name) return true;
+  return false;
+}
+
 Manifest read_manifest(const fs::path& dir) {
   Manifest m;
   const fs::path file = dir / kManifestName;
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return m;
   toml::table t;
+  const auto unreadable = [&](const std::string& why) {
+    return OutputError(file, "the folder's manifest is not readable (" + why + "); remove it or choose another folder");
+  };
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw unreadable("cannot read the file");
   try {
-    t = toml::parse_file(file.string());
+    wings::refuse_toml_the_parser_cannot_read_safely(text.str(), file.string());
+    t = toml::parse(text.str(), file.string());
+  } catch (const InputError& e) {
+    throw unreadable(e.message());
   } catch (const toml::parse_error& e) {
-    throw OutputError(file, "the folder's manifest is not readable (" + std::string(e.description()) +
-                                "); remove it or choose another folder");
+    throw unreadable(std::string(e.description()));
   }
   for (auto&& [command, node] : t) {
     const toml::table* entry = node.as_table();
@@ -39,7 +61,7 @@ Manifest read_manifest(const fs::path& dir) {
     e.status = entry->get("status") ? entry->get("status")->value_or(std::string()) : std::string();
     if (const toml::array* outputs = entry->get_as<toml::array>("outputs"))
       for (const auto& o : *outputs)
-        if (o.is_string()) e.outputs.push_back(*o.value<std::string>());
+        if (o.is_string() && is_known_output(*o.value<std::string>())) e.outputs.push_back(*o.value<std::string>());
     m[std::string(command.str())] = std::move(e);
   }
   return m;
@@ -164,6 +186,28 @@ void record_command_status(const fs::path& dir, const std::string& command, cons
   m[command].status = status;
   if (m[command].outputs.empty()) m[command].outputs = command_outputs(command);
   write_manifest(dir, m);
+}
+
+OutputFolderClaim::OutputFolderClaim(fs::path dir, std::string command)
+    : dir_(std::move(dir)), command_(std::move(command)) {}
+
+OutputFolderClaim::~OutputFolderClaim() {
+  if (!open_) return;
+  try {
+    record_command_status(dir_, command_, "failed");
+  } catch (...) {
+    // The folder cannot be written any more: the error that ended the command is reported.
+  }
+}
+
+void OutputFolderClaim::claim(bool force) {
+  claim_output_folder(dir_, command_, force);
+  open_ = true;
+}
+
+void OutputFolderClaim::finish(const std::string& status) {
+  open_ = false;
+  record_command_status(dir_, command_, status);
 }
 
 }  // namespace flapsim::io

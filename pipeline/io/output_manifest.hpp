@@ -37,4 +37,26 @@ void claim_output_folder(const std::filesystem::path& dir, const std::string& co
 void record_command_status(const std::filesystem::path& dir, const std::string& command,
                            const std::string& status);
 
+/// \brief A command's claim on its folder, from claim() to finish(): a command that leaves
+/// by an exception after claiming (an output error, a numerical failure, anything) records
+/// "failed" as it goes, so the manifest never keeps "running" for a command that ended.
+/// That last record is best effort (on a full disk the manifest may stay as it was).
+class OutputFolderClaim {
+ public:
+  OutputFolderClaim(std::filesystem::path dir, std::string command);
+  ~OutputFolderClaim();
+  OutputFolderClaim(const OutputFolderClaim&) = delete;
+  OutputFolderClaim& operator=(const OutputFolderClaim&) = delete;
+
+  /// claim_output_folder(dir, command, force).
+  void claim(bool force);
+  /// record_command_status with "complete", "failed" or "interrupted"; ends the claim.
+  void finish(const std::string& status);
+
+ private:
+  std::filesystem::path dir_;
+  std::string command_;
+  bool open_ = false;
+};
+
 }  // namespace flapsim::io

@@ -5,7 +5,7 @@
 // ENOSPC. Limits in 512-byte blocks (dash's ulimit -f); for each command several limits
 // (the smallest fail the first files, the largest fit everything): the exit status is 0 (everything fitted)
 // or 4 (output error), at least one limit gives 4, and no file under a final name is
-// truncated.
+// truncated; the manifest does not say "running".
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -32,6 +32,11 @@ void expect_exit_4_and_nothing_truncated(const std::string& name, const std::str
     const auto bad = truncated_files(dir, out);
     EXPECT_TRUE(bad.empty()) << name << ": limit " << blocks << ": truncated " << bad.front();
     EXPECT_TRUE(dir.temporaries().empty()) << name << ": limit " << blocks << ": " << dir.temporaries().front();
+    // A command that ended by an output error says so in the folder's manifest (when the
+    // manifest could still be written), never "running".
+    std::ifstream manifest(out / "flapsim_outputs.toml");
+    const std::string text((std::istreambuf_iterator<char>(manifest)), {});
+    EXPECT_EQ(text.find("'running'"), std::string::npos) << name << ": limit " << blocks << ":\n" << text;
   }
   EXPECT_GT(failures, 0) << name << ": no limit was small enough to fail a write";
 }

@@ -1,7 +1,8 @@
 // A mutation fuzzer over every loader of user files: wing files, case files, chain files
 // and outline CSV files. From valid seeds, a fixed-seed generator makes mutants (bytes
 // flipped, inserted, deleted; lines dropped, doubled, swapped; numbers replaced by edge
-// values: 0, denormals, 2^53 + 1, INT64_MIN, 1e308, inf, nan, ...; truncation). Each
+// values: 0, denormals, 2^53 + 1, INT64_MIN, 1e308, inf, nan, ...; pieces of TOML
+// structure inserted; truncation). Each
 // mutant must either load or be refused with flapsim::InputError. The test fails on
 //  - a crash (the process dies; under `make test-asan` also any sanitizer report),
 //  - any other exception (std::bad_alloc, std::out_of_range, ...),
@@ -67,6 +68,12 @@ const std::vector<std::string> kEdgeValues = {
     "9223372036854775807", "-9223372036854775808", "2147483647", "2147483648", "-2147483649", "4294967296",
     "65536", "1000000", "100000000", "3.0", "1e-6", "0.5", "\"x\"", "[]", "[1, 2]", "true", "{}"};
 
+// Pieces of TOML's structure (headers, multi-line strings, escapes, non-ASCII text, a date
+// and a space) where toml++ 3.x has assertions and undefined behaviour of its own
+// (wings/toml_preflight.hpp).
+const std::vector<std::string> kPieces = {"\n[", "\n[[", "[#", "]]", "\"\"\"", "'''", "\\\n ", "\xC2\xA7", "\xE2\x80\xA8",
+                                          "\xEF\xAC\xB0", " 0", "1979-05-27 ", "}", "\r\n", "{a = [\n"};
+
 class Mutator {
  public:
   explicit Mutator(std::uint64_t seed) : rng_(seed) {}
@@ -114,7 +121,7 @@ class Mutator {
 
   std::string once(std::string s) {
     if (s.empty()) return kEdgeValues[pick(kEdgeValues.size())];
-    switch (pick(10)) {
+    switch (pick(11)) {
       case 0: case 1: case 2: return replace_number(s);
       case 3: s[pick(s.size())] = static_cast<char>(pick(256)); return s;   // byte
       case 4: s.insert(pick(s.size() + 1), 1, "[]{}=,\"'.#\n\\ 0e-"[pick(17)]); return s;
@@ -122,6 +129,7 @@ class Mutator {
       case 6: { auto ls = lines(s); if (ls.empty()) return s; ls.erase(ls.begin() + pick(ls.size())); return join(ls); }
       case 7: { auto ls = lines(s); if (ls.empty()) return s; const auto i = pick(ls.size()); ls.insert(ls.begin() + i, ls[i]); return join(ls); }
       case 8: { auto ls = lines(s); if (ls.size() < 2) return s; std::swap(ls[pick(ls.size())], ls[pick(ls.size())]); return join(ls); }
+      case 9: s.insert(pick(s.size() + 1), kPieces[pick(kPieces.size())]); return s;  // TOML structure
       default: s.resize(pick(s.size())); return s;  // truncated file
     }
   }

@@ -104,3 +104,64 @@ TEST(OutputManifest, AnUnwritableFolderIsAnOutputError) {
 }
 
 }  // namespace
+
+namespace {
+
+// The manifest is a file in the output folder, open to anyone who can write there. The
+// names it lists are removed on a rerun, so only names a command writes are taken: a
+// manifest listing "../victim.txt", an absolute path or "*" removes none of them.
+TEST(OutputManifest, AManifestNamingOtherFilesRemovesNoneOfThem) {
+  flapsim::test::ScratchDir dir("manifest_tampered");
+  const fs::path out = dir / "out";
+  const fs::path victim = dir / "victim.txt", absolute = dir / "absolute.txt";
+  touch(victim);
+  touch(absolute);
+  touch(out / "notes.txt");
+  touch(out / "history.csv");
+  std::ofstream(out / io::kManifestName) << "[run]\nstatus = \"complete\"\noutputs = [\"../victim.txt\", \""
+                                         << absolute.string() << "\", \"*\", \"history.csv\"]\n";
+  io::claim_output_folder(out, "run", false);
+  EXPECT_TRUE(fs::exists(victim));
+  EXPECT_TRUE(fs::exists(absolute));
+  EXPECT_TRUE(fs::exists(out / "notes.txt"));
+  EXPECT_FALSE(fs::exists(out / "history.csv"));  // run's own: removed as before
+}
+
+// A manifest that toml++ 3.x would abort on (a header without a name) is an output error
+// naming the manifest, like any unreadable manifest.
+TEST(OutputManifest, AManifestTomlppCannotReadSafelyIsAnOutputError) {
+  flapsim::test::ScratchDir dir("manifest_broken");
+  std::ofstream(dir / io::kManifestName) << "[run]\nstatus = \"complete\"\n[#x]\n";
+  try {
+    io::claim_output_folder(dir.path(), "run", false);
+    ADD_FAILURE() << "a broken manifest was read";
+  } catch (const io::OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find(io::kManifestName), std::string::npos) << e.what();
+  }
+}
+
+// A command that leaves by an exception after claiming its folder records "failed" (the
+// issue's case: an output error in a run left "running" for good).
+TEST(OutputManifest, ACommandEndedByAnExceptionIsRecordedFailed) {
+  flapsim::test::ScratchDir dir("manifest_failed");
+  const auto status = [&] {
+    std::ifstream in(dir / io::kManifestName);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  try {
+    io::OutputFolderClaim claim(dir.path(), "run");
+    claim.claim(false);
+    EXPECT_NE(status().find("'running'"), std::string::npos) << status();
+    throw io::OutputError(dir / "history.csv", "no space left on device");
+  } catch (const io::OutputError&) {
+  }
+  EXPECT_NE(status().find("'failed'"), std::string::npos) << status();
+  {
+    io::OutputFolderClaim claim(dir.path(), "run");
+    claim.claim(false);
+    claim.finish("complete");
+  }
+  EXPECT_NE(status().find("'complete'"), std::string::npos) << status();
+}
+
+}  // namespace

@@ -32,7 +32,8 @@ void run_mesh(const MeshArgs& args) {
   print_wing_warnings(wing);
   // 2. The output folder, writable before any work (else exit 4 naming it).
   const std::filesystem::path dir(args.out_dir);
-  io::claim_output_folder(dir, "mesh", args.force);
+  io::OutputFolderClaim claim(dir, "mesh");
+  claim.claim(args.force);
   // 3. Mesh; gmsh saves the mesh to a staging name (with the .msh extension gmsh needs);
   // it is published as mesh.msh only if complete (gmsh does not report a failed write:
   // the file must end with its $EndElements section), flushed to disk and renamed.
@@ -57,7 +58,7 @@ void run_mesh(const MeshArgs& args) {
   io::write_vtu(dir / "mesh.vtu", io::fem_unstructured_mesh(mesh, wing.clamp_y));
   std::printf("%s: %d nodes, %zu membrane triangles, %zu vein elements (%zu veins)\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), mesh.vein_names.size());
-  io::record_command_status(dir, "mesh", "complete");
+  claim.finish("complete");
   std::printf("wrote %s, %s\n", (dir / "mesh.msh").string().c_str(), (dir / "mesh.vtu").string().c_str());
 }
 

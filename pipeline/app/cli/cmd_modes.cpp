@@ -66,7 +66,8 @@ void run_modes(const ModesArgs& args) {
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
   print_wing_warnings(wing);
   const std::filesystem::path dir(args.out_dir);
-  io::claim_output_folder(dir, "modes", args.force);
+  io::OutputFolderClaim claim(dir, "modes");
+  claim.claim(args.force);
   // 2. Mesh, K and M, root clamp; a failing solver is a numerical failure (exit 3).
   const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
   const fem::Mesh& mesh = fem.model.mesh;
@@ -89,7 +90,7 @@ void run_modes(const ModesArgs& args) {
   // 6. Outputs (each atomic).
   io::write_modes_csv(dir / "modes.csv", m.modes, labels);
   io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, labels, results);
-  io::record_command_status(dir, "modes", "complete");
+  claim.finish("complete");
 
   std::printf("%s: %d nodes, %zu triangles, %zu vein elements, FEM mass %.4f mg\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), fem.system.total_mass * 1e6);

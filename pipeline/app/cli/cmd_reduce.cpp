@@ -48,7 +48,8 @@ void run_reduce(const ReduceOptions& o) {
             : o.axis == "fitted" ? reduction::AxisChoice::fitted
                                  : reduction::AxisChoice::flexural;
   const fs::path dir(o.out_dir);
-  io::claim_output_folder(dir, "reduce", o.force);  // unwritable: exit 4 before any work
+  io::OutputFolderClaim claim(dir, "reduce");
+  claim.claim(o.force);  // unwritable: exit 4 before any work
   // A failing solve in the FEM or the reduction is a numerical failure (exit 3).
   const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
   const fem::WingModes modes = app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, o.modes); });
@@ -68,7 +69,7 @@ void run_reduce(const ReduceOptions& o) {
   io::write_reduction_vtk(dir, beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
   io::write_reduction_summary(dir / "summary.json", beam, lc, cmp);
-  io::record_command_status(dir, "reduce", "complete");
+  claim.finish("complete");
   std::cerr << "reduce: " << o.bodies << " bodies; first bending " << cmp.bending.chain_hz << " Hz (FEM "
             << cmp.bending.fem_hz << " Hz, " << io::format_percent(cmp.bending.relative_error) << "), first torsion "
             << cmp.torsion.chain_hz << " Hz (FEM " << cmp.torsion.fem_hz << " Hz, "

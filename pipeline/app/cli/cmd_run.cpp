@@ -13,7 +13,6 @@
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/app/run_results.hpp"
-#include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
 
@@ -44,25 +43,23 @@ void run_command(const RunArgs& a) {
   if (a.quiet) options.progress = app::ProgressLine::Mode::quiet;
   // Before any file is written: the size of the run (printed before a long one, refused
   // if its memory cannot fit), then the folder claimed for this run (output_manifest.hpp).
+  io::OutputFolderClaim claim(options.output_dir, "run");  // "failed" if the run ends by an exception
   options.before_start = [&](const app::FsiSetup& setup) {
     const app::RunEstimate estimate = app::estimate_run(c, setup.model.chain.num_bodies());
     if (!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9))
       std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
     app::refuse_if_it_cannot_fit(estimate, c);
-    io::claim_output_folder(options.output_dir, "run", a.force);
+    claim.claim(a.force);
   };
   app::install_interrupt_handlers();  // SIGINT/SIGTERM: finish the step, exit 130/143
   app::RunResults results;
   try {
     results = app::run_case(c, options);
-  } catch (const NumericalFailure&) {
-    io::record_command_status(options.output_dir, "run", "failed");
-    throw;
   } catch (const app::Interrupted&) {
-    io::record_command_status(options.output_dir, "run", "interrupted");
+    claim.finish("interrupted");
     throw;
   }
-  io::record_command_status(options.output_dir, "run", "complete");
+  claim.finish("complete");
   if (!a.quiet) {
     std::fputs(app::run_report(results).c_str(), stdout);
     std::printf("outputs in %s (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd, run.pvsm)\n",
