@@ -39,6 +39,25 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
     return rc0_2 / rc2;
   };
   const auto& age = d.wake_row_age;
+  // Segments of the wake rings: spanwise along node rows q ∈ [q0, q1), direction j → j+1
+  // (rear side of ring q minus front side of ring q−1); streamwise along column j from node
+  // row r+1 (upstream) to row r for r ∈ [r0, r1) (root side of ring (r, j) minus tip side
+  // of ring (r, j−1)); each with the core ratio core_ratio(g, age).
+  auto push_rings = [&](auto& out, int q0, int q1, int r0, int r1, auto core_ratio) {
+    for (int q = q0; q < q1; ++q)
+      for (int j = 0; j < ns; ++j) {
+        const std::size_t a = static_cast<std::size_t>(q) * n1 + j;
+        const double g = G(q, j) - G(q - 1, j);
+        out.push(P.x[a], P.y[a], P.z[a], P.x[a + 1], P.y[a + 1], P.z[a + 1], g, core_ratio(g, age[q]));
+      }
+    for (int r = r0; r < r1; ++r)
+      for (int j = 0; j <= ns; ++j) {
+        const std::size_t a = static_cast<std::size_t>(r + 1) * n1 + j;
+        const std::size_t b = static_cast<std::size_t>(r) * n1 + j;
+        const double g = G(r, j) - G(r, j - 1);
+        out.push(P.x[a], P.y[a], P.z[a], P.x[b], P.y[b], P.z[b], g, core_ratio(g, 0.5 * (age[r] + age[r + 1])));
+      }
+  };
   d.wake_segments.clear();
   if (W == 0) return;
   // Convected far wake by the tree: the far wake moves as a whole (far_wake_velocity), so
@@ -55,20 +74,7 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
     if (stale && F > 1) {
       d.far_wake_segments.clear();
       auto far_ratio = [&](double g, double a) { return rc0_2 / grown_core_radius2(m.core_growth, rc0, a, g); };
-      for (int q = 0; q < F; ++q)
-        for (int j = 0; j < ns; ++j) {
-          const std::size_t a = static_cast<std::size_t>(q) * n1 + j;
-          const double g = G(q, j) - G(q - 1, j);
-          d.far_wake_segments.push(P.x[a], P.y[a], P.z[a], P.x[a + 1], P.y[a + 1], P.z[a + 1], g, far_ratio(g, age[q]));
-        }
-      for (int r = 0; r + 1 < F; ++r)
-        for (int j = 0; j <= ns; ++j) {
-          const std::size_t a = static_cast<std::size_t>(r + 1) * n1 + j;
-          const std::size_t b = static_cast<std::size_t>(r) * n1 + j;
-          const double g = G(r, j) - G(r, j - 1);
-          d.far_wake_segments.push(P.x[a], P.y[a], P.z[a], P.x[b], P.y[b], P.z[b], g,
-                                   far_ratio(g, 0.5 * (age[r] + age[r + 1])));
-        }
+      push_rings(d.far_wake_segments, 0, F, 0, F - 1, far_ratio);
       d.wake_tree.build(d.far_wake_segments, m.core, tree_parameters(m.tree_tolerance));
       d.far_tree_rows = F;
       d.far_tree_step = d.accepted_steps;
@@ -79,25 +85,8 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
     }
     T = d.far_tree_rows;
   }
-  // The rest, by the direct sum. Spanwise, node row q, direction j → j+1: rear side of
-  // ring q minus front side of ring q−1.
-  for (int q = T; q <= W; ++q)
-    for (int j = 0; j < ns; ++j) {
-      const std::size_t a = static_cast<std::size_t>(q) * n1 + j;
-      const double g = G(q, j) - G(q - 1, j);
-      d.wake_segments.push(P.x[a], P.y[a], P.z[a], P.x[a + 1], P.y[a + 1], P.z[a + 1], g,
-                           ratio(g, age[q]));
-    }
-  // Streamwise, column j, from row r+1 (upstream) to row r: root side of ring (r, j) minus
-  // tip side of ring (r, j−1).
-  for (int r = std::max(T - 1, 0); r < W; ++r)
-    for (int j = 0; j <= ns; ++j) {
-      const std::size_t a = static_cast<std::size_t>(r + 1) * n1 + j;
-      const std::size_t b = static_cast<std::size_t>(r) * n1 + j;
-      const double g = G(r, j) - G(r, j - 1);
-      d.wake_segments.push(P.x[a], P.y[a], P.z[a], P.x[b], P.y[b], P.z[b], g,
-                           ratio(g, 0.5 * (age[r] + age[r + 1])));
-    }
+  // The rest, by the direct sum.
+  push_rings(d.wake_segments, T, W + 1, std::max(T - 1, 0), W, ratio);
 }
 
 void add_far_wake_velocity(VortexLatticeData& d, const double* x, const double* y, const double* z,
