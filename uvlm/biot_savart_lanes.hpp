@@ -13,6 +13,7 @@
 #include "uvlm/vortex_core.hpp"
 
 #include <algorithm>
+#include <immintrin.h>
 #include <cstddef>
 
 namespace flapsim::uvlm::detail {
@@ -100,6 +101,30 @@ template <CoreModel M, class T>
   if constexpr (M != CoreModel::LambOseen) k *= core_factor<M>(x);
 }
 
+/// True if one of the kChunk<T> values at x (64-byte aligned) is below u: one vector
+/// compare and a mask test (a reduction in the loop would cost a chain of shuffles).
+/// Only decides which chunks get the core factor, never the arithmetic.
+[[gnu::always_inline]] inline bool any_below(const double* x, double u) {
+#if FLAPSIM_KERNEL_VECTOR_BYTES == 64 && defined(__AVX512F__)
+  return _mm512_cmp_pd_mask(_mm512_load_pd(x), _mm512_set1_pd(u), _CMP_LT_OQ) != 0;
+#elif FLAPSIM_KERNEL_VECTOR_BYTES == 32 && defined(__AVX__)
+  return _mm256_movemask_pd(_mm256_cmp_pd(_mm256_load_pd(x), _mm256_set1_pd(u), _CMP_LT_OQ)) != 0;
+#else
+  static_assert(kChunk<double> == 2);
+  return _mm_movemask_pd(_mm_cmplt_pd(_mm_load_pd(x), _mm_set1_pd(u))) != 0;
+#endif
+}
+[[gnu::always_inline]] inline bool any_below(const float* x, float u) {
+#if FLAPSIM_KERNEL_VECTOR_BYTES == 64 && defined(__AVX512F__)
+  return _mm512_cmp_ps_mask(_mm512_load_ps(x), _mm512_set1_ps(u), _CMP_LT_OQ) != 0;
+#elif FLAPSIM_KERNEL_VECTOR_BYTES == 32 && defined(__AVX__)
+  return _mm256_movemask_ps(_mm256_cmp_ps(_mm256_load_ps(x), _mm256_set1_ps(u), _CMP_LT_OQ)) != 0;
+#else
+  static_assert(kChunk<float> == 4);
+  return _mm_movemask_ps(_mm_cmplt_ps(_mm_load_ps(x), _mm_set1_ps(u))) != 0;
+#endif
+}
+
 /// Blocks of kLanes<T> segments taken together by lane_blocks (the scratch arrays,
 /// 5 × NP × kBatchBlocks × kLanes<T> values, stay in the L1 cache).
 inline constexpr int kBatchBlocks = 16;
@@ -153,11 +178,8 @@ template <CoreModel M, int NP, class T>
           czs[q + j] = cz;
         }
         if constexpr (M == CoreModel::LambOseen) {
-          T nearest = xx[q];
-#pragma omp simd reduction(min : nearest)
-          for (int j = 0; j < W; ++j) nearest = xx[q + j] < nearest ? xx[q + j] : nearest;
           need[needed] = q;
-          needed += nearest < kLambOseenUnity<T> ? 1 : 0;
+          needed += any_below(xx + q, kLambOseenUnity<T>) ? 1 : 0;
         }
       }
     }
