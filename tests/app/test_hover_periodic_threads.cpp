@@ -4,8 +4,10 @@
 // case), the convected far wake by the direct sum, and the whole free wake by the tree
 // code. Each wake-velocity sum runs in parallel over its target points (the direct sum once
 // points x segments > 1e5, the tree always) and adds every point's terms in a fixed order,
-// so the thread count may not change a single bit (docs/performance.md, "Threads").
-// About 3 CPU seconds.
+// so the thread count may not change a single bit (docs/performance.md,
+// "Portable build, runtime-dispatched kernels").
+// Adding one ulp to one wake node's velocity per step when more than one thread runs makes
+// the far-wake-by-tree variant fail (checked). About 5 CPU seconds.
 #include <gtest/gtest.h>
 
 #include <fstream>
