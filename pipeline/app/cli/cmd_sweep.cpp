@@ -1,6 +1,7 @@
 // flapsim sweep CASE.toml (--vary KEY=VALUES ... | --cases TABLE.csv) -o DIR [--chain FILE]
 //   [--spring-scale S] [--jobs N] [--vtk-every N] [--force] [--quiet]
 #include "pipeline/app/cli/commands.hpp"
+#include "pipeline/app/cli/option_checks.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -133,12 +134,12 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option(
          "-j,--jobs", args->jobs,
          "cases run at the same time per process/rank (default: --threads if given, else the cores, shared by the ranks on a machine)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, kMaxThreads));
   cmd->add_option("--vtk-every", args->vtk_every, "ParaView series per case every N steps (default 0: none)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, 100000000));
   cmd->add_option("--spring-scale", args->spring_scale,
                   "joint-spring factor for every case (as flapsim run --spring-scale)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("--force", args->force, "run every case, also those an earlier run of the sweep completed");
   cmd->add_flag("-q,--quiet", args->quiet, "no progress lines and no table on stdout");
   cmd->callback([args] { sweep_command(*args); });
