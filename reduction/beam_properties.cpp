@@ -70,11 +70,12 @@ BeamProperties extract_beam_properties(const ClampedWingAnalysis& analysis, int 
   if (last_ok < 0) {
     // The loaded tip zone grows until it holds enough nodes: on a coarse mesh it reaches
     // the root and leaves no cell to measure the beam in.
-    char buf[400];
+    char buf[480];
     std::snprintf(buf, sizeof buf,
                   "the mesh is too coarse along the span for the beam: the loaded tip zone and its "
                   "disturbed band reach from the tip at %.2f mm to %.2f mm along the axis, over the whole "
-                  "flexible span from %.2f mm (mean element edge %.2f mm); use a smaller [mesh] element_size",
+                  "flexible span from %.2f mm (mean element edge %.2f mm); use a smaller [mesh] element_size "
+                  "(or clamp_y, if the clamp leaves little of the wing free)",
                   beam.s_tip * 1e3, z_start * 1e3, beam.s_root * 1e3, analysis.element_size() * 1e3);
     throw ReductionFailure(buf);
   }

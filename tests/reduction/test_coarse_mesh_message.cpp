@@ -2,7 +2,8 @@
 // of a 30 × 10 mm film with element_size = 8 mm stopped with "reduction:
 // extract_beam_properties: every cell lies in the tip zone" (exit 3), which names neither
 // the cause nor the key. Now a ReductionFailure (exit 3) says the mesh is too coarse along
-// the span and names [mesh] element_size; a finer mesh of the same wing reduces.
+// the span and names [mesh] element_size; a finer mesh of the same wing reduces. Likewise a
+// root clamp that reaches the loaded tip zone names clamp_y.
 
 #include <gtest/gtest.h>
 
@@ -41,6 +42,20 @@ TEST(CoarseMesh, TooCoarseAMeshIsNamedWithTheKeyToChange) {
     const std::string what = e.what();
     EXPECT_NE(what.find("too coarse"), std::string::npos) << what;
     EXPECT_NE(what.find("element_size"), std::string::npos) << what;
+  }
+}
+
+TEST(CoarseMesh, AClampReachingTheTipZoneNamesClampY) {
+  // clamp_y 29 mm of a 30 mm wing. Before: "reduction: reduction: the tip zone reaches the
+  // clamped root; the wing is too short" (the wing is not short; the clamp is long).
+  wings::Wing w = film_plate(1.5e-3);
+  w.clamp_y = 29e-3;
+  const fem::WingFem fem = fem::build_wing_fem(w);
+  try {
+    const ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp);
+    FAIL() << "a wing clamped up to 1 mm from its tip was analysed";
+  } catch (const ReductionFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("clamp_y"), std::string::npos) << e.what();
   }
 }
 
