@@ -6,6 +6,8 @@
 //   "Value 0 not in range 0.000000 to 179769313486231570814527423731704356798070567525844996…"
 //   (DBL_MAX written out, 300 digits). The exit status stays 1 (a malformed option is a
 //   usage error, test_threads_option.cpp).
+// - A chain that misses the FEM's first modes by more than 10 % gets a warning. Before:
+//   only the numbers on the summary line (an aspect-ratio-0.17 plate: -24 % / -26 %, exit 0).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -82,6 +84,21 @@ TEST(CliMessages, AnOptionValueOutOfRangeGetsAShortMessage) {
   EXPECT_NE(s.err.find("'-1' is not a number > 0"), std::string::npos) << s.err;
   EXPECT_LT(s.err.size(), 200u) << s.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+TEST(CliMessages, AChainThatMissesTheFemIsWarnedAbout) {
+  // The MAV film wing with 4 bodies: first bending +144 % (docs/reduction.md, "Film wings").
+  ScratchDir dir("message_mismatch");
+  const Result mav = run_capturing_stderr(dir, "reduce " + kSourceDir + "/wings/mav_film_wing.toml --bodies 4 --modes 6 -o " +
+                                                   (dir / "mav").string());
+  EXPECT_EQ(mav.status, 0);
+  EXPECT_NE(mav.err.find("warning: the chain's first bending mode differs from the FEM's by +1"), std::string::npos)
+      << mav.err;
+  // A plate the chain follows (-3 % / -1 %): no warning.
+  const Result tiny = run_capturing_stderr(dir, "reduce " + kSourceDir + "/tests/data/valid_tiny_wing.toml --bodies 2 "
+                                                    "--modes 4 -o " + (dir / "tiny").string());
+  EXPECT_EQ(tiny.status, 0);
+  EXPECT_EQ(tiny.err.find("warning"), std::string::npos) << tiny.err;
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ struct RunArgs {
 };
 
 void run_command(const RunArgs& a) {
-  const io::Case c = io::load_case_file(a.case_file);
+  const io::Case c = print_case_warnings(io::load_case_file(a.case_file));
   check_chain_option(a.chain_file);
   app::RunOptions options;
   // The case name is never a path: the default folder is out/ plus the name made safe.

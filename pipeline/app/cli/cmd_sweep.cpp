@@ -18,6 +18,7 @@
 #include "pipeline/app/sweep/case_table.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
+#include "pipeline/io/case_file.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::cli {
@@ -79,6 +80,7 @@ void sweep_command(const SweepArgs& a) {
     plan = sweep::grid_plan(variations);
   }
   check_chain_option(a.chain_file);
+  print_case_warnings(io::load_case_file(a.case_file));  // of the file as written; each case is checked again
   sweep::SweepOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;
