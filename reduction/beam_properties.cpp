@@ -9,6 +9,8 @@ BeamProperties extract_beam_properties(const ClampedWingAnalysis& analysis, int 
   if (num_stations < 2) throw std::invalid_argument("extract_beam_properties: at least 2 stations");
   BeamProperties beam;
   beam.axis = analysis.axis();
+  beam.fitted_axis_rejected = analysis.fitted_axis_rejected();
+  beam.fitted_psi_rejected = analysis.fitted_psi_rejected();
   beam.s_root = analysis.s_root();
   beam.s_tip = analysis.s_tip();
   const AxisFrame& ax = beam.axis;

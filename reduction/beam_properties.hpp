@@ -28,6 +28,10 @@ struct BeamStation {
 
 /// The beam.
 struct BeamProperties {
+  /// The default fitted axis was rejected (it left the planform) and the flexural axis
+  /// taken instead (ClampedWingAnalysis::fitted_axis_rejected); its angle [rad].
+  bool fitted_axis_rejected = false;
+  double fitted_psi_rejected = 0.0;
   AxisFrame axis;
   double s_root = 0.0, s_tip = 0.0;   ///< flexible span along the axis [m]
   double total_mass = 0.0;            ///< FEM mass Φᵀ M Φ [kg]

@@ -73,6 +73,24 @@ ClampedWingAnalysis::ClampedWingAnalysis(const fem::Mesh& mesh, const fem::Assem
     const double psi = den > 0.0 ? std::atan(num / den) : 0.0;
     setup_frame(AxisFrame{psi}, zone_length);
     solve_load_cases();
+    // The cells' elastic axes of the ψ = 0 pass mean nothing when sections cut along y are
+    // not the wing's sections: on a strongly swept wing they twist as they bend and their
+    // n_ea scatter far outside the wing. A chain axis that leaves the planform puts the
+    // bodies beside the wing; then the axis is the line through the pivot and the
+    // sections' mid-chords, the wing's own geometric axis (docs/reduction.md).
+    if (axis_inside_fraction() < kFittedAxisMinInside) {
+      fitted_axis_rejected_ = true;
+      fitted_psi_rejected_ = psi;
+      setup_frame(AxisFrame{0.0}, zone_length);
+      const ChordExtents c = chord_extents(kAxisCheckCells);
+      double num_m = 0.0, den_m = 0.0;
+      for (std::size_t k = 0; k < c.s.size(); ++k) {
+        num_m += c.s[k] * 0.5 * (c.lo[k] + c.hi[k]);
+        den_m += c.s[k] * c.s[k];
+      }
+      setup_frame(AxisFrame{den_m > 0.0 ? std::atan(num_m / den_m) : 0.0}, zone_length);
+      solve_load_cases();
+    }
   } else if (options.axis == AxisChoice::flexural) {
     // Stations on the span (ψ = 0) frame, each over its whole strip; the flexural axis
     // of each from the station compliance (n_fa = C_φw / C_φφ, joint_stiffness.hpp);
@@ -96,6 +114,39 @@ ClampedWingAnalysis::ClampedWingAnalysis(const fem::Mesh& mesh, const fem::Assem
     setup_frame(f, zone_length);
     solve_load_cases();
   }
+}
+
+ClampedWingAnalysis::ChordExtents ClampedWingAnalysis::chord_extents(int cells) const {
+  // Equal cells of the flexible span in the current frame; in each, the chordwise extent
+  // of its nodes (cells without a node are left out).
+  ChordExtents out;
+  const double a = (s_tip_ - s_root_) / cells;
+  if (!(a > 0.0)) return out;
+  std::vector<double> lo(static_cast<std::size_t>(cells), 1e300), hi(static_cast<std::size_t>(cells), -1e300);
+  for (Eigen::Index i = 0; i < s_.size(); ++i) {
+    if (s_[i] < s_root_) continue;
+    const auto k = static_cast<std::size_t>(std::min(cells - 1, static_cast<int>((s_[i] - s_root_) / a)));
+    lo[k] = std::min(lo[k], n_[i]);
+    hi[k] = std::max(hi[k], n_[i]);
+  }
+  for (std::size_t k = 0; k < lo.size(); ++k) {
+    if (lo[k] > hi[k]) continue;
+    out.s.push_back(s_root_ + a * (static_cast<double>(k) + 0.5));
+    out.lo.push_back(lo[k]);
+    out.hi.push_back(hi[k]);
+  }
+  return out;
+}
+
+double ClampedWingAnalysis::axis_inside_fraction() const {
+  // The axis is inside a cell when n = 0 lies in its nodes' chordwise extent, widened by
+  // one element size (an axis along a straight edge vein is inside).
+  const ChordExtents c = chord_extents(kAxisCheckCells);
+  if (c.s.empty()) return 1.0;
+  std::size_t inside = 0;
+  for (std::size_t k = 0; k < c.s.size(); ++k)
+    if (c.lo[k] - element_size_ <= 0.0 && 0.0 <= c.hi[k] + element_size_) ++inside;
+  return static_cast<double>(inside) / static_cast<double>(c.s.size());
 }
 
 void ClampedWingAnalysis::setup_frame(const AxisFrame& axis, double tip_zone_length) {

@@ -104,8 +104,29 @@ class ClampedWingAnalysis {
   /// tip forces, for cells between the sections of \p sampler (size N_sections − 1) [m].
   std::vector<double> cell_elastic_axis(const SectionSampler& sampler) const;
 
+  /// \brief Share of the flexible span's cells (20, in the current frame) whose nodes'
+  /// chordwise extent, widened by one element size, contains the axis (n = 0) [-].
+  double axis_inside_fraction() const;
+
+  /// True when AxisChoice::fitted was asked for but its line left the planform (the
+  /// cells' elastic axes of the ψ = 0 pass scatter outside the wing, as on a strongly
+  /// swept wing): the axis is then the least-squares line through the pivot and the
+  /// mid-chords of 20 cells cut along y (the wing's geometric axis).
+  bool fitted_axis_rejected() const { return fitted_axis_rejected_; }
+  /// The rejected fitted angle [rad] (when fitted_axis_rejected()).
+  double fitted_psi_rejected() const { return fitted_psi_rejected_; }
+
+  /// The fitted axis must lie inside the planform over at least this share of the span.
+  static constexpr double kFittedAxisMinInside = 0.8;
+  /// Cells of the planform check and of the mid-chord line.
+  static constexpr int kAxisCheckCells = 20;
+
  private:
   void setup_frame(const AxisFrame& axis, double tip_zone_length);
+  struct ChordExtents {
+    std::vector<double> s, lo, hi;  ///< cell centre, smallest and largest n of its nodes [m]
+  };
+  ChordExtents chord_extents(int cells) const;
   void solve_load_cases();
 
   const fem::AssembledSystem* system_ = nullptr;
@@ -120,6 +141,8 @@ class ClampedWingAnalysis {
   TipZone zone_;
   double s_root_ = 0.0, s_tip_ = 0.0, n1_ = 0.0, n2_ = 0.0, moment_ = 0.0, force_ = 0.0;
   double element_size_ = 0.0;
+  bool fitted_axis_rejected_ = false;
+  double fitted_psi_rejected_ = 0.0;
   std::vector<TipWrench> wrenches_;
   Eigen::MatrixXd uz_;
 };

@@ -1,6 +1,7 @@
 /// \file biot_savart_avx512.cpp
 /// \brief The Biot–Savart kernel for AVX-512F (compiled with -mavx512f, called only where the CPU has it).
 /// Same arithmetic as the other variants (biot_savart_lanes.hpp); flags in uvlm/CMakeLists.txt.
+#define FLAPSIM_KERNEL_VECTOR_BYTES 64
 #include "uvlm/biot_savart_lanes.hpp"
 
 namespace flapsim::uvlm::detail {

@@ -12,6 +12,8 @@
 #include "uvlm/biot_savart_kernel.hpp"
 #include "uvlm/vortex_core.hpp"
 
+#include <algorithm>
+#include <immintrin.h>
 #include <cstddef>
 
 namespace flapsim::uvlm::detail {
@@ -45,6 +47,14 @@ struct PointRangeCall {
 /// Lanes of the partial sums: a whole AVX-512 register in either precision.
 template <class T> inline constexpr int kLanes = 64 / static_cast<int>(sizeof(T));
 
+#ifndef FLAPSIM_KERNEL_VECTOR_BYTES  // set by each variant file; SSE2 otherwise
+#define FLAPSIM_KERNEL_VECTOR_BYTES 16
+#endif
+/// Lanes handled by one loop: one vector register of the variant's instruction set
+/// (kLanes<T> at once would need more registers than AVX2 has). Does not change the
+/// arithmetic of any lane.
+template <class T> inline constexpr int kChunk = FLAPSIM_KERNEL_VECTOR_BYTES / static_cast<int>(sizeof(T));
+
 // Cost below which threads are not worth starting (point–segment interactions).
 inline constexpr std::size_t kParallelThreshold = 100000;
 
@@ -70,7 +80,7 @@ struct TailBlock {  // the last, partial block of segments, padded with Γ = 0
 /// apply or skip per block), x = h²/r_c,k² the core factor's argument.
 template <CoreModel M, class T>
 [[gnu::always_inline]] inline void pair_terms(T r1x, T r1y, T r1z, T s1, T n1, T r2x, T r2y,
-                                              T r2z, T s2, T n2, T g, T il, T cr, T inv_rc2,
+                                              T r2z, T s2, T n2, T g, T il_rc, T cr_rc,
                                               T& k, T& x, T& cx, T& cy, T& cz) {
   cx = r1y * r2z - r1z * r2y;
   cy = r1z * r2x - r1x * r2z;
@@ -80,8 +90,8 @@ template <CoreModel M, class T>
   // P projects beyond an end exactly when r1·r2 exceeds the smaller of |r1|², |r2|²;
   // h² is then that end's |r|², and h²/r_c,k² = |r_end|² (r_c/r_c,k)²/r_c².
   const T near2 = s1 < s2 ? s1 : s2;
-  const T x_end = near2 * (inv_rc2 * cr);  // both evaluated: no masked loads
-  const T x_line = cross2 * (inv_rc2 * il);
+  const T x_end = near2 * cr_rc;  // both evaluated: no masked loads
+  const T x_line = cross2 * il_rc;
   x = dot12 > near2 ? x_end : x_line;
   const T p12 = n1 * n2;
   const bool between = dot12 < T(0);
@@ -91,51 +101,105 @@ template <CoreModel M, class T>
   if constexpr (M != CoreModel::LambOseen) k *= core_factor<M>(x);
 }
 
-/// NP target points against one block of kLanes<T> segments, added to the points' lane
-/// sums su/sv/sw[NP × kLanes<T>]: the segment_velocity formula (biot_savart_kernel.hpp) in
-/// three steps, (1) everything but the core factor, (2) the core factor, skipped for the
-/// Lamb–Oseen model when every pair of the block has x ≥ kLambOseenUnity<T> (where it is 1
-/// exactly, so skipping does not change a bit), (3) the sums. Several points per block
-/// give the processor independent work while one waits for a square root or division;
-/// each point's arithmetic is the same whatever NP.
+/// True if one of the kChunk<T> values at x (64-byte aligned) is below u: one vector
+/// compare and a mask test (a reduction in the loop would cost a chain of shuffles).
+/// Only decides which chunks get the core factor, never the arithmetic.
+[[gnu::always_inline]] inline bool any_below(const double* x, double u) {
+#if FLAPSIM_KERNEL_VECTOR_BYTES == 64 && defined(__AVX512F__)
+  return _mm512_cmp_pd_mask(_mm512_load_pd(x), _mm512_set1_pd(u), _CMP_LT_OQ) != 0;
+#elif FLAPSIM_KERNEL_VECTOR_BYTES == 32 && defined(__AVX__)
+  return _mm256_movemask_pd(_mm256_cmp_pd(_mm256_load_pd(x), _mm256_set1_pd(u), _CMP_LT_OQ)) != 0;
+#else
+  static_assert(kChunk<double> == 2);
+  return _mm_movemask_pd(_mm_cmplt_pd(_mm_load_pd(x), _mm_set1_pd(u))) != 0;
+#endif
+}
+[[gnu::always_inline]] inline bool any_below(const float* x, float u) {
+#if FLAPSIM_KERNEL_VECTOR_BYTES == 64 && defined(__AVX512F__)
+  return _mm512_cmp_ps_mask(_mm512_load_ps(x), _mm512_set1_ps(u), _CMP_LT_OQ) != 0;
+#elif FLAPSIM_KERNEL_VECTOR_BYTES == 32 && defined(__AVX__)
+  return _mm256_movemask_ps(_mm256_cmp_ps(_mm256_load_ps(x), _mm256_set1_ps(u), _CMP_LT_OQ)) != 0;
+#else
+  static_assert(kChunk<float> == 4);
+  return _mm_movemask_ps(_mm_cmplt_ps(_mm_load_ps(x), _mm_set1_ps(u))) != 0;
+#endif
+}
+
+/// Blocks of kLanes<T> segments taken together by lane_blocks (the scratch arrays,
+/// 5 × NP × kBatchBlocks × kLanes<T> values, stay in the L1 cache).
+inline constexpr int kBatchBlocks = 16;
+
+/// NP target points against `blocks` (≤ kBatchBlocks) consecutive blocks of kLanes<T>
+/// segments, added to the points' lane sums su/sv/sw[NP × kLanes<T>] (segment k of a block
+/// into lane k; blocks in order): the segment_velocity formula (biot_savart_kernel.hpp) in
+/// three passes, (1) everything but the core factor, for every pair, (2) the Lamb–Oseen core
+/// factor, only for the vector-wide chunks of pairs that have one with x < kLambOseenUnity<T>
+/// (elsewhere it is 1 exactly, so skipping it does not change a bit; the chunks are listed
+/// in pass 1 without a branch, so a sparse, irregular need costs no mispredicted branches),
+/// (3) the sums. Several points per block give the processor independent work while one
+/// waits for a square root or division; each pair's arithmetic, and the order of each
+/// lane's sum, are the same whatever NP, the vector width and the batching.
 template <CoreModel M, int NP, class T>
-[[gnu::always_inline]] inline void lane_block(const Lanes<T>& s, const T* px, const T* py,
-                                              const T* pz, T inv_rc2, T* __restrict su,
-                                              T* __restrict sv, T* __restrict sw) {
+[[gnu::always_inline]] inline void lane_blocks(const Lanes<T>& s, int blocks, const T* px,
+                                               const T* py, const T* pz, T inv_rc2,
+                                               T* __restrict su, T* __restrict sv,
+                                               T* __restrict sw) {
   constexpr int L = kLanes<T>;
-  alignas(64) T kk[NP * L], xx[NP * L], cxs[NP * L], cys[NP * L], czs[NP * L];
-  for (int p = 0; p < NP; ++p) {
+  constexpr int W = kChunk<T>;
+  constexpr int N = kBatchBlocks * NP * L;
+  alignas(64) T kk[N], xx[N], cxs[N], cys[N], czs[N];
+  [[maybe_unused]] int need[N / W];
+  [[maybe_unused]] int needed = 0;
+  for (int b = 0; b < blocks; ++b)
+    for (int h = 0; h < L; h += W) {
+      const int o = b * L + h;  // first segment of the chunk
+      alignas(64) T il[W], cr[W];
 #pragma omp simd
-    for (int l = 0; l < L; ++l) {
-      const T r1x = px[p] - s.ax[l], r1y = py[p] - s.ay[l], r1z = pz[p] - s.az[l];
-      const T r2x = px[p] - s.bx[l], r2y = py[p] - s.by[l], r2z = pz[p] - s.bz[l];
-      const T s1 = r1x * r1x + r1y * r1y + r1z * r1z;
-      const T s2 = r2x * r2x + r2y * r2y + r2z * r2z;
-      T k, x, cx, cy, cz;
-      pair_terms<M>(r1x, r1y, r1z, s1, std::sqrt(s1), r2x, r2y, r2z, s2, std::sqrt(s2), s.g[l],
-                    s.il[l], s.cr[l], inv_rc2, k, x, cx, cy, cz);
-      kk[p * L + l] = k;
-      xx[p * L + l] = x;
-      cxs[p * L + l] = cx;
-      cys[p * L + l] = cy;
-      czs[p * L + l] = cz;
+      for (int j = 0; j < W; ++j) {
+        il[j] = inv_rc2 * s.il[o + j];
+        cr[j] = inv_rc2 * s.cr[o + j];
+      }
+      for (int p = 0; p < NP; ++p) {
+        const int q = (b * NP + p) * L + h;  // first pair of the chunk in the scratch arrays
+#pragma omp simd
+        for (int j = 0; j < W; ++j) {
+          const int l = o + j;
+          const T r1x = px[p] - s.ax[l], r1y = py[p] - s.ay[l], r1z = pz[p] - s.az[l];
+          const T r2x = px[p] - s.bx[l], r2y = py[p] - s.by[l], r2z = pz[p] - s.bz[l];
+          const T s1 = r1x * r1x + r1y * r1y + r1z * r1z;
+          const T s2 = r2x * r2x + r2y * r2y + r2z * r2z;
+          T k, x, cx, cy, cz;
+          pair_terms<M>(r1x, r1y, r1z, s1, std::sqrt(s1), r2x, r2y, r2z, s2, std::sqrt(s2), s.g[l],
+                        il[j], cr[j], k, x, cx, cy, cz);
+          kk[q + j] = k;
+          xx[q + j] = x;
+          cxs[q + j] = cx;
+          cys[q + j] = cy;
+          czs[q + j] = cz;
+        }
+        if constexpr (M == CoreModel::LambOseen) {
+          need[needed] = q;
+          needed += any_below(xx + q, kLambOseenUnity<T>) ? 1 : 0;
+        }
+      }
     }
-  }
   if constexpr (M == CoreModel::LambOseen) {
-    T nearest = xx[0];
-#pragma omp simd reduction(min : nearest)
-    for (int l = 0; l < NP * L; ++l) nearest = xx[l] < nearest ? xx[l] : nearest;
-    if (nearest < kLambOseenUnity<T>) {
+    for (int i = 0; i < needed; ++i) {
+      const int q = need[i];
 #pragma omp simd
-      for (int l = 0; l < NP * L; ++l) kk[l] *= core_factor<M>(xx[l]);
+      for (int j = 0; j < W; ++j) kk[q + j] *= core_factor<M>(xx[q + j]);
     }
   }
+  for (int b = 0; b < blocks; ++b)
+    for (int h = 0; h < NP * L; h += W) {
+      const int q = b * NP * L + h;
 #pragma omp simd
-  for (int l = 0; l < NP * L; ++l) {
-    su[l] += kk[l] * cxs[l];
-    sv[l] += kk[l] * cys[l];
-    sw[l] += kk[l] * czs[l];
-  }
+      for (int j = 0; j < W; ++j) {
+        su[h + j] += kk[q + j] * cxs[q + j];
+        sv[h + j] += kk[q + j] * cys[q + j];
+        sw[h + j] += kk[q + j] * czs[q + j];
+      }
+    }
 }
 
 template <class T>
@@ -156,9 +220,11 @@ void points_against_segments(const KernelCall<T>& c, const TailBlock<T>& tail, s
     pz[p] = static_cast<T>(c.z[i0 + p]);
   }
   alignas(64) T su[NP * L] = {}, sv[NP * L] = {}, sw[NP * L] = {};
-  for (std::size_t k = 0; k < full; k += L)
-    lane_block<M, NP>(lanes_at(c, k), px, py, pz, c.inv_rc2, su, sv, sw);
-  if (full < c.segments) lane_block<M, NP>(tail.lanes(), px, py, pz, c.inv_rc2, su, sv, sw);
+  for (std::size_t k = 0; k < full; k += kBatchBlocks * L) {
+    const int blocks = static_cast<int>(std::min<std::size_t>(kBatchBlocks, (full - k) / L));
+    lane_blocks<M, NP>(lanes_at(c, k), blocks, px, py, pz, c.inv_rc2, su, sv, sw);
+  }
+  if (full < c.segments) lane_blocks<M, NP>(tail.lanes(), 1, px, py, pz, c.inv_rc2, su, sv, sw);
   for (int p = 0; p < NP; ++p) {
     T tu = 0, tv = 0, tw = 0;
     for (int l = 0; l < L; ++l) {
@@ -198,10 +264,12 @@ void sum_over_segments(const KernelCall<T>& c) {
 /// point's lane sums su/sv/sw[kLanes<double>] (the tree code's direct part).
 template <CoreModel M>
 void point_range(const PointRangeCall& c) {
-  for (std::size_t k = 0; k < c.count; k += kLanes<double>) {
+  constexpr std::size_t L = kLanes<double>;
+  for (std::size_t k = 0; k < c.count; k += kBatchBlocks * L) {
     const Lanes<double> s{c.ax + k, c.ay + k, c.az + k, c.bx + k, c.by + k, c.bz + k,
                           c.gamma + k, c.inv_length2 + k, c.core_ratio2 + k};
-    lane_block<M, 1>(s, &c.px, &c.py, &c.pz, c.inv_rc2, c.su, c.sv, c.sw);
+    const int blocks = static_cast<int>(std::min<std::size_t>(kBatchBlocks, (c.count - k) / L));
+    lane_blocks<M, 1>(s, blocks, &c.px, &c.py, &c.pz, c.inv_rc2, c.su, c.sv, c.sw);
   }
 }
 

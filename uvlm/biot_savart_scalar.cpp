@@ -1,6 +1,7 @@
 /// \file biot_savart_scalar.cpp
 /// \brief The Biot–Savart kernel for baseline x86-64 (SSE2): runs on every x86-64 CPU.
 /// Same arithmetic as the other variants (biot_savart_lanes.hpp); flags in uvlm/CMakeLists.txt.
+#define FLAPSIM_KERNEL_VECTOR_BYTES 16
 #include "uvlm/biot_savart_lanes.hpp"
 
 namespace flapsim::uvlm::detail {

@@ -35,7 +35,8 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
       progress.update(data.step, data.state.time);
     }
     // SIGINT/SIGTERM: the step is complete and recorded; stop here (interruption.hpp).
-    throw_if_interrupted("after step " + std::to_string(data.step) + " of " + std::to_string(setup.steps));
+    // After the last step the run is complete: it ends as such.
+    if (n + 1 < setup.steps) throw_if_interrupted("after step " + std::to_string(data.step) + " of " + std::to_string(setup.steps));
   }
 }
 

@@ -1,5 +1,7 @@
 #include "pipeline/app/structure_source.hpp"
 
+#include <cstdio>
+
 #include "fem/wing_fem.hpp"
 #include "pipeline/io/chain_file.hpp"
 #include "pipeline/app/fsi_setup.hpp"
@@ -44,6 +46,11 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
     const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp, {});
     try {
       s.chain = reduction::lump_into_chain(analysis, c.structure.bodies).chain;
+      if (analysis.fitted_axis_rejected())
+        std::fprintf(stderr,
+                     "flapsim: note: the fitted axis of %s left the planform (a swept wing?); the chain's axis is "
+                     "the line through the pivot and the sections' mid-chords (docs/reduction.md)\n",
+                     c.wing_file.c_str());
     } catch (const reduction::ReductionFailure& e) {
       throw NumericalFailure("cannot reduce the wing " + c.wing_file + " to " +
                              std::to_string(c.structure.bodies) + " bodies: " + e.what());

@@ -126,15 +126,29 @@ std::string format_percent(double x) {
   return buf;
 }
 
+std::string fitted_axis_note(const reduction::BeamProperties& beam) {
+  if (!beam.fitted_axis_rejected) return "";
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "Note: the fitted axis (psi = %.4f rad) left the planform over most of the span (the elastic "
+                "axes of sections cut along y scatter outside the wing, as on a swept wing); the chain's axis is "
+                "the line through the pivot and the sections' mid-chords instead.",
+                beam.fitted_psi_rejected);
+  return buf;
+}
+
 std::string reduction_report(const std::string& wing_file, const reduction::BeamProperties& beam,
                              const reduction::LumpedChain& lc, const reduction::ChainFemComparison& c) {
   std::ostringstream s;
   s << "# Reduction of " << wing_file << "\n\n"
-    << "Method: docs/reduction.md. Flexural axis through the pivot at psi = " << beam.axis.psi
-    << " rad from y_W; flexible span " << beam.s_root << " … " << beam.s_tip << " m; "
+    << "Method: docs/reduction.md. Flexural axis at psi = " << beam.axis.psi << " rad from y_W"
+    << (beam.axis.offset != 0.0 ? ", " + std::to_string(beam.axis.offset * 1e3) + " mm from the pivot"
+                                : std::string(" through the pivot"))
+    << "; flexible span " << beam.s_root << " … " << beam.s_tip << " m; "
     << beam.stations.size() << " beam stations; " << lc.chain.num_bodies() << " bodies of "
     << lc.body_length << " m, root " << (lc.chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid")
     << ".\n\n"
+    << (beam.fitted_axis_rejected ? fitted_axis_note(beam) + "\n\n" : std::string())
     << "FEM mass " << c.fem_mass << " kg, strip sum " << beam.strip_mass_sum << " kg, chain mass "
     << c.chain_mass << " kg. Mean elastic axis from the tip twists: n = " << beam.n_ea_tip
     << " m from the axis. Bending–torsion coupling (twist under the unit moment / twist under "
@@ -211,6 +225,8 @@ void write_reduction_summary(const fs::path& path, const reduction::BeamProperti
   j.set("num_bodies", c.num_bodies);
   j.set("num_stations", static_cast<int>(beam.stations.size()));
   j.set("axis_psi_rad", beam.axis.psi);
+  j.set("axis_offset_m", beam.axis.offset);
+  j.set("fitted_axis_rejected", beam.fitted_axis_rejected);
   j.set("root", lc.chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid");
   j.set("welded_bodies", lc.chain.root == mbd::RootAttachment::sprung ? 0 : lc.chain.welded_bodies);
   j.set("springs", lc.springs == reduction::SpringModel::full ? "full" : "diagonal");

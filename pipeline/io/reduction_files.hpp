@@ -42,6 +42,10 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
                              const reduction::LumpedChain& chain,
                              const reduction::ChainFemComparison& comparison);
 
+/// \brief The report's note when the fitted axis left the planform and the flexural axis
+/// was taken instead (reduction::BeamProperties::fitted_axis_rejected); else "".
+std::string fitted_axis_note(const reduction::BeamProperties& beam);
+
 /// \brief summary.json of the reduction: sizes, masses, the chain-against-FEM numbers.
 /// \throws OutputError
 void write_reduction_summary(const std::filesystem::path& path, const reduction::BeamProperties& beam,

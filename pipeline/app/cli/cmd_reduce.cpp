@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "fem/wing_fem.hpp"
@@ -70,10 +71,19 @@ void run_reduce(const ReduceOptions& o) {
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
   io::write_reduction_summary(dir / "summary.json", beam, lc, cmp);
   claim.finish("complete");
-  std::cerr << "reduce: " << o.bodies << " bodies; first bending " << cmp.bending.chain_hz << " Hz (FEM "
-            << cmp.bending.fem_hz << " Hz, " << io::format_percent(cmp.bending.relative_error) << "), first torsion "
-            << cmp.torsion.chain_hz << " Hz (FEM " << cmp.torsion.fem_hz << " Hz, "
-            << io::format_percent(cmp.torsion.relative_error) << "); wrote " << dir.string() << "\n";
+  if (beam.fitted_axis_rejected) std::cerr << "reduce: " << io::fitted_axis_note(beam) << "\n";
+  // A kind the FEM's first modes do not show (too few --modes) is said, not printed as 0 Hz.
+  auto match = [](const char* kind, const reduction::ModeMatch& m) {
+    std::ostringstream t;
+    if (m.found)
+      t << "first " << kind << " " << m.chain_hz << " Hz (FEM " << m.fem_hz << " Hz, "
+        << io::format_percent(m.relative_error) << ")";
+    else
+      t << "no " << kind << " mode among the FEM modes computed (--modes)";
+    return t.str();
+  };
+  std::cerr << "reduce: " << o.bodies << " bodies; " << match("bending", cmp.bending) << ", "
+            << match("torsion", cmp.torsion) << "; wrote " << dir.string() << "\n";
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/app/run_results.hpp"
+#include "pipeline/app/interruption.hpp"
 #include "pipeline/app/sweep/case_table.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
@@ -85,6 +86,7 @@ void sweep_command(const SweepArgs& a) {
   options.vtk_every = a.vtk_every;
   options.force = a.force;
   options.quiet = a.quiet;
+  app::install_interrupt_handlers();  // SIGINT/SIGTERM: the running cases finish their step, exit 130/143
   const sweep::SweepReport report = sweep::run_sweep(a.case_file, plan, options);
   if (!report.root || a.quiet) return;
   print_table(plan, report);
@@ -116,7 +118,9 @@ void add_sweep_command(CLI::App& app) {
       "DIR/sweep.csv lists the values, mean lift, mean CL, tip rotation phase and lag, coupling\n"
       "iterations, wall time, folder, status, message, rank and host of each case (a failed case\n"
       "does not stop the others). Run again, it keeps the cases whose summary.json matches their\n"
-      "inputs and runs the rest (--force: all). See docs/sweeps.md.");
+      "inputs and runs the rest (--force: all). SIGINT/SIGTERM: the cases under way finish their\n"
+      "step and write summary.json (\"interrupted\"), no other case starts; exit 130/143.\n"
+      "See docs/sweeps.md.");
   cmd->add_option("case", args->case_file, "case file (TOML)")->required();
   cmd->add_option("--vary", args->vary,
                   "KEY=VALUES, e.g. kinematics.rotation_phase=-0.10:0.05:0.10; repeat for a grid")

@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <optional>
 #include <thread>
 
 #include "pipeline/app/fsi_run.hpp"
+#include "pipeline/app/interruption.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
@@ -24,6 +26,9 @@ namespace flapsim::sweep {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The outcome of a case that an interruption kept from starting.
+constexpr const char* kNotRun = "not run";
 
 // Rank 0 checks every case; the others learn whether to go on (and stop as it does).
 void share_check(const MpiWorld& world, bool ok) {
@@ -45,7 +50,7 @@ int default_threads(const MpiWorld& world, std::size_t cases) {
 void progress_line(std::size_t finished, std::size_t total, const SweepRow& r, double wall) {
   std::fprintf(stderr, "sweep %zu/%zu  %s  mean lift %.5g N  CL %.3f  %s%s%s  (rank %d, %.1f s)\n", finished,
                total, describe(r.point).c_str(), r.outcome.results.number("mean_lift_N"),
-               r.outcome.results.number("mean_CL"), r.outcome.status == "ok" ? "ok" : "FAILED",
+               r.outcome.results.number("mean_CL"), r.outcome.status == "ok" ? "ok" : r.outcome.status == "interrupted" ? "INTERRUPTED" : "FAILED",
                r.outcome.message.empty() ? "" : ": ", r.outcome.message.c_str(), r.outcome.rank, wall);
 }
 
@@ -110,6 +115,12 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
     CaseOutcome o;
     o.rank = world.rank();
     o.host = host;
+    // After SIGINT/SIGTERM no case starts (interruption.hpp); the cases under way finish
+    // their step, write summary.json ("interrupted") and end below.
+    if (app::pending_interrupt() != 0) {
+      o.status = kNotRun;
+      return o;
+    }
     const auto t0 = Clock::now();
     try {
       // Rank 0 resolved every case; the others resolve the ones they are given.
@@ -126,6 +137,9 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       o.overhead_s = std::chrono::duration<double>(Clock::now() - t0).count();  // resolving
       o.results = app::run_case(r.c, ro);
       o.status = "ok";
+    } catch (const app::Interrupted& e) {
+      o.status = "interrupted";
+      o.message = e.what();  // its summary.json says how far it got; a rerun of the sweep runs it again
     } catch (const NumericalFailure& e) {
       o.status = "failed";
       o.message = e.what();  // no results in the table (nan): its summary.json tells how far it got
@@ -141,6 +155,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
   std::size_t finished = report.kept;
   auto last_write = Clock::now();
   const CaseDone done = [&](std::size_t i, CaseOutcome&& o) {
+    if (o.status == kNotRun) return;  // interrupted before it started: not in the table
     rows[i].outcome = std::move(o);
     rows[i].done = true;
     ++finished;
@@ -155,6 +170,15 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
   report.stats = schedule_cases(world, todo, report.threads, run, done);
   if (report.root) write_sweep_table(options.output_dir / "sweep.csv", plan.keys, rows);
   report.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  if (const int signal = app::pending_interrupt(); signal != 0) {
+    const auto complete = static_cast<std::size_t>(
+        std::count_if(rows.begin(), rows.end(), [](const SweepRow& r) { return r.done && r.outcome.status != "interrupted"; }));
+    throw app::Interrupted(signal, std::string("sweep interrupted by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                                       (report.root ? ": " + std::to_string(complete) + " of " + std::to_string(n) +
+                                                          " cases finished (" + (options.output_dir / "sweep.csv").string() +
+                                                          "); the same command again runs the rest"
+                                                    : std::string()));
+  }
   return report;
 }
 
