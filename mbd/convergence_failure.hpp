@@ -18,11 +18,14 @@ class ConvergenceFailure : public std::runtime_error {
   ConvergenceFailure(const std::string& what, long step, double time)
       : std::runtime_error("multibody step " + std::to_string(step) +
                            " (t = " + std::to_string(time) + " s): " + what),
-        step_(step), time_(time) {}
+        reason_(what), step_(step), time_(time) {}
+  /// What went wrong, without the step and time (for a caller that names them itself).
+  const std::string& reason() const { return reason_; }
   long step() const { return step_; }
   double time() const { return time_; }
 
  private:
+  std::string reason_;
   long step_;
   double time_;
 };

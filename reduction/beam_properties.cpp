@@ -1,6 +1,9 @@
 #include "reduction/beam_properties.hpp"
 
+#include "reduction/reduction_failure.hpp"
+
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace flapsim::reduction {
@@ -64,7 +67,18 @@ BeamProperties extract_beam_properties(const ClampedWingAnalysis& analysis, int 
   int last_ok = -1;
   for (int k = 0; k < n; ++k)
     if (!beam.stations[static_cast<std::size_t>(k)].in_tip_zone) last_ok = k;
-  if (last_ok < 0) throw std::runtime_error("extract_beam_properties: every cell lies in the tip zone");
+  if (last_ok < 0) {
+    // The loaded tip zone grows until it holds enough nodes: on a coarse mesh it reaches
+    // the root and leaves no cell to measure the beam in.
+    char buf[480];
+    std::snprintf(buf, sizeof buf,
+                  "the mesh is too coarse along the span for the beam: the loaded tip zone and its "
+                  "disturbed band reach from the tip at %.2f mm to %.2f mm along the axis, over the whole "
+                  "flexible span from %.2f mm (mean element edge %.2f mm); use a smaller [mesh] element_size "
+                  "(or clamp_y, if the clamp leaves little of the wing free)",
+                  beam.s_tip * 1e3, z_start * 1e3, beam.s_root * 1e3, analysis.element_size() * 1e3);
+    throw ReductionFailure(buf);
+  }
   for (int k = last_ok + 1; k < n; ++k) {
     auto& st = beam.stations[static_cast<std::size_t>(k)];
     const auto& ok = beam.stations[static_cast<std::size_t>(last_ok)];

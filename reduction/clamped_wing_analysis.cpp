@@ -3,10 +3,12 @@
 #include <Eigen/QR>
 
 #include "reduction/joint_stiffness.hpp"
+#include "reduction/reduction_failure.hpp"
 #include "reduction/station_compliance.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace flapsim::reduction {
@@ -162,8 +164,14 @@ void ClampedWingAnalysis::setup_frame(const AxisFrame& axis, double tip_zone_len
   }
   s_tip_ = s_.maxCoeff();
   zone_ = make_tip_zone(s_, n_, tip_zone_length, clamped_);
-  if (zone_.s_start <= s_root_)
-    throw std::invalid_argument("reduction: the tip zone reaches the clamped root; the wing is too short");
+  if (zone_.s_start <= s_root_) {
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "the root clamp reaches %.2f mm along the axis, into the loaded tip zone (from %.2f mm to the tip "
+                  "at %.2f mm): too little of the wing is free to bend; use a smaller clamp_y or a finer mesh",
+                  s_root_ * 1e3, zone_.s_start * 1e3, s_tip_ * 1e3);
+    throw ReductionFailure(buf);
+  }
   // The two forces for the elastic axis: a quarter of the zone's chord either side.
   const double half = 0.25 * (zone_.n_max - zone_.n_min);
   n1_ = zone_.n_centroid + half;

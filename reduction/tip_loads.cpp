@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+
+#include "reduction/reduction_failure.hpp"
 
 namespace flapsim::reduction {
 
@@ -39,7 +42,11 @@ TipZone make_tip_zone(const Eigen::VectorXd& s, const Eigen::VectorXd& n, double
       zone.n_max = n_hi;
       return zone;
     }
-    if (ell > extent) throw std::runtime_error("make_tip_zone: too few loadable nodes near the tip");
+    if (ell > extent)
+      throw ReductionFailure("the wing has too few free FEM nodes to load at its tip (fewer than " +
+                             std::to_string(min_nodes) +
+                             " spanning both the span and the chord outside the root clamp); use a smaller [mesh] element_size "
+                             "or a smaller clamp_y");
     ell *= 1.25;
   }
 }

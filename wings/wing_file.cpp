@@ -86,6 +86,39 @@ void check_film(const TomlTable& t, double thickness_m, std::vector<InputWarning
   warn(warnings, t, "thickness", message);
 }
 
+// A length a wing cannot have, and the length_unit that would make it one it can
+// (a wing drawn in mm in a file that declares metres is 1000 times too long).
+std::string unit_guess(const TomlTable& t, double metres, double lo, double hi) {
+  const double written = metres / t.length_scale();
+  for (const auto& [unit, scale] : {std::pair{"mm", 1e-3}, std::pair{"cm", 1e-2}, std::pair{"um", 1e-6},
+                                    std::pair{"m", 1.0}})
+    if (unit != t.length_unit() && written * scale >= lo && written * scale <= hi)
+      return ": was it written in " + std::string(unit) + " (length_unit = \"" + unit + "\")?";
+  return ": is the value in that unit?";
+}
+
+void check_span(const TomlTable& p, double span_m, std::vector<InputWarning>& warnings) {
+  constexpr double kLongest = 2.0, kShortest = 1e-4;  // [m]: a 1 m ornithopter wing; a 0.15 mm fairyfly wing
+  if (span_m >= kShortest && span_m <= kLongest) return;
+  std::string key = "span";
+  for (const char* k : {"span", "outline", "spline", "outline_file", "shape"})
+    if (p.has(k)) {
+      key = k;
+      break;
+    }
+  warn(warnings, p, key,
+       "the wing would be " + fmt(span_m) + " m from pivot to tip, " +
+           (span_m > kLongest ? "longer than any flapping wing (2 m)" : "shorter than any flapping wing (0.1 mm)") +
+           "; lengths are in length_unit = \"" + p.length_unit() + "\"" + unit_guess(p, span_m, 1e-3, 1.0));
+}
+
+void check_plate(const TomlTable& t, double thickness_m, std::vector<InputWarning>& warnings) {
+  if (thickness_m <= 5e-3) return;
+  warn(warnings, t, "thickness",
+       "the membrane would be " + fmt(thickness_m * 1e3) + " mm thick, thicker than any wing film or plate (5 mm); "
+       "thickness is in length_unit = \"" + t.length_unit() + "\"" + unit_guess(t, thickness_m, 1e-6, 5e-3));
+}
+
 Material read_material(const TomlTable& t, std::vector<InputWarning>& warnings) {
   t.expect_only({"youngs_modulus", "poisson_ratio", "density"});
   Material m;
@@ -411,11 +444,13 @@ Wing read_wing(TomlTable root) {
   wing.clamp_y = planform.clamp_y;
   const PlanformProperties props = planform_properties(wing.outline);
   wing.span = props.span;
+  check_span(root.get_table("planform"), wing.span, wing.warnings);
 
   const TomlTable mem = root.get_table("membrane");
   mem.expect_only({"thickness", "material", "nonstructural_mass_per_area"});
   wing.membrane.thickness = mem.get_length("thickness", Bounds::positive());
   check_film(mem, wing.membrane.thickness, wing.warnings);
+  check_plate(mem, wing.membrane.thickness, wing.warnings);
   wing.membrane.material = find_material(mem, "material", materials);
   wing.membrane.nonstructural_mass_per_area =
       mem.get_double("nonstructural_mass_per_area", 0.0, Bounds::non_negative());

@@ -10,6 +10,7 @@
 #include "pipeline/app/run_recorder.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
+#include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/input_hash.hpp"
 
 namespace flapsim::app {
@@ -64,6 +65,14 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
     throw;
   } catch (const Interrupted& e) {
     recorder.finish(data, "interrupted", e.what());
+    throw;
+  } catch (const io::OutputError& e) {
+    // A file could not be written (a full disk, a file-size limit): summary.json still says
+    // how far the run got, if it can be written; the output error stands either way.
+    try {
+      recorder.finish(data, "failed", std::string("output error: ") + e.what());
+    } catch (const std::exception&) {
+    }
     throw;
   }
   const RunResults results = recorder.finish(data, "ok");

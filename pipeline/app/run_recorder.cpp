@@ -1,5 +1,7 @@
 #include "pipeline/app/run_recorder.hpp"
 
+#include <exception>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -217,13 +219,25 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
 }
 
 RunResults RunRecorder::finish(const fsi::FsiData& data, const std::string& status, const std::string& error) {
-  if (!error.empty()) results_.set("error", error);
-  history_.close();
-  results_.set("status", status);
+  // history.csv that cannot be completed (a full disk, a file-size limit) keeps its last
+  // published rows; summary.json, small, still says the run failed and why, then the
+  // output error goes on to the caller (exit status 4).
+  std::exception_ptr history_failure;
+  std::string final_status = status, final_error = error;
+  try {
+    history_.close();
+  } catch (const io::OutputError& e) {
+    history_failure = std::current_exception();
+    final_status = "failed";
+    if (final_error.empty()) final_error = std::string("output error: ") + e.what();
+  }
+  if (!final_error.empty()) results_.set("error", final_error);
+  results_.set("status", final_status);
   analyse(data);
   results_.set("wall_time_s",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count());
   summary_json(results_).write(dir_ / "summary.json");
+  if (history_failure) std::rethrow_exception(history_failure);
   if (vtk_every_ > 0) write_state();  // colour ranges of the whole run
   return results_;
 }

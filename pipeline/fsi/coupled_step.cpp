@@ -81,7 +81,7 @@ void initialize(const FsiModel& model, FsiData& data, double t0) {
   try {
     data.state = mbd::make_initial_state(model.chain, data.chain, model.base, t0, q0, v0, data.loads);
   } catch (const mbd::ConvergenceFailure& e) {
-    throw NumericalFailure(e.what(), 0, t0);
+    throw NumericalFailure("the initial state (t = " + std::to_string(t0) + " s): multibody: " + e.reason());
   }
   data.trial = data.state;
   data.relaxed = data.state;
@@ -159,7 +159,7 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
       data.state = data.trial;
     }
   } catch (const mbd::ConvergenceFailure& e) {
-    throw NumericalFailure(e.what(), step, t1);
+    throw NumericalFailure("multibody: " + e.reason(), step, t1);
   } catch (const std::length_error& e) {
     throw NumericalFailure(e.what(), step, t1);
   }

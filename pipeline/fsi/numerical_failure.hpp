@@ -20,7 +20,9 @@ class NumericalFailure : public std::runtime_error {
  private:
   static std::string format(const std::string& what, long step, double time) {
     if (step < 0) return what;
-    return "step " + std::to_string(step) + " (t = " + std::to_string(time) + " s): " + what;
+    // Numbered from 1 as the progress line and history.csv count steps: after "step 51/80"
+    // the step that fails is step 52, the one that ends at `time`.
+    return "step " + std::to_string(step + 1) + " (to t = " + std::to_string(time) + " s): " + what;
   }
   long step_;
   double time_;

@@ -213,6 +213,21 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
 
 bool is_case_document(const TomlTable& root) { return root.has("kinematics"); }
 
+// A hover (no free stream) of many cycles with every wake row free: the wake piles up
+// under the wing and the lift grows erratic after 5–8 cycles (docs/uvlm.md, "Hover over
+// many cycles": cycle 9 and 10 of a rigid hawkmoth hover at +60 %, +90 %, peak 2.4×).
+void warn_long_free_hover(const TomlTable& root, Case& c) {
+  const Case::Numerics& n = c.numerics;
+  if (!c.air.enabled || c.air.freestream.norm() > 0.0 || !n.free_wake || n.cycles <= kLongFreeHoverCycles ||
+      n.far_wake_cycles > 0.0 || n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
+    return;
+  const auto t = root.find_table("numerics");
+  c.warnings.push_back({c.file, t ? t->line_of("cycles") : 0, "numerics.cycles",
+                        std::to_string(n.cycles) + " cycles of hover with the whole wake free: the wake piles up "
+                        "under the wing and the lift grows erratic after 5-8 cycles (docs/uvlm.md, \"Hover over "
+                        "many cycles\"); set far_wake_cycles = 0.5 (as cases/hover_periodic.toml)"});
+}
+
 Case read_case(TomlTable root) {
   root.expect_only({"name", "description", "length_unit", "wing", "chain", "kinematics", "air",
                     "structure", "numerics", "output", "loads", "markers"});
@@ -247,6 +262,7 @@ Case read_case(TomlTable root) {
   const auto markers = root.get_tables("markers");
   for (std::size_t i = 0; i < markers.size(); ++i)
     c.markers.push_back(read_marker(markers[i], i, c.structure.bodies));
+  warn_long_free_hover(root, c);
   return c;
 }
 

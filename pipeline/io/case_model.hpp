@@ -20,6 +20,7 @@
 #include "uvlm/planform_grid.hpp"
 #include "uvlm/vortex_core.hpp"
 #include "uvlm/vortex_lattice.hpp"
+#include "wings/input_warning.hpp"
 
 namespace flapsim::io {
 
@@ -41,6 +42,9 @@ struct Marker {
 
 struct Case {
   std::string file;        ///< path of the case file
+  /// Accepted but likely to mislead (a long hover with the whole wake free); the command
+  /// line prints each on stderr and carries on (wings/input_warning.hpp).
+  std::vector<InputWarning> warnings;
   std::string name;        ///< short name (from the file, else the file stem)
   std::string wing_file;   ///< resolved path of the wing file (may be empty)
   std::string chain_file;  ///< resolved path of the chain file (may be empty)
@@ -108,6 +112,8 @@ struct Case {
 inline constexpr std::int64_t kMaxTotalSteps = 100'000'000;
 /// The largest wingbeat frequency a case accepts [Hz] (documented in docs/case_file.md).
 inline constexpr double kMaxFrequencyHz = 1e6;
+/// A hover with the whole wake free longer than this many cycles gets a warning.
+inline constexpr int kLongFreeHoverCycles = 5;
 
 /// The names the case file gives the choices above, each with its value
 /// (wings::TomlTable::get_choice reads them, wings::choice_name names a value).

@@ -79,6 +79,28 @@ TEST(WingPlausibility, DensityOutsideTenToTwentyThousand) {
   EXPECT_TRUE(plate("1.0e12", "20000.0", "0.002").warnings.empty());
 }
 
+TEST(WingPlausibility, AWingDrawnInMillimetresInAFileInMetres) {
+  // A user's film wing in mm, but length_unit left at its default "m": the wing is 10 m long
+  // and its film 20 mm thick. Before: accepted without a word (check printed a 10000 mm span).
+  const std::string text =
+      "[planform]\n"                                                      // 1
+      "outline = [[2.0, 0.0], [2.0, 10.0], [-3.0, 10.0], [-3.0, 0.0]]\n"  // 2
+      "clamp_y = 0.0\n"                                                   // 3
+      "[materials.film]\nyoungs_modulus = 4e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"  // 4-7
+      "[membrane]\nmaterial = \"film\"\nthickness = 0.02\n";              // 8-10
+  const w::Wing wing = w::read_wing(w::parse_toml_string(text, kSource + "/tests/data/inline.toml"));
+  ASSERT_EQ(wing.warnings.size(), 2u);
+  EXPECT_EQ(wing.warnings[0].key, "planform.outline");
+  EXPECT_EQ(wing.warnings[0].line, 2);
+  EXPECT_NE(wing.warnings[0].message.find("10 m from pivot to tip"), std::string::npos) << wing.warnings[0].message;
+  EXPECT_NE(wing.warnings[0].message.find("was it written in mm"), std::string::npos) << wing.warnings[0].message;
+  EXPECT_EQ(wing.warnings[1].key, "membrane.thickness");
+  EXPECT_EQ(wing.warnings[1].line, 10);
+  EXPECT_NE(wing.warnings[1].message.find("was it written in mm"), std::string::npos) << wing.warnings[1].message;
+  // A 5 mm plate is plausible.
+  EXPECT_TRUE(plate("4.0e9", "1400.0", "5.0").warnings.empty());
+}
+
 TEST(WingSolidRod, SolidCircleIsTheFullDisc) {
   // shape = "solid_circle", diameter D: area π D²/4 along the whole rod, mass ρ A L.
   const w::Wing wing = plate("4.0e9", "1400.0", "0.02",

@@ -13,6 +13,7 @@
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/case_model.hpp"
 #include "wings/input_error.hpp"
 #include "wings/wing_model.hpp"
 
@@ -26,6 +27,11 @@ void check_chain_option(const std::string& chain_file) {
 const wings::Wing& print_wing_warnings(const wings::Wing& wing) {
   for (const InputWarning& w : wing.warnings) std::fprintf(stderr, "flapsim: warning: %s\n", w.text().c_str());
   return wing;
+}
+
+const io::Case& print_case_warnings(const io::Case& c) {
+  for (const InputWarning& w : c.warnings) std::fprintf(stderr, "flapsim: warning: %s\n", w.text().c_str());
+  return c;
 }
 
 int run(int argc, char** argv) {

@@ -71,7 +71,7 @@ std::string check_file(const std::string& path) {
     return wings::describe_wing(w);
   }
   if (case_file) {
-    const io::Case c = io::read_case(root);
+    const io::Case c = print_case_warnings(io::read_case(root));
     return io::describe_case(c) + check_case_like_run(c);
   }
   throw InputError(path, 1, "",

@@ -1,5 +1,6 @@
 // flapsim run CASE.toml -o DIR [--chain FILE] [--vtk-every N]
 #include "pipeline/app/cli/commands.hpp"
+#include "pipeline/app/cli/option_checks.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -31,7 +32,7 @@ struct RunArgs {
 };
 
 void run_command(const RunArgs& a) {
-  const io::Case c = io::load_case_file(a.case_file);
+  const io::Case c = print_case_warnings(io::load_case_file(a.case_file));
   check_chain_option(a.chain_file);
   app::RunOptions options;
   // The case name is never a path: the default folder is out/ plus the name made safe.
@@ -95,11 +96,11 @@ void add_run_command(CLI::App& app) {
                   "chain file (chain.toml from 'flapsim reduce'), overrides the case's 'chain'");
   cmd->add_option("--vtk-every", args->vtk_every,
                   "write the ParaView series every N steps, 0 = none (default: the case's output.vtk_every)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, 100000000));
   cmd->add_option("--spring-scale", args->spring_scale,
                   "multiply every joint spring of a flexible chain by S (stiffness calibration; "
                   "frequencies scale by sqrt(S)); default 1")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("-q,--quiet", args->quiet, "no progress line and no report on stdout");
   cmd->add_flag("--force", args->force,
                 "replace another command's outputs in DIR (e.g. the summary.json of 'flapsim reduce')");

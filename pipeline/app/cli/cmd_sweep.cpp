@@ -1,6 +1,7 @@
 // flapsim sweep CASE.toml (--vary KEY=VALUES ... | --cases TABLE.csv) -o DIR [--chain FILE]
 //   [--spring-scale S] [--jobs N] [--vtk-every N] [--force] [--quiet]
 #include "pipeline/app/cli/commands.hpp"
+#include "pipeline/app/cli/option_checks.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -17,6 +18,7 @@
 #include "pipeline/app/sweep/case_table.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
+#include "pipeline/io/case_file.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::cli {
@@ -78,6 +80,7 @@ void sweep_command(const SweepArgs& a) {
     plan = sweep::grid_plan(variations);
   }
   check_chain_option(a.chain_file);
+  print_case_warnings(io::load_case_file(a.case_file));  // of the file as written; each case is checked again
   sweep::SweepOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;
@@ -133,12 +136,12 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option(
          "-j,--jobs", args->jobs,
          "cases run at the same time per process/rank (default: --threads if given, else the cores, shared by the ranks on a machine)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, kMaxThreads));
   cmd->add_option("--vtk-every", args->vtk_every, "ParaView series per case every N steps (default 0: none)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, 100000000));
   cmd->add_option("--spring-scale", args->spring_scale,
                   "joint-spring factor for every case (as flapsim run --spring-scale)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("--force", args->force, "run every case, also those an earlier run of the sweep completed");
   cmd->add_flag("-q,--quiet", args->quiet, "no progress lines and no table on stdout");
   cmd->callback([args] { sweep_command(*args); });

@@ -9,6 +9,7 @@
 
 namespace CLI { class App; }
 namespace flapsim::wings { struct Wing; }
+namespace flapsim::io { struct Case; }
 
 namespace flapsim::cli {
 
@@ -26,6 +27,9 @@ void check_chain_option(const std::string& chain_file);
 /// Prints the wing's plausibility warnings on stderr ("flapsim: warning: FILE:LINE: key
 /// 'KEY': MESSAGE", docs/wing_file.md) and returns the wing.
 const wings::Wing& print_wing_warnings(const wings::Wing& wing);
+
+/// Prints the case's warnings on stderr (io::Case::warnings), as print_wing_warnings.
+const io::Case& print_case_warnings(const io::Case& c);
 
 /// Parses argv, runs the chosen subcommand, returns the process exit status
 /// (exit_status.hpp): 0 ok, 1 usage error, 2 bad input, 3 numerical failure,

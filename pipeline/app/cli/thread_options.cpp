@@ -1,5 +1,7 @@
 #include "pipeline/app/cli/thread_options.hpp"
 
+#include "pipeline/app/cli/option_checks.hpp"
+
 #include <CLI/CLI.hpp>
 #include <omp.h>
 #include <unistd.h>
@@ -27,7 +29,7 @@ void add_threads_option(CLI::App& command) {
             omp_set_num_threads(n);
           },
           "threads to use (default: the available cores, or OMP_NUM_THREADS)")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number(1, kMaxThreads));
 }
 
 int command_threads() { return g_threads > 0 ? g_threads : omp_get_max_threads(); }

@@ -21,6 +21,9 @@ void use_passive_omp_wait_policy(char** argv);
 /// cores available to the process (OMP_NUM_THREADS if set).
 void add_threads_option(CLI::App& command);
 
+/// The largest --threads (and sweep -j) accepted.
+constexpr long kMaxThreads = 4096;
+
 /// The thread count in effect: --threads if given, else OpenMP's default.
 int command_threads();
 

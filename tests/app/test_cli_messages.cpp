@@ -1,0 +1,104 @@
+// Messages a user reads when something goes wrong.
+// - A run that fails names the step as the progress line and history.csv count it. Before:
+//   after "step 51/80" and 51 rows of history.csv the message said "step 51 (t = 0.065 s):
+//   multibody step 51 (t = 0.065 s): ..." for the 52nd step (0-based, and twice).
+// - A numeric option out of range says so in one short line. Before: `--threads 0` printed
+//   "Value 0 not in range 0.000000 to 179769313486231570814527423731704356798070567525844996…"
+//   (DBL_MAX written out, 300 digits). The exit status stays 1 (a malformed option is a
+//   usage error, test_threads_option.cpp).
+// - A chain that misses the FEM's first modes by more than 10 % gets a warning. Before:
+//   only the numbers on the summary line (an aspect-ratio-0.17 plate: -24 % / -26 %, exit 0).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "robustness_helpers.hpp"
+
+using namespace flapsim::test;
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string err;
+};
+
+// `flapsim ARGS`, its exit status and stderr.
+Result run_capturing_stderr(const ScratchDir& dir, const std::string& args) {
+  const auto err = dir / "stderr.txt";
+  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' " + args +
+                          " > /dev/null 2> '" + err.string() + "'";
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(err)};
+}
+
+long json_integer(const std::string& json, const std::string& key) {
+  const auto at = json.find("\"" + key + "\": ");
+  return at == std::string::npos ? -1 : std::strtol(json.c_str() + at + key.size() + 4, nullptr, 10);
+}
+
+TEST(CliMessages, AFailedRunNamesTheStepAsTheProgressLineCountsIt) {
+  // The diverging two-body chain of ExitStatus.ThreeForANumericalFailureOfTheRun.
+  ScratchDir dir("message_step");
+  std::ofstream(dir / "chain.toml")
+      << "root = \"rigid\"\n"
+         "[[bodies]]\nlength = 0.02\nmass = 1e-5\ncenter_of_mass = [0, 0.01, 0]\n"
+         "inertia = [[4e-10,0,0],[0,1e-11,0],[0,0,4e-10]]\n"
+         "[[bodies]]\nlength = 0.02\nmass = 1e-3\ncenter_of_mass = [-0.02, 0.01, 0]\n"
+         "inertia = [[4e-8,0,0],[0,1e-12,0],[0,0,4e-8]]\n"
+         "[bodies.joint]\nbend_stiffness = 1e-12\ntwist_stiffness = 1e-12\n";
+  std::ofstream(dir / "case.toml")
+      << replace_once(small_plate_case("flexible", 40, 0), "steps_per_cycle = 24", "steps_per_cycle = 4");
+  const Result r = run_capturing_stderr(dir, "run " + (dir / "case.toml").string() + " --chain " +
+                                                 (dir / "chain.toml").string() + " -o " + (dir / "out").string());
+  if (r.status == 0) GTEST_SKIP() << "the chain did not diverge";
+  ASSERT_EQ(r.status, 3) << r.err;
+  const std::string summary = read_text(dir / "out" / "summary.json");
+  const long done = json_integer(summary, "steps");
+  const std::string history = read_text(dir / "out" / "history.csv");
+  EXPECT_EQ(static_cast<long>(std::count(history.begin(), history.end(), '\n')) - 1, done);
+  const std::string failing = "step " + std::to_string(done + 1) + " (to t = ";
+  EXPECT_NE(r.err.find(failing), std::string::npos) << r.err;
+  EXPECT_NE(summary.find(failing), std::string::npos) << summary;
+  EXPECT_EQ(r.err.find("multibody step"), std::string::npos) << "the step named twice: " << r.err;
+}
+
+TEST(CliMessages, AnOptionValueOutOfRangeGetsAShortMessage) {
+  ScratchDir dir("message_option");
+  const std::string wing = kSourceDir + "/tests/data/valid_tiny_wing.toml";
+  for (const std::string& bad : {std::string("--threads 0"), std::string("--threads two")}) {
+    const Result r = run_capturing_stderr(dir, "check " + wing + " " + bad);
+    EXPECT_EQ(r.status, 1) << bad;
+    EXPECT_NE(r.err.find("not a whole number from 1 to 4096"), std::string::npos) << bad << ": " << r.err;
+    EXPECT_LT(r.err.size(), 200u) << bad << ": " << r.err;
+  }
+  const Result s = run_capturing_stderr(dir, "run " + kSourceDir + "/tests/data/valid_tiny_case.toml --spring-scale -1 -o " +
+                                                 (dir / "out").string());
+  EXPECT_EQ(s.status, 1);
+  EXPECT_NE(s.err.find("'-1' is not a number > 0"), std::string::npos) << s.err;
+  EXPECT_LT(s.err.size(), 200u) << s.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+TEST(CliMessages, AChainThatMissesTheFemIsWarnedAbout) {
+  // The MAV film wing with 4 bodies: first bending +144 % (docs/reduction.md, "Film wings").
+  ScratchDir dir("message_mismatch");
+  const Result mav = run_capturing_stderr(dir, "reduce " + kSourceDir + "/wings/mav_film_wing.toml --bodies 4 --modes 6 -o " +
+                                                   (dir / "mav").string());
+  EXPECT_EQ(mav.status, 0);
+  EXPECT_NE(mav.err.find("warning: the chain's first bending mode differs from the FEM's by +1"), std::string::npos)
+      << mav.err;
+  // A plate the chain follows (-3 % / -1 %): no warning.
+  const Result tiny = run_capturing_stderr(dir, "reduce " + kSourceDir + "/tests/data/valid_tiny_wing.toml --bodies 2 "
+                                                    "--modes 4 -o " + (dir / "tiny").string());
+  EXPECT_EQ(tiny.status, 0);
+  EXPECT_EQ(tiny.err.find("warning"), std::string::npos) << tiny.err;
+}
+
+}  // namespace
