@@ -17,8 +17,10 @@ namespace {
 std::string existing_file(const TomlTable& t, std::string_view key) {
   const std::string path = t.get_path(key);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
+  if (!std::filesystem::exists(path, ec))
     t.fail(key, "file not found: " + path + " (paths are relative to the case file's folder)");
+  if (!std::filesystem::is_regular_file(path, ec))
+    t.fail(key, "not a regular file (a device, FIFO or folder): " + path);
   return path;
 }
 

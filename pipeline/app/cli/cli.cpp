@@ -20,8 +20,10 @@
 namespace flapsim::cli {
 
 void check_chain_option(const std::string& chain_file) {
-  if (!chain_file.empty() && !std::filesystem::is_regular_file(chain_file))
+  if (!chain_file.empty() && !std::filesystem::exists(chain_file))
     throw InputError(chain_file, 0, "--chain", "chain file not found");
+  if (!chain_file.empty() && !std::filesystem::is_regular_file(chain_file))
+    throw InputError(chain_file, 0, "--chain", "not a regular file (a device, FIFO or folder)");
 }
 
 const wings::Wing& print_wing_warnings(const wings::Wing& wing) {
