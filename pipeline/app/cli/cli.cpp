@@ -36,6 +36,16 @@ const io::Case& print_case_warnings(const io::Case& c) {
   return c;
 }
 
+void warn_unused_structure_options(const io::Case& c, const std::string& chain_file, double spring_scale) {
+  if (c.structure.kind != io::Case::Structure::Kind::Rigid) return;
+  if (!chain_file.empty())
+    std::fprintf(stderr, "flapsim: warning: --chain %s is not used: %s says structure.kind = \"rigid\"\n",
+                 chain_file.c_str(), c.file.c_str());
+  if (spring_scale != 1.0)
+    std::fprintf(stderr, "flapsim: warning: --spring-scale is not used: %s says structure.kind = \"rigid\"\n",
+                 c.file.c_str());
+}
+
 int run(int argc, char** argv) {
   CLI::App app{
       "flapsim: flexible flapping wings, from a wing drawing to lift.\n"

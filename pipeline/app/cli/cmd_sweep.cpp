@@ -80,7 +80,8 @@ void sweep_command(const SweepArgs& a) {
     plan = sweep::grid_plan(variations);
   }
   check_chain_option(a.chain_file);
-  print_case_warnings(io::load_case_file(a.case_file));  // of the file as written; each case is checked again
+  warn_unused_structure_options(print_case_warnings(io::load_case_file(a.case_file)), a.chain_file,
+                                a.spring_scale);  // of the file as written; each case is checked again
   sweep::SweepOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;
