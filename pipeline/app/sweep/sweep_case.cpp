@@ -42,13 +42,6 @@ void refuse_wing_keys_that_change_nothing(const SweepInputs& inputs, const Resol
   }
 }
 
-void refuse_springs_of_a_rigid_wing(const SweepInputs& inputs, const ResolvedCase& r, const CasePoint& point) {
-  if (r.c.structure.kind != io::Case::Structure::Kind::Rigid) return;
-  for (const Assignment& a : point)
-    if (key_target(a.key) == KeyTarget::spring_scale)
-      throw InputError(inputs.case_file, 0, a.key,
-                       "varying it changes nothing in these runs: the case's wing is rigid (no springs)");
-}
 }  // namespace
 
 KeyTarget key_target(const std::string& key) {
@@ -77,7 +70,6 @@ ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point) {
   try {
     r.c = io::load_case_file(inputs.case_file, case_overrides);
     refuse_wing_keys_that_change_nothing(inputs, r);
-    refuse_springs_of_a_rigid_wing(inputs, r, point);
     const auto wing = app::load_case_wing(r.c, r.wing_overrides);
     r.inputs_hash = io::input_hash(r.c, wing ? &*wing : nullptr, inputs.chain_file, r.spring_scale);
   } catch (const InputError& e) {
