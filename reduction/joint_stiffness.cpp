@@ -39,7 +39,8 @@ JointStiffness joint_stiffness(const Eigen::MatrixXd& c, double body_length) {
   Eigen::LLT<Eigen::MatrixXd> llt(out.compliance);
   if (llt.info() != Eigen::Success)
     throw ReductionFailure(
-        "the joints' compliance measured on the FEM is not positive definite; a section may have no free nodes");
+        "the joints' compliance measured on the FEM is not positive definite; a section may have no free nodes: "
+        "use fewer bodies or a finer mesh ([mesh] element_size)");
   out.stiffness = llt.solve(Eigen::MatrixXd::Identity(n, n));
   out.stiffness = (0.5 * (out.stiffness + out.stiffness.transpose())).eval();
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(out.stiffness, Eigen::EigenvaluesOnly);
@@ -47,7 +48,7 @@ JointStiffness joint_stiffness(const Eigen::MatrixXd& c, double body_length) {
   out.max_eigenvalue = es.eigenvalues()(n - 1);
   if (!(out.min_eigenvalue > 0.0) || !std::isfinite(out.max_eigenvalue))
     throw ReductionFailure("the joint stiffness from the FEM is not positive definite (smallest eigenvalue " +
-                           std::to_string(out.min_eigenvalue) + " N m/rad)");
+                           std::to_string(out.min_eigenvalue) + " N m/rad): use fewer bodies or a finer mesh ([mesh] element_size)");
   return out;
 }
 

@@ -12,6 +12,11 @@ ifeq ($(CASE_KIND):$(CASE_CHAIN),flexible:)
 ifneq ($(CASE_WING),)
 WING ?= $(CASE_WING)
 CASE_NEEDS_MODEL := 1
+# The chain has the case's number of bodies (a 6-body case used to get the default
+# 10-body chain and stop with "the case says 6 bodies, but the chain file ... has 10").
+ifneq ($(CASE_BODIES),)
+BODIES ?= $(CASE_BODIES)
+endif
 endif
 endif
 endif

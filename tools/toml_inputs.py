@@ -4,7 +4,8 @@ tools/pipeline.mk):
 
     toml_inputs.py wing WING.toml   the wing file and every file it names (outline_file)
     toml_inputs.py case CASE.toml   make variable assignments: CASE_NAME, CASE_KIND,
-                                    CASE_WING, CASE_CHAIN (paths as seen from here)
+                                    CASE_WING, CASE_CHAIN (paths as seen from here),
+                                    CASE_BODIES (structure.bodies, if an integer)
 
 Paths in a file are relative to its folder (docs/wing_file.md, docs/case_file.md).
 A file that cannot be read prints nothing and exits 0: flapsim itself then reports it."""
@@ -46,6 +47,8 @@ def main():
     print(f"CASE_KIND={data.get('structure', {}).get('kind', 'rigid')}")
     print(f"CASE_WING={near(path, wing) if isinstance(wing, str) else ''}")
     print(f"CASE_CHAIN={near(path, chain) if isinstance(chain, str) else ''}")
+    bodies = data.get("structure", {}).get("bodies")
+    print(f"CASE_BODIES={bodies if isinstance(bodies, int) and not isinstance(bodies, bool) else ''}")
 
 
 if __name__ == "__main__":

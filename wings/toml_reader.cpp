@@ -138,6 +138,17 @@ void TomlTable::apply_overrides(const std::vector<std::pair<std::string, std::st
 }
 
 TomlTable parse_toml_file(const std::string& path) {
+  // Bounded: a regular file of limited size. /dev/zero or a FIFO used to be read without end.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::exists(status)) {
+    if (!std::filesystem::is_regular_file(status))
+      throw InputError(path, 0, "", "not a regular file (a device, FIFO or folder): give a TOML file");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > kMaxTomlFileBytes)
+      throw InputError(path, 0, "", "the file is larger than " + std::to_string(kMaxTomlFileBytes) +
+                                        " bytes: not a wing, case or chain file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "", "cannot open the file for reading");
   std::ostringstream text;

@@ -218,8 +218,13 @@ class TomlTable {
   int line_ = 1;
 };
 
+/// The largest TOML input file read (wing, case, chain): 16 MiB (a wing with a 100,000-point
+/// inline outline is about 3 MiB).
+inline constexpr std::uintmax_t kMaxTomlFileBytes = 16u << 20;
+
 /// Parses a TOML file. Unreadable file or syntax error: InputError with the line
-/// toml++ reports.
+/// toml++ reports. The file must be a regular file (not a device, FIFO or folder, which
+/// would be read without end or make no sense) of at most kMaxTomlFileBytes.
 /// \param path file to read; kept verbatim in error messages
 TomlTable parse_toml_file(const std::string& path);
 

@@ -119,6 +119,55 @@ void check_plate(const TomlTable& t, double thickness_m, std::vector<InputWarnin
        "thickness is in length_unit = \"" + t.length_unit() + "\"" + unit_guess(t, thickness_m, 1e-6, 5e-3));
 }
 
+// The vortex lattice spans each section y = const from its leading to its trailing edge
+// (uvlm/planform_grid.hpp). An outline that a chordwise line crosses more than twice (a
+// slot from the tip, a hooked edge) leaves a gap the lattice covers: say where, when the
+// gap is more than kLatticeGapShare of the wing (a digitised edge's wiggles are not).
+constexpr double kLatticeGapShare = 0.01;
+void check_sections(const TomlTable& p, const std::vector<Eigen::Vector2d>& outline,
+                    std::vector<InputWarning>& warnings) {
+  std::vector<double> ys;
+  for (const auto& q : outline) ys.push_back(q.y());
+  std::sort(ys.begin(), ys.end());
+  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+  // Between two vertex heights the crossings move linearly in y, so the gap area of the
+  // band is its height times the gap at mid-height (exact).
+  double lo = 1e300, hi = -1e300, gap_area = 0.0;
+  int most = 0;
+  std::vector<double> xs;
+  for (std::size_t k = 0; k + 1 < ys.size(); ++k) {
+    const double y = 0.5 * (ys[k] + ys[k + 1]);
+    xs.clear();
+    for (std::size_t i = 0; i < outline.size(); ++i) {
+      const Eigen::Vector2d& a = outline[i];
+      const Eigen::Vector2d& b = outline[(i + 1) % outline.size()];
+      if ((a.y() < y) != (b.y() < y)) xs.push_back(a.x() + (y - a.y()) / (b.y() - a.y()) * (b.x() - a.x()));
+    }
+    if (xs.size() <= 2) continue;
+    std::sort(xs.begin(), xs.end());
+    double gap = 0.0;
+    for (std::size_t i = 1; i + 1 < xs.size(); i += 2) gap += xs[i + 1] - xs[i];
+    gap_area += gap * (ys[k + 1] - ys[k]);
+    lo = std::min(lo, ys[k]);
+    hi = std::max(hi, ys[k + 1]);
+    most = std::max(most, static_cast<int>(xs.size()));
+  }
+  const double area = polygon_area(outline);
+  if (most == 0 || !(gap_area > kLatticeGapShare * area)) return;
+  std::string key = "outline";
+  for (const char* k : {"outline", "spline", "outline_file", "shape"})
+    if (p.has(k)) {
+      key = k;
+      break;
+    }
+  warn(warnings, p, key,
+       "from y = " + fmt(lo / p.length_scale()) + " to " + fmt(hi / p.length_scale()) + " " + p.length_unit() +
+           " a line along the chord crosses the outline " + std::to_string(most) +
+           " times (a slot or a hooked edge): the vortex lattice of a run in air spans each section from its "
+           "leading to its trailing edge and covers the gap, " + fmt(100.0 * gap_area / area) +
+           " % of the wing's area (the FEM follows the outline)");
+}
+
 Material read_material(const TomlTable& t, std::vector<InputWarning>& warnings) {
   t.expect_only({"youngs_modulus", "poisson_ratio", "density"});
   Material m;
@@ -445,6 +494,7 @@ Wing read_wing(TomlTable root) {
   const PlanformProperties props = planform_properties(wing.outline);
   wing.span = props.span;
   check_span(root.get_table("planform"), wing.span, wing.warnings);
+  check_sections(root.get_table("planform"), wing.outline, wing.warnings);
 
   const TomlTable mem = root.get_table("membrane");
   mem.expect_only({"thickness", "material", "nonstructural_mass_per_area"});

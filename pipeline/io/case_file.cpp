@@ -17,8 +17,10 @@ namespace {
 std::string existing_file(const TomlTable& t, std::string_view key) {
   const std::string path = t.get_path(key);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
+  if (!std::filesystem::exists(path, ec))
     t.fail(key, "file not found: " + path + " (paths are relative to the case file's folder)");
+  if (!std::filesystem::is_regular_file(path, ec))
+    t.fail(key, "not a regular file (a device, FIFO or folder): " + path);
   return path;
 }
 
@@ -67,9 +69,12 @@ Case::Structure read_structure(const TomlTable& root) {
   const TomlTable t = root.get_table("structure");
   t.expect_only({"kind", "bodies", "gravity", "initial_angles_deg", "initial_rates_deg_per_s"});
   s.kind = t.get_choice("kind", kStructureKindNames);
-  if (s.kind == Case::Structure::Kind::Rigid)
-    s.bodies = t.get_int("bodies", 1, Bounds::closed(1, 1));
-  else
+  if (s.kind == Case::Structure::Kind::Rigid) {
+    s.bodies = t.get_int("bodies", 1, Bounds::closed(1, 1000));
+    if (s.bodies != 1)
+      t.fail("bodies", "a rigid wing is one body (found " + std::to_string(s.bodies) +
+                           "): omit bodies, or set kind = \"flexible\" for a chain of bodies");
+  } else
     s.bodies = t.get_int("bodies", Bounds::closed(2, 1000));
   if (t.has("bodies")) s.bodies_line = t.line_of("bodies");
   if (t.has("gravity")) {

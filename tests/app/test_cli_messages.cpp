@@ -101,4 +101,18 @@ TEST(CliMessages, AChainThatMissesTheFemIsWarnedAbout) {
   EXPECT_EQ(tiny.err.find("warning"), std::string::npos) << tiny.err;
 }
 
+TEST(CliMessages, ChainAndSpringOptionsOfARigidCaseAreSaidToBeUnused) {
+  // Before: `run RIGID.toml --chain chain.toml --spring-scale 2` ran the rigid wing without a word.
+  ScratchDir dir("message_rigid_options");
+  std::ofstream(dir / "case.toml") << small_plate_case("rigid", 1, 0);
+  std::ofstream(dir / "chain.toml") << "[[bodies]]\nlength = 0.04\nmass = 1e-5\ncenter_of_mass = [0, 0.02, 0]\n"
+                                       "inertia = [[1e-9,0,0],[0,1e-10,0],[0,0,1e-9]]\n";
+  const Result r = run_capturing_stderr(dir, "run " + (dir / "case.toml").string() + " --chain " +
+                                                 (dir / "chain.toml").string() + " --spring-scale 2 -o " +
+                                                 (dir / "out").string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: --chain"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("warning: --spring-scale is not used"), std::string::npos) << r.err;
+}
+
 }  // namespace

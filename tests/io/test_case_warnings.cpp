@@ -37,3 +37,18 @@ TEST(CaseWarnings, AFarWakeATruncatedWakeAFreeStreamOrAShortRunIsNotWarned) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CaseMessages, ARigidWingWithSeveralBodiesSaysWhatToDo) {
+  // Before: "value 5 out of range: must be in [1, 1]".
+  const flapsim::InputError e = error_of(
+      "wing = \"valid_tiny_wing.toml\"\n[kinematics]\nfrequency_hz = 20.0\nsweep = 40.0\nrotation = 90.0\n"
+      "[structure]\nkind = \"rigid\"\nbodies = 5\n");
+  EXPECT_EQ(e.key(), "structure.bodies");
+  EXPECT_EQ(e.line(), 8);
+  EXPECT_NE(e.message().find("a rigid wing is one body (found 5)"), std::string::npos) << e.what();
+  EXPECT_NE(e.message().find("kind = \"flexible\""), std::string::npos) << e.what();
+}
+
+}  // namespace

@@ -48,7 +48,8 @@ void expect_one_warning(const w::Wing& wing, const std::string& key, int line, c
 
 TEST(WingPlausibility, PlausibleWingsGiveNoWarning) {
   EXPECT_TRUE(plate("4.0e9", "1400.0", "0.02").warnings.empty());
-  for (const char* f : {"hawkmoth.toml", "hawkmoth_thin_membrane.toml", "flat_plate.toml", "robofly.toml"})
+  for (const char* f : {"hawkmoth.toml", "hawkmoth_thin_membrane.toml", "flat_plate.toml", "robofly.toml",
+                        "mav_film_wing.toml"})
     EXPECT_TRUE(w::load_wing_file(kSource + "/wings/" + f).warnings.empty()) << f;
 }
 
@@ -99,6 +100,33 @@ TEST(WingPlausibility, AWingDrawnInMillimetresInAFileInMetres) {
   EXPECT_NE(wing.warnings[1].message.find("was it written in mm"), std::string::npos) << wing.warnings[1].message;
   // A 5 mm plate is plausible.
   EXPECT_TRUE(plate("4.0e9", "1400.0", "5.0").warnings.empty());
+}
+
+w::Wing outline_wing(const std::string& outline) {
+  const std::string text =
+      "length_unit = \"mm\"\n[planform]\noutline = " + outline + "\nclamp_y = 0.5\n"  // outline on line 3
+      "[materials.film]\nyoungs_modulus = 4e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"
+      "[membrane]\nmaterial = \"film\"\nthickness = 0.05\n";
+  return w::read_wing(w::parse_toml_string(text, kSource + "/tests/data/inline.toml"));
+}
+
+TEST(WingPlausibility, ASlotThatTheVortexLatticeWouldCoverIsWarned) {
+  // A 10 x 40 mm plate with a 4 mm slot from y = 15 mm to the tip: the lattice spans each
+  // section from x = 2 to x = -8 and covers the slot (100 mm², a third of the wing). Before:
+  // no word; the run's lattice silently had 400 mm² of panels on a 300 mm² wing.
+  const w::Wing forked = outline_wing(
+      "[[2.0, 0.0], [2.0, 40.0], [-1.0, 40.0], [-1.0, 15.0], [-5.0, 15.0], [-5.0, 40.0], [-8.0, 40.0], [-8.0, 0.0]]");
+  ASSERT_EQ(forked.warnings.size(), 1u);
+  EXPECT_EQ(forked.warnings[0].key, "planform.outline");
+  EXPECT_EQ(forked.warnings[0].line, 3);
+  EXPECT_NE(forked.warnings[0].message.find("from y = 15 to 40 mm a line along the chord crosses the outline 4 times"),
+            std::string::npos)
+      << forked.warnings[0].message;
+  // A notch in the trailing edge (a bay) is crossed twice by every chordwise line: the
+  // lattice follows it, no warning.
+  EXPECT_TRUE(outline_wing("[[2.0, 0.0], [2.0, 40.0], [-8.0, 40.0], [-8.0, 22.0], [-2.0, 20.0], [-8.0, 18.0], "
+                           "[-8.0, 0.0]]")
+                  .warnings.empty());
 }
 
 TEST(WingSolidRod, SolidCircleIsTheFullDisc) {

@@ -20,8 +20,10 @@
 namespace flapsim::cli {
 
 void check_chain_option(const std::string& chain_file) {
-  if (!chain_file.empty() && !std::filesystem::is_regular_file(chain_file))
+  if (!chain_file.empty() && !std::filesystem::exists(chain_file))
     throw InputError(chain_file, 0, "--chain", "chain file not found");
+  if (!chain_file.empty() && !std::filesystem::is_regular_file(chain_file))
+    throw InputError(chain_file, 0, "--chain", "not a regular file (a device, FIFO or folder)");
 }
 
 const wings::Wing& print_wing_warnings(const wings::Wing& wing) {
@@ -32,6 +34,16 @@ const wings::Wing& print_wing_warnings(const wings::Wing& wing) {
 const io::Case& print_case_warnings(const io::Case& c) {
   for (const InputWarning& w : c.warnings) std::fprintf(stderr, "flapsim: warning: %s\n", w.text().c_str());
   return c;
+}
+
+void warn_unused_structure_options(const io::Case& c, const std::string& chain_file, double spring_scale) {
+  if (c.structure.kind != io::Case::Structure::Kind::Rigid) return;
+  if (!chain_file.empty())
+    std::fprintf(stderr, "flapsim: warning: --chain %s is not used: %s says structure.kind = \"rigid\"\n",
+                 chain_file.c_str(), c.file.c_str());
+  if (spring_scale != 1.0)
+    std::fprintf(stderr, "flapsim: warning: --spring-scale is not used: %s says structure.kind = \"rigid\"\n",
+                 c.file.c_str());
 }
 
 int run(int argc, char** argv) {

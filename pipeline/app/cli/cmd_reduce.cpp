@@ -95,8 +95,8 @@ void run_reduce(const ReduceOptions& o) {
     if (m->found && std::abs(m->relative_error) > kChainMismatch)
       std::cerr << "flapsim: warning: the chain's first " << kind << " mode differs from the FEM's by "
                 << io::format_percent(m->relative_error) << " (MAC " << m->mac
-                << "): a beam does not represent this wing well (a low aspect ratio, a film that cambers; "
-                   "docs/reduction.md); see " << (dir / "report.md").string() << "\n";
+                << "): the chain does not represent this wing well (too few bodies: try more --bodies; or a beam "
+                   "cannot: a low aspect ratio, a film that cambers; docs/reduction.md); see " << (dir / "report.md").string() << "\n";
 }
 
 }  // namespace

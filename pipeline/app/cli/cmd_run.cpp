@@ -34,6 +34,7 @@ struct RunArgs {
 void run_command(const RunArgs& a) {
   const io::Case c = print_case_warnings(io::load_case_file(a.case_file));
   check_chain_option(a.chain_file);
+  warn_unused_structure_options(c, a.chain_file, a.spring_scale);
   app::RunOptions options;
   // The case name is never a path: the default folder is out/ plus the name made safe.
   options.output_dir = a.output_dir.empty() ? std::filesystem::path("out") / io::folder_name_of(c.name)

@@ -80,7 +80,13 @@ void sweep_command(const SweepArgs& a) {
     plan = sweep::grid_plan(variations);
   }
   check_chain_option(a.chain_file);
-  print_case_warnings(io::load_case_file(a.case_file));  // of the file as written; each case is checked again
+  const io::Case base = print_case_warnings(io::load_case_file(a.case_file));  // each case is checked again
+  warn_unused_structure_options(base, a.chain_file, a.spring_scale);
+  if (base.structure.kind == io::Case::Structure::Kind::Rigid &&
+      std::find(plan.keys.begin(), plan.keys.end(), "spring_scale") != plan.keys.end())
+    std::fprintf(stderr, "flapsim: warning: spring_scale changes nothing: %s says structure.kind = \"rigid\" "
+                         "(no springs); the rows that differ only in it will be equal\n",
+                 a.case_file.c_str());
   sweep::SweepOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;

@@ -31,6 +31,10 @@ const wings::Wing& print_wing_warnings(const wings::Wing& wing);
 /// Prints the case's warnings on stderr (io::Case::warnings), as print_wing_warnings.
 const io::Case& print_case_warnings(const io::Case& c);
 
+/// A rigid case has no chain and no springs: warns that --chain and --spring-scale (≠ 1)
+/// are not used, rather than ignore them silently.
+void warn_unused_structure_options(const io::Case& c, const std::string& chain_file, double spring_scale);
+
 /// Parses argv, runs the chosen subcommand, returns the process exit status
 /// (exit_status.hpp): 0 ok, 1 usage error, 2 bad input, 3 numerical failure,
 /// 4 output or system error, 130/143 interrupted by SIGINT/SIGTERM.

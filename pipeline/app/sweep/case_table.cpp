@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 
@@ -32,6 +33,10 @@ std::vector<std::string> cells_of(const std::string& line) {
 }  // namespace
 
 CaseTable read_case_table(const std::string& path) {
+  // A regular file (/dev/zero or a FIFO would be read without end).
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw InputError(path, 0, "--cases", "not a regular file (a device, FIFO or folder)");
   std::ifstream in(path);
   if (!in) throw InputError(path, 0, "--cases", "cannot open the case table for reading");
   CaseTable table;

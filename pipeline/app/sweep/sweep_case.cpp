@@ -12,7 +12,37 @@ namespace flapsim::sweep {
 
 namespace {
 constexpr std::string_view kWingPrefix = "wing.";
+
+bool starts_with(const std::string& s, std::string_view prefix) { return s.rfind(prefix, 0) == 0; }
+bool ends_with(const std::string& s, std::string_view suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
+
+// A wing key that cannot change the run is a sweep that varies nothing: every case would
+// give the same numbers (a stiffness sweep with --chain gave identical rows). A flexible
+// case with a chain file takes its structure from the chain: of the wing only the outline
+// (the lattice) counts. A rigid wing uses the outline and the mass, never the stiffness or
+// the mesh.
+void refuse_wing_keys_that_change_nothing(const SweepInputs& inputs, const ResolvedCase& r) {
+  const bool flexible = r.c.structure.kind == io::Case::Structure::Kind::Flexible;
+  const std::string chain = !inputs.chain_file.empty() ? inputs.chain_file : r.c.chain_file;
+  for (const auto& [key, value] : r.wing_overrides) {
+    (void)value;
+    std::string why;
+    if (flexible && !chain.empty() && !starts_with(key, "planform."))
+      why = "the chain comes from the chain file " + chain +
+            ", so of the wing only the outline (planform.*) reaches the run; drop the chain file to have the "
+            "wing reduced in process for each value, or vary spring_scale";
+    else if (!flexible && (ends_with(key, ".youngs_modulus") || ends_with(key, ".poisson_ratio") ||
+                           starts_with(key, "mesh.")))
+      why = "a rigid wing uses only the wing's outline and mass, not its stiffness or mesh";
+    if (!why.empty())
+      throw InputError(inputs.case_file, 0, std::string(kWingPrefix) + key,
+                       "varying it changes nothing in these runs: " + why);
+  }
+}
+
+}  // namespace
 
 KeyTarget key_target(const std::string& key) {
   if (key == "spring_scale") return KeyTarget::spring_scale;
@@ -39,6 +69,7 @@ ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point) {
   }
   try {
     r.c = io::load_case_file(inputs.case_file, case_overrides);
+    refuse_wing_keys_that_change_nothing(inputs, r);
     const auto wing = app::load_case_wing(r.c, r.wing_overrides);
     r.inputs_hash = io::input_hash(r.c, wing ? &*wing : nullptr, inputs.chain_file, r.spring_scale);
   } catch (const InputError& e) {
