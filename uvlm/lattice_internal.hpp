@@ -5,7 +5,42 @@
 
 #include "uvlm/vortex_lattice.hpp"
 
+#include <omp.h>
+
+#include <algorithm>
+#include <cstddef>
+
 namespace flapsim::uvlm::detail {
+
+/// Point–segment interactions below which one thread does a step's sums alone.
+inline constexpr std::size_t kTargetChunkThreshold = 100000;
+
+/// Call sum(i0, count) for contiguous chunks of the targets [0, n), one chunk per thread
+/// of ONE parallel region (the Biot–Savart sums called inside run on their calling thread:
+/// nested regions are inactive), so that the several sums a step makes at the same
+/// targets (wake, bound, trailing edge) cost one fork/join instead of one each; with the
+/// passive wait policy each costs a wake-up of the sleeping threads. Chunks hold an even
+/// number of targets (the kernel takes points two at a time). Each target's velocity is
+/// summed by the same operations in the same order whatever the chunking, so the result
+/// does not depend on the thread count. `interactions` (targets × segments of all the sums)
+/// decides whether threads are worth starting.
+template <class Sum>
+void for_target_chunks(std::size_t n, std::size_t interactions, Sum&& sum) {
+  if (n == 0) return;
+  if (interactions < kTargetChunkThreshold || omp_in_parallel() || omp_get_max_threads() == 1) {
+    sum(std::size_t{0}, n);
+    return;
+  }
+  const std::size_t pairs = (n + 1) / 2;
+#pragma omp parallel
+  {
+    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t threads = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t i0 = 2 * (pairs * t / threads);
+    const std::size_t i1 = std::min(n, 2 * (pairs * (t + 1) / threads));
+    if (i1 > i0) sum(i0, i1 - i0);
+  }
+}
 
 /// Rings, collocation points, normals, tangents, areas and surface velocities from the nodes.
 void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,

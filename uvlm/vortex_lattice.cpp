@@ -141,7 +141,7 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d) {
   const double inv_rc2 = 1.0 / (core.radius * core.radius);
   const double inv_rc2_wake = 1.0 / (m.core.radius * m.core.radius);
   const auto& S = d.ring_side;
-#pragma omp parallel for schedule(static) if (np > 64)
+#pragma omp parallel for schedule(static) if (np >= 32)
   for (int i = 0; i < np; ++i) {
     const double px = d.collocation(0, i), py = d.collocation(1, i), pz = d.collocation(2, i);
     const double nx = d.normal(0, i), ny = d.normal(1, i), nz = d.normal(2, i);
@@ -196,12 +196,34 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
                             bool include_bound) {
   d.eval.size = n;
   d.eval.zero_velocity();
-  if (d.wake_segments.size() > 0) add_induced_velocity(d.wake_segments, d.eval, m.core);
-  add_far_wake_velocity(d, d.eval.x.data(), d.eval.y.data(), d.eval.z.data(), n, d.eval.u.data(),
-                        d.eval.v.data(), d.eval.w.data());
-  if (include_bound) {
-    add_induced_velocity(d.bound_segments, d.eval, m.bound_core());
-    add_induced_velocity(d.trailing_edge_segments, d.eval, m.core);
+  PointSet& e = d.eval;
+  // Wake, far wake (tree), then bound and trailing-edge segments: at each point the sums
+  // in this order, the direct ones in one parallel region unless the far wake's tree
+  // comes between them (lattice_internal.hpp).
+  const bool far = d.far_tree_rows > 0 && d.far_wake_segments.size() > 0;
+  const bool bound_with_wake = include_bound && !far;
+  auto direct = [&](bool wake, bool bound) {
+    const std::size_t segments = (wake ? d.wake_segments.size() : 0) +
+                                 (bound ? d.bound_segments.size() + d.trailing_edge_segments.size() : 0);
+    if (segments == 0) return;
+    for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
+      const double *x = e.x.data() + i0, *y = e.y.data() + i0, *z = e.z.data() + i0;
+      double *u = e.u.data() + i0, *v = e.v.data() + i0, *w = e.w.data() + i0;
+      if (wake && m.single_precision_wake)
+        add_induced_velocity_single(d.wake_segments, x, y, z, c, u, v, w, m.core);
+      else if (wake)
+        add_induced_velocity(d.wake_segments, x, y, z, c, u, v, w, m.core);
+      if (bound) {
+        add_induced_velocity(d.bound_segments, x, y, z, c, u, v, w, m.bound_core());
+        add_induced_velocity(d.trailing_edge_segments, x, y, z, c, u, v, w, m.core);
+      }
+    });
+  };
+  if (m.single_precision_wake) d.wake_segments.update_single_precision();
+  direct(true, bound_with_wake);
+  if (far) {
+    add_far_wake_velocity(d, e.x.data(), e.y.data(), e.z.data(), n, e.u.data(), e.v.data(), e.w.data());
+    if (include_bound) direct(false, true);
   }
 }
 

@@ -73,9 +73,11 @@ struct VortexLatticeModel {
   WakeIntegrator wake_integrator = WakeIntegrator::AdamsBashforth2;
   LoadMethod load_method = LoadMethod::Bernoulli;
   LeadingEdge leading_edge = LeadingEdge::Attached;
-  /// Evaluate the wake's self-induced velocity (the free-wake convection, the cost of a
-  /// run) in single precision: about twice as fast, relative error ~1e-6 in the wake
-  /// velocity. The circulations and loads are always computed in double precision.
+  /// Evaluate the wake's direct sums in single precision: its self-induced velocity (the
+  /// free-wake convection, the cost of a run) and its velocity at the wing's collocation
+  /// and load points; about twice as fast, relative error ~1e-6 in these velocities (the
+  /// loads' error: docs/uvlm.md, "Performance"). The bound segments' sums, the circulations and
+  /// the loads are computed in double precision; the tree code is double precision.
   bool single_precision_wake = true;
   int max_wake_rows = 0;   ///< keep at most this many wake rows (oldest dropped); 0 = keep all
   int wake_capacity = 0;   ///< wake rows the workspace holds (the run's step count, or max_wake_rows)

@@ -173,22 +173,32 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
     double *u = P.u.data() + first, *v = P.v.data() + first, *w = P.w.data() + first;
     detail::build_wake_segments(m, d, detail::WakeView::Wake);
     detail::add_far_wake_velocity(d, x, y, z, n, u, v, w);  // the far wake by the tree, if so
-    if (m.wake_sum == WakeSum::Tree && !m.far_wake_by_tree() && d.wake_segments.size() >= m.tree_min_segments) {
+    const bool by_tree = m.wake_sum == WakeSum::Tree && !m.far_wake_by_tree() &&
+                         d.wake_segments.size() >= m.tree_min_segments;
+    if (by_tree) {
       d.wake_tree.build(d.wake_segments, m.core, tree_parameters(m.tree_tolerance));
       d.wake_tree.add_induced_velocity(x, y, z, n, u, v, w);
-    } else if (d.wake_segments.size() > 0) {
-      if (m.single_precision_wake) {
-        d.wake_segments.update_single_precision();
-        add_induced_velocity_single(d.wake_segments, x, y, z, n, u, v, w, m.core);
-      } else {
-        add_induced_velocity(d.wake_segments, x, y, z, n, u, v, w, m.core);
-      }
+    } else if (m.single_precision_wake) {
+      d.wake_segments.update_single_precision();
     }
     // Near-wing treatment, the other way round: the wake sees the bound vortices through
     // the near-wing core, so a wake node passing close to the lattice is not flung away.
     const VortexCore bound_seen_from_wake{m.core.model, std::max(m.core.radius, m.near_wing_core)};
-    add_induced_velocity(d.bound_segments, x, y, z, n, u, v, w, bound_seen_from_wake);
-    add_induced_velocity(d.trailing_edge_segments, x, y, z, n, u, v, w, m.core);
+    const std::size_t segments = (by_tree ? 0 : d.wake_segments.size()) + d.bound_segments.size() +
+                                 d.trailing_edge_segments.size();
+    // The direct sums at the wake nodes, one parallel region (lattice_internal.hpp).
+    detail::for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
+      const double *xi = x + i0, *yi = y + i0, *zi = z + i0;
+      double *ui = u + i0, *vi = v + i0, *wi = w + i0;
+      if (!by_tree && d.wake_segments.size() > 0) {
+        if (m.single_precision_wake)
+          add_induced_velocity_single(d.wake_segments, xi, yi, zi, c, ui, vi, wi, m.core);
+        else
+          add_induced_velocity(d.wake_segments, xi, yi, zi, c, ui, vi, wi, m.core);
+      }
+      add_induced_velocity(d.bound_segments, xi, yi, zi, c, ui, vi, wi, bound_seen_from_wake);
+      add_induced_velocity(d.trailing_edge_segments, xi, yi, zi, c, ui, vi, wi, m.core);
+    });
   }
   const double dt = d.dt;
   const Eigen::Vector3d& V = d.free_stream;

@@ -7,6 +7,7 @@
 #include "uvlm/kernel_dispatch.hpp"
 #include "uvlm/lattice_internal.hpp"
 #include "uvlm/segment_tree.hpp"
+#include "uvlm/synthetic_hover_wake.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -15,7 +16,6 @@
 #include <vector>
 
 #include "hover_wake.hpp"
-#include "synthetic_hover_wake.hpp"
 #include "wing_cases.hpp"
 
 using namespace flapsim::uvlm;
@@ -90,11 +90,11 @@ TEST(SegmentTree, MatchesTheDirectSumWithinItsToleranceOnAHoverWake) {
 }
 
 TEST(SegmentTree, MatchesTheDirectSumWithinItsToleranceOnATwentyCycleHoverWake) {
-  // The 20-cycle hover-like wake of the tree benchmark (synthetic_hover_wake.hpp: 2000
+  // The 20-cycle hover-like wake of the tree benchmark (uvlm/synthetic_hover_wake.hpp: 2000
   // rows, 42010 segments, cores grown with age, sunk 0.38 m below the wing), seen from
   // every 40th wake node (551 targets, so the direct reference stays cheap): the same
   // relative error bound as on the computed 3-cycle wake above.
-  const flapsim::uvlm::testing::SyntheticWake w(20);
+  const flapsim::uvlm::SyntheticHoverWake w(20);
   ASSERT_EQ(w.segments.size(), 42010u);
   std::vector<double> x, y, z;
   for (std::size_t i = 0; i < w.nodes.size; i += 40) {

@@ -1,0 +1,45 @@
+#include "uvlm/synthetic_hover_wake.hpp"
+
+#include "uvlm/core_growth.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+namespace flapsim::uvlm {
+
+SyntheticHoverWake::SyntheticHoverWake(int cycles) {
+  const int rows = 100 * cycles, ns = 10, n1 = ns + 1;
+  const double f = 26.1, dt = 1.0 / (100 * f);  // [Hz], [s]
+  nodes.reserve(static_cast<std::size_t>(rows + 1) * n1);
+  nodes.size = static_cast<std::size_t>(rows + 1) * n1;
+  for (int r = 0; r <= rows; ++r) {
+    const double age = (rows - r) * dt, psi = (60 * M_PI / 180) * std::cos(2 * M_PI * f * r * dt);
+    for (int j = 0; j < n1; ++j) {
+      const double rad = 0.005 + 0.0433 * j / ns;
+      nodes.set(static_cast<std::size_t>(r) * n1 + j,
+                {rad * std::cos(psi), rad * std::sin(psi), -0.5 * age - 0.002 * std::sin(0.3 * j + r)});
+    }
+  }
+  CoreGrowth growth;
+  growth.enabled = true;
+  segments.reserve(static_cast<std::size_t>(rows + 1) * ns + static_cast<std::size_t>(rows) * n1);
+  auto gamma = [&](int r, int j) {  // [m²/s]
+    if (r < 0 || r >= rows || j < 0 || j >= ns) return 0.0;
+    return 0.02 * std::sin(M_PI * (j + 0.5) / ns) * std::sin(2 * M_PI * f * r * dt + 0.3);
+  };
+  auto push = [&](std::size_t a, std::size_t b, double g, double age) {
+    const double rc2 = grown_core_radius2(growth, core.radius, age, g);
+    segments.push(nodes.x[a], nodes.y[a], nodes.z[a], nodes.x[b], nodes.y[b], nodes.z[b], g,
+                  core.radius * core.radius / rc2);
+  };
+  for (int q = 0; q <= rows; ++q)
+    for (int j = 0; j < ns; ++j)
+      push(static_cast<std::size_t>(q) * n1 + j, static_cast<std::size_t>(q) * n1 + j + 1,
+           gamma(q, j) - gamma(q - 1, j), (rows - q) * dt);
+  for (int r = 0; r < rows; ++r)
+    for (int j = 0; j <= ns; ++j)
+      push(static_cast<std::size_t>(r + 1) * n1 + j, static_cast<std::size_t>(r) * n1 + j,
+           gamma(r, j) - gamma(r, j - 1), (rows - r - 0.5) * dt);
+}
+
+}  // namespace flapsim::uvlm
