@@ -2,18 +2,28 @@
 // wake-sized problem (6000 segments, 3300 target points), one and two threads, in double
 // precision and in the single precision the free-wake convection uses, for each kernel
 // variant this CPU runs (uvlm/kernel_dispatch.hpp: scalar, avx2, avx512).
+// Counters: interactions/s and per_core/s by wall time; per_cpu_s by the process's CPU
+// time (all threads), the figure to read on a shared machine, where wall time includes
+// waiting for a core.
 #include "uvlm/biot_savart.hpp"
 #include "uvlm/kernel_dispatch.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <ctime>
 #include <random>
 #include <string>
 
 using namespace flapsim::uvlm;
 
 namespace {
+
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 void BM_BiotSavart(benchmark::State& state, CoreModel model, bool single) {
   const int threads = static_cast<int>(state.range(0));
@@ -37,6 +47,7 @@ void BM_BiotSavart(benchmark::State& state, CoreModel model, bool single) {
   const VortexCore core{model, 1e-3};
   s.update_single_precision();
   omp_set_num_threads(threads);
+  const double cpu0 = process_cpu_seconds();
   for (auto _ : state) {
     p.zero_velocity();
     if (single)
@@ -46,7 +57,9 @@ void BM_BiotSavart(benchmark::State& state, CoreModel model, bool single) {
     benchmark::DoNotOptimize(p.u.data());
     benchmark::ClobberMemory();
   }
+  const double cpu = process_cpu_seconds() - cpu0;
   const double interactions = static_cast<double>(n_seg) * n_pts;
+  state.counters["per_cpu_s"] = interactions * static_cast<double>(state.iterations()) / cpu;
   state.counters["interactions/s"] =
       benchmark::Counter(interactions * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["per_core/s"] =
