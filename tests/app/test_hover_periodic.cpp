@@ -1,6 +1,6 @@
 // Issue 13's hover: the rigid hawkmoth wing with eq. 8 (dpsi = 0), 6 x 10 panels,
 // 100 steps per cycle, free wake, nothing truncated, 20 cycles (cases/hover_periodic.toml,
-// with the convected far wake of docs/uvlm.md, "Far wake"). About 25 CPU seconds.
+// with the convected far wake of docs/uvlm.md, "Far wake"). About 15 CPU seconds.
 #include <gtest/gtest.h>
 
 #include <algorithm>
