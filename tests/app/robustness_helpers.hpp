@@ -58,6 +58,17 @@ inline std::vector<std::string> truncated_files(const ScratchDir& dir, const std
   return bad;
 }
 
+/// A chain file of two bodies whose outer joint has almost no stiffness (1e-12 N m/rad) and
+/// a tip 100 times heavier than the root body: under a flapping case with 4 steps per cycle
+/// it flails and the implicit step fails (exit status 3, docs/reliability.md).
+inline const char* const kDivergingTwoBodyChain =
+    "root = \"rigid\"\n"
+    "[[bodies]]\nlength = 0.02\nmass = 1e-5\ncenter_of_mass = [0, 0.01, 0]\n"
+    "inertia = [[4e-10,0,0],[0,1e-11,0],[0,0,4e-10]]\n"
+    "[[bodies]]\nlength = 0.02\nmass = 1e-3\ncenter_of_mass = [-0.02, 0.01, 0]\n"
+    "inertia = [[4e-8,0,0],[0,1e-12,0],[0,0,4e-8]]\n"
+    "[bodies.joint]\nbend_stiffness = 1e-12\ntwist_stiffness = 1e-12\n";
+
 /// Runs `flapsim ARGS` under a file-size limit of `blocks` blocks of /bin/sh's ulimit -f
 /// (512 B in dash, 1 KiB in bash) with SIGXFSZ ignored (so a
 /// write past the limit fails with EFBIG, as on a full disk); returns the exit status.

@@ -40,12 +40,7 @@ TEST(ExitStatus, ThreeForANumericalFailureOfTheRun) {
   // test_run_command.cpp): the implicit step fails and names the step.
   ScratchDir dir("exit_numerical");
   std::ofstream(dir / "chain.toml")
-      << "root = \"rigid\"\n"
-         "[[bodies]]\nlength = 0.02\nmass = 1e-5\ncenter_of_mass = [0, 0.01, 0]\n"
-         "inertia = [[4e-10,0,0],[0,1e-11,0],[0,0,4e-10]]\n"
-         "[[bodies]]\nlength = 0.02\nmass = 1e-3\ncenter_of_mass = [-0.02, 0.01, 0]\n"
-         "inertia = [[4e-8,0,0],[0,1e-12,0],[0,0,4e-8]]\n"
-         "[bodies.joint]\nbend_stiffness = 1e-12\ntwist_stiffness = 1e-12\n";
+      << kDivergingTwoBodyChain;
   const std::string c = replace_once(small_plate_case("flexible", 40, 0), "steps_per_cycle = 24", "steps_per_cycle = 4");
   std::ofstream(dir / "case.toml") << c;
   const int status = run_flapsim("run " + (dir / "case.toml").string() + " --chain " + (dir / "chain.toml").string() +

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "robustness_helpers.hpp"
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 
@@ -75,12 +76,7 @@ TEST(FsiRunCommand, DivergingChainExitsThreeAndKeepsItsOutputs) {
   // and the implicit step fails: exit status 3, summary "failed", history still a CSV.
   flapsim::test::ScratchDir dir("fsi_run_diverge");
   std::ofstream(dir / "chain.toml")
-      << "root = \"rigid\"\n"
-         "[[bodies]]\nlength = 0.02\nmass = 1e-5\ncenter_of_mass = [0, 0.01, 0]\n"
-         "inertia = [[4e-10,0,0],[0,1e-11,0],[0,0,4e-10]]\n"
-         "[[bodies]]\nlength = 0.02\nmass = 1e-3\ncenter_of_mass = [-0.02, 0.01, 0]\n"
-         "inertia = [[4e-8,0,0],[0,1e-12,0],[0,0,4e-8]]\n"
-         "[bodies.joint]\nbend_stiffness = 1e-12\ntwist_stiffness = 1e-12\n";
+      << flapsim::test::kDivergingTwoBodyChain;
   std::string c = plate_case("flexible");
   c.replace(c.find("steps_per_cycle = 24"), 20, "steps_per_cycle = 4");
   c.replace(c.find("cycles = 1"), 10, "cycles = 40");

@@ -3,22 +3,13 @@
 // "interrupted", the exit status is 128 + signal (130, 143).
 #include <gtest/gtest.h>
 
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <thread>
 
-#include "robustness_helpers.hpp"
-
-extern char** environ;
+#include "signal_helpers.hpp"
 
 namespace fs = std::filesystem;
 using namespace flapsim::test;
@@ -30,24 +21,8 @@ namespace {
 int interrupted_run(const ScratchDir& dir, int signal_number) {
   // 24 x 200 steps with a wake of at most 12 rows: long enough to be interrupted.
   std::ofstream(dir / "case.toml") << small_plate_case("rigid", 200, 0, "wake_max_rows = 12\n");
-  const std::string binary = FLAPSIM_BINARY, case_file = (dir / "case.toml").string(),
-                    out = (dir / "out").string();
-  const char* argv[] = {binary.c_str(), "run", case_file.c_str(), "-o", out.c_str(), "-q", nullptr};
-  ::setenv("OMP_NUM_THREADS", "1", 1);
-  pid_t pid = 0;
-  if (::posix_spawn(&pid, binary.c_str(), nullptr, nullptr, const_cast<char**>(argv), environ) != 0) return -2;
-  // history.csv is published every 20 rows: wait for the first rows (or the end).
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  int status = 0;
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) return -3;  // ended before the signal
-    const std::string h = read_text(dir / "out" / "history.csv");
-    if (std::count(h.begin(), h.end(), '\n') > 21) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  ::kill(pid, signal_number);
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return signal_flapsim_once_history_grows({"run", (dir / "case.toml").string(), "-o", (dir / "out").string(), "-q"},
+                                           dir / "out" / "history.csv", signal_number);
 }
 
 // "steps": N of summary.json.

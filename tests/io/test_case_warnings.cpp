@@ -9,20 +9,13 @@
 
 #include <string>
 
+#include "hover_case_text.hpp"
 #include "inline_case.hpp"
 
 namespace {
 
-std::string hover(const std::string& numerics, const std::string& air = "") {
-  return "wing = \"valid_tiny_wing.toml\"\n"                                    // 1
-         "[kinematics]\nfrequency_hz = 20.0\n"                                   // 2-3
-         "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"  // 4-5
-         "[structure]\nkind = \"rigid\"\n" + air +                               // 6-7
-         "[numerics]\nsteps_per_cycle = 40\n" + numerics;                        // 8-9, 10
-}
-
 TEST(CaseWarnings, ALongHoverWithTheWholeWakeFreeIsWarned) {
-  const flapsim::io::Case c = case_from_text(hover("cycles = 10\n"));
+  const flapsim::io::Case c = case_from_text(hover_case_text("cycles = 10\n"));
   ASSERT_EQ(c.warnings.size(), 1u);
   EXPECT_EQ(c.warnings[0].key, "numerics.cycles");
   EXPECT_EQ(c.warnings[0].line, 10);
@@ -30,10 +23,10 @@ TEST(CaseWarnings, ALongHoverWithTheWholeWakeFreeIsWarned) {
 }
 
 TEST(CaseWarnings, AFarWakeATruncatedWakeAFreeStreamOrAShortRunIsNotWarned) {
-  EXPECT_TRUE(case_from_text(hover("cycles = 10\nfar_wake_cycles = 0.5\n")).warnings.empty());
-  EXPECT_TRUE(case_from_text(hover("cycles = 10\nwake_max_rows = 40\n")).warnings.empty());
-  EXPECT_TRUE(case_from_text(hover("cycles = 10\n", "[air]\nfreestream = [-3.0, 0.0, 0.0]\n")).warnings.empty());
-  EXPECT_TRUE(case_from_text(hover("cycles = 5\n")).warnings.empty());
+  EXPECT_TRUE(case_from_text(hover_case_text("cycles = 10\nfar_wake_cycles = 0.5\n")).warnings.empty());
+  EXPECT_TRUE(case_from_text(hover_case_text("cycles = 10\nwake_max_rows = 40\n")).warnings.empty());
+  EXPECT_TRUE(case_from_text(hover_case_text("cycles = 10\n", "[air]\nfreestream = [-3.0, 0.0, 0.0]\n")).warnings.empty());
+  EXPECT_TRUE(case_from_text(hover_case_text("cycles = 5\n")).warnings.empty());
 }
 
 }  // namespace

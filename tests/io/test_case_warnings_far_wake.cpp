@@ -9,16 +9,14 @@
 
 #include <string>
 
+#include "hover_case_text.hpp"
 #include "inline_case.hpp"
 
 namespace {
 
+// Line 10: cycles = 10, line 11: the far-wake key.
 std::string hover(const std::string& numerics, const std::string& air = "") {
-  return "wing = \"valid_tiny_wing.toml\"\n"                                    // 1
-         "[kinematics]\nfrequency_hz = 20.0\n"                                   // 2-3
-         "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"  // 4-5
-         "[structure]\nkind = \"rigid\"\n" + air +                               // 6-7
-         "[numerics]\nsteps_per_cycle = 40\ncycles = 10\n" + numerics;           // 8-10, 11
+  return hover_case_text("cycles = 10\n" + numerics, air);
 }
 
 }  // namespace
