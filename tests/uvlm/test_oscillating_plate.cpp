@@ -104,25 +104,15 @@ void run(Oscillation& o, int nc) {
   o.mean_suction = suction / per_cycle;
 }
 
-/// Runs at nc = 8 and 16 and their Richardson extrapolation (first order).
+/// Runs at nc = `nc` and 2 nc and their Richardson extrapolation (first order).
 struct Extrapolated {
   Oscillation coarse, fine, limit;
 };
-Extrapolated run_extrapolated(const Oscillation& o) {
+Extrapolated run_extrapolated(const Oscillation& o, int nc) {
   Extrapolated e{o, o, o};
-  run(e.coarse, 8);
-  run(e.fine, 16);
+  run(e.coarse, nc);
+  run(e.fine, 2 * nc);
   e.limit.cl = 2.0 * e.fine.cl - e.coarse.cl;
-  e.limit.mean_thrust = 2.0 * e.fine.mean_thrust - e.coarse.mean_thrust;
-  e.limit.mean_suction = 2.0 * e.fine.mean_suction - e.coarse.mean_suction;
-  return e;
-}
-
-/// Runs at nc = 16 and 32 and their Richardson extrapolation (for the mean thrust).
-Extrapolated run_fine(const Oscillation& o) {
-  Extrapolated e{o, o, o};
-  run(e.coarse, 16);
-  run(e.fine, 32);
   e.limit.mean_thrust = 2.0 * e.fine.mean_thrust - e.coarse.mean_thrust;
   e.limit.mean_suction = 2.0 * e.fine.mean_suction - e.coarse.mean_suction;
   return e;
@@ -144,7 +134,7 @@ TEST(OscillatingPlate, HeavingPlateFollowsTheodorsenAndGarrick) {
     Oscillation in;
     in.k = k;
     in.heave = 0.1;
-    const Extrapolated e = run_extrapolated(in);
+    const Extrapolated e = run_extrapolated(in, 8);
     const Oscillation& o = e.limit;
     Oscillation finest = in;
     run(finest, 32);
@@ -177,7 +167,7 @@ TEST(OscillatingPlate, PitchingPlateFollowsTheodorsen) {
     Oscillation in;
     in.k = k;
     in.pitch = 1.0 * M_PI / 180.0;
-    const Extrapolated e = run_extrapolated(in);
+    const Extrapolated e = run_extrapolated(in, 8);
     const Oscillation& o = e.limit;
     const Complex C = theodorsen(k), i(0, 1);
     const Complex ref = o.pitch * (M_PI * (i * k - 0.5 * k * k) + 2.0 * M_PI * C * (1.0 + i * k));
@@ -229,7 +219,7 @@ TEST(OscillatingPlate, PitchingPlateThrustFollowsGarrick) {
     in.k = c.k;
     in.pivot = c.a;
     in.pitch = 1.0 * M_PI / 180.0;
-    const Extrapolated e = run_fine(in);
+    const Extrapolated e = run_extrapolated(in, 16);
     const Complex C = theodorsen(c.k), i(0, 1);
     const Complex q = 1.0 + i * c.k * (0.5 - c.a);  // per θ0
     const double cs = M_PI * std::norm(in.pitch * (C * q - i * c.k / 2.0));
