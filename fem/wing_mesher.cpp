@@ -183,7 +183,11 @@ Mesh mesh_locked(const wings::Wing& wing, const MeshOptions& options) {
 
   if (!options.msh_path.empty()) {
     std::filesystem::path tmp = options.msh_path;
-    tmp.replace_filename("." + options.msh_path.stem().string() + ".tmp" + options.msh_path.extension().string());
+    // ".NAME.tmp.msh": gmsh takes the format from the extension. Appended piece by piece:
+    // GCC 12's -Wrestrict misfires on `"." + std::string&&` (GCC bug 105329).
+    std::string staging_name(".");
+    staging_name.append(options.msh_path.stem().string()).append(".tmp").append(options.msh_path.extension().string());
+    tmp.replace_filename(staging_name);
     try {
       gmsh::write(tmp.string());
       std::filesystem::rename(tmp, options.msh_path);
