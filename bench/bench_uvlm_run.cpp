@@ -92,11 +92,11 @@ BENCHMARK_CAPTURE(BM_CaseRun, hover_periodic_20_cycles, "hover_periodic")
     ->Arg(2)->ArgName("threads")->MeasureProcessCPUTime()->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_HoverRun)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(1);
 
-// As the flapsim program: OpenMP's passive wait policy unless OMP_WAIT_POLICY is set
-// (with the default policy idle threads spin, which on a shared machine costs CPU time
-// and, with other programs running, wall time too; docs/performance.md).
+// As the flapsim program, OpenMP's passive wait policy unless OMP_WAIT_POLICY is set (with
+// the default policy idle threads spin, which on a shared machine costs CPU time and, with
+// other programs running, wall time too): set by libflapsim_omp_wait_policy.so, which every
+// program linking flapsim_app loads (docs/performance.md).
 int main(int argc, char** argv) {
-  cli::use_passive_omp_wait_policy(argv);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

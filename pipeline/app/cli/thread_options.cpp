@@ -4,20 +4,11 @@
 
 #include <CLI/CLI.hpp>
 #include <omp.h>
-#include <unistd.h>
-
-#include <cstdlib>
 
 namespace flapsim::cli {
 
 namespace {
 int g_threads = 0;  // 0: not given
-}
-
-void use_passive_omp_wait_policy(char** argv) {
-  if (std::getenv("OMP_WAIT_POLICY") != nullptr) return;
-  if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
-  execv("/proc/self/exe", argv);  // returns only on failure: keep going with the old policy
 }
 
 void add_threads_option(CLI::App& command) {

@@ -2,19 +2,12 @@
 /// \file thread_options.hpp
 /// \brief How many threads a command uses (--threads, on every command) and how idle
 /// OpenMP threads wait (passive: they sleep instead of spinning, so a run on a busy
-/// machine does not steal the cores its own threads or other programs need).
+/// machine does not steal the cores its own threads or other programs need; set for every
+/// program linking flapsim_app by libflapsim_omp_wait_policy.so, cli/passive_wait_policy.cpp).
 
 namespace CLI { class App; }
 
 namespace flapsim::cli {
-
-/// Make the OpenMP runtime use the passive wait policy. libgomp reads OMP_WAIT_POLICY
-/// once, when the program loads, so when the user has not set it this sets
-/// OMP_WAIT_POLICY=passive and restarts the program (execv of /proc/self/exe with the
-/// same arguments) before anything else runs; a user's own OMP_WAIT_POLICY is kept.
-/// Call first thing in main. Returns normally (without the restart) only if the policy
-/// is already set or the restart failed (then the run just spins as before).
-void use_passive_omp_wait_policy(char** argv);
 
 /// Add `--threads N` to a subcommand: N ≥ 1 threads for the command (OpenMP threads of a
 /// run; for a sweep, the threads shared by the cases it runs at once). Default: the
