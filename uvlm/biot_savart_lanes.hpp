@@ -77,11 +77,10 @@ struct TailBlock {  // the last, partial block of segments, padded with Γ = 0
 /// The segment_velocity formula (biot_savart_kernel.hpp) for one pair, given r1 = P − A,
 /// r2 = P − B, their squares s and lengths n: k·(cx, cy, cz) is the velocity without the
 /// core factor (times it already unless the model is Lamb–Oseen, whose factor the callers
-/// apply or skip per block), x = h²/r_c,k² the core factor's argument. g4pi = Γ/(4π), the
-/// formula's first product, computed once per segment by the callers.
+/// apply or skip per block), x = h²/r_c,k² the core factor's argument.
 template <CoreModel M, class T>
 [[gnu::always_inline]] inline void pair_terms(T r1x, T r1y, T r1z, T s1, T n1, T r2x, T r2y,
-                                              T r2z, T s2, T n2, T g4pi, T il_rc, T cr_rc,
+                                              T r2z, T s2, T n2, T g, T il_rc, T cr_rc,
                                               T& k, T& x, T& cx, T& cy, T& cz) {
   cx = r1y * r2z - r1z * r2y;
   cy = r1z * r2x - r1x * r2z;
@@ -97,8 +96,8 @@ template <CoreModel M, class T>
   const T p12 = n1 * n2;
   const bool between = dot12 < T(0);
   const T num = between ? p12 - dot12 : T(1);
-  const T den = p12 * (between ? cross2 : p12 + dot12);  // one product, the same value
-  k = g4pi * (n1 + n2) * num / (den + kTiny<T>);
+  const T den = between ? p12 * cross2 : p12 * (p12 + dot12);
+  k = g * T(kInvFourPi) * (n1 + n2) * num / (den + kTiny<T>);
   if constexpr (M != CoreModel::LambOseen) k *= core_factor<M>(x);
 }
 
@@ -154,12 +153,11 @@ template <CoreModel M, int NP, class T>
   for (int b = 0; b < blocks; ++b)
     for (int h = 0; h < L; h += W) {
       const int o = b * L + h;  // first segment of the chunk
-      alignas(64) T il[W], cr[W], g4pi[W];
+      alignas(64) T il[W], cr[W];
 #pragma omp simd
       for (int j = 0; j < W; ++j) {
         il[j] = inv_rc2 * s.il[o + j];
         cr[j] = inv_rc2 * s.cr[o + j];
-        g4pi[j] = s.g[o + j] * T(kInvFourPi);
       }
       for (int p = 0; p < NP; ++p) {
         const int q = (b * NP + p) * L + h;  // first pair of the chunk in the scratch arrays
@@ -171,7 +169,7 @@ template <CoreModel M, int NP, class T>
           const T s1 = r1x * r1x + r1y * r1y + r1z * r1z;
           const T s2 = r2x * r2x + r2y * r2y + r2z * r2z;
           T k, x, cx, cy, cz;
-          pair_terms<M>(r1x, r1y, r1z, s1, std::sqrt(s1), r2x, r2y, r2z, s2, std::sqrt(s2), g4pi[j],
+          pair_terms<M>(r1x, r1y, r1z, s1, std::sqrt(s1), r2x, r2y, r2z, s2, std::sqrt(s2), s.g[l],
                         il[j], cr[j], k, x, cx, cy, cz);
           kk[q + j] = k;
           xx[q + j] = x;

@@ -30,8 +30,14 @@ struct LatticeCall {
 };
 
 /// Node indices per tile: the nodes' vectors to NP points for a tile (plus the cols + 1
-/// nodes its segments reach beyond it) and the tile's pair terms stay in the L1 cache.
-inline constexpr int kLatticeTile = 64;
+/// nodes its segments reach beyond it) and the tile's pair terms stay in the L1 cache
+/// (about 20 KB in either precision).
+template <class T> inline constexpr int kLatticeTile = 64;
+template <> inline constexpr int kLatticeTile<float> = 128;
+/// Node-buffer entries per quantity and point: a constant for rows of up to 63 nodes
+/// (kFixedStride − tile − one vector − 1; 62 spanwise panels); longer rows use a
+/// per-thread buffer on the heap.
+template <class T> inline constexpr std::size_t kFixedStride = kLatticeTile<T> + 80;
 
 namespace {  // TU-local: one copy per instruction set
 
@@ -48,29 +54,32 @@ template <CoreModel M, class T>
 [[gnu::always_inline]] inline void lattice_pair(const T* __restrict rx, const T* __restrict ry,
                                                 const T* __restrict rz, const T* __restrict rs,
                                                 const T* __restrict rn, std::size_t ia,
-                                                std::size_t ib, T g4pi, T il_rc, T cr_rc, T& k, T& x,
+                                                std::size_t ib, T g, T il_rc, T cr_rc, T& k, T& x,
                                                 T& cx, T& cy, T& cz) {
-  pair_terms<M>(rx[ia], ry[ia], rz[ia], rs[ia], rn[ia], rx[ib], ry[ib], rz[ib], rs[ib], rn[ib], g4pi,
+  pair_terms<M>(rx[ia], ry[ia], rz[ia], rs[ia], rn[ia], rx[ib], ry[ib], rz[ib], rs[ib], rn[ib], g,
                 il_rc, cr_rc, k, x, cx, cy, cz);
 }
 
 /// Points i0 … i0+NP−1 against every segment of the lattice, added to their velocities.
-/// Per tile of kLatticeTile node indices: (0) each node's r = P − node, |r|², |r| into the
+/// Per tile of kLatticeTile<T> node indices: (0) each node's r = P − node, |r|², |r| into the
 /// buffer (the first cols + 1 entries carried over from the previous tile); (1) every
 /// pair's terms but the Lamb–Oseen factor, listing the vector-wide chunks that need it;
 /// (2) that factor for the listed chunks; (3) the lane sums (as lane_blocks).
-template <CoreModel M, int NP, class T>
+template <CoreModel M, int NP, bool Fixed, class T>
 void lattice_points(const LatticeCall<T>& c, std::size_t i0) {
   constexpr int L = kLanes<T>;
   constexpr int W = kChunk<T>;
-  constexpr int TT = kLatticeTile;
+  constexpr int TT = kLatticeTile<T>;
   static_assert(TT % L == 0);
   constexpr int N = 2 * NP * TT;  // pairs per tile: spanwise and streamwise, NP points
   const std::size_t cols = c.cols;
   const std::size_t reach = cols + 1;
-  const std::size_t stride = TT + reach + W;  // buffer entries per quantity and point (the
-  // first reach rounded up to W entries are computed W at a time)
-  T* buf = node_buffer<T>(5 * NP * stride);
+  // Buffer entries per quantity and point (the first reach rounded up to W entries are
+  // computed W at a time): a constant when the rows are short enough (Fixed), so that the
+  // buffer is one array on the stack addressed with constant offsets.
+  const std::size_t stride = Fixed ? kFixedStride<T> : TT + reach + W;
+  [[maybe_unused]] alignas(64) T fixed_buf[Fixed ? 5 * NP * kFixedStride<T> : 1];
+  T* buf = Fixed ? fixed_buf : node_buffer<T>(5 * NP * stride);
   T px[NP], py[NP], pz[NP];
   for (int p = 0; p < NP; ++p) {
     px[p] = static_cast<T>(c.x[i0 + p]);
@@ -111,7 +120,12 @@ void lattice_points(const LatticeCall<T>& c, std::size_t i0) {
     // so that a square root is under way while the pairs before it are evaluated.
     if (t0 > 0)
       for (int q = 0; q < 5 * NP; ++q)
-        for (std::size_t e = 0; e < reach; ++e) buf[q * stride + e] = buf[q * stride + TT + e];  // forward: safe
+        for (std::size_t e = 0; e < reach; e += W) {  // whole vectors, forward (TT ≥ W: safe)
+          T* __restrict to = buf + q * stride + e;
+          const T* __restrict from = to + TT;
+#pragma omp simd
+          for (int j = 0; j < W; ++j) to[j] = from[j];
+        }
     else
       for (std::size_t e = 0; e < reach; e += W) nodes(0, e);
     nodes(t0, reach);
@@ -121,11 +135,9 @@ void lattice_points(const LatticeCall<T>& c, std::size_t i0) {
     for (int h = 0; h < tn; h += W) {
       const std::size_t o = t0 + static_cast<std::size_t>(h);
       if (h + W < tn) nodes(t0, h + W + reach);
-      alignas(64) T ils[W], crs[W], ilc[W], crc[W], gs[W], gc[W];
+      alignas(64) T ils[W], crs[W], ilc[W], crc[W];
 #pragma omp simd
       for (int j = 0; j < W; ++j) {
-        gs[j] = c.gs[o + j] * T(kInvFourPi);
-        gc[j] = c.gc[o + j] * T(kInvFourPi);
         ils[j] = c.inv_rc2 * c.ils[o + j];
         crs[j] = c.inv_rc2 * c.crs[o + j];
         ilc[j] = c.inv_rc2 * c.ilc[o + j];
@@ -142,7 +154,7 @@ void lattice_points(const LatticeCall<T>& c, std::size_t i0) {
         for (int j = 0; j < W; ++j) {
           const std::size_t e = static_cast<std::size_t>(h + j);
           T k, x, cx, cy, cz;
-          lattice_pair<M>(rx, ry, rz, rs, rn, e, e + 1, gs[j], ils[j], crs[j], k, x, cx, cy, cz);
+          lattice_pair<M>(rx, ry, rz, rs, rn, e, e + 1, c.gs[o + j], ils[j], crs[j], k, x, cx, cy, cz);
           kk[qs + j] = k;
           xx[qs + j] = x;
           cxs[qs + j] = cx;
@@ -153,7 +165,7 @@ void lattice_points(const LatticeCall<T>& c, std::size_t i0) {
         for (int j = 0; j < W; ++j) {
           const std::size_t e = static_cast<std::size_t>(h + j);
           T k, x, cx, cy, cz;
-          lattice_pair<M>(rx, ry, rz, rs, rn, e + cols, e, gc[j], ilc[j], crc[j], k, x, cx, cy, cz);
+          lattice_pair<M>(rx, ry, rz, rs, rn, e + cols, e, c.gc[o + j], ilc[j], crc[j], k, x, cx, cy, cz);
           kk[qc + j] = k;
           xx[qc + j] = x;
           cxs[qc + j] = cx;
@@ -213,9 +225,15 @@ void lattice_sum(const LatticeCall<T>& c) {
   constexpr int NP = kLatticePointsPerPass;
   const long passes = static_cast<long>(c.points / NP);
   const std::size_t work = c.points * 2 * c.span;
+  if (c.cols + 1 + kChunk<T> + kLatticeTile<T> <= kFixedStride<T>) {
 #pragma omp parallel for schedule(static) if (work > kParallelThreshold)
-  for (long q = 0; q < passes; ++q) lattice_points<M, NP>(c, static_cast<std::size_t>(q) * NP);
-  for (std::size_t i = static_cast<std::size_t>(passes) * NP; i < c.points; ++i) lattice_points<M, 1>(c, i);
+    for (long q = 0; q < passes; ++q) lattice_points<M, NP, true>(c, static_cast<std::size_t>(q) * NP);
+    for (std::size_t i = static_cast<std::size_t>(passes) * NP; i < c.points; ++i) lattice_points<M, 1, true>(c, i);
+    return;
+  }
+#pragma omp parallel for schedule(static) if (work > kParallelThreshold)
+  for (long q = 0; q < passes; ++q) lattice_points<M, NP, false>(c, static_cast<std::size_t>(q) * NP);
+  for (std::size_t i = static_cast<std::size_t>(passes) * NP; i < c.points; ++i) lattice_points<M, 1, false>(c, i);
 }
 
 template <class T>

@@ -196,7 +196,7 @@ struct VortexLatticeData {
   SegmentSet trailing_edge_segments;  ///< the last rings' trailing segments (wake core)
   SegmentSet wake_segments;
   /// The same segments in lattice form (lattice_segments.hpp), for the wake's own direct
-  /// sum (built with WakeView::Wake only).
+  /// sum in double precision (built with WakeView::Wake and !single_precision_wake only).
   LatticeSegments wake_lattice;
   /// The convected far wake's segments when it is summed by the tree code
   /// (far_wake_age > 0 and wake_sum = Tree); empty otherwise (all in wake_segments).

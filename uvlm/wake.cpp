@@ -89,10 +89,11 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
   // The rest, by the direct sum.
   push_rings(d.wake_segments, T, W + 1, std::max(T - 1, 0), W, ratio);
   // The same segments as a lattice of node rows q0 … W (lattice_segments.hpp), which the
-  // wake's own direct sum uses (advance): node (q, j) is lattice node (q − q0) n1 + j, a
-  // ring row's spanwise segment j → j+1 that node's spanwise segment, the streamwise one
-  // from row r+1 to row r node (r − q0, j)'s streamwise segment.
-  if (view != WakeView::Wake) return;
+  // wake's own direct sum in double precision uses (advance; in single precision the
+  // segment kernel is faster, docs/performance.md): node (q, j) is lattice node
+  // (q − q0) n1 + j, a ring row's spanwise segment j → j+1 that node's spanwise segment,
+  // the streamwise one from row r+1 to row r node (r − q0, j)'s streamwise segment.
+  if (view != WakeView::Wake || m.single_precision_wake) return;
   const int q0 = std::max(T - 1, 0);
   LatticeSegments& L = d.wake_lattice;
   L.assign_grid(static_cast<std::size_t>(W + 1 - q0), static_cast<std::size_t>(n1));
@@ -108,7 +109,7 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
       const double g = G(r, j) - G(r, j - 1);
       L.set_streamwise(static_cast<std::size_t>(r - q0) * n1 + j, g, ratio(g, 0.5 * (age[r] + age[r + 1])));
     }
-  L.finish(m.single_precision_wake);
+  L.finish(false);
 }
 
 void add_far_wake_velocity(VortexLatticeData& d, const double* x, const double* y, const double* z,
@@ -200,6 +201,8 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
     if (by_tree) {
       d.wake_tree.build(d.wake_segments, m.core, tree_parameters(m.tree_tolerance));
       d.wake_tree.add_induced_velocity(x, y, z, n, u, v, w);
+    } else if (m.single_precision_wake) {
+      d.wake_segments.update_single_precision();
     }
     // Near-wing treatment, the other way round: the wake sees the bound vortices through
     // the near-wing core, so a wake node passing close to the lattice is not flung away.
@@ -210,10 +213,10 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
     detail::for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
       const double *xi = x + i0, *yi = y + i0, *zi = z + i0;
       double *ui = u + i0, *vi = v + i0, *wi = w + i0;
-      if (!by_tree && d.wake_segments.size() > 0) {  // the same segments as d.wake_lattice
+      if (!by_tree && d.wake_segments.size() > 0) {
         if (m.single_precision_wake)
-          add_induced_velocity_single(d.wake_lattice, xi, yi, zi, c, ui, vi, wi, m.core);
-        else
+          add_induced_velocity_single(d.wake_segments, xi, yi, zi, c, ui, vi, wi, m.core);
+        else  // the same segments as a lattice (lattice_segments.hpp)
           add_induced_velocity(d.wake_lattice, xi, yi, zi, c, ui, vi, wi, m.core);
       }
       add_induced_velocity(d.bound_segments, xi, yi, zi, c, ui, vi, wi, bound_seen_from_wake);
