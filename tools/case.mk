@@ -7,6 +7,11 @@ CASE ?= cases/hover_flexible.toml
 
 CASE_GOALS := run run-pipeline phase-study
 ifneq ($(filter $(CASE_GOALS),$(MAKECMDGOALS)),)
+# make splits its values at spaces: a path with one would reach flapsim as several words
+# (and the case's name as nothing: outputs into out/ itself). Said plainly instead.
+ifneq ($(word 2,$(CASE)),)
+$(error CASE = "$(CASE)" holds a space, which make cannot pass on as one path: rename the file or its folder, or run build/flapsim run "$(CASE)" directly)
+endif
 $(foreach v,$(shell /usr/bin/python3 tools/toml_inputs.py case $(CASE)),$(eval $(v)))
 ifeq ($(CASE_KIND):$(CASE_CHAIN),flexible:)
 ifneq ($(CASE_WING),)

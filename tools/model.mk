@@ -17,6 +17,9 @@
 
 WING         ?= $(or $(HAWKMOTH_WING),wings/hawkmoth.toml)
 BODIES       ?= $(or $(HAWKMOTH_BODIES),10)
+ifneq ($(word 2,$(WING)),)
+$(error WING = "$(WING)" holds a space, which make cannot pass on as one path (a case's wing file is its WING): rename the file or its folder, or run build/flapsim mesh/modes/reduce directly)
+endif
 MODEL_NAME   := $(basename $(notdir $(WING)))
 MODEL_OUT    ?= $(OUT)/$(MODEL_NAME)
 MODEL_BIN    := $(BUILD)/flapsim

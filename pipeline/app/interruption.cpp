@@ -25,6 +25,10 @@ void install_interrupt_handlers() {
 
 int pending_interrupt() { return g_signal; }
 
+void record_interrupt(int signal_number) {
+  if (signal_number != 0) g_signal = signal_number;
+}
+
 void throw_if_interrupted(const std::string& where) {
   const int s = g_signal;
   if (s != 0) throw Interrupted(s, std::string("interrupted by ") + signal_name(s) + " " + where);

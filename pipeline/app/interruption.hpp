@@ -27,6 +27,9 @@ void install_interrupt_handlers();
 /// The signal received since the handlers were installed (0 = none).
 int pending_interrupt();
 
+/// Records \p signal_number as received (a signal a StageMonitor took off after its stages).
+void record_interrupt(int signal_number);
+
 /// Throws Interrupted if a signal is pending (between two steps of a long computation).
 /// \param where  what was interrupted, for the message (e.g. "after step 12")
 void throw_if_interrupted(const std::string& where);

@@ -79,10 +79,10 @@ void StageMonitor::stage(const std::string& name) {
   shown_this_stage_ = false;
 }
 
-void StageMonitor::done() {
+int StageMonitor::done() {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (done_) return;
+    if (done_) return late_signal_;
     done_ = true;
     stop_ = true;
   }
@@ -90,14 +90,14 @@ void StageMonitor::done() {
   if (thread_.joinable()) thread_.join();
   clear_live_line();
   if (options_.watch_signals) {
-    // A signal after the command's end is dropped (the command completed); then the mask
-    // the command started with.
+    // A signal after the watcher stopped is taken off and returned; then the mask the
+    // command started with.
     const sigset_t set = interrupt_signals();
     const timespec now{0, 0};
-    while (::sigtimedwait(&set, nullptr, &now) > 0) {
-    }
+    for (int s; (s = ::sigtimedwait(&set, nullptr, &now)) > 0;) late_signal_ = s;
     pthread_sigmask(SIG_SETMASK, &old_mask_, nullptr);
   }
+  return late_signal_;
 }
 
 void StageMonitor::watch() {

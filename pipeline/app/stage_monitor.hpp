@@ -53,9 +53,10 @@ class StageMonitor {
   /// \brief Begins the next stage, named for the progress line ("FEM modes").
   void stage(const std::string& name);
 
-  /// \brief Stops the watcher, clears a live progress line and unblocks the signals (a signal
-  /// that came after the command ended is dropped). Idempotent.
-  void done();
+  /// \brief Stops the watcher, clears a live progress line and unblocks the signals. Idempotent.
+  /// \return a signal that came after the watcher stopped (SIGINT or SIGTERM; 0 if none): a
+  /// command that goes on after the watched stages (`run` after its setup) acts on it.
+  int done();
 
  private:
   void watch();
@@ -76,6 +77,7 @@ class StageMonitor {
   std::size_t live_width_ = 0;
   sigset_t old_mask_;
   bool done_ = false;
+  int late_signal_ = 0;
   std::thread thread_;
 };
 

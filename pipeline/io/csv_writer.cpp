@@ -106,8 +106,9 @@ void CsvTimeSeriesWriter::publish() {
   std::error_code ec;
   fs::copy_file(working_, staging_, fs::copy_options::overwrite_existing, ec);
   if (ec) {
+    const std::string why = ec.message();  // before the removal below reuses ec (it said "Success")
     fs::remove(staging_, ec);
-    throw OutputError(path_, "cannot copy the working file: " + ec.message());
+    throw OutputError(path_, "cannot copy the working file: " + why + " (disk full?)");
   }
   try {
     sync_file(staging_, path_);

@@ -19,6 +19,38 @@ using namespace flapsim::test;
 
 namespace {
 
+/// Runs `flapsim ARGS` in a private mount namespace with a tmpfs of \p size at DIR/mnt,
+/// after it `ls -aR` of the mount into DIR/listing.txt; stderr into DIR/stderr.txt. Returns
+/// the exit status, or -99 if no tmpfs can be mounted here.
+int run_on_small_tmpfs(const ScratchDir& dir, const std::string& size, const std::string& args) {
+  const std::string mnt = (dir / "mnt").string();
+  std::filesystem::create_directories(mnt);
+  std::ofstream(dir / "in_namespace.sh")
+      << "mount -t tmpfs -o size=" << size << " none '" << mnt << "' || exit 99\n"
+      << "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" << FLAPSIM_BINARY << "' " << args << " > /dev/null 2> '"
+      << (dir / "stderr.txt").string() << "'\ns=$?\n"
+      << "ls -aR '" << mnt << "' > '" << (dir / "listing.txt").string() << "'\nexit $s\n";
+  const int status = std::system(("unshare -rm sh '" + (dir / "in_namespace.sh").string() + "' 2> /dev/null").c_str());
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return code == 99 || code == 127 ? -99 : code;
+}
+
+// A sweep whose time series cannot be published on a full disk: exit 4, and the message says
+// why. Before: "cannot copy the working file: Success" (the error code was overwritten by the
+// clean-up before the message was made; pipeline/io/csv_writer.cpp).
+TEST(FullDiskManifest, ASweepOnAFullDiskExitsFourWithTheCause) {
+  ScratchDir dir("full_disk_sweep");
+  std::ofstream(dir / "case.toml") << small_plate_case("rigid", 3, 0);
+  const int code = run_on_small_tmpfs(dir, "40k", "sweep '" + (dir / "case.toml").string() +
+                                                      "' --vary kinematics.rotation_phase=-0.1,0,0.1 -j 1 -o '" +
+                                                      (dir / "mnt").string() + "/sw'");
+  if (code == -99) GTEST_SKIP() << "no private tmpfs here (unshare -rm, mount)";
+  EXPECT_EQ(code, 4);
+  const std::string err = read_text(dir / "stderr.txt");
+  EXPECT_NE(err.find("cannot write"), std::string::npos) << err;
+  EXPECT_EQ(err.find(": Success"), std::string::npos) << err;
+}
+
 TEST(FullDiskManifest, ARunThatFillsTheDiskRecordsFailedNotRunning) {
   ScratchDir dir("full_disk_manifest");
   std::ofstream(dir / "case.toml") << small_plate_case("rigid", 3, 1);

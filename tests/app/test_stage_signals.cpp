@@ -93,4 +93,29 @@ TEST(StageSignals, SigtermDuringMeshRecordsInterruptedAndExits143) {
   expect_interrupted(dir, "mesh");
 }
 
+// `run` of a flexible case without a chain file reduces the wing first (seconds to a minute).
+// Before: a signal then was only acted on after the setup and one step ("interrupted after
+// step 1 of 24", history.csv and summary.json written, 10 s after the signal for an AR-0.17
+// plate). Now the setup is watched like the stages above: exit 130 at once, nothing written.
+TEST(StageSignals, SigintDuringARunsSetupEndsItAtOnceWritingNothing) {
+  ScratchDir dir("stage_sigint_run_setup");
+  std::ofstream(dir / "case.toml") << replace_once(small_plate_case("flexible", 1, 0),
+                                                   kSourceDir + "/wings/flat_plate.toml", fine_plate(dir));
+  const std::string binary = FLAPSIM_BINARY;
+  std::vector<std::string> args{binary, "run", (dir / "case.toml").string(), "-o", (dir / "out").string(), "-q"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(::posix_spawn(&pid, binary.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));  // in the reduction of 14,748 triangles (~3 s)
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 130);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "summary.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "history.csv"));
+  EXPECT_TRUE(dir.temporaries().empty());
+}
+
 }  // namespace

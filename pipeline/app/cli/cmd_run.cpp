@@ -14,6 +14,7 @@
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/app/run_results.hpp"
+#include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
 
@@ -46,7 +47,19 @@ void run_command(const RunArgs& a) {
   // Before any file is written: the size of the run (printed before a long one, refused
   // if its memory cannot fit), then the folder claimed for this run (output_manifest.hpp).
   io::OutputFolderClaim claim(options.output_dir, "run");  // "failed" if the run ends by an exception
+  app::install_interrupt_handlers();  // SIGINT/SIGTERM in the time loop: finish the step, exit 130/143
+  // The setup (a wing reduced in process takes seconds to a minute) cannot stop between
+  // steps: a signal during it ends the command at once, before anything is written; the
+  // setup's progress is shown if it lasts (stage_monitor.hpp).
+  app::StageMonitor::Options watch;
+  if (a.quiet) watch.display = app::StageMonitor::Options::Display::quiet;
+  app::StageMonitor setup_watch(claim, 1, watch);
+  setup_watch.stage(c.structure.kind == io::Case::Structure::Kind::Flexible && c.chain_file.empty() && a.chain_file.empty()
+                        ? "setup (the wing's FEM and reduction)"
+                        : "setup");
   options.before_start = [&](const app::FsiSetup& setup) {
+    app::record_interrupt(setup_watch.done());
+    app::throw_if_interrupted("during the run's setup; nothing was written");
     const app::RunEstimate estimate = app::estimate_run(c, setup.model.chain.num_bodies());
     if (!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9))
       std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
@@ -55,7 +68,6 @@ void run_command(const RunArgs& a) {
       std::fprintf(stderr, "flapsim: warning: %s\n", soft.c_str());
     claim.claim(a.force);
   };
-  app::install_interrupt_handlers();  // SIGINT/SIGTERM: finish the step, exit 130/143
   app::RunResults results;
   try {
     results = app::run_case(c, options);
