@@ -26,7 +26,11 @@ void BM_ScheduleEmptyCases(benchmark::State& state) {
   std::size_t finished = 0;
   for (auto _ : state) {
     sweep::schedule_cases(
-        world, todo, static_cast<int>(state.range(0)), [](std::size_t) { return sweep::CaseOutcome{"ok"}; },
+        world, todo, static_cast<int>(state.range(0)), [](std::size_t) {
+          sweep::CaseOutcome outcome;
+          outcome.status = "ok";
+          return outcome;
+        },
         [&](std::size_t, sweep::CaseOutcome&&) { ++finished; });
   }
   benchmark::DoNotOptimize(finished);

@@ -42,9 +42,25 @@ void for_target_chunks(std::size_t n, std::size_t interactions, Sum&& sum) {
   }
 }
 
+/// The trailing-edge vortex's least distance behind the edge, as a fraction of the last
+/// panel's chord: when the edge is momentarily at rest relative to the air (a start from
+/// rest, a stroke reversal without rotation) the last rings still close behind it.
+inline constexpr double kMinTrailingEdgeVortexFraction = 0.01;
+
 /// Rings, collocation points, normals, tangents, areas and surface velocities from the nodes.
+/// Ring corners at the quarter of each panel. The last rings' rear (trailing-edge) segment,
+/// where the wake's newest row is attached, lies on the path the trailing edge travelled
+/// relative to the air in the last step, a quarter of the way back:
+///   r_j = x_j + ¼ (V∞ − v_j) Δt
+/// at trailing-edge node j (v_j its velocity: the wing's motion and deformation), without
+/// the component along the edge and at least kMinTrailingEdgeVortexFraction Δx_j behind
+/// it along the last panel's chordwise direction (Δx_j that panel's chord). The vorticity
+/// shed in a step spans that path, and its lumped vortex sits at its quarter like every
+/// vortex of the lattice (Katz & Plotkin §13.12: the latest wake vortex 0.2–0.3 of the
+/// distance travelled in one step behind the trailing edge). dt = 0 (the steady solve,
+/// nothing shed; the segment carries no net circulation): ¼ Δx_j along the chord.
 void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
-                     const Eigen::Matrix3Xd& node_velocities);
+                     const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt);
 
 /// Influence matrix a(i, k) = (velocity of unit ring k at collocation point i) · n_i.
 void build_influence(const VortexLatticeModel& m, VortexLatticeData& d);

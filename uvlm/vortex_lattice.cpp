@@ -3,6 +3,7 @@
 #include "uvlm/biot_savart_kernel.hpp"
 #include "uvlm/lattice_internal.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -48,6 +49,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   influence.setZero(np, np);
   lu = Eigen::PartialPivLU<Eigen::MatrixXd>(np);
   factorised_nodes.setZero(3, nn);
+  factorised_ring_nodes.setZero(3, nn);
   rhs.setZero(np);
 
   // One spare row: the steady solve's horseshoe row and the row being shed.
@@ -90,16 +92,45 @@ Eigen::Vector3d moment_about(const PanelLoads& loads, const Eigen::Vector3d& poi
 
 namespace detail {
 
+namespace {
+
+/// Corner of the last rings' rear segment at trailing-edge node j (update_geometry in
+/// lattice_internal.hpp): a quarter of the step's path of the edge relative to the air,
+/// s = ¼ (V∞ − v_j) Δt, without its component along the edge, and at least
+/// kMinTrailingEdgeVortexFraction of the last panel's chord behind the edge; a quarter of
+/// that chord when there is no time step (the steady solve).
+Eigen::Vector3d trailing_edge_vortex_node(const VortexLatticeModel& m, const Eigen::Matrix3Xd& P,
+                                          const Eigen::Matrix3Xd& V, int j,
+                                          const Eigen::Vector3d& free_stream, double dt) {
+  const int nc = m.chordwise, ns = m.spanwise;
+  const Eigen::Vector3d te = P.col(m.node(nc, j)), last = te - P.col(m.node(nc - 1, j));
+  const double panel = last.norm();  // chord of the trailing-edge panel [m]
+  if (!(dt > 0.0) || !(panel > 0.0)) return te + 0.25 * last;  // steady, or a tip of zero chord
+  const Eigen::Vector3d t = last / panel;  // chordwise, toward the wake
+  const Eigen::Vector3d e =
+      (P.col(m.node(nc, std::min(j + 1, ns))) - P.col(m.node(nc, std::max(j - 1, 0)))).normalized();
+  const double cos_te = t.dot(e);
+  const double min_behind = kMinTrailingEdgeVortexFraction * panel;
+  const Eigen::Vector3d s = 0.25 * dt * (free_stream - V.col(m.node(nc, j)));  // [m]
+  if (!(1.0 - cos_te * cos_te > 1e-12)) return te + std::max(s.norm(), min_behind) * t;  // degenerate corner
+  const Eigen::Vector3d n = e.cross(t).normalized();
+  // s = (s·n) n + a t + b e: keep the normal and chordwise parts, the latter at least min_behind.
+  const Eigen::Vector3d w = s - s.dot(n) * n;
+  const double a = (w.dot(t) - w.dot(e) * cos_te) / (1.0 - cos_te * cos_te);
+  return te + s.dot(n) * n + std::max(a, min_behind) * t;
+}
+
+}  // namespace
+
 void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& P,
-                     const Eigen::Matrix3Xd& V) {
+                     const Eigen::Matrix3Xd& V, const Eigen::Vector3d& free_stream, double dt) {
   const int nc = m.chordwise, ns = m.spanwise;
   d.nodes = P;
   d.node_velocities = V;
   for (int j = 0; j <= ns; ++j) {
     for (int i = 0; i < nc; ++i)
       d.ring_nodes.col(m.node(i, j)) = P.col(m.node(i, j)) + 0.25 * (P.col(m.node(i + 1, j)) - P.col(m.node(i, j)));
-    d.ring_nodes.col(m.node(nc, j)) =
-        P.col(m.node(nc, j)) + 0.25 * (P.col(m.node(nc, j)) - P.col(m.node(nc - 1, j)));
+    d.ring_nodes.col(m.node(nc, j)) = trailing_edge_vortex_node(m, P, V, j, free_stream, dt);
   }
   for (int j = 0; j < ns; ++j)
     for (int i = 0; i < nc; ++i) {
@@ -257,10 +288,11 @@ void wake_velocity_at_collocation(const VortexLatticeModel& m, VortexLatticeData
 }
 
 void refactorise_if_moved(const VortexLatticeModel& m, VortexLatticeData& d) {
-  if (d.has_factorisation && d.nodes == d.factorised_nodes) return;
+  if (d.has_factorisation && d.nodes == d.factorised_nodes && d.ring_nodes == d.factorised_ring_nodes) return;
   detail::build_influence(m, d);
   d.lu.compute(d.influence);
   d.factorised_nodes = d.nodes;
+  d.factorised_ring_nodes = d.ring_nodes;
   d.has_factorisation = true;
 }
 
@@ -273,7 +305,7 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   d.free_stream = free_stream;
   d.dt = dt;
   d.rho = rho;
-  detail::update_geometry(m, d, nodes, node_velocities);
+  detail::update_geometry(m, d, nodes, node_velocities, free_stream, dt);
   refactorise_if_moved(m, d);
   detail::attach_wake_to_trailing_edge(m, d);
   detail::build_wake_segments(m, d, detail::WakeView::Wing);
@@ -304,7 +336,7 @@ void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen
   d.free_stream = free_stream;
   d.dt = 1.0;
   d.rho = rho;
-  detail::update_geometry(m, d, nodes, zero);
+  detail::update_geometry(m, d, nodes, zero, free_stream, 0.0);  // no time step: ¼ panel
   detail::build_influence(m, d);
   d.has_factorisation = false;  // the matrix below includes the wake
 

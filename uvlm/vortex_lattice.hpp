@@ -12,7 +12,10 @@
 ///      the free stream only) and sheds one row from the trailing edge.
 ///
 /// Lattice: vortex rings whose leading edge lies at the quarter chord of each panel;
-/// the last ring's trailing segment lies a quarter panel chord behind the trailing edge.
+/// the last ring's trailing segment (where the wake is attached) lies on the path the
+/// trailing edge travelled relative to the air in the last step, a quarter of the way back
+/// (Katz & Plotkin §13.12; lattice_internal.hpp update_geometry), in the steady solve a
+/// quarter panel chord behind the edge.
 /// Collocation points at the three-quarter chord point of each panel, normals from the
 /// panel diagonals. Kutta condition (Katz & Plotkin §13.12): the wake ring shed at the
 /// end of a step carries the trailing-edge circulation of that step (Kelvin's theorem),
@@ -178,6 +181,7 @@ struct VortexLatticeData {
   Eigen::MatrixXd influence;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
   Eigen::Matrix3Xd factorised_nodes;
+  Eigen::Matrix3Xd factorised_ring_nodes;  ///< the trailing-edge vortex moves with the edge's speed
   bool has_factorisation = false;
   Eigen::VectorXd rhs;
 

@@ -17,11 +17,12 @@ struct InputWarning {
 
   /// "FILE:LINE: key 'KEY': MESSAGE", as InputError::what().
   std::string text() const {
-    std::string s = file.empty() ? std::string("<input>") : file;
-    if (line > 0) s += ":" + std::to_string(line);
-    s += ": ";
-    if (!key.empty()) s += "key '" + key + "': ";
-    return s + message;
+    std::string s(file.empty() ? "<input>" : file);  // appended only (input_error.hpp: GCC bug 105329)
+    if (line > 0) s.append(":").append(std::to_string(line));
+    s.append(": ");
+    if (!key.empty()) s.append("key '").append(key).append("': ");
+    s.append(message);
+    return s;
   }
 };
 

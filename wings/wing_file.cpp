@@ -123,9 +123,9 @@ void check_plate(const TomlTable& t, double thickness_m, std::vector<InputWarnin
 // (uvlm/planform_grid.hpp). An outline that a chordwise line crosses more than twice (a
 // slot from the tip, a hooked edge) leaves a gap the lattice covers: say where, when the
 // gap is more than kLatticeGapShare of the wing (a digitised edge's wiggles are not).
+// The FEM stages warn; a run in air refuses the wing (pipeline/app/fsi_setup.cpp).
 constexpr double kLatticeGapShare = 0.01;
-void check_sections(const TomlTable& p, const std::vector<Eigen::Vector2d>& outline,
-                    std::vector<InputWarning>& warnings) {
+LatticeGap lattice_gap(const TomlTable& p, const std::vector<Eigen::Vector2d>& outline) {
   std::vector<double> ys;
   for (const auto& q : outline) ys.push_back(q.y());
   std::sort(ys.begin(), ys.end());
@@ -153,19 +153,32 @@ void check_sections(const TomlTable& p, const std::vector<Eigen::Vector2d>& outl
     most = std::max(most, static_cast<int>(xs.size()));
   }
   const double area = polygon_area(outline);
-  if (most == 0 || !(gap_area > kLatticeGapShare * area)) return;
-  std::string key = "outline";
+  LatticeGap g;
+  if (most == 0 || !(gap_area > kLatticeGapShare * area)) return g;
+  g.area_share = gap_area / area;
+  g.y_from = lo;
+  g.y_to = hi;
+  g.crossings = most;
+  g.key = "outline";
   for (const char* k : {"outline", "spline", "outline_file", "shape"})
     if (p.has(k)) {
-      key = k;
+      g.key = k;
       break;
     }
-  warn(warnings, p, key,
-       "from y = " + fmt(lo / p.length_scale()) + " to " + fmt(hi / p.length_scale()) + " " + p.length_unit() +
-           " a line along the chord crosses the outline " + std::to_string(most) +
-           " times (a slot or a hooked edge): the vortex lattice of a run in air spans each section from its "
-           "leading to its trailing edge and covers the gap, " + fmt(100.0 * gap_area / area) +
-           " % of the wing's area (the FEM follows the outline)");
+  g.description = "from y = " + fmt(lo / p.length_scale()) + " to " + fmt(hi / p.length_scale()) + " " +
+                  p.length_unit() + " a line along the chord crosses the outline " + std::to_string(most) +
+                  " times (a slot or a hooked edge): the vortex lattice of a run in air spans each section from "
+                  "its leading to its trailing edge and would cover the gap, " + fmt(100.0 * g.area_share) +
+                  " % of the wing's area";
+  g.file = p.file();
+  g.line = p.line_of(g.key);
+  g.key = p.key_path(g.key);
+  return g;
+}
+
+void warn_lattice_gap(const LatticeGap& g, std::vector<InputWarning>& warnings) {
+  if (!(g.area_share > 0.0)) return;
+  warnings.push_back({g.file, g.line, g.key, g.description + "; the FEM follows the outline, a run in air refuses it"});
 }
 
 Material read_material(const TomlTable& t, std::vector<InputWarning>& warnings) {
@@ -494,7 +507,8 @@ Wing read_wing(TomlTable root) {
   const PlanformProperties props = planform_properties(wing.outline);
   wing.span = props.span;
   check_span(root.get_table("planform"), wing.span, wing.warnings);
-  check_sections(root.get_table("planform"), wing.outline, wing.warnings);
+  wing.lattice_gap = lattice_gap(root.get_table("planform"), wing.outline);
+  warn_lattice_gap(wing.lattice_gap, wing.warnings);
 
   const TomlTable mem = root.get_table("membrane");
   mem.expect_only({"thickness", "material", "nonstructural_mass_per_area"});

@@ -54,6 +54,21 @@ struct MeshSettings {
   double vein_element_size = 0.0;  ///< target element size along veins [m] (<= element_size)
 };
 
+/// Where the outline has a gap along the chord that the vortex lattice cannot follow: a
+/// line y = const that crosses the outline more than twice (a slot from the tip, a hooked
+/// edge). The lattice spans each section from its leading to its trailing edge
+/// (uvlm/planform_grid.hpp) and would cover the gap; the FEM follows the outline.
+struct LatticeGap {
+  double area_share = 0.0;  ///< gap area over the wing's area (0: none)
+  double y_from = 0.0, y_to = 0.0;  ///< the band of such sections [m]
+  int crossings = 0;        ///< the most crossings of one section
+  /// "from y = 15 to 40 mm a line along the chord crosses the outline 4 times (a slot or a
+  /// hooked edge): the vortex lattice … would cover the gap, 33.3 % of the wing's area"
+  std::string description;
+  std::string file, key;    ///< where the outline is given
+  int line = 0;
+};
+
 /// The whole wing.
 struct Wing {
   std::string name;         ///< short name, e.g. "hawkmoth" (from the file)
@@ -68,6 +83,9 @@ struct Wing {
   double clamp_y = 0.0;
   /// Accepted but implausible values (wing_file.hpp, "Plausibility"), in file order.
   std::vector<InputWarning> warnings;
+  /// A gap the vortex lattice would cover (area_share 0 if none or negligible, below 1 %);
+  /// a run in air refuses such a wing (app/fsi_setup), the FEM stages warn.
+  LatticeGap lattice_gap;
 };
 
 }  // namespace flapsim::wings

@@ -135,6 +135,16 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
     throw InputError(c.file, 0, "wing",
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "
                      "file, or set air = \"none\" for a vacuum run of the chain");
+  // An outline with a gap along the chord (a slot): the lattice would cover it and give the
+  // lift of a wing that is not there (wings::LatticeGap, docs/wing_file.md).
+  if (c.air.enabled && s.wing->lattice_gap.area_share > 0.0) {
+    const wings::LatticeGap& g = s.wing->lattice_gap;
+    throw InputError(g.file, g.line, g.key,
+                     g.description + ". The lattice cannot follow this outline, so this case cannot run in air. "
+                     "To run it anyway with the gap covered: a wing file with the gap closed for the case and "
+                     "the chain of this wing from 'flapsim reduce' (the FEM follows the outline) with --chain "
+                     "(docs/wing_file.md, \"Outlines the vortex lattice cannot follow\")");
+  }
 
   FsiModel& m = s.model;
   StructureChoice structure = choose_structure(c, options.chain_file, s.wing ? &*s.wing : nullptr);

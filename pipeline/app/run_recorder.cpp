@@ -43,7 +43,8 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
       vtk_every_(vtk_every),
       started_(started),
       outer_body_(fsi::outer_body(setup.model.chain)),
-      history_(dir_ / "history.csv", history_header(c, setup.model.chain), 20),
+      history_(dir_ / "history.csv", history_header(c, setup.model.chain), kHistoryPublishEvery,
+               kHistoryMaxPublishInterval),
       row_(history_.columns().size()) {
   const fsi::FsiModel& model = setup.model;
   if (vtk_every_ > 0) {

@@ -21,6 +21,12 @@
 
 namespace flapsim::app {
 
+/// history.csv is published (a copy flushed to disk and renamed onto it,
+/// docs/output_files.md) after 20, 40, 80, … steps, at the latest 2 s after the last
+/// publication (once 20 steps are new), and at the end.
+inline constexpr int kHistoryPublishEvery = 20;
+inline constexpr std::chrono::steady_clock::duration kHistoryMaxPublishInterval = std::chrono::seconds(2);
+
 class RunRecorder {
  public:
   /// \brief Creates the output folder, opens history.csv (and the series if vtk_every > 0)

@@ -106,7 +106,7 @@ std::string run_report(const RunResults& results) {
       out += t.substr(pos, open - pos);
       const std::size_t i = index_of(t.substr(open + 1, close - open - 1));
       out += format_result(results, i);
-      if (!kRunResults[i].unit.empty()) out += " " + std::string(kRunResults[i].unit);
+      if (!kRunResults[i].unit.empty()) out.append(" ").append(kRunResults[i].unit);
       pos = close + 1;
     }
     out += "\n";

@@ -117,13 +117,18 @@ mbd::ChainModel parse_chain(const TomlTable& root) {
 }
 
 std::string vec3(const Eigen::Vector3d& v) {
-  return "[" + format_number(v.x()) + ", " + format_number(v.y()) + ", " +
-         format_number(v.z()) + "]";
+  // Appended piece by piece: GCC 12's -Wrestrict misfires on `"[" + std::string&&` (GCC bug 105329).
+  std::string s("[");
+  s.append(format_number(v.x())).append(", ").append(format_number(v.y())).append(", ");
+  s.append(format_number(v.z())).append("]");
+  return s;
 }
 
 std::string mat3(const Eigen::Matrix3d& m) {
-  return "[" + vec3(m.row(0).transpose()) + ", " + vec3(m.row(1).transpose()) + ", " +
-         vec3(m.row(2).transpose()) + "]";
+  std::string s("[");
+  s.append(vec3(m.row(0).transpose())).append(", ").append(vec3(m.row(1).transpose())).append(", ");
+  s.append(vec3(m.row(2).transpose())).append("]");
+  return s;
 }
 
 }  // namespace

@@ -55,10 +55,13 @@ std::string format_number(double value) {
 }
 
 CsvTimeSeriesWriter::CsvTimeSeriesWriter(fs::path path, std::vector<std::string> columns,
-                                         int publish_every)
-    : path_(std::move(path)), columns_(std::move(columns)), publish_every_(publish_every) {
+                                         int publish_every, std::chrono::steady_clock::duration max_interval)
+    : path_(std::move(path)), columns_(std::move(columns)), publish_every_(publish_every),
+      max_interval_(max_interval) {
   if (columns_.empty()) throw std::invalid_argument("CSV time series: no columns");
   if (publish_every_ < 1) throw std::invalid_argument("CSV time series: publish_every must be >= 1");
+  if (max_interval_ < std::chrono::steady_clock::duration::zero())
+    throw std::invalid_argument("CSV time series: max_interval must be >= 0");
   ensure_directory(path_.parent_path());
   working_ = temporary_path(path_);
   staging_ = working_;
@@ -88,7 +91,12 @@ void CsvTimeSeriesWriter::append(std::span<const double> values) {
                                 std::to_string(columns_.size()) + " columns");
   write_row(stream_, values);
   ++rows_;
-  if (rows_ - published_ >= static_cast<std::size_t>(publish_every_)) publish();
+  const std::size_t fresh = rows_ - published_;
+  if (fresh < static_cast<std::size_t>(publish_every_)) return;
+  if (max_interval_ > std::chrono::steady_clock::duration::zero() && fresh < published_ &&
+      std::chrono::steady_clock::now() - last_publication_ < max_interval_)
+    return;
+  publish();
 }
 
 void CsvTimeSeriesWriter::publish() {
@@ -109,6 +117,7 @@ void CsvTimeSeriesWriter::publish() {
   }
   replace_file(staging_, path_);
   published_ = rows_;
+  last_publication_ = std::chrono::steady_clock::now();
 }
 
 void CsvTimeSeriesWriter::close() {

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <chrono>
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
@@ -36,15 +37,25 @@ class CsvTimeSeriesWriter {
   /// \param path           the published file; its directory is created if missing
   /// \param columns        column names with units, e.g. {"t_s", "lift_N"}
   /// \param publish_every  rows between publications (≥ 1)
+  /// \param max_interval   0: publish every publish_every rows. Otherwise the rows between
+  ///                       publications grow with the series — publish_every rows at
+  ///                       first, then as many as are published (20, 40, 80, … rows) —
+  ///                       but a publication is due at the latest max_interval (wall time)
+  ///                       after the last one (once publish_every rows are new). Each
+  ///                       publication copies the file and flushes it to disk (fsync, a
+  ///                       few milliseconds on a busy disk), so a fast run publishes a
+  ///                       few times instead of every few steps (docs/output_files.md).
   /// \throws OutputError if the files cannot be written; std::invalid_argument on
-  ///         no columns or publish_every < 1
+  ///         no columns, publish_every < 1 or max_interval < 0
   CsvTimeSeriesWriter(std::filesystem::path path, std::vector<std::string> columns,
-                      int publish_every = 10);
+                      int publish_every = 10,
+                      std::chrono::steady_clock::duration max_interval = std::chrono::steady_clock::duration::zero());
   ~CsvTimeSeriesWriter();
   CsvTimeSeriesWriter(const CsvTimeSeriesWriter&) = delete;
   CsvTimeSeriesWriter& operator=(const CsvTimeSeriesWriter&) = delete;
 
-  /// \brief Appends one row; publishes when publish_every rows have accumulated.
+  /// \brief Appends one row; publishes when publish_every rows have accumulated (with a
+  /// max_interval: and as many as are published, or max_interval has passed).
   /// \param values  one value per column
   /// \throws std::invalid_argument on a wrong number of values; OutputError on I/O failure
   void append(std::span<const double> values);
@@ -70,6 +81,8 @@ class CsvTimeSeriesWriter {
   std::filesystem::path path_, working_, staging_;
   std::vector<std::string> columns_;
   int publish_every_;
+  std::chrono::steady_clock::duration max_interval_;
+  std::chrono::steady_clock::time_point last_publication_;
   std::ofstream stream_;
   std::size_t rows_ = 0, published_ = 0;
   bool closed_ = false;

@@ -13,11 +13,11 @@ namespace flapsim::io {
 // else two runs that differ in it would share a hash (and a sweep re-run would keep a
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
-// (Case::Structure::bodies_line, initial_angles_line, initial_rates_line locate messages, Case::warnings and Wing::warnings warn; they change no result.)
+// (Case::Structure::bodies_line, initial_angles_line, initial_rates_line locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run; they change no result.)
 static_assert(sizeof(Case) == 1328, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
-static_assert(sizeof(wings::Wing) == 208, "wings::Wing changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::Wing) == 344, "wings::Wing changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Vein) == 160, "wings::Vein changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Section) == 40,
               "wings::Section changed: add the new field to canonical_inputs()");
@@ -36,8 +36,8 @@ class Canonical {
   }
   template <typename Vec>
   void vector(std::string_view name, const Vec& v) {
-    text_ += std::string(name) + "=";
-    for (Eigen::Index i = 0; i < v.size(); ++i) text_ += (i ? "," : "") + format_number(v[i]);
+    text_.append(name).append("=");
+    for (Eigen::Index i = 0; i < v.size(); ++i) text_.append(i ? "," : "").append(format_number(v[i]));
     text_ += "\n";
   }
   // A periodic signal is known by its samples: value, d/ds, d²/ds² at s = k/64.

@@ -148,7 +148,7 @@ void claim_output_folder(const fs::path& dir, const std::string& command, bool f
   Manifest m = read_manifest(dir);
   const std::vector<std::string> mine = command_outputs(command);
   // Another command's outputs that this command would replace.
-  for (const std::string& other : {"mesh", "modes", "reduce", "run"}) {
+  for (const std::string other : {"mesh", "modes", "reduce", "run"}) {
     if (other == command) continue;
     const auto clash = shared(mine, command_outputs(other));
     if (clash.empty()) continue;
@@ -192,7 +192,9 @@ OutputFolderClaim::OutputFolderClaim(fs::path dir, std::string command)
     : dir_(std::move(dir)), command_(std::move(command)) {}
 
 OutputFolderClaim::~OutputFolderClaim() {
-  if (!open_) return;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (state_ != State::open) return;
+  state_ = State::ended;
   try {
     record_command_status(dir_, command_, "failed");
   } catch (...) {
@@ -201,13 +203,25 @@ OutputFolderClaim::~OutputFolderClaim() {
 }
 
 void OutputFolderClaim::claim(bool force) {
+  const std::lock_guard<std::mutex> lock(mutex_);
   claim_output_folder(dir_, command_, force);
-  open_ = true;
+  state_ = State::open;
 }
 
 void OutputFolderClaim::finish(const std::string& status) {
-  open_ = false;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (state_ == State::ended) return;
+  state_ = State::ended;
   record_command_status(dir_, command_, status);
+}
+
+OutputFolderClaim::State OutputFolderClaim::end_if_open(const std::string& status) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const State found = state_;
+  if (found != State::open) return found;
+  state_ = State::ended;
+  record_command_status(dir_, command_, status);
+  return found;
 }
 
 }  // namespace flapsim::io

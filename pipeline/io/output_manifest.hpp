@@ -13,6 +13,7 @@
 /// live side by side in one folder. Format: docs/output_files.md, "The output folder".
 
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ void record_command_status(const std::filesystem::path& dir, const std::string& 
 /// by an exception after claiming (an output error, a numerical failure, anything) records
 /// "failed" as it goes, so the manifest never keeps "running" for a command that ended.
 /// That last record is best effort (on a full disk the manifest may stay as it was).
+/// The manifest is written under a lock: a signal watcher on another thread
+/// (pipeline/app/stage_monitor.hpp) may end the claim with "interrupted" while the command
+/// itself finishes it; the first end recorded is the one that stays.
 class OutputFolderClaim {
  public:
   OutputFolderClaim(std::filesystem::path dir, std::string command);
@@ -51,12 +55,25 @@ class OutputFolderClaim {
   /// claim_output_folder(dir, command, force).
   void claim(bool force);
   /// record_command_status with "complete", "failed" or "interrupted"; ends the claim.
+  /// Does nothing if the claim was already ended (by end_if_open from another thread).
   void finish(const std::string& status);
+
+  /// How the command stands, for a watcher on another thread.
+  enum class State { unclaimed, open, ended };
+  /// \brief Ends an open claim with \p status (as finish) and returns the state it found:
+  /// open (recorded now), unclaimed (nothing written yet; nothing recorded) or ended
+  /// (the command had finished; nothing changed).
+  /// \throws OutputError if the manifest cannot be written
+  State end_if_open(const std::string& status);
+
+  const std::filesystem::path& dir() const { return dir_; }
+  const std::string& command() const { return command_; }
 
  private:
   std::filesystem::path dir_;
   std::string command_;
-  bool open_ = false;
+  std::mutex mutex_;  // guards state_ and the manifest's writes
+  State state_ = State::unclaimed;
 };
 
 }  // namespace flapsim::io

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -122,6 +124,28 @@ TEST(OutputCsv, TimeSeriesPublishesEveryNRowsAndOnClose) {
   expect_valid_series(file, 3, 7);
   EXPECT_TRUE(dir.temporaries().empty()) << dir.temporaries().front();
   EXPECT_EQ(dir.files(), std::vector<std::string>{"history.csv"});
+}
+
+TEST(OutputCsv, TimeSeriesWithAMaximumIntervalPublishesAfterTwiceTheRows) {
+  // publish_every 2, at most an hour between publications: published after 2, 4, 8 and 16
+  // rows (each time as many new rows as were published), then at close().
+  ScratchDir dir("csv_series_interval");
+  const fs::path file = dir / "history.csv";
+  CsvTimeSeriesWriter w(file, {"t_s", "lift_N"}, 2, std::chrono::hours(1));
+  for (std::size_t rows = 1; rows <= 20; ++rows) {
+    w.append({static_cast<double>(rows - 1) * 0.001, 1.0 + static_cast<double>(rows)});
+    const std::size_t expected = rows < 2 ? 0 : rows < 4 ? 2 : rows < 8 ? 4 : rows < 16 ? 8 : 16;
+    EXPECT_EQ(w.published_rows(), expected) << "after row " << rows;
+    expect_valid_series(file, 2, w.published_rows());
+  }
+  w.close();
+  expect_valid_series(file, 2, 20);
+  EXPECT_TRUE(dir.temporaries().empty());
+  // The interval long past at every row (1 ns): every 2 rows, as without one.
+  CsvTimeSeriesWriter due(dir / "due.csv", {"t_s"}, 2, std::chrono::nanoseconds(1));
+  for (int i = 0; i < 9; ++i) due.append({i * 0.001});
+  EXPECT_EQ(due.published_rows(), 8u);
+  EXPECT_THROW(CsvTimeSeriesWriter(dir / "bad.csv", {"t_s"}, 2, -std::chrono::seconds(1)), std::invalid_argument);
 }
 
 TEST(OutputCsv, TimeSeriesOfAKilledProcessIsValidUpToTheLastPublication) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "fem/wing_mesher.hpp"
+#include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/io/fem_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
@@ -33,7 +34,10 @@ void run_mesh(const MeshArgs& args) {
   // 2. The output folder, writable before any work (else exit 4 naming it).
   const std::filesystem::path dir(args.out_dir);
   io::OutputFolderClaim claim(dir, "mesh");
+  // SIGINT/SIGTERM: "interrupted" in the manifest, exit 130/143 at once; progress of a long mesh.
+  app::StageMonitor monitor(claim, 2);
   claim.claim(args.force);
+  monitor.stage("meshing (gmsh)");
   // 3. Mesh; gmsh saves the mesh to a staging name (with the .msh extension gmsh needs);
   // it is published as mesh.msh only if complete (gmsh does not report a failed write:
   // the file must end with its $EndElements section), flushed to disk and renamed.
@@ -55,10 +59,12 @@ void run_mesh(const MeshArgs& args) {
       },
       "$EndElements\n");
   // 4. The same mesh for ParaView.
+  monitor.stage("writing the outputs");
   io::write_vtu(dir / "mesh.vtu", io::fem_unstructured_mesh(mesh, wing.clamp_y));
   std::printf("%s: %d nodes, %zu membrane triangles, %zu vein elements (%zu veins)\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), mesh.vein_names.size());
   claim.finish("complete");
+  monitor.done();
   std::printf("wrote %s, %s\n", (dir / "mesh.msh").string().c_str(), (dir / "mesh.vtu").string().c_str());
 }
 
@@ -71,7 +77,8 @@ void add_mesh_command(CLI::App& app) {
       "elements sharing its nodes (gmsh). Sizes from the wing file's [mesh] table.\n"
       "Writes DIR/mesh.msh (gmsh) and DIR/mesh.vtu (ParaView; cell data 'vein', point\n"
       "data 'clamped'). Exit status: 0 ok, 2 bad input (gmsh errors name the key),\n"
-      "4 output error (nothing truncated is left under a final name).");
+      "4 output error (nothing truncated is left under a final name), 130/143 interrupted by\n"
+      "SIGINT/SIGTERM (at once; flapsim_outputs.toml says \"interrupted\").");
   auto args = std::make_shared<MeshArgs>();
   cmd->add_option("WING", args->wing_file, "wing file (TOML)")->required();
   cmd->add_option("-o,--output", args->out_dir, "output directory")->capture_default_str();

@@ -17,6 +17,7 @@
 #include "fem/static_solver.hpp"
 #include "fem/wing_fem.hpp"
 #include "pipeline/app/numerical_stage.hpp"
+#include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/fem_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
@@ -67,13 +68,18 @@ void run_modes(const ModesArgs& args) {
   print_wing_warnings(wing);
   const std::filesystem::path dir(args.out_dir);
   io::OutputFolderClaim claim(dir, "modes");
+  // SIGINT/SIGTERM: "interrupted" in the manifest, exit 130/143 at once; progress of long stages.
+  app::StageMonitor monitor(claim, 5);
   claim.claim(args.force);
   // 2. Mesh, K and M, root clamp; a failing solver is a numerical failure (exit 3).
+  monitor.stage("mesh and FEM matrices");
   const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
   const fem::Mesh& mesh = fem.model.mesh;
   // 3. Lowest modes of the clamped wing, classified by shape.
+  monitor.stage("FEM modes");
   const fem::WingModes m = app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, args.modes); });
   // 4. Static tip load cases (unit loads) with one factorisation.
+  monitor.stage("static load cases");
   std::vector<io::StaticResult> results = app::numerical_stage("FEM static load cases", [&] {
     const fem::StaticSolver statics(fem.system.stiffness, fem.root_clamp);
     std::vector<io::StaticResult> out;
@@ -85,12 +91,15 @@ void run_modes(const ModesArgs& args) {
     return out;
   });
   // 5. Mode names from the stations of the chain (docs/reduction.md).
+  monitor.stage("mode names");
   const std::vector<io::ModeLabel> labels =
       app::numerical_stage("mode names", [&] { return mode_labels(fem, m, args.bodies); });
   // 6. Outputs (each atomic).
+  monitor.stage("writing the outputs");
   io::write_modes_csv(dir / "modes.csv", m.modes, labels);
   io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, labels, results);
   claim.finish("complete");
+  monitor.done();
 
   std::printf("%s: %d nodes, %zu triangles, %zu vein elements, FEM mass %.4f mg\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), fem.system.total_mass * 1e6);
@@ -120,7 +129,8 @@ void add_modes_command(CLI::App& app) {
       "mode_NN_frequency_Hz, mode_NN_kind, mode_NN_beam_share, mode_NN_shape_kind,\n"
       "mode_NN_scale) and static_<case>_m_per_N[_m]\n"
       "(displacement per unit load). Exit status: 0 ok, 2 bad input, 3 numerical failure\n"
-      "of the FEM, 4 output error.");
+      "of the FEM, 4 output error, 130/143 interrupted by SIGINT/SIGTERM (at once;\n"
+      "flapsim_outputs.toml says \"interrupted\"). A stage over 2 s is shown on stderr.");
   auto args = std::make_shared<ModesArgs>();
   cmd->add_option("WING", args->wing_file, "wing file (TOML)")->required();
   cmd->add_option("-o,--output", args->out_dir, "output directory")->capture_default_str();

@@ -16,6 +16,7 @@
 
 #include "fem/wing_fem.hpp"
 #include "pipeline/app/numerical_stage.hpp"
+#include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/io/chain_file.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
@@ -55,27 +56,37 @@ void run_reduce(const ReduceOptions& o) {
                                  : reduction::AxisChoice::flexural;
   const fs::path dir(o.out_dir);
   io::OutputFolderClaim claim(dir, "reduce");
+  // SIGINT/SIGTERM: "interrupted" in the manifest, exit 130/143 at once; progress of long stages.
+  app::StageMonitor monitor(claim, 7);
   claim.claim(o.force);  // unwritable: exit 4 before any work
   // A failing solve in the FEM or the reduction is a numerical failure (exit 3).
+  monitor.stage("mesh and FEM matrices");
   const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
+  monitor.stage("FEM modes");
   const fem::WingModes modes = app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, o.modes); });
+  monitor.stage("static load cases of the clamped wing");
   const reduction::ClampedWingAnalysis analysis = app::numerical_stage(
       "reduction", [&] { return reduction::ClampedWingAnalysis(fem.model.mesh, fem.system, fem.root_clamp, ao); });
+  monitor.stage("beam properties");
   const reduction::BeamProperties beam =
       app::numerical_stage("reduction", [&] { return reduction::extract_beam_properties(analysis, o.stations); });
   io::write_beam_csv(dir / "beam.csv", beam);  // written even if the chain cannot be made
   const reduction::SpringModel springs =
       o.springs == "diagonal" ? reduction::SpringModel::diagonal : reduction::SpringModel::full;
+  monitor.stage("bar chain");
   const reduction::LumpedChain lc = app::numerical_stage("cannot reduce " + o.wing_file + " to " +
                                                              std::to_string(o.bodies) + " bodies",
                                                          [&] { return reduction::lump_into_chain(analysis, o.bodies, springs); });
+  monitor.stage("chain against the FEM");
   const reduction::ChainFemComparison cmp = app::numerical_stage(
       "reduction", [&] { return reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds); });
+  monitor.stage("writing the outputs");
   io::write_chain_file(dir / "chain.toml", lc.chain);
   io::write_reduction_vtk(dir, beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
   io::write_reduction_summary(dir / "summary.json", beam, lc, cmp);
   claim.finish("complete");
+  monitor.done();
   if (beam.fitted_axis_rejected) std::cerr << "reduce: " << io::fitted_axis_note(beam) << "\n";
   // A kind the FEM's first modes do not show (too few --modes) is said, not printed as 0 Hz.
   auto match = [](const char* kind, const reduction::ModeMatch& m) {
@@ -109,7 +120,10 @@ void add_reduce_command(CLI::App& app) {
       "DIR/chain.toml (bodies and the joint stiffness, for 'flapsim run'), DIR/reduction.vtm (stations, bodies,\n"
       "joints, centres of mass),\n"
       "DIR/report.md and DIR/summary.json (chain vs FEM: first bending and torsion\n"
-      "frequencies, MAC, static tip deflection and twist). Method: docs/reduction.md.");
+      "frequencies, MAC, static tip deflection and twist). Method: docs/reduction.md.\n"
+      "A stage over 2 s is shown on stderr. Exit status: 0 ok, 2 bad input, 3 numerical failure\n"
+      "of the FEM or the reduction, 4 output error, 130/143 interrupted by SIGINT/SIGTERM\n"
+      "(at once; flapsim_outputs.toml says \"interrupted\").");
   auto o = std::make_shared<ReduceOptions>();
   cmd->add_option("WING", o->wing_file, "wing file (TOML)")->required();
   cmd->add_option("-o,--output", o->out_dir, "output directory")->required();

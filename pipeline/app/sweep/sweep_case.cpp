@@ -85,7 +85,7 @@ std::string case_folder(std::size_t index, std::size_t count, const CasePoint& p
   char head[32];
   std::snprintf(head, sizeof head, "%0*zu", digits, index);
   std::string name = head;
-  for (const Assignment& a : point) name += "_" + value_label(a.value);
+  for (const Assignment& a : point) name.append("_").append(value_label(a.value));
   return name;
 }
 

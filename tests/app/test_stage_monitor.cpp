@@ -1,0 +1,95 @@
+// The progress of the long stages of `mesh`, `modes` and `reduce` (pipeline/app/stage_monitor.hpp).
+// Before: a low-aspect-ratio wing's `reduce` ran for a minute without a word. Now a stage
+// that lasts longer than a threshold (2 s in the commands; 30 ms here) is shown on stderr,
+// rate-limited; short stages print nothing.
+#include "pipeline/app/stage_monitor.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include "common/scratch_dir.hpp"
+
+using flapsim::app::StageMonitor;
+using namespace std::chrono_literals;
+
+namespace {
+
+std::string contents(std::FILE* f) {
+  std::fflush(f);
+  std::rewind(f);
+  std::string s;
+  for (int c; (c = std::fgetc(f)) != EOF;) s += static_cast<char>(c);
+  return s;
+}
+
+StageMonitor::Options log_options(std::FILE* f) {
+  StageMonitor::Options o;
+  o.show_after = 30ms;
+  o.log_interval = 60s;  // one line per stage here
+  o.display = StageMonitor::Options::Display::log;
+  o.stream = f;
+  o.watch_signals = false;
+  return o;
+}
+
+TEST(StageMonitor, ALongStageIsShownOnceAndAShortOneNot) {
+  flapsim::test::ScratchDir dir("stage_monitor_log");
+  flapsim::io::OutputFolderClaim claim(dir.path(), "reduce");
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  {
+    StageMonitor monitor(claim, 3, log_options(f));
+    monitor.stage("FEM modes");
+    std::this_thread::sleep_for(400ms);  // > show_after: shown, and only once (log_interval)
+    monitor.stage("bar chain");           // ends at once: not shown
+    monitor.done();
+  }
+  const std::string text = contents(f);
+  std::fclose(f);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  EXPECT_EQ(text.rfind("reduce: FEM modes (stage 1 of 3): ", 0), 0u) << text;
+  EXPECT_EQ(text.find("bar chain"), std::string::npos) << text;
+}
+
+TEST(StageMonitor, ALogLineIsRepeatedAtMostOncePerInterval) {
+  flapsim::test::ScratchDir dir("stage_monitor_rate");
+  flapsim::io::OutputFolderClaim claim(dir.path(), "modes");
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  StageMonitor::Options o = log_options(f);
+  o.log_interval = 200ms;
+  {
+    StageMonitor monitor(claim, 1, o);
+    monitor.stage("FEM modes");
+    std::this_thread::sleep_for(700ms);  // lines at ~30 ms, ~230, ~430, ~630 ms: at most 4
+    monitor.done();
+  }
+  const std::string text = contents(f);
+  std::fclose(f);
+  const auto lines = std::count(text.begin(), text.end(), '\n');
+  EXPECT_GE(lines, 2) << text;
+  EXPECT_LE(lines, 4) << text;
+}
+
+TEST(StageMonitor, QuietPrintsNothing) {
+  flapsim::test::ScratchDir dir("stage_monitor_quiet");
+  flapsim::io::OutputFolderClaim claim(dir.path(), "mesh");
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  StageMonitor::Options o = log_options(f);
+  o.display = StageMonitor::Options::Display::quiet;
+  {
+    StageMonitor monitor(claim, 1, o);
+    monitor.stage("meshing (gmsh)");
+    std::this_thread::sleep_for(150ms);
+  }
+  EXPECT_EQ(contents(f), "");
+  std::fclose(f);
+}
+
+}  // namespace

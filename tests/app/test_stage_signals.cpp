@@ -1,0 +1,96 @@
+// SIGINT and SIGTERM during `flapsim mesh`, `modes` and `reduce`. Before: the default action
+// killed the command at once and the folder's manifest kept `status = "running"` for a
+// command that had ended. Now (pipeline/app/stage_monitor.hpp, docs/reliability.md): the
+// manifest records "interrupted" (a valid file, written atomically), no temporary file is
+// left, and the exit status is 128 + signal (130 SIGINT, 143 SIGTERM), as for `run`.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "robustness_helpers.hpp"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using namespace flapsim::test;
+
+namespace {
+
+/// Starts `flapsim COMMAND WING -o DIR/out`, waits until the manifest says the command is
+/// running, then \p delay_ms more, sends the signal and returns the exit status (-1: no normal
+/// exit, -2: could not start, -3: ended before the signal).
+int signal_stage_command(const ScratchDir& dir, const std::string& command, const std::string& wing,
+                         int signal_number, int delay_ms) {
+  const std::string binary = FLAPSIM_BINARY;
+  const std::string out = (dir / "out").string();
+  std::vector<std::string> args{binary, command, wing, "-o", out};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (::posix_spawn(&pid, binary.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -2;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int status = 0;
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) return -3;
+    if (read_text(dir / "out" / "flapsim_outputs.toml").find("running") != std::string::npos) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+  ::kill(pid, signal_number);
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+void expect_interrupted(const ScratchDir& dir, const std::string& command) {
+  const std::string manifest = read_text(dir / "out" / "flapsim_outputs.toml");
+  EXPECT_NE(manifest.find("[" + command + "]\n"), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("status = 'interrupted'"), std::string::npos) << manifest;
+  EXPECT_EQ(manifest.find("running"), std::string::npos) << manifest;
+  EXPECT_TRUE(dir.temporaries().empty());
+  EXPECT_TRUE(truncated_files(dir, dir / "out").empty());
+}
+
+// The flat plate (wings/flat_plate.toml, 40 x 10 mm) with a 0.25 mm mesh: 14,748 triangles,
+// a few seconds of FEM, so the signal comes in the middle of a stage.
+std::string fine_plate(const ScratchDir& dir) {
+  std::ifstream in(kSourceDir + "/wings/flat_plate.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text = replace_once(text, "\nelement_size = 1.0\n", "\nelement_size = 0.25\n");
+  std::ofstream(dir / "fine_plate.toml") << replace_once(text, "\nvein_element_size = 1.0\n", "\nvein_element_size = 0.25\n");
+  return (dir / "fine_plate.toml").string();
+}
+
+TEST(StageSignals, SigtermDuringReduceRecordsInterruptedAndExits143) {
+  ScratchDir dir("stage_sigterm_reduce");
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(signal_stage_command(dir, "reduce", fine_plate(dir), SIGTERM, 300), 143);
+  // At once: the FEM stage under way is not waited for.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  expect_interrupted(dir, "reduce");
+}
+
+TEST(StageSignals, SigintDuringModesRecordsInterruptedAndExits130) {
+  ScratchDir dir("stage_sigint_modes");
+  EXPECT_EQ(signal_stage_command(dir, "modes", fine_plate(dir), SIGINT, 300), 130);
+  expect_interrupted(dir, "modes");
+}
+
+TEST(StageSignals, SigtermDuringMeshRecordsInterruptedAndExits143) {
+  ScratchDir dir("stage_sigterm_mesh");
+  EXPECT_EQ(signal_stage_command(dir, "mesh", fine_plate(dir), SIGTERM, 100), 143);
+  expect_interrupted(dir, "mesh");
+}
+
+}  // namespace
