@@ -2,11 +2,18 @@
 // wake-sized problem (6000 segments, 3300 target points), one and two threads, in double
 // precision and in the single precision the free-wake convection uses, for each kernel
 // variant this CPU runs (uvlm/kernel_dispatch.hpp: scalar, avx2, avx512).
+// BM_WakeLattice: a 3-cycle hover-like wake (uvlm/synthetic_hover_wake.hpp: 301 node rows ×
+// 11 nodes, 6311 segments, cores grown with age; about the size of cases/bench_hover.toml's
+// wake after its 300 steps) at its own 3311 nodes, by the segment kernel (biot_savart.hpp)
+// and by the lattice kernel (lattice_segments.hpp), one thread; interactions = target
+// nodes × segments.
 // Counters: interactions/s and per_core/s by wall time; per_cpu_s by the process's CPU
 // time (all threads), the figure to read on a shared machine, where wall time includes
 // waiting for a core.
 #include "uvlm/biot_savart.hpp"
 #include "uvlm/kernel_dispatch.hpp"
+#include "uvlm/lattice_segments.hpp"
+#include "uvlm/synthetic_hover_wake.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -66,7 +73,47 @@ void BM_BiotSavart(benchmark::State& state, CoreModel model, bool single) {
       benchmark::Counter(interactions * state.iterations() / threads, benchmark::Counter::kIsRate);
 }
 
+/// The wake's velocity at its own nodes; range(0): 0 segment kernel, 1 lattice kernel.
+void BM_WakeLattice(benchmark::State& state, bool single) {
+  const bool lattice = state.range(0) == 1;
+  const auto isa = static_cast<KernelIsa>(state.range(1));
+  if (!kernel_isa_supported(isa)) {
+    state.SkipWithError("kernel variant not supported by this CPU");
+    return;
+  }
+  set_kernel_isa(isa);
+  state.SetLabel(std::string(lattice ? "lattice " : "segments ") + std::string(kernel_isa_name(isa)));
+  static const SyntheticHoverWake wake(3);
+  PointSet p = wake.nodes;
+  omp_set_num_threads(1);
+  const double cpu0 = process_cpu_seconds();
+  for (auto _ : state) {
+    p.zero_velocity();
+    const double *x = p.x.data(), *y = p.y.data(), *z = p.z.data();
+    double *u = p.u.data(), *v = p.v.data(), *w = p.w.data();
+    if (lattice && single)
+      add_induced_velocity_single(wake.lattice, x, y, z, p.size, u, v, w, wake.core);
+    else if (lattice)
+      add_induced_velocity(wake.lattice, x, y, z, p.size, u, v, w, wake.core);
+    else if (single)
+      add_induced_velocity_single(wake.segments, x, y, z, p.size, u, v, w, wake.core);
+    else
+      add_induced_velocity(wake.segments, x, y, z, p.size, u, v, w, wake.core);
+    benchmark::DoNotOptimize(p.u.data());
+    benchmark::ClobberMemory();
+  }
+  const double cpu = process_cpu_seconds() - cpu0;
+  const double interactions = static_cast<double>(wake.segments.size()) * static_cast<double>(p.size);
+  state.counters["per_cpu_s"] = interactions * static_cast<double>(state.iterations()) / cpu;
+}
+
 }  // namespace
+
+void LatticeArgs(benchmark::internal::Benchmark* b) {
+  for (KernelIsa isa : {KernelIsa::Scalar, KernelIsa::Avx2, KernelIsa::Avx512})
+    for (int lattice : {0, 1}) b->Args({lattice, static_cast<int>(isa)});
+  b->ArgNames({"lattice", "isa"})->Unit(benchmark::kMillisecond);
+}
 
 void Args(benchmark::internal::Benchmark* b) {
   for (int threads : {1, 2})
@@ -80,5 +127,8 @@ BENCHMARK_CAPTURE(BM_BiotSavart, CutOff, CoreModel::CutOff, false)->Apply(Args);
 BENCHMARK_CAPTURE(BM_BiotSavart, Vatistas, CoreModel::Vatistas, false)->Apply(Args);
 BENCHMARK_CAPTURE(BM_BiotSavart, LambOseenSingle, CoreModel::LambOseen, true)->Apply(Args);
 BENCHMARK_CAPTURE(BM_BiotSavart, CutOffSingle, CoreModel::CutOff, true)->Apply(Args);
+
+BENCHMARK_CAPTURE(BM_WakeLattice, LambOseen, false)->Apply(LatticeArgs);
+BENCHMARK_CAPTURE(BM_WakeLattice, LambOseenSingle, true)->Apply(LatticeArgs);
 
 BENCHMARK_MAIN();

@@ -23,14 +23,21 @@ SyntheticHoverWake::SyntheticHoverWake(int cycles) {
   CoreGrowth growth;
   growth.enabled = true;
   segments.reserve(static_cast<std::size_t>(rows + 1) * ns + static_cast<std::size_t>(rows) * n1);
+  lattice.reserve(nodes.size, n1);
+  lattice.assign_grid(static_cast<std::size_t>(rows) + 1, n1);
+  for (std::size_t a = 0; a < nodes.size; ++a) lattice.set_node(a, nodes.x[a], nodes.y[a], nodes.z[a]);
   auto gamma = [&](int r, int j) {  // [m²/s]
     if (r < 0 || r >= rows || j < 0 || j >= ns) return 0.0;
     return 0.02 * std::sin(M_PI * (j + 0.5) / ns) * std::sin(2 * M_PI * f * r * dt + 0.3);
   };
   auto push = [&](std::size_t a, std::size_t b, double g, double age) {
     const double rc2 = grown_core_radius2(growth, core.radius, age, g);
-    segments.push(nodes.x[a], nodes.y[a], nodes.z[a], nodes.x[b], nodes.y[b], nodes.z[b], g,
-                  core.radius * core.radius / rc2);
+    const double ratio = core.radius * core.radius / rc2;
+    segments.push(nodes.x[a], nodes.y[a], nodes.z[a], nodes.x[b], nodes.y[b], nodes.z[b], g, ratio);
+    if (b == a + 1)
+      lattice.set_spanwise(a, g, ratio);
+    else
+      lattice.set_streamwise(b, g, ratio);  // from node b + 11 to node b
   };
   for (int q = 0; q <= rows; ++q)
     for (int j = 0; j < ns; ++j)
@@ -40,6 +47,8 @@ SyntheticHoverWake::SyntheticHoverWake(int cycles) {
     for (int j = 0; j <= ns; ++j)
       push(static_cast<std::size_t>(r + 1) * n1 + j, static_cast<std::size_t>(r) * n1 + j,
            gamma(r, j) - gamma(r, j - 1), (rows - r - 0.5) * dt);
+  segments.update_single_precision();
+  lattice.finish(true);
 }
 
 }  // namespace flapsim::uvlm

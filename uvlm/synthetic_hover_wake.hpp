@@ -10,6 +10,7 @@
 /// spanwise per node row, then streamwise per ring row. Synthetic, not a computed wake.
 
 #include "uvlm/biot_savart.hpp"
+#include "uvlm/lattice_segments.hpp"
 #include "uvlm/vortex_core.hpp"
 
 namespace flapsim::uvlm {
@@ -17,6 +18,9 @@ namespace flapsim::uvlm {
 struct SyntheticHoverWake {
   SegmentSet segments;
   PointSet nodes;  ///< the wake's nodes (targets of its self-induced velocity)
+  /// The same segments as a lattice (rows × 11 nodes; lattice_segments.hpp), finished in
+  /// double and single precision.
+  LatticeSegments lattice;
   VortexCore core{CoreModel::LambOseen, 0.2 * 0.0169};
   explicit SyntheticHoverWake(int cycles);
 };

@@ -67,6 +67,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   bound_segments.reserve(bound_n);
   trailing_edge_segments.reserve(ns);
   wake_segments.reserve((rows + 1) * ns + rows * (ns + 1));
+  wake_lattice.reserve(wake_nodes_n, static_cast<std::size_t>(ns) + 1);
   if (m.far_wake_by_tree()) {
     far_wake_segments.reserve(wake_segments.capacity());
     far_targets.reserve(std::max(wake_nodes_n, std::max<std::size_t>(bound_n, np)));

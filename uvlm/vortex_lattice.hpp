@@ -28,6 +28,7 @@
 
 #include "uvlm/biot_savart.hpp"
 #include "uvlm/core_growth.hpp"
+#include "uvlm/lattice_segments.hpp"
 #include "uvlm/segment_tree.hpp"
 #include "uvlm/vortex_core.hpp"
 
@@ -198,6 +199,9 @@ struct VortexLatticeData {
   SegmentSet bound_segments;          ///< bound segments except the trailing edge
   SegmentSet trailing_edge_segments;  ///< the last rings' trailing segments (wake core)
   SegmentSet wake_segments;
+  /// The same segments in lattice form (lattice_segments.hpp), for the wake's own direct
+  /// sum in double precision (built with WakeView::Wake and !single_precision_wake only).
+  LatticeSegments wake_lattice;
   /// The convected far wake's segments when it is summed by the tree code
   /// (far_wake_age > 0 and wake_sum = Tree); empty otherwise (all in wake_segments).
   SegmentSet far_wake_segments;

@@ -59,6 +59,7 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
       }
   };
   d.wake_segments.clear();
+  d.wake_lattice.assign_grid(0, n1);
   if (W == 0) return;
   // Convected far wake by the tree: the far wake moves as a whole (far_wake_velocity), so
   // a tree built over its node rows q < T stays exact for them when the targets are moved
@@ -87,6 +88,28 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
   }
   // The rest, by the direct sum.
   push_rings(d.wake_segments, T, W + 1, std::max(T - 1, 0), W, ratio);
+  // The same segments as a lattice of node rows q0 … W (lattice_segments.hpp), which the
+  // wake's own direct sum in double precision uses (advance; in single precision the
+  // segment kernel is faster, docs/performance.md): node (q, j) is lattice node
+  // (q − q0) n1 + j, a ring row's spanwise segment j → j+1 that node's spanwise segment,
+  // the streamwise one from row r+1 to row r node (r − q0, j)'s streamwise segment.
+  if (view != WakeView::Wake || m.single_precision_wake) return;
+  const int q0 = std::max(T - 1, 0);
+  LatticeSegments& L = d.wake_lattice;
+  L.assign_grid(static_cast<std::size_t>(W + 1 - q0), static_cast<std::size_t>(n1));
+  const std::size_t first = static_cast<std::size_t>(q0) * n1;
+  for (std::size_t a = 0; a < L.nodes(); ++a) L.set_node(a, P.x[first + a], P.y[first + a], P.z[first + a]);
+  for (int q = T; q <= W; ++q)
+    for (int j = 0; j < ns; ++j) {
+      const double g = G(q, j) - G(q - 1, j);
+      L.set_spanwise(static_cast<std::size_t>(q - q0) * n1 + j, g, ratio(g, age[q]));
+    }
+  for (int r = q0; r < W; ++r)
+    for (int j = 0; j <= ns; ++j) {
+      const double g = G(r, j) - G(r, j - 1);
+      L.set_streamwise(static_cast<std::size_t>(r - q0) * n1 + j, g, ratio(g, 0.5 * (age[r] + age[r + 1])));
+    }
+  L.finish(false);
 }
 
 void add_far_wake_velocity(VortexLatticeData& d, const double* x, const double* y, const double* z,
@@ -193,8 +216,8 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
       if (!by_tree && d.wake_segments.size() > 0) {
         if (m.single_precision_wake)
           add_induced_velocity_single(d.wake_segments, xi, yi, zi, c, ui, vi, wi, m.core);
-        else
-          add_induced_velocity(d.wake_segments, xi, yi, zi, c, ui, vi, wi, m.core);
+        else  // the same segments as a lattice (lattice_segments.hpp)
+          add_induced_velocity(d.wake_lattice, xi, yi, zi, c, ui, vi, wi, m.core);
       }
       add_induced_velocity(d.bound_segments, xi, yi, zi, c, ui, vi, wi, bound_seen_from_wake);
       add_induced_velocity(d.trailing_edge_segments, xi, yi, zi, c, ui, vi, wi, m.core);

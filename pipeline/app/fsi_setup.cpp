@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "mbd/wing_kinematics.hpp"
 #include "pipeline/app/structure_source.hpp"
+#include "reduction/linear_chain.hpp"
 #include "wings/input_error.hpp"
 #include "wings/planform_geometry.hpp"
 #include "wings/wing_file.hpp"
@@ -121,6 +124,44 @@ std::optional<wings::Wing> load_case_wing(const Case& c,
   return wings::read_wing(root);
 }
 
+void check_lattice_can_follow(const Case& c, const wings::Wing& wing) {
+  // An outline with a gap along the chord (a slot): the lattice would cover it and give the
+  // lift of a wing that is not there (wings::LatticeGap, docs/wing_file.md).
+  if (!c.air.enabled || !(wing.lattice_gap.area_share > 0.0)) return;
+  const wings::LatticeGap& g = wing.lattice_gap;
+  throw InputError(g.file, g.line, g.key,
+                   g.description + ". The lattice cannot follow this outline, so this case cannot run in air. "
+                   "To run it anyway with the gap covered: a wing file with the gap closed for the case and "
+                   "the chain of this wing from 'flapsim reduce' (the FEM follows the outline) with --chain "
+                   "(docs/wing_file.md, \"Outlines the vortex lattice cannot follow\")");
+}
+
+std::string soft_chain_warning(const Case& c, const FsiSetup& setup) {
+  const mbd::ChainModel& chain = setup.model.chain;
+  if (c.structure.kind != Case::Structure::Kind::Flexible || chain.num_dofs() == 0) return "";
+  double f1 = 0.0;
+  bool bending = false;
+  try {
+    const std::vector<reduction::ChainMode> modes = reduction::LinearChain(chain).modes();
+    if (modes.empty()) return "";
+    f1 = modes.front().frequency_hz;
+    bending = modes.front().is_bending();
+  } catch (const std::exception&) {
+    return "";  // a chain bent at rest: no linear modes about a straight shape
+  }
+  const double f = c.kinematics.frequency;
+  if (!(f1 < f)) return "";
+  char text[640];
+  std::snprintf(text, sizeof text,
+                "the chain's first natural frequency, %.3g Hz (%s), is below the wingbeat frequency %.3g Hz: "
+                "the wing is driven above its first resonance and will bend further than its linear joint "
+                "springs represent; such runs usually stop with a numerical failure. Stiffen the wing "
+                "(a thicker membrane, veins), lower frequency_hz, or scale the springs (--spring-scale; "
+                "frequencies scale by its square root)",
+                f1, bending ? "bending" : "torsion", f);
+  return text;
+}
+
 FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   FsiSetup s;
   s.period = 1.0 / c.kinematics.frequency;
@@ -135,16 +176,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
     throw InputError(c.file, 0, "wing",
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "
                      "file, or set air = \"none\" for a vacuum run of the chain");
-  // An outline with a gap along the chord (a slot): the lattice would cover it and give the
-  // lift of a wing that is not there (wings::LatticeGap, docs/wing_file.md).
-  if (c.air.enabled && s.wing->lattice_gap.area_share > 0.0) {
-    const wings::LatticeGap& g = s.wing->lattice_gap;
-    throw InputError(g.file, g.line, g.key,
-                     g.description + ". The lattice cannot follow this outline, so this case cannot run in air. "
-                     "To run it anyway with the gap covered: a wing file with the gap closed for the case and "
-                     "the chain of this wing from 'flapsim reduce' (the FEM follows the outline) with --chain "
-                     "(docs/wing_file.md, \"Outlines the vortex lattice cannot follow\")");
-  }
+  if (s.wing) check_lattice_can_follow(c, *s.wing);
 
   FsiModel& m = s.model;
   StructureChoice structure = choose_structure(c, options.chain_file, s.wing ? &*s.wing : nullptr);

@@ -96,4 +96,15 @@ Eigen::Vector3d span_point_velocity(const mbd::WingKinematics& kinematics, doubl
 ///         chain file is invalid; std::invalid_argument on inconsistent internal sizes
 FsiSetup build_fsi_setup(const io::Case& c, const SetupOptions& options);
 
+/// \brief Refuses, for a case in air, a wing whose outline the vortex lattice cannot follow
+/// (a gap along the chord: wings::LatticeGap; docs/wing_file.md).
+/// \throws flapsim::InputError naming the wing file, the line and the key of the outline
+void check_lattice_can_follow(const io::Case& c, const wings::Wing& wing);
+
+/// \brief The warning for a flexible chain driven above its first natural frequency (the
+/// linearised chain at rest, reduction::LinearChain), "" if none: the wing flaps with bends
+/// its linear joint springs do not represent and the run usually fails (a 50 µm film wing
+/// without veins, first bending 15.7 Hz at a 20 Hz wingbeat: joints bent 90°, exit 3).
+std::string soft_chain_warning(const io::Case& c, const FsiSetup& setup);
+
 }  // namespace flapsim::app

@@ -1,5 +1,7 @@
 #include "pipeline/io/case_file.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -261,6 +263,39 @@ void warn_far_wake_outside_measured_range(const TomlTable& root, Case& c) {
                             ": " + why + " (docs/uvlm.md, \"Hover over many cycles\")"});
 }
 
+// Angles in radians where degrees are expected (`cos_deg = [0.87]` for a 50° stroke): every
+// value the sweep and rotation take stays within ±2π degrees, a wing that hardly moves. No
+// flapping kinematics is that small: insects and the shipped cases sweep ±50–60° and rotate
+// about 90° ± 45°. And a sweep beyond ±180°, more than half a turn either way.
+constexpr double kRadianSuspicionDeg = 2.0 * 3.14159265358979323846;
+void warn_implausible_angles(const TomlTable& root, Case& c) {
+  const mbd::WingKinematics& k = c.kinematics;
+  double largest_deg = 0.0, largest_sweep_deg = 0.0;
+  for (int i = 0; i < 360; ++i) {
+    const double s = i / 360.0;
+    const double sweep = std::abs(k.sweep.at_phase(s).value) / kDegToRad;
+    largest_sweep_deg = std::max(largest_sweep_deg, sweep);
+    largest_deg = std::max({largest_deg, sweep, std::abs(k.rotation.at_phase(s).value) / kDegToRad});
+  }
+  const auto t = root.find_table("kinematics");
+  auto fixed = [](double x) {
+    std::ostringstream o;
+    o.precision(3);
+    o << x;
+    return o.str();
+  };
+  if (largest_deg > 0.0 && largest_deg <= kRadianSuspicionDeg)
+    c.warnings.push_back({c.file, t ? t->line_of("sweep") : 0, "kinematics.sweep",
+                          "the sweep and rotation angles never exceed " + fixed(largest_deg) +
+                              " degrees: were they written in radians? Keys ending in _deg and the deg "
+                              "column of a table are in degrees (a 50-degree stroke is cos_deg = [50.0])"});
+  else if (largest_sweep_deg > 180.0)
+    c.warnings.push_back({c.file, t ? t->line_of("sweep") : 0, "kinematics.sweep",
+                          "the sweep angle reaches " + fixed(largest_sweep_deg) +
+                              " degrees, more than half a turn from the stroke's zero: an amplitude in the "
+                              "wrong unit or a coefficient off?"});
+}
+
 Case read_case(TomlTable root) {
   root.expect_only({"name", "description", "length_unit", "wing", "chain", "kinematics", "air",
                     "structure", "numerics", "output", "loads", "markers"});
@@ -297,6 +332,7 @@ Case read_case(TomlTable root) {
     c.markers.push_back(read_marker(markers[i], i, c.structure.bodies));
   warn_long_free_hover(root, c);
   warn_far_wake_outside_measured_range(root, c);
+  warn_implausible_angles(root, c);
   return c;
 }
 

@@ -2,6 +2,9 @@
 
 #include <toml++/toml.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -136,7 +139,8 @@ std::vector<std::string> shared(const std::vector<std::string>& a, const std::ve
 std::vector<std::string> command_outputs(const std::string& command) {
   if (command == "mesh") return {"mesh.msh", "mesh.vtu"};
   if (command == "modes") return {"modes.csv", "fem.vtu"};
-  if (command == "reduce") return {"beam.csv", "chain.toml", "reduction.vtp", "report.md", "summary.json"};
+  if (command == "reduce")
+    return {"beam.csv", "chain.toml", "reduction.vtm", "reduction/*.vtp", "report.md", "summary.json"};
   if (command == "run")
     return {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "run.pvsm",
             "vtk/wing_*.vtp", "vtk/wake_*.vtp", "vtk/chain_*.vtp"};
@@ -188,6 +192,33 @@ void record_command_status(const fs::path& dir, const std::string& command, cons
   write_manifest(dir, m);
 }
 
+namespace {
+
+// Room kept on the disk for the manifest's last record: a command that ends by a full disk
+// must still be able to say so (before: the manifest kept "running" after an exit 4).
+constexpr off_t kReserveBytes = 64 * 1024;
+
+fs::path reserve_path(const fs::path& dir) { return temporary_path(dir / ".flapsim_outputs_reserve"); }
+
+void make_reserve(const fs::path& dir) {
+  const fs::path p = reserve_path(dir);
+  const int fd = ::open(p.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return;  // best effort: no reserve, the last record may fail on a full disk
+  const bool ok = ::posix_fallocate(fd, 0, kReserveBytes) == 0;
+  ::close(fd);
+  if (!ok) {
+    std::error_code ignored;
+    fs::remove(p, ignored);
+  }
+}
+
+void release_reserve(const fs::path& dir) {
+  std::error_code ignored;
+  fs::remove(reserve_path(dir), ignored);
+}
+
+}  // namespace
+
 OutputFolderClaim::OutputFolderClaim(fs::path dir, std::string command)
     : dir_(std::move(dir)), command_(std::move(command)) {}
 
@@ -195,6 +226,7 @@ OutputFolderClaim::~OutputFolderClaim() {
   const std::lock_guard<std::mutex> lock(mutex_);
   if (state_ != State::open) return;
   state_ = State::ended;
+  release_reserve(dir_);
   try {
     record_command_status(dir_, command_, "failed");
   } catch (...) {
@@ -205,13 +237,16 @@ OutputFolderClaim::~OutputFolderClaim() {
 void OutputFolderClaim::claim(bool force) {
   const std::lock_guard<std::mutex> lock(mutex_);
   claim_output_folder(dir_, command_, force);
+  make_reserve(dir_);
   state_ = State::open;
 }
 
 void OutputFolderClaim::finish(const std::string& status) {
   const std::lock_guard<std::mutex> lock(mutex_);
   if (state_ == State::ended) return;
+  const bool was_open = state_ == State::open;
   state_ = State::ended;
+  if (was_open) release_reserve(dir_);
   record_command_status(dir_, command_, status);
 }
 
@@ -220,6 +255,7 @@ OutputFolderClaim::State OutputFolderClaim::end_if_open(const std::string& statu
   const State found = state_;
   if (found != State::open) return found;
   state_ = State::ended;
+  release_reserve(dir_);
   record_command_status(dir_, command_, status);
   return found;
 }

@@ -9,6 +9,7 @@
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
+#include <vtkObject.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -107,6 +108,9 @@ void add_time_and_fields(vtkDataObject* data, const std::optional<double>& time,
 /// Binary, appended, zlib-compressed: compact and the default ParaView reads fastest.
 template <class Writer>
 void configure(Writer* w, const std::filesystem::path& tmp) {
+  // A failed write (a full disk) is reported by flapsim with the path (publish_file_atomically);
+  // VTK's own report is a dump of its pipeline's internals (12 lines) before that message.
+  vtkObject::GlobalWarningDisplayOff();
   w->SetFileName(tmp.c_str());
   w->SetDataModeToAppended();
   w->EncodeAppendedDataOff();

@@ -83,8 +83,12 @@ TEST(RunResults, DefinitionsAreWellFormed) {
       EXPECT_TRUE(key.size() > suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0)
           << d.key << " does not end with its unit " << d.unit;
     }
-    if (d.kind == app::ResultKind::number) EXPECT_FALSE(d.format.empty()) << d.key;
-    if (!d.sweep_label.empty()) EXPECT_EQ(d.kind, app::ResultKind::number) << d.key;
+    if (d.kind == app::ResultKind::number) {
+      EXPECT_FALSE(d.format.empty()) << d.key;
+    }
+    if (!d.sweep_label.empty()) {
+      EXPECT_EQ(d.kind, app::ResultKind::number) << d.key;
+    }
   }
   // Every placeholder of the report names a result.
   for (const app::ReportLine& line : app::kRunReport) {
@@ -129,8 +133,9 @@ TEST(RunResults, SummaryReportAndSweepComeFromTheOneDefinition) {
   for (const auto& [key, value] : items) {
     const std::size_t i = index_of(key);
     ASSERT_LT(i, kRunResults.size()) << "summary.json key not in the definition: " << key;
-    if (kRunResults[i].kind == app::ResultKind::number && value != "null")
+    if (kRunResults[i].kind == app::ResultKind::number && value != "null") {
       EXPECT_EQ(std::strtod(value.c_str(), nullptr), std::get<double>(*results.at(i))) << key;
+    }
   }
   EXPECT_EQ(results.text("status"), "ok");
   EXPECT_NEAR(results.number("base_rotation_phase"), -0.1, 1e-3);  // the case's δψ, measured

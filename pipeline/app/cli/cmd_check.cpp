@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -41,10 +42,13 @@ std::string check_case_like_run(const io::Case& c) {
   int bodies = c.structure.bodies;
   const bool reduced_in_process = c.structure.kind == io::Case::Structure::Kind::Flexible && c.chain_file.empty();
   if (reduced_in_process && wing) {
+    app::check_lattice_can_follow(c, *wing);
     check_meshable(*wing);
   } else {
     const app::FsiSetup setup = app::build_fsi_setup(c, app::SetupOptions{});  // reads the chain file
     bodies = setup.model.chain.num_bodies();
+    if (const std::string soft = app::soft_chain_warning(c, setup); !soft.empty())
+      std::fprintf(stderr, "flapsim: warning: %s\n", soft.c_str());
   }
   const app::RunEstimate estimate = app::estimate_run(c, bodies);
   app::refuse_if_it_cannot_fit(estimate, c);

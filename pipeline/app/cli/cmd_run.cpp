@@ -51,6 +51,8 @@ void run_command(const RunArgs& a) {
     if (!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9))
       std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
     app::refuse_if_it_cannot_fit(estimate, c);
+    if (const std::string soft = app::soft_chain_warning(c, setup); !soft.empty())
+      std::fprintf(stderr, "flapsim: warning: %s\n", soft.c_str());
     claim.claim(a.force);
   };
   app::install_interrupt_handlers();  // SIGINT/SIGTERM: finish the step, exit 130/143

@@ -1,0 +1,49 @@
+// A command ended by a full disk still records how it ended. Before: `flapsim run` into a
+// 300 KiB tmpfs with ParaView output every step exited 4 (right), but the folder's
+// flapsim_outputs.toml kept `status = 'running'`: the last record needs a page of the disk
+// that the run had filled. Now the claim keeps 64 KiB in reserve (a temporary file, released
+// just before the last record; pipeline/io/output_manifest.hpp) and the manifest says 'failed'.
+// Needs a small tmpfs: a private mount namespace (unshare -rm; root or user namespaces),
+// else the test is skipped.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "robustness_helpers.hpp"
+
+using namespace flapsim::test;
+
+namespace {
+
+TEST(FullDiskManifest, ARunThatFillsTheDiskRecordsFailedNotRunning) {
+  ScratchDir dir("full_disk_manifest");
+  std::ofstream(dir / "case.toml") << small_plate_case("rigid", 3, 1);
+  const std::string mnt = (dir / "mnt").string();
+  std::filesystem::create_directories(mnt);
+  // Inside the namespace: mount, run, copy out what the folder holds (the mount ends with it).
+  const std::string script =
+      "mount -t tmpfs -o size=300k none '" + mnt + "' || exit 99; "
+      "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' run '" + (dir / "case.toml").string() +
+      "' -o '" + mnt + "/run' > /dev/null 2> '" + (dir / "stderr.txt").string() + "'; s=$?; "
+      "cp '" + mnt + "/run/flapsim_outputs.toml' '" + (dir / "manifest.txt").string() + "'; "
+      "ls -a '" + mnt + "/run' > '" + (dir / "listing.txt").string() + "'; exit $s";
+  std::ofstream(dir / "in_namespace.sh") << script << "\n";
+  const int status = std::system(("unshare -rm sh '" + (dir / "in_namespace.sh").string() + "' 2> /dev/null").c_str());
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (code == 99 || code == 1 || code == 127) GTEST_SKIP() << "no private tmpfs here (unshare -rm, mount): " << code;
+  EXPECT_EQ(code, 4) << read_text(dir / "stderr.txt");
+  const std::string manifest = read_text(dir / "manifest.txt");
+  EXPECT_NE(manifest.find("status = 'failed'"), std::string::npos) << manifest;
+  const std::string listing = read_text(dir / "listing.txt");
+  EXPECT_EQ(listing.find(".tmp."), std::string::npos) << listing;
+  // flapsim's message, not VTK's dump of its pipeline.
+  const std::string err = read_text(dir / "stderr.txt");
+  EXPECT_NE(err.find("flapsim: output error: cannot write"), std::string::npos) << err;
+  EXPECT_EQ(err.find("vtkExecutive"), std::string::npos) << err;
+}
+
+}  // namespace

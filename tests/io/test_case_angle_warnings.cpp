@@ -1,0 +1,57 @@
+// Kinematic angles in the wrong unit are accepted with a warning. Before: a case whose
+// stroke was written in radians (`sweep = { cos_deg = [0.87] }`, `rotation = { mean_deg = 1.57,
+// sin_deg = [-0.785] }`) ran without a word: a wing sweeping ±0.87° instead of ±50°. And
+// `cos_deg = [500.0]` swept the wing through more than a turn. Now: the sweep and rotation never
+// leaving ±2π degrees (2π = 6.28: what radians of any angle up to a turn look like in degrees)
+// is warned as radians, a sweep past ±180° as a wrong amplitude; the shipped kinematics
+// (±50–60° sweep, 90° ± 45° rotation) give no warning.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "inline_case.hpp"
+#include "pipeline/io/case_file.hpp"
+
+namespace {
+
+std::string kinematics_case(const std::string& sweep, const std::string& rotation) {
+  return "wing = \"valid_tiny_wing.toml\"\n[kinematics]\nfrequency_hz = 20.0\n"  // 1-3
+         "sweep = " + sweep + "\nrotation = " + rotation +                         // 4-5
+         "\n[structure]\nkind = \"rigid\"\n[numerics]\nsteps_per_cycle = 40\n";
+}
+
+TEST(CaseAngleWarnings, AnglesWrittenInRadiansAreWarned) {
+  const flapsim::io::Case c =
+      case_from_text(kinematics_case("{ cos_deg = [0.87] }", "{ mean_deg = 1.57, sin_deg = [-0.785] }"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(c.warnings[0].key, "kinematics.sweep");
+  EXPECT_EQ(c.warnings[0].line, 4);
+  // The largest value either angle takes: 1.57 + 0.785 = 2.355 degrees.
+  EXPECT_NE(c.warnings[0].message.find("never exceed 2.35 degrees: were they written in radians?"),
+            std::string::npos) << c.warnings[0].message;
+}
+
+TEST(CaseAngleWarnings, ASweepBeyondHalfATurnIsWarned) {
+  const flapsim::io::Case c =
+      case_from_text(kinematics_case("{ mean_deg = 10.0, cos_deg = [500.0] }", "{ mean_deg = 90.0, sin_deg = [-45.0] }"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].message.find("the sweep angle reaches 510 degrees"), std::string::npos)
+      << c.warnings[0].message;
+}
+
+TEST(CaseAngleWarnings, ThePlausibleKinematicsOfEveryShippedCaseAreNotWarned) {
+  EXPECT_TRUE(case_from_text(kinematics_case("{ cos_deg = [50.0] }", "{ mean_deg = 90.0, sin_deg = [-45.0] }"))
+                  .warnings.empty());
+  EXPECT_TRUE(case_from_text(kinematics_case("{ cos_deg = [54.0] }", "90.0")).warnings.empty());
+  int cases = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(FLAPSIM_SOURCE_DIR) + "/cases")) {
+    if (e.path().extension() != ".toml") continue;
+    const flapsim::io::Case c = flapsim::io::load_case_file(e.path().string());
+    for (const auto& w : c.warnings) EXPECT_NE(w.key, "kinematics.sweep") << e.path() << ": " << w.text();
+    ++cases;
+  }
+  EXPECT_GE(cases, 10);
+}
+
+}  // namespace
