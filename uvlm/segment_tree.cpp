@@ -2,6 +2,8 @@
 
 #include "uvlm/biot_savart_kernel.hpp"
 #include "uvlm/biot_savart_lanes.hpp"
+#include "uvlm/kernel_dispatch.hpp"
+#include "uvlm/multipole_batch.hpp"
 
 #include <omp.h>
 
@@ -15,97 +17,22 @@ namespace flapsim::uvlm {
 
 namespace {
 
-constexpr int kMaxOrder = 4;                 // p ≤ 4
-constexpr int kMaxDerivative = kMaxOrder + 1;  // ∂ⁿφ up to |n| = p + 1
-constexpr int terms_up_to(int q) { return (q + 1) * (q + 2) * (q + 3) / 6; }
-constexpr int kMaxTerms = terms_up_to(kMaxDerivative);  // 56
+using detail::kMaxOrder;
+using detail::kTable;
+using detail::MultiIndexTable;
+using detail::terms_up_to;
 constexpr int kLanes = detail::kLanes<double>;
 constexpr std::size_t kFlagBlock = 64;  // pieces whose core distance is tested at once
 
-/// Multi-indices n = (a, b, c) in graded order (|n| = 0, 1, 2, …) and their neighbours.
-struct MultiIndexTable {
-  int a[kMaxTerms]{}, b[kMaxTerms]{}, c[kMaxTerms]{}, order[kMaxTerms]{};
-  int minus[kMaxTerms][3]{};   // index of n − e_i (−1 if n_i = 0)
-  int minus2[kMaxTerms][3]{};  // index of n − 2e_i (−1 if n_i < 2)
-  int plus[kMaxTerms][3]{};    // index of n + e_i (−1 beyond kMaxDerivative)
-  int index[kMaxDerivative + 1][kMaxDerivative + 1][kMaxDerivative + 1]{};
-  double factor[kMaxTerms]{};  // (−1)^|n| / (n! 4π)
-  double binomial[kMaxDerivative + 1][kMaxDerivative + 1]{};
-  constexpr MultiIndexTable() {
-    int t = 0;
-    for (auto& x : index)
-      for (auto& y : x)
-        for (int& z : y) z = -1;
-    for (int m = 0; m <= kMaxDerivative; ++m)
-      for (int i = m; i >= 0; --i)
-        for (int j = m - i; j >= 0; --j) {
-          a[t] = i; b[t] = j; c[t] = m - i - j; order[t] = m;
-          index[i][j][m - i - j] = t++;
-        }
-    auto idx = [&](int i, int j, int k) constexpr {
-      return (i < 0 || j < 0 || k < 0 || i + j + k > kMaxDerivative) ? -1 : index[i][j][k];
-    };
-    auto fact = [](int n) constexpr { double f = 1; for (int i = 2; i <= n; ++i) f *= i; return f; };
-    for (t = 0; t < kMaxTerms; ++t) {
-      const int i = a[t], j = b[t], k = c[t];
-      minus[t][0] = idx(i - 1, j, k); minus[t][1] = idx(i, j - 1, k); minus[t][2] = idx(i, j, k - 1);
-      minus2[t][0] = idx(i - 2, j, k); minus2[t][1] = idx(i, j - 2, k); minus2[t][2] = idx(i, j, k - 2);
-      plus[t][0] = idx(i + 1, j, k); plus[t][1] = idx(i, j + 1, k); plus[t][2] = idx(i, j, k + 1);
-      factor[t] = ((order[t] % 2) ? -1.0 : 1.0) / (fact(i) * fact(j) * fact(k)) * detail::kInvFourPi;
-    }
-    for (int n = 0; n <= kMaxDerivative; ++n)
-      for (int k = 0; k <= n; ++k) binomial[n][k] = fact(n) / (fact(k) * fact(n - k));
-  }
-};
-
-// A compile-time constant, so the expansion below, unrolled for each order, reads no table.
-constexpr MultiIndexTable kTable{};
-
 const MultiIndexTable& table() { return kTable; }
 
-/// (2m − 1)/m and (m − 1)/m of the derivative recurrence, m = 1 … kMaxDerivative.
-constexpr double kRecurrence1[kMaxDerivative + 1] = {0.0, 1.0, 3.0 / 2.0, 5.0 / 3.0, 7.0 / 4.0, 9.0 / 5.0};
-constexpr double kRecurrence2[kMaxDerivative + 1] = {0.0, 0.0, 1.0 / 2.0, 2.0 / 3.0, 3.0 / 4.0, 4.0 / 5.0};
-
-/// The velocity of a node's expansion of order P at R = x − c (SegmentTree::multipole_velocity),
-/// with every loop bound and table entry known at compile time (1.7× faster than reading
-/// the table at run time, bench_wake_tree; the same operations in the same order).
-template <int P>
-[[gnu::flatten]] void multipole_at(const double* Q, const double (&R)[3], double& u, double& v,
-                                   double& w) {
-  constexpr const MultiIndexTable& T = kTable;
-  constexpr int derivatives = terms_up_to(P + 1), terms = terms_up_to(P);
-  const double r2 = R[0] * R[0] + R[1] * R[1] + R[2] * R[2];
-  const double inv_r2 = 1.0 / r2;
-  double D[kMaxTerms];
-  D[0] = std::sqrt(inv_r2);
-#pragma GCC unroll 64
-  for (int t = 1; t < derivatives; ++t) {
-    const int m = T.order[t];
-    const int n[3] = {T.a[t], T.b[t], T.c[t]};
-    double s1 = 0.0, s2 = 0.0;
-#pragma GCC unroll 3
-    for (int i = 0; i < 3; ++i) {
-      if (n[i] >= 1) s1 += n[i] * R[i] * D[T.minus[t][i]];
-      if (n[i] >= 2) s2 += n[i] * (n[i] - 1) * D[T.minus2[t][i]];
-    }
-    // The recurrence's coefficients (2m − 1)/m and (m − 1)/m as compile-time constants:
-    // no division per term.
-    D[t] = -(kRecurrence1[m] * s1 + kRecurrence2[m] * s2) * inv_r2;
+/// The batched expansion of the variant in use (kernel_dispatch.hpp).
+void (*multipole_batch_variant())(detail::MultipoleBatch&) {
+  switch (kernel_isa()) {
+    case KernelIsa::Avx512: return detail::multipole_batch_avx512;
+    case KernelIsa::Avx2: return detail::multipole_batch_avx2;
+    default: return detail::multipole_batch_scalar;
   }
-  double su = 0.0, sv = 0.0, sw = 0.0;
-#pragma GCC unroll 64
-  for (int t = 0; t < terms; ++t) {
-    const double gx = D[T.plus[t][0]], gy = D[T.plus[t][1]], gz = D[T.plus[t][2]];
-    const double f = T.factor[t];
-    const double qx = Q[3 * t], qy = Q[3 * t + 1], qz = Q[3 * t + 2];
-    su += f * (gy * qz - gz * qy);
-    sv += f * (gz * qx - gx * qz);
-    sw += f * (gx * qy - gy * qx);
-  }
-  u += su;
-  v += sv;
-  w += sw;
 }
 
 /// Interleave the low 20 bits of x, y, z into a 60-bit Morton key.
@@ -421,18 +348,6 @@ void SegmentTree::compute_moments(std::size_t id) {
   }
 }
 
-void SegmentTree::multipole_velocity(const Node& nd, const double* Q, double x, double y, double z,
-                                     double& u, double& v, double& w) const {
-  const double R[3] = {x - nd.cx, y - nd.cy, z - nd.cz};
-  switch (params_.order) {
-    case 0: multipole_at<0>(Q, R, u, v, w); break;
-    case 1: multipole_at<1>(Q, R, u, v, w); break;
-    case 2: multipole_at<2>(Q, R, u, v, w); break;
-    case 3: multipole_at<3>(Q, R, u, v, w); break;
-    default: multipole_at<4>(Q, R, u, v, w); break;
-  }
-}
-
 void SegmentTree::add_core_corrections(NearScratch& t, std::size_t count, double x, double y,
                                        double z, double* su, double* sv, double* sw) const {
   // The listed segments packed into whole blocks of lanes (padding: Γ = 0, zero length),
@@ -471,6 +386,7 @@ void SegmentTree::add_induced_velocity(const double* x, const double* y, const d
   std::size_t multipoles = 0, direct = 0, corrections = 0;
   const long nt = static_cast<long>(n);
   const int team = std::min(omp_get_max_threads(), static_cast<int>(scratch_.size()));
+  void (*const expansions)(detail::MultipoleBatch&) = multipole_batch_variant();
 #pragma omp parallel num_threads(team) reduction(+ : multipoles, direct, corrections)
   {
     NearScratch& t = scratch_[static_cast<std::size_t>(omp_get_thread_num())];
@@ -488,6 +404,21 @@ void SegmentTree::add_induced_velocity(const double* x, const double* y, const d
         t.visit = 1;
       }
       std::size_t near = 0;
+      // Accepted nodes are evaluated kMultipoleBatch at a time and added in the order
+      // they were accepted.
+      detail::MultipoleBatch batch;
+      batch.order = params_.order;
+      batch.count = 0;
+      auto flush = [&] {
+        if (batch.count == 0) return;
+        expansions(batch);
+        for (int j = 0; j < batch.count; ++j) {
+          mu += batch.u[j];
+          mv += batch.v[j];
+          mw += batch.w[j];
+        }
+        batch.count = 0;
+      };
       detail::PointRangeCall call{0,       nullptr, nullptr, nullptr,   nullptr,          nullptr, nullptr,
                                   nullptr, nullptr, nullptr, inv_cut2_, CoreModel::CutOff, px,     py,
                                   pz,      su,      sv,      sw};
@@ -497,8 +428,12 @@ void SegmentTree::add_induced_velocity(const double* x, const double* y, const d
         // |R| θ > b and |R| − b > core distance, squared (no square root per node visited).
         const double r2 = dx * dx + dy * dy + dz * dz, reach = nd.radius + nd.safe_distance;
         if (r2 * theta2 > nd.radius * nd.radius && r2 > reach * reach) {
-          multipole_velocity(nd, moments_.data() + (&nd - nodes_.data()) * 3 * terms_, px, py, pz,
-                             mu, mv, mw);
+          const int j = batch.count++;
+          batch.moments[j] = moments_.data() + (&nd - nodes_.data()) * 3 * terms_;
+          batch.rx[j] = dx;
+          batch.ry[j] = dy;
+          batch.rz[j] = dz;
+          if (batch.count == detail::kMultipoleBatch) flush();
           ++multipoles;
         } else if (nd.child_count == 0) {
           const std::size_t b = nd.begin;
@@ -539,6 +474,7 @@ void SegmentTree::add_induced_velocity(const double* x, const double* y, const d
           for (std::uint32_t c = nd.child_count; c-- > 0;) stack[top++] = nd.first_child + c;
         }
       }
+      flush();
       if (near > 0) add_core_corrections(t, near, px, py, pz, su, sv, sw);
       corrections += near;
       double tu = 0, tv = 0, tw = 0;

@@ -117,8 +117,6 @@ class SegmentTree {
   std::size_t cut_pieces(const SegmentSet& segments, double core_distance);
   void build_nodes();
   void compute_moments(std::size_t node);
-  void multipole_velocity(const Node& node, const double* moments, double x, double y, double z,
-                          double& u, double& v, double& w) const;
   void add_core_corrections(NearScratch& s, std::size_t count, double x, double y, double z,
                             double* su, double* sv, double* sw) const;
 
