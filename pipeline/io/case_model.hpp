@@ -24,6 +24,9 @@
 
 namespace flapsim::io {
 
+/// Precision of the wake's direct sums (uvlm::VortexLatticeModel::single_precision_wake).
+enum class WakePrecision { Single, Double };
+
 /// A prescribed force and moment on one body of the chain, periodic in the stroke phase.
 struct PointLoad {
   int body = 1;                                  ///< 1-based body index in the chain
@@ -93,6 +96,7 @@ struct Case {
     double frozen_wake_cycles = 0.0;        ///< wake older than this many cycles stops moving; 0 = never
     double far_wake_cycles = 0.0;           ///< wake older than this many cycles moves with momentum theory's velocity; 0 = never
     uvlm::WakeSum wake_sum = uvlm::WakeSum::Direct;  ///< wake velocity sum: "direct" | "tree"
+    WakePrecision wake_precision = WakePrecision::Single;  ///< the wake's direct sums: "single" | "double"
     double tree_tolerance = 1e-4;           ///< relative error of the tree code's velocities
     int max_coupling_iterations = 50;       ///< strong-coupling sub-iterations per step
     double coupling_tolerance = 1e-6;       ///< relative change that ends the sub-iterations
@@ -137,6 +141,8 @@ inline constexpr std::array<std::pair<std::string_view, uvlm::CoreModel>, 2> kCo
     {{"cutoff", uvlm::CoreModel::CutOff}, {"lamb_oseen", uvlm::CoreModel::LambOseen}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::WakeSum>, 2> kWakeSumNames{
     {{"direct", uvlm::WakeSum::Direct}, {"tree", uvlm::WakeSum::Tree}}};
+inline constexpr std::array<std::pair<std::string_view, WakePrecision>, 2> kWakePrecisionNames{
+    {{"single", WakePrecision::Single}, {"double", WakePrecision::Double}}};
 inline constexpr std::array<std::pair<std::string_view, mbd::LoadFrame>, 2> kLoadFrameNames{
     {{"ground", mbd::LoadFrame::ground}, {"body", mbd::LoadFrame::body}}};
 

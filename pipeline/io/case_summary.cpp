@@ -91,6 +91,8 @@ std::string describe_case(const Case& c) {
             n.wake_sum == uvlm::WakeSum::Tree
                 ? ("tree code, relative error " + line_number(n.tree_tolerance)).c_str()
                 : "direct");
+  s += line("  wake sums precision    %s",
+            std::string(wings::choice_name(kWakePrecisionNames, n.wake_precision)).c_str());
   s += line("  coupling               at most %d iterations, tolerance %.3g", n.max_coupling_iterations,
             n.coupling_tolerance);
   if (c.output.vtk_every > 0)

@@ -131,6 +131,7 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.wake_max_rows", n.wake_max_rows);
   out.line("numerics.free_wake", n.free_wake);
   out.line("numerics.core_growth", n.core_growth);
+  out.line("numerics.wake_precision", static_cast<int>(n.wake_precision));
   out.line("numerics.core_growth_a1", n.core_growth_a1);
   out.line("numerics.kinematic_viscosity", n.kinematic_viscosity);
   out.line("numerics.near_wing_core", n.near_wing_core);

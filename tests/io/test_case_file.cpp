@@ -202,6 +202,16 @@ TEST(CaseFile, LoadModelAndSpacingKeys) {
   EXPECT_EQ(e.line(), 9);
 }
 
+TEST(CaseFile, WakePrecisionKey) {
+  // docs/case_file.md: `wake_precision` = "single" (default) | "double" for the wake's direct sums.
+  EXPECT_EQ(case_from_text(kHead).numerics.wake_precision, p::WakePrecision::Single);
+  const p::Case c = case_from_text(kHead + "[numerics]\nwake_precision = \"double\"\n");
+  EXPECT_EQ(c.numerics.wake_precision, p::WakePrecision::Double);
+  const auto e = error_of(kHead + "[numerics]\nwake_precision = \"half\"\n");  // line 9
+  EXPECT_EQ(e.key(), "numerics.wake_precision");
+  EXPECT_EQ(e.line(), 9);
+}
+
 TEST(CaseFile, BaseTranslationSignals) {
   // docs/case_file.md: heave, surge and lateral move the pivot along z_G, x_G, y_G [m], as
   // signals of s = f t; pose() gives their position, velocity and acceleration.
