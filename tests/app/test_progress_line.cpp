@@ -9,20 +9,10 @@
 #include <cstdlib>
 #include <string>
 
+#include "common/file_contents.hpp"
+
 using flapsim::app::ProgressLine;
-
-namespace {
-
-// Everything written to a temporary FILE*.
-std::string contents(std::FILE* f) {
-  std::fflush(f);
-  std::rewind(f);
-  std::string s;
-  for (int c; (c = std::fgetc(f)) != EOF;) s += static_cast<char>(c);
-  return s;
-}
-
-}  // namespace
+using flapsim::test::file_contents;
 
 TEST(OutputProgress, LineFormat) {
   EXPECT_EQ(ProgressLine::format(120, 300, 0.046, "CL=1.93"), "step 120/300  t=0.0460 s  CL=1.93");
@@ -37,7 +27,7 @@ TEST(OutputProgress, NotATerminalPrintsOnlyTheFinalLine) {
     for (int i = 1; i <= 300; ++i) p.update(i, i * 1e-4, "iters=3");
     p.finish();
   }
-  const std::string out = contents(f);
+  const std::string out = file_contents(f);
   std::fclose(f);
   EXPECT_EQ(out.find('\r'), std::string::npos);
   EXPECT_EQ(out.rfind("step 300/300  t=0.0300 s  iters=3  (", 0), 0u) << out;
@@ -52,7 +42,7 @@ TEST(OutputProgress, LiveModeRedrawsInPlaceThrottled) {
     ProgressLine p(1000, f, ProgressLine::Mode::live);
     for (int i = 1; i <= 1000; ++i) p.update(i, i * 1e-5);  // far faster than 5 Hz
   }  // the destructor prints the final line
-  const std::string out = contents(f);
+  const std::string out = file_contents(f);
   std::fclose(f);
   const auto redraws = std::count(out.begin(), out.end(), '\r');
   EXPECT_GE(redraws, 2);   // the first update and the final line
@@ -82,6 +72,6 @@ TEST(OutputProgress, QuietEnvironmentSilencesIt) {
   EXPECT_EQ(q.mode(), quiet_outside ? ProgressLine::Mode::quiet : ProgressLine::Mode::final_only);
   q.update(10, 0.1);
   q.finish();
-  EXPECT_EQ(contents(f).find("step 10/10"), quiet_outside ? std::string::npos : 0u);
+  EXPECT_EQ(file_contents(f).find("step 10/10"), quiet_outside ? std::string::npos : 0u);
   std::fclose(f);
 }

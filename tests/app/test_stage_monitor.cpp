@@ -13,19 +13,13 @@
 #include <thread>
 
 #include "common/scratch_dir.hpp"
+#include "common/file_contents.hpp"
 
 using flapsim::app::StageMonitor;
+using flapsim::test::file_contents;
 using namespace std::chrono_literals;
 
 namespace {
-
-std::string contents(std::FILE* f) {
-  std::fflush(f);
-  std::rewind(f);
-  std::string s;
-  for (int c; (c = std::fgetc(f)) != EOF;) s += static_cast<char>(c);
-  return s;
-}
 
 StageMonitor::Options log_options(std::FILE* f) {
   StageMonitor::Options o;
@@ -49,7 +43,7 @@ TEST(StageMonitor, ALongStageIsShownOnceAndAShortOneNot) {
     monitor.stage("bar chain");           // ends at once: not shown
     monitor.done();
   }
-  const std::string text = contents(f);
+  const std::string text = file_contents(f);
   std::fclose(f);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
   EXPECT_EQ(text.rfind("reduce: FEM modes (stage 1 of 3): ", 0), 0u) << text;
@@ -69,7 +63,7 @@ TEST(StageMonitor, ALogLineIsRepeatedAtMostOncePerInterval) {
     std::this_thread::sleep_for(700ms);  // lines at ~30 ms, ~230, ~430, ~630 ms: at most 4
     monitor.done();
   }
-  const std::string text = contents(f);
+  const std::string text = file_contents(f);
   std::fclose(f);
   const auto lines = std::count(text.begin(), text.end(), '\n');
   EXPECT_GE(lines, 2) << text;
@@ -88,7 +82,7 @@ TEST(StageMonitor, QuietPrintsNothing) {
     monitor.stage("meshing (gmsh)");
     std::this_thread::sleep_for(150ms);
   }
-  EXPECT_EQ(contents(f), "");
+  EXPECT_EQ(file_contents(f), "");
   std::fclose(f);
 }
 
