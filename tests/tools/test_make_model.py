@@ -8,22 +8,14 @@ user runs it, into a temporary OUT under build/:
      call builds mesh, modes and chain; a second call runs no stage (every file keeps its
      time stamp); touching only the outline re-runs mesh, modes and reduce; another
      BODIES re-runs the reduction only."""
-import argparse
 import os
-import shutil
 import subprocess
 import sys
 import time
 
-p = argparse.ArgumentParser()
-p.add_argument("--source", required=True)
-p.add_argument("--build", required=True)
-p.add_argument("--work", required=True)
-a = p.parse_args()
+import tool_test_args
 
-work = os.path.abspath(a.work)
-shutil.rmtree(work, ignore_errors=True)
-os.makedirs(work)
+a, work = tool_test_args.arguments("source", "build", "work")
 out = os.path.join(work, "out")
 failures = []
 

@@ -4,21 +4,14 @@ rigid and on a stiff 2-body chain, 3 x 4 panels, 12 steps per wingbeat, 2 wingbe
 five phases each) made with `flapsim sweep`, then `make plots` on it: every figure of
 tools/plot_phase_study.py exists as a PDF (a PDF file, vector) and as a PNG of at least
 1000 pixels width; the per-sweep figures of tools/plot_sweep.py too, PDF and PNG."""
-import argparse
 import os
-import shutil
 import struct
 import subprocess
 import sys
 
-p = argparse.ArgumentParser()
-p.add_argument("--flapsim", required=True)
-p.add_argument("--source", required=True)
-p.add_argument("--work", required=True)
-a = p.parse_args()
-work = os.path.abspath(a.work)
-shutil.rmtree(work, ignore_errors=True)
-os.makedirs(work)
+import tool_test_args
+
+a, work = tool_test_args.arguments("flapsim", "source", "work")
 env = dict(os.environ, FLAPSIM_QUIET="1", OMP_NUM_THREADS="1")
 
 with open(os.path.join(work, "chain.toml"), "w") as f:

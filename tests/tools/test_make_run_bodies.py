@@ -5,21 +5,13 @@ case without a chain file makes its wing's model first. Before: the model had th
 but the chain file out/<wing>/chain.toml has 10". Now the reduction gets the case's
 structure.bodies. Checked with `make -n` (what make would run, nothing run) and
 tools/toml_inputs.py's CASE_BODIES."""
-import argparse
 import os
-import shutil
 import subprocess
 import sys
 
-p = argparse.ArgumentParser()
-p.add_argument("--source", required=True)
-p.add_argument("--build", required=True)
-p.add_argument("--work", required=True)
-a = p.parse_args()
+import tool_test_args
 
-work = os.path.abspath(a.work)
-shutil.rmtree(work, ignore_errors=True)
-os.makedirs(work)
+a, work = tool_test_args.arguments("source", "build", "work")
 case = os.path.join(work, "six_bodies.toml")
 with open(case, "w") as f:
     f.write(f'name = "six_bodies"\nwing = "{a.source}/wings/flat_plate.toml"\n'

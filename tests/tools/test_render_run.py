@@ -6,24 +6,16 @@ in one colour (orange, the chain black, the background white), at least 2 % of t
 pixels are that orange and their centre lies in the middle of the picture, where the
 script's camera frames the wing; the default picture (pressure colours) is not blank.
 A folder without the series is bad input (exit status 2)."""
-import argparse
 import os
-import shutil
 import subprocess
 import sys
 
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
-p = argparse.ArgumentParser()
-p.add_argument("--flapsim", required=True)
-p.add_argument("--source", required=True)
-p.add_argument("--work", required=True)
-a = p.parse_args()
+import tool_test_args
 
-work = os.path.abspath(a.work)
-shutil.rmtree(work, ignore_errors=True)
-os.makedirs(work)
+a, work = tool_test_args.arguments("flapsim", "source", "work")
 case = os.path.join(work, "case.toml")
 with open(case, "w") as f:
     f.write(f'name = "plate"\nwing = "{a.source}/wings/flat_plate.toml"\n'
