@@ -69,7 +69,16 @@ CsvTimeSeriesWriter::CsvTimeSeriesWriter(fs::path path, std::vector<std::string>
   stream_.open(working_, std::ios::binary | std::ios::trunc);
   if (!stream_) throw OutputError(path_, "cannot open the working file " + working_.string());
   write_header(stream_, columns_);
-  publish();  // the header alone is already a valid (empty) series
+  try {
+    publish();  // the header alone is already a valid (empty) series
+  } catch (...) {
+    // A constructor that throws runs no destructor: remove the working file here.
+    stream_.close();
+    std::error_code ignored;
+    fs::remove(working_, ignored);
+    fs::remove(staging_, ignored);
+    throw;
+  }
 }
 
 CsvTimeSeriesWriter::~CsvTimeSeriesWriter() {

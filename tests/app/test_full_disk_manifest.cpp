@@ -49,6 +49,13 @@ TEST(FullDiskManifest, ASweepOnAFullDiskExitsFourWithTheCause) {
   const std::string err = read_text(dir / "stderr.txt");
   EXPECT_NE(err.find("cannot write"), std::string::npos) << err;
   EXPECT_EQ(err.find(": Success"), std::string::npos) << err;
+  // The case whose history.csv could not be published leaves no temporary file (before: its
+  // history.csv.tmp.<pid>, the constructor of the series threw after creating it), and the
+  // sweep stops at the first case that cannot write (before: a case folder that freed its
+  // space let the next cases fail alike, and the sweep exited 0).
+  const std::string listing = read_text(dir / "listing.txt");
+  EXPECT_EQ(listing.find(".tmp."), std::string::npos) << listing;
+  EXPECT_NE(err.find("so the sweep stops"), std::string::npos) << err;
 }
 
 TEST(FullDiskManifest, ARunThatFillsTheDiskRecordsFailedNotRunning) {

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "common/scratch_dir.hpp"
 #include "pipeline/io/atomic_file.hpp"
@@ -96,6 +97,19 @@ TEST(AtomicWriteFailure, ACsvTimeSeriesBeyondTheLimitFailsAndKeepsWholeRows) {
   ASSERT_TRUE(fs::exists(dir / "h.csv"));
   EXPECT_TRUE(io::file_ends_with(dir / "h.csv", "\n"));
   EXPECT_LE(fs::file_size(dir / "h.csv"), 4096u);
+}
+
+// A series whose header cannot be published (the disk already full when a sweep's next case
+// opens its history.csv) leaves no working file. Before: the constructor threw after creating
+// history.csv.tmp.<pid>, and no destructor removed it (a sweep on a full tmpfs left
+// 02_0.1/history.csv.tmp.<pid> behind).
+TEST(AtomicWriteFailure, ACsvTimeSeriesWhoseHeaderCannotBePublishedLeavesNoFile) {
+  flapsim::test::ScratchDir dir("atomic_fsize_csv_header");
+  const std::vector<std::string> columns(200, "a_long_column_name_N");  // 4200 bytes of header
+  const int status = write_with_file_size_limit(4096, [&] { io::CsvTimeSeriesWriter w(dir / "h.csv", columns); });
+  EXPECT_EQ(status, 4);
+  EXPECT_FALSE(fs::exists(dir / "h.csv"));
+  EXPECT_TRUE(dir.temporaries().empty());
 }
 
 TEST(AtomicWriteFailure, PublishRefusesATruncatedFileFromAnExternalWriter) {

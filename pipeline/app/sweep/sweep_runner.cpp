@@ -55,6 +55,17 @@ void progress_line(std::size_t finished, std::size_t total, const SweepRow& r, d
                r.outcome.message.empty() ? "" : ": ", r.outcome.message.c_str(), r.outcome.rank, wall);
 }
 
+// Whether a case's error says that its output found no room: an io::OutputError ("cannot
+// write '…'") from a write that failed (its message asks "disk full?") or from the system's
+// ENOSPC, EDQUOT or EFBIG (the text of strerror). Text, because a remote rank's outcome
+// arrives as text.
+bool out_of_room(const std::string& message) {
+  if (message.rfind("cannot write '", 0) != 0) return false;
+  for (const char* cause : {"disk full", "No space left on device", "Disk quota exceeded", "File too large"})
+    if (message.find(cause) != std::string::npos) return true;
+  return false;
+}
+
 }  // namespace
 
 SweepPlan grid_plan(const std::vector<Variation>& variations) {
@@ -145,6 +156,9 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
     } catch (const NumericalFailure& e) {
       o.status = "failed";
       o.message = e.what();  // no results in the table (nan): its summary.json tells how far it got
+    } catch (const io::OutputError& e) {
+      o.status = "error";
+      o.message = e.what();  // "cannot write '…'": stops the sweep once recorded (below)
     } catch (const std::exception& e) {
       o.status = "error";
       o.message = e.what();
@@ -168,6 +182,14 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
     }
     if (!options.quiet)
       progress_line(finished, n, rows[i], std::chrono::duration<double>(now - start).count());
+    // A case that could not write its files for want of room (a full disk, a quota, a
+    // file-size limit): the next cases would fail alike, so the sweep stops (exit status 4)
+    // once the case is in the table; the same command resumes it. (A folder that cannot be
+    // written is the case's own error: the others go on.)
+    if (const CaseOutcome& o = rows[i].outcome; o.status == "error" && out_of_room(o.message))
+      throw io::OutputError(options.output_dir / rows[i].folder,
+                            "the case's output failed, so the sweep stops (no further case starts; sweep.csv "
+                            "lists the cases so far; the same command resumes): " + o.message);
   };
   report.stats = schedule_cases(world, todo, report.threads, run, done);
   if (report.root) write_sweep_table(options.output_dir / "sweep.csv", plan.keys, rows);
