@@ -53,6 +53,7 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
       wake_pvd_.emplace(dir_ / "wake.pvd");
     }
     chain_pvd_.emplace(dir_ / "chain.pvd");
+    series_published_ = std::chrono::steady_clock::now();
     io::ensure_directory(dir_ / "vtk");
     write_state();
   }
@@ -113,21 +114,32 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
     }
     io::add_step_values(wing, values);
     const auto wf = io::PvdSeries::step_file_name("vtk/wing", step, "vtp");
-    io::write_vtp(dir_ / wf, wing);
-    wing_pvd_->add(t, dir_ / wf);
+    io::write_vtp(dir_ / wf, wing, io::Flush::deferred);
+    wing_pvd_->append(t, dir_ / wf);
     io::PolyDataMesh wake = io::wake_mesh(model.lattice, *data.lattice, t);
     if (wake.cell_data.scalars.front().values.size() > 0)
       circulation_range_ = std::max(circulation_range_, wake.cell_data.scalars.front().values.cwiseAbs().maxCoeff());
     io::add_step_values(wake, values);
     const auto kf = io::PvdSeries::step_file_name("vtk/wake", step, "vtp");
-    io::write_vtp(dir_ / kf, wake);
-    wake_pvd_->add(t, dir_ / kf);
+    io::write_vtp(dir_ / kf, wake, io::Flush::deferred);
+    wake_pvd_->append(t, dir_ / kf);
   }
   io::PolyDataMesh chain = io::chain_mesh(model.chain, data.chain, t);
   io::add_step_values(chain, values);
   const auto cf = io::PvdSeries::step_file_name("vtk/chain", step, "vtp");
-  io::write_vtp(dir_ / cf, chain);
-  chain_pvd_->add(t, dir_ / cf);
+  io::write_vtp(dir_ / cf, chain, io::Flush::deferred);
+  chain_pvd_->append(t, dir_ / cf);
+  publish_series(false);
+}
+
+void RunRecorder::publish_series(bool now) {
+  if (!chain_pvd_ || chain_pvd_->unpublished() == 0) return;
+  const auto clock = std::chrono::steady_clock::now();
+  if (!now && clock - series_published_ < kSeriesPublishInterval) return;
+  io::sync_file_system(dir_);  // the frames first: a .pvd lists only frames on disk
+  for (auto* series : {&wing_pvd_, &wake_pvd_, &chain_pvd_})
+    if (*series) (*series)->publish();
+  series_published_ = clock;
 }
 
 void RunRecorder::write_state() const {
@@ -239,6 +251,13 @@ RunResults RunRecorder::finish(const fsi::FsiData& data, const std::string& stat
     history_.close();
   } catch (const io::OutputError& e) {
     history_failure = std::current_exception();
+    final_status = "failed";
+    if (final_error.empty()) final_error = std::string("output error: ") + e.what();
+  }
+  try {
+    publish_series(true);  // the frames written since the last publication
+  } catch (const io::OutputError& e) {
+    if (!history_failure) history_failure = std::current_exception();
     final_status = "failed";
     if (final_error.empty()) final_error = std::string("output error: ") + e.what();
   }

@@ -68,7 +68,7 @@ void sync_directory(const fs::path& dir) {
 }
 }  // namespace
 
-void replace_file(const fs::path& from, const fs::path& to) {
+void replace_file(const fs::path& from, const fs::path& to, bool sync_dir) {
   std::error_code ec;
   fs::rename(from, to, ec);
   if (ec) {
@@ -76,7 +76,16 @@ void replace_file(const fs::path& from, const fs::path& to) {
     fs::remove(from, ignored);
     throw OutputError(to, "cannot rename the temporary file onto it: " + ec.message());
   }
-  sync_directory(to.parent_path());
+  if (sync_dir) sync_directory(to.parent_path());
+}
+
+void sync_file_system(const fs::path& dir) {
+  const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw OutputError(dir, std::string("cannot open the folder to flush it: ") + std::strerror(errno));
+  const int rc = ::syncfs(fd);
+  const int err = errno;
+  ::close(fd);
+  if (rc != 0) throw OutputError(dir, std::string("flushing to disk failed: ") + std::strerror(err));
 }
 
 namespace {
@@ -119,7 +128,7 @@ void write_file_atomically(const fs::path& path, const std::function<void(std::o
 }
 
 void publish_file_atomically(const fs::path& path, const std::function<void(const fs::path& tmp)>& write,
-                             std::string_view required_tail) {
+                             std::string_view required_tail, Flush flush) {
   ensure_directory(path.parent_path());
   const fs::path tmp = temporary_path(path);
   TemporaryGuard guard(tmp);
@@ -128,8 +137,8 @@ void publish_file_atomically(const fs::path& path, const std::function<void(cons
   if (!fs::is_regular_file(tmp, ec)) throw OutputError(path, "the writer produced no file");
   if (!required_tail.empty() && !file_ends_with(tmp, required_tail))
     throw OutputError(path, "the written file is incomplete (disk full or file-size limit?)");
-  sync_file(tmp, path);
-  replace_file(tmp, path);
+  if (flush == Flush::now) sync_file(tmp, path);
+  replace_file(tmp, path, flush == Flush::now);
   guard.release();
 }
 

@@ -44,8 +44,21 @@ void prepare_output_directory(const std::filesystem::path& dir);
 std::filesystem::path temporary_path(const std::filesystem::path& path);
 
 /// \brief Renames \p from onto \p to (replacing it); removes \p from on failure.
+/// \param sync_directory  flush the folder's entries to disk after the rename
 /// \throws OutputError
-void replace_file(const std::filesystem::path& from, const std::filesystem::path& to);
+void replace_file(const std::filesystem::path& from, const std::filesystem::path& to, bool sync_directory = true);
+
+/// When a file written by publish_file_atomically reaches the disk.
+enum class Flush {
+  now,       ///< flushed (fsync) before the rename, the folder after it
+  deferred,  ///< renamed at once; the caller flushes the file system (sync_file_system)
+             ///< before it publishes anything that names the file (a run's ParaView frames)
+};
+
+/// \brief Flushes every written file of the file system holding \p dir to the disk
+/// (syncfs: one call for many files, e.g. the frames of a time series).
+/// \throws OutputError naming \p dir if the flush fails (a write-back error)
+void sync_file_system(const std::filesystem::path& dir);
 
 /// \brief Writes a file atomically through a stream.
 /// \param path   final file name; its directory is created if missing
@@ -61,11 +74,12 @@ void write_file_atomically(const std::filesystem::path& path,
 /// \param path           final file name; its directory is created if missing
 /// \param write          writes the complete file to the temporary name it is given; may throw
 /// \param required_tail  text the complete file ends with ("" = no check)
+/// \param flush          Flush::now, or Flush::deferred (checked and renamed, not flushed)
 /// \throws OutputError if \p write leaves no file or a truncated one, or flushing or
 ///         renaming fails; rethrows what \p write throws
 void publish_file_atomically(const std::filesystem::path& path,
                              const std::function<void(const std::filesystem::path& tmp)>& write,
-                             std::string_view required_tail = {});
+                             std::string_view required_tail = {}, Flush flush = Flush::now);
 
 /// \brief Flushes a written file's data to the disk (fsync).
 /// \param reported  the name errors report (the final name of a temporary file)

@@ -13,13 +13,23 @@ namespace fs = std::filesystem;
 
 PvdSeries::PvdSeries(fs::path path) : path_(std::move(path)) { write(); }
 
-void PvdSeries::add(double time, const fs::path& file, int part) {
+void PvdSeries::append(double time, const fs::path& file, int part) {
   const fs::path dir = fs::absolute(path_).parent_path().lexically_normal();
   std::string name = fs::absolute(file).lexically_normal().lexically_relative(dir).generic_string();
   if (name.empty()) name = fs::absolute(file).generic_string();  // no relative form (another root)
   entries_.push_back({time, part, std::move(name)});
+}
+
+void PvdSeries::publish() {
+  if (published_ == entries_.size()) return;
+  write();  // on failure the .pvd on disk still lists the previous steps
+  published_ = entries_.size();
+}
+
+void PvdSeries::add(double time, const fs::path& file, int part) {
+  append(time, file, part);
   try {
-    write();
+    publish();
   } catch (...) {
     entries_.pop_back();  // the .pvd on disk still lists the previous steps
     throw;

@@ -119,7 +119,7 @@ void configure(Writer* w, const std::filesystem::path& tmp) {
 
 }  // namespace
 
-void write_vtp(const std::filesystem::path& path, const PolyDataMesh& mesh) {
+void write_vtp(const std::filesystem::path& path, const PolyDataMesh& mesh, Flush flush) {
   const std::string what = "write_vtp '" + path.string() + "'";
   const long np = mesh.points.cols();
   vtkNew<vtkCellArray> polys, lines;
@@ -166,7 +166,7 @@ void write_vtp(const std::filesystem::path& path, const PolyDataMesh& mesh) {
     configure(writer.GetPointer(), tmp);
     if (writer->Write() != 1 || writer->GetErrorCode() != 0)
       throw OutputError(path, "VTK could not write the file (disk full or file-size limit?)");
-  }, kVtkFileTail);
+  }, kVtkFileTail, flush);
 }
 
 void write_vtu(const std::filesystem::path& path, const UnstructuredMesh& mesh) {

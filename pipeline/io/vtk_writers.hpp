@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "pipeline/io/atomic_file.hpp"
+
 namespace flapsim::io {
 
 /// A named scalar field: one value per point (or per cell).
@@ -84,9 +86,11 @@ struct UnstructuredMesh {
 };
 
 /// \brief Writes a .vtp file atomically.
+/// \param flush  Flush::deferred for the frames of a time series whose .pvd is published
+///               after sync_file_system (atomic_file.hpp)
 /// \throws std::invalid_argument on an out-of-range index, a too-short cell or a
 ///         field of the wrong size; OutputError if the file cannot be written
-void write_vtp(const std::filesystem::path& path, const PolyDataMesh& mesh);
+void write_vtp(const std::filesystem::path& path, const PolyDataMesh& mesh, Flush flush = Flush::now);
 
 /// \brief Writes a .vtu file atomically.
 /// \throws std::invalid_argument on an out-of-range index or a field of the wrong
