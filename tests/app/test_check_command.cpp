@@ -65,7 +65,9 @@ class CheckCommand : public ::testing::Test {
     EXPECT_EQ(r.status, 2) << name << ": " << r.err;
     EXPECT_NE(r.err.find(name + ":" + std::to_string(line) + ":"), std::string::npos)
         << name << ": " << r.err;
-    if (!key.empty()) EXPECT_NE(r.err.find("key '" + key + "'"), std::string::npos) << r.err;
+    if (!key.empty()) {
+      EXPECT_NE(r.err.find("key '" + key + "'"), std::string::npos) << r.err;
+    }
     EXPECT_TRUE(r.out.empty()) << r.out;
     EXPECT_TRUE(work_is_empty());
   }

@@ -50,7 +50,9 @@ TEST(ImpulsiveStart, AspectRatio4AgainstIndependentUvlm) {
     const double ratio = r.at(k).first / cl_ss;
     std::printf("[ value ] Ut/c %.1f: CL/CL_ss %.4f (ref %.2f, %+.2f %%), Bernoulli/KJ %.4f\n", k / 16.0,
                 ratio, ratio_ref, 100 * (ratio / ratio_ref - 1), r.at(k).first / r.at(k).second);
-    if (k >= 16) EXPECT_NEAR(ratio / ratio_ref, 1.0, 0.03) << "Ut/c " << k / 16.0;
+    if (k >= 16) {
+      EXPECT_NEAR(ratio / ratio_ref, 1.0, 0.03) << "Ut/c " << k / 16.0;
+    }
     EXPECT_NEAR(r.at(k).first / r.at(k).second, 1.0, 0.01) << "Bernoulli vs KJ at Ut/c " << k / 16.0;
   }
 }
@@ -97,6 +99,8 @@ TEST(ImpulsiveStart, AWakeCoreAsLargeAsThePanelsLeavesTheLiftAlone) {
   for (int k : {16, 32}) {
     std::printf("[ value ] Ut/c %.0f: CL %.4f (core 1e-6 c), %.4f (core 0.1 c)\n", k / 8.0, a.at(k).first,
                 b.at(k).first);
-    if (k == 32) EXPECT_NEAR(b.at(k).first / a.at(k).first, 1.0, 0.01) << "Ut/c " << k / 8.0;
+    if (k == 32) {
+      EXPECT_NEAR(b.at(k).first / a.at(k).first, 1.0, 0.01) << "Ut/c " << k / 8.0;
+    }
   }
 }

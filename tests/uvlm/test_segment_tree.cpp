@@ -143,7 +143,9 @@ TEST(SegmentTree, MatchesTheDirectSumWithinItsToleranceOnAHoverWake) {
     EXPECT_GT(tree.pieces(), s.size());                // long segments were cut
     // Cut into pieces, the near field shrinks: at 1e-3 fewer direct pairs than half of
     // the direct sum's (40 % measured; 80 % with the segments uncut).
-    if (tolerance == 1e-3) EXPECT_LT(direct, 0.5 * all);
+    if (tolerance == 1e-3) {
+      EXPECT_LT(direct, 0.5 * all);
+    }
   }
 }
 

@@ -72,10 +72,11 @@ TEST(WakeTreatments, FrozenWakeStaysWhereItIs) {
     advance(m, d);
     for (int q = 0; q < static_cast<int>(age.size()); ++q) {
       const double moved = std::abs(d.wake_nodes.z[q * n1 + n1 / 2] - before[q * n1 + n1 / 2]);
-      if (age[q] > m.frozen_wake_age)
+      if (age[q] > m.frozen_wake_age) {
         EXPECT_EQ(moved, 0.0) << "row " << q << " age " << age[q];
-      else if (q + 1 < static_cast<int>(age.size()))
+      } else if (q + 1 < static_cast<int>(age.size())) {
         EXPECT_GT(moved, 0.0) << "row " << q << " age " << age[q];
+      }
     }
   }
 }
