@@ -37,7 +37,7 @@ std::string check_case_like_run(const io::Case& c) {
   std::optional<wings::Wing> wing;
   if (!c.wing_file.empty()) wing = print_wing_warnings(wings::load_wing_file(c.wing_file));
   if (c.air.enabled && !wing)
-    throw InputError(c.file, 0, "wing",
+    throw InputError(c.file, c.line_of("wing"), "wing",
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "
                      "file, or set air = \"none\" for a vacuum run of the chain");
   int bodies = c.structure.bodies;
