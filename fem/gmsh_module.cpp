@@ -143,7 +143,11 @@ void mesh_locked(const GmshWingRequest& request, GmshWingMesh& result) {
   if (!request.msh_path.empty()) {
     const std::filesystem::path path = request.msh_path;
     std::filesystem::path tmp = path;
-    tmp.replace_filename("." + path.stem().string() + ".tmp" + path.extension().string());
+    std::string tmp_name = ".";  // appended piece by piece: GCC 12 warns (-Wrestrict) on "." + string
+    tmp_name += path.stem().string();
+    tmp_name += ".tmp";
+    tmp_name += path.extension().string();
+    tmp.replace_filename(tmp_name);
     try {
       gmsh::write(tmp.string());
       std::filesystem::rename(tmp, path);
