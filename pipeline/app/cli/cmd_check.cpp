@@ -10,6 +10,7 @@
 #include <string>
 
 #include "fem/wing_mesher.hpp"
+#include "pipeline/app/chain_wing_match.hpp"
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/resource_estimate.hpp"
@@ -51,7 +52,8 @@ std::string check_case_like_run(const io::Case& c) {
     // so that the chain's frequencies can be warned about.
     const app::FsiSetup setup = app::build_fsi_setup(c, app::SetupOptions{});
     bodies = setup.model.chain.num_bodies();
-    for (const std::string& w : {app::soft_chain_warning(c, setup), app::near_resonance_warning(c, setup)})
+    for (const std::string& w : {app::chain_wing_mismatch_warning(setup), app::soft_chain_warning(c, setup),
+                                  app::near_resonance_warning(c, setup)})
       if (!w.empty()) std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   }
   const app::RunEstimate estimate = app::estimate_run(c, bodies);
