@@ -4,6 +4,10 @@
 // the hawkmoth's.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <cstdlib>
+
 #include <fstream>
 #include <string>
 
@@ -45,6 +49,28 @@ TEST(ChainWingMatch, AChainOfAnotherWingIsWarnedWithBothMassesAndLengths) {
   // wings/flat_plate.toml: 40 x 10 mm, 0.2 mm PET at 1390 kg/m³ = 111.2 mg (1.1 % from the
   // chain's 110 mg), span 40 mm: a match.
   EXPECT_EQ(warning_with(dir, "flat_plate.toml"), "");
+}
+
+// `check --chain` builds the case with that chain, as `run --chain` does, and warns alike
+// (make run passes the chain it will use); on a wing file the option is a usage error.
+TEST(ChainWingMatch, CheckTakesTheChainRunWouldUse) {
+  ScratchDir dir("chain_wing_match_check");
+  std::ofstream(dir / "chain.toml") << kChain;
+  std::ofstream(dir / "case.toml") << "wing = \"" << kSourceDir
+                                   << "/wings/hawkmoth.toml\"\n[kinematics]\nfrequency_hz = 10\n"
+                                      "sweep = { cos_deg = [50.0] }\nrotation = 90.0\n"
+                                      "[structure]\nkind = \"flexible\"\nbodies = 2\n";
+  const auto check = [&](const std::string& file) {
+    const std::string err = (dir / "err.txt").string();
+    const int status = std::system(("FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' check " +
+                                    file + " --chain " + (dir / "chain.toml").string() + " > /dev/null 2> " + err)
+                                       .c_str());
+    return std::make_pair(WEXITSTATUS(status), read_text(err));
+  };
+  const auto [status, err] = check((dir / "case.toml").string());
+  EXPECT_EQ(status, 0) << err;
+  EXPECT_NE(err.find("the chain (110 mg, 40 mm"), std::string::npos) << err;
+  EXPECT_EQ(check(kSourceDir + "/wings/hawkmoth.toml").first, 1);
 }
 
 }  // namespace
