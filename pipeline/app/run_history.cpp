@@ -71,6 +71,13 @@ StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
   s.tip = fsi::body_angles(model.chain, data.chain, kinematics.stroke_plane_angle,
                            model.chain.num_bodies() - 1);
   s.outer = fsi::body_angles(model.chain, data.chain, kinematics.stroke_plane_angle, outer_body);
+  if (data.state.q.size() > 0) {
+    const Eigen::VectorXd deflection = data.state.q - model.chain.rest_angles();
+    for (Eigen::Index k = 0; k + 1 < deflection.size(); k += 2) {
+      s.tip_bend += deflection(k);
+      s.tip_twist += deflection(k + 1);
+    }
+  }
   if (model.air) {
     const uvlm::PanelLoads& loads = data.lattice->loads;
     s.force = loads.total_force;

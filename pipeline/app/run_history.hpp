@@ -43,6 +43,10 @@ struct StepSample {
   double cp = 0.0;                   ///< power coefficient P / (½ ρ U_ref³ S) [-]
   int coupling_iterations = 0;       ///< lattice solves of the step
   double coupling_change = 0.0;      ///< structure change at the end of the step [rad]
+  /// The tip's deflection relative to the base, from the joint angles (0 for a rigid wing):
+  /// the sum over the joints of bend − rest bend, and of twist − rest twist [rad].
+  double tip_bend = 0.0;
+  double tip_twist = 0.0;
 };
 
 /// \brief The sample of the step just taken (after fsi::coupled_step).

@@ -207,6 +207,16 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   r.set("outer_rotation_lag",
         fsi::crossing_lag(t, outer_alpha, base_alpha, right_angle, period, t_begin, t_end).value_or(nan));
 
+  if (setup_.model.chain.num_dofs() > 0) {
+    double bend = 0.0, twist = 0.0;
+    for (const StepSample& s : samples_) {
+      bend = std::max(bend, std::abs(s.tip_bend));
+      twist = std::max(twist, std::abs(s.tip_twist));
+    }
+    r.set("peak_tip_bend_deg", bend * 180.0 / std::numbers::pi);
+    r.set("peak_tip_twist_deg", twist * 180.0 / std::numbers::pi);
+  }
+
   double iterations = 0.0;
   int max_iterations = 0;
   for (const StepSample& s : samples_) {

@@ -130,6 +130,13 @@ inline constexpr auto kRunResults = [] {
                        "rotation phase of the outer body"},
       ResultDefinition{"outer_rotation_lag", "", K::number, "%.4f", "outer lag",
                        "outer body's α = 90° crossings minus the base's"},
+      // The flexible wing's deflection (chains with joints).
+      ResultDefinition{"peak_tip_bend_deg", "deg", K::number, "%.1f", "",
+                       "largest |Σ (bend − rest bend)| over the joints during the run: the tip's bend "
+                       "relative to the base (flexible wing)"},
+      ResultDefinition{"peak_tip_twist_deg", "deg", K::number, "%.1f", "",
+                       "largest |Σ (twist − rest twist)| over the joints during the run: the tip's twist "
+                       "relative to the base (flexible wing)"},
       // The numerics.
       ResultDefinition{"mean_coupling_iterations", "", K::number, "%.2f", "iterations",
                        "lattice solves per step, mean over the run"},

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "fem/wing_mesher.hpp"
+#include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/io/case_file.hpp"
@@ -44,11 +45,14 @@ std::string check_case_like_run(const io::Case& c) {
   if (reduced_in_process && wing) {
     app::check_lattice_can_follow(c, *wing);
     check_meshable(*wing);
-  } else {
-    const app::FsiSetup setup = app::build_fsi_setup(c, app::SetupOptions{});  // reads the chain file
+  }
+  {
+    // Reads the chain file, or reduces the wing in process as `run` does (its FEM: seconds),
+    // so that the chain's frequencies can be warned about.
+    const app::FsiSetup setup = app::build_fsi_setup(c, app::SetupOptions{});
     bodies = setup.model.chain.num_bodies();
-    if (const std::string soft = app::soft_chain_warning(c, setup); !soft.empty())
-      std::fprintf(stderr, "flapsim: warning: %s\n", soft.c_str());
+    for (const std::string& w : {app::soft_chain_warning(c, setup), app::near_resonance_warning(c, setup)})
+      if (!w.empty()) std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   }
   const app::RunEstimate estimate = app::estimate_run(c, bodies);
   app::refuse_if_it_cannot_fit(estimate, c);

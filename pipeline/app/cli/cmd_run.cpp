@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/resource_estimate.hpp"
@@ -64,8 +65,8 @@ void run_command(const RunArgs& a) {
     if (!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9))
       std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
     app::refuse_if_it_cannot_fit(estimate, c);
-    if (const std::string soft = app::soft_chain_warning(c, setup); !soft.empty())
-      std::fprintf(stderr, "flapsim: warning: %s\n", soft.c_str());
+    for (const std::string& w : {app::soft_chain_warning(c, setup), app::near_resonance_warning(c, setup)})
+      if (!w.empty()) std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
     claim.claim(a.force);
   };
   app::RunResults results;
@@ -76,6 +77,8 @@ void run_command(const RunArgs& a) {
     throw;
   }
   claim.finish("complete");
+  if (const std::string w = app::large_deflection_warning(results); !w.empty())
+    std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   if (!a.quiet) {
     std::fputs(app::run_report(results).c_str(), stdout);
     std::printf("outputs in %s (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd, run.pvsm)\n",

@@ -13,6 +13,7 @@
 #include <optional>
 #include <thread>
 
+#include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
@@ -137,6 +138,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       o.overhead_s = std::chrono::duration<double>(Clock::now() - t0).count();  // resolving
       o.results = app::run_case(r.c, ro);
       o.status = "ok";
+      o.message = app::large_deflection_note(o.results);
     } catch (const app::Interrupted& e) {
       o.status = "interrupted";
       o.message = e.what();  // its summary.json says how far it got; a rerun of the sweep runs it again

@@ -1,0 +1,41 @@
+#pragma once
+/// \file flexibility_warnings.hpp
+/// \brief Warnings about a flexible wing whose results hinge on its resonance: before a
+/// run, a chain mode near the wingbeat frequency or twice it; after a run, a tip bent or
+/// twisted beyond the small rotations the joint springs were derived for.
+/// (A chain whose first mode lies below the wingbeat: soft_chain_warning, fsi_setup.hpp.)
+
+#include <string>
+
+#include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/app/run_results.hpp"
+#include "pipeline/io/case_model.hpp"
+
+namespace flapsim::app {
+
+/// The dynamic amplification 1 / |1 − (n f / f_mode)²| of an undamped oscillator of
+/// frequency f_mode driven at n f ([Thomson & Dahleh 1998], ch. 3, docs/references.md) from
+/// which a chain mode is said to be near resonance. A convention (the response is then
+/// more resonant than static), not calibrated on any result.
+inline constexpr double kResonantAmplification = 2.0;
+
+/// The tip's bend or twist relative to the base [deg] beyond which a run is warned about:
+/// the joint springs come from the linear (small-rotation) FEM of the wing; at 30°
+/// sin θ / θ = 0.955, the small-rotation assumption is off by about 5 %. A convention.
+inline constexpr double kLargeTipDeflectionDeg = 30.0;
+
+/// \brief "" or the warning for a flexible chain with a mode whose dynamic amplification
+/// at the wingbeat frequency f or at 2 f (the lift's and the inertial loads' main
+/// harmonic) is kResonantAmplification or more; names the mode, its frequency, the ratio
+/// and the amplification. "" when the first mode lies below f (soft_chain_warning says so).
+std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup);
+
+/// \brief "" or the warning for a run whose peak tip bend or twist (peak_tip_bend_deg,
+/// peak_tip_twist_deg) exceeds kLargeTipDeflectionDeg, with the numbers.
+std::string large_deflection_warning(const RunResults& results);
+
+/// \brief The same in a few words for the message column of sweep.csv: "" or
+/// "large deflection: tip bend 103.5 deg, twist 31.8 deg (over 30 deg)".
+std::string large_deflection_note(const RunResults& results);
+
+}  // namespace flapsim::app
