@@ -39,7 +39,7 @@ RUN_CHAIN         := $(if $(CASE_NEEDS_MODEL),$(PIPELINE_CHAIN))
 
 
 run: build $(RUN_CHAIN)
-	@$(PIPELINE_BIN) check $(CASE) > /dev/null
+	@$(PIPELINE_BIN) check $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) > /dev/null
 	@start=$$(date +%s.%N); \
 	OMP_NUM_THREADS=1 $(PIPELINE_BIN) run $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) \
 	  --spring-scale $(PIPELINE_SPRINGS) -o $(RUN_OUT) || exit $$?; \

@@ -267,7 +267,11 @@ Planform read_planform(const TomlTable& p) {
   if (from_file) {
     // The CSV is in units of the wing length; 'span' scales it.
     if (!p.has("span")) p.fail("span", "missing required key: a CSV outline is scaled to 'span'");
-    csv = read_outline_csv_lines(p.get_path("outline_file"), p.key_path("outline_file"));
+    const std::string csv_path = p.get_path("outline_file");
+    // A missing file is the wing file's error, at the line that names it.
+    if (std::error_code ec; !std::filesystem::exists(csv_path, ec))
+      p.fail("outline_file", "file not found: " + csv_path + " (paths are relative to the wing file's folder)");
+    csv = read_outline_csv_lines(csv_path, p.key_path("outline_file"));
     out.outline = csv.points;
   } else if (outline_key == "shape") {
     out.outline = read_shape_outline(p, samples);

@@ -169,12 +169,12 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   s.steps_per_cycle = c.numerics.steps_per_cycle;
   s.steps = c.numerics.total_steps();
   if (s.steps > io::kMaxTotalSteps)
-    throw InputError(c.file, 0, "numerics.cycles",
+    throw InputError(c.file, c.line_of("numerics.cycles"), "numerics.cycles",
                      std::to_string(s.steps) + " time steps, more than the maximum " + std::to_string(io::kMaxTotalSteps));
   s.dt = s.period / s.steps_per_cycle;
   s.wing = load_case_wing(c, options.wing_overrides);
   if (c.air.enabled && !s.wing)
-    throw InputError(c.file, 0, "wing",
+    throw InputError(c.file, c.line_of("wing"), "wing",
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "
                      "file, or set air = \"none\" for a vacuum run of the chain");
   if (s.wing) check_lattice_can_follow(c, *s.wing);
@@ -194,14 +194,14 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   if (c.structure.kind == Case::Structure::Kind::Flexible && m.chain.num_bodies() != c.structure.bodies)
     s.structure_source += " (" + std::to_string(m.chain.num_bodies()) + " bodies; the case says " +
                           std::to_string(c.structure.bodies) + ")";
-  for (const auto& l : c.loads)
-    if (l.body > m.chain.num_bodies())
-      throw InputError(c.file, 0, "loads.body",
+  for (std::size_t i = 0; i < c.loads.size(); ++i)
+    if (const auto& l = c.loads[i]; l.body > m.chain.num_bodies())
+      throw InputError(c.file, c.line_of("loads." + std::to_string(i + 1) + ".body"), "loads.body",
                        "body " + std::to_string(l.body) + " is outside the chain of " +
                            std::to_string(m.chain.num_bodies()) + " bodies");
-  for (const auto& mk : c.markers)
-    if (mk.body > m.chain.num_bodies())
-      throw InputError(c.file, 0, "markers.body",
+  for (std::size_t i = 0; i < c.markers.size(); ++i)
+    if (const auto& mk = c.markers[i]; mk.body > m.chain.num_bodies())
+      throw InputError(c.file, c.line_of("markers." + std::to_string(i + 1) + ".body"), "markers.body",
                        "marker '" + mk.name + "' on body " + std::to_string(mk.body) +
                            " is outside the chain of " + std::to_string(m.chain.num_bodies()) + " bodies");
 
@@ -252,7 +252,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
       ref.drag_direction = c.air.freestream / ref.free_stream_speed;
       const Eigen::Vector3d up = Eigen::Vector3d::UnitZ() - ref.drag_direction.z() * ref.drag_direction;
       if (up.norm() < 1e-9)
-        throw InputError(c.file, 0, "air.freestream",
+        throw InputError(c.file, c.line_of("air.freestream"), "air.freestream",
                          "a vertical free stream leaves lift and drag undefined (lift is normal to it, "
                          "in the vertical plane)");
       ref.lift_direction = up.normalized();
@@ -261,7 +261,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
       ref.speed = ref.flapping_speed;
     }
     if (!(ref.speed > 0.0))
-      throw InputError(c.file, 0, "air.freestream",
+      throw InputError(c.file, c.line_of("air.freestream"), "air.freestream",
                        "neither a free stream nor a moving wing: no reference speed for the coefficients");
   }
   return s;

@@ -106,7 +106,7 @@ double usable_memory_bytes() {
 void refuse_if_it_cannot_fit(const RunEstimate& e, const io::Case& c) {
   const double usable = usable_memory_bytes();
   if (e.memory_bytes <= usable) return;
-  throw InputError(c.file, 0, "numerics.cycles",
+  throw InputError(c.file, c.line_of("numerics.cycles"), "numerics.cycles",
                    "the run needs about " + bytes_text(e.memory_bytes) + " of memory, more than the " +
                        bytes_text(usable) + " this machine offers (" + describe(e) +
                        "); shorten it (numerics.cycles, numerics.steps_per_cycle) or bound the wake "

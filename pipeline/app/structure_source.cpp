@@ -19,7 +19,7 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
   StructureChoice s;
   if (c.structure.kind == Kind::Rigid) {
     if (!wing)
-      throw InputError(c.file, 0, "structure.kind",
+      throw InputError(c.file, c.line_of("structure.kind"), "structure.kind",
                        "a rigid wing is built from the wing file: name one with 'wing'");
     s.chain = make_rigid_chain(*wing);
     s.description = "rigid wing (one body welded to the base)";

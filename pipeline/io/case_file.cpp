@@ -303,6 +303,18 @@ Case read_case(TomlTable root) {
   root.read_length_unit();
   Case c;
   c.file = root.file();
+  for (const std::string& key : root.keys()) {
+    c.key_lines[key] = root.line_of(key);
+    if (root.is_table(key))
+      for (const TomlTable t = root.get_table(key); const std::string& sub : t.keys())
+        c.key_lines[key + "." + sub] = t.line_of(sub);
+    else if (key == "loads" || key == "markers") {  // "loads.2.body": the second [[loads]]'s body
+      const std::vector<TomlTable> tables = root.get_tables(key);
+      for (std::size_t i = 0; i < tables.size(); ++i)
+        for (const std::string& sub : tables[i].keys())
+          c.key_lines[key + "." + std::to_string(i + 1) + "." + sub] = tables[i].line_of(sub);
+    }
+  }
   c.name = root.get_string("name", std::filesystem::path(root.file()).stem().string());
   // A name is a label, never a path: "../../x" or "/tmp/x" would lead the default output
   // folder (out/<name>) elsewhere.

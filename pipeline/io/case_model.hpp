@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -45,6 +46,19 @@ struct Marker {
 
 struct Case {
   std::string file;        ///< path of the case file
+  /// Line of each key given in the file, by dotted name ("numerics.cycles"; the tables
+  /// themselves too: "numerics"; "loads.2.body" in the second [[loads]]), for the errors
+  /// found after reading (run setup, size).
+  std::map<std::string, int, std::less<>> key_lines;
+  /// \brief The line of a dotted key: its own if given, else its table's, else 0.
+  int line_of(std::string_view key) const {
+    for (std::string_view k = key;;) {
+      if (const auto it = key_lines.find(k); it != key_lines.end()) return it->second;
+      const auto dot = k.rfind('.');
+      if (dot == std::string_view::npos) return 0;
+      k = k.substr(0, dot);
+    }
+  }
   /// Accepted but likely to mislead (a long hover with the whole wake free); the command
   /// line prints each on stderr and carries on (wings/input_warning.hpp).
   std::vector<InputWarning> warnings;

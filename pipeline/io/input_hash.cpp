@@ -13,8 +13,8 @@ namespace flapsim::io {
 // else two runs that differ in it would share a hash (and a sweep re-run would keep a
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
-// (Case::Structure::bodies_line, initial_angles_line, initial_rates_line locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run; they change no result.)
-static_assert(sizeof(Case) == 1328, "io::Case changed: add the new field to canonical_inputs()");
+// (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run; they change no result.)
+static_assert(sizeof(Case) == 1376, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344, "wings::Wing changed: add the new field to canonical_inputs()");

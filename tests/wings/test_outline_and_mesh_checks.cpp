@@ -56,6 +56,19 @@ TEST(OutlineCsv, ASelfIntersectionIsReportedAtTheCsvLineOfItsEdge) {
   EXPECT_EQ(e.key(), "planform.outline_file");
 }
 
+TEST(OutlineCsv, AMissingOutlineFileIsTheWingFilesErrorAtItsLine) {
+  // Before: "bow.csv: key 'planform.outline_file': the outline file does not exist" — the
+  // missing file named, not the wing file and the line that names it.
+  flapsim::test::ScratchDir dir("outline_csv_missing");
+  std::ofstream(dir / "w.toml") << wing_text("outline_file = \"bwo.csv\"\nspan = 40.0\n");
+  auto e = expect_input_error([&] { w::load_wing_file((dir / "w.toml").string()); });
+  EXPECT_EQ(e.file(), (dir / "w.toml").string()) << e.what();
+  EXPECT_EQ(e.line(), 4) << e.what();  // outline_file is the fourth line of wing_text
+  EXPECT_EQ(e.key(), "planform.outline_file");
+  EXPECT_NE(e.message().find("file not found"), std::string::npos) << e.what();
+  EXPECT_NE(e.message().find("bwo.csv"), std::string::npos) << e.what();
+}
+
 TEST(OutlineCsv, DevicesAndHugeFilesAreRefusedWithoutReading) {
   // /dev/zero read without bound (the issue); now refused at once as not a regular file.
   const auto start = std::chrono::steady_clock::now();

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "fem/wing_mesher.hpp"
+#include "pipeline/app/chain_wing_match.hpp"
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/resource_estimate.hpp"
@@ -32,16 +33,17 @@ void check_meshable(const wings::Wing& wing) { (void)fem::mesh_wing(wing); }
 /// a wing for a run in air, loads and markers on existing bodies, the wing meshable when
 /// it is reduced in process, and the run's size against the memory (the estimate is part
 /// of the summary).
-std::string check_case_like_run(const io::Case& c) {
+std::string check_case_like_run(const io::Case& c, const std::string& chain_file) {
   std::string text;
   std::optional<wings::Wing> wing;
   if (!c.wing_file.empty()) wing = print_wing_warnings(wings::load_wing_file(c.wing_file));
   if (c.air.enabled && !wing)
-    throw InputError(c.file, 0, "wing",
+    throw InputError(c.file, c.line_of("wing"), "wing",
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "
                      "file, or set air = \"none\" for a vacuum run of the chain");
   int bodies = c.structure.bodies;
-  const bool reduced_in_process = c.structure.kind == io::Case::Structure::Kind::Flexible && c.chain_file.empty();
+  const bool reduced_in_process =
+      c.structure.kind == io::Case::Structure::Kind::Flexible && c.chain_file.empty() && chain_file.empty();
   if (reduced_in_process && wing) {
     app::check_lattice_can_follow(c, *wing);
     check_meshable(*wing);
@@ -49,9 +51,12 @@ std::string check_case_like_run(const io::Case& c) {
   {
     // Reads the chain file, or reduces the wing in process as `run` does (its FEM: seconds),
     // so that the chain's frequencies can be warned about.
-    const app::FsiSetup setup = app::build_fsi_setup(c, app::SetupOptions{});
+    app::SetupOptions options;
+    options.chain_file = chain_file;  // check --chain, as run --chain
+    const app::FsiSetup setup = app::build_fsi_setup(c, options);
     bodies = setup.model.chain.num_bodies();
-    for (const std::string& w : {app::soft_chain_warning(c, setup), app::near_resonance_warning(c, setup)})
+    for (const std::string& w : {app::chain_wing_mismatch_warning(setup), app::soft_chain_warning(c, setup),
+                                  app::near_resonance_warning(c, setup)})
       if (!w.empty()) std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   }
   const app::RunEstimate estimate = app::estimate_run(c, bodies);
@@ -67,20 +72,21 @@ std::string check_case_like_run(const io::Case& c) {
 /// Reads the file, decides whether it is a wing ([planform]) or a case ([kinematics]),
 /// checks it completely (a case as `run` would: its wing, chain file and size) and returns
 /// the summary text. Nothing is printed until everything has been checked.
-std::string check_file(const std::string& path) {
+std::string check_file(const std::string& path, const std::string& chain_file) {
   const wings::TomlTable root = wings::parse_toml_file(path);
   const bool wing = wings::is_wing_document(root), case_file = io::is_case_document(root);
   if (wing && case_file)
     throw InputError(path, root.line_of("planform"), "planform",
                      "a file is either a wing file ([planform]) or a case file ([kinematics]), not both");
   if (wing) {
+    if (!chain_file.empty()) throw CLI::ValidationError("--chain", "applies to a case file, not a wing file");
     const wings::Wing w = print_wing_warnings(wings::read_wing(root));
     check_meshable(w);
     return wings::describe_wing(w);
   }
   if (case_file) {
     const io::Case c = print_case_warnings(io::read_case(root));
-    return io::describe_case(c) + check_case_like_run(c);
+    return io::describe_case(c) + check_case_like_run(c, chain_file);
   }
   throw InputError(path, 1, "",
                    "not a wing file (no [planform] table) nor a case file (no [kinematics] table)");
@@ -100,11 +106,19 @@ void add_check_command(CLI::App& app) {
       "Check validates what run and mesh would: the chain file, a wing for a run in air,\n"
       "loads and markers on existing bodies, the wing meshed by gmsh (no file written), the\n"
       "mesh-size budget, and the run's estimate (memory, interactions, time) against the memory.\n"
+      "For a flexible case it builds the chain as run does (from --chain, the case's 'chain', or\n"
+      "the wing reduced in process) and warns about a chain that does not match the wing, one\n"
+      "driven above or near its resonance (docs/case_file.md, \"Warnings\").\n"
       "Exit status: 0 valid, 2 bad input (the message names file, line and key).\n"
       "Formats: docs/wing_file.md, docs/case_file.md.");
   auto file = std::make_shared<std::string>();
+  auto chain = std::make_shared<std::string>();
   cmd->add_option("FILE", *file, "wing or case file (TOML)")->required();
-  cmd->callback([file] { std::cout << check_file(*file) << std::flush; });
+  cmd->add_option("--chain", *chain, "for a case: the chain file run --chain would use (overrides the case's 'chain')");
+  cmd->callback([file, chain] {
+    check_chain_option(*chain);
+    std::cout << check_file(*file, *chain) << std::flush;
+  });
 }
 
 }  // namespace flapsim::cli

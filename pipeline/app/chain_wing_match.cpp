@@ -1,0 +1,33 @@
+#include "pipeline/app/chain_wing_match.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "wings/wing_mass_properties.hpp"
+
+namespace flapsim::app {
+
+std::string chain_wing_mismatch_warning(const FsiSetup& setup) {
+  if (!setup.wing || setup.structure_source.rfind("chain file", 0) != 0) return "";
+  const mbd::ChainModel& chain = setup.model.chain;
+  double chain_mass = 0.0, chain_length = chain.root_offset.norm();  // [kg], [m]
+  for (const auto& b : chain.bodies) {
+    chain_mass += b.mass;
+    chain_length += b.length;
+  }
+  const double wing_mass = wings::estimate_wing_mass(*setup.wing).total(), span = setup.wing->span;
+  const auto differs = [](double a, double b) { return !(std::abs(a - b) <= kChainWingMismatch * std::abs(b)); };
+  if (!differs(chain_mass, wing_mass) && !differs(chain_length, span)) return "";
+  char text[700];
+  std::snprintf(text, sizeof text,
+                "the chain (%.4g mg, %.4g mm from the pivot to its last body's end) does not match the case's "
+                "wing '%s' (%.4g mg, span %.4g mm): more than %g %% apart. Was the chain reduced from another "
+                "wing? The lattice follows this wing's outline, the structure is the chain's (flapsim reduce "
+                "the case's wing, or name its chain.toml; ignore if intended, e.g. docs/wing_file.md's closed "
+                "outline for a slotted wing)",
+                chain_mass * 1e6, chain_length * 1e3, setup.wing->name.c_str(), wing_mass * 1e6, span * 1e3,
+                100 * kChainWingMismatch);
+  return text;
+}
+
+}  // namespace flapsim::app
