@@ -62,8 +62,11 @@ inline constexpr double kMinTrailingEdgeVortexFraction = 0.01;
 void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
                      const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt);
 
-/// Influence matrix a(i, k) = (velocity of unit ring k at collocation point i) · n_i.
-void build_influence(const VortexLatticeModel& m, VortexLatticeData& d);
+/// Influence matrix a(i, k) = (velocity of unit ring k at collocation point i) · n_i; with
+/// last_row_only, only the columns of the rings of the last chordwise row (the others kept:
+/// valid when the surface moved rigidly since they were computed). A column is the same
+/// either way.
+void build_influence(const VortexLatticeModel& m, VortexLatticeData& d, bool last_row_only = false);
 
 /// Unique bound segments with their net circulation from d.gamma.
 void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d);

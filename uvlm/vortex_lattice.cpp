@@ -2,6 +2,7 @@
 
 #include "uvlm/biot_savart_kernel.hpp"
 #include "uvlm/lattice_internal.hpp"
+#include "uvlm/rigid_motion.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -50,6 +51,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   lu = Eigen::PartialPivLU<Eigen::MatrixXd>(np);
   factorised_nodes.setZero(3, nn);
   factorised_ring_nodes.setZero(3, nn);
+  influence_nodes.setZero(3, nn);
   rhs.setZero(np);
 
   // One spare row: the steady solve's horseshoe row and the row being shed.
@@ -156,7 +158,7 @@ void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Ei
     }
 }
 
-void build_influence(const VortexLatticeModel& m, VortexLatticeData& d) {
+void build_influence(const VortexLatticeModel& m, VortexLatticeData& d, bool last_row_only) {
   const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
   for (auto& s : d.ring_side) s.clear();
   for (int j = 0; j < ns; ++j)
@@ -173,7 +175,10 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d) {
   const double inv_rc2 = 1.0 / (core.radius * core.radius);
   const double inv_rc2_wake = 1.0 / (m.core.radius * m.core.radius);
   const auto& S = d.ring_side;
-#pragma omp parallel for schedule(static) if (np >= 32)
+  // Columns k0, k0 + step, …: every ring, or the last row's (panel index i + nc j).
+  const int k0 = last_row_only ? nc - 1 : 0, step = last_row_only ? nc : 1;
+  const int columns = last_row_only ? ns : np;
+#pragma omp parallel for schedule(static) if (np * columns >= 32 * 32)
   for (int i = 0; i < np; ++i) {
     const double px = d.collocation(0, i), py = d.collocation(1, i), pz = d.collocation(2, i);
     const double nx = d.normal(0, i), ny = d.normal(1, i), nz = d.normal(2, i);
@@ -182,8 +187,8 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d) {
       const double *ax = S[s].ax(), *ay = S[s].ay(), *az = S[s].az();
       const double *bx = S[s].bx(), *by = S[s].by(), *bz = S[s].bz(), *il = S[s].inv_length2();
       if (s == 0)
-        for (int k = 0; k < np; ++k) row[static_cast<std::size_t>(k) * np] = 0.0;
-      for (int k = 0; k < np; ++k) {
+        for (int k = k0; k < np; k += step) row[static_cast<std::size_t>(k) * np] = 0.0;
+      for (int k = k0; k < np; k += step) {
         double u = 0, v = 0, w = 0;
         // The trailing segment of a last-row ring has the wake's core (see the model).
         const double s_rc = (s == 2 && k % nc == nc - 1) ? inv_rc2_wake : inv_rc2;
@@ -290,7 +295,16 @@ void wake_velocity_at_collocation(const VortexLatticeModel& m, VortexLatticeData
 
 void refactorise_if_moved(const VortexLatticeModel& m, VortexLatticeData& d) {
   if (d.has_factorisation && d.nodes == d.factorised_nodes && d.ring_nodes == d.factorised_ring_nodes) return;
-  detail::build_influence(m, d);
+  // Under a rigid motion of the whole surface only the last row's columns change (their
+  // rings end on the trailing-edge vortex, which follows the edge's speed): the others
+  // are kept from the last full computation (against whose nodes the motion is checked,
+  // so nothing accumulates).
+  const bool rigid = m.reuse_rigid_influence && d.has_influence && is_rigid_motion(d.influence_nodes, d.nodes);
+  detail::build_influence(m, d, rigid);
+  if (!rigid) {
+    d.influence_nodes = d.nodes;
+    d.has_influence = true;
+  }
   d.lu.compute(d.influence);
   d.factorised_nodes = d.nodes;
   d.factorised_ring_nodes = d.ring_nodes;
@@ -340,6 +354,7 @@ void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen
   detail::update_geometry(m, d, nodes, zero, free_stream, 0.0);  // no time step: ¼ panel
   detail::build_influence(m, d);
   d.has_factorisation = false;  // the matrix below includes the wake
+  d.has_influence = false;
 
   // One straight wake row, trailing-edge row 1 and far row 0, carried by the trailing-edge ring.
   const Eigen::Vector3d dir = wake_direction.normalized();

@@ -124,6 +124,12 @@ struct VortexLatticeModel {
   WakeSum wake_sum = WakeSum::Direct;
   double tree_tolerance = 1e-4;
   std::size_t tree_min_segments = 2000;
+  /// Keep the influence coefficients of the rings off the last chordwise row while the
+  /// surface moves rigidly (they do not change under a rigid motion of the whole lattice;
+  /// the last row's rings end on the trailing-edge vortex, which moves with the edge's
+  /// speed, and are recomputed every solve). false: the whole matrix at every solve
+  /// (the reference for tests).
+  bool reuse_rigid_influence = true;
 
   VortexCore bound_core() const { return {core.model, core.radius * bound_core_fraction}; }
   int panels() const { return chordwise * spanwise; }
@@ -184,6 +190,10 @@ struct VortexLatticeData {
   Eigen::Matrix3Xd factorised_nodes;
   Eigen::Matrix3Xd factorised_ring_nodes;  ///< the trailing-edge vortex moves with the edge's speed
   bool has_factorisation = false;
+  /// The nodes at which the whole influence matrix was last computed (its columns of the
+  /// rings off the last row hold for every rigid motion of them; model.reuse_rigid_influence).
+  Eigen::Matrix3Xd influence_nodes;
+  bool has_influence = false;
   Eigen::VectorXd rhs;
 
   // Wake: node rows 0..wake_rows (row r, node j at r (ns+1) + j; row wake_rows follows
