@@ -11,6 +11,7 @@
 
 #include "fem/wing_mesher.hpp"
 #include "pipeline/app/chain_wing_match.hpp"
+#include "pipeline/app/compressibility_warning.hpp"
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/resource_estimate.hpp"
@@ -55,7 +56,8 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
     options.chain_file = chain_file;  // check --chain, as run --chain
     const app::FsiSetup setup = app::build_fsi_setup(c, options);
     bodies = setup.model.chain.num_bodies();
-    for (const std::string& w : {app::chain_wing_mismatch_warning(setup), app::soft_chain_warning(c, setup),
+    for (const std::string& w : {app::compressibility_warning(c, setup), app::chain_wing_mismatch_warning(setup),
+                                  app::soft_chain_warning(c, setup),
                                   app::near_resonance_warning(c, setup)})
       if (!w.empty()) std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   }
