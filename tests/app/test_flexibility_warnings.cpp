@@ -88,6 +88,30 @@ TEST(FlexibilityWarnings, ARunReportsItsPeakTipBendAndWarnsBeyondThirtyDegrees) 
   }
 }
 
+// A sweep notes each case's setup warnings in its message column (before: only the
+// sweep's case file as written was warned about, and only for the case's own keys).
+TEST(FlexibilityWarnings, ASweepNotesEachCasesResonanceInItsMessage) {
+  ScratchDir dir("sweep_notes");
+  std::ofstream(dir / "chain.toml") << kOneJointChain;
+  std::ofstream(dir / "case.toml") << "air = \"none\"\nchain = \"chain.toml\"\n[kinematics]\nfrequency_hz = 10\n"
+                                      "sweep = { cos_deg = [5.0] }\nrotation = 90.0\n[structure]\nkind = \"flexible\"\n"
+                                      "bodies = 2\n[numerics]\nsteps_per_cycle = 40\ncycles = 1\n[output]\nvtk_every = 0\n";
+  const int status = std::system(("FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' sweep " +
+                                  (dir / "case.toml").string() + " --vary kinematics.frequency_hz=10,40 -j 1 -o " +
+                                  (dir / "out").string() + " > /dev/null 2> /dev/null")
+                                     .c_str());
+  ASSERT_EQ(WEXITSTATUS(status), 0);
+  const std::string table = read_text(dir / "out" / "sweep.csv");
+  // 40 Hz: 1 / (1 − (40 / 47.99)²) = 3.3 (as above); 10 Hz: 1.2 at 2f, no note.
+  EXPECT_NE(table.find("\n40,"), std::string::npos) << table;
+  const std::string row40 = table.substr(table.find("\n40,"));
+  EXPECT_NE(row40.find("the chain's mode 1 (bending), 48 Hz, lies near the wingbeat frequency 40 Hz (mode / drive "
+                       "= 1.2)"),
+            std::string::npos) << table;
+  const std::string row10 = table.substr(table.find("\n10,"), table.find("\n40,") - table.find("\n10,"));
+  EXPECT_EQ(row10.find("lies near"), std::string::npos) << table;
+}
+
 TEST(FlexibilityWarnings, CheckWarnsAboutAWingItReducesInProcess) {
   // A 50 mm tapered 0.1 mm PET plate; its 6-body chain's first bending is 21.6 Hz
   // (flapsim reduce; FEM 21.75 Hz): near resonance at a 20 Hz wingbeat, not at 5 Hz.

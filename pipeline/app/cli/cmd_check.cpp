@@ -10,11 +10,9 @@
 #include <string>
 
 #include "fem/wing_mesher.hpp"
-#include "pipeline/app/chain_wing_match.hpp"
-#include "pipeline/app/compressibility_warning.hpp"
-#include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/resource_estimate.hpp"
+#include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_summary.hpp"
 #include "wings/input_error.hpp"
@@ -56,10 +54,8 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
     options.chain_file = chain_file;  // check --chain, as run --chain
     const app::FsiSetup setup = app::build_fsi_setup(c, options);
     bodies = setup.model.chain.num_bodies();
-    for (const std::string& w : {app::compressibility_warning(c, setup), app::chain_wing_mismatch_warning(setup),
-                                  app::soft_chain_warning(c, setup),
-                                  app::near_resonance_warning(c, setup)})
-      if (!w.empty()) std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
+    for (const std::string& w : app::setup_warnings(c, setup))
+      std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   }
   const app::RunEstimate estimate = app::estimate_run(c, bodies);
   app::refuse_if_it_cannot_fit(estimate, c);

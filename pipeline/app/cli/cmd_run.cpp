@@ -10,12 +10,11 @@
 #include <optional>
 #include <string>
 
-#include "pipeline/app/chain_wing_match.hpp"
-#include "pipeline/app/compressibility_warning.hpp"
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/resource_estimate.hpp"
+#include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/io/case_file.hpp"
@@ -67,10 +66,8 @@ void run_command(const RunArgs& a) {
     if (!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9))
       std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
     app::refuse_if_it_cannot_fit(estimate, c);
-    for (const std::string& w : {app::compressibility_warning(c, setup), app::chain_wing_mismatch_warning(setup),
-                                  app::soft_chain_warning(c, setup),
-                                  app::near_resonance_warning(c, setup)})
-      if (!w.empty()) std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
+    for (const std::string& w : app::setup_warnings(c, setup))
+      std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
     claim.claim(a.force);
   };
   app::RunResults results;

@@ -16,6 +16,7 @@
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
+#include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
@@ -134,6 +135,11 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       return o;
     }
     const auto t0 = Clock::now();
+    std::vector<std::string> notes;  // the setup's warnings, in a few words (setup_warnings.hpp)
+    const auto with_notes = [&notes](std::string message) {
+      for (const std::string& n : notes) message += (message.empty() ? "" : "; ") + n;
+      return message;
+    };
     try {
       // Rank 0 resolved every case; the others resolve the ones they are given.
       std::optional<ResolvedCase> own;
@@ -146,16 +152,21 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       ro.wing_overrides = r.wing_overrides;
       ro.vtk_every = options.vtk_every;
       ro.progress = app::ProgressLine::Mode::quiet;
+      ro.before_start = [&notes, &r](const app::FsiSetup& setup) {
+        for (const std::string& w : app::setup_warnings(r.c, setup)) notes.push_back(app::warning_headline(w));
+      };
       o.overhead_s = std::chrono::duration<double>(Clock::now() - t0).count();  // resolving
       o.results = app::run_case(r.c, ro);
       o.status = "ok";
-      o.message = app::large_deflection_note(o.results);
+      if (const std::string deflection = app::large_deflection_note(o.results); !deflection.empty())
+        notes.push_back(deflection);
+      o.message = with_notes("");
     } catch (const app::Interrupted& e) {
       o.status = "interrupted";
       o.message = e.what();  // its summary.json says how far it got; a rerun of the sweep runs it again
     } catch (const NumericalFailure& e) {
       o.status = "failed";
-      o.message = e.what();  // no results in the table (nan): its summary.json tells how far it got
+      o.message = with_notes(e.what());  // no results in the table (nan): its summary.json tells how far it got
     } catch (const io::OutputError& e) {
       o.status = "error";
       o.message = e.what();  // "cannot write '…'": stops the sweep once recorded (below)

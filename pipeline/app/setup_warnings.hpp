@@ -1,0 +1,23 @@
+#pragma once
+/// \file setup_warnings.hpp
+/// \brief The warnings about a case that need its built setup (the chain, the wing), in
+/// the order `check`, `run` and `sweep` report them: a tip beyond Mach 0.3, a chain file
+/// that does not match the wing, a chain driven above or near its resonance.
+
+#include <string>
+#include <vector>
+
+#include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/io/case_model.hpp"
+
+namespace flapsim::app {
+
+/// \brief The warnings that apply (full texts; none: empty).
+std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup);
+
+/// \brief A warning's first clause, up to its first ": " — what it found, with the numbers
+/// (for the message column of sweep.csv): "the chain's mode 1 (bending), 21.6 Hz, lies near
+/// the wingbeat frequency 20 Hz (mode / drive = 1.08)".
+std::string warning_headline(const std::string& warning);
+
+}  // namespace flapsim::app
