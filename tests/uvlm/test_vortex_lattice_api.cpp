@@ -181,24 +181,30 @@ TEST(VortexLatticeApi, BernoulliAndKuttaJoukowskiNormalForcesAgreeOnARevolvingWi
 
 TEST(VortexLatticeApi, SinglePrecisionWakeFollowsTheDoublePrecisionOne) {
   // The single-precision wake sums (the default, for speed: the wake's convection and its
-  // velocity at the wing) against double precision: 40 free-wake steps of the revolving wing. Measured: 3e-5 relative with FMA
-  // (Release, -march=native), 1.4e-4 without (the sanitizer build); a wrong float path
-  // (units, signs, a missing term) would be off by orders more, so 5e-4 is the bound.
+  // velocity at the wing) against double precision: free-wake steps of the revolving wing.
+  // Measured (portable build): over the first 24 steps the lift differs by 1e-8 to 3.0e-6
+  // relative, changing sign from step to step (largest at step 13); from step 27 on the wake's own
+  // sensitivity takes over and amplifies any rounding difference about tenfold per four
+  // steps (1.2e-6, 4.4e-6, 7.2e-5, 4.7e-4 at steps 27, 31, 35, 39), so a late step measures
+  // the wake's chaos, not the float path (a former bound of 5e-4 at step 40 was nearly
+  // reached by a change of rounding alone). A wrong float path (units, signs, a missing
+  // term) is off by orders more than round-off from the first steps: 1e-5 over 24 steps.
   RevolvingWing a, b;
   a.model.single_precision_wake = false;
   b.model.single_precision_wake = true;
   VortexLatticeData da(a.model), db(b.model);
   Eigen::Matrix3Xd x, v;
-  for (int k = 0; k < 40; ++k) {
+  double largest = 0.0;
+  for (int k = 0; k < 24; ++k) {
     a.state(k * 0.002, x, v);
     solve(a.model, da, x, v, Eigen::Vector3d::Zero(), 0.002, 1.225);
     solve(b.model, db, x, v, Eigen::Vector3d::Zero(), 0.002, 1.225);
-    if (k < 39) {
-      advance(a.model, da);
-      advance(b.model, db);
-    }
+    largest = std::max(largest, std::abs(db.loads.total_force.z() / da.loads.total_force.z() - 1.0));
+    advance(a.model, da);
+    advance(b.model, db);
   }
-  std::printf("[ value ] single against double precision wake sums, lift after 40 steps: %.3g relative\n",
-              db.loads.total_force.z() / da.loads.total_force.z() - 1.0);
-  EXPECT_NEAR(db.loads.total_force.z() / da.loads.total_force.z(), 1.0, 5e-4);
+  std::printf("[ value ] single against double precision wake sums, lift over 24 steps: %.3g relative at most\n",
+              largest);
+  EXPECT_LT(largest, 1e-5);
+  EXPECT_GT(std::abs(da.loads.total_force.z()), 0.0);
 }
