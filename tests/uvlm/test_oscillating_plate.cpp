@@ -258,15 +258,15 @@ TEST(OscillatingPlate, QuarterChordPivotAtKOneConvergesToGarrick) {
   // The quarter-chord pivot at k = 1 (see PitchingPlateThrustFollowsGarrick): Garrick's
   // C_T = C_S − ½ θ0 Re CL = 1.2973 θ0² − 1.2243 θ0² = 0.0730 θ0² [Garrick 1936], 6 % of
   // either term, so the lattice must get both terms within 0.2 %. Measured with UΔt = c/nc
-  // (one strip, θ0 = 1°, four cycles), C_T/θ0² at nc = 16, 32, 64, 128, 256, 512:
-  // 0.0660, 0.0640, 0.06640, 0.06897, 0.07072, 0.07171 (−9.6, −12.4, −9.0, −5.5, −3.1,
-  // −1.7 % of Garrick). The steps between refinements, +0.00257, +0.00175, +0.00099, shrink
-  // by 0.68 and 0.57: the sequence enters the first-order range (ratio ½) from nc 128 on,
-  // as do its terms (suction 1.29332, 1.29595, 1.29743, ratio 0.56; tilt −1.22435,
-  // −1.22523, −1.22571, ratio 0.55; |CL| 6.4150, 6.4031, 6.3972 per radian, ratio 0.50,
-  // against Theodorsen's 6.388). Richardson extrapolation: 2 f(256) − f(128) = 0.07247
-  // (−0.7 %), 2 f(512) − f(256) = 0.07270 (−0.4 %); Aitken on 128/256/512: 0.0730 (+0.05 %).
-  // Bound here (nc 512 costs 220 CPU s, nc 64/128/256 together 27 s): the thrust and
+  // (one strip, θ0 = 1°, four cycles), C_T/θ0² at nc = 16, 32, 64, 128, 256, 512, 1024:
+  // 0.0660, 0.0640, 0.06640, 0.06897, 0.07072, 0.07171, 0.07242 (−9.6, −12.4, −9.0, −5.5,
+  // −3.1, −1.7, −0.74 % of Garrick). The steps between refinements, +0.00257, +0.00175,
+  // +0.00099, +0.00071, shrink by 0.68, 0.57, 0.72, and the terms converge (suction
+  // 1.29332, 1.29595, 1.29743, 1.29820; tilt −1.22435, −1.22523, −1.22571, −1.22577; |CL|
+  // 6.4150, 6.4031, 6.3972, 6.3942 per radian against Theodorsen's 6.388). Extrapolated:
+  // 2 f(256) − f(128) = 0.07247 (−0.7 %), 2 f(512) − f(256) = 0.07270 (−0.4 %),
+  // 2 f(1024) − f(512) = 0.07313 (+0.2 %); Aitken on 256/512/1024 +1.7 %.
+  // Bound here (nc 512 costs 220 CPU s, nc 1024 35 min, nc 64/128/256 together 27 s): the thrust and
   // the suction at nc 256 within 5 % and 3 %, the steps shrinking (monotone, ratio below
   // 0.75), and 2 f(256) − f(128) within 3 % of Garrick (issue 12).
   Oscillation in;
