@@ -14,23 +14,15 @@
 #include "pipeline/app/chain_wing_match.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/io/case_file.hpp"
+#include "one_joint_chain.hpp"
 #include "robustness_helpers.hpp"
 
 using namespace flapsim::test;
 
 namespace {
 
-// Two 20 mm bodies, 0.01 g + 0.1 g = 110 mg, 40 mm from the pivot.
-const char* const kChain =
-    "root = \"rigid\"\n"
-    "[[bodies]]\nlength = 0.02\nmass = 1e-5\ncenter_of_mass = [0, 0.01, 0]\n"
-    "inertia = [[4e-10,0,0],[0,1e-11,0],[0,0,4e-10]]\n"
-    "[[bodies]]\nlength = 0.02\nmass = 1e-4\ncenter_of_mass = [0, 0.01, 0]\n"
-    "inertia = [[1e-9,0,0],[0,1e-10,0],[0,0,1e-9]]\n"
-    "[bodies.joint]\nbend_stiffness = 1e-3\ntwist_stiffness = 1e-3\n";
-
 std::string warning_with(const ScratchDir& dir, const std::string& wing) {
-  std::ofstream(dir / "chain.toml") << kChain;
+  std::ofstream(dir / "chain.toml") << kOneJointChain;
   std::ofstream(dir / "case.toml") << "wing = \"" << kSourceDir << "/wings/" << wing
                                    << "\"\nchain = \"chain.toml\"\n[kinematics]\nfrequency_hz = 10\n"
                                       "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
@@ -55,7 +47,7 @@ TEST(ChainWingMatch, AChainOfAnotherWingIsWarnedWithBothMassesAndLengths) {
 // (make run passes the chain it will use); on a wing file the option is a usage error.
 TEST(ChainWingMatch, CheckTakesTheChainRunWouldUse) {
   ScratchDir dir("chain_wing_match_check");
-  std::ofstream(dir / "chain.toml") << kChain;
+  std::ofstream(dir / "chain.toml") << kOneJointChain;
   std::ofstream(dir / "case.toml") << "wing = \"" << kSourceDir
                                    << "/wings/hawkmoth.toml\"\n[kinematics]\nfrequency_hz = 10\n"
                                       "sweep = { cos_deg = [50.0] }\nrotation = 90.0\n"

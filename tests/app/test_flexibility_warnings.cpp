@@ -13,29 +13,15 @@
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/io/case_file.hpp"
+#include "one_joint_chain.hpp"
 #include "robustness_helpers.hpp"
 
 using namespace flapsim::test;
 
 namespace {
 
-// The one-joint chain of SoftChainWarning: bending f1 = sqrt(k / (I_xx + m y²)) / 2π
-// = sqrt(1e-3 / 1.1e-8) / 2π = 47.99 Hz; twist 503 Hz.
-const char* const kOneJointChain =
-    "root = \"rigid\"\n"
-    "[[bodies]]\nlength = 0.02\nmass = 1e-5\ncenter_of_mass = [0, 0.01, 0]\n"
-    "inertia = [[4e-10,0,0],[0,1e-11,0],[0,0,4e-10]]\n"
-    "[[bodies]]\nlength = 0.02\nmass = 1e-4\ncenter_of_mass = [0, 0.01, 0]\n"
-    "inertia = [[1e-9,0,0],[0,1e-10,0],[0,0,1e-9]]\n"
-    "[bodies.joint]\nbend_stiffness = 1e-3\ntwist_stiffness = 1e-3\n";
-
 std::string warning_at(const ScratchDir& dir, double frequency_hz) {
-  std::ofstream(dir / "chain.toml") << kOneJointChain;
-  std::ofstream(dir / "case.toml") << "air = \"none\"\nchain = \"chain.toml\"\n[kinematics]\nfrequency_hz = "
-                                   << frequency_hz
-                                   << "\nsweep = { cos_deg = [50.0] }\nrotation = 90.0\n"
-                                      "[structure]\nkind = \"flexible\"\nbodies = 2\n";
-  const flapsim::io::Case c = flapsim::io::load_case_file((dir / "case.toml").string());
+  const flapsim::io::Case c = load_one_joint_case(dir, frequency_hz, "rotation = 90.0");
   return flapsim::app::near_resonance_warning(c, flapsim::app::build_fsi_setup(c, {}));
 }
 

@@ -14,30 +14,16 @@
 
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/io/case_file.hpp"
+#include "one_joint_chain.hpp"
 #include "robustness_helpers.hpp"
 
 using namespace flapsim::test;
 
 namespace {
 
-// Body 2 on a rigid root body: mass m = 1e-4 kg at y = 10 mm from its joint, I_xx = 1e-9 kg m²,
-// bend spring k = 1e-3 N m/rad. Bending about x at the joint: I = I_xx + m y² = 1.1e-8 kg m²,
-// f = sqrt(k / I) / 2π = 47.99 Hz; twist: I_yy = 1e-10 kg m² with 1e-3 N m/rad, 503 Hz.
-const char* const kOneJointChain =
-    "root = \"rigid\"\n"
-    "[[bodies]]\nlength = 0.02\nmass = 1e-5\ncenter_of_mass = [0, 0.01, 0]\n"
-    "inertia = [[4e-10,0,0],[0,1e-11,0],[0,0,4e-10]]\n"
-    "[[bodies]]\nlength = 0.02\nmass = 1e-4\ncenter_of_mass = [0, 0.01, 0]\n"
-    "inertia = [[1e-9,0,0],[0,1e-10,0],[0,0,1e-9]]\n"
-    "[bodies.joint]\nbend_stiffness = 1e-3\ntwist_stiffness = 1e-3\n";
-
 std::string warning_at(const ScratchDir& dir, double frequency_hz) {
-  std::ofstream(dir / "chain.toml") << kOneJointChain;
-  std::ofstream(dir / "case.toml") << "air = \"none\"\nchain = \"chain.toml\"\n[kinematics]\nfrequency_hz = "
-                                   << frequency_hz
-                                   << "\nsweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
-                                      "[structure]\nkind = \"flexible\"\nbodies = 2\n[numerics]\nsteps_per_cycle = 40\n";
-  const flapsim::io::Case c = flapsim::io::load_case_file((dir / "case.toml").string());
+  const flapsim::io::Case c = load_one_joint_case(dir, frequency_hz, "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }",
+                                                  "[numerics]\nsteps_per_cycle = 40\n");
   return flapsim::app::soft_chain_warning(c, flapsim::app::build_fsi_setup(c, {}));
 }
 
