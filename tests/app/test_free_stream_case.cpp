@@ -23,12 +23,9 @@ using flapsim::test::run_flapsim;
 const std::string kSource = FLAPSIM_SOURCE_DIR;
 
 double number_in(const std::string& json, const std::string& key) {
-  const auto at = json.find("\"" + key + "\": ");
-  if (at == std::string::npos) {
-    ADD_FAILURE() << key << " not in summary.json:\n" << json;
-    return 0.0;
-  }
-  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+  const double x = flapsim::test::json_number(json, key);
+  if (std::isnan(x)) ADD_FAILURE() << key << " not in summary.json:\n" << json;
+  return x;
 }
 
 }  // namespace

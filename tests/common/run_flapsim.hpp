@@ -3,6 +3,7 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -28,6 +29,13 @@ inline int run_flapsim_in_shell(const std::string& prefix, const std::string& ar
                           " '" + std::string(FLAPSIM_BINARY) + "' " + args + " > /dev/null 2> /dev/null";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The number after "KEY": in a JSON text such as summary.json (NaN if the key is absent).
+inline double json_number(const std::string& json, const std::string& key) {
+  const auto at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) return std::nan("");
+  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
 }
 
 /// The whole text of a file ("" if it cannot be read).
