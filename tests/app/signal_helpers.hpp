@@ -1,6 +1,6 @@
 #pragma once
 // Sends a signal to a flapsim process in the middle of its work: the shared part of the
-// SIGINT/SIGTERM tests of `run` and `sweep` (docs/reliability.md).
+// SIGINT/SIGTERM tests of `run`, `sweep` and the model stages (docs/reliability.md).
 
 #include <signal.h>
 #include <spawn.h>
@@ -21,30 +21,44 @@ extern char** environ;
 
 namespace flapsim::test {
 
-/// Starts `flapsim ARGS` on one OpenMP thread, waits until `history` holds more than
-/// `lines` lines (history.csv is published every 20 rows), sends `signal_number` and returns
-/// the exit status: -1 no normal exit, -2 could not start, -3 ended before the signal.
-inline int signal_flapsim_once_history_grows(const std::vector<std::string>& args,
-                                             const std::filesystem::path& history, int signal_number,
-                                             long lines = 21) {
+/// Starts `flapsim ARGS`, polls `ready()` every `poll` until it is true (at most `timeout`),
+/// waits `delay` more, sends `signal_number` and returns the exit status: -1 no normal exit,
+/// -2 could not start, -3 ended before the signal.
+template <class Ready>
+int signal_flapsim_when(const std::vector<std::string>& args, Ready ready, int signal_number,
+                        std::chrono::milliseconds poll, std::chrono::seconds timeout,
+                        std::chrono::milliseconds delay = std::chrono::milliseconds(0)) {
   const std::string binary = FLAPSIM_BINARY;
   std::vector<char*> argv{const_cast<char*>(binary.c_str())};
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
-  ::setenv("OMP_NUM_THREADS", "1", 1);
   pid_t pid = 0;
   if (::posix_spawn(&pid, binary.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -2;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
   int status = 0;
   while (std::chrono::steady_clock::now() < deadline) {
     if (::waitpid(pid, &status, WNOHANG) == pid) return -3;
-    const std::string h = read_text(history);
-    if (std::count(h.begin(), h.end(), '\n') > lines) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (ready()) break;
+    std::this_thread::sleep_for(poll);
   }
+  std::this_thread::sleep_for(delay);
   ::kill(pid, signal_number);
   ::waitpid(pid, &status, 0);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// Starts `flapsim ARGS` on one OpenMP thread, waits until `history` holds more than
+/// `lines` lines (history.csv is published every 20 rows), sends `signal_number` and returns
+/// the exit status as signal_flapsim_when.
+inline int signal_flapsim_once_history_grows(const std::vector<std::string>& args,
+                                             const std::filesystem::path& history, int signal_number,
+                                             long lines = 21) {
+  ::setenv("OMP_NUM_THREADS", "1", 1);
+  const auto grown = [&] {
+    const std::string h = read_text(history);
+    return std::count(h.begin(), h.end(), '\n') > lines;
+  };
+  return signal_flapsim_when(args, grown, signal_number, std::chrono::milliseconds(20), std::chrono::seconds(120));
 }
 
 }  // namespace flapsim::test

@@ -5,22 +5,13 @@
 // left, and the exit status is 128 + signal (130 SIGINT, 143 SIGTERM), as for `run`.
 #include <gtest/gtest.h>
 
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <thread>
-#include <vector>
 
 #include "robustness_helpers.hpp"
-
-extern char** environ;
+#include "signal_helpers.hpp"
 
 namespace fs = std::filesystem;
 using namespace flapsim::test;
@@ -32,25 +23,12 @@ namespace {
 /// exit, -2: could not start, -3: ended before the signal).
 int signal_stage_command(const ScratchDir& dir, const std::string& command, const std::string& wing,
                          int signal_number, int delay_ms) {
-  const std::string binary = FLAPSIM_BINARY;
-  const std::string out = (dir / "out").string();
-  std::vector<std::string> args{binary, command, wing, "-o", out};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (::posix_spawn(&pid, binary.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -2;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  int status = 0;
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) return -3;
-    if (read_text(dir / "out" / "flapsim_outputs.toml").find("running") != std::string::npos) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
-  ::kill(pid, signal_number);
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const auto running = [&] {
+    return read_text(dir / "out" / "flapsim_outputs.toml").find("running") != std::string::npos;
+  };
+  return signal_flapsim_when({command, wing, "-o", (dir / "out").string()}, running, signal_number,
+                             std::chrono::milliseconds(5), std::chrono::seconds(60),
+                             std::chrono::milliseconds(delay_ms));
 }
 
 void expect_interrupted(const ScratchDir& dir, const std::string& command) {
