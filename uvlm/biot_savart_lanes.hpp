@@ -125,6 +125,27 @@ template <CoreModel M, class T>
 #endif
 }
 
+/// Pass 1 of the kernels: lists the chunk of kChunk<T> pairs at xx + q in need[] if one of
+/// them needs the Lamb–Oseen factor (x below kLambOseenUnity<T>), without a branch.
+template <class T>
+[[gnu::always_inline]] inline void list_if_core_needed(const T* xx, int q, int* need, int& needed) {
+  need[needed] = q;
+  needed += any_below(xx + q, kLambOseenUnity<T>) ? 1 : 0;
+}
+
+/// Pass 2 of the kernels: the listed chunks' k times the Lamb–Oseen factor of their x
+/// (everywhere else the factor is 1 exactly).
+template <class T>
+[[gnu::always_inline]] inline void apply_listed_core_factors(T* __restrict kk, const T* __restrict xx,
+                                                             const int* need, int needed) {
+  constexpr int W = kChunk<T>;
+  for (int i = 0; i < needed; ++i) {
+    const int q = need[i];
+#pragma omp simd
+    for (int j = 0; j < W; ++j) kk[q + j] *= core_factor<CoreModel::LambOseen>(xx[q + j]);
+  }
+}
+
 /// Blocks of kLanes<T> segments taken together by lane_blocks (the scratch arrays,
 /// 5 × NP × kBatchBlocks × kLanes<T> values, stay in the L1 cache).
 inline constexpr int kBatchBlocks = 16;
@@ -177,19 +198,10 @@ template <CoreModel M, int NP, class T>
           cys[q + j] = cy;
           czs[q + j] = cz;
         }
-        if constexpr (M == CoreModel::LambOseen) {
-          need[needed] = q;
-          needed += any_below(xx + q, kLambOseenUnity<T>) ? 1 : 0;
-        }
+        if constexpr (M == CoreModel::LambOseen) list_if_core_needed(xx, q, need, needed);
       }
     }
-  if constexpr (M == CoreModel::LambOseen) {
-    for (int i = 0; i < needed; ++i) {
-      const int q = need[i];
-#pragma omp simd
-      for (int j = 0; j < W; ++j) kk[q + j] *= core_factor<M>(xx[q + j]);
-    }
-  }
+  if constexpr (M == CoreModel::LambOseen) apply_listed_core_factors(kk, xx, need, needed);
   for (int b = 0; b < blocks; ++b)
     for (int h = 0; h < NP * L; h += W) {
       const int q = b * NP * L + h;

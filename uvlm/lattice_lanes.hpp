@@ -173,21 +173,13 @@ void lattice_points(const LatticeCall<T>& c, std::size_t i0) {
           czs[qc + j] = cz;
         }
         if constexpr (M == CoreModel::LambOseen) {
-          need[needed] = qs;
-          needed += any_below(xx + qs, kLambOseenUnity<T>) ? 1 : 0;
-          need[needed] = qc;
-          needed += any_below(xx + qc, kLambOseenUnity<T>) ? 1 : 0;
+          list_if_core_needed(xx, qs, need, needed);
+          list_if_core_needed(xx, qc, need, needed);
         }
       }
     }
     // (2) the Lamb–Oseen factor where a pair needs it (exactly 1 elsewhere).
-    if constexpr (M == CoreModel::LambOseen) {
-      for (int i = 0; i < needed; ++i) {
-        const int q = need[i];
-#pragma omp simd
-        for (int j = 0; j < W; ++j) kk[q + j] *= core_factor<M>(xx[q + j]);
-      }
-    }
+    if constexpr (M == CoreModel::LambOseen) apply_listed_core_factors(kk, xx, need, needed);
     // (3) lane sums: node t0 + e into lane e mod L (t0 is a multiple of L), spanwise first.
     for (int p = 0; p < NP; ++p)
       for (int h = 0; h < tn; h += W) {
