@@ -146,6 +146,26 @@ template <class T>
   }
 }
 
+/// The velocities of NP points from their kLanes<T> partial sums each (su/sv/sw[NP ×
+/// kLanes<T>]): the lanes added in lane order, whatever the vector width, then added to
+/// u/v/w[0 … NP−1] [m/s].
+template <int NP, class T>
+[[gnu::always_inline]] inline void add_lane_sums(const T* su, const T* sv, const T* sw, double* u, double* v,
+                                                 double* w) {
+  constexpr int L = kLanes<T>;
+  for (int p = 0; p < NP; ++p) {
+    T tu = 0, tv = 0, tw = 0;
+    for (int l = 0; l < L; ++l) {
+      tu += su[p * L + l];
+      tv += sv[p * L + l];
+      tw += sw[p * L + l];
+    }
+    u[p] += tu;
+    v[p] += tv;
+    w[p] += tw;
+  }
+}
+
 /// Blocks of kLanes<T> segments taken together by lane_blocks (the scratch arrays,
 /// 5 × NP × kBatchBlocks × kLanes<T> values, stay in the L1 cache).
 inline constexpr int kBatchBlocks = 16;
@@ -237,17 +257,7 @@ void points_against_segments(const KernelCall<T>& c, const TailBlock<T>& tail, s
     lane_blocks<M, NP>(lanes_at(c, k), blocks, px, py, pz, c.inv_rc2, su, sv, sw);
   }
   if (full < c.segments) lane_blocks<M, NP>(tail.lanes(), 1, px, py, pz, c.inv_rc2, su, sv, sw);
-  for (int p = 0; p < NP; ++p) {
-    T tu = 0, tv = 0, tw = 0;
-    for (int l = 0; l < L; ++l) {
-      tu += su[p * L + l];
-      tv += sv[p * L + l];
-      tw += sw[p * L + l];
-    }
-    c.u[i0 + p] += tu;
-    c.v[i0 + p] += tv;
-    c.w[i0 + p] += tw;
-  }
+  add_lane_sums<NP>(su, sv, sw, c.u + i0, c.v + i0, c.w + i0);
 }
 
 /// Points taken two at a time (one more alone when their number is odd).

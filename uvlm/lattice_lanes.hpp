@@ -196,17 +196,7 @@ void lattice_points(const LatticeCall<T>& c, std::size_t i0) {
         }
       }
   }
-  for (int p = 0; p < NP; ++p) {
-    T tu = 0, tv = 0, tw = 0;
-    for (int l = 0; l < L; ++l) {
-      tu += su[p * L + l];
-      tv += sv[p * L + l];
-      tw += sw[p * L + l];
-    }
-    c.u[i0 + p] += tu;
-    c.v[i0 + p] += tv;
-    c.w[i0 + p] += tw;
-  }
+  add_lane_sums<NP>(su, sv, sw, c.u + i0, c.v + i0, c.w + i0);
 }
 
 /// Points taken NP at a time (the rest one at a time).
