@@ -42,4 +42,30 @@ class InputError : public std::runtime_error {
   std::string message_;
 };
 
+/// Bad input in a value that was not written in the file but set over it (a sweep's
+/// `--vary` or `--cases` value; wings::TomlTable::apply_overrides): the file names no line
+/// for it, so the message says where it came from, and a caller that knows the value's
+/// own source (a row of a case table) can name that instead.
+class OverrideInputError : public InputError {
+ public:
+  /// \param key           the dotted key the problem concerns (the override's, or a table on its path)
+  /// \param detail        what is wrong, without the note on the override
+  /// \param override_key  the dotted key of the override it concerns
+  OverrideInputError(std::string file, std::string key, const std::string& detail, std::string override_key)
+      : InputError(std::move(file), 0, std::move(key), detail + " (value given as an override)"),
+        detail_(detail), override_key_(std::move(override_key)) {}
+
+  const std::string& detail() const { return detail_; }
+  const std::string& override_key() const { return override_key_; }
+  /// Whether the problem is the key's name, not its value: an unknown key or table on its
+  /// path, a path through a value that is not a table, text that is not a TOML value.
+  bool concerns_the_key() const {
+    return key() != override_key_ || detail_.rfind("unknown key", 0) == 0 || detail_.rfind("override:", 0) == 0;
+  }
+
+ private:
+  std::string detail_;
+  std::string override_key_;
+};
+
 }  // namespace flapsim

@@ -107,18 +107,20 @@ TomlTable parse_toml_string(std::string_view text, const std::string& name) {
 void TomlTable::apply_overrides(const std::vector<std::pair<std::string, std::string>>& overrides) {
   for (const auto& [dotted, value_text] : overrides) {
     if (dotted.empty() || dotted.front() == '.' || dotted.back() == '.')
-      throw InputError(file(), 0, dotted, "override: not a dotted key such as kinematics.frequency_hz");
+      throw OverrideInputError(file(), dotted, "override: not a dotted key such as kinematics.frequency_hz", dotted);
     toml::table parsed;
     try {
       const std::string text = "v = " + value_text;
       refuse_toml_the_parser_cannot_read_safely(text, "override");
       parsed = toml::parse(std::string_view(text), std::string_view("override"));
     } catch (const InputError& e) {
-      throw InputError(file(), 0, dotted, "override: \"" + value_text + "\" is not a TOML value (" + e.message() + ")");
+      throw OverrideInputError(file(), dotted,
+                               "override: \"" + value_text + "\" is not a TOML value (" + e.message() + ")", dotted);
     } catch (const toml::parse_error& e) {
-      throw InputError(file(), 0, dotted,
-                       "override: \"" + value_text + "\" is not a TOML value (" +
-                           std::string(e.description()) + "); quote strings: '\"cosine\"'");
+      throw OverrideInputError(file(), dotted,
+                               "override: \"" + value_text + "\" is not a TOML value (" +
+                                   std::string(e.description()) + "); quote strings: '\"cosine\"'",
+                               dotted);
     }
     // Walk (and create) the tables on the way; the last component is the key to set.
     toml::table* t = const_cast<toml::table*>(as_tbl(table_));
@@ -129,7 +131,7 @@ void TomlTable::apply_overrides(const std::vector<std::pair<std::string, std::st
       toml::node* n = t->get(part);
       if (!n) n = &t->insert_or_assign(part, toml::table{}).first->second;
       if (!n->is_table())
-        throw InputError(file(), 0, dotted, "override: '" + dotted.substr(0, dot) + "' is not a table");
+        throw OverrideInputError(file(), dotted, "override: '" + dotted.substr(0, dot) + "' is not a table", dotted);
       t = n->as_table();
     }
     t->insert_or_assign(dotted.substr(start), *parsed.get("v"));
@@ -179,9 +181,13 @@ int TomlTable::line_of(std::string_view key) const {
 
 void TomlTable::raise(int line, const std::string& key_path, const std::string& message) const {
   // A value set by an override has no line in the file: say where it came from instead.
+  // The problem concerns the override when it is about its key, a part of its value, or a
+  // table on its path (a typo in a table's name: "kinematic.frequency_hz" is an unknown
+  // table "kinematic", not a problem of the file's first line).
   for (const auto& k : doc_->overridden)
-    if (key_path == k || key_path.rfind(k + ".", 0) == 0 || key_path.rfind(k + "[", 0) == 0)
-      throw InputError(file(), 0, key_path, message + " (value given as an override)");
+    if (key_path == k || key_path.rfind(k + ".", 0) == 0 || key_path.rfind(k + "[", 0) == 0 ||
+        k.rfind(key_path + ".", 0) == 0)
+      throw OverrideInputError(file(), key_path, message, k);
   throw InputError(file(), line > 0 ? line : line_, key_path, message);
 }
 

@@ -59,7 +59,12 @@ void remove_temporaries(const std::filesystem::path& dir) {
 }  // namespace
 
 StageMonitor::StageMonitor(io::OutputFolderClaim& claim, int total_stages, Options options)
-    : claim_(claim), total_(total_stages), options_(options) {
+    : StageMonitor(claim.command(), total_stages, options) {
+  claim_ = &claim;
+}
+
+StageMonitor::StageMonitor(std::string command, int total_stages, Options options)
+    : claim_(nullptr), command_(std::move(command)), total_(total_stages), options_(options) {
   options_.display = resolve(options_.display, options_.stream);
   start_ = stage_start_ = last_shown_ = Clock::now();
   if (options_.watch_signals) {
@@ -112,11 +117,12 @@ void StageMonitor::watch() {
       wake_.wait_for(lock, kTick, [this] { return stop_; });
     }
     if (s == SIGINT || s == SIGTERM) {
-      io::OutputFolderClaim::State found = io::OutputFolderClaim::State::open;
+      io::OutputFolderClaim::State found = io::OutputFolderClaim::State::unclaimed;
       std::string record_error;
       try {
-        found = claim_.end_if_open("interrupted");
+        if (claim_) found = claim_->end_if_open("interrupted");
       } catch (const std::exception& e) {
+        found = io::OutputFolderClaim::State::open;
         record_error = e.what();
       }
       if (found != io::OutputFolderClaim::State::ended) {
@@ -142,7 +148,7 @@ void StageMonitor::show_progress(Clock::time_point now) {
   const double in_all = std::chrono::duration<double>(now - start_).count();
   char tail[96];
   std::snprintf(tail, sizeof(tail), " (stage %d of %d): %.0f s, %.0f s in all", index_, total_, in_stage, in_all);
-  std::string line = claim_.command();
+  std::string line = command_;
   line.append(": ").append(name_).append(tail);
   if (live) {
     std::string out("\r");
@@ -181,10 +187,13 @@ void StageMonitor::end_interrupted(int signal_number, io::OutputFolderClaim::Sta
       stage.append(" during ").append(name_).append(" (stage ").append(std::to_string(index_)).append(" of ")
           .append(std::to_string(total_)).append(")");
   }
-  remove_temporaries(claim_.dir());
-  const std::string manifest = (claim_.dir() / io::kManifestName).string();
+  std::string manifest;
+  if (claim_) {
+    remove_temporaries(claim_->dir());
+    manifest = (claim_->dir() / io::kManifestName).string();
+  }
   std::fflush(stdout);
-  std::fprintf(stderr, "flapsim: %s interrupted by %s%s; %s\n", claim_.command().c_str(), signal_name(signal_number),
+  std::fprintf(stderr, "flapsim: %s interrupted by %s%s; %s\n", command_.c_str(), signal_name(signal_number),
                stage.c_str(),
                found == io::OutputFolderClaim::State::open
                    ? (manifest + " records it as \"interrupted\"; the files written before stay valid").c_str()

@@ -10,6 +10,8 @@
 ///    status 128 + signal (130 for SIGINT, 143 for SIGTERM). The files the command had
 ///    published stay as they were: each was renamed complete. A signal that comes after
 ///    the command recorded its end is left alone (the command is finishing).
+///    A command that writes no files (`check`) is watched alike without a folder: a signal
+///    ends it at once with 128 + signal, saying that nothing was written.
 ///  - **Progress.** A stage that has lasted 2 s is shown on stderr: "reduce: FEM modes (stage
 ///    3 of 6): 14 s, 41 s in all". On a terminal the line is redrawn in place once a
 ///    second and cleared at the end; elsewhere (a log file) one line when the stage passes
@@ -45,6 +47,9 @@ class StageMonitor {
   /// \param total_stages  number of stages, for "stage k of n"
   StageMonitor(io::OutputFolderClaim& claim, int total_stages, Options options);
   StageMonitor(io::OutputFolderClaim& claim, int total_stages) : StageMonitor(claim, total_stages, Options{}) {}
+  /// \brief Starts watching a command that writes no files (`check`), named \p command in
+  /// the progress line ("check: setup (stage 1 of 1): 3 s, 3 s in all").
+  StageMonitor(std::string command, int total_stages, Options options);
   /// done().
   ~StageMonitor();
   StageMonitor(const StageMonitor&) = delete;
@@ -64,7 +69,8 @@ class StageMonitor {
   [[noreturn]] void end_interrupted(int signal_number, io::OutputFolderClaim::State found);
   void clear_live_line();
 
-  io::OutputFolderClaim& claim_;
+  io::OutputFolderClaim* claim_;  // nullptr: a command that writes no files
+  std::string command_;
   int total_;
   Options options_;
   std::mutex mutex_;  // guards the fields below

@@ -18,7 +18,8 @@ namespace {
 std::string kinematics_case(const std::string& sweep, const std::string& rotation) {
   return "wing = \"valid_tiny_wing.toml\"\n[kinematics]\nfrequency_hz = 20.0\n"  // 1-3
          "sweep = " + sweep + "\nrotation = " + rotation +                         // 4-5
-         "\n[structure]\nkind = \"rigid\"\n[numerics]\nsteps_per_cycle = 40\n";
+         "\n[structure]\nkind = \"rigid\"\n[numerics]\nsteps_per_cycle = 40\n"
+         "far_wake_cycles = 0.5\n";  // no whole-free-wake hover warning (test_case_warnings.cpp)
 }
 
 TEST(CaseAngleWarnings, AnglesWrittenInRadiansAreWarned) {

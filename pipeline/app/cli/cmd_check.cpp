@@ -13,6 +13,7 @@
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/app/setup_warnings.hpp"
+#include "pipeline/app/watched_setup.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_summary.hpp"
 #include "wings/input_error.hpp"
@@ -41,18 +42,16 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "
                      "file, or set air = \"none\" for a vacuum run of the chain");
   int bodies = c.structure.bodies;
-  const bool reduced_in_process =
-      c.structure.kind == io::Case::Structure::Kind::Flexible && c.chain_file.empty() && chain_file.empty();
-  if (reduced_in_process && wing) {
-    app::check_lattice_can_follow(c, *wing);
-    check_meshable(*wing);
-  }
+  const bool reduced_in_process = app::reduces_wing_in_process(c, chain_file);
+  if (reduced_in_process && wing) app::check_lattice_can_follow(c, *wing);
   {
-    // Reads the chain file, or reduces the wing in process as `run` does (its FEM: seconds),
-    // so that the chain's frequencies can be warned about.
+    // Reads the chain file, or reduces the wing in process as `run` does (its FEM: seconds
+    // to a minute, shown as run shows it), so that the chain's frequencies can be warned about.
     app::SetupOptions options;
     options.chain_file = chain_file;  // check --chain, as run --chain
-    const app::FsiSetup setup = app::build_fsi_setup(c, options);
+    const app::FsiSetup setup = app::build_fsi_setup_watched(c, options, "check", [&] {
+      if (reduced_in_process && wing) check_meshable(*wing);
+    });
     bodies = setup.model.chain.num_bodies();
     for (const std::string& w : app::setup_warnings(c, setup))
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());

@@ -17,6 +17,7 @@
 #include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/app/stage_monitor.hpp"
+#include "pipeline/app/watched_setup.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
 
@@ -56,9 +57,7 @@ void run_command(const RunArgs& a) {
   app::StageMonitor::Options watch;
   if (a.quiet) watch.display = app::StageMonitor::Options::Display::quiet;
   app::StageMonitor setup_watch(claim, 1, watch);
-  setup_watch.stage(c.structure.kind == io::Case::Structure::Kind::Flexible && c.chain_file.empty() && a.chain_file.empty()
-                        ? "setup (the wing's FEM and reduction)"
-                        : "setup");
+  setup_watch.stage(app::setup_stage_name(c, a.chain_file));
   options.before_start = [&](const app::FsiSetup& setup) {
     app::record_interrupt(setup_watch.done());
     app::throw_if_interrupted("during the run's setup; nothing was written");

@@ -74,6 +74,9 @@ void sweep_command(const SweepArgs& a) {
     const sweep::CaseTable table = sweep::read_case_table(a.cases_table);
     plan.keys = table.keys;
     plan.points = table.points;
+    plan.table_file = a.cases_table;
+    plan.header_line = table.header_line;
+    plan.lines = table.lines;
   } else {
     std::vector<sweep::Variation> variations;
     for (const std::string& v : a.vary) variations.push_back(sweep::parse_variation(v));

@@ -55,6 +55,7 @@ CaseTable read_case_table(const std::string& path) {
         if (!seen.insert(k).second) throw InputError(path, number, k, "the column appears twice");
       }
       table.keys = cells;
+      table.header_line = number;
       header = false;
       continue;
     }
@@ -72,6 +73,7 @@ CaseTable read_case_table(const std::string& path) {
       point.push_back({table.keys[i], v});
     }
     table.points.push_back(std::move(point));
+    table.lines.push_back(number);
   }
   if (header) throw InputError(path, 0, "--cases", "the case table has no header");
   if (table.points.empty()) throw InputError(path, 0, "--cases", "the case table has no rows");

@@ -18,6 +18,8 @@ namespace flapsim::sweep {
 struct CaseTable {
   std::vector<std::string> keys;  ///< the header, in order
   std::vector<CasePoint> points;  ///< one per data row, in file order
+  int header_line = 0;            ///< line of the header in the file (1-based)
+  std::vector<int> lines;         ///< line of each data row (1-based), as points
 };
 
 /// \brief Reads a case table.

@@ -42,6 +42,34 @@ void refuse_wing_keys_that_change_nothing(const SweepInputs& inputs, const Resol
   }
 }
 
+// A problem of one varied key (its column), located where the key was written: a case
+// table's header (the key's name) or row (its value); with --vary values, the case or wing
+// file's key, after the point's values.
+[[noreturn]] void fail_column(const SweepInputs& inputs, const CasePoint& point, const PointSource& source,
+                              const std::string& column, bool concerns_the_key, const InputError& e,
+                              const std::string& detail) {
+  if (source.file.empty()) {
+    if (point.empty()) throw e;
+    throw InputError(e.file(), e.line(), e.key(), "with " + describe(point) + ": " + e.message());
+  }
+  const std::string& in_file = e.file().empty() ? inputs.case_file : e.file();
+  std::string where = " (" + in_file;
+  if (e.key() != column && !e.key().empty()) where += ", key '" + e.key() + "'";
+  where += ")";
+  throw InputError(source.file, concerns_the_key ? source.header_line : source.line, column, detail + where);
+}
+
+// The column of the point an override error concerns (a case key, or "wing." + a wing key).
+const Assignment* column_of(const CasePoint& point, const OverrideInputError& e, bool in_case_file) {
+  for (const Assignment& a : point) {
+    const KeyTarget t = key_target(a.key);
+    if (in_case_file && t == KeyTarget::case_file && a.key == e.override_key()) return &a;
+    if (!in_case_file && t == KeyTarget::wing_file && a.key == std::string(kWingPrefix) + e.override_key())
+      return &a;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 KeyTarget key_target(const std::string& key) {
@@ -50,7 +78,7 @@ KeyTarget key_target(const std::string& key) {
   return KeyTarget::case_file;
 }
 
-ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point) {
+ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point, const PointSource& source) {
   ResolvedCase r;
   r.spring_scale = inputs.spring_scale;
   std::vector<std::pair<std::string, std::string>> case_overrides;
@@ -62,19 +90,35 @@ ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point) {
         break;
       case KeyTarget::spring_scale:
         if (!(a.value > 0.0))
-          throw InputError(inputs.case_file, 0, a.key, "with " + describe(point) + ": must be > 0");
+          fail_column(inputs, point, source, a.key, false, InputError(inputs.case_file, 0, a.key, "must be > 0"),
+                      "must be > 0 (the factor on every joint spring)");
         r.spring_scale = a.value;
         break;
     }
   }
   try {
     r.c = io::load_case_file(inputs.case_file, case_overrides);
+  } catch (const OverrideInputError& e) {
+    if (const Assignment* a = column_of(point, e, true))
+      fail_column(inputs, point, source, a->key, e.concerns_the_key(), e, e.detail());
+    fail_column(inputs, point, {}, "", false, e, "");
+  } catch (const InputError& e) {
+    fail_column(inputs, point, {}, "", false, e, "");
+  }
+  try {
     refuse_wing_keys_that_change_nothing(inputs, r);
+  } catch (const InputError& e) {
+    fail_column(inputs, point, source, e.key(), true, e, e.message());  // the column itself can change nothing
+  }
+  try {
     const auto wing = app::load_case_wing(r.c, r.wing_overrides);
     r.inputs_hash = io::input_hash(r.c, wing ? &*wing : nullptr, inputs.chain_file, r.spring_scale);
+  } catch (const OverrideInputError& e) {
+    if (const Assignment* a = column_of(point, e, false))
+      fail_column(inputs, point, source, a->key, e.concerns_the_key(), e, e.detail());
+    fail_column(inputs, point, {}, "", false, e, "");
   } catch (const InputError& e) {
-    if (point.empty()) throw;
-    throw InputError(e.file(), e.line(), e.key(), "with " + describe(point) + ": " + e.message());
+    fail_column(inputs, point, {}, "", false, e, "");
   }
   return r;
 }

@@ -38,10 +38,21 @@ struct ResolvedCase {
   std::string inputs_hash;  ///< io::input_hash of the case, its wing, chain file and spring factor
 };
 
+/// Where a point's values were written: a row of a `--cases` table (its file, the line of
+/// its header and of the row). An empty file: `--vary` values, from the command line.
+struct PointSource {
+  std::string file;
+  int header_line = 0;
+  int line = 0;
+};
+
 /// \brief Reads and checks the case (and its wing) with the point's values set.
-/// \throws flapsim::InputError naming the file and key; the message starts with the
-///         point's values, e.g. "with kinematics.rotation_phase = 3: ..."
-ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point);
+/// \throws flapsim::InputError naming the file and key. A problem of a varied key from a
+///         case table names the table, the line (the header's for the key's name, an unknown
+///         key; the row's for its value) and the column; otherwise the case or wing file,
+///         and the message starts with the point's values, e.g. "with
+///         kinematics.rotation_phase = 3: ..."
+ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point, const PointSource& source = {});
 
 /// \brief The sub-folder of case \p index of \p count: the index (at least two digits,
 /// as many as the count needs) and the values, e.g. "03_-0.05" or "07_0.1_2".

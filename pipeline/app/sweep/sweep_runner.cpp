@@ -93,7 +93,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
   if (report.root) {
     try {
       resolved.reserve(n);
-      for (const CasePoint& p : plan.points) resolved.push_back(resolve_case(inputs, p));
+      for (std::size_t i = 0; i < n; ++i) resolved.push_back(resolve_case(inputs, plan.points[i], plan.source(i)));
     } catch (...) {
       share_check(world, false);
       throw;
@@ -143,7 +143,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
     try {
       // Rank 0 resolved every case; the others resolve the ones they are given.
       std::optional<ResolvedCase> own;
-      if (resolved.empty()) own = resolve_case(inputs, plan.points[i]);
+      if (resolved.empty()) own = resolve_case(inputs, plan.points[i], plan.source(i));
       const ResolvedCase& r = own ? *own : resolved[i];
       app::RunOptions ro;
       ro.output_dir = options.output_dir / case_folder(i, n, plan.points[i]);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "pipeline/app/sweep/case_scheduler.hpp"
+#include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/app/sweep/sweep_table.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
 
@@ -39,6 +40,15 @@ struct SweepOptions {
 struct SweepPlan {
   std::vector<std::string> keys;
   std::vector<CasePoint> points;
+  std::string table_file;   ///< the --cases table the points come from ("" for --vary)
+  int header_line = 0;      ///< its header's line
+  std::vector<int> lines;   ///< the line of each point's row
+
+  /// Where point \p i was written (for messages; an empty file for --vary).
+  PointSource source(std::size_t i) const {
+    if (table_file.empty()) return {};
+    return {table_file, header_line, i < lines.size() ? lines[i] : 0};
+  }
 };
 
 struct SweepReport {

@@ -1,0 +1,81 @@
+// A --cases table's problems are reported against the table: its file, the line and the
+// column's key (docs/sweeps.md, "Case tables"; the README's exit-status contract: "the
+// message names file, line and key; nothing written"). Before: a typo in the header
+// ("kinematics.rotaton_phase") was reported as "case.toml: key 'kinematics.rotaton_phase':
+// with kinematics.rotaton_phase = -0.1: unknown key ... (value given as an override)" —
+// the case file, which does not hold the key, and no line; a typo in a table's name
+// ("kinematic.frequency_hz") as "case.toml:1: key 'kinematic'", the case file's first line.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "robustness_helpers.hpp"
+
+using namespace flapsim::test;
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string err;
+};
+
+// `flapsim sweep CASE --cases TABLE -o DIR`: the exit status and stderr.
+Result sweep_with_table(const ScratchDir& dir, const std::string& table_text) {
+  std::ofstream(dir / "case.toml") << small_plate_case("rigid", 1, 0);
+  std::ofstream(dir / "table.csv") << table_text;
+  const auto err = dir / "stderr.txt";
+  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' sweep '" +
+                          (dir / "case.toml").string() + "' --cases '" + (dir / "table.csv").string() +
+                          "' -o '" + (dir / "out").string() + "' > /dev/null 2> '" + err.string() + "'";
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(err)};
+}
+
+// The message's location: "flapsim: error: <dir>/table.csv:LINE: key 'KEY': ".
+std::string located(const ScratchDir& dir, int line, const std::string& key) {
+  return "flapsim: error: " + (dir / "table.csv").string() + ":" + std::to_string(line) + ": key '" + key + "': ";
+}
+
+TEST(CaseTableErrors, ATypoInTheHeaderNamesTheTablesHeaderLineAndTheKey) {
+  ScratchDir dir("table_typo");
+  // A comment and a blank line first: the header is line 3.
+  const Result r = sweep_with_table(dir, "# rotation phases\n\nkinematics.rotaton_phase,air.density\n-0.1,1.2\n");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind(located(dir, 3, "kinematics.rotaton_phase") + "unknown key", 0), 0u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "nothing written";
+}
+
+TEST(CaseTableErrors, ATypoInATablesNameOrAWingKeyIsTheHeadersToo) {
+  ScratchDir dir("table_typo_table");
+  Result r = sweep_with_table(dir, "kinematic.frequency_hz\n20\n");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind(located(dir, 1, "kinematic.frequency_hz") + "unknown key", 0), 0u) << r.err;
+  r = sweep_with_table(dir, "kinematics.frequency_hz,wing.membrane.thicknes\n20,0.2\n");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind(located(dir, 1, "wing.membrane.thicknes") + "unknown key", 0), 0u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "nothing written";
+}
+
+TEST(CaseTableErrors, ABadValueNamesItsRowsLine) {
+  ScratchDir dir("table_value");
+  // Row 3 (line 4, after a blank line) has a negative frequency: the case file's bound (0, 1e6].
+  Result r = sweep_with_table(dir, "kinematics.frequency_hz,wing.membrane.thickness\n20,0.2\n\n-5,0.2\n");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind(located(dir, 4, "kinematics.frequency_hz") + "value -5 out of range", 0), 0u) << r.err;
+  // A wing key's value: membrane.thickness must be > 0 (docs/wing_file.md).
+  r = sweep_with_table(dir, "kinematics.frequency_hz,wing.membrane.thickness\n20,0.2\n20,-0.2\n");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind(located(dir, 3, "wing.membrane.thickness") + "value -0.2 out of range", 0), 0u) << r.err;
+  r = sweep_with_table(dir, "spring_scale\n0\n");  // (after a warning: the plate case is rigid)
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find(located(dir, 2, "spring_scale") + "must be > 0"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "nothing written";
+}
+
+}  // namespace
