@@ -81,9 +81,9 @@ TEST(CliMessages, AnOptionValueOutOfRangeGetsAShortMessage) {
 }
 
 TEST(CliMessages, AChainThatMissesTheFemIsWarnedAbout) {
-  // The MAV film wing with 4 bodies: first bending +144 % (docs/reduction.md, "Film wings").
+  // The first MAV film wing (25 um film) with 4 bodies: first bending +144 % (docs/reduction.md, "Film wings").
   ScratchDir dir("message_mismatch");
-  const Result mav = run_capturing_stderr(dir, "reduce " + kSourceDir + "/wings/mav_film_wing.toml --bodies 4 --modes 6 -o " +
+  const Result mav = run_capturing_stderr(dir, "reduce " + kSourceDir + "/wings/mav_film_wing_25um.toml --bodies 4 --modes 6 -o " +
                                                    (dir / "mav").string());
   EXPECT_EQ(mav.status, 0);
   EXPECT_NE(mav.err.find("warning: the chain's first bending mode differs from the FEM's by +1"), std::string::npos)

@@ -53,10 +53,11 @@ std::string cell(const std::string& line, char sep, int index) {
 
 // Issue 17: `flapsim modes` names the modes as `flapsim reduce` does — from the motion of
 // the chain's stations (docs/reduction.md, "Mode kinds from the stations"), so the MAV
-// film wing's film modes are "film", not "bending" (its 12 lowest modes: 7 film).
+// film wing's film modes are "film", not "bending" (the 25 µm first design, its 12 lowest
+// modes: 7 film).
 TEST(FemCommands, ModesNamesModesAsTheReductionReportDoes) {
   const flapsim::test::ScratchDir scratch("modes_names");
-  const std::string wing = std::string(FLAPSIM_SOURCE_DIR) + "/wings/mav_film_wing.toml";
+  const std::string wing = std::string(FLAPSIM_SOURCE_DIR) + "/wings/mav_film_wing_25um.toml";
   ASSERT_EQ(run_flapsim("modes " + wing + " -o " + (scratch / "modes").string() + " --modes 12 --bodies 10"), 0);
   ASSERT_EQ(run_flapsim("reduce " + wing + " -o " + (scratch / "reduce").string() + " --modes 12 --bodies 10"), 0);
   std::vector<std::string> from_modes, from_report;

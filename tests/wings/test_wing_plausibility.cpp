@@ -49,7 +49,7 @@ void expect_one_warning(const w::Wing& wing, const std::string& key, int line, c
 TEST(WingPlausibility, PlausibleWingsGiveNoWarning) {
   EXPECT_TRUE(plate("4.0e9", "1400.0", "0.02").warnings.empty());
   for (const char* f : {"hawkmoth.toml", "hawkmoth_thin_membrane.toml", "flat_plate.toml", "robofly.toml",
-                        "mav_film_wing.toml"})
+                        "mav_film_wing.toml", "mav_film_wing_25um.toml"})
     EXPECT_TRUE(w::load_wing_file(kSource + "/wings/" + f).warnings.empty()) << f;
 }
 
