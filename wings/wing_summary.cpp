@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "wings/planform_geometry.hpp"
 #include "wings/wing_mass_properties.hpp"
@@ -34,8 +35,14 @@ std::string describe_wing(const Wing& wing) {
   s += line("  membrane thickness     %10.4f mm (E %.3g GPa, nu %.3g, rho %.4g kg/m^3)",
             wing.membrane.thickness * 1e3, wing.membrane.material.youngs_modulus * 1e-9,
             wing.membrane.material.poisson_ratio, wing.membrane.material.density);
-  s += line("  estimated mass         %10.3f mg (membrane %.3f, non-structural %.3f, veins %.3f)",
-            m.total() * 1e6, m.membrane * 1e6, m.nonstructural * 1e6, m.veins * 1e6);
+  // In mg, or ug / ng for a wing below 0.1 mg (a 1 mm wing of a 2 um film is a fraction of a
+  // microgram: "0.000 mg" hid it).
+  const double total = m.total();
+  const auto [mass_unit, per_kg] = total >= 1e-7 ? std::pair{"mg", 1e6}
+                                   : total >= 1e-10 ? std::pair{"ug", 1e9}
+                                                    : std::pair{"ng", 1e12};
+  s += line("  estimated mass         %10.3f %s (membrane %.3f, non-structural %.3f, veins %.3f)", total * per_kg,
+            mass_unit, m.membrane * per_kg, m.nonstructural * per_kg, m.veins * per_kg);
   s += line("  root clamp             y <= %.3f mm", wing.clamp_y * 1e3);
   s += line("  mesh size              %10.3f mm (veins %.3f mm)", wing.mesh.element_size * 1e3,
             wing.mesh.vein_element_size * 1e3);

@@ -106,6 +106,9 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
         solve_air(model, data, dt, step, t1);
         data.last_iterations = 1;
       }
+      // The loads on the wing at t1 (prescribed and aerodynamic): they move nothing, but the
+      // drive moment and power the base supplies include them (ω·M + v·F at the pivot).
+      assemble_loads(model, data, t1);
       data.last_change = 0.0;
     } else if (!model.air) {
       external_loads(model, t1, data.loads);

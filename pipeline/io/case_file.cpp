@@ -1,6 +1,7 @@
 #include "pipeline/io/case_file.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -278,12 +279,19 @@ constexpr double kRadianSuspicionDeg = 2.0 * 3.14159265358979323846;
 void warn_implausible_angles(const TomlTable& root, Case& c) {
   const mbd::WingKinematics& k = c.kinematics;
   double largest_deg = 0.0, largest_sweep_deg = 0.0;
+  double lowest_sweep = std::numeric_limits<double>::infinity(), highest_sweep = -lowest_sweep;  // [deg]
   for (int i = 0; i < 360; ++i) {
     const double s = i / 360.0;
-    const double sweep = std::abs(k.sweep.at_phase(s).value) / kDegToRad;
+    const double signed_sweep = k.sweep.at_phase(s).value / kDegToRad;
+    lowest_sweep = std::min(lowest_sweep, signed_sweep);
+    highest_sweep = std::max(highest_sweep, signed_sweep);
+    const double sweep = std::abs(signed_sweep);
     largest_sweep_deg = std::max(largest_sweep_deg, sweep);
     largest_deg = std::max({largest_deg, sweep, std::abs(k.rotation.at_phase(s).value) / kDegToRad});
   }
+  // The stroke alone in radians (rotation in degrees): a sweep that swings, by less than
+  // ±2π degrees. A sweep that does not swing at all (0: a plunging or pitching wing) is not.
+  const double sweep_amplitude_deg = 0.5 * (highest_sweep - lowest_sweep);
   const auto t = root.find_table("kinematics");
   auto fixed = [](double x) {
     std::ostringstream o;
@@ -296,6 +304,14 @@ void warn_implausible_angles(const TomlTable& root, Case& c) {
                           "the sweep and rotation angles never exceed " + fixed(largest_deg) +
                               " degrees: were they written in radians? Keys ending in _deg and the deg "
                               "column of a table are in degrees (a 50-degree stroke is cos_deg = [50.0])"});
+  else if (sweep_amplitude_deg > 1e-9 && sweep_amplitude_deg <= kRadianSuspicionDeg)
+    c.warnings.push_back({c.file, t ? t->line_of("sweep") : 0, "kinematics.sweep",
+                          "the sweep swings by only +-" + fixed(sweep_amplitude_deg) + " degrees (from " +
+                              fixed(lowest_sweep) + " to " + fixed(highest_sweep) + ") while the rotation reaches " +
+                              fixed(largest_deg) +
+                              ": was the stroke written in radians? Keys ending in _deg and the deg column of a "
+                              "table are in degrees (a 50-degree stroke is cos_deg = [50.0]); the lift "
+                              "coefficient's reference speed, the flapping speed at r2, is then tiny"});
   else if (largest_sweep_deg > 180.0)
     c.warnings.push_back({c.file, t ? t->line_of("sweep") : 0, "kinematics.sweep",
                           "the sweep angle reaches " + fixed(largest_sweep_deg) +

@@ -33,6 +33,25 @@ TEST(CaseAngleWarnings, AnglesWrittenInRadiansAreWarned) {
             std::string::npos) << c.warnings[0].message;
 }
 
+// The stroke alone in radians: a slender wing, rigid, 15 Hz, `cos_deg = [0.96]` with the
+// rotation 90 +- 45 degrees ran silently with mean CL 11.0 (on a reference speed of 0.035 m/s,
+// the flapping speed of a +-0.96 degree stroke at r2). A sweep that does not swing (a constant
+// 0 or 10 degrees: a plunging or pitching wing) is not warned.
+TEST(CaseAngleWarnings, AStrokeAloneWrittenInRadiansIsWarned) {
+  const flapsim::io::Case c = case_from_text(
+      kinematics_case("{ mean_deg = 10.0, cos_deg = [0.96] }", "{ mean_deg = 90.0, sin_deg = [-45.0] }"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(c.warnings[0].key, "kinematics.sweep");
+  EXPECT_EQ(c.warnings[0].line, 4);
+  // 10 +- 0.96 degrees: from 9.04 to 10.96; the rotation reaches 90 + 45 = 135.
+  EXPECT_NE(c.warnings[0].message.find("the sweep swings by only +-0.96 degrees (from 9.04 to 11) while the "
+                                       "rotation reaches 135: was the stroke written in radians?"),
+            std::string::npos)
+      << c.warnings[0].message;
+  EXPECT_TRUE(case_from_text(kinematics_case("10.0", "{ mean_deg = 90.0, sin_deg = [-45.0] }")).warnings.empty());
+  EXPECT_TRUE(case_from_text(kinematics_case("0.0", "{ mean_deg = 90.0, sin_deg = [-45.0] }")).warnings.empty());
+}
+
 TEST(CaseAngleWarnings, ASweepBeyondHalfATurnIsWarned) {
   const flapsim::io::Case c =
       case_from_text(kinematics_case("{ mean_deg = 10.0, cos_deg = [500.0] }", "{ mean_deg = 90.0, sin_deg = [-45.0] }"));

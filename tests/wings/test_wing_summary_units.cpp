@@ -1,0 +1,41 @@
+// `flapsim check`'s wing summary shows a small wing's mass. Before: a 0.8 mm half-ellipse of a
+// 1.5 um cuticle film (0.28 ug) printed "estimated mass 0.000 mg (membrane 0.000, ...)".
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "wings/toml_reader.hpp"
+#include "wings/wing_file.hpp"
+#include "wings/wing_summary.hpp"
+
+namespace {
+
+namespace w = flapsim::wings;
+
+std::string mass_line(const std::string& summary) {
+  const auto at = summary.find("estimated mass");
+  return at == std::string::npos ? "" : summary.substr(at, summary.find('\n', at) - at);
+}
+
+w::Wing plate(const std::string& unit, double length, double chord, double thickness) {
+  const std::string l = std::to_string(length), c = std::to_string(chord);
+  return w::read_wing(w::parse_toml_string(
+      "length_unit = \"" + unit + "\"\n[planform]\noutline = [[0, 0], [0, " + l + "], [-" + c + ", " + l +
+          "], [-" + c + ", 0]]\nclamp_y = 0\n[materials.film]\nyoungs_modulus = 4e9\npoisson_ratio = 0.3\n"
+          "density = 1200\n[membrane]\nthickness = " + std::to_string(thickness) + "\nmaterial = \"film\"\n",
+      "plate.toml"));
+}
+
+TEST(WingSummaryUnits, AWingBelowATenthOfAMilligramIsShownInMicrograms) {
+  // rho h S = 1200 kg/m^3 * 2e-6 m * (1e-3 m * 0.25e-3 m) = 6.0e-10 kg = 0.600 ug.
+  EXPECT_EQ(mass_line(w::describe_wing(plate("um", 1000, 250, 2))).rfind("estimated mass              0.600 ug "
+                                                                           "(membrane 0.600, non-structural 0.000, "
+                                                                           "veins 0.000)", 0), 0u)
+      << w::describe_wing(plate("um", 1000, 250, 2));
+  // 1200 * 0.2e-3 * (40e-3 * 10e-3) = 9.6e-5 kg = 96.000 mg (the flat plate): still in mg.
+  EXPECT_NE(mass_line(w::describe_wing(plate("mm", 40, 10, 0.2))).find(" 96.000 mg (membrane 96.000,"),
+            std::string::npos)
+      << w::describe_wing(plate("mm", 40, 10, 0.2));
+}
+
+}  // namespace
