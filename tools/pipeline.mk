@@ -5,7 +5,8 @@
 #   make run [CASE=cases/x.toml]   run a case (default cases/hover_flexible.toml: the
 #                       hawkmoth wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz)
 #                       into out/<case name>/, with the model of its wing when it needs
-#                       one; leaves out/<case name>/preview.png and run.pvsm
+#                       one (out/<case name>_run/ when the case has its wing's name, whose
+#                       model is out/<wing>/); leaves preview.png and run.pvsm there
 #   make phase-study    rigid (dpsi = -0.20..+0.10) and flexible (-0.10..+0.10) sweeps,
 #                       6 cycles each (nothing truncated), all 12 cases over the cores
 #   make phase-study CASE=cases/x.toml [PHASES=-0.2:0.05:0.1]
@@ -31,9 +32,13 @@ PHASE_OUT         ?= $(OUT)/phase_study
 PHASE_JOBS        ?= $(shell nproc)
 PLOTS_OUT         ?= $(OUT)/plots
 PHASES            ?= -0.20:0.05:0.10
-RUN_OUT           ?= $(OUT)/$(CASE_NAME)
 # A flexible case without its own chain runs with its wing's chain (tools/case.mk).
 RUN_CHAIN         := $(if $(CASE_NEEDS_MODEL),$(PIPELINE_CHAIN))
+# A case named as its wing (cases/mav_film_wing.toml flies wings/mav_film_wing.toml) would
+# run into its wing's model folder, out/<wing>/, whose summary.json flapsim run does not
+# replace ('make run CASE=cases/mav_film_wing.toml' stopped there, exit 4): its run goes
+# to out/<case name>_run/.
+RUN_OUT           ?= $(OUT)/$(CASE_NAME)$(if $(and $(RUN_CHAIN),$(filter $(MODEL_OUT),$(OUT)/$(CASE_NAME))),_run)
 
 .PHONY: run run-pipeline phase-study plots figures sweep-plots validate
 
