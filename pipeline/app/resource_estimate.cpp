@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 
 #include "pipeline/app/run_history.hpp"
@@ -30,6 +32,17 @@ std::string seconds_text(double s) {
   return buf;
 }
 
+// Σ f(r) for the integers r = from … to (none if to < from), f a polynomial of degree at
+// most 2 there: fitted through f(from), f(from + 1), f(from + 2) (Newton's forward
+// differences) and summed with Σ C(j, 1) = m(m−1)/2, Σ C(j, 2) = m(m−1)(m−2)/6, j = 0 … m−1.
+template <typename F>
+double sum_quadratic(F f, double from, double to) {
+  const double m = to - from + 1.0;
+  if (!(m >= 1.0)) return 0.0;
+  const double f0 = f(from), d1 = f(from + 1.0) - f0, d2 = f(from + 2.0) - 2.0 * f(from + 1.0) + f0;
+  return f0 * m + d1 * m * (m - 1.0) / 2.0 + d2 * m * (m - 1.0) * (m - 2.0) / 6.0;
+}
+
 }  // namespace
 
 RunEstimate estimate_run(const io::Case& c, int bodies) {
@@ -54,22 +67,28 @@ RunEstimate estimate_run(const io::Case& c, int bodies) {
     const double wake_segments = (rows + 1.0) * ns + rows * (ns + 1.0);
     memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
     memory += 2.0 * panels * panels * 8;  // influence matrix and its LU
-    // Interactions: at step k the wake has r = min(k, max_rows) rows.
+    // Interactions: at step k the wake has r = min(k, max_rows) rows; the wake's nodes move
+    // by their induced velocity (every segment at each node) only in the rows younger than
+    // far_wake_cycles or frozen_wake_cycles (the older rows move as a whole or stand:
+    // docs/uvlm.md, "Far wake"), and every collocation point sees every segment once per
+    // lattice solve: one per step for a rigid wing, a few coupling iterations for a chain.
     const double max_rows = n.wake_max_rows > 0 ? n.wake_max_rows : steps;
+    const double old_after_cycles = n.far_wake_cycles > 0.0 ? n.far_wake_cycles : n.frozen_wake_cycles;
+    const double free_rows = old_after_cycles > 0.0
+                                 ? std::max(1.0, std::floor(old_after_cycles * n.steps_per_cycle))
+                                 : std::numeric_limits<double>::infinity();
+    const double solves = bodies > 1 ? iterations : 1.0;
     const double bound_segments = (nc + 1) * ns + nc * (ns + 1);
     auto step_cost = [&](double r) {
       const double segs = (r + 1) * ns + r * (ns + 1);
-      const double free_wake = n.free_wake ? (r + 1) * (ns + 1) * (segs + bound_segments) : 0.0;
-      return free_wake + iterations * panels * (segs + bound_segments);
+      const double moving_nodes = n.free_wake ? (std::min(r, free_rows) + 1) * (ns + 1) : 0.0;
+      return (moving_nodes + solves * panels) * (segs + bound_segments);
     };
-    // Sum over steps, in closed form per part (growing wake, then a wake of max_rows).
+    // Sum over steps, in closed form per part: the wake growing with its nodes all moving
+    // (quadratic in r), growing beyond the moving rows (linear), then a wake of max_rows.
     const double growing = std::min(steps, max_rows);
-    double sum = 0.0;
-    // step_cost is a quadratic in r: sum it exactly with three sample points.
-    const double c0 = step_cost(0), c1 = step_cost(1), c2 = step_cost(2);
-    const double a2 = (c2 - 2 * c1 + c0) / 2, a1 = c1 - c0 - a2, a0 = c0;
-    const double m = growing;  // r = 1..m
-    sum += a2 * m * (m + 1) * (2 * m + 1) / 6 + a1 * m * (m + 1) / 2 + a0 * m;
+    const double moving = std::min(growing, free_rows);
+    double sum = sum_quadratic(step_cost, 1.0, moving) + sum_quadratic(step_cost, moving + 1.0, growing);
     sum += std::max(0.0, steps - growing) * step_cost(max_rows);
     e.interactions = sum;
   }
