@@ -48,7 +48,7 @@ OutlineCsv read_outline_csv_lines(const std::string& path, const std::string& ke
     ++line_no;
     if (line.find('\0') != std::string::npos)
       throw InputError(path, line_no, key, "the outline file holds a NUL byte: not a text file");
-    const std::string t = trim(line);
+    const std::string t = trim(line_no == 1 ? without_byte_order_mark(line) : line);
     if (t.empty() || t[0] == '#') continue;
     if (!header_seen) {
       header_seen = true;

@@ -492,6 +492,19 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Polygon& outline,
 bool is_wing_document(const TomlTable& root) { return root.has("planform"); }
 
 Wing read_wing(TomlTable root) {
+  // A case or chain file where a wing file belongs: say what it is rather than list its
+  // tables as unknown keys.
+  if (!root.has("planform")) {
+    if (root.has("kinematics"))
+      root.fail("kinematics", "this is a case file (it has [kinematics]), not a wing file (no [planform])" +
+                                  std::string(root.is_string("wing") ? ": its wing is " + root.get_string("wing") +
+                                                                           " (relative to the case file)"
+                                                                     : "") +
+                                  "; mesh, modes and reduce take a wing file, run and sweep a case file");
+    if (root.has("bodies"))
+      root.fail("bodies", "this is a chain file (it has [[bodies]], as 'flapsim reduce' writes it), not a wing "
+                          "file (no [planform]): run takes it with --chain");
+  }
   root.expect_only({"name", "description", "length_unit", "planform", "materials", "membrane",
                     "veins", "mesh"});
   root.read_length_unit();

@@ -320,6 +320,16 @@ void warn_implausible_angles(const TomlTable& root, Case& c) {
 }
 
 Case read_case(TomlTable root) {
+  // Another kind of flapsim file where a case belongs: say what it is rather than list its
+  // tables as unknown keys.
+  if (!root.has("kinematics")) {
+    if (root.has("planform"))
+      root.fail("planform", "this is a wing file (it has [planform]), not a case file (no [kinematics]): a case "
+                            "file names its wing with wing = \"...\" (docs/case_file.md); 'flapsim check' reads either");
+    if (root.has("bodies"))
+      root.fail("bodies", "this is a chain file (it has [[bodies]], as 'flapsim reduce' writes it), not a case file "
+                          "(no [kinematics]): give it to a case with chain = \"...\" or to 'flapsim run CASE --chain'");
+  }
   root.expect_only({"name", "description", "length_unit", "wing", "chain", "kinematics", "air",
                     "structure", "numerics", "output", "loads", "markers"});
   root.read_length_unit();

@@ -29,6 +29,15 @@ Eigen::Matrix3d read_matrix3(const TomlTable& t, std::string_view key, double sc
 }
 
 mbd::ChainModel parse_chain(const TomlTable& root) {
+  // A wing or case file where a chain file belongs (--chain, a case's chain): say so.
+  if (!root.has("bodies")) {
+    if (root.has("planform"))
+      root.fail("planform", "this is a wing file (it has [planform]), not a chain file (no [[bodies]]): "
+                            "'flapsim reduce' makes the wing's chain file; without a chain file a flexible case "
+                            "reduces its wing in process");
+    if (root.has("kinematics"))
+      root.fail("kinematics", "this is a case file (it has [kinematics]), not a chain file (no [[bodies]])");
+  }
   root.expect_only({"length_unit", "root", "welded_bodies", "root_offset", "root_rotation",
                     "joint_stiffness", "joint_damping", "bodies", "name", "description"});
   root.read_length_unit();

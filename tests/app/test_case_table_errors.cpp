@@ -14,6 +14,7 @@
 #include <fstream>
 #include <string>
 
+#include "pipeline/app/sweep/case_table.hpp"
 #include "robustness_helpers.hpp"
 
 using namespace flapsim::test;
@@ -76,6 +77,26 @@ TEST(CaseTableErrors, ABadValueNamesItsRowsLine) {
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find(located(dir, 2, "spring_scale") + "must be > 0"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "nothing written";
+}
+
+// A spreadsheet's "CSV UTF-8": a byte-order mark before the header, CR LF line ends. Before:
+// "table.csv:1: key '\xEF\xBB\xBFkinematics.rotation_phase': unknown key (a typo?); expected
+// one of: name, ..., kinematics, ..." (the mark invisible). A table written with ';' (a
+// locale whose decimal mark is the comma) says so at its header.
+TEST(CaseTableErrors, AByteOrderMarkIsSkippedAndSemicolonsAreNamed) {
+  ScratchDir dir("table_bom");
+  std::ofstream(dir / "bom.csv", std::ios::binary) << "\xEF\xBB\xBFkinematics.rotation_phase,air.density\r\n-0.1,1.2\r\n";
+  const auto table = flapsim::sweep::read_case_table((dir / "bom.csv").string());
+  ASSERT_EQ(table.keys.size(), 2u);
+  EXPECT_EQ(table.keys[0], "kinematics.rotation_phase");
+  ASSERT_EQ(table.points.size(), 1u);
+  EXPECT_EQ(table.points[0][1].value, 1.2);
+  const Result r = sweep_with_table(dir, "kinematics.rotation_phase;air.density\n-0,1;1,2\n");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find((dir / "table.csv").string() + ":1: the header \"kinematics.rotation_phase;air.density\" is "
+                                                       "separated by ';'"),
+            std::string::npos)
+      << r.err;
 }
 
 }  // namespace

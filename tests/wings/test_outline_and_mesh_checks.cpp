@@ -45,6 +45,22 @@ TEST(OutlineCsv, EveryBadRowIsNamedByItsLine) {
   EXPECT_EQ(lines.points.size(), lines.lines.size());
 }
 
+// A spreadsheet's "CSV UTF-8" starts with a byte-order mark and ends lines with CR LF. Before:
+// "o.csv:1: key 'planform.outline_file': expected a line "x,y" with two finite numbers ...,
+// found "\xEF\xBB\xBFx,y"" (the mark invisible in the message).
+TEST(OutlineCsv, AByteOrderMarkAndCrLfLineEndsAreRead) {
+  flapsim::test::ScratchDir dir("outline_csv_bom");
+  std::ofstream(dir / "o.csv", std::ios::binary) << "\xEF\xBB\xBFx,y\r\n0.1,0\r\n0.1,1\r\n-0.2,1\r\n-0.2,0\r\n";
+  const auto o = w::read_outline_csv_lines((dir / "o.csv").string(), "k");
+  ASSERT_EQ(o.points.size(), 4u);
+  EXPECT_EQ(o.points[0].x(), 0.1);
+  EXPECT_EQ(o.points[3].y(), 0.0);
+  EXPECT_EQ(o.lines[0], 2);  // the header is line 1
+  // Without a header, the first point follows the mark.
+  std::ofstream(dir / "p.csv", std::ios::binary) << "\xEF\xBB\xBF" "0.1,0\n0.1,1\n-0.2,1\n";
+  EXPECT_EQ(w::read_outline_csv_lines((dir / "p.csv").string(), "k").points.size(), 3u);
+}
+
 TEST(OutlineCsv, ASelfIntersectionIsReportedAtTheCsvLineOfItsEdge) {
   // A bow tie: edge 0 (points 0-1, lines 2-3) crosses edge 2 (points 2-3).
   flapsim::test::ScratchDir dir("outline_csv_bowtie");

@@ -85,6 +85,10 @@ std::string check_file(const std::string& path, const std::string& chain_file) {
     const io::Case c = print_case_warnings(io::read_case(root));
     return io::describe_case(c) + check_case_like_run(c, chain_file);
   }
+  if (root.has("bodies"))
+    throw InputError(path, root.line_of("bodies"), "bodies",
+                     "a chain file (it has [[bodies]]): check reads wing and case files; 'flapsim check CASE "
+                     "--chain " + path + "' checks the chain with the case that runs it");
   throw InputError(path, 1, "",
                    "not a wing file (no [planform] table) nor a case file (no [kinematics] table)");
 }

@@ -12,6 +12,7 @@
 namespace flapsim::sweep {
 
 using wings::trim;
+using wings::without_byte_order_mark;
 
 namespace {
 
@@ -45,10 +46,16 @@ CaseTable read_case_table(const std::string& path) {
   bool header = true;
   while (std::getline(in, line)) {
     ++number;
-    const std::string t = trim(line);
+    const std::string t = trim(number == 1 ? without_byte_order_mark(line) : line);
     if (t.empty() || t.front() == '#') continue;
     const auto cells = cells_of(t);
     if (header) {
+      // A table of one column whose name holds a ';' was written with semicolons (a
+      // spreadsheet's CSV in a locale whose decimal mark is the comma).
+      if (cells.size() == 1 && cells[0].find(';') != std::string::npos)
+        throw InputError(path, number, "",
+                         "the header \"" + cells[0] + "\" is separated by ';': the table's cells are separated by "
+                         "commas, with a point as the decimal mark (kinematics.rotation_phase,air.density)");
       std::set<std::string> seen;
       for (const std::string& k : cells) {
         if (k.empty()) throw InputError(path, number, "", "empty column name in the header");
