@@ -17,6 +17,7 @@
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/setup_warnings.hpp"
+#include "pipeline/app/sweep/earlier_cases.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
@@ -108,12 +109,15 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       throw;
     }
     rows.resize(n);
+    EarlierCases earlier(options.output_dir);  // completed cases under another index (a grid extended)
     for (std::size_t i = 0; i < n; ++i) {
       rows[i].point = plan.points[i];
       rows[i].folder = case_folder(i, n, plan.points[i]);
       std::optional<app::RunResults> kept;
-      if (!options.force)
+      if (!options.force) {
         kept = kept_results(options.output_dir / rows[i].folder / "summary.json", resolved[i].inputs_hash);
+        if (!kept) kept = earlier.adopt(resolved[i].inputs_hash, rows[i].folder);
+      }
       if (kept) {
         rows[i].done = true;
         rows[i].outcome = CaseOutcome{"ok", "kept", world.rank(), host, std::move(*kept), 0.0};

@@ -29,7 +29,10 @@ double parse_number(const std::string& whole, const std::string& s) {
 }
 
 // Rounds away the binary noise of start + i·step (0.1 + 3·0.05 = 0.25000000000000006).
-double tidy(double v) {
+// A value that should be zero is noise alone (−0.3 + 3·0.1 = 5.55e-17, which "%.12g" keeps):
+// below 1e-9 of the step it is zero (it named the case's folder "03_5.551115123e-17").
+double tidy(double v, double step) {
+  if (std::abs(v) < 1e-9 * std::abs(step)) return 0.0;
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.12g", v);
   return std::stod(buf);
@@ -68,7 +71,7 @@ Variation parse_variation(const std::string& text) {
     if ((stop - start) * step < 0.0) bad(text, "the step goes away from stop");
     const double count = std::floor((stop - start) / step + 1e-9);
     if (count > 10000) bad(text, "more than 10000 values");
-    for (long i = 0; i <= static_cast<long>(count); ++i) v.values.push_back(tidy(start + i * step));
+    for (long i = 0; i <= static_cast<long>(count); ++i) v.values.push_back(tidy(start + i * step, step));
   } else {
     for (const auto& s : split(values, ',')) v.values.push_back(parse_number(text, s));
   }

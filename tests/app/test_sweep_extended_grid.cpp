@@ -1,0 +1,47 @@
+// A sweep run again with its grid extended at the start: the case folders are named by
+// index and values (`01_-0.1`), so every earlier case gets a new index; its results are
+// found by their inputs hash, moved to the new folder and kept, not run again
+// (pipeline/app/sweep/earlier_cases; docs/sweeps.md, "Resuming a sweep").
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "common/run_flapsim.hpp"
+#include "common/scratch_dir.hpp"
+#include "sweep_test_helpers.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace flapsim;
+
+std::set<std::string> sub_folders(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_directory()) names.insert(e.path().filename().string());
+  return names;
+}
+
+TEST(SweepExtendedGrid, CasesOfTheEarlierGridAreKeptUnderTheirNewIndex) {
+  const test::ScratchDir dir("sweep_extended");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(8);
+  const std::string base = "sweep " + (dir / "case.toml").string() + " -j 1 -q -o " + (dir / "out").string();
+  ASSERT_EQ(test::run_flapsim(base + " --vary kinematics.rotation_phase=-0.1:0.1:0.1"), 0);
+  EXPECT_EQ(sub_folders(dir / "out"), (std::set<std::string>{"00_-0.1", "01_0", "02_0.1"}));
+  const std::string summary_0 = test::read_text(dir / "out" / "01_0" / "summary.json");
+
+  // One value more at the start: -0.2 is case 0, the three earlier cases become 1..3.
+  ASSERT_EQ(test::run_flapsim(base + " --vary kinematics.rotation_phase=-0.2:0.1:0.1"), 0);
+  const auto table = test::read_sweep_table((dir / "out" / "sweep.csv").string());
+  ASSERT_EQ(table.rows.size(), 4u);
+  EXPECT_EQ(table.rows[0].at("message"), "");  // the new case ran
+  for (std::size_t i = 1; i < 4; ++i) EXPECT_EQ(table.rows[i].at("message"), "kept") << i;
+  // Only the new grid's folders: the earlier ones were moved, none left beside them.
+  EXPECT_EQ(sub_folders(dir / "out"), (std::set<std::string>{"00_-0.2", "01_-0.1", "02_0", "03_0.1"}));
+  EXPECT_EQ(test::read_text(dir / "out" / "02_0" / "summary.json"), summary_0);  // not run again
+}
+
+}  // namespace
