@@ -1,5 +1,7 @@
-# flapsim — the commands users drive. Every target installs missing Debian
-# packages first (tools/install_deps.sh), then configures and builds as needed.
+# flapsim — the commands users drive. The targets that build (all but help, clean,
+# plots and sweep-plots) install missing Debian packages first (tools/install_deps.sh),
+# then configure and build as needed.
+#   make build           install missing packages, configure and build build/flapsim
 #   make run [CASE=cases/x.toml]   a case (default: the full pipeline on the hawkmoth
 #                        wing: wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz)
 #                        into out/<case>/, with a preview PNG and a ParaView state
@@ -11,9 +13,12 @@
 #   make phase-study [CASE=...]   the rotation-phase sweeps (rigid and flexible wing)
 #   make plots           PDF and PNG figures of the phase study in out/plots
 #   make figures         docs/figures from a fresh phase study
+#   make sweep-plots SWEEP=DIR/sweep.csv   mean lift (and power) against each varied key
 #   make validate        reference-vs-computed table of the validation cases
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
 #   make fuzz            the loader fuzzer with many more mutants (FUZZ_MUTANTS per loader)
+#   make clean           remove build/ and build-asan/
+#   make help            this list
 # See README.md for the rest.
 
 BUILD      ?= build
@@ -28,7 +33,7 @@ MAKEFLAGS  += --no-print-directory
 all: build
 
 help:
-	@sed -n '1,17p' Makefile
+	@sed -n '1,22p' Makefile
 
 deps:
 	@tools/install_deps.sh
