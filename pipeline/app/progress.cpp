@@ -43,6 +43,17 @@ std::string ProgressLine::format(long step, long total, double time, std::string
 void ProgressLine::update(long step, double time, std::string_view extra) {
   step_ = step;
   time_ = time;
+  if (mode_ == Mode::final_only) {
+    // A log (a batch job's output) gets a whole line now and then: a run of hours
+    // otherwise showed nothing until its end.
+    extra_.assign(extra);
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_draw_ >= log_interval_) {
+      last_draw_ = now;
+      draw(format(step_, total_, time_, extra_) + wall_note(), true);
+    }
+    return;
+  }
   if (mode_ != Mode::live) {
     extra_.assign(extra);  // kept for the final line
     return;
@@ -62,10 +73,14 @@ void ProgressLine::finish(std::string_view extra) {
   finished_ = true;
   if (mode_ == Mode::quiet) return;
   if (!extra.empty()) extra_.assign(extra);
+  draw(format(step_, total_, time_, extra_) + wall_note(), true);
+}
+
+std::string ProgressLine::wall_note() const {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   char buf[48];
   std::snprintf(buf, sizeof(buf), "  (%.1f s wall)", wall);
-  draw(format(step_, total_, time_, extra_) + buf, true);
+  return buf;
 }
 
 void ProgressLine::draw(const std::string& line, bool final_line) {

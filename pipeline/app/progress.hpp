@@ -2,8 +2,9 @@
 /// \file progress.hpp
 /// \brief A one-line progress display on stderr for long runs:
 /// "step 120/300  t=0.0460 s  <extra>", redrawn in place (carriage return) at most
-/// about five times a second. When the stream is not a terminal only the final line
-/// is printed; FLAPSIM_QUIET=1 in the environment silences it entirely.
+/// about five times a second. When the stream is not a terminal (a log file, a batch
+/// job's output) a whole line is printed every 30 s of wall time and at the end;
+/// FLAPSIM_QUIET=1 in the environment silences it entirely.
 
 #include <chrono>
 #include <cstdio>
@@ -15,9 +16,9 @@ namespace flapsim::app {
 class ProgressLine {
  public:
   enum class Mode {
-    automatic,  ///< terminal -> live, otherwise final line only; FLAPSIM_QUIET=1 -> quiet
+    automatic,  ///< terminal -> live, otherwise final_only; FLAPSIM_QUIET=1 -> quiet
     live,       ///< redraw in place and print the final line
-    final_only, ///< print only the final line
+    final_only, ///< a line every log interval (30 s) of a long run, and the final line
     quiet       ///< print nothing
   };
 
@@ -41,11 +42,16 @@ class ProgressLine {
 
   Mode mode() const { return mode_; }
 
+  /// \brief Wall time between the lines of Mode::final_only (default 30 s, as the stage
+  /// lines of mesh/modes/reduce in a log: stage_monitor.hpp).
+  void set_log_interval(std::chrono::milliseconds interval) { log_interval_ = interval; }
+
   /// \brief The text of a line (no carriage return or newline): "step 120/300  t=0.0460 s  extra".
   static std::string format(long step, long total, double time, std::string_view extra);
 
  private:
   void draw(const std::string& line, bool final_line);
+  std::string wall_note() const;  ///< "  (12.3 s wall)"
   long total_;
   std::FILE* stream_;
   Mode mode_;
@@ -56,6 +62,7 @@ class ProgressLine {
   bool finished_ = false;
   std::chrono::steady_clock::time_point start_, last_draw_;
   bool drawn_ = false;
+  std::chrono::milliseconds log_interval_{std::chrono::seconds(30)};
 };
 
 }  // namespace flapsim::app

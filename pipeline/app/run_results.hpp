@@ -36,7 +36,7 @@ struct ResultDefinition {
 };
 
 /// The results of a run, in the order of summary.json. Results marked "(in air)" are set
-/// only for runs in air, "error" only for failed runs.
+/// only for runs in air, "error" only for failed and interrupted runs.
 inline constexpr auto kRunResults = [] {
   using K = ResultKind;
   return std::array{
@@ -75,8 +75,9 @@ inline constexpr auto kRunResults = [] {
                        "non-dimensional radius of gyration of the outline's area (in air)"},
       // How the run ended.
       ResultDefinition{"error", "", K::text, "", "",
-                       "the numerical failure that stopped the run (failed runs)"},
-      ResultDefinition{"status", "", K::text, "", "", "\"ok\", or \"failed\" (exit status 3)"},
+                       "what stopped the run: the numerical failure, the output error or the signal (failed and interrupted runs)"},
+      ResultDefinition{"status", "", K::text, "", "",
+                       "\"ok\"; \"failed\" (exit status 3, or 4 for an output error); \"interrupted\" (SIGINT or SIGTERM, exit status 130 or 143)"},
       ResultDefinition{"steps", "", K::integer, "", "", "time steps completed"},
       ResultDefinition{"time_s", "s", K::number, "%.6g", "", "simulated time reached"},
       // Loads: means over the last cycle (or what was run, if less), trapezoidal rule.
