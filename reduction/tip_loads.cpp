@@ -40,7 +40,21 @@ TipZone make_tip_zone(const Eigen::VectorXd& s, const Eigen::VectorXd& n, double
       zone.n_centroid /= static_cast<double>(zone.nodes.size());
       zone.n_min = n_lo;
       zone.n_max = n_hi;
-      return zone;
+      // Nodes on one line (a straight tip edge oblique to the axis: all of them spread in
+      // s and in n) cannot carry a bending moment and a torque independently: the load
+      // cases' 3 × 3 system is singular and the bending moment came out as no load at all
+      // (a forward-swept plate with --axis flexural: EI = inf at every station). The zone
+      // must have an area: the smaller principal variance of (s, n) at least 1e-6 of the
+      // larger (a band 1e-3 of its length wide).
+      double ss = 0.0, nn = 0.0, sn = 0.0;
+      for (int i : zone.nodes) {
+        const double ds = s[i] - zone.s_centroid, dn = n[i] - zone.n_centroid;
+        ss += ds * ds;
+        nn += dn * dn;
+        sn += ds * dn;
+      }
+      const double mean = 0.5 * (ss + nn), dev = std::sqrt(0.25 * (ss - nn) * (ss - nn) + sn * sn);
+      if (mean - dev > 1e-6 * (mean + dev)) return zone;
     }
     if (ell > extent)
       throw ReductionFailure("the wing has too few free FEM nodes to load at its tip (fewer than " +

@@ -27,7 +27,8 @@ struct TipZone {
 };
 
 /// \brief The nodes with s ≥ s_max − length (widened until it holds \p min_nodes
-/// nodes with at least two distinct s and two distinct n positions).
+/// nodes with at least two distinct s and two distinct n positions, not all on one line:
+/// the zone must carry a bending moment and a torque independently).
 /// \param s, n        axis coordinates of the nodes [m]
 /// \param length      zone length along the axis [m]
 /// \param excluded    nodes that must not carry load (clamped), may be empty
