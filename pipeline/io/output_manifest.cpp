@@ -1,5 +1,7 @@
 #include "pipeline/io/output_manifest.hpp"
 
+#include "pipeline/io/folder_lock.hpp"
+
 #include <toml++/toml.h>
 
 #include <fcntl.h>
@@ -113,10 +115,14 @@ void remove_outputs(const fs::path& dir, const std::vector<std::string>& pattern
       fs::remove(f, ec);
       if (ec) throw OutputError(f, "cannot remove the earlier output: " + ec.message());
     }
-    // A series' folder ("vtk/") goes too once empty.
-    const fs::path folder = dir / fs::path(pattern).parent_path();
+    // A series' folder ("vtk/") goes too once empty; never the output folder itself (for
+    // "history.csv" dir / "" is "dir/", which compared unequal to "dir": an empty output
+    // folder was removed and made again, losing its permissions and the folder's lock).
+    const fs::path sub = fs::path(pattern).parent_path();
+    if (sub.empty()) continue;
+    const fs::path folder = dir / sub;
     std::error_code ec;
-    if (folder != dir && fs::is_directory(folder, ec) && fs::is_empty(folder, ec)) fs::remove(folder, ec);
+    if (fs::is_directory(folder, ec) && fs::is_empty(folder, ec)) fs::remove(folder, ec);
   }
 }
 
@@ -222,6 +228,7 @@ void release_reserve(const fs::path& dir) {
 OutputFolderClaim::OutputFolderClaim(fs::path dir, std::string command)
     : dir_(std::move(dir)), command_(std::move(command)) {}
 
+// The folder's lock (lock_) is released after the body: the last record is made under it.
 OutputFolderClaim::~OutputFolderClaim() {
   const std::lock_guard<std::mutex> lock(mutex_);
   if (state_ != State::open) return;
@@ -236,6 +243,9 @@ OutputFolderClaim::~OutputFolderClaim() {
 
 void OutputFolderClaim::claim(bool force) {
   const std::lock_guard<std::mutex> lock(mutex_);
+  // Another command writing here now would have its files removed and mixed with ours.
+  prepare_output_directory(dir_);
+  if (!lock_) lock_ = std::make_unique<FolderLock>(dir_, command_);
   claim_output_folder(dir_, command_, force);
   make_reserve(dir_);
   state_ = State::open;

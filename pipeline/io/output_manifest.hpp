@@ -13,11 +13,14 @@
 /// live side by side in one folder. Format: docs/output_files.md, "The output folder".
 
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
 namespace flapsim::io {
+
+class FolderLock;
 
 /// The manifest's file name in an output folder.
 inline constexpr const char* kManifestName = "flapsim_outputs.toml";
@@ -52,7 +55,9 @@ class OutputFolderClaim {
   OutputFolderClaim(const OutputFolderClaim&) = delete;
   OutputFolderClaim& operator=(const OutputFolderClaim&) = delete;
 
-  /// claim_output_folder(dir, command, force).
+  /// claim_output_folder(dir, command, force), holding the folder's lock (folder_lock.hpp)
+  /// until the claim is destroyed.
+  /// \throws OutputError also if another flapsim command is writing into the folder
   void claim(bool force);
   /// record_command_status with "complete", "failed" or "interrupted"; ends the claim.
   /// Does nothing if the claim was already ended (by end_if_open from another thread).
@@ -74,6 +79,7 @@ class OutputFolderClaim {
   std::string command_;
   std::mutex mutex_;  // guards state_ and the manifest's writes
   State state_ = State::unclaimed;
+  std::unique_ptr<FolderLock> lock_;  // held from claim() on
 };
 
 }  // namespace flapsim::io

@@ -147,7 +147,7 @@ TEST(RunResults, SummaryReportAndSweepComeFromTheOneDefinition) {
             0);
   EXPECT_EQ(read_text(dir / "run.txt"),
             app::run_report(results) + "outputs in " + (dir / "cli").string() +
-                " (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd, run.pvsm)\n");
+                " (history.csv, summary.json)\n");  // vtk_every = 0: no series
   EXPECT_NE(app::run_report(results).find("mean lift (last cycle) "), std::string::npos);
 
   // 3. `flapsim sweep`: sweep.csv = the varied key, the results with a sweep label, then
@@ -201,6 +201,24 @@ TEST(RunResults, EveryResultAndHistoryColumnIsDocumented) {
   for (const app::HistoryColumn& c : app::history_columns())
     EXPECT_NE(doc.find("| `" + std::string(c.name) + "` |"), std::string::npos)
         << "docs/fsi.md has no row for history.csv's " << c.name;
+}
+
+// The last line names the files the run wrote. Before: "(history.csv, summary.json, wing.pvd,
+// wake.pvd, chain.pvd, run.pvsm)" also for a run with vtk_every = 0, which writes the first two.
+TEST(RunResults, TheLastLineNamesOnlyTheFilesWritten) {
+  flapsim::test::ScratchDir dir("run_outputs_line");
+  std::ofstream(dir / "case.toml") << "name = \"plate\"\nwing = \"" << FLAPSIM_SOURCE_DIR
+                                   << "/wings/flat_plate.toml\"\n[kinematics]\nfrequency_hz = 26.1\n"
+                                      "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
+                                      "[structure]\nkind = \"rigid\"\n[numerics]\nsteps_per_cycle = 12\ncycles = 1\n"
+                                      "chordwise_panels = 2\nspanwise_panels = 3\n[output]\nvtk_every = 0\n";
+  ASSERT_EQ(flapsim::test::run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string(),
+                                       dir / "run.txt"),
+            0);
+  const std::string text = flapsim::test::read_text(dir / "run.txt");
+  EXPECT_NE(text.find("outputs in " + (dir / "out").string() + " (history.csv, summary.json)\n"), std::string::npos)
+      << text;
+  EXPECT_FALSE(fs::exists(dir / "out" / "wing.pvd"));
 }
 
 }  // namespace

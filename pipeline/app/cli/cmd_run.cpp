@@ -81,8 +81,12 @@ void run_command(const RunArgs& a) {
     std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   if (!a.quiet) {
     std::fputs(app::run_report(results).c_str(), stdout);
-    std::printf("outputs in %s (history.csv, summary.json, wing.pvd, wake.pvd, chain.pvd, run.pvsm)\n",
-                options.output_dir.string().c_str());
+    // The files this run wrote (with vtk_every = 0 no series and no ParaView state; in
+    // vacuum no wake): the line used to name all six whatever was written.
+    std::string written;
+    for (const char* f : {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "run.pvsm"})
+      if (std::filesystem::exists(options.output_dir / f)) written += (written.empty() ? "" : ", ") + std::string(f);
+    std::printf("outputs in %s (%s)\n", options.output_dir.string().c_str(), written.c_str());
   }
 }
 

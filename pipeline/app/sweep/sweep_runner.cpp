@@ -23,6 +23,7 @@
 #include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/folder_lock.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::sweep {
@@ -92,6 +93,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
   std::vector<ResolvedCase> resolved;
   std::vector<std::size_t> todo;
   std::vector<SweepRow>& rows = report.rows;
+  std::optional<io::FolderLock> folder_lock;  // rank 0: no other sweep writes into DIR meanwhile
   if (report.root) {
     try {
       resolved.reserve(n);
@@ -100,7 +102,13 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       share_check(world, false);
       throw;
     }
-    io::ensure_directory(options.output_dir);
+    try {
+      io::ensure_directory(options.output_dir);
+      folder_lock.emplace(options.output_dir, "sweep");
+    } catch (...) {
+      share_check(world, false);
+      throw;
+    }
     rows.resize(n);
     EarlierCases earlier(options.output_dir);  // completed cases under another index (a grid extended)
     for (std::size_t i = 0; i < n; ++i) {
