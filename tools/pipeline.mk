@@ -50,10 +50,14 @@ run: build $(RUN_CHAIN)
 	  --spring-scale $(PIPELINE_SPRINGS) -o $(RUN_OUT) || exit $$?; \
 	end=$$(date +%s.%N); \
 	echo "FSI run: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"; \
-	xvfb-run -a $(PIPELINE_PYTHON) tools/render_run.py $(RUN_OUT) --phases 0.25 \
-	  -o $(RUN_OUT)/preview.png > /dev/null || exit $$?; \
-	echo "preview: $(RUN_OUT)/preview.png (the wing at mid-downstroke of the last wingbeat)"; \
-	echo "ParaView: cd $(RUN_OUT) && paraview --state=run.pvsm"; \
+	if [ -f $(RUN_OUT)/chain.pvd ]; then \
+	  xvfb-run -a $(PIPELINE_PYTHON) tools/render_run.py $(RUN_OUT) --phases 0.25 \
+	    -o $(RUN_OUT)/preview.png > /dev/null || exit $$?; \
+	  echo "preview: $(RUN_OUT)/preview.png (the wing at mid-downstroke of the last wingbeat)"; \
+	  echo "ParaView: cd $(RUN_OUT) && paraview --state=run.pvsm"; \
+	else \
+	  echo "preview and ParaView state: none (the case writes no frames: [output] vtk_every = 0; set it to 1 or more for pictures)"; \
+	fi; \
 	$(if $(RUN_CHAIN),echo "          (the FEM and the chain: $(MODEL_OUT)/fem.vtu, reduction.vtm)")
 
 run-pipeline: run

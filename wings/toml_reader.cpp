@@ -7,6 +7,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -152,7 +154,7 @@ TomlTable parse_toml_file(const std::string& path) {
                                         " bytes: not a wing, case or chain file");
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "", "cannot open the file for reading");
+  if (!in) throw InputError(path, 0, "", std::string("cannot open the file for reading: ") + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path, 0, "", "cannot read the file");

@@ -1,6 +1,10 @@
 #include "pipeline/io/case_file.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <limits>
 #include <cmath>
 #include <filesystem>
@@ -25,6 +29,10 @@ std::string existing_file(const TomlTable& t, std::string_view key) {
     t.fail(key, "file not found: " + path + " (paths are relative to the case file's folder)");
   if (!std::filesystem::is_regular_file(path, ec))
     t.fail(key, "not a regular file (a device, FIFO or folder): " + path);
+  // Readable by this user (a file another user made, mode 600, was reported later as
+  // "wing.toml: cannot open the file for reading": no line of the case, no cause).
+  if (::access(path.c_str(), R_OK) != 0)
+    t.fail(key, "cannot read " + path + ": " + std::strerror(errno));
   return path;
 }
 

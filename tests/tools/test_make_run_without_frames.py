@@ -1,0 +1,33 @@
+#!/usr/bin/python3
+"""ctest tools.MakeRun.ACaseWithoutFramesEndsWithoutAPreview: `make run CASE=x.toml` for a case
+whose [output] vtk_every = 0 (a user's case, written for sweeps) runs it and says that there is
+no preview. Before: the run completed, then tools/render_run.py found no chain.pvd and make
+stopped with Error 2 ("render_run: error: ...: no chain.pvd"), a successful run reported as a
+failure."""
+import os
+import subprocess
+import sys
+
+import tool_test_args
+
+a, work = tool_test_args.arguments("source", "build", "work")
+out = os.path.join(work, "out")
+case = os.path.join(work, "noframes.toml")
+with open(case, "w") as f:
+    f.write(f'name = "noframes"\nwing = "{a.source}/wings/flat_plate.toml"\n[kinematics]\nfrequency_hz = 26.1\n'
+            'sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n'
+            '[structure]\nkind = "rigid"\n[numerics]\nsteps_per_cycle = 12\ncycles = 1\nchordwise_panels = 2\n'
+            'spanwise_panels = 3\n[output]\nvtk_every = 0\n')
+r = subprocess.run(["make", "-C", a.source, "--no-print-directory", f"BUILD={a.build}", f"OUT={out}", "run",
+                    f"CASE={case}"], capture_output=True, text=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
+print(r.stdout[-3000:], r.stderr[-3000:])
+failures = []
+if r.returncode != 0:
+    failures.append(f"make run exited {r.returncode}")
+if not os.path.isfile(os.path.join(out, "noframes", "summary.json")):
+    failures.append("no summary.json in out/noframes")
+if "preview and ParaView state: none" not in r.stdout:
+    failures.append("make run does not say that there is no preview")
+for f in failures:
+    print("FAIL:", f)
+sys.exit(1 if failures else 0)
