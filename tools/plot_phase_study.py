@@ -16,6 +16,7 @@ Usage: plot_phase_study.py PHASE_STUDY_DIR OUTPUT_DIR [--prefix P]   (Debian's p
 """
 import argparse
 import csv
+import json
 import os
 
 import matplotlib
@@ -47,7 +48,14 @@ def read_history(path):
     return data
 
 
-def last_cycle(h, frequency=26.1):
+def case_frequency(folder):
+    """The case's flapping frequency [Hz] from its summary.json (the study's cases run at
+    26.1 Hz; a study of cases edited to another frequency cut the wrong wingbeat)."""
+    with open(os.path.join(folder, "summary.json")) as f:
+        return float(json.load(f)["frequency_hz"])
+
+
+def last_cycle(h, frequency):
     t = h["t_s"]
     period = 1.0 / frequency
     keep = t >= t[-1] - period - 1e-12
@@ -110,7 +118,9 @@ def main():
     ax.axvspan(5, 7, color="C1", alpha=0.15, label="paper: flexible maximum (δψ = +5 … 7 %)")
     ax.set_xlabel("rotation phase δψ [% of the period]")
     ax.set_ylabel("mean lift over the last wingbeat [mN]")
-    ax.set_title("Mean lift against rotation phase (hawkmoth, 26.1 Hz)")
+    some = [(sub, r) for sub, rows in (("rigid", rigid), ("flexible", flexible)) for r in rows if r["status"] == "ok"]
+    hz = case_frequency(case_dir(os.path.join(study, some[0][0]), some[0][1])) if some else float("nan")
+    ax.set_title("Mean lift against rotation phase (hawkmoth, %.3g Hz)" % hz)
     ax.grid(alpha=0.3)
     legend_below(ax, ncol=2)
     save(fig, out, prefix, "fig12a_mean_lift_vs_phase", written)
@@ -125,8 +135,9 @@ def main():
             r = pick(rows, v)
             if r is None:
                 continue
-            h = read_history(os.path.join(case_dir(os.path.join(study, sub), r), "history.csv"))
-            keep, s = last_cycle(h)
+            folder = case_dir(os.path.join(study, sub), r)
+            h = read_history(os.path.join(folder, "history.csv"))
+            keep, s = last_cycle(h, case_frequency(folder))
             ax.plot(s, 1e3 * h["lift_N"][keep], label="δψ = %+.0f %%" % (100 * v), zorder=3)
         ax.set_xlabel(T_LABEL + ", shown for δψ = 0")
         ax.set_ylabel("lift [mN]")
@@ -142,8 +153,9 @@ def main():
         r = pick(flexible, v)
         if r is None:
             continue
-        h = read_history(os.path.join(study, "flexible", r["folder"], "history.csv"))
-        keep, s = last_cycle(h)
+        folder = os.path.join(study, "flexible", r["folder"])
+        h = read_history(os.path.join(folder, "history.csv"))
+        keep, s = last_cycle(h, case_frequency(folder))
         # Base and tip drawn bold on top; the outer body thin and beneath, so it hides nothing.
         for col, label, style, lw, z in (
                 ("phi_base_deg", r"$\varphi_\mathrm{base}$", "C0-", 2.0, 3),

@@ -108,6 +108,18 @@ def frame_at(series, frequency, phase):
     return min(series, key=lambda e: abs(e[0] * frequency - target))
 
 
+def frame_title(t, frequency, phase, lift):
+    """The picture's title: t/T, the phase of the frame shown (and the phase asked for when
+    no frame lies there: with vtk_every 4 of 40 steps per cycle, 0.25 shows the frame at
+    0.30, which the title called "phase 0.25"), t and the lift."""
+    s = t * frequency
+    shown = max(0.0, s - math.floor(s + 1e-9))
+    where = f"phase {shown:.2f}"
+    if abs(shown - phase) > 5e-3 and abs(abs(shown - phase) - 1.0) > 5e-3:
+        where += f", the frame nearest to {phase:.2f}"
+    return f"t/T = {s:.3f} ({where})   t = {t * 1e3:.2f} ms   lift = {lift * 1e3:.4g} mN"
+
+
 def render(run, time_index, phase, args, output):
     wing_series, wake_series, chain_series, frequency = run
     t, chain_file = chain_series[time_index]
@@ -179,7 +191,7 @@ def render(run, time_index, phase, args, output):
     renderer.ResetCameraClippingRange()
 
     text = vtk.vtkTextActor()
-    text.SetInput(f"t/T = {t * frequency:.3f} (phase {phase:.2f})   t = {t * 1e3:.2f} ms   lift = {lift * 1e3:.4g} mN")
+    text.SetInput(frame_title(t, frequency, phase, lift))
     text.GetTextProperty().SetColor(0, 0, 0)
     text.GetTextProperty().SetFontSize(max(12, args.size[1] // 40))
     text.SetDisplayPosition(10, 10)

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <thread>
 
@@ -117,6 +118,11 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       if (!options.force) {
         kept = kept_results(options.output_dir / rows[i].folder / "summary.json", resolved[i].inputs_hash);
         if (!kept) kept = earlier.adopt(resolved[i].inputs_hash, rows[i].folder);
+        // A run asked for its ParaView series (--vtk-every) keeps a case only if the earlier
+        // run wrote them (every run with frames writes chain.pvd): a sweep run again with
+        // --vtk-every to get pictures kept every case and wrote none.
+        if (kept && options.vtk_every > 0 && !std::filesystem::exists(options.output_dir / rows[i].folder / "chain.pvd"))
+          kept.reset();
       }
       if (kept) {
         rows[i].done = true;
