@@ -216,7 +216,12 @@ struct ReportLine {
 
 inline constexpr std::array kRunReport = {
     ReportLine{"case {case}: {structure}"},
-    ReportLine{"mean lift (last cycle) {mean_lift_N}, mean CL {mean_CL}"},
+    // In vacuum there is no lift, and no speed to make a coefficient of: "mean lift 0 N,
+    // mean CL 0.0000" read as a result.
+    ReportLine{"mean lift (last cycle) {mean_lift_N}, mean CL {mean_CL}",
+               [](const RunResults& r) { return r.has("mean_power_W"); }},
+    ReportLine{"in vacuum (air = \"none\"): no aerodynamic loads, no lift",
+               [](const RunResults& r) { return !r.has("mean_power_W"); }},
     ReportLine{"mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W}, lift/power "
                "{lift_per_power_N_W}; coefficients on {reference_speed_m_s} ({reference_kind})",
                [](const RunResults& r) { return r.has("mean_power_W"); }},

@@ -221,4 +221,17 @@ TEST(RunResults, TheLastLineNamesOnlyTheFilesWritten) {
   EXPECT_FALSE(fs::exists(dir / "out" / "wing.pvd"));
 }
 
+// A run in vacuum has no lift and no coefficient. Before: cases/three_body.toml (air = "none")
+// reported "mean lift (last cycle) 0 N, mean CL 0.0000", as if the wing had made none.
+TEST(RunResults, AVacuumRunReportsNoLiftCoefficient) {
+  flapsim::test::ScratchDir dir("run_vacuum_report");
+  ASSERT_EQ(flapsim::test::run_flapsim("run " + std::string(FLAPSIM_SOURCE_DIR) + "/cases/three_body.toml -o " +
+                                           (dir / "out").string(),
+                                       dir / "run.txt"),
+            0);
+  const std::string text = flapsim::test::read_text(dir / "run.txt");
+  EXPECT_NE(text.find("in vacuum (air = \"none\"): no aerodynamic loads, no lift\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("mean CL"), std::string::npos) << text;
+}
+
 }  // namespace
