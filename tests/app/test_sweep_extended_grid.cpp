@@ -45,3 +45,27 @@ TEST(SweepExtendedGrid, CasesOfTheEarlierGridAreKeptUnderTheirNewIndex) {
 }
 
 }  // namespace
+
+namespace {
+
+// Two rows of a case table with the same values have the same inputs hash: the second
+// case, its folder deleted, must run again into its own folder, not take the first case's
+// folder away (which the first row's "kept" names).
+TEST(SweepExtendedGrid, ACaseNeverTakesTheFolderOfAnotherCaseOfTheSameSweep) {
+  const test::ScratchDir dir("sweep_same_rows");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(8);
+  std::ofstream(dir / "cases.csv") << "kinematics.rotation_phase\n0.05\n0.05\n";
+  const std::string args = "sweep " + (dir / "case.toml").string() + " --cases " + (dir / "cases.csv").string() +
+                           " -j 1 -q -o " + (dir / "out").string();
+  ASSERT_EQ(test::run_flapsim(args), 0);
+  EXPECT_EQ(sub_folders(dir / "out"), (std::set<std::string>{"00_0.05", "01_0.05"}));
+  fs::remove_all(dir / "out" / "01_0.05");
+  ASSERT_EQ(test::run_flapsim(args), 0);
+  EXPECT_EQ(sub_folders(dir / "out"), (std::set<std::string>{"00_0.05", "01_0.05"}));
+  const auto table = test::read_sweep_table((dir / "out" / "sweep.csv").string());
+  ASSERT_EQ(table.rows.size(), 2u);
+  EXPECT_EQ(table.rows[0].at("message"), "kept");
+  EXPECT_EQ(table.rows[1].at("message"), "");  // ran again
+}
+
+}  // namespace

@@ -13,7 +13,7 @@ void EarlierCases::scan() {
   scanned_ = true;
   std::error_code ec;
   for (fs::directory_iterator it(dir_, ec), end; !ec && it != end; it.increment(ec)) {
-    if (!it->is_directory(ec)) continue;
+    if (!it->is_directory(ec) || own_.count(it->path().filename().string())) continue;
     const auto results = read_summary_results(it->path() / "summary.json");
     if (!results || results->text("status") != "ok") continue;
     folder_of_hash_.emplace(results->text("inputs_hash"), it->path().filename().string());

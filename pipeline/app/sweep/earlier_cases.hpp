@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "pipeline/app/run_results.hpp"
@@ -18,8 +19,11 @@ namespace flapsim::sweep {
 
 class EarlierCases {
 public:
-  /// Reads the summary.json of every sub-folder of \p output_dir (once, when first asked).
-  explicit EarlierCases(std::filesystem::path output_dir) : dir_(std::move(output_dir)) {}
+  /// Reads the summary.json of every sub-folder of \p output_dir (once, when first asked)
+  /// except \p own_folders, the folders of this sweep's own cases: those are never moved
+  /// (two rows of a case table with the same values share a hash).
+  EarlierCases(std::filesystem::path output_dir, std::set<std::string> own_folders)
+      : dir_(std::move(output_dir)), own_(std::move(own_folders)) {}
 
   /// \brief The results of a completed earlier case with \p inputs_hash found in another
   /// sub-folder, after moving that folder to \p folder (a sub-folder name); std::nullopt when
@@ -30,6 +34,7 @@ public:
 private:
   void scan();
   std::filesystem::path dir_;
+  std::set<std::string> own_;
   bool scanned_ = false;
   std::map<std::string, std::string> folder_of_hash_;  ///< inputs hash → sub-folder name
 };

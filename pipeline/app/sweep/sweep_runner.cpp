@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <thread>
 
 #include "pipeline/app/flexibility_warnings.hpp"
@@ -110,7 +111,9 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       throw;
     }
     rows.resize(n);
-    EarlierCases earlier(options.output_dir);  // completed cases under another index (a grid extended)
+    std::set<std::string> own_folders;
+    for (std::size_t i = 0; i < n; ++i) own_folders.insert(case_folder(i, n, plan.points[i]));
+    EarlierCases earlier(options.output_dir, std::move(own_folders));  // completed cases under another index (a grid extended)
     for (std::size_t i = 0; i < n; ++i) {
       rows[i].point = plan.points[i];
       rows[i].folder = case_folder(i, n, plan.points[i]);
