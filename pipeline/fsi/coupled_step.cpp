@@ -1,6 +1,7 @@
 #include "pipeline/fsi/coupled_step.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -24,6 +25,14 @@ FsiData::FsiData(const FsiModel& model)
 }
 
 namespace {
+
+// A number of a message in 3 significant digits ("1e-06", "2.35e-07"): std::to_string's six
+// decimals printed a change of 2e-7 rad and a tolerance of 1e-9 alike as 0.000000.
+std::string significant(double v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3g", v);
+  return text;
+}
 
 void external_loads(const FsiModel& model, double t, mbd::Loads& loads) {
   loads.clear();
@@ -154,9 +163,8 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
       data.last_change = delta;
       if (!converged)
         throw NumericalFailure("strong coupling did not converge in " + std::to_string(k) +
-                                   " sub-iterations (structure change " + std::to_string(delta) +
-                                   " rad, tolerance " + std::to_string(model.coupling.tolerance) +
-                                   ")",
+                                   " sub-iterations (structure change " + significant(delta) +
+                                   " rad, tolerance " + significant(model.coupling.tolerance) + ")",
                                step, t1);
       // 4. accept the chain's answer; data.chain holds its kinematics (mbd::advance).
       data.state = data.trial;

@@ -110,3 +110,22 @@ TEST(CliMessages, ChainAndSpringOptionsOfARigidCaseAreSaidToBeUnused) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliMessages, ACouplingThatDoesNotConvergeShowsItsChangeAndTolerance) {
+  // One sub-iteration per step never converges (the first iterate always moves the
+  // structure; SweepRuns.NumericalFailureIsRecordedAndTheOthersGoOn). Before, the message
+  // wrote both numbers with six decimals: "structure change 0.000001 rad, tolerance
+  // 0.000001" for the 25 um MAV film wing, "tolerance 0.000000" for a tolerance of 1e-9.
+  ScratchDir dir("message_coupling");
+  std::ofstream(dir / "case.toml")
+      << small_plate_case("flexible", 1, 0, "max_coupling_iterations = 1\ncoupling_tolerance = 1e-9\n");
+  const Result r = run_capturing_stderr(dir, "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(r.err.find("did not converge in 1 sub-iterations"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("tolerance 1e-09)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("0.000000"), std::string::npos) << r.err;
+}
+
+}  // namespace
