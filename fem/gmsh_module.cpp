@@ -29,13 +29,20 @@ std::mutex& gmsh_mutex() {
 void ensure_gmsh_initialized() {
   static bool done = false;
   if (done) return;
-  // gmsh's initialisation sets OpenMP's thread count (its General.NumThreads); keep the
-  // one the command chose (--threads, docs/performance.md).
+  // gmsh's initialisation and its thread options set OpenMP's thread count; keep the one
+  // the command chose (--threads, docs/performance.md) for the FEM's own loops.
   const int threads = omp_get_max_threads();
   gmsh::initialize(0, nullptr, false);
-  omp_set_num_threads(threads);
   gmsh::option::setNumber("General.Terminal", std::getenv("FLAPSIM_GMSH_VERBOSE") ? 1 : 0);
   gmsh::option::setNumber("General.Verbosity", 1);
+  // gmsh meshes on one thread: on several, the surfaces the veins cut the membrane into
+  // were meshed in an order that changed from run to run, and so did the mesh (node
+  // positions, hence every mode; test fem.WingMeshReproducible.*).
+  gmsh::option::setNumber("General.NumThreads", 1);
+  gmsh::option::setNumber("Mesh.MaxNumThreads1D", 1);
+  gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
+  gmsh::option::setNumber("Mesh.MaxNumThreads3D", 1);
+  omp_set_num_threads(threads);
   std::atexit([] { gmsh::finalize(); });
   done = true;
 }
