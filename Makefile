@@ -60,8 +60,12 @@ FUZZ_MUTANTS ?= 25000
 fuzz: build
 	FLAPSIM_FUZZ_MUTANTS=$(FUZZ_MUTANTS) $(BUILD)/tests/io/test_io --gtest_filter='FuzzLoaders.*'
 
+# Every benchmark program (not CMake's files beside them); the first that fails stops it.
 bench: build
-	@for b in $(BUILD)/bench/*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
+	@for b in $(BUILD)/bench/bench_*; do \
+	  test -f "$$b" -a -x "$$b" || continue; \
+	  echo "== $$b"; "$$b" --benchmark_min_time=0.2 || exit $$?; \
+	done
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD)
