@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace flapsim::reduction {
 
@@ -12,9 +13,15 @@ double modal_assurance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 
 namespace {
 
-double rel(double chain, double fem) { return fem != 0.0 ? chain / fem - 1.0 : 0.0; }
+double rel(double chain, double fem) { return relative_error(chain, fem); }
 
 }  // namespace
+
+double relative_error(double chain, double fem) {
+  // Against a zero reference there is no relative error: it was 0 ("+0.00 %", a perfect
+  // match) when a load case had failed to load the FEM (tip_loads.cpp).
+  return fem != 0.0 ? chain / fem - 1.0 : std::numeric_limits<double>::quiet_NaN();
+}
 
 ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
                                           const LumpedChain& lumped, const fem::ModalResult& modes,

@@ -50,6 +50,10 @@ struct ChainFemComparison {
   std::vector<std::string> chain_kinds;  ///< "bending" / "torsion" by spring energy
 };
 
+/// \brief chain / fem − 1; NaN when \p fem is 0 (no relative error against a zero
+/// reference: report.md shows "n/a", summary.json null).
+double relative_error(double chain, double fem);
+
 /// \brief Compares the chain with the FEM.
 /// \param analysis  the clamped FEM with its load cases
 /// \param lumped    the chain lumped from it

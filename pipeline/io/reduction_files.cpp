@@ -1,5 +1,6 @@
 #include "pipeline/io/reduction_files.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 #include <utility>
@@ -121,6 +122,7 @@ void write_reduction_vtk(const fs::path& dir, const reduction::BeamProperties& b
 }
 
 std::string format_percent(double x) {
+  if (!std::isfinite(x)) return "n/a";
   char buf[32];
   std::snprintf(buf, sizeof buf, "%+.2f %%", 100.0 * x);
   return buf;
