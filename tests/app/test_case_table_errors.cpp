@@ -21,21 +21,13 @@ using namespace flapsim::test;
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string err;
-};
-
 // `flapsim sweep CASE --cases TABLE -o DIR`: the exit status and stderr.
-Result sweep_with_table(const ScratchDir& dir, const std::string& table_text) {
+FlapsimOutcome sweep_with_table(const ScratchDir& dir, const std::string& table_text) {
   std::ofstream(dir / "case.toml") << small_plate_case("rigid", 1, 0);
   std::ofstream(dir / "table.csv") << table_text;
-  const auto err = dir / "stderr.txt";
-  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' sweep '" +
-                          (dir / "case.toml").string() + "' --cases '" + (dir / "table.csv").string() +
-                          "' -o '" + (dir / "out").string() + "' > /dev/null 2> '" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(err)};
+  return run_flapsim_capturing_stderr(dir / "stderr.txt", "sweep '" + (dir / "case.toml").string() + "' --cases '" +
+                                                              (dir / "table.csv").string() + "' -o '" +
+                                                              (dir / "out").string() + "'");
 }
 
 // The message's location: "flapsim: error: <dir>/table.csv:LINE: key 'KEY': ".
@@ -46,7 +38,7 @@ std::string located(const ScratchDir& dir, int line, const std::string& key) {
 TEST(CaseTableErrors, ATypoInTheHeaderNamesTheTablesHeaderLineAndTheKey) {
   ScratchDir dir("table_typo");
   // A comment and a blank line first: the header is line 3.
-  const Result r = sweep_with_table(dir, "# rotation phases\n\nkinematics.rotaton_phase,air.density\n-0.1,1.2\n");
+  const FlapsimOutcome r = sweep_with_table(dir, "# rotation phases\n\nkinematics.rotaton_phase,air.density\n-0.1,1.2\n");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_EQ(r.err.rfind(located(dir, 3, "kinematics.rotaton_phase") + "unknown key", 0), 0u) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "nothing written";
@@ -54,7 +46,7 @@ TEST(CaseTableErrors, ATypoInTheHeaderNamesTheTablesHeaderLineAndTheKey) {
 
 TEST(CaseTableErrors, ATypoInATablesNameOrAWingKeyIsTheHeadersToo) {
   ScratchDir dir("table_typo_table");
-  Result r = sweep_with_table(dir, "kinematic.frequency_hz\n20\n");
+  FlapsimOutcome r = sweep_with_table(dir, "kinematic.frequency_hz\n20\n");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_EQ(r.err.rfind(located(dir, 1, "kinematic.frequency_hz") + "unknown key", 0), 0u) << r.err;
   r = sweep_with_table(dir, "kinematics.frequency_hz,wing.membrane.thicknes\n20,0.2\n");
@@ -66,7 +58,7 @@ TEST(CaseTableErrors, ATypoInATablesNameOrAWingKeyIsTheHeadersToo) {
 TEST(CaseTableErrors, ABadValueNamesItsRowsLine) {
   ScratchDir dir("table_value");
   // Row 3 (line 4, after a blank line) has a negative frequency: the case file's bound (0, 1e6].
-  Result r = sweep_with_table(dir, "kinematics.frequency_hz,wing.membrane.thickness\n20,0.2\n\n-5,0.2\n");
+  FlapsimOutcome r = sweep_with_table(dir, "kinematics.frequency_hz,wing.membrane.thickness\n20,0.2\n\n-5,0.2\n");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_EQ(r.err.rfind(located(dir, 4, "kinematics.frequency_hz") + "value -5 out of range", 0), 0u) << r.err;
   // A wing key's value: membrane.thickness must be > 0 (docs/wing_file.md).
@@ -91,7 +83,7 @@ TEST(CaseTableErrors, AByteOrderMarkIsSkippedAndSemicolonsAreNamed) {
   EXPECT_EQ(table.keys[0], "kinematics.rotation_phase");
   ASSERT_EQ(table.points.size(), 1u);
   EXPECT_EQ(table.points[0][1].value, 1.2);
-  const Result r = sweep_with_table(dir, "kinematics.rotation_phase;air.density\n-0,1;1,2\n");
+  const FlapsimOutcome r = sweep_with_table(dir, "kinematics.rotation_phase;air.density\n-0,1;1,2\n");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find((dir / "table.csv").string() + ":1: the header \"kinematics.rotation_phase;air.density\" is "
                                                        "separated by ';'"),

@@ -20,17 +20,9 @@ using namespace flapsim::test;
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string err;
-};
-
-Result flapsim_with_stderr(const ScratchDir& dir, const std::string& args) {
-  const auto err = dir / "stderr.txt";
-  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' " + args +
-                          " > /dev/null 2> '" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(err)};
+// `flapsim ARGS`, its exit status and stderr (tests/common/run_flapsim.hpp).
+FlapsimOutcome flapsim_with_stderr(const ScratchDir& dir, const std::string& args) {
+  return run_flapsim_capturing_stderr(dir / "stderr.txt", args);
 }
 
 TEST(FolderLock, ACommandFindingTheFolderInUseStopsWithStatus4WritingNothing) {
@@ -43,7 +35,7 @@ TEST(FolderLock, ACommandFindingTheFolderInUseStopsWithStatus4WritingNothing) {
     // This process stands for the command under way (the lock a run or sweep holds).
     const flapsim::io::FolderLock other(out, "run");
     ASSERT_TRUE(other.held());
-    Result r = flapsim_with_stderr(dir, "run " + (dir / "case.toml").string() + " -o " + out.string());
+    FlapsimOutcome r = flapsim_with_stderr(dir, "run " + (dir / "case.toml").string() + " -o " + out.string());
     EXPECT_EQ(r.status, 4) << r.err;
     EXPECT_NE(r.err.find(in_use), std::string::npos) << r.err;
     r = flapsim_with_stderr(dir, "sweep " + (dir / "case.toml").string() +

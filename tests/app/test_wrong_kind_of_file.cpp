@@ -17,17 +17,9 @@ using namespace flapsim::test;
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string err;
-};
-
-Result flapsim_with_stderr(const ScratchDir& dir, const std::string& args) {
-  const auto err = dir / "stderr.txt";
-  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' " + args +
-                          " > /dev/null 2> '" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(err)};
+// `flapsim ARGS`, its exit status and stderr (tests/common/run_flapsim.hpp).
+FlapsimOutcome flapsim_with_stderr(const ScratchDir& dir, const std::string& args) {
+  return run_flapsim_capturing_stderr(dir / "stderr.txt", args);
 }
 
 TEST(WrongKindOfFile, EachLoaderNamesTheKindItWasGiven) {
@@ -50,7 +42,7 @@ TEST(WrongKindOfFile, EachLoaderNamesTheKindItWasGiven) {
       {"check " + chain, "a chain file (it has [[bodies]]): check reads wing and case files"},
   };
   for (const Expected& e : expected) {
-    const Result r = flapsim_with_stderr(dir, e.args);
+    const FlapsimOutcome r = flapsim_with_stderr(dir, e.args);
     EXPECT_EQ(r.status, 2) << e.args << "\n" << r.err;
     EXPECT_NE(r.err.find(e.message), std::string::npos) << e.args << "\n" << r.err;
     EXPECT_EQ(r.err.find("unknown key"), std::string::npos) << e.args << "\n" << r.err;

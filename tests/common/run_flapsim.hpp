@@ -23,6 +23,23 @@ inline int run_flapsim(const std::string& args, const std::filesystem::path& std
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+/// The exit status of a flapsim command (-1 if it did not exit normally) and its stderr.
+struct FlapsimOutcome {
+  int status = -1;
+  std::string err;
+};
+
+/// Runs `flapsim ARGS` as run_flapsim does, its stderr written to \p err_file and returned.
+inline FlapsimOutcome run_flapsim_capturing_stderr(const std::filesystem::path& err_file, const std::string& args) {
+  const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' " + args +
+                          " > /dev/null 2> '" + err_file.string() + "'";
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(err_file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
 /// Runs `PREFIX flapsim ARGS` in /bin/sh (e.g. PREFIX "ulimit -f 8; exec"); as run_flapsim.
 inline int run_flapsim_in_shell(const std::string& prefix, const std::string& args) {
   const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1; export FLAPSIM_QUIET OMP_NUM_THREADS; " + prefix +
