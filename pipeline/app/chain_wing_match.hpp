@@ -17,8 +17,11 @@ namespace flapsim::app {
 inline constexpr double kChainWingMismatch = 0.05;
 
 /// \brief "" or the warning for a chain read from a file whose total mass or length
-/// (root offset plus the bodies) differs from the case's wing (its estimated mass, its
-/// span R) by more than kChainWingMismatch; names both numbers of each.
+/// (root offset plus the bodies) differs from the case's wing (its estimated mass; its
+/// reach along the chain's axis: the span R for an axis along the wing frame's y, the
+/// outline's farthest point along a swept axis) by more than kChainWingMismatch; names both
+/// numbers of each. (Before: always the span, so a wing's own chain along a swept axis was
+/// warned, 34.6 mm against a 32 mm span.)
 std::string chain_wing_mismatch_warning(const FsiSetup& setup);
 
 }  // namespace flapsim::app

@@ -65,4 +65,35 @@ TEST(ChainWingMatch, CheckTakesTheChainRunWouldUse) {
   EXPECT_EQ(check(kSourceDir + "/wings/hawkmoth.toml").first, 1);
 }
 
+// A chain along a swept axis is compared with the wing's reach along that axis, not with
+// its span. Before: a swept wing's own chain (reduce runs the axis to the outline's farthest
+// point along it: 34.6 mm for a 32 mm span, a 5-point wing swept back by 31°) was warned as
+// "another wing's". Here: a plate swept back by 30° whose tip edge is square to its
+// leading edge, (0, 0), (−20, 34.641), (−28.660, 29.641), (−10, 0) mm: along the axis
+// (−sin 30°, cos 30°) its leading- and trailing-edge tips both lie 40.0 mm from the pivot,
+// its span (largest y) is 34.64 mm, 13 % short of the chain's 40 mm; area (shoelace)
+// 348.2 mm², 0.227 mm PET at 1390 kg/m³: 109.9 mg against the chain's 110 mg.
+TEST(ChainWingMatch, AChainAlongASweptAxisIsComparedWithTheWingsReachAlongIt) {
+  ScratchDir dir("chain_wing_match_swept");
+  std::ofstream(dir / "swept.toml")
+      << "name = \"swept\"\nlength_unit = \"mm\"\n[planform]\n"
+         "outline = [[0.0, 0.0], [-20.0, 34.641], [-28.660, 29.641], [-10.0, 0.0]]\nclamp_y = 0.0\n"
+         "[materials.pet]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.38\ndensity = 1390.0\n"
+         "[membrane]\nthickness = 0.227\nmaterial = \"pet\"\n[mesh]\nelement_size = 1.0\nvein_element_size = 1.0\n";
+  // R_WR = Rz(30°): the root frame's y along (−sin 30°, cos 30°) in the wing frame.
+  const std::string rotation = "root_rotation = [[0.8660254037844387, -0.5, 0], [0.5, 0.8660254037844387, 0], [0, 0, 1]]\n";
+  const auto warning = [&](const std::string& chain_head) {
+    std::ofstream(dir / "chain.toml") << chain_head << kOneJointChain;
+    std::ofstream(dir / "case.toml") << "wing = \"swept.toml\"\nchain = \"chain.toml\"\n[kinematics]\nfrequency_hz = 10\n"
+                                        "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
+                                        "[structure]\nkind = \"flexible\"\nbodies = 2\n";
+    const flapsim::io::Case c = flapsim::io::load_case_file((dir / "case.toml").string());
+    return flapsim::app::chain_wing_mismatch_warning(flapsim::app::build_fsi_setup(c, {}));
+  };
+  EXPECT_EQ(warning(rotation), "");
+  // The same chain along the wing frame's y reaches 40 mm against the 34.64 mm span.
+  const std::string w = warning("");
+  EXPECT_NE(w.find("(109.9 mg, span 34.64 mm)"), std::string::npos) << w;
+}
+
 }  // namespace
