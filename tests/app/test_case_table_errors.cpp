@@ -25,7 +25,7 @@ namespace {
 FlapsimOutcome sweep_with_table(const ScratchDir& dir, const std::string& table_text) {
   std::ofstream(dir / "case.toml") << small_plate_case("rigid", 1, 0);
   std::ofstream(dir / "table.csv") << table_text;
-  return run_flapsim_capturing_stderr(dir / "stderr.txt", "sweep '" + (dir / "case.toml").string() + "' --cases '" +
+  return run_flapsim_capturing_stderr(dir.path(), "sweep '" + (dir / "case.toml").string() + "' --cases '" +
                                                               (dir / "table.csv").string() + "' -o '" +
                                                               (dir / "out").string() + "'");
 }

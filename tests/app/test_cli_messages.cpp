@@ -24,11 +24,6 @@ using namespace flapsim::test;
 
 namespace {
 
-// `flapsim ARGS`, its exit status and stderr (tests/common/run_flapsim.hpp).
-FlapsimOutcome run_capturing_stderr(const ScratchDir& dir, const std::string& args) {
-  return run_flapsim_capturing_stderr(dir / "stderr.txt", args);
-}
-
 long json_integer(const std::string& json, const std::string& key) {
   const auto at = json.find("\"" + key + "\": ");
   return at == std::string::npos ? -1 : std::strtol(json.c_str() + at + key.size() + 4, nullptr, 10);
@@ -41,7 +36,7 @@ TEST(CliMessages, AFailedRunNamesTheStepAsTheProgressLineCountsIt) {
       << kDivergingTwoBodyChain;
   std::ofstream(dir / "case.toml")
       << replace_once(small_plate_case("flexible", 40, 0), "steps_per_cycle = 24", "steps_per_cycle = 4");
-  const FlapsimOutcome r = run_capturing_stderr(dir, "run " + (dir / "case.toml").string() + " --chain " +
+  const FlapsimOutcome r = run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " --chain " +
                                                  (dir / "chain.toml").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(r.status, 3) << r.err;
   const std::string summary = read_text(dir / "out" / "summary.json");
@@ -58,12 +53,12 @@ TEST(CliMessages, AnOptionValueOutOfRangeGetsAShortMessage) {
   ScratchDir dir("message_option");
   const std::string wing = kSourceDir + "/tests/data/valid_tiny_wing.toml";
   for (const std::string& bad : {std::string("--threads 0"), std::string("--threads two")}) {
-    const FlapsimOutcome r = run_capturing_stderr(dir, "check " + wing + " " + bad);
+    const FlapsimOutcome r = run_flapsim_capturing_stderr(dir.path(), "check " + wing + " " + bad);
     EXPECT_EQ(r.status, 1) << bad;
     EXPECT_NE(r.err.find("not a whole number from 1 to 4096"), std::string::npos) << bad << ": " << r.err;
     EXPECT_LT(r.err.size(), 200u) << bad << ": " << r.err;
   }
-  const FlapsimOutcome s = run_capturing_stderr(dir, "run " + kSourceDir + "/tests/data/valid_tiny_case.toml --spring-scale -1 -o " +
+  const FlapsimOutcome s = run_flapsim_capturing_stderr(dir.path(), "run " + kSourceDir + "/tests/data/valid_tiny_case.toml --spring-scale -1 -o " +
                                                  (dir / "out").string());
   EXPECT_EQ(s.status, 1);
   EXPECT_NE(s.err.find("'-1' is not a number > 0"), std::string::npos) << s.err;
@@ -74,13 +69,13 @@ TEST(CliMessages, AnOptionValueOutOfRangeGetsAShortMessage) {
 TEST(CliMessages, AChainThatMissesTheFemIsWarnedAbout) {
   // The first MAV film wing (25 um film) with 4 bodies: first bending +144 % (docs/reduction.md, "Film wings").
   ScratchDir dir("message_mismatch");
-  const FlapsimOutcome mav = run_capturing_stderr(dir, "reduce " + kSourceDir + "/wings/mav_film_wing_25um.toml --bodies 4 --modes 6 -o " +
+  const FlapsimOutcome mav = run_flapsim_capturing_stderr(dir.path(), "reduce " + kSourceDir + "/wings/mav_film_wing_25um.toml --bodies 4 --modes 6 -o " +
                                                    (dir / "mav").string());
   EXPECT_EQ(mav.status, 0);
   EXPECT_NE(mav.err.find("warning: the chain's first bending mode differs from the FEM's by +1"), std::string::npos)
       << mav.err;
   // A plate the chain follows (-3 % / -1 %): no warning.
-  const FlapsimOutcome tiny = run_capturing_stderr(dir, "reduce " + kSourceDir + "/tests/data/valid_tiny_wing.toml --bodies 2 "
+  const FlapsimOutcome tiny = run_flapsim_capturing_stderr(dir.path(), "reduce " + kSourceDir + "/tests/data/valid_tiny_wing.toml --bodies 2 "
                                                     "--modes 4 -o " + (dir / "tiny").string());
   EXPECT_EQ(tiny.status, 0);
   EXPECT_EQ(tiny.err.find("warning"), std::string::npos) << tiny.err;
@@ -92,7 +87,7 @@ TEST(CliMessages, ChainAndSpringOptionsOfARigidCaseAreSaidToBeUnused) {
   std::ofstream(dir / "case.toml") << small_plate_case("rigid", 1, 0);
   std::ofstream(dir / "chain.toml") << "[[bodies]]\nlength = 0.04\nmass = 1e-5\ncenter_of_mass = [0, 0.02, 0]\n"
                                        "inertia = [[1e-9,0,0],[0,1e-10,0],[0,0,1e-9]]\n";
-  const FlapsimOutcome r = run_capturing_stderr(dir, "run " + (dir / "case.toml").string() + " --chain " +
+  const FlapsimOutcome r = run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " --chain " +
                                                  (dir / "chain.toml").string() + " --spring-scale 2 -o " +
                                                  (dir / "out").string());
   EXPECT_EQ(r.status, 0) << r.err;
@@ -112,7 +107,7 @@ TEST(CliMessages, ACouplingThatDoesNotConvergeShowsItsChangeAndTolerance) {
   ScratchDir dir("message_coupling");
   std::ofstream(dir / "case.toml")
       << small_plate_case("flexible", 1, 0, "max_coupling_iterations = 1\ncoupling_tolerance = 1e-9\n");
-  const FlapsimOutcome r = run_capturing_stderr(dir, "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
+  const FlapsimOutcome r = run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(r.status, 3) << r.err;
   EXPECT_NE(r.err.find("did not converge in 1 sub-iterations"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("tolerance 1e-09)"), std::string::npos) << r.err;

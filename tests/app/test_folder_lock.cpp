@@ -20,11 +20,6 @@ using namespace flapsim::test;
 
 namespace {
 
-// `flapsim ARGS`, its exit status and stderr (tests/common/run_flapsim.hpp).
-FlapsimOutcome flapsim_with_stderr(const ScratchDir& dir, const std::string& args) {
-  return run_flapsim_capturing_stderr(dir / "stderr.txt", args);
-}
-
 TEST(FolderLock, ACommandFindingTheFolderInUseStopsWithStatus4WritingNothing) {
   ScratchDir dir("folder_lock");
   std::ofstream(dir / "case.toml") << small_plate_case("rigid", 1, 0);
@@ -35,17 +30,17 @@ TEST(FolderLock, ACommandFindingTheFolderInUseStopsWithStatus4WritingNothing) {
     // This process stands for the command under way (the lock a run or sweep holds).
     const flapsim::io::FolderLock other(out, "run");
     ASSERT_TRUE(other.held());
-    FlapsimOutcome r = flapsim_with_stderr(dir, "run " + (dir / "case.toml").string() + " -o " + out.string());
+    FlapsimOutcome r = run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " -o " + out.string());
     EXPECT_EQ(r.status, 4) << r.err;
     EXPECT_NE(r.err.find(in_use), std::string::npos) << r.err;
-    r = flapsim_with_stderr(dir, "sweep " + (dir / "case.toml").string() +
+    r = run_flapsim_capturing_stderr(dir.path(), "sweep " + (dir / "case.toml").string() +
                                      " --vary kinematics.rotation_phase=0,0.1 -o " + out.string());
     EXPECT_EQ(r.status, 4) << r.err;
     EXPECT_NE(r.err.find(in_use), std::string::npos) << r.err;
     EXPECT_TRUE(std::filesystem::is_empty(out)) << "nothing written";
   }
   // Once the other command has ended (its lock goes with it), the folder is free.
-  EXPECT_EQ(flapsim_with_stderr(dir, "run " + (dir / "case.toml").string() + " -o " + out.string()).status, 0);
+  EXPECT_EQ(run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " -o " + out.string()).status, 0);
   EXPECT_TRUE(std::filesystem::exists(out / "summary.json"));
 }
 
@@ -61,7 +56,7 @@ TEST(FolderLock, AnEmptyOutputFolderIsKeptWithItsMode) {
   const auto mode = std::filesystem::perms::owner_all | std::filesystem::perms::group_all |
                     std::filesystem::perms::set_gid;  // 2770
   std::filesystem::permissions(out, mode);
-  ASSERT_EQ(flapsim_with_stderr(dir, "run " + (dir / "case.toml").string() + " -o " + out.string()).status, 0);
+  ASSERT_EQ(run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " -o " + out.string()).status, 0);
   EXPECT_TRUE(std::filesystem::exists(out / "summary.json"));
   EXPECT_EQ(std::filesystem::status(out).permissions() & std::filesystem::perms::mask, mode);
 }

@@ -28,11 +28,6 @@ using flapsim::test::ScratchDir;
 
 const std::string kSource = FLAPSIM_SOURCE_DIR;
 
-// `flapsim ARGS`, its exit status and stderr (tests/common/run_flapsim.hpp).
-FlapsimOutcome flapsim_capturing_stderr(const ScratchDir& dir, const std::string& args) {
-  return run_flapsim_capturing_stderr(dir / "stderr.txt", args);
-}
-
 /// Dickinson et al. 1999's fit of the translational lift coefficient (α in degrees).
 double quasi_steady_cl(double alpha_deg) {
   return 0.225 + 1.58 * std::sin((2.13 * alpha_deg - 7.20) * std::numbers::pi / 180.0);
@@ -41,12 +36,12 @@ double quasi_steady_cl(double alpha_deg) {
 TEST(MavFilmWingCase, ChecksAndRunsToTheEndWithoutAWarning) {
   ScratchDir dir("mav_film_wing_case");
   const std::string case_file = kSource + "/cases/mav_film_wing.toml";
-  const FlapsimOutcome check = flapsim_capturing_stderr(dir, "check " + case_file);
+  const FlapsimOutcome check = run_flapsim_capturing_stderr(dir.path(), "check " + case_file);
   EXPECT_EQ(check.status, 0) << check.err;
   EXPECT_EQ(check.err.find("warning"), std::string::npos) << check.err;
 
   const auto out = dir / "run";
-  const FlapsimOutcome run = flapsim_capturing_stderr(dir, "run " + case_file + " --vtk-every 0 -o " + out.string());
+  const FlapsimOutcome run = run_flapsim_capturing_stderr(dir.path(), "run " + case_file + " --vtk-every 0 -o " + out.string());
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_EQ(run.err.find("warning"), std::string::npos) << run.err;
   const std::string summary = read_text(out / "summary.json");
@@ -80,7 +75,7 @@ TEST(MavFilmWingCase, TheFirstDesignWithA25MicrometreFilmIsWarnedNearResonance) 
   ASSERT_NE(text.find(wing_line), std::string::npos);
   text.replace(text.find(wing_line), wing_line.size(), "wing = \"" + kSource + "/wings/mav_film_wing_25um.toml\"");
   std::ofstream(dir / "case.toml") << text;
-  const FlapsimOutcome check = flapsim_capturing_stderr(dir, "check " + (dir / "case.toml").string());
+  const FlapsimOutcome check = run_flapsim_capturing_stderr(dir.path(), "check " + (dir / "case.toml").string());
   EXPECT_EQ(check.status, 0) << check.err;
   EXPECT_NE(check.err.find("(torsion), "), std::string::npos) << check.err;
   EXPECT_NE(check.err.find("wingbeat frequency"), std::string::npos) << check.err;

@@ -17,11 +17,6 @@ using namespace flapsim::test;
 
 namespace {
 
-// `flapsim ARGS`, its exit status and stderr (tests/common/run_flapsim.hpp).
-FlapsimOutcome flapsim_with_stderr(const ScratchDir& dir, const std::string& args) {
-  return run_flapsim_capturing_stderr(dir / "stderr.txt", args);
-}
-
 TEST(WrongKindOfFile, EachLoaderNamesTheKindItWasGiven) {
   ScratchDir dir("wrong_kind");
   const std::string wing = kSourceDir + "/wings/flat_plate.toml", case_file = kSourceDir + "/cases/hover.toml",
@@ -42,7 +37,7 @@ TEST(WrongKindOfFile, EachLoaderNamesTheKindItWasGiven) {
       {"check " + chain, "a chain file (it has [[bodies]]): check reads wing and case files"},
   };
   for (const Expected& e : expected) {
-    const FlapsimOutcome r = flapsim_with_stderr(dir, e.args);
+    const FlapsimOutcome r = run_flapsim_capturing_stderr(dir.path(), e.args);
     EXPECT_EQ(r.status, 2) << e.args << "\n" << r.err;
     EXPECT_NE(r.err.find(e.message), std::string::npos) << e.args << "\n" << r.err;
     EXPECT_EQ(r.err.find("unknown key"), std::string::npos) << e.args << "\n" << r.err;

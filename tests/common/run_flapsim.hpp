@@ -29,8 +29,9 @@ struct FlapsimOutcome {
   std::string err;
 };
 
-/// Runs `flapsim ARGS` as run_flapsim does, its stderr written to \p err_file and returned.
-inline FlapsimOutcome run_flapsim_capturing_stderr(const std::filesystem::path& err_file, const std::string& args) {
+/// Runs `flapsim ARGS` as run_flapsim does, its stderr written to DIR/stderr.txt and returned.
+inline FlapsimOutcome run_flapsim_capturing_stderr(const std::filesystem::path& dir, const std::string& args) {
+  const std::filesystem::path err_file = dir / "stderr.txt";
   const std::string cmd = "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' " + args +
                           " > /dev/null 2> '" + err_file.string() + "'";
   const int status = std::system(cmd.c_str());
