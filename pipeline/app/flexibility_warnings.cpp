@@ -3,8 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <numbers>
 #include <vector>
 
+#include "mbd/quasi_static_deflection.hpp"
 #include "reduction/linear_chain.hpp"
 
 namespace flapsim::app {
@@ -46,6 +48,61 @@ std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
                 mode + 1, modes[static_cast<std::size_t>(mode)].is_bending() ? "bending" : "torsion", mode_hz,
                 harmonic == 1 ? "the wingbeat frequency" : "twice the wingbeat frequency", harmonic * f,
                 mode_hz / (harmonic * f), amplification, kResonantAmplification);
+  return text;
+}
+
+std::string inertial_deflection_warning(const io::Case& c, const FsiSetup& setup) {
+  const mbd::ChainModel& chain = setup.model.chain;
+  if (c.structure.kind != io::Case::Structure::Kind::Flexible || chain.num_dofs() == 0) return "";
+  mbd::QuasiStaticDeflection q;
+  try {
+    // 64 instants of the cycle: the inertial loads' harmonics up to the 8th are sampled
+    // 4 times a period or more.
+    q = mbd::peak_quasi_static_deflection(chain, setup.model.base, 1.0 / c.kinematics.frequency, 64);
+  } catch (const std::exception&) {
+    return "";  // a singular stiffness: the soft-chain and resonance checks speak of it
+  }
+  constexpr double kStepLoadPeak = 2.0;  // peak / static of a load applied at once (undamped)
+  constexpr double deg = 180.0 / std::numbers::pi;
+  const double bend = kStepLoadPeak * q.tip_bend * deg, twist = kStepLoadPeak * q.tip_twist * deg;
+  if (!(bend > kLargeTipDeflectionDeg) && !(twist > kLargeTipDeflectionDeg)) return "";
+  char text[1100];
+  std::snprintf(text, sizeof text,
+                "the flapping's inertia alone would bend the wing's tip by up to %.1f deg and twist it by "
+                "up to %.1f deg against its base, beyond the %g deg its small-rotation joint springs "
+                "represent: twice the chain's linear quasi-static deflection under the rigid wing's "
+                "inertial loads (%.1f and %.1f deg; twice, as a load applied at once moves an undamped "
+                "spring; the joint inboard of body %d %s by %.1f deg of it). Expect joints swinging far "
+                "past that, results that hinge on the time step, or a numerical failure. Stiffen the wing "
+                "(a thicker membrane, veins), lower frequency_hz or the amplitudes, or scale the springs "
+                "(--spring-scale) (docs/case_file.md, \"Warnings\")",
+                bend, twist, kLargeTipDeflectionDeg, q.tip_bend * deg, q.tip_twist * deg, q.joint + 1,
+                q.twist ? "twisted" : "bent", q.joint_angle * deg);
+  return text;
+}
+
+std::string large_motion_at_failure(const FsiSetup& setup, const Eigen::VectorXd& last_q,
+                                    double peak_tip_bend_deg, double peak_tip_twist_deg) {
+  const mbd::ChainModel& chain = setup.model.chain;
+  if (chain.num_dofs() == 0 || last_q.size() != chain.num_dofs()) return "";
+  constexpr double deg = 180.0 / std::numbers::pi;
+  Eigen::Index largest = 0;
+  const double angle = last_q.cwiseAbs().maxCoeff(&largest) * deg;
+  const double bend = peak_tip_bend_deg, twist = peak_tip_twist_deg;
+  if (!(angle > kLargeTipDeflectionDeg) && !(bend > kLargeTipDeflectionDeg) && !(twist > kLargeTipDeflectionDeg))
+    return "";
+  const int body = chain.first_jointed_body() + static_cast<int>(largest) / 2;
+  char text[900];
+  std::snprintf(text, sizeof text,
+                "By then the wing had moved beyond what its chain represents: the joint inboard of body %d "
+                "%s %.1f deg at the last completed step (history.csv %s_%d_rad), the tip bent up to %.1f "
+                "deg and twisted up to %.1f deg against its base (summary.json peak_tip_bend_deg, "
+                "peak_tip_twist_deg), beyond the %g deg up to which the joint springs, derived from the "
+                "wing's small-rotation FEM, represent it. A finer time step may go further, but through a "
+                "motion the model was not made for: stiffen the wing, lower frequency_hz or the amplitudes "
+                "(docs/case_file.md, \"Warnings\")",
+                body + 1, largest % 2 ? "twisted" : "bent", last_q(largest) * deg, largest % 2 ? "twist" : "bend",
+                body + 1, bend, twist, kLargeTipDeflectionDeg);
   return text;
 }
 

@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include <Eigen/Core>
+
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/io/case_model.hpp"
@@ -29,6 +31,21 @@ inline constexpr double kLargeTipDeflectionDeg = 30.0;
 /// harmonic) is kResonantAmplification or more; names the mode, its frequency, the ratio
 /// and the amplification. "" when the first mode lies below f (soft_chain_warning says so).
 std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup);
+
+/// \brief "" or the warning for a flexible chain that the flapping's inertia alone bends beyond
+/// small rotations: twice its linear quasi-static tip bend or twist under the rigid wing's
+/// inertial loads (mbd/quasi_static_deflection.hpp; twice: the peak of a load applied at
+/// once to an undamped oscillator, [Thomson & Dahleh 1998] ch. 4, as a run starts from rest)
+/// exceeds kLargeTipDeflectionDeg. Names the numbers and the joint that bends most.
+std::string inertial_deflection_warning(const io::Case& c, const FsiSetup& setup);
+
+/// \brief "" or a sentence to add to a run's numerical failure when the chain had moved
+/// beyond small rotations by then: its largest joint angle at the last accepted step
+/// (`last_q`, over the chain's Φ [rad]), or its tip bend or twist so far (summary.json's
+/// peak_tip_bend_deg, peak_tip_twist_deg [deg]), over kLargeTipDeflectionDeg. Names the joint (by
+/// the body it carries, as chain.toml and history.csv number them) and the angles.
+std::string large_motion_at_failure(const FsiSetup& setup, const Eigen::VectorXd& last_q,
+                                    double peak_tip_bend_deg, double peak_tip_twist_deg);
 
 /// \brief "" or the warning for a run whose peak tip bend or twist (peak_tip_bend_deg,
 /// peak_tip_twist_deg) exceeds kLargeTipDeflectionDeg, with the numbers.

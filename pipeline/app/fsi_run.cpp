@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/numerical_stage.hpp"
@@ -63,8 +64,17 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
   try {
     time_loop(setup, data, recorder, progress, options.on_step);
   } catch (const NumericalFailure& e) {
-    recorder.finish(data, "failed", e.what());
-    throw;
+    // A chain that had swung beyond small rotations: say so with the failure (the joint,
+    // the angles), as the failure is then the wing's motion rather than the solver's.
+    const RunRecorder::TipDeflection tip = recorder.peak_tip_deflection();
+    const std::string why = large_motion_at_failure(setup, data.state.q, tip.bend_deg, tip.twist_deg);
+    if (why.empty()) {
+      recorder.finish(data, "failed", e.what());
+      throw;
+    }
+    const NumericalFailure explained(e.reason() + ". " + why, e.step(), e.time());
+    recorder.finish(data, "failed", explained.what());
+    throw explained;
   } catch (const Interrupted& e) {
     recorder.finish(data, "interrupted", e.what());
     throw;

@@ -45,6 +45,15 @@ double sum_quadratic(F f, double from, double to) {
 
 }  // namespace
 
+double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precision) {
+  switch (isa) {
+    case uvlm::KernelIsa::Scalar: return single_precision ? 4.2e8 / 2 : 1.9e8 / 2;
+    case uvlm::KernelIsa::Avx2: return single_precision ? 9.7e8 / 2 : 4.3e8 / 2;
+    case uvlm::KernelIsa::Avx512: return single_precision ? 1.2e9 / 2 : 5.4e8 / 2;
+  }
+  return 1.9e8 / 2;
+}
+
 RunEstimate estimate_run(const io::Case& c, int bodies) {
   RunEstimate e;
   const auto& n = c.numerics;
@@ -98,18 +107,22 @@ RunEstimate estimate_run(const io::Case& c, int bodies) {
   memory += 8.0 * dofs * dofs * 8;
   e.structure_flops = bodies > 1 ? steps * iterations * 3.0 * (2.0 / 3.0) * dofs * dofs * dofs : 0.0;
   e.memory_bytes = memory;
-  e.seconds = e.interactions / kInteractionsPerSecond + e.structure_flops / kFlopsPerSecond;
+  e.isa = uvlm::kernel_isa();
+  e.interactions_per_second =
+      nominal_interactions_per_second(e.isa, c.numerics.wake_precision == io::WakePrecision::Single);
+  e.seconds = e.interactions / e.interactions_per_second + e.structure_flops / kFlopsPerSecond;
   return e;
 }
 
 std::string describe(const RunEstimate& e) {
-  char buf[256];
+  char buf[320];
+  const std::string isa(uvlm::kernel_isa_name(e.isa));
   std::snprintf(buf, sizeof buf,
                 "estimate: %lld steps, up to %lld wake panels, memory ~%s, %.2g Biot-Savart interactions, "
-                "%.2g chain flop, time of the order of %s (one thread)",
+                "%.2g chain flop, time of the order of %s (one thread, %s kernel at a nominal %.2g interactions/s)",
                 static_cast<long long>(e.steps), static_cast<long long>(e.wake_panels),
                 bytes_text(e.memory_bytes).c_str(), e.interactions, e.structure_flops,
-                seconds_text(e.seconds).c_str());
+                seconds_text(e.seconds).c_str(), isa.c_str(), e.interactions_per_second);
   return buf;
 }
 

@@ -220,13 +220,9 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
         fsi::crossing_lag(t, outer_alpha, base_alpha, right_angle, period, t_begin, t_end).value_or(nan));
 
   if (setup_.model.chain.num_dofs() > 0) {
-    double bend = 0.0, twist = 0.0;
-    for (const StepSample& s : samples_) {
-      bend = std::max(bend, std::abs(s.tip_bend));
-      twist = std::max(twist, std::abs(s.tip_twist));
-    }
-    r.set("peak_tip_bend_deg", bend * 180.0 / std::numbers::pi);
-    r.set("peak_tip_twist_deg", twist * 180.0 / std::numbers::pi);
+    const TipDeflection peak = peak_tip_deflection();
+    r.set("peak_tip_bend_deg", peak.bend_deg);
+    r.set("peak_tip_twist_deg", peak.twist_deg);
   }
 
   double iterations = 0.0;
@@ -239,6 +235,15 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   r.set("max_coupling_iterations", max_iterations);
   r.set("coupling_tolerance_rad", setup_.model.coupling.tolerance);
   if (setup_.model.air) r.set("wake_panels", data.lattice->wake_panels());
+}
+
+RunRecorder::TipDeflection RunRecorder::peak_tip_deflection() const {
+  double bend = 0.0, twist = 0.0;
+  for (const StepSample& s : samples_) {
+    bend = std::max(bend, std::abs(s.tip_bend));
+    twist = std::max(twist, std::abs(s.tip_twist));
+  }
+  return {bend * 180.0 / std::numbers::pi, twist * 180.0 / std::numbers::pi};
 }
 
 RunResults RunRecorder::finish(const fsi::FsiData& data, const std::string& status, const std::string& error) {

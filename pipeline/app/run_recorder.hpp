@@ -64,6 +64,13 @@ class RunRecorder {
   /// \throws io::OutputError
   RunResults finish(const fsi::FsiData& data, const std::string& status, const std::string& error = {});
 
+  /// The largest tip bend and twist against the base so far (sums of the joint angles of
+  /// each recorded step; summary.json peak_tip_bend_deg, peak_tip_twist_deg) [deg].
+  struct TipDeflection {
+    double bend_deg = 0.0, twist_deg = 0.0;
+  };
+  TipDeflection peak_tip_deflection() const;
+
  private:
   void write_series(const fsi::FsiData& data, long step);
   /// Flushes the frames written since the last publication and rewrites the .pvd files,

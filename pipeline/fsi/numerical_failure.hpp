@@ -13,7 +13,9 @@ class NumericalFailure : public std::runtime_error {
   /// \param step  time-step index (0-based) where it failed, -1 if not in a time loop
   /// \param time  simulated time of that step [s]
   NumericalFailure(const std::string& what, long step = -1, double time = 0.0)
-      : std::runtime_error(format(what, step, time)), step_(step), time_(time) {}
+      : std::runtime_error(format(what, step, time)), reason_(what), step_(step), time_(time) {}
+  /// What went wrong, without the step and time.
+  const std::string& reason() const { return reason_; }
   long step() const { return step_; }
   double time() const { return time_; }
 
@@ -24,6 +26,7 @@ class NumericalFailure : public std::runtime_error {
     // the step that fails is step 52, the one that ends at `time`.
     return "step " + std::to_string(step + 1) + " (to t = " + std::to_string(time) + " s): " + what;
   }
+  std::string reason_;
   long step_;
   double time_;
 };
