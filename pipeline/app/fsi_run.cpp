@@ -21,7 +21,8 @@ namespace {
 // The time loop: from the initial state, `steps` coupled steps of dt; after each step
 // (before the wake is shed, so the outputs show the wake the step's loads came from)
 // the recorder and the progress line.
-void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder, ProgressLine& progress) {
+void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder, ProgressLine& progress,
+               const std::function<void(long, long)>& on_step) {
   const fsi::FsiModel& model = setup.model;
   fsi::initialize(model, data, 0.0);
   recorder.record_initial(data);
@@ -40,6 +41,7 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
     } else {
       progress.update(data.step, data.state.time, split);
     }
+    if (on_step) on_step(data.step, static_cast<long>(setup.steps));
     // SIGINT/SIGTERM: the step is complete and recorded; stop here (interruption.hpp).
     // After the last step the run is complete: it ends as such.
     if (n + 1 < setup.steps) throw_if_interrupted("after step " + std::to_string(data.step) + " of " + std::to_string(setup.steps));
@@ -64,7 +66,7 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
   ProgressLine progress(setup.steps, stderr, options.progress);
   // 3. The time loop; a numerical failure still leaves a complete summary.json.
   try {
-    time_loop(setup, data, recorder, progress);
+    time_loop(setup, data, recorder, progress, options.on_step);
   } catch (const NumericalFailure& e) {
     // A chain that had swung beyond small rotations: say so with the failure (the joint,
     // the angles), as the failure is then the wing's motion rather than the solver's.

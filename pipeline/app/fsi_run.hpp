@@ -32,6 +32,8 @@ struct RunOptions {
   /// Values set in the wing file before it is read (SetupOptions::wing_overrides).
   std::vector<std::pair<std::string, std::string>> wing_overrides;
   ProgressLine::Mode progress = ProgressLine::Mode::automatic;
+  /// Called after each step with the steps done and the run's total (a sweep's progress).
+  std::function<void(long step, long total)> on_step;
   /// Called with the setup before the recorder creates any file (the resource estimate
   /// of flapsim run); may throw to refuse the run.
   std::function<void(const FsiSetup&)> before_start;

@@ -183,6 +183,9 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   StructureChoice structure = choose_structure(c, options.chain_file, s.wing ? &*s.wing : nullptr);
   m.chain = std::move(structure.chain);
   s.structure_source = structure.description;
+  s.chain_file = structure.chain_file;
+  s.chain_fem = std::move(structure.chain_fem);
+  s.spring_scale = options.spring_scale;
   if (!(options.spring_scale > 0.0) || !std::isfinite(options.spring_scale))
     throw InputError("", 0, "--spring-scale", "must be a positive number");
   if (options.spring_scale != 1.0 && m.chain.num_dofs() > 0) {

@@ -13,6 +13,7 @@
 
 #include "mbd/chain_model.hpp"
 #include "pipeline/io/case_model.hpp"
+#include "pipeline/io/chain_file.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "wings/wing_model.hpp"
@@ -49,6 +50,10 @@ struct FsiSetup {
   std::optional<uvlm::PlanformGrid> grid; ///< lattice grid in the wing frame (if air)
   LiftReference reference;                ///< valid if air
   std::string structure_source;           ///< how the structure was obtained (for the log)
+  std::string chain_file;                 ///< the chain file of a flexible run ("" otherwise)
+  /// The chain file's record of the chain against its wing's FEM (made by flapsim reduce).
+  std::optional<io::ChainFemRecord> chain_fem;
+  double spring_scale = 1.0;              ///< every joint spring × this (SetupOptions)
   int steps_per_cycle = 0;
   std::int64_t steps = 0;                 ///< total steps of the run (<= io::kMaxTotalSteps)
   double period = 0.0;                    ///< 1/f [s]

@@ -45,6 +45,15 @@ double sum_quadratic(F f, double from, double to) {
 
 }  // namespace
 
+double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precision) {
+  switch (isa) {
+    case uvlm::KernelIsa::Scalar: return single_precision ? 4.2e8 / 2 : 1.9e8 / 2;
+    case uvlm::KernelIsa::Avx2: return single_precision ? 9.7e8 / 2 : 4.3e8 / 2;
+    case uvlm::KernelIsa::Avx512: return single_precision ? 1.2e9 / 2 : 5.4e8 / 2;
+  }
+  return 1.9e8 / 2;
+}
+
 RunEstimate estimate_run(const io::Case& c, int bodies) {
   RunEstimate e;
   const auto& n = c.numerics;
@@ -66,7 +75,8 @@ RunEstimate estimate_run(const io::Case& c, int bodies) {
     const double wake_nodes = (rows + 1.0) * (ns + 1.0);
     const double wake_segments = (rows + 1.0) * ns + rows * (ns + 1.0);
     memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
-    memory += 2.0 * panels * panels * 8;  // influence matrix and its LU
+    e.lattice_bytes = 2.0 * panels * panels * 8;  // influence matrix and its LU
+    memory += e.lattice_bytes;
     // Interactions: at step k the wake has r = min(k, max_rows) rows; the wake's nodes move
     // by their induced velocity (every segment at each node) only in the rows younger than
     // far_wake_cycles or frozen_wake_cycles (the older rows move as a whole or stand:
@@ -98,18 +108,22 @@ RunEstimate estimate_run(const io::Case& c, int bodies) {
   memory += 8.0 * dofs * dofs * 8;
   e.structure_flops = bodies > 1 ? steps * iterations * 3.0 * (2.0 / 3.0) * dofs * dofs * dofs : 0.0;
   e.memory_bytes = memory;
-  e.seconds = e.interactions / kInteractionsPerSecond + e.structure_flops / kFlopsPerSecond;
+  e.isa = uvlm::kernel_isa();
+  e.interactions_per_second =
+      nominal_interactions_per_second(e.isa, c.numerics.wake_precision == io::WakePrecision::Single);
+  e.seconds = e.interactions / e.interactions_per_second + e.structure_flops / kFlopsPerSecond;
   return e;
 }
 
 std::string describe(const RunEstimate& e) {
-  char buf[256];
+  char buf[320];
+  const std::string isa(uvlm::kernel_isa_name(e.isa));
   std::snprintf(buf, sizeof buf,
                 "estimate: %lld steps, up to %lld wake panels, memory ~%s, %.2g Biot-Savart interactions, "
-                "%.2g chain flop, time of the order of %s (one thread)",
+                "%.2g chain flop, time of the order of %s (one thread, %s kernel at a nominal %.2g interactions/s)",
                 static_cast<long long>(e.steps), static_cast<long long>(e.wake_panels),
                 bytes_text(e.memory_bytes).c_str(), e.interactions, e.structure_flops,
-                seconds_text(e.seconds).c_str());
+                seconds_text(e.seconds).c_str(), isa.c_str(), e.interactions_per_second);
   return buf;
 }
 
@@ -125,11 +139,24 @@ double usable_memory_bytes() {
 void refuse_if_it_cannot_fit(const RunEstimate& e, const io::Case& c) {
   const double usable = usable_memory_bytes();
   if (e.memory_bytes <= usable) return;
+  const std::string need = "the run needs about " + bytes_text(e.memory_bytes) + " of memory, more than the " +
+                           bytes_text(usable) + " this machine offers (" + describe(e) + ")";
+  // The lattice's dense matrices grow with the square of its panels, whatever the run's
+  // length: a 400 x 400 lattice needs 410 GB for 2 cycles (before, the message blamed the
+  // cycles and the wake).
+  if (e.lattice_bytes > 0.5 * e.memory_bytes) {
+    const auto& n = c.numerics;
+    const std::string key =
+        n.spanwise_panels >= n.chordwise_panels ? "numerics.spanwise_panels" : "numerics.chordwise_panels";
+    throw InputError(c.file, c.line_of(key), key,
+                     need + "; of it the lattice of " + std::to_string(n.chordwise_panels) + " x " +
+                         std::to_string(n.spanwise_panels) + " panels needs " + bytes_text(e.lattice_bytes) +
+                         " (its influence matrix and LU, 2 x panels^2 numbers): use fewer panels "
+                         "(numerics.chordwise_panels, numerics.spanwise_panels)");
+  }
   throw InputError(c.file, c.line_of("numerics.cycles"), "numerics.cycles",
-                   "the run needs about " + bytes_text(e.memory_bytes) + " of memory, more than the " +
-                       bytes_text(usable) + " this machine offers (" + describe(e) +
-                       "); shorten it (numerics.cycles, numerics.steps_per_cycle) or bound the wake "
-                       "(numerics.wake_max_rows)");
+                   need + "; shorten it (numerics.cycles, numerics.steps_per_cycle) or bound the wake "
+                          "(numerics.wake_max_rows)");
 }
 
 }  // namespace flapsim::app

@@ -11,12 +11,14 @@
 /// and its LU; one StepSample per step for the end-of-run analysis; dense chain matrices).
 /// Interactions: every wake node sees every bound and wake segment (free wake), and every
 /// collocation point sees every wake segment per coupling iteration. The time divides them
-/// by a nominal single-thread throughput; it is an order of magnitude, not a measurement.
+/// by a nominal single-thread throughput of the kernel variant the CPU runs; it is an order
+/// of magnitude, not a measurement.
 
 #include <cstdint>
 #include <string>
 
 #include "pipeline/io/case_model.hpp"
+#include "uvlm/kernel_dispatch.hpp"
 
 namespace flapsim::app {
 
@@ -24,13 +26,22 @@ struct RunEstimate {
   std::int64_t steps = 0;          ///< time steps
   std::int64_t wake_panels = 0;    ///< largest wake [panels]
   double memory_bytes = 0.0;       ///< peak memory of the run's arrays [B]
+  double lattice_bytes = 0.0;      ///< of it, the lattice's influence matrix and its LU [B]
   double interactions = 0.0;       ///< Biot–Savart segment-point evaluations of the whole run
   double structure_flops = 0.0;    ///< dense chain solves of the whole run [flop]
+  double interactions_per_second = 0.0;  ///< the nominal throughput the time assumes [1/s]
+  uvlm::KernelIsa isa = uvlm::KernelIsa::Scalar;  ///< the kernel variant it assumes
   double seconds = 0.0;            ///< order of magnitude of the wall time, one thread [s]
 };
 
-/// Nominal single-thread throughputs of the time estimate (orders of magnitude).
-inline constexpr double kInteractionsPerSecond = 1e8;
+/// Nominal single-thread throughput of the direct Biot–Savart sums [interactions/s] with the
+/// kernel variant `isa` in single or double precision (the case's numerics.wake_precision):
+/// half the throughput measured on the development machine (docs/performance.md, "Measured",
+/// 6000 segments × 3300 points, per CPU second: scalar 1.9e8 and 4.2e8, AVX2 4.3e8 and 9.7e8,
+/// AVX-512 5.4e8 and 1.2e9 in double and single precision), the other half a margin for
+/// slower CPUs and the work besides the sums.
+double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precision);
+/// Nominal throughput of the chain's dense solves [flop/s].
 inline constexpr double kFlopsPerSecond = 1e9;
 /// Runs estimated above this are "long": flapsim run prints the estimate first [s].
 inline constexpr double kLongRunSeconds = 10.0;
@@ -45,8 +56,10 @@ std::string describe(const RunEstimate& e);
 /// limit (ulimit -v) is set.
 double usable_memory_bytes();
 
-/// \throws flapsim::InputError (key numerics.cycles) if the run's memory exceeds
-///         usable_memory_bytes(), naming both and the keys that shrink the run
+/// \throws flapsim::InputError if the run's memory exceeds usable_memory_bytes(), naming
+///         both and the keys that shrink the run: the panel counts (key
+///         numerics.spanwise_panels or chordwise_panels, the larger) when the lattice's
+///         matrices are most of it, else the length of the run (key numerics.cycles)
 void refuse_if_it_cannot_fit(const RunEstimate& e, const io::Case& c);
 
 }  // namespace flapsim::app

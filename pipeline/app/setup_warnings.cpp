@@ -1,5 +1,6 @@
 #include "pipeline/app/setup_warnings.hpp"
 
+#include "pipeline/app/chain_fem_mismatch.hpp"
 #include "pipeline/app/chain_wing_match.hpp"
 #include "pipeline/app/compressibility_warning.hpp"
 #include "pipeline/app/flexibility_warnings.hpp"
@@ -9,6 +10,7 @@ namespace flapsim::app {
 std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup) {
   std::vector<std::string> out;
   for (std::string w : {compressibility_warning(c, setup), chain_wing_mismatch_warning(setup),
+                        saved_chain_fem_warning(setup),
                         soft_chain_warning(c, setup), near_resonance_warning(c, setup),
                         inertial_deflection_warning(c, setup)})
     if (!w.empty()) out.push_back(std::move(w));

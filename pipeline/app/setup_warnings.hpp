@@ -2,8 +2,9 @@
 /// \file setup_warnings.hpp
 /// \brief The warnings about a case that need its built setup (the chain, the wing), in
 /// the order `check`, `run` and `sweep` report them: a tip beyond Mach 0.3, a chain file
-/// that does not match the wing, a chain driven above or near its resonance, a chain the
-/// flapping's inertia alone bends beyond 30°.
+/// that does not match the wing, a chain file that misses its wing's FEM modes (as reduce
+/// found), a chain driven above or near its resonance, a chain the flapping's inertia alone
+/// bends beyond 30°.
 
 #include <string>
 #include <vector>

@@ -27,7 +27,8 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
   }
   const std::string path = !chain_override.empty() ? chain_override : c.chain_file;
   if (!path.empty()) {
-    s.chain = io::read_chain_file(path);
+    s.chain = io::read_chain_file(path, &s.chain_fem);
+    s.chain_file = path;
     // The case's body count must be the chain's: markers and loads name bodies by number.
     if (s.chain.num_bodies() != c.structure.bodies)
       throw InputError(c.file, c.structure.bodies_line, "structure.bodies",

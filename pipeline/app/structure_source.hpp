@@ -5,10 +5,12 @@
 /// (`flapsim run --chain`), else the case's `chain` file, else the wing reduced in
 /// process (FEM + reduction with `structure.bodies` bodies).
 
+#include <optional>
 #include <string>
 
 #include "mbd/chain_model.hpp"
 #include "pipeline/io/case_model.hpp"
+#include "pipeline/io/chain_file.hpp"
 #include "wings/wing_model.hpp"
 
 namespace flapsim::app {
@@ -16,6 +18,8 @@ namespace flapsim::app {
 struct StructureChoice {
   mbd::ChainModel chain;
   std::string description;  ///< e.g. "chain file out/hawkmoth/chain.toml (10 bodies)"
+  std::string chain_file;   ///< the chain file read ("" for a rigid wing or one reduced in process)
+  std::optional<io::ChainFemRecord> chain_fem;  ///< its [fem_comparison], if it has one
 };
 
 /// \brief Chooses and builds the structure of a case (see the file comment).

@@ -6,6 +6,7 @@
 #include "wings/toml_reader.hpp"
 
 #include <array>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
@@ -28,7 +29,46 @@ Eigen::Matrix3d read_matrix3(const TomlTable& t, std::string_view key, double sc
   return m;
 }
 
-mbd::ChainModel parse_chain(const TomlTable& root) {
+// The text of a TOML basic string's content: backslash, quote and control characters escaped.
+std::string toml_escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '\\' || c == '"') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// [fem_comparison]: each kind's three numbers, all or none.
+ChainFemRecord parse_fem_comparison(const TomlTable& t) {
+  t.expect_only({"wing", "bending_chain_hz", "bending_fem_hz", "bending_mac", "torsion_chain_hz", "torsion_fem_hz",
+                 "torsion_mac"});
+  ChainFemRecord r;
+  r.wing_file = t.get_string("wing", "");
+  for (auto [kind, m] : {std::pair{std::string("bending"), &r.bending}, std::pair{std::string("torsion"), &r.torsion}}) {
+    const std::string chain_key = kind + "_chain_hz", fem_key = kind + "_fem_hz", mac_key = kind + "_mac";
+    const bool any = t.has(chain_key) || t.has(fem_key) || t.has(mac_key);
+    if (!any) continue;
+    for (const std::string& k : {chain_key, fem_key, mac_key})
+      if (!t.has(k)) t.fail(k, "missing: " + kind + "_chain_hz, " + kind + "_fem_hz and " + kind + "_mac go together");
+    m->found = true;
+    m->chain_hz = t.get_double(chain_key, Bounds::positive());
+    m->fem_hz = t.get_double(fem_key, Bounds::positive());
+    m->mac = t.get_double(mac_key, Bounds::closed(0.0, 1.0));
+    m->relative_error = reduction::relative_error(m->chain_hz, m->fem_hz);
+  }
+  return r;
+}
+
+mbd::ChainModel parse_chain(const TomlTable& root, std::optional<ChainFemRecord>* fem) {
   // A wing or case file where a chain file belongs (--chain, a case's chain): say so.
   if (!root.has("bodies")) {
     if (root.has("planform"))
@@ -39,7 +79,7 @@ mbd::ChainModel parse_chain(const TomlTable& root) {
       root.fail("kinematics", "this is a case file (it has [kinematics]), not a chain file (no [[bodies]])");
   }
   root.expect_only({"length_unit", "root", "welded_bodies", "root_offset", "root_rotation",
-                    "joint_stiffness", "joint_damping", "bodies", "name", "description"});
+                    "joint_stiffness", "joint_damping", "bodies", "name", "description", "fem_comparison"});
   root.read_length_unit();
   mbd::ChainModel chain;
   chain.root = root.get_choice("root", kRootNames);
@@ -122,6 +162,12 @@ mbd::ChainModel parse_chain(const TomlTable& root) {
   } catch (const std::invalid_argument& e) {
     root.fail("root_rotation", e.what());
   }
+  if (auto t = root.find_table("fem_comparison")) {
+    ChainFemRecord r = parse_fem_comparison(*t);
+    if (fem) *fem = std::move(r);
+  } else if (fem) {
+    fem->reset();
+  }
   return chain;
 }
 
@@ -142,15 +188,15 @@ std::string mat3(const Eigen::Matrix3d& m) {
 
 }  // namespace
 
-mbd::ChainModel read_chain_file(const std::string& path) {
-  return parse_chain(wings::parse_toml_file(path));
+mbd::ChainModel read_chain_file(const std::string& path, std::optional<ChainFemRecord>* fem) {
+  return parse_chain(wings::parse_toml_file(path), fem);
 }
 
-mbd::ChainModel parse_chain_text(std::string_view text, const std::string& name) {
-  return parse_chain(wings::parse_toml_string(text, name));
+mbd::ChainModel parse_chain_text(std::string_view text, const std::string& name, std::optional<ChainFemRecord>* fem) {
+  return parse_chain(wings::parse_toml_string(text, name), fem);
 }
 
-std::string format_chain_file(const mbd::ChainModel& chain) {
+std::string format_chain_file(const mbd::ChainModel& chain, const ChainFemRecord* fem) {
   std::ostringstream s;
   s << "# Hencky bar chain (docs/multibody.md). SI units.\n"
     << "# Body frame: origin at the inboard joint, y along the body, x toward the leading edge.\n"
@@ -175,6 +221,21 @@ std::string format_chain_file(const mbd::ChainModel& chain) {
   const bool full = chain.stiffness_matrix.size() > 0;
   if (full) matrix("joint_stiffness", chain.stiffness_matrix, "Joint stiffness K [N m/rad]");
   if (chain.damping_matrix.size() > 0) matrix("joint_damping", chain.damping_matrix, "Joint damping C [N m s/rad]");
+  if (fem) {
+    s << "\n# The chain against the FEM of its wing, as 'flapsim reduce' found it (its report.md has the whole\n"
+      << "# comparison); 'flapsim run' and 'check' of this chain repeat a miss of over 10 % (docs/reduction.md).\n"
+      << "[fem_comparison]\n"
+      << "wing = \"" << toml_escape(fem->wing_file) << "\"\n";
+    for (auto [kind, m] : {std::pair{"bending", &fem->bending}, std::pair{"torsion", &fem->torsion}}) {
+      if (!m->found) {
+        s << "# no " << kind << " mode among the FEM modes computed\n";
+        continue;
+      }
+      s << kind << "_chain_hz = " << format_number(m->chain_hz) << "   # first " << kind << " mode [Hz]\n"
+        << kind << "_fem_hz = " << format_number(m->fem_hz) << "\n"
+        << kind << "_mac = " << format_number(m->mac) << "   # modal assurance criterion of the two shapes\n";
+    }
+  }
   for (int k = 0; k < chain.num_bodies(); ++k) {
     const auto& b = chain.bodies[static_cast<std::size_t>(k)];
     const auto& j = chain.joints[static_cast<std::size_t>(k)];
@@ -197,8 +258,8 @@ std::string format_chain_file(const mbd::ChainModel& chain) {
   return s.str();
 }
 
-void write_chain_file(const std::filesystem::path& path, const mbd::ChainModel& chain) {
-  write_text_atomically(path, format_chain_file(chain));
+void write_chain_file(const std::filesystem::path& path, const mbd::ChainModel& chain, const ChainFemRecord* fem) {
+  write_text_atomically(path, format_chain_file(chain, fem));
 }
 
 }  // namespace flapsim::io

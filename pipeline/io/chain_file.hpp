@@ -24,32 +24,56 @@
 ///   twist_damping = 0.0               # optional [N m s/rad]
 ///   bend_rest = 0.0                   # optional [rad]
 ///   twist_rest = 0.0                  # optional [rad]
+///   [fem_comparison]                  # optional, written by flapsim reduce (see ChainFemRecord)
+///   wing = "wings/x.toml"
+///   bending_chain_hz = 72.1           # first bending mode of the chain and of the FEM [Hz]
+///   bending_fem_hz = 70.4
+///   bending_mac = 0.998               # modal assurance criterion of the two shapes [-]
+///   torsion_chain_hz = 112.0          # the same for the first torsion mode
+///   torsion_fem_hz = 131.2
+///   torsion_mac = 0.93
 /// \endcode
 /// With a rigid root the welded bodies' joints are optional and ignored. With
 /// joint_stiffness the joints carry no springs (only dampers and rest angles). Masses, inertias
 /// and springs are SI whatever the length unit.
 
 #include "mbd/chain_model.hpp"
+#include "reduction/reduction_report.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
 namespace flapsim::io {
 
-/// Reads and checks a chain file.
+/// What `flapsim reduce` found of a chain against the FEM of its wing, kept in the chain
+/// file's [fem_comparison] table so that `run` and `check` of the chain, later and
+/// elsewhere, can repeat reduce's warning about a chain that misses the FEM's modes
+/// (report.md of the reduction has the whole comparison). A kind the FEM's computed modes
+/// did not show has found = false (its keys are absent from the file).
+struct ChainFemRecord {
+  std::string wing_file;                  ///< the wing reduced, as reduce was given it
+  reduction::ModeMatch bending, torsion;  ///< chain_hz, fem_hz, relative_error, mac
+};
+
+/// Reads and checks a chain file; with \p fem, also its [fem_comparison] (nullopt when the
+/// file has none: a chain written by hand or by an earlier flapsim).
 /// \throws flapsim::InputError naming file, line and key (missing keys, bad values,
 ///         non-physical inertia tensors, unknown keys)
-mbd::ChainModel read_chain_file(const std::string& path);
+mbd::ChainModel read_chain_file(const std::string& path, std::optional<ChainFemRecord>* fem = nullptr);
 
 /// Same from text (tests); \p name is used as the file name in errors.
-mbd::ChainModel parse_chain_text(std::string_view text, const std::string& name);
+mbd::ChainModel parse_chain_text(std::string_view text, const std::string& name,
+                                 std::optional<ChainFemRecord>* fem = nullptr);
 
-/// The chain as chain-file text (SI, length_unit = "m", round-trip exact numbers).
-std::string format_chain_file(const mbd::ChainModel& chain);
+/// The chain as chain-file text (SI, length_unit = "m", round-trip exact numbers), with
+/// \p fem as its [fem_comparison] table when given.
+std::string format_chain_file(const mbd::ChainModel& chain, const ChainFemRecord* fem = nullptr);
 
 /// Writes the chain file atomically (temporary name, then rename).
 /// \throws flapsim::OutputError
-void write_chain_file(const std::filesystem::path& path, const mbd::ChainModel& chain);
+void write_chain_file(const std::filesystem::path& path, const mbd::ChainModel& chain,
+                      const ChainFemRecord* fem = nullptr);
 
 }  // namespace flapsim::io

@@ -50,9 +50,9 @@ TEST(RunEstimate, TheInteractionsAreThoseOfTheWakeThatMoves) {
   ASSERT_GT(c.numerics.far_wake_cycles, 0.0);
   const app::RunEstimate far = app::estimate_run(c, 1);
   EXPECT_NEAR(far.interactions, interactions_step_by_step(c, 1), 1e-9 * far.interactions);
-  // Below an hour at the nominal 1e8 interactions per second (it was 1.8 h; measured 34 s of
-  // CPU time with the far wake by the direct sum, docs/uvlm.md).
-  EXPECT_LT(far.seconds, 3600.0);
+  // Below an hour even at the scalar variant's double-precision rate (it was 1.8 h; measured
+  // 34 s of CPU time with the far wake by the direct sum, docs/uvlm.md).
+  EXPECT_LT(far.interactions / app::nominal_interactions_per_second(uvlm::KernelIsa::Scalar, false), 3600.0);
   c.numerics.far_wake_cycles = 0.0;  // the whole wake free, as before: the count it was
   const app::RunEstimate whole = app::estimate_run(c, 1);
   EXPECT_NEAR(whole.interactions, interactions_step_by_step(c, 1), 1e-9 * whole.interactions);
@@ -68,6 +68,39 @@ TEST(RunEstimate, TheInteractionsAreThoseOfTheWakeThatMoves) {
   f.numerics.wake_max_rows = 120;
   EXPECT_NEAR(app::estimate_run(f, 10).interactions, interactions_step_by_step(f, 10),
               1e-9 * interactions_step_by_step(f, 10));
+}
+
+// The time divides the interactions by the throughput of the kernel variant in use and the
+// case's wake precision (docs/case_file.md, "Size of a run"): half of the direct-sum rates
+// of docs/performance.md, "Measured". Before, one nominal 1e8/s for every variant and
+// precision put cases/lua_rigid.toml at 24 s for a run of 3.5 CPU s (AVX2, single).
+TEST(RunEstimate, TheTimeUsesTheRateOfTheKernelInUseAndTheWakePrecision) {
+  using uvlm::KernelIsa;
+  // Half the measured rates, per CPU second (docs/performance.md): double 1.9e8, 4.3e8,
+  // 5.4e8; single 4.2e8, 9.7e8, 1.2e9 for scalar, AVX2, AVX-512.
+  EXPECT_DOUBLE_EQ(app::nominal_interactions_per_second(KernelIsa::Scalar, false), 1.9e8 / 2);
+  EXPECT_DOUBLE_EQ(app::nominal_interactions_per_second(KernelIsa::Avx2, false), 4.3e8 / 2);
+  EXPECT_DOUBLE_EQ(app::nominal_interactions_per_second(KernelIsa::Avx512, false), 5.4e8 / 2);
+  EXPECT_DOUBLE_EQ(app::nominal_interactions_per_second(KernelIsa::Scalar, true), 4.2e8 / 2);
+  EXPECT_DOUBLE_EQ(app::nominal_interactions_per_second(KernelIsa::Avx2, true), 9.7e8 / 2);
+  EXPECT_DOUBLE_EQ(app::nominal_interactions_per_second(KernelIsa::Avx512, true), 1.2e9 / 2);
+  io::Case c = io::load_case_file(std::string(FLAPSIM_SOURCE_DIR) + "/cases/lua_rigid.toml");
+  ASSERT_EQ(c.numerics.wake_precision, io::WakePrecision::Single);
+  const uvlm::KernelIsa before = uvlm::kernel_isa();
+  for (KernelIsa isa : uvlm::supported_kernel_isas()) {
+    uvlm::set_kernel_isa(isa);
+    for (io::WakePrecision p : {io::WakePrecision::Single, io::WakePrecision::Double}) {
+      c.numerics.wake_precision = p;
+      const app::RunEstimate e = app::estimate_run(c, 1);  // rigid: no chain flop
+      const double rate = app::nominal_interactions_per_second(isa, p == io::WakePrecision::Single);
+      EXPECT_EQ(e.isa, isa);
+      EXPECT_DOUBLE_EQ(e.interactions_per_second, rate);
+      EXPECT_DOUBLE_EQ(e.seconds, e.interactions / rate);
+      const std::string line = app::describe(e);
+      EXPECT_NE(line.find(std::string(uvlm::kernel_isa_name(isa)) + " kernel"), std::string::npos) << line;
+    }
+  }
+  uvlm::set_kernel_isa(before);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "fem/wing_fem.hpp"
+#include "pipeline/app/chain_fem_mismatch.hpp"
 #include "pipeline/app/numerical_stage.hpp"
 #include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/io/chain_file.hpp"
@@ -32,9 +33,6 @@ namespace flapsim::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Chain against FEM, first bending or torsion frequency: beyond this relative error, a warning.
-constexpr double kChainMismatch = 0.10;
 
 struct ReduceOptions {
   std::string wing_file;
@@ -81,7 +79,9 @@ void run_reduce(const ReduceOptions& o) {
   const reduction::ChainFemComparison cmp = app::numerical_stage(
       "reduction", [&] { return reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds); });
   monitor.stage("writing the outputs");
-  io::write_chain_file(dir / "chain.toml", lc.chain);
+  // The chain file keeps the first modes against the FEM: run and check of it repeat a miss.
+  const io::ChainFemRecord record{o.wing_file, cmp.bending, cmp.torsion};
+  io::write_chain_file(dir / "chain.toml", lc.chain, &record);
   io::write_reduction_vtk(dir, beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));
   io::write_reduction_summary(dir / "summary.json", beam, lc, cmp);
@@ -103,7 +103,7 @@ void run_reduce(const ReduceOptions& o) {
   // A chain that misses the FEM's first modes by more than 10 % is said plainly: the
   // numbers above are easy to read past (a wing of aspect ratio 0.2 gave -24 % / -26 %).
   for (const auto& [kind, m] : {std::pair{"bending", &cmp.bending}, std::pair{"torsion", &cmp.torsion}})
-    if (m->found && std::abs(m->relative_error) > kChainMismatch)
+    if (app::misses_fem_mode(*m))
       std::cerr << "flapsim: warning: the chain's first " << kind << " mode differs from the FEM's by "
                 << io::format_percent(m->relative_error) << " (MAC " << m->mac
                 << "): the chain does not represent this wing well (too few bodies: try more --bodies; or a beam "

@@ -1,11 +1,13 @@
 // flapsim sweep CASE.toml (--vary KEY=VALUES ... | --cases TABLE.csv) -o DIR [--chain FILE]
-//   [--spring-scale S] [--jobs N] [--vtk-every N] [--force] [--quiet]
+//   [--spring-scale S] [--jobs N] [--vtk-every N] [--log-every S] [--force] [--quiet]
 #include "pipeline/app/cli/commands.hpp"
 #include "pipeline/app/cli/option_checks.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -31,6 +33,7 @@ struct SweepArgs {
   int jobs = 0;
   int vtk_every = 0;
   double spring_scale = 1.0;
+  double log_every = 30.0;  // [s]
   bool force = false;
   bool quiet = false;
 };
@@ -98,6 +101,7 @@ void sweep_command(const SweepArgs& a) {
   options.vtk_every = a.vtk_every;
   options.force = a.force;
   options.quiet = a.quiet;
+  options.log_interval = std::chrono::milliseconds(static_cast<long long>(std::llround(a.log_every * 1e3)));
   app::install_interrupt_handlers();  // SIGINT/SIGTERM: the running cases finish their step, exit 130/143
   const sweep::SweepReport report = sweep::run_sweep(a.case_file, plan, options);
   if (!report.root || a.quiet) return;
@@ -130,8 +134,10 @@ void add_sweep_command(CLI::App& app) {
       "DIR/sweep.csv lists the values, mean lift, mean CL, tip rotation phase and lag, coupling\n"
       "iterations, wall time, folder, status, message, rank and host of each case (a failed case\n"
       "does not stop the others). Run again, it keeps the cases whose summary.json matches their\n"
-      "inputs and runs the rest (--force: all). SIGINT/SIGTERM: the cases under way finish their\n"
-      "step and write summary.json (\"interrupted\"), no other case starts; exit 130/143.\n"
+      "inputs and runs the rest (--force: all). While cases run, stderr shows their steps (a line\n"
+      "redrawn on a terminal; in a log a line every 30 s, --log-every). SIGINT/SIGTERM: the cases\n"
+      "under way finish their step and write summary.json (\"interrupted\"), no other case starts;\n"
+      "exit 130/143.\n"
       "See docs/sweeps.md.");
   cmd->add_option("case", args->case_file, "case file (TOML)")->required();
   cmd->add_option("--vary", args->vary,
@@ -152,6 +158,10 @@ void add_sweep_command(CLI::App& app) {
                   "joint-spring factor for every case (as flapsim run --spring-scale)")
       ->check(positive_number());
   cmd->add_flag("--force", args->force, "run every case, also those an earlier run of the sweep completed");
+  cmd->add_option("--log-every", args->log_every,
+                  "stderr not a terminal (a log): a line on the cases under way every SECONDS without other "
+                  "output (default 30)")
+      ->check(CLI::Range(0.1, 86400.0));
   cmd->add_flag("-q,--quiet", args->quiet, "no progress lines and no table on stdout");
   cmd->callback([args] { sweep_command(*args); });
 }

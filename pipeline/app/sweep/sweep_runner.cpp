@@ -22,6 +22,7 @@
 #include "pipeline/app/sweep/earlier_cases.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/app/sweep/sweep_case.hpp"
+#include "pipeline/app/sweep/sweep_progress.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/folder_lock.hpp"
@@ -52,12 +53,16 @@ int default_threads(const MpiWorld& world, std::size_t cases) {
   return world.active() ? per_rank : std::max(1, std::min<int>(per_rank, static_cast<int>(cases)));
 }
 
-// One line per finished case on stderr.
-void progress_line(std::size_t finished, std::size_t total, const SweepRow& r, double wall) {
-  std::fprintf(stderr, "sweep %zu/%zu  %s  mean lift %.5g N  CL %.3f  %s%s%s  (rank %d, %.1f s)\n", finished,
-               total, describe(r.point).c_str(), r.outcome.results.number("mean_lift_N"),
-               r.outcome.results.number("mean_CL"), r.outcome.status == "ok" ? "ok" : r.outcome.status == "interrupted" ? "INTERRUPTED" : "FAILED",
-               r.outcome.message.empty() ? "" : ": ", r.outcome.message.c_str(), r.outcome.rank, wall);
+// The line of a finished case.
+std::string finished_line(std::size_t finished, std::size_t total, const SweepRow& r, double wall) {
+  const std::string head = "sweep " + std::to_string(finished) + "/" + std::to_string(total) + "  " + describe(r.point);
+  char numbers[128];
+  std::snprintf(numbers, sizeof numbers, "  mean lift %.5g N  CL %.3f  ", r.outcome.results.number("mean_lift_N"),
+                r.outcome.results.number("mean_CL"));
+  const char* status = r.outcome.status == "ok" ? "ok" : r.outcome.status == "interrupted" ? "INTERRUPTED" : "FAILED";
+  char tail[64];
+  std::snprintf(tail, sizeof tail, "  (rank %d, %.1f s)", r.outcome.rank, wall);
+  return head + numbers + status + (r.outcome.message.empty() ? "" : ": ") + r.outcome.message + tail;
 }
 
 // Whether a case's error says that its output found no room: an io::OutputError ("cannot
@@ -142,7 +147,10 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
   }
   share_check(world, true);
 
-  // 2. The cases, over the threads (and ranks).
+  // 2. The cases, over the threads (and ranks), with the progress of those under way.
+  SweepProgress progress(n, report.kept, world.rank(),
+                         options.quiet ? app::ProgressLine::Mode::quiet : app::ProgressLine::Mode::automatic,
+                         options.log_interval);
   report.threads = options.threads > 0 ? options.threads : default_threads(world, todo.size());
   const RunCase run = [&](std::size_t i) {
     omp_set_num_threads(1);  // the cases fill the cores; no nested parallelism
@@ -156,6 +164,12 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       return o;
     }
     const auto t0 = Clock::now();
+    progress.started(i, case_folder(i, n, plan.points[i]));
+    struct Ended {
+      SweepProgress& p;
+      std::size_t i;
+      ~Ended() { p.ended(i); }
+    } ended{progress, i};
     std::vector<std::string> notes;  // the setup's warnings, in a few words (setup_warnings.hpp)
     const auto with_notes = [&notes](std::string message) {
       for (const std::string& n : notes) message += (message.empty() ? "" : "; ") + n;
@@ -172,7 +186,8 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       ro.spring_scale = r.spring_scale;
       ro.wing_overrides = r.wing_overrides;
       ro.vtk_every = options.vtk_every;
-      ro.progress = app::ProgressLine::Mode::quiet;
+      ro.progress = app::ProgressLine::Mode::quiet;  // the sweep's own line shows the step
+      ro.on_step = [&progress, i](long step, long total) { progress.step(i, step, total); };
       ro.before_start = [&notes, &r](const app::FsiSetup& setup) {
         for (const std::string& w : app::setup_warnings(r.c, setup)) notes.push_back(app::warning_headline(w));
       };
@@ -213,7 +228,8 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       last_write = now;
     }
     if (!options.quiet)
-      progress_line(finished, n, rows[i], std::chrono::duration<double>(now - start).count());
+      progress.print_line(finished_line(finished, n, rows[i], std::chrono::duration<double>(now - start).count()),
+                          finished);
     // A case that could not write its files for want of room (a full disk, a quota, a
     // file-size limit): the next cases would fail alike, so the sweep stops (exit status 4)
     // once the case is in the table; the same command resumes it. (A folder that cannot be

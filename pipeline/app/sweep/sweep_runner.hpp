@@ -15,6 +15,7 @@
 /// 4. sweep.csv (sweep_table.hpp) is rewritten atomically as cases finish (after every
 ///    case for tables up to 1000 rows, then at most every 5 s) and at the end.
 
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -34,6 +35,9 @@ struct SweepOptions {
   int vtk_every = 0;             ///< VTK series per case (0 = none, the default for sweeps)
   bool force = false;            ///< run every case, also those an earlier run completed
   bool quiet = false;            ///< no progress lines
+  /// Stderr not a terminal: a line on the cases under way when this long has passed since
+  /// the sweep's last line (sweep_progress.hpp; --log-every).
+  std::chrono::milliseconds log_interval{std::chrono::seconds(30)};
 };
 
 /// The cases of a sweep: the varied keys and one point (their values) per case.

@@ -1,0 +1,31 @@
+#pragma once
+/// \file chain_fem_mismatch.hpp
+/// \brief The warning about a chain that misses the FEM's first bending or torsion mode:
+/// `flapsim reduce` says it when it makes the chain, and records the comparison in the
+/// chain file ([fem_comparison], chain_file.hpp); `run`, `check` and `sweep` of that chain
+/// file repeat it, so a user who runs from a saved chain sees it too (docs/reduction.md).
+
+#include <string>
+
+#include "pipeline/app/fsi_setup.hpp"
+#include "reduction/reduction_report.hpp"
+
+namespace flapsim::app {
+
+/// Chain against FEM, first bending or torsion frequency: beyond this relative error [-]
+/// the chain is said not to represent the wing well. A convention (a beam's first modes
+/// within 10 %), stated in docs/reduction.md.
+inline constexpr double kChainFemMismatch = 0.10;
+
+/// \brief Whether \p m is a mode both models have and the chain misses by more than
+/// kChainFemMismatch.
+bool misses_fem_mode(const reduction::ModeMatch& m);
+
+/// \brief "" or one line for a run from a chain file whose [fem_comparison] says that the
+/// chain misses the FEM's first bending or torsion mode (each kind missed named with its
+/// frequencies, relative error and MAC). With --spring-scale S the chain's frequencies are
+/// those of the file × √S (every spring × S, the masses unchanged), and the error is taken
+/// on them.
+std::string saved_chain_fem_warning(const FsiSetup& setup);
+
+}  // namespace flapsim::app
