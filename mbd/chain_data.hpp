@@ -46,9 +46,9 @@ struct StepWorkspace {
   int last_iterations = 0;              ///< quasi-Newton iterations of the last step
   int last_refreshes = 0;               ///< Jacobian rebuilds in the last step
   long total_refreshes = 0;             ///< Jacobian rebuilds since construction
-  int last_substeps = 1;                ///< pieces the last step was solved in (1: not split)
-  long split_steps = 0;                 ///< steps solved in pieces since construction
-  int max_substeps = 1;                 ///< most pieces of one step since construction
+  int last_substeps = 1;                ///< pieces the last step was solved in (sub-steps and halves)
+  long split_steps = 0;                 ///< steps that needed halving since construction
+  int max_substeps = 1;                 ///< most pieces of one halved step since construction
 };
 
 struct ChainData {

@@ -200,19 +200,15 @@ int solve_in_pieces(const ChainModel& model, ChainData& data, const BaseMotion& 
   return pieces;
 }
 
-}  // namespace
-
-void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
-             const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
-             const Loads& loads, ChainState& next) {
+// One step of dt from `current`: solved whole, else in halves (solve_in_pieces); returns the
+// number of pieces. A failure names current.step and the step's end time.
+int solve_with_halving(const ChainModel& model, ChainData& data, const BaseMotion& base,
+                       const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
+                       const Loads& loads, ChainState& next) {
   const double t1 = current.time + dt;
-  if (!(dt > 0.0) || !std::isfinite(dt))
-    throw ConvergenceFailure("time step must be positive and finite", current.step, t1);
-  StepWorkspace& ws = data.step;
-  ws.last_substeps = 1;
   try {
     solve_step(model, data, base, settings, current, dt, loads, next);
-    return;
+    return 1;
   } catch (const ConvergenceFailure& whole) {
     if (settings.max_step_halvings <= 0) throw;
     int pieces = 0;
@@ -229,7 +225,39 @@ void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
     }
     next.time = t1;
     next.step = current.step + 1;
-    ws.last_substeps = pieces;
+    return pieces;
+  }
+}
+
+}  // namespace
+
+void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
+             const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
+             const Loads& loads, ChainState& next) {
+  const double t1 = current.time + dt;
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw ConvergenceFailure("time step must be positive and finite", current.step, t1);
+  if (settings.substeps < 1)
+    throw std::invalid_argument("generalized-alpha: substeps must be at least 1, got " +
+                                std::to_string(settings.substeps));
+  StepWorkspace& ws = data.step;
+  int pieces = 0;
+  if (settings.substeps == 1) {
+    pieces = solve_with_halving(model, data, base, settings, current, dt, loads, next);
+  } else {
+    // Sub-steps: equal steps of dt / substeps with the same loads, the base at their own times.
+    const double h = dt / settings.substeps;
+    ChainState start = current;
+    for (int i = 0; i < settings.substeps; ++i) {
+      pieces += solve_with_halving(model, data, base, settings, start, h, loads, next);
+      start = next;
+      start.step = current.step;  // the sub-steps belong to the step being solved
+    }
+    next.time = t1;
+    next.step = current.step + 1;
+  }
+  ws.last_substeps = pieces;
+  if (pieces > settings.substeps) {
     ++ws.split_steps;
     ws.max_substeps = std::max(ws.max_substeps, pieces);
   }

@@ -27,7 +27,8 @@
 /// retry, never a first try), so runs that never fail are unchanged to the bit. The pieces
 /// are generalized-α steps of their own size (the scheme's variable-step form: the
 /// algorithmic acceleration carries over), with the base motion at their own times.
-/// ChainData::step.last_substeps says how many pieces the last step took.
+/// ChainData::step.last_substeps says how many pieces the last step took (sub-steps and
+/// halves; split_steps counts the steps that needed halving).
 ///
 /// Re-entrant: advance() reads `current` and writes `next` (they may be the same object);
 /// it never changes `current`, so a coupling can redo a step with updated loads. The
@@ -52,6 +53,10 @@ struct GeneralizedAlphaSettings {
   int max_jacobian_refreshes = 4;   ///< finite-difference rebuilds per step
   /// A failing step is retried in halves down to h / 2^max_step_halvings (0: no retry).
   int max_step_halvings = 6;
+  /// Each step is solved as this many equal steps of h / substeps (≥ 1), loads fixed at the
+  /// step's, the base motion at each sub-step's time: a structure whose fastest modes the
+  /// step h does not resolve, at the cost of the chain only. Each sub-step may be halved.
+  int substeps = 1;
 };
 
 /// The four coefficients of the scheme for a given ρ∞.

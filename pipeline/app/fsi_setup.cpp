@@ -210,6 +210,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
 
   m.chain.gravity = c.structure.gravity;
   m.integrator.rho_infinity = c.numerics.rho_infinity;
+  m.integrator.substeps = c.numerics.structure_substeps;
   const int n = m.chain.num_dofs();
   auto initial = [&](const std::vector<double>& values, int line, const char* key) {
     if (values.empty()) return Eigen::VectorXd();

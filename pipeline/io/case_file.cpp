@@ -117,7 +117,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
                   "wake_sum", "tree_tolerance", "wake_precision", "max_coupling_iterations", "coupling_tolerance",
-                  "rho_infinity"});
+                  "rho_infinity", "structure_substeps"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
   // The product in 64 bits, against a documented maximum (an int would wrap).
@@ -154,6 +154,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.coupling_tolerance =
       t->get_double("coupling_tolerance", n.coupling_tolerance, Bounds{0.0, 1.0, true, true});
   n.rho_infinity = t->get_double("rho_infinity", n.rho_infinity, Bounds::closed(0.0, 1.0));
+  n.structure_substeps = t->get_int("structure_substeps", n.structure_substeps, Bounds::closed(1, 10000));
   return n;
 }
 

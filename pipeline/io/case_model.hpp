@@ -115,6 +115,7 @@ struct Case {
     int max_coupling_iterations = 50;       ///< strong-coupling sub-iterations per step
     double coupling_tolerance = 1e-6;       ///< relative change that ends the sub-iterations
     double rho_infinity = 0.9;              ///< generalized-α spectral radius ρ∞ in [0, 1]
+    int structure_substeps = 1;             ///< chain sub-steps per time step (docs/multibody.md, "Sub-steps")
   } numerics;
 
   struct Output {

@@ -7,7 +7,13 @@
 // cycle run through (peak tip bend 37 … 46°; 1600 and 3200 within 2.5° and 0.44° of 6400).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
@@ -34,3 +40,53 @@ TEST(StepHalvingRun, TheSweptWingWithItsFemBendingStiffnessRunsAtFortyStepsPerCy
 }
 
 }  // namespace
+
+// numerics.structure_substeps: the chain's solve of each step in equal sub-steps with the
+// step's loads. In vacuum there are no loads to hold, so 40 steps per cycle of 40 sub-steps
+// are the same generalized-α steps as 1600 steps per cycle: the joint angles at every
+// 40-step output agree to round-off (measured 1.2e-7°; the 3 cycles' motion is regular, 1600
+// and 3200 steps within 2.5° and 0.44° of 6400). Without sub-steps the same 40 steps per
+// cycle are up to 40° off the 6400-step motion, with them 2.3°.
+TEST(StepHalvingRun, SubStepsOfTheChainEqualTheFinerTimeStepInVacuum) {
+  ScratchDir dir("structure_substeps");
+  write_swept_vacuum_case(dir, 3);
+  const auto run_with = [&](const std::string& name, const std::string& numerics) {
+    std::string text = read_text(dir / "case.toml");
+    text.replace(text.find("steps_per_cycle = 40"), 20, numerics);
+    std::ofstream(dir / (name + ".toml")) << text;
+    const int status = run_flapsim("run " + (dir / (name + ".toml")).string() + " --spring-scale 2.47 -o " +
+                                   (dir / name).string());
+    EXPECT_EQ(status, 0) << name;
+    return read_text(dir / name / "history.csv");
+  };
+  const std::string sub = run_with("sub", "steps_per_cycle = 40\nstructure_substeps = 40");
+  const std::string fine = run_with("fine", "steps_per_cycle = 1600");
+  // Rows of the sub-stepped run against every 40th row of the fine one, joint angle columns.
+  const auto rows = [](const std::string& csv) {
+    std::vector<std::vector<double>> out;
+    std::istringstream in(csv);
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+      std::vector<double> row;
+      std::istringstream cells(line);
+      std::string cell;
+      while (std::getline(cells, cell, ',')) row.push_back(std::strtod(cell.c_str(), nullptr));
+      out.push_back(row);
+    }
+    return out;
+  };
+  const std::string header = sub.substr(0, sub.find('\n'));
+  int first_joint = 0;
+  for (std::size_t p = 0; p < header.find("bend_2_rad"); ++p) first_joint += header[p] == ',';
+  const auto a = rows(sub), b = rows(fine);
+  ASSERT_EQ(a.size(), 120u);   // steps 1 … 120
+  ASSERT_EQ(b.size(), 4800u);  // steps 1 … 4800: step 40 (i + 1) is row 40 i + 39
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_NEAR(a[i][0], b[40 * i + 39][0], 1e-12);  // t [s]
+    for (std::size_t j = static_cast<std::size_t>(first_joint); j < static_cast<std::size_t>(first_joint) + 10; ++j)
+      worst = std::max(worst, std::abs(a[i][j] - b[40 * i + 39][j]));
+  }
+  EXPECT_LT(worst, 1e-8) << "rad";  // round-off of the sub-steps' times against the fine run's
+}
