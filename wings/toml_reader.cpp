@@ -1,4 +1,5 @@
 #include "wings/toml_reader.hpp"
+#include "wings/toml_syntax_error.hpp"
 
 #include <toml++/toml.h>
 
@@ -99,8 +100,10 @@ TomlTable parse_toml_string(std::string_view text, const std::string& name) {
   try {
     doc->root = toml::parse(text, name);
   } catch (const toml::parse_error& e) {
-    throw InputError(name, static_cast<int>(e.source().begin.line), "",
-                     "TOML syntax error: " + std::string(e.description()));
+    const int line = static_cast<int>(e.source().begin.line);
+    const SyntaxErrorContext where = syntax_error_context(text, line);
+    throw InputError(name, line, where.key,
+                     "TOML syntax error: " + std::string(e.description()) + (where.hint.empty() ? "" : "; " + where.hint));
   }
   const void* root = &doc->root;
   return TomlTable(std::move(doc), root, "", 1);

@@ -491,6 +491,10 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Polygon& outline,
 
 bool is_wing_document(const TomlTable& root) { return root.has("planform"); }
 
+namespace {
+void read_wing_keys(const TomlTable& root, Wing& wing);
+}  // namespace
+
 Wing read_wing(TomlTable root) {
   // A case or chain file where a wing file belongs: say what it is rather than list its
   // tables as unknown keys.
@@ -509,6 +513,26 @@ Wing read_wing(TomlTable root) {
                     "veins", "mesh"});
   root.read_length_unit();
   Wing wing;
+  try {
+    read_wing_keys(root, wing);
+  } catch (const OverrideInputError&) {
+    throw;  // a sweep's value: located by the sweep (sweep_case.cpp)
+  } catch (const InputError& e) {
+    // A warning before the error often names its cause (an outline in m under length_unit
+    // = "mm" warned "shorter than any flapping wing", then failed on the mesh size): the
+    // warnings are printed only for a wing that reads, so the error carries them.
+    if (wing.warnings.empty()) throw;
+    std::string note;
+    for (const InputWarning& w : wing.warnings) note += "; perhaps the cause, a warning before it: " + w.text();
+    throw InputError(e.file(), e.line(), e.key(), e.message() + note);
+  }
+  return wing;
+}
+
+namespace {
+
+// The keys of a wing file, in the order they depend on one another; warnings go to wing.warnings.
+void read_wing_keys(const TomlTable& root, Wing& wing) {
   wing.source_file = root.file();
   wing.name = root.get_string("name", std::filesystem::path(root.file()).stem().string());
   if (root.has("description")) root.get_string("description");
@@ -551,7 +575,9 @@ Wing read_wing(TomlTable root) {
     if (wing.mesh.vein_element_size > wing.mesh.element_size * (1 + 1e-12))
       mesh->fail("vein_element_size", "must not exceed element_size");
     if (wing.mesh.element_size > 0.5 * wing.span)
-      mesh->fail("element_size", "must not exceed half the span");
+      mesh->fail("element_size", "must not exceed half the span (element_size " + fmt(wing.mesh.element_size / root.length_scale()) +
+                                     " " + root.length_unit() + ", span " + fmt(wing.span / root.length_scale()) + " " +
+                                     root.length_unit() + ")");
   }
   // The mesh-size budget (mesh_budget.hpp): refused here, before gmsh runs out of memory.
   if (const double n = estimated_mesh_elements(wing); n > kMaxMeshElements) {
@@ -565,8 +591,9 @@ Wing read_wing(TomlTable root) {
     if (mesh) mesh->fail(key, what);
     root.fail("mesh", what);
   }
-  return wing;
 }
+
+}  // namespace
 
 Wing load_wing_file(const std::string& path) { return read_wing(parse_toml_file(path)); }
 

@@ -75,7 +75,8 @@ RunEstimate estimate_run(const io::Case& c, int bodies) {
     const double wake_nodes = (rows + 1.0) * (ns + 1.0);
     const double wake_segments = (rows + 1.0) * ns + rows * (ns + 1.0);
     memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
-    memory += 2.0 * panels * panels * 8;  // influence matrix and its LU
+    e.lattice_bytes = 2.0 * panels * panels * 8;  // influence matrix and its LU
+    memory += e.lattice_bytes;
     // Interactions: at step k the wake has r = min(k, max_rows) rows; the wake's nodes move
     // by their induced velocity (every segment at each node) only in the rows younger than
     // far_wake_cycles or frozen_wake_cycles (the older rows move as a whole or stand:
@@ -138,11 +139,24 @@ double usable_memory_bytes() {
 void refuse_if_it_cannot_fit(const RunEstimate& e, const io::Case& c) {
   const double usable = usable_memory_bytes();
   if (e.memory_bytes <= usable) return;
+  const std::string need = "the run needs about " + bytes_text(e.memory_bytes) + " of memory, more than the " +
+                           bytes_text(usable) + " this machine offers (" + describe(e) + ")";
+  // The lattice's dense matrices grow with the square of its panels, whatever the run's
+  // length: a 400 x 400 lattice needs 410 GB for 2 cycles (before, the message blamed the
+  // cycles and the wake).
+  if (e.lattice_bytes > 0.5 * e.memory_bytes) {
+    const auto& n = c.numerics;
+    const std::string key =
+        n.spanwise_panels >= n.chordwise_panels ? "numerics.spanwise_panels" : "numerics.chordwise_panels";
+    throw InputError(c.file, c.line_of(key), key,
+                     need + "; of it the lattice of " + std::to_string(n.chordwise_panels) + " x " +
+                         std::to_string(n.spanwise_panels) + " panels needs " + bytes_text(e.lattice_bytes) +
+                         " (its influence matrix and LU, 2 x panels^2 numbers): use fewer panels "
+                         "(numerics.chordwise_panels, numerics.spanwise_panels)");
+  }
   throw InputError(c.file, c.line_of("numerics.cycles"), "numerics.cycles",
-                   "the run needs about " + bytes_text(e.memory_bytes) + " of memory, more than the " +
-                       bytes_text(usable) + " this machine offers (" + describe(e) +
-                       "); shorten it (numerics.cycles, numerics.steps_per_cycle) or bound the wake "
-                       "(numerics.wake_max_rows)");
+                   need + "; shorten it (numerics.cycles, numerics.steps_per_cycle) or bound the wake "
+                          "(numerics.wake_max_rows)");
 }
 
 }  // namespace flapsim::app

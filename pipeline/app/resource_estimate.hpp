@@ -26,6 +26,7 @@ struct RunEstimate {
   std::int64_t steps = 0;          ///< time steps
   std::int64_t wake_panels = 0;    ///< largest wake [panels]
   double memory_bytes = 0.0;       ///< peak memory of the run's arrays [B]
+  double lattice_bytes = 0.0;      ///< of it, the lattice's influence matrix and its LU [B]
   double interactions = 0.0;       ///< Biot–Savart segment-point evaluations of the whole run
   double structure_flops = 0.0;    ///< dense chain solves of the whole run [flop]
   double interactions_per_second = 0.0;  ///< the nominal throughput the time assumes [1/s]
@@ -55,8 +56,10 @@ std::string describe(const RunEstimate& e);
 /// limit (ulimit -v) is set.
 double usable_memory_bytes();
 
-/// \throws flapsim::InputError (key numerics.cycles) if the run's memory exceeds
-///         usable_memory_bytes(), naming both and the keys that shrink the run
+/// \throws flapsim::InputError if the run's memory exceeds usable_memory_bytes(), naming
+///         both and the keys that shrink the run: the panel counts (key
+///         numerics.spanwise_panels or chordwise_panels, the larger) when the lattice's
+///         matrices are most of it, else the length of the run (key numerics.cycles)
 void refuse_if_it_cannot_fit(const RunEstimate& e, const io::Case& c);
 
 }  // namespace flapsim::app
