@@ -63,8 +63,10 @@ std::string saved_chain_fem_warning(const FsiSetup& setup) {
     scale_note = buf;
   }
   const std::string wing = setup.chain_fem->wing_file.empty() ? "its wing" : setup.chain_fem->wing_file;
-  return "the chain file " + setup.chain_file + " misses" + missed + scale_note + " (of " + wing +
-         ", as 'flapsim reduce' found when it made the chain): the chain does not represent the wing well (too "
+  const std::string subject = setup.chain_file.empty() ? "the chain reduced in process" : "the chain file " + setup.chain_file;
+  const std::string source = setup.chain_file.empty() ? " (of " + wing + ", as 'flapsim reduce' warns)"
+                                                      : " (of " + wing + ", as 'flapsim reduce' found when it made the chain)";
+  return subject + " misses" + missed + scale_note + source + ": the chain does not represent the wing well (too "
          "few bodies: reduce again with more --bodies; or a beam cannot: a low aspect ratio, a film that "
          "cambers; docs/reduction.md)";
 }

@@ -105,3 +105,22 @@ TEST(SavedChainFemWarning, TheRecordRoundTripsThroughTheChainFile) {
                                     "half.toml"),
                InputError);
 }
+
+// A wing reduced in process (no chain file) is compared with its first FEM modes as reduce
+// does. The first MAV film wing (25 um film) with 4 bodies: first bending +144 %
+// (docs/reduction.md, "Film wings"; reduce's own warning: app.CliMessages.AChainThatMisses…).
+// Before: check and run of such a case said nothing of it.
+TEST(SavedChainFemWarning, AWingReducedInProcessIsComparedAsReduceDoes) {
+  test::ScratchDir dir("saved_chain_fem_in_process");
+  std::ofstream(dir / "case.toml") << "air = \"none\"\nwing = \"" << FLAPSIM_SOURCE_DIR
+                                   << "/wings/mav_film_wing_25um.toml\"\n[kinematics]\nfrequency_hz = 12\n"
+                                      "sweep = { cos_deg = [40.0] }\nrotation = 90.0\n"
+                                      "[structure]\nkind = \"flexible\"\nbodies = 4\n";
+  const auto out = run_flapsim_capturing_stderr(dir.path(), "check " + (dir / "case.toml").string());
+  EXPECT_EQ(out.status, 0) << out.err;
+  EXPECT_NE(out.err.find("flapsim: warning: the chain reduced in process misses the FEM's first bending mode by +14"),
+            std::string::npos)
+      << out.err;
+  EXPECT_NE(out.err.find("as 'flapsim reduce' warns): the chain does not represent the wing well"), std::string::npos)
+      << out.err;
+}
