@@ -145,6 +145,8 @@ inline constexpr auto kRunResults = [] {
                        "lattice solves of the hardest step"},
       ResultDefinition{"coupling_tolerance_rad", "rad", K::number, "%.3g", "",
                        "convergence tolerance of the coupling sub-iterations"},
+      ResultDefinition{"coupling_method", "", K::text, "", "",
+                       "how the sub-iterations update the chain: aitken or iqn_ils (numerics.coupling)"},
       ResultDefinition{"wake_panels", "", K::integer, "", "", "wake panels at the end of the run (in air)"},
       ResultDefinition{"wall_time_s", "s", K::number, "%.1f", "wall time", "wall-clock time of the run"},
   };
