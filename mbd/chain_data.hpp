@@ -46,6 +46,9 @@ struct StepWorkspace {
   int last_iterations = 0;              ///< quasi-Newton iterations of the last step
   int last_refreshes = 0;               ///< Jacobian rebuilds in the last step
   long total_refreshes = 0;             ///< Jacobian rebuilds since construction
+  int last_substeps = 1;                ///< pieces the last step was solved in (1: not split)
+  long split_steps = 0;                 ///< steps solved in pieces since construction
+  int max_substeps = 1;                 ///< most pieces of one step since construction
 };
 
 struct ChainData {

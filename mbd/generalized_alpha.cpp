@@ -4,6 +4,7 @@
 #include "mbd/chain_kinematics.hpp"
 #include "mbd/convergence_failure.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -110,14 +111,12 @@ struct StepProblem {
   }
 };
 
-}  // namespace
 
-void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
-             const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
-             const Loads& loads, ChainState& next) {
+// One generalized-α step of size dt from `current`, solved whole.
+void solve_step(const ChainModel& model, ChainData& data, const BaseMotion& base,
+                const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
+                const Loads& loads, ChainState& next) {
   const double t1 = current.time + dt;
-  if (!(dt > 0.0) || !std::isfinite(dt))
-    throw ConvergenceFailure("time step must be positive and finite", current.step, t1);
   const BasePose pose = base(t1);
   StepProblem p{model, data, pose, current, loads,
                 GeneralizedAlphaCoefficients::from_rho_infinity(settings.rho_infinity), dt};
@@ -180,6 +179,60 @@ void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
   next.v = ws.v;
   next.a = ws.a;
   next.qdd = ws.x;
+}
+
+// The step from `current` over dt in 2^level pieces or more: solved whole if it converges,
+// else as two halves, each split again if it fails, down to level max_step_halvings.
+// Returns the number of pieces used.
+int solve_in_pieces(const ChainModel& model, ChainData& data, const BaseMotion& base,
+                    const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
+                    const Loads& loads, ChainState& next, int level) {
+  try {
+    solve_step(model, data, base, settings, current, dt, loads, next);
+    return 1;
+  } catch (const ConvergenceFailure&) {
+    if (level >= settings.max_step_halvings) throw;
+  }
+  ChainState middle;
+  int pieces = solve_in_pieces(model, data, base, settings, current, 0.5 * dt, loads, middle, level + 1);
+  middle.step = current.step;  // the pieces belong to the step being solved
+  pieces += solve_in_pieces(model, data, base, settings, middle, 0.5 * dt, loads, next, level + 1);
+  return pieces;
+}
+
+}  // namespace
+
+void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
+             const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
+             const Loads& loads, ChainState& next) {
+  const double t1 = current.time + dt;
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw ConvergenceFailure("time step must be positive and finite", current.step, t1);
+  StepWorkspace& ws = data.step;
+  ws.last_substeps = 1;
+  try {
+    solve_step(model, data, base, settings, current, dt, loads, next);
+    return;
+  } catch (const ConvergenceFailure& whole) {
+    if (settings.max_step_halvings <= 0) throw;
+    int pieces = 0;
+    try {
+      pieces = solve_in_pieces(model, data, base, settings, current, 0.5 * dt, loads, next, 1);
+      ChainState first_half = next;
+      first_half.step = current.step;
+      pieces += solve_in_pieces(model, data, base, settings, first_half, 0.5 * dt, loads, next, 1);
+    } catch (const ConvergenceFailure& split) {
+      throw ConvergenceFailure(whole.reason() + "; split into pieces down to 1/" +
+                                   std::to_string(1 << settings.max_step_halvings) +
+                                   " of the step, still: " + split.reason(),
+                               current.step, t1);
+    }
+    next.time = t1;
+    next.step = current.step + 1;
+    ws.last_substeps = pieces;
+    ++ws.split_steps;
+    ws.max_substeps = std::max(ws.max_substeps, pieces);
+  }
 }
 
 }  // namespace flapsim::mbd

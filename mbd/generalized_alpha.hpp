@@ -18,8 +18,16 @@
 ///
 /// The unknown Φ̈_{n+1} is found by Broyden's method ("good" update of the Jacobian)
 /// starting from a finite-difference Jacobian kept from step to step; when an iteration
-/// fails to halve the residual the Jacobian is rebuilt by finite differences. A step
-/// that still does not converge, or produces NaN/Inf, throws ConvergenceFailure.
+/// fails to halve the residual the Jacobian is rebuilt by finite differences.
+///
+/// Step halving: a step whose solve does not converge (or turns NaN/Inf) is solved again
+/// as two steps of h/2 from the same state with the same loads, each of them halved again
+/// if it fails, down to h / 2^max_step_halvings; only then ConvergenceFailure is thrown.
+/// A step that converges whole is solved exactly as without halving (the pieces are a
+/// retry, never a first try), so runs that never fail are unchanged to the bit. The pieces
+/// are generalized-α steps of their own size (the scheme's variable-step form: the
+/// algorithmic acceleration carries over), with the base motion at their own times.
+/// ChainData::step.last_substeps says how many pieces the last step took.
 ///
 /// Re-entrant: advance() reads `current` and writes `next` (they may be the same object);
 /// it never changes `current`, so a coupling can redo a step with updated loads. The
@@ -42,6 +50,8 @@ struct GeneralizedAlphaSettings {
   double tolerance = 1e-10;
   int max_iterations = 50;          ///< quasi-Newton iterations per step
   int max_jacobian_refreshes = 4;   ///< finite-difference rebuilds per step
+  /// A failing step is retried in halves down to h / 2^max_step_halvings (0: no retry).
+  int max_step_halvings = 6;
 };
 
 /// The four coefficients of the scheme for a given ρ∞.
@@ -75,7 +85,8 @@ ChainState make_initial_state(const ChainModel& model, ChainData& data, const Ba
 ///               their moment arms follow the end-of-step pose)
 /// On return data holds the kinematics of `next` (poses, velocities, full accelerations),
 /// so points fixed in bodies can be read with point_position / point_velocity.
-/// \throws ConvergenceFailure naming step index (current.step) and time (current.time + dt)
+/// \throws ConvergenceFailure naming step index (current.step) and time (current.time + dt),
+///         when the step does not converge even in 2^max_step_halvings pieces
 void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
              const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
              const Loads& loads, ChainState& next);

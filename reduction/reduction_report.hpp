@@ -25,10 +25,18 @@ struct ModeMatch {
   double mac = 0.0;                     ///< modal assurance criterion of the sampled shapes [-]
 };
 
-/// One static response in both models.
+/// One static response in both models, read with the chain's own coordinates: the FEM's
+/// station motion u under the load case mapped to joint angles Φ = T u (the map that
+/// defines the chain's joint stiffness, joint_stiffness.hpp) and read with the chain's
+/// kinematics at the same point as the chain's (docs/reduction.md, "Checking the chain
+/// against the FEM").
 struct StaticMatch {
   double fem = 0.0, chain = 0.0;  ///< [m] or [rad]
   double relative_error = 0.0;    ///< chain / FEM − 1 [-]
+  /// The FEM's section fit at the same position (section_fit.hpp: every band node with
+  /// equal weight, camber terms), shown beside: on a wing whose sections are not rigid
+  /// (film beyond a rod) it measures something else than the chain's stations [m] or [rad].
+  double fem_section_fit = 0.0;
 };
 
 struct ChainFemComparison {

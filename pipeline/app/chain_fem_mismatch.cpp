@@ -9,6 +9,37 @@ bool misses_fem_mode(const reduction::ModeMatch& m) {
   return m.found && std::isfinite(m.relative_error) && std::abs(m.relative_error) > kChainFemMismatch;
 }
 
+bool misses_fem_static(const reduction::StaticMatch& m) {
+  return std::isfinite(m.relative_error) && std::abs(m.relative_error) > kChainFemStaticMismatch;
+}
+
+std::string static_mismatch_warning(const reduction::ChainFemComparison& c, const std::string& report) {
+  std::string missed;
+  struct Row {
+    const char* name;
+    const char* unit;
+    const reduction::StaticMatch* m;
+  };
+  for (const Row& r : {Row{"tip deflection under the tip force", "m", &c.tip_deflection},
+                       Row{"bending rotation under the tip moment", "rad", &c.tip_bending_rotation},
+                       Row{"twist under the tip torque", "rad", &c.tip_twist}}) {
+    if (!misses_fem_static(*r.m)) continue;
+    char text[200];
+    std::snprintf(text, sizeof text, "%s%s %+.1f %% (chain %.4g %s, FEM %.4g %s)", missed.empty() ? "" : "; ", r.name,
+                  100.0 * r.m->relative_error, r.m->chain, r.unit, r.m->fem, r.unit);
+    missed += text;
+  }
+  if (missed.empty()) return "";
+  char where[64];
+  std::snprintf(where, sizeof where, "%.2f mm", c.measure_s * 1e3);
+  return "the chain's static response differs from the FEM's under the same tip load, at s = " + std::string(where) +
+         ": " + missed +
+         ". The chain takes a load on a body as a wrench at its joints; the FEM answers to where on the body "
+         "it acts as well: too few bodies for the load (try more --bodies), or a wing that is not one beam (film "
+         "beyond a rod that carries the load chordwise, a swept wing: more bodies converge slowly), and the chain's "
+         "runs inherit the error (docs/reduction.md, \"Measured limitation\"); see " + report;
+}
+
 std::string saved_chain_fem_warning(const FsiSetup& setup) {
   if (!setup.chain_fem) return "";
   const double factor = std::sqrt(setup.spring_scale);  // ω ∝ √k at fixed masses
@@ -32,8 +63,10 @@ std::string saved_chain_fem_warning(const FsiSetup& setup) {
     scale_note = buf;
   }
   const std::string wing = setup.chain_fem->wing_file.empty() ? "its wing" : setup.chain_fem->wing_file;
-  return "the chain file " + setup.chain_file + " misses" + missed + scale_note + " (of " + wing +
-         ", as 'flapsim reduce' found when it made the chain): the chain does not represent the wing well (too "
+  const std::string subject = setup.chain_file.empty() ? "the chain reduced in process" : "the chain file " + setup.chain_file;
+  const std::string source = setup.chain_file.empty() ? " (of " + wing + ", as 'flapsim reduce' warns)"
+                                                      : " (of " + wing + ", as 'flapsim reduce' found when it made the chain)";
+  return subject + " misses" + missed + scale_note + source + ": the chain does not represent the wing well (too "
          "few bodies: reduce again with more --bodies; or a beam cannot: a low aspect ratio, a film that "
          "cambers; docs/reduction.md)";
 }

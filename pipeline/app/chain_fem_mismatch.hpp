@@ -3,7 +3,8 @@
 /// \brief The warning about a chain that misses the FEM's first bending or torsion mode:
 /// `flapsim reduce` says it when it makes the chain, and records the comparison in the
 /// chain file ([fem_comparison], chain_file.hpp); `run`, `check` and `sweep` of that chain
-/// file repeat it, so a user who runs from a saved chain sees it too (docs/reduction.md).
+/// file repeat it, so a user who runs from a saved chain sees it too, and say it of a wing
+/// they reduce in process (structure_source.cpp compares it as reduce does; docs/reduction.md).
 
 #include <string>
 
@@ -21,8 +22,22 @@ inline constexpr double kChainFemMismatch = 0.10;
 /// kChainFemMismatch.
 bool misses_fem_mode(const reduction::ModeMatch& m);
 
-/// \brief "" or one line for a run from a chain file whose [fem_comparison] says that the
-/// chain misses the FEM's first bending or torsion mode (each kind missed named with its
+/// Chain against FEM, a static row of report.md (tip deflection under the tip force, bending
+/// rotation under the tip moment, twist under the tip torque, both read in the chain's
+/// coordinates): beyond this relative error [-] reduce warns. The same convention as the
+/// modes (docs/reduction.md, "Checking the chain against the FEM").
+inline constexpr double kChainFemStaticMismatch = 0.10;
+
+/// \brief Whether the chain's static response \p m misses the FEM's by more than
+/// kChainFemStaticMismatch (a FEM value of 0, whose error is NaN, is not a miss).
+bool misses_fem_static(const reduction::StaticMatch& m);
+
+/// \brief "" or reduce's warning about the static rows the chain misses (each named with both
+/// values and its error; docs/reduction.md, "Measured limitation"), pointing at \p report.
+std::string static_mismatch_warning(const reduction::ChainFemComparison& c, const std::string& report);
+
+/// \brief "" or one line for a run whose chain misses the FEM's first bending or torsion
+/// mode: a chain file whose [fem_comparison] says so, or a wing reduced in process (each kind missed named with its
 /// frequencies, relative error and MAC). With --spring-scale S the chain's frequencies are
 /// those of the file × √S (every spring × S, the masses unchanged), and the error is taken
 /// on them.

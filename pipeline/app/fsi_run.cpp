@@ -30,12 +30,16 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
     fsi::coupled_step(model, data, setup.dt);
     recorder.record(data);
     fsi::shed_wake(model, data);
+    // Chain solves split in halves so far (step halving, mbd/generalized_alpha.hpp): shown once there are any.
+    char split[48] = "";
+    if (data.chain.step.split_steps > 0)
+      std::snprintf(split, sizeof split, "%shalved=%ld", model.air ? "  " : "", data.chain.step.split_steps);
     if (model.air) {
-      char extra[96];
-      std::snprintf(extra, sizeof extra, "CL=%.3f  iterations=%d", recorder.last().cl, data.last_iterations);
+      char extra[144];
+      std::snprintf(extra, sizeof extra, "CL=%.3f  iterations=%d%s", recorder.last().cl, data.last_iterations, split);
       progress.update(data.step, data.state.time, extra);
     } else {
-      progress.update(data.step, data.state.time);
+      progress.update(data.step, data.state.time, split);
     }
     if (on_step) on_step(data.step, static_cast<long>(setup.steps));
     // SIGINT/SIGTERM: the step is complete and recorded; stop here (interruption.hpp).

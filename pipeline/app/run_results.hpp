@@ -147,6 +147,12 @@ inline constexpr auto kRunResults = [] {
                        "convergence tolerance of the coupling sub-iterations"},
       ResultDefinition{"coupling_method", "", K::text, "", "",
                        "how the sub-iterations update the chain: aitken or iqn_ils (numerics.coupling)"},
+      ResultDefinition{"split_structural_steps", "", K::integer, "", "",
+                       "chain solves of a step (in air one per coupling sub-iteration) that did not "
+                       "converge whole and were solved in halves (docs/multibody.md, step halving); set "
+                       "only when one was"},
+      ResultDefinition{"max_structural_pieces", "", K::integer, "", "",
+                       "most pieces one such solve took (2 … 64); set only with split_structural_steps"},
       ResultDefinition{"wake_panels", "", K::integer, "", "", "wake panels at the end of the run (in air)"},
       ResultDefinition{"wall_time_s", "s", K::number, "%.1f", "wall time", "wall-clock time of the run"},
   };
@@ -232,6 +238,11 @@ inline constexpr std::array kRunReport = {
     ReportLine{"coupling: {mean_coupling_iterations} sub-iterations per step on average "
                "(max {max_coupling_iterations})",
                [](const RunResults& r) { return r.integer("max_coupling_iterations") > 1; }},
+    ReportLine{"structure: {split_structural_steps} chain solves did not converge whole and were solved in "
+               "halves (up to {max_structural_pieces} pieces): the chain moves too fast for the time step "
+               "there; check the results with more "
+               "steps_per_cycle (docs/multibody.md, \"Step halving\")",
+               [](const RunResults& r) { return r.has("split_structural_steps"); }},
     ReportLine{"rotation phase: base {base_rotation_phase}, tip {tip_rotation_phase}; "
                "tip alpha lag {tip_rotation_lag} of the period"},
 };

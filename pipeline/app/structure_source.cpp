@@ -8,10 +8,16 @@
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "reduction/reduction_failure.hpp"
 #include "reduction/chain_lumping.hpp"
+#include "reduction/reduction_report.hpp"
 #include "reduction/clamped_wing_analysis.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::app {
+
+namespace {
+// FEM modes computed to compare a chain reduced in process with its wing (reduce's default --modes).
+constexpr int kComparedFemModes = 12;
+}  // namespace
 
 StructureChoice choose_structure(const io::Case& c, const std::string& chain_override,
                                  const wings::Wing* wing) {
@@ -46,7 +52,19 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
     const fem::WingFem fem = fem::build_wing_fem(*wing);
     const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp, {});
     try {
-      s.chain = reduction::lump_into_chain(analysis, c.structure.bodies).chain;
+      const reduction::LumpedChain lumped = reduction::lump_into_chain(analysis, c.structure.bodies);
+      s.chain = lumped.chain;
+      // The chain against the wing's first FEM modes, as reduce compares them (its default
+      // 12 modes; about 0.5 s for the hawkmoth): run and check warn as reduce does. A modal
+      // solve that fails leaves the run without the comparison, not without its chain.
+      try {
+        const fem::WingModes modes = fem::wing_modes(fem, kComparedFemModes);
+        const reduction::ChainFemComparison cmp =
+            reduction::compare_chain_with_fem(analysis, lumped, modes.modes, modes.kinds);
+        s.chain_fem = io::ChainFemRecord{c.wing_file, cmp.bending, cmp.torsion};
+      } catch (const std::exception&) {
+        s.chain_fem.reset();
+      }
       if (analysis.fitted_axis_rejected())
         std::fprintf(stderr,
                      "flapsim: note: the fitted axis of %s left the planform (a swept wing?); the chain's axis is "

@@ -19,7 +19,9 @@ struct StructureChoice {
   mbd::ChainModel chain;
   std::string description;  ///< e.g. "chain file out/hawkmoth/chain.toml (10 bodies)"
   std::string chain_file;   ///< the chain file read ("" for a rigid wing or one reduced in process)
-  std::optional<io::ChainFemRecord> chain_fem;  ///< its [fem_comparison], if it has one
+  /// The chain against the wing's FEM modes: a chain file's [fem_comparison], if it has
+  /// one; for a wing reduced in process, computed here as reduce does.
+  std::optional<io::ChainFemRecord> chain_fem;
 };
 
 /// \brief Chooses and builds the structure of a case (see the file comment).

@@ -11,7 +11,7 @@ bool reduces_wing_in_process(const io::Case& c, const std::string& chain_file) {
 }
 
 std::string setup_stage_name(const io::Case& c, const std::string& chain_file) {
-  return reduces_wing_in_process(c, chain_file) ? "setup (the wing's FEM and reduction)" : "setup";
+  return reduces_wing_in_process(c, chain_file) ? "setup (the wing's FEM, reduction and modes)" : "setup";
 }
 
 FsiSetup build_fsi_setup_watched(const io::Case& c, const SetupOptions& options, const std::string& command,

@@ -2,6 +2,7 @@
 
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
+#include "pipeline/io/input_hash.hpp"
 #include "wings/input_error.hpp"
 #include "wings/toml_reader.hpp"
 
@@ -47,9 +48,18 @@ std::string toml_escape(const std::string& text) {
   return out;
 }
 
+// The fingerprint of a chain's numbers: FNV-1a 64 of its chain-file text without a
+// [fem_comparison] (the text round-trips the numbers exactly), 16 hex digits.
+std::string chain_fingerprint(const mbd::ChainModel& chain) {
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx",
+                static_cast<unsigned long long>(fnv1a_64(format_chain_file(chain, nullptr))));
+  return buf;
+}
+
 // [fem_comparison]: each kind's three numbers, all or none.
 ChainFemRecord parse_fem_comparison(const TomlTable& t) {
-  t.expect_only({"wing", "bending_chain_hz", "bending_fem_hz", "bending_mac", "torsion_chain_hz", "torsion_fem_hz",
+  t.expect_only({"wing", "chain_fingerprint", "bending_chain_hz", "bending_fem_hz", "bending_mac", "torsion_chain_hz", "torsion_fem_hz",
                  "torsion_mac"});
   ChainFemRecord r;
   r.wing_file = t.get_string("wing", "");
@@ -164,7 +174,13 @@ mbd::ChainModel parse_chain(const TomlTable& root, std::optional<ChainFemRecord>
   }
   if (auto t = root.find_table("fem_comparison")) {
     ChainFemRecord r = parse_fem_comparison(*t);
-    if (fem) *fem = std::move(r);
+    // A chain changed after reduce compared it (springs edited by hand): the record no
+    // longer describes it and is dropped.
+    const bool same_chain = !t->has("chain_fingerprint") || t->get_string("chain_fingerprint") == chain_fingerprint(chain);
+    if (fem) {
+      if (same_chain) *fem = std::move(r);
+      else fem->reset();
+    }
   } else if (fem) {
     fem->reset();
   }
@@ -225,7 +241,9 @@ std::string format_chain_file(const mbd::ChainModel& chain, const ChainFemRecord
     s << "\n# The chain against the FEM of its wing, as 'flapsim reduce' found it (its report.md has the whole\n"
       << "# comparison); 'flapsim run' and 'check' of this chain repeat a miss of over 10 % (docs/reduction.md).\n"
       << "[fem_comparison]\n"
-      << "wing = \"" << toml_escape(fem->wing_file) << "\"\n";
+      << "wing = \"" << toml_escape(fem->wing_file) << "\"\n"
+      << "chain_fingerprint = \"" << chain_fingerprint(chain)
+      << "\"   # of the chain's numbers above and below: a chain edited since is not described by this table\n";
     for (auto [kind, m] : {std::pair{"bending", &fem->bending}, std::pair{"torsion", &fem->torsion}}) {
       if (!m->found) {
         s << "# no " << kind << " mode among the FEM modes computed\n";

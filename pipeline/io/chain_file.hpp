@@ -26,6 +26,8 @@
 ///   twist_rest = 0.0                  # optional [rad]
 ///   [fem_comparison]                  # optional, written by flapsim reduce (see ChainFemRecord)
 ///   wing = "wings/x.toml"
+///   chain_fingerprint = "0123456789abcdef"   # FNV-1a 64 of the chain's numbers (optional):
+///                                            # a chain edited since drops the table
 ///   bending_chain_hz = 72.1           # first bending mode of the chain and of the FEM [Hz]
 ///   bending_fem_hz = 70.4
 ///   bending_mac = 0.998               # modal assurance criterion of the two shapes [-]

@@ -177,7 +177,13 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
   static_row("tip bending rotation under the tip moment [rad]", c.tip_bending_rotation);
   static_row("tip twist under the tip torque [rad]", c.tip_twist);
   s << "\nStatic responses at s = " << c.measure_s
-    << " m (mid-point of the outermost body clear of the loaded tip zone); the FEM load cases of the beam extraction, the same wrenches on the chain.\n\n"
+    << " m (mid-point of the outermost body clear of the loaded tip zone); the FEM load cases of the beam extraction, "
+       "the same wrenches on the chain. Both read in the chain's coordinates: the FEM's station motion mapped to joint "
+       "angles (the map that defines K), then the chain's kinematics at that point (docs/reduction.md, \"Checking the "
+       "chain against the FEM\"). The FEM's section fit there (every node alike, camber terms) gives w = "
+    << c.tip_deflection.fem_section_fit << " m, theta = " << c.tip_bending_rotation.fem_section_fit
+    << " rad, twist = " << c.tip_twist.fem_section_fit
+    << " rad: far from the rows' FEM values where the sections are not rigid (film beyond a rod).\n\n"
     << "## FEM modes\n\nKind from the stations' motion (docs/reduction.md, \"Mode kinds from the stations\"); "
        "beam share: the share of the motion the stations' rigid sections carry; shape: the FEM's own "
        "shape classification.\n\n| mode | f [Hz] | kind | beam share | shape |\n|---|---|---|---|---|\n";
@@ -258,6 +264,9 @@ void write_reduction_summary(const fs::path& path, const reduction::BeamProperti
   j.set("tip_twist_fem_rad", c.tip_twist.fem);
   j.set("tip_twist_chain_rad", c.tip_twist.chain);
   j.set("tip_twist_relative_error", c.tip_twist.relative_error);
+  j.set("tip_deflection_fem_section_fit_m", c.tip_deflection.fem_section_fit);
+  j.set("tip_rotation_fem_section_fit_rad", c.tip_bending_rotation.fem_section_fit);
+  j.set("tip_twist_fem_section_fit_rad", c.tip_twist.fem_section_fit);
   j.write(path);
 }
 

@@ -1,6 +1,6 @@
 // `flapsim check` of a case whose wing is reduced in process builds the chain as `run` does
 // (its FEM: seconds to a minute). Before: check showed nothing meanwhile (run shows "run:
-// setup (the wing's FEM and reduction) (stage 1 of 1): 14 s, 14 s in all"), and Ctrl-C
+// setup (the wing's FEM, reduction and modes) (stage 1 of 1): 14 s, 14 s in all"), and Ctrl-C
 // killed it by the signal's default action (no message, no exit status 130). Now the setup
 // is watched as run's is (pipeline/app/watched_setup.hpp, stage_monitor.hpp).
 #include <gtest/gtest.h>
@@ -46,7 +46,7 @@ TEST(CheckProgress, TheSetupOfAWingReducedInProcessIsShownAsRunShowsIt) {
   const std::string text = file_contents(f);
   std::fclose(f);
   EXPECT_EQ(setup.model.chain.num_bodies(), 2);
-  EXPECT_EQ(text.rfind("check: setup (the wing's FEM and reduction) (stage 1 of 1): ", 0), 0u) << text;
+  EXPECT_EQ(text.rfind("check: setup (the wing's FEM, reduction and modes) (stage 1 of 1): ", 0), 0u) << text;
 }
 
 // The fine plate of StageSignals (0.25 mm mesh, 14,748 triangles, ~3 s of FEM): SIGINT
@@ -80,7 +80,7 @@ TEST(CheckProgress, SigintDuringChecksReductionEndsItWithStatus130) {
   ::waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status)) << "ended by the signal's default action";
   EXPECT_EQ(WEXITSTATUS(status), 130) << read_text(err);
-  EXPECT_NE(read_text(err).find("flapsim: check interrupted by SIGINT during setup (the wing's FEM and reduction)"),
+  EXPECT_NE(read_text(err).find("flapsim: check interrupted by SIGINT during setup (the wing's FEM, reduction and modes)"),
             std::string::npos)
       << read_text(err);
 }

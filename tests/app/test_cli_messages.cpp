@@ -74,11 +74,13 @@ TEST(CliMessages, AChainThatMissesTheFemIsWarnedAbout) {
   EXPECT_EQ(mav.status, 0);
   EXPECT_NE(mav.err.find("warning: the chain's first bending mode differs from the FEM's by +1"), std::string::npos)
       << mav.err;
-  // A plate the chain follows (-3 % / -1 %): no warning.
+  // A plate whose first modes the chain follows (-3 % / -1 %): no mode warning. (Its static rows,
+  // 2 bodies over a 10 mm plate with the loaded tip zone inside the measured body, miss by
+  // -44 % / +65 % and are warned about on their own: test_static_mismatch_warning.cpp.)
   const FlapsimOutcome tiny = run_flapsim_capturing_stderr(dir.path(), "reduce " + kSourceDir + "/tests/data/valid_tiny_wing.toml --bodies 2 "
                                                     "--modes 4 -o " + (dir / "tiny").string());
   EXPECT_EQ(tiny.status, 0);
-  EXPECT_EQ(tiny.err.find("warning"), std::string::npos) << tiny.err;
+  EXPECT_EQ(tiny.err.find("mode differs"), std::string::npos) << tiny.err;
 }
 
 TEST(CliMessages, ChainAndSpringOptionsOfARigidCaseAreSaidToBeUnused) {

@@ -18,6 +18,7 @@
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "one_joint_chain.hpp"
+#include "swept_wing.hpp"
 
 using namespace flapsim::test;
 
@@ -45,17 +46,7 @@ TEST(LargeMotionFailure, TheFlappingsInertiaBeyondThirtyDegreesIsWarnedBeforeThe
 
 TEST(LargeMotionFailure, ASweptWingsFailureNamesTheJointAndTheAngles) {
   ScratchDir dir("swept_failure");
-  std::ofstream(dir / "swept.toml")
-      << "length_unit = \"mm\"\n[planform]\noutline = [[3, 0], [-8, 30], [-14, 32], [-16, 28], [-8, 0]]\n"
-         "clamp_y = 0.5\n[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.38\ndensity = 1390.0\n"
-         "[materials.carbon]\nyoungs_modulus = 1.2e11\npoisson_ratio = 0.3\ndensity = 1600.0\n"
-         "[membrane]\nthickness = 0.015\nmaterial = \"film\"\n[[veins]]\nname = \"spar\"\n"
-         "shape = \"solid_circle\"\npoints = [[2.5, 0.2], [-8.5, 29.5]]\ndiameter = [0.8, 0.4]\nmaterial = \"carbon\"\n";
-  std::ofstream(dir / "case.toml")
-      << "air = \"none\"\nwing = \"swept.toml\"\n[kinematics]\nfrequency_hz = 20\n"
-         "sweep = { mean_deg = 0.0, cos_deg = [55.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
-         "[structure]\nkind = \"flexible\"\nbodies = 6\n[numerics]\nsteps_per_cycle = 40\ncycles = 1\n"
-         "[output]\nvtk_every = 0\n";
+  write_swept_vacuum_case(dir, 1);
   const FlapsimOutcome run =
       run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(run.status, 3) << run.err;
