@@ -226,6 +226,9 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   m.initial_v = initial(c.structure.initial_rates, c.structure.initial_rates_line, "initial_rates_deg_per_s");
   m.base = mbd::make_base_motion(c.kinematics);
   m.frequency = c.kinematics.frequency;
+  m.coupling.method = c.numerics.coupling == io::CouplingMethod::InterfaceQuasiNewton
+                          ? fsi::CouplingMethod::InterfaceQuasiNewton
+                          : fsi::CouplingMethod::Aitken;
   m.coupling.max_iterations = c.numerics.max_coupling_iterations;
   m.coupling.tolerance = c.numerics.coupling_tolerance;
   m.external_loads = point_loads(c);

@@ -234,6 +234,8 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   r.set("mean_coupling_iterations", samples_.empty() ? 0.0 : iterations / samples_.size());
   r.set("max_coupling_iterations", max_iterations);
   r.set("coupling_tolerance_rad", setup_.model.coupling.tolerance);
+  r.set("coupling_method", setup_.model.coupling.method == fsi::CouplingMethod::InterfaceQuasiNewton
+                               ? std::string("iqn_ils") : std::string("aitken"));
   if (data.chain.step.split_steps > 0) {
     r.set("split_structural_steps", data.chain.step.split_steps);
     r.set("max_structural_pieces", data.chain.step.max_substeps);

@@ -145,6 +145,8 @@ inline constexpr auto kRunResults = [] {
                        "lattice solves of the hardest step"},
       ResultDefinition{"coupling_tolerance_rad", "rad", K::number, "%.3g", "",
                        "convergence tolerance of the coupling sub-iterations"},
+      ResultDefinition{"coupling_method", "", K::text, "", "",
+                       "how the sub-iterations update the chain: aitken or iqn_ils (numerics.coupling)"},
       ResultDefinition{"split_structural_steps", "", K::integer, "", "",
                        "chain solves of a step (in air one per coupling sub-iteration) that did not "
                        "converge whole and were solved in halves (docs/multibody.md, step halving); set "

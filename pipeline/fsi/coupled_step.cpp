@@ -15,7 +15,8 @@ namespace flapsim::fsi {
 FsiData::FsiData(const FsiModel& model)
     : chain(model.chain),
       loads(model.chain.num_bodies()),
-      aitken(model.coupling.first_relaxation) {
+      aitken(model.coupling.first_relaxation),
+      quasi_newton(model.chain.num_dofs()) {
   if (model.air) {
     lattice.emplace(model.lattice);
     nodes.setZero(3, model.lattice.nodes());
@@ -73,11 +74,62 @@ void chain_step(const FsiModel& model, FsiData& data, double dt) {
                data.trial);
 }
 
+// (Φ, Φ̇, Φ̈, a) as one vector, and back (time and step stay those of `to`).
+void stack(const mbd::ChainState& s, Eigen::VectorXd& x) {
+  const Eigen::Index n = s.q.size();
+  x.resize(4 * n);
+  x << s.q, s.v, s.qdd, s.a;
+}
+void unstack(const Eigen::VectorXd& x, mbd::ChainState& to) {
+  const Eigen::Index n = to.q.size();
+  to.q = x.segment(0, n);
+  to.v = x.segment(n, n);
+  to.qdd = x.segment(2 * n, n);
+  to.a = x.segment(3 * n, n);
+}
+
 double change(const FsiModel& model, const mbd::ChainState& a, const mbd::ChainState& b) {
   const double rate_scale = 2.0 * std::numbers::pi * model.frequency;  // [rad/s] per flapping radian
   const double dq = (a.q - b.q).lpNorm<Eigen::Infinity>();
   const double dv = (a.v - b.v).lpNorm<Eigen::Infinity>() / rate_scale;
   return std::max(dq, dv);
+}
+
+// Sub-iterations from data.relaxed (steps 1–3 of the file comment) until the structure stops
+// changing or k reaches k + limit; k counts the step's lattice solves, delta the last change.
+bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, double t1,
+                 CouplingMethod method, int limit, int& k, double& delta) {
+  const int last = k + limit;
+  bool first = k == 0;
+  while (k < last) {
+    // 1. lattice on the relaxed iterate
+    if (!first)
+      mbd::forward_kinematics(model.chain, data.chain, model.base(t1), data.relaxed.q, data.relaxed.v);
+    // (first of the step: data.chain already holds the kinematics of the predictor = relaxed)
+    first = false;
+    solve_air(model, data, dt, step, t1);
+    ++k;
+    // 2. chain step with these loads
+    assemble_loads(model, data, t1);
+    chain_step(model, data, dt);
+    // 3. converged?
+    delta = change(model, data.trial, data.relaxed);
+    if (!std::isfinite(delta)) throw NumericalFailure("coupling produced a non-finite chain state", step, t1);
+    if (delta <= model.coupling.tolerance) return true;
+    data.residual = data.trial.qdd - data.relaxed.qdd;
+    bool updated = false;
+    if (method == CouplingMethod::InterfaceQuasiNewton) {
+      stack(data.trial, data.stacked_trial);
+      updated = data.quasi_newton.next(data.residual, data.stacked_trial, data.stacked_next);
+      if (updated) {
+        unstack(data.stacked_next, data.relaxed);
+        data.relaxed.time = data.trial.time;
+        data.relaxed.step = data.trial.step;
+      }
+    }
+    if (!updated) relax(data.relaxed, data.trial, data.aitken.next(data.residual));
+  }
+  return false;
 }
 
 }  // namespace
@@ -134,37 +186,21 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
       chain_step(model, data, dt);
       data.relaxed = data.trial;
       data.aitken.start_step();
-      bool converged = false;
+      data.quasi_newton.start_step();
       int k = 0;
       double delta = 0.0;
-      while (k < model.coupling.max_iterations) {
-        // 1. lattice on the relaxed iterate
-        if (k > 0)
-          mbd::forward_kinematics(model.chain, data.chain, model.base(t1), data.relaxed.q,
-                                  data.relaxed.v);
-        // (for k = 0 data.chain already holds the kinematics of the predictor = relaxed)
-        solve_air(model, data, dt, step, t1);
-        ++k;
-        // 2. chain step with these loads
-        assemble_loads(model, data, t1);
-        chain_step(model, data, dt);
-        // 3. converged?
-        delta = change(model, data.trial, data.relaxed);
-        if (!std::isfinite(delta))
-          throw NumericalFailure("coupling produced a non-finite chain state", step, t1);
-        if (delta <= model.coupling.tolerance) {
-          converged = true;
-          break;
-        }
-        data.residual = data.trial.qdd - data.relaxed.qdd;
-        relax(data.relaxed, data.trial, data.aitken.next(data.residual));
-      }
+      const bool converged = sub_iterate(model, data, dt, step, t1, model.coupling.method,
+                                         model.coupling.max_iterations, k, delta);
       data.last_iterations = k;
       data.last_change = delta;
       if (!converged)
         throw NumericalFailure("strong coupling did not converge in " + std::to_string(k) +
                                    " sub-iterations (structure change " + significant(delta) +
-                                   " rad, tolerance " + significant(model.coupling.tolerance) + ")",
+                                   " rad, tolerance " + significant(model.coupling.tolerance) + ")" +
+                                   (model.coupling.method == CouplingMethod::Aitken
+                                        ? std::string("; a light wing may converge with numerics.coupling = "
+                                                      "\"iqn_ils\" (docs/fsi.md, \"Coupling\")")
+                                        : std::string()),
                                step, t1);
       // 4. accept the chain's answer; data.chain holds its kinematics (mbd::advance).
       data.state = data.trial;

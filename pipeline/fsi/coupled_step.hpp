@@ -15,7 +15,9 @@
 ///     (angles in radians, rates in radians per flapping radian); else
 ///     s̃ᵏ⁺¹ = s̃ᵏ + ωₖ (ŝᵏ⁺¹ − s̃ᵏ) with Aitken's ωₖ on Φ̈ (Φ, Φ̇ and the algorithmic
 ///     acceleration are affine in Φ̈ within a step, so relaxing all of them with one ω
-///     keeps the state a consistent generalized-α state) and back to 1;
+///     keeps the state a consistent generalized-α state) and back to 1; with
+///     CouplingMethod::InterfaceQuasiNewton, from the second sub-iteration on, s̃ᵏ⁺¹ is
+///     the IQN-ILS combination of the step's answers ŝ (interface_quasi_newton.hpp);
 ///  4. accept ŝ (the chain's exact answer to the last loads); then (shed_wake, after
 ///     the caller has written its outputs of the step) convect and shed the wake.
 /// The number of lattice solves of the step is its coupling iteration count.
@@ -35,12 +37,21 @@
 #include "mbd/chain_model.hpp"
 #include "mbd/generalized_alpha.hpp"
 #include "pipeline/fsi/aitken_relaxation.hpp"
+#include "pipeline/fsi/interface_quasi_newton.hpp"
 #include "pipeline/fsi/wing_attachment.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
 namespace flapsim::fsi {
 
+/// How the sub-iterations of a step update the chain state (docs/fsi.md, "Coupling").
+enum class CouplingMethod {
+  Aitken,                ///< one Aitken factor for the whole state (aitken_relaxation.hpp)
+  InterfaceQuasiNewton,  ///< IQN-ILS on Φ̈ (interface_quasi_newton.hpp); Aitken's factor for the
+                         ///< first update of a step (no secant pair yet)
+};
+
 struct CouplingSettings {
+  CouplingMethod method = CouplingMethod::Aitken;
   int max_iterations = 50;      ///< lattice solves per step before giving up
   double tolerance = 1e-6;      ///< see the file comment [rad]
   double first_relaxation = 0.5;  ///< ω of the very first sub-iteration
@@ -79,6 +90,8 @@ struct FsiData {
   Eigen::Matrix3Xd nodes, node_velocities;  ///< deformed lattice of the last solve [m], [m/s]
   Eigen::VectorXd residual;  ///< Φ̈ change of the last sub-iteration
   AitkenRelaxation aitken;
+  InterfaceQuasiNewton quasi_newton;
+  Eigen::VectorXd stacked_trial, stacked_next;  ///< (Φ, Φ̇, Φ̈, a) of ŝ and of the next s̃
   long step = 0;             ///< steps taken
   int last_iterations = 0;   ///< lattice solves in the last step
   double last_change = 0.0;  ///< convergence measure at the end of the last step [rad]

@@ -116,7 +116,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
                   "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "core_model",
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
-                  "wake_sum", "tree_tolerance", "wake_precision", "max_coupling_iterations", "coupling_tolerance",
+                  "wake_sum", "tree_tolerance", "wake_precision", "coupling", "max_coupling_iterations", "coupling_tolerance",
                   "rho_infinity", "structure_substeps"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
@@ -149,6 +149,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.wake_sum = t->get_choice("wake_sum", kWakeSumNames, std::optional(n.wake_sum));
   n.wake_precision = t->get_choice("wake_precision", kWakePrecisionNames, std::optional(n.wake_precision));
   n.tree_tolerance = t->get_double("tree_tolerance", n.tree_tolerance, Bounds{1e-8, 1e-2, false, false});
+  n.coupling = t->get_choice("coupling", kCouplingMethodNames, std::optional(n.coupling));
   n.max_coupling_iterations =
       t->get_int("max_coupling_iterations", n.max_coupling_iterations, Bounds::closed(1, 100000));
   n.coupling_tolerance =

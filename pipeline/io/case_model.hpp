@@ -28,6 +28,9 @@ namespace flapsim::io {
 /// Precision of the wake's direct sums (uvlm::VortexLatticeModel::single_precision_wake).
 enum class WakePrecision { Single, Double };
 
+/// How a flexible wing's coupling sub-iterations update the chain (fsi::CouplingMethod).
+enum class CouplingMethod { Aitken, InterfaceQuasiNewton };
+
 /// A prescribed force and moment on one body of the chain, periodic in the stroke phase.
 struct PointLoad {
   int body = 1;                                  ///< 1-based body index in the chain
@@ -112,6 +115,7 @@ struct Case {
     uvlm::WakeSum wake_sum = uvlm::WakeSum::Direct;  ///< wake velocity sum: "direct" | "tree"
     WakePrecision wake_precision = WakePrecision::Single;  ///< the wake's direct sums: "single" | "double"
     double tree_tolerance = 1e-4;           ///< relative error of the tree code's velocities
+    CouplingMethod coupling = CouplingMethod::Aitken;  ///< sub-iteration update: "aitken" | "iqn_ils"
     int max_coupling_iterations = 50;       ///< strong-coupling sub-iterations per step
     double coupling_tolerance = 1e-6;       ///< relative change that ends the sub-iterations
     double rho_infinity = 0.9;              ///< generalized-α spectral radius ρ∞ in [0, 1]
@@ -159,6 +163,8 @@ inline constexpr std::array<std::pair<std::string_view, uvlm::WakeSum>, 2> kWake
     {{"direct", uvlm::WakeSum::Direct}, {"tree", uvlm::WakeSum::Tree}}};
 inline constexpr std::array<std::pair<std::string_view, WakePrecision>, 2> kWakePrecisionNames{
     {{"single", WakePrecision::Single}, {"double", WakePrecision::Double}}};
+inline constexpr std::array<std::pair<std::string_view, CouplingMethod>, 2> kCouplingMethodNames{
+    {{"aitken", CouplingMethod::Aitken}, {"iqn_ils", CouplingMethod::InterfaceQuasiNewton}}};
 inline constexpr std::array<std::pair<std::string_view, mbd::LoadFrame>, 2> kLoadFrameNames{
     {{"ground", mbd::LoadFrame::ground}, {"body", mbd::LoadFrame::body}}};
 

@@ -93,7 +93,8 @@ std::string describe_case(const Case& c) {
                 : "direct");
   s += line("  wake sums precision    %s",
             std::string(wings::choice_name(kWakePrecisionNames, n.wake_precision)).c_str());
-  s += line("  coupling               at most %d iterations, tolerance %.3g", n.max_coupling_iterations,
+  s += line("  coupling               %s, at most %d iterations, tolerance %.3g",
+            std::string(wings::choice_name(kCouplingMethodNames, n.coupling)).c_str(), n.max_coupling_iterations,
             n.coupling_tolerance);
   if (c.output.vtk_every > 0)
     s += line("  VTK output             every %d steps", c.output.vtk_every);

@@ -139,6 +139,8 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.far_wake_cycles", n.far_wake_cycles);
   out.line("numerics.wake_sum", static_cast<int>(n.wake_sum));
   out.line("numerics.tree_tolerance", n.tree_tolerance);
+  // Only when not the default, so the cases hashed before the key existed keep their hash.
+  if (n.coupling != CouplingMethod::Aitken) out.line("numerics.coupling", static_cast<int>(n.coupling));
   out.line("numerics.max_coupling_iterations", n.max_coupling_iterations);
   out.line("numerics.coupling_tolerance", n.coupling_tolerance);
   out.line("numerics.rho_infinity", n.rho_infinity);

@@ -91,4 +91,18 @@ TEST(CaseTableErrors, AByteOrderMarkIsSkippedAndSemicolonsAreNamed) {
       << r.err;
 }
 
+// A number with a decimal comma in quotes ("20,5", a spreadsheet's CSV in such a locale)
+// splits into two cells; the message says why. Before: only "the row has 2 cells, the header 1".
+TEST(CaseTableErrors, AQuotedDecimalCommaIsNamed) {
+  ScratchDir dir("table_quoted_comma");
+  const FlapsimOutcome r = sweep_with_table(dir, "kinematics.frequency_hz\n\"20,5\"\n");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find((dir / "table.csv").string() + ":2: the row has 2 cells, the header 1 (the row has quotes: "
+                                                       "the table's cells are plain numbers separated by commas, with a "
+                                                       "point as the decimal mark: 20.5, not \"20,5\")"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
 }  // namespace

@@ -212,6 +212,16 @@ TEST(CaseFile, WakePrecisionKey) {
   EXPECT_EQ(e.line(), 9);
 }
 
+TEST(CaseFile, CouplingKey) {
+  // docs/case_file.md: `coupling` = "aitken" (default) | "iqn_ils" (docs/fsi.md, "Coupling").
+  EXPECT_EQ(case_from_text(kHead).numerics.coupling, p::CouplingMethod::Aitken);
+  const p::Case c = case_from_text(kHead + "[numerics]\ncoupling = \"iqn_ils\"\n");
+  EXPECT_EQ(c.numerics.coupling, p::CouplingMethod::InterfaceQuasiNewton);
+  const auto e = error_of(kHead + "[numerics]\ncoupling = \"iqn\"\n");  // line 9
+  EXPECT_EQ(e.key(), "numerics.coupling");
+  EXPECT_EQ(e.line(), 9);
+}
+
 TEST(CaseFile, BaseTranslationSignals) {
   // docs/case_file.md: heave, surge and lateral move the pivot along z_G, x_G, y_G [m], as
   // signals of s = f t; pose() gives their position, velocity and acceleration.

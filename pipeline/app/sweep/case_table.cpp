@@ -66,10 +66,17 @@ CaseTable read_case_table(const std::string& path) {
       header = false;
       continue;
     }
-    if (cells.size() != table.keys.size())
+    if (cells.size() != table.keys.size()) {
+      // A quoted number with a decimal comma ("20,5", as a spreadsheet in such a locale
+      // writes it) splits into two cells: say so rather than count cells.
+      const bool quoted_comma = t.find('"') != std::string::npos;
       throw InputError(path, number, "",
                        "the row has " + std::to_string(cells.size()) + " cells, the header " +
-                           std::to_string(table.keys.size()));
+                           std::to_string(table.keys.size()) +
+                           (quoted_comma ? " (the row has quotes: the table's cells are plain numbers separated by "
+                                           "commas, with a point as the decimal mark: 20.5, not \"20,5\")"
+                                         : ""));
+    }
     CasePoint point;
     for (std::size_t i = 0; i < cells.size(); ++i) {
       const std::string& s = cells[i];
