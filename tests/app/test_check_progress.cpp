@@ -45,7 +45,7 @@ TEST(CheckProgress, TheSetupOfAWingReducedInProcessIsShownAsRunShowsIt) {
   const app::FsiSetup setup = app::build_fsi_setup_watched(c, {}, "check", {}, o);
   const std::string text = file_contents(f);
   std::fclose(f);
-  EXPECT_EQ(setup.model.chain.num_bodies(), 2);
+  EXPECT_EQ(setup.chain().num_bodies(), 2);
   EXPECT_EQ(text.rfind("check: setup (the wing's FEM, reduction and modes) (stage 1 of 1): ", 0), 0u) << text;
 }
 

@@ -52,7 +52,7 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
     const app::FsiSetup setup = app::build_fsi_setup_watched(c, options, "check", [&] {
       if (reduced_in_process && wing) check_meshable(*wing);
     });
-    bodies = setup.model.chain.num_bodies();
+    bodies = setup.chain().num_bodies();
     for (const std::string& w : app::setup_warnings(c, setup))
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   }

@@ -61,7 +61,7 @@ void run_command(const RunArgs& a) {
   options.before_start = [&](const app::FsiSetup& setup) {
     app::record_interrupt(setup_watch.done());
     app::throw_if_interrupted("during the run's setup; nothing was written");
-    const app::RunEstimate estimate = app::estimate_run(c, setup.model.chain.num_bodies());
+    const app::RunEstimate estimate = app::estimate_run(c, setup.chain().num_bodies());
     if (!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9))
       std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
     app::refuse_if_it_cannot_fit(estimate, c);
