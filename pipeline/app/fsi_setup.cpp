@@ -85,7 +85,18 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   m.near_wing_core = c.numerics.near_wing_core * mean_chord;
   m.frozen_wake_age = c.numerics.frozen_wake_cycles / c.kinematics.frequency;
   m.far_wake_age = c.numerics.far_wake_cycles / c.kinematics.frequency;
-  if (m.far_wake_age > 0.0) m.far_wake_disk_area = stroke_disk_area(c.kinematics, span);
+  if (m.far_wake_age > 0.0) {
+    m.far_wake_disk_area = stroke_disk_area(c.kinematics, span);
+    // A wing whose span axis keeps one direction (a constant sweep angle and no deviation:
+    // it pitches or plunges only) sweeps no disk: momentum theory's induced velocity
+    // sqrt(T/(2 rho A)) has no area to act on. Refused as bad input rather than given a
+    // made-up area (docs/case_file.md, far_wake_cycles).
+    if (!(m.far_wake_disk_area > 0.0))
+      throw InputError(c.file, c.line_of("numerics.far_wake_cycles"), "numerics.far_wake_cycles",
+                       "the convected far wake needs the disk the wing's span sweeps (momentum theory), and this "
+                       "wing's span axis keeps one direction over the cycle (no sweep or deviation motion: stroke "
+                       "angle 0): set far_wake_cycles = 0 (or give the wing a sweep motion)");
+  }
   m.wake_sum = c.numerics.wake_sum;
   m.tree_tolerance = c.numerics.tree_tolerance;
   return m;
