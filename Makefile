@@ -54,11 +54,13 @@ test-asan: deps $(ASAN_BUILD)/CMakeCache.txt
 	cmake --build $(ASAN_BUILD) -j$(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
 
-# The loader fuzzer of `make test` (tests/io/test_fuzz_loaders.cpp) with more mutants:
-# FUZZ_MUTANTS per loader (wing, case, chain, outline CSV), same fixed seed.
+# The fuzzers of `make test` (tests/io/test_fuzz_loaders.cpp, tests/app/test_fuzz_sweep_arguments.cpp)
+# with more mutants: FUZZ_MUTANTS per loader (wing, case, chain, outline CSV, sweep --cases
+# table; a quarter each for four --vary seeds), same fixed seeds.
 FUZZ_MUTANTS ?= 25000
 fuzz: build
 	FLAPSIM_FUZZ_MUTANTS=$(FUZZ_MUTANTS) $(BUILD)/tests/io/test_io --gtest_filter='FuzzLoaders.*'
+	FLAPSIM_FUZZ_MUTANTS=$(FUZZ_MUTANTS) $(BUILD)/tests/app/test_app --gtest_filter='FuzzSweepArguments.*'
 
 # Every benchmark program (not CMake's files beside them); the first that fails stops it.
 bench: build
