@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Figures of the rotation-phase study (the rotation-phase paper's Figs. 12-15) from the
-outputs of `make phase-study`, each as PDF (vector, for papers) and PNG (200 dpi):
+outputs of `make phase-study`, each as PDF (vector, for papers) and PNG (200 dpi), with
+the numbers it draws beside it as CSV (one row per point: panel, series, x, y):
 
   fig12a_mean_lift_vs_phase       mean lift against the rotation phase, rigid and flexible
   fig12b_rigid_lift_cycle         lift over the last cycle, rigid wing, three phases
@@ -86,11 +87,28 @@ def legend_below(ax, ncol=3):
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=ncol, frameon=False)
 
 
+def save_plotted_data(fig, path):
+    """The points of every labelled line of the figure: what a reader can re-plot or check."""
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["panel", "series", "x", "y"])
+        for i, ax in enumerate(fig.axes):
+            for line in ax.get_lines():
+                label = line.get_label()
+                if label.startswith("_"):  # unlabelled helpers (axis lines, shading edges)
+                    continue
+                for x, y in zip(np.asarray(line.get_xdata(), float), np.asarray(line.get_ydata(), float)):
+                    w.writerow([i, label, repr(float(x)), repr(float(y))])
+
+
 def save(fig, out, prefix, name, written):
     for ext, kw in (("pdf", {}), ("png", {"dpi": 200})):
         path = os.path.join(out, f"{prefix}{name}.{ext}")
         fig.savefig(path, **kw)
         written.append(path)
+    data = os.path.join(out, f"{prefix}{name}.csv")
+    save_plotted_data(fig, data)
+    written.append(data)
     plt.close(fig)
 
 

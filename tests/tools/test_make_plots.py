@@ -1,9 +1,13 @@
 #!/usr/bin/python3
-"""ctest tools.MakePlots.WritesPdfAndPng: a tiny rotation-phase study (the flat plate,
+"""ctest tools.MakePlots.WritesPdfPngAndTheStudysNumbers: a tiny rotation-phase study (the flat plate,
 rigid and on a stiff 2-body chain, 3 x 4 panels, 12 steps per wingbeat, 2 wingbeats,
 five phases each) made with `flapsim sweep`, then `make plots` on it: every figure of
 tools/plot_phase_study.py exists as a PDF (a PDF file, vector) and as a PNG of at least
-1000 pixels width; the per-sweep figures of tools/plot_sweep.py too, PDF and PNG."""
+1000 pixels width; the per-sweep figures of tools/plot_sweep.py too, PDF and PNG. And the
+figures draw the study's numbers: the points of fig12a (from its CSV of plotted data) are
+the sweeps' mean lifts (sweep.csv, in mN, against δψ in %), and fig12b's curves are the
+last wingbeat of each case's history.csv (its peak lift, in mN)."""
+import csv
 import os
 import struct
 import subprocess
@@ -60,6 +64,44 @@ for sub in ("rigid", "flexible"):
     for ext in (".png", ".pdf"):
         if not any(f.endswith(ext) for f in os.listdir(os.path.join(plots, sub))):
             failures.append(f"no sweep figure ({ext}) in plots/{sub}")
+
+
+def plotted(name):
+    """{series: [(x, y), ...]} of a figure's CSV of plotted data."""
+    series = {}
+    with open(os.path.join(plots, name + ".csv")) as f:
+        for r in csv.DictReader(f):
+            series.setdefault(r["series"], []).append((float(r["x"]), float(r["y"])))
+    return series
+
+
+def sweep_rows(kind):
+    with open(os.path.join(work, "study", kind, "sweep.csv")) as f:
+        return [r for r in csv.DictReader(f) if r["status"] == "ok"]
+
+
+try:
+    fig12a = plotted("fig12a_mean_lift_vs_phase")
+    for kind in ("rigid", "flexible"):
+        rows = sweep_rows(kind)
+        expected = sorted((100 * float(r["kinematics.rotation_phase"]), 1e3 * float(r["mean_lift_N"])) for r in rows)
+        got = sorted(fig12a.get(f"{kind} wing", []))
+        if len(got) != len(expected) or any(abs(g[0] - e[0]) > 1e-9 or abs(g[1] - e[1]) > 1e-9 * max(1.0, abs(e[1]))
+                                            for g, e in zip(got, expected)):
+            failures.append(f"fig12a's {kind} points {got} are not sweep.csv's {expected}")
+    fig12b = plotted("fig12b_rigid_lift_cycle")
+    for r in sweep_rows("rigid"):
+        label = "δψ = %+.0f %%" % (100 * float(r["kinematics.rotation_phase"]))
+        if label not in fig12b:
+            continue
+        with open(os.path.join(work, "study", "rigid", r["folder"], "history.csv")) as f:
+            lift = [float(h["lift_N"]) for h in csv.DictReader(f)]
+        last = lift[-13:]  # the last wingbeat, t >= t_end - T: 13 rows at 12 steps per wingbeat
+        peak = max(y for _, y in fig12b[label])
+        if abs(peak - 1e3 * max(last)) > 1e-9 * abs(peak):
+            failures.append(f"fig12b {label}: peak {peak} mN, history's last wingbeat {1e3 * max(last)} mN")
+except (OSError, KeyError, ValueError) as e:
+    failures.append(f"plotted data unreadable: {e!r}")
 for f in failures:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)
