@@ -13,6 +13,7 @@ Usage: plot_sweep.py SWEEP.csv [OUTPUT_DIR]   (default OUTPUT_DIR: plots/ next t
 Debian's python3-matplotlib)
 """
 import csv
+import json
 import math
 import os
 import sys
@@ -52,7 +53,32 @@ def label(name):
     return name.rsplit(".", 1)[-1].replace("_", " ")
 
 
-def plot_key(rows, key, others, power, out_path, failed):
+# Axis names of the keys users sweep most, with the factor from the file's value to the axis:
+# the rotation phase in % of the period, as the phase-study figures show it.
+AXES = {
+    "kinematics.rotation_phase": ("rotation phase δψ [% of the period]", 100.0),
+    "kinematics.frequency_hz": ("wingbeat frequency [Hz]", 1.0),
+    "spring_scale": ("joint spring factor [-]", 1.0),
+}
+
+
+def axis(key):
+    return AXES.get(key, (key, 1.0))
+
+
+def run_title(table, rows):
+    """The case and its structure (rigid wing, chain file, ...) from the first case's summary.json."""
+    for r in rows:
+        try:
+            with open(os.path.join(os.path.dirname(os.path.abspath(table)), r["folder"], "summary.json")) as f:
+                s = json.load(f)
+            return "%s: %s" % (s.get("case", "?"), s.get("structure", "?"))
+        except (OSError, KeyError, ValueError):
+            continue
+    return ""
+
+
+def plot_key(rows, key, others, power, out_path, failed, title_text=""):
     panels = [("mean_lift_N", "mean lift [mN]", 1e3)]
     if power:
         unit = power.rsplit("_", 1)[-1] if "_" in power else ""
@@ -65,7 +91,7 @@ def plot_key(rows, key, others, power, out_path, failed):
     for (column, title, scale), ax in zip(panels, axes[:, 0]):
         for group, members in sorted(groups.items(), key=lambda g: tuple(number(v) for v in g[0])):
             members = sorted(members, key=lambda r: number(r[key]))
-            x = [number(r[key]) for r in members]
+            x = [number(r[key]) * axis(key)[1] for r in members]
             y = [number(r[column]) * scale for r in members]
             name = ", ".join("%s = %s" % (label(o), v) for o, v in zip(others, group))
             ax.plot(x, y, "o-", ms=4, label=name or None)
@@ -73,9 +99,10 @@ def plot_key(rows, key, others, power, out_path, failed):
         ax.grid(True, alpha=0.3)
         if others and len(groups) <= 12:
             ax.legend(fontsize=7)
-    axes[-1, 0].set_xlabel(key)
-    if failed:
-        axes[0, 0].set_title("%d case(s) not ok, left out" % failed, fontsize=8)
+    axes[-1, 0].set_xlabel(axis(key)[0])
+    heading = [t for t in (title_text, "%d case(s) not ok, left out" % failed if failed else "") if t]
+    if heading:
+        axes[0, 0].set_title("\n".join(heading), fontsize=8)
     fig.tight_layout()
     fig.savefig(out_path, dpi=200)
     fig.savefig(os.path.splitext(out_path)[0] + ".pdf")
@@ -103,7 +130,7 @@ def main(argv):
     for key in keys:
         others = [k for k in keys if k != key]
         path = os.path.join(out_dir, "sweep_%s.png" % key.replace(".", "_"))
-        plot_key(rows, key, others, power, path, failed)
+        plot_key(rows, key, others, power, path, failed, run_title(table, rows))
         print(path)
     return 0
 

@@ -203,6 +203,39 @@ TEST(RunResults, EveryResultAndHistoryColumnIsDocumented) {
         << "docs/fsi.md has no row for history.csv's " << c.name;
 }
 
+TEST(RunResults, EveryDocumentedHistoryColumnExists) {
+  // The reverse: each row of docs/fsi.md's history.csv table names a column the run writes
+  // (the per-joint and per-marker rows by their patterns), and the column names that
+  // docs/output_files.md gives as examples are columns (it named phi_rad and tip_z_m, which
+  // no file has).
+  std::set<std::string> columns;
+  for (const app::HistoryColumn& c : app::history_columns()) columns.emplace(c.name);
+  const std::string doc = read_text(fs::path(FLAPSIM_SOURCE_DIR) / "docs" / "fsi.md");
+  const std::size_t table = doc.find("| column | content |");
+  ASSERT_NE(table, std::string::npos);
+  std::istringstream rows(doc.substr(table));
+  std::string line;
+  std::getline(rows, line);  // header
+  std::getline(rows, line);  // |---|---|
+  int documented = 0;
+  while (std::getline(rows, line) && line.rfind("| `", 0) == 0) {
+    const std::string name = line.substr(3, line.find('`', 3) - 3);
+    if (name.find('<') != std::string::npos) continue;  // bend_<k>_rad, <marker>_x_m
+    EXPECT_EQ(columns.count(name), 1u) << "docs/fsi.md documents a history.csv column '" << name << "' the run does not write";
+    ++documented;
+  }
+  EXPECT_EQ(documented, static_cast<int>(columns.size()));
+  const std::string files = read_text(fs::path(FLAPSIM_SOURCE_DIR) / "docs" / "output_files.md");
+  const std::size_t units = files.find("CSV column names carry their unit");
+  ASSERT_NE(units, std::string::npos);
+  const std::string sentence = files.substr(units, files.find(')', units) - units);
+  for (std::size_t at = sentence.find('`'); at != std::string::npos; at = sentence.find('`', sentence.find('`', at + 1) + 1)) {
+    const std::string name = sentence.substr(at + 1, sentence.find('`', at + 1) - at - 1);
+    if (name.find('<') != std::string::npos) continue;
+    EXPECT_EQ(columns.count(name), 1u) << "docs/output_files.md names a history.csv column '" << name << "' that does not exist";
+  }
+}
+
 // The last line names the files the run wrote. Before: "(history.csv, summary.json, wing.pvd,
 // wake.pvd, chain.pvd, run.pvsm)" also for a run with vtk_every = 0, which writes the first two.
 TEST(RunResults, TheLastLineNamesOnlyTheFilesWritten) {
