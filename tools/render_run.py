@@ -108,6 +108,26 @@ def frame_at(series, frequency, phase):
     return min(series, key=lambda e: abs(e[0] * frequency - target))
 
 
+def shared_view(run):
+    """The one camera of a run's pictures: the bounds of the wing (or the chain) over the
+    frames of the last wingbeat written, and the direction toward the camera from the wing's
+    face at mid-downstroke (phase 0.25) of that wingbeat (view_direction). Every picture
+    then shows the wing from the same point: its positions over the stroke compare."""
+    wing_series, _, chain_series, frequency = run
+    series = wing_series if wing_series else chain_series
+    last = series[-1][0] * frequency
+    frames = [e for e in series if e[0] * frequency >= last - 1.0 - 1e-9] or [series[-1]]
+    bounds = [math.inf, -math.inf] * 3
+    for _, path in frames:
+        b = read_vtp(path).GetBounds()
+        for i in range(3):
+            bounds[2 * i] = min(bounds[2 * i], b[2 * i])
+            bounds[2 * i + 1] = max(bounds[2 * i + 1], b[2 * i + 1])
+    index = chain_series.index(frame_at(chain_series, frequency, 0.25))
+    wing = read_vtp(wing_series[index][1]) if wing_series else None
+    return tuple(bounds), view_direction(wing, read_vtp(chain_series[index][1]))
+
+
 def frame_title(t, frequency, phase, lift):
     """The picture's title: t/T, the phase of the frame shown (and the phase asked for when
     no frame lies there: with vtk_every 4 of 40 steps per cycle, 0.25 shows the frame at
@@ -120,7 +140,7 @@ def frame_title(t, frequency, phase, lift):
     return f"t/T = {s:.3f} ({where})   t = {t * 1e3:.2f} ms   lift = {lift * 1e3:.4g} mN"
 
 
-def render(run, time_index, phase, args, output):
+def render(run, time_index, phase, args, output, view):
     wing_series, wake_series, chain_series, frequency = run
     t, chain_file = chain_series[time_index]
     renderer = vtk.vtkRenderer()
@@ -179,15 +199,17 @@ def render(run, time_index, phase, args, output):
     ca.GetProperty().SetColor(0.05, 0.05, 0.05)
     renderer.AddActor(ca)
 
-    # The camera frames the wing (or the chain), looking at the wing's face (its mean
-    # panel normal, turned upward), tilted up a little so the stroke plane shows.
-    cx, cy, cz = [(bounds[2 * i] + bounds[2 * i + 1]) / 2 for i in range(3)]
-    direction = view_direction(wing, chain)
+    # One camera for every picture of the run (shared_view): the frames compare.
+    view_bounds, direction = view
+    cx, cy, cz = [(view_bounds[2 * i] + view_bounds[2 * i + 1]) / 2 for i in range(3)]
+    view_size = max(view_bounds[1] - view_bounds[0], view_bounds[3] - view_bounds[2],
+                    view_bounds[5] - view_bounds[4], 1e-6)
     camera = renderer.GetActiveCamera()
     camera.SetFocalPoint(cx, cy, cz)
-    camera.SetPosition(*[c + 3.0 * size * d for c, d in zip((cx, cy, cz), direction)])
+    camera.SetPosition(*[c + 3.0 * view_size * d for c, d in zip((cx, cy, cz), direction)])
     camera.SetViewUp(0, 0, 1) if abs(direction[2]) < 0.95 else camera.SetViewUp(0, 1, 0)
-    renderer.ResetCamera(bounds)
+    renderer.ResetCamera(view_bounds)
+    camera.Zoom(1.2)  # ResetCamera fits the bounds' sphere, loose around a flat stroke's box
     renderer.ResetCameraClippingRange()
 
     text = vtk.vtkTextActor()
@@ -251,11 +273,12 @@ def main():
     folder = os.path.dirname(args.output) if single else (args.output or os.path.join(args.run, "snapshots"))
     if folder:
         os.makedirs(folder, exist_ok=True)
+    view = shared_view(run)
     for phase in args.phases:
         entry = frame_at(chain_series, frequency, phase)
         index = chain_series.index(entry)
         output = args.output if single else os.path.join(folder, f"phase_{phase:.2f}.png")
-        render(run, index, phase, args, output)
+        render(run, index, phase, args, output, view)
 
 
 if __name__ == "__main__":

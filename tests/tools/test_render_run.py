@@ -5,6 +5,8 @@ Python; the PNG read back with VTK's PNG reader must show the wing: with the win
 in one colour (orange, the chain black, the background white), at least 2 % of the
 pixels are that orange and their centre lies in the middle of the picture, where the
 script's camera frames the wing; the default picture (pressure colours) is not blank.
+One camera serves every picture of a run: at the two stroke reversals (phases 0 and 0.5)
+the wing lies on opposite sides of the picture (a camera per frame centred both).
 A folder without the series is bad input (exit status 2)."""
 import os
 import subprocess
@@ -40,8 +42,8 @@ def check(ok, message):
         print("FAIL:", message)
 
 
-def render(extra, png):
-    subprocess.run(xvfb + ["/usr/bin/python3", script, run, "--phases", "0.25", "-o", png,
+def render(extra, png, phase="0.25"):
+    subprocess.run(xvfb + ["/usr/bin/python3", script, run, "--phases", phase, "-o", png,
                            "--size", "600", "400"] + extra, check=True)
     reader = vtk.vtkPNGReader()
     reader.SetFileName(png)
@@ -74,7 +76,21 @@ non_white = 1.0 - (rgb > 0.98).all(axis=2).mean()
 print(f"default picture: {100 * non_white:.1f} % not background")
 check(non_white > 0.02, "the default picture is blank")
 
-# 3. Bad input: a folder without series.
+# 3. One camera for the run: the wing's centre at the two stroke reversals, orange as in 1.
+centres = []
+for phase in ("0.0", "0.5"):
+    rgb = render(["--wing-color", "1", "0.5", "0", "--no-wake"], os.path.join(work, f"reversal_{phase}.png"), phase)
+    r, g, b = rgb[:, :, 0], rgb[:, :, 1], rgb[:, :, 2]
+    mask = (r > 0.2) & (g > 0.3 * r) & (g < 0.7 * r) & (b < 0.15 * r + 0.02)
+    ys, xs = mask.nonzero()
+    centres.append((xs.mean() / mask.shape[1], ys.mean() / mask.shape[0]) if mask.any() else (float("nan"),) * 2)
+    edge = mask[0, :].any() or mask[-1, :].any() or mask[:, 0].any() or mask[:, -1].any()
+    check(not edge, f"the wing at phase {phase} touches the picture's edge: the camera does not frame the stroke")
+print(f"wing centres at the reversals: {centres}")
+apart = ((centres[0][0] - centres[1][0]) ** 2 + (centres[0][1] - centres[1][1]) ** 2) ** 0.5
+check(apart > 0.1, f"the wing's centres at the two reversals are {apart:.3f} of the picture apart: one camera per frame")
+
+# 4. Bad input: a folder without series.
 empty = os.path.join(work, "empty")
 os.makedirs(empty)
 status = subprocess.run(xvfb + ["/usr/bin/python3", script, empty], capture_output=True).returncode
