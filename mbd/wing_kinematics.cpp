@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace flapsim::mbd {
 
@@ -57,11 +58,33 @@ AngleSample per_second(AngleSample a, double f) {
 
 }  // namespace
 
+AngleSample WingKinematics::Revolution::at(double t) const {
+  AngleSample r;
+  if (t <= 0.0 || rate == 0.0) return r;
+  if (t >= ramp) {
+    // ∫₀^τ Ω (1 − cos(π u/τ))/2 du = Ω τ/2, then Ω per second.
+    r.value = rate * (0.5 * ramp + (t - ramp));
+    r.rate = rate;
+    return r;
+  }
+  const double w = std::numbers::pi / ramp;  // [rad/s]
+  r.value = 0.5 * rate * (t - std::sin(w * t) / w);
+  r.rate = 0.5 * rate * (1.0 - std::cos(w * t));
+  r.acceleration = 0.5 * rate * w * std::sin(w * t);
+  return r;
+}
+
 WingKinematics::Angles WingKinematics::angles(double t) const {
   const double s = frequency * t;                 // stroke phase [cycles]
   const double shifted = s + rotation_phase;      // sweep and deviation run δψ ahead
   Angles a;
   a.sweep = per_second(sweep.at_phase(shifted), frequency);
+  if (revolution.active()) {
+    const AngleSample r = revolution.at(t);
+    a.sweep.value += r.value;
+    a.sweep.rate += r.rate;
+    a.sweep.acceleration += r.acceleration;
+  }
   a.deviation = per_second(deviation.at_phase(shifted), frequency);
   a.rotation = per_second(rotation.at_phase(s), frequency);
   return a;

@@ -29,6 +29,19 @@ struct WingKinematics {
   /// Translation of the pivot in the ground frame [m] as signals of the phase s = f·t (not
   /// shifted by δψ): surge along x_G, lateral along y_G, heave along z_G; zero by default.
   PeriodicSignal surge, lateral, heave;
+  /// A steady revolution added to the sweep (revolving-wing experiments: Dickinson et al.
+  /// 1999, Usherwood & Ellington 2002): φ gains Ω_r(t), the rate rising from 0 to Ω over the
+  /// ramp τ as Ω (1 − cos(π t/τ))/2 (no jump of the rate or of its derivative at 0 and τ),
+  /// constant after it. Ω < 0 moves the wing as on the downstroke (leading edge first at the
+  /// angle of attack α). Zero by default: the flapping wing.
+  struct Revolution {
+    double rate = 0.0;  ///< Ω [rad/s]
+    double ramp = 0.0;  ///< τ [s] (0: at Ω from t = 0)
+    bool active() const { return rate != 0.0; }
+    /// The revolution's angle [rad], rate [rad/s] and acceleration [rad/s²] at time t [s] ≥ 0.
+    AngleSample at(double t) const;
+  };
+  Revolution revolution;
 
   struct Angles {
     AngleSample sweep, deviation, rotation;  ///< [rad], [rad/s], [rad/s²]

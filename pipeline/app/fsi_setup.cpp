@@ -46,12 +46,18 @@ Eigen::Vector3d span_point_velocity(const mbd::WingKinematics& kinematics, doubl
 
 double mean_speed_at_radius(const mbd::WingKinematics& kinematics, double radius, int samples) {
   const double period = 1.0 / kinematics.frequency;
+  // A revolving wing: the period after its ramp (the steady revolution the coefficients of
+  // revolving-wing experiments refer to); a flapping wing: the first period.
+  const double start = kinematics.revolution.active() ? kinematics.revolution.ramp : 0.0;
   double sum = 0.0;
-  for (int i = 0; i < samples; ++i) sum += span_point_velocity(kinematics, radius, period * i / samples).norm();
+  for (int i = 0; i < samples; ++i)
+    sum += span_point_velocity(kinematics, radius, start + period * i / samples).norm();
   return sum / samples;
 }
 
 double stroke_disk_area(const mbd::WingKinematics& kinematics, double span, int samples) {
+  // A revolving wing sweeps the whole circle.
+  if (kinematics.revolution.active()) return std::numbers::pi * span * span;
   const double period = 1.0 / kinematics.frequency;
   std::vector<Eigen::Vector3d> axis(static_cast<std::size_t>(samples));
   for (int i = 0; i < samples; ++i)

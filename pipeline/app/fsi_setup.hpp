@@ -89,13 +89,14 @@ std::optional<wings::Wing> load_case_wing(const io::Case& c,
 mbd::ChainModel make_rigid_chain(const wings::Wing& wing);
 
 /// \brief The cycle-mean speed [m/s] of the point at distance \p radius [m] along y_W,
-/// sampled at \p samples points of one period.
+/// sampled at \p samples points of one period (the first; for a revolving wing the one
+/// after its ramp: the steady revolution).
 double mean_speed_at_radius(const mbd::WingKinematics& kinematics, double radius, int samples = 720);
 
 /// \brief The stroke disk [m²] of momentum theory for a wing of length \p span [m]: the
 /// sector Φ R²/2 its span axis sweeps, Φ the largest angle between two of its directions
-/// over one period (\p samples points) [Ellington 1984; Leishman 2006 ch. 2]. Used by the
-/// convected far wake (uvlm::far_wake_velocity).
+/// over one period (\p samples points) [Ellington 1984; Leishman 2006 ch. 2]; a revolving
+/// wing's is the whole circle, π R². Used by the convected far wake (uvlm::far_wake_velocity).
 double stroke_disk_area(const mbd::WingKinematics& kinematics, double span, int samples = 360);
 
 /// Velocity [m/s] of the span-axis point at `radius` [m] at time t (rotation and base translation).

@@ -38,7 +38,7 @@ std::string existing_file(const TomlTable& t, std::string_view key) {
 
 mbd::WingKinematics read_kinematics(const TomlTable& k) {
   k.expect_only({"frequency_hz", "rotation_phase", "stroke_plane_deg", "sweep", "deviation",
-                 "rotation", "surge", "lateral", "heave"});
+                 "rotation", "surge", "lateral", "heave", "revolution"});
   mbd::WingKinematics kin;
   kin.frequency = k.get_double("frequency_hz", Bounds{0.0, kMaxFrequencyHz, true, false});
   kin.rotation_phase = k.get_double("rotation_phase", 0.0, Bounds::closed(-1.0, 1.0));
@@ -53,6 +53,15 @@ mbd::WingKinematics read_kinematics(const TomlTable& k) {
   kin.surge = read_periodic_signal(k, "surge", "_m", "m", 1.0, zero);
   kin.lateral = read_periodic_signal(k, "lateral", "_m", "m", 1.0, zero);
   kin.heave = read_periodic_signal(k, "heave", "_m", "m", 1.0, zero);
+  // A steady revolution added to the sweep (docs/kinematics.md, "A revolving wing").
+  if (k.has("revolution")) {
+    const TomlTable r = k.get_table("revolution");
+    r.expect_only({"rate_deg_per_s", "ramp_s"});
+    const double rate = r.get_double("rate_deg_per_s", Bounds::closed(-1e6, 1e6));
+    if (rate == 0.0) r.fail("rate_deg_per_s", "a revolution needs a rate other than 0 (leave the table out for none)");
+    kin.revolution.rate = rate * kDegToRad;
+    kin.revolution.ramp = r.get_double("ramp_s", 0.0, Bounds::closed(0.0, 1e6));
+  }
   return kin;
 }
 

@@ -14,7 +14,7 @@ namespace flapsim::io {
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run; they change no result.)
-static_assert(sizeof(Case) == 1384, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1400, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344, "wings::Wing changed: add the new field to canonical_inputs()");
@@ -106,6 +106,10 @@ void case_fields(Canonical& out, const Case& c) {
   out.signal("kinematics.surge", k.surge);
   out.signal("kinematics.lateral", k.lateral);
   out.signal("kinematics.heave", k.heave);
+  if (k.revolution.active()) {  // only then: the fingerprints of flapping cases stay as they were
+    out.line("kinematics.revolution.rate", k.revolution.rate);
+    out.line("kinematics.revolution.ramp", k.revolution.ramp);
+  }
   out.line("air.enabled", c.air.enabled);
   out.line("air.density", c.air.density);
   out.vector("air.freestream", c.air.freestream);

@@ -1,0 +1,54 @@
+// A revolving wing written as users write it (docs/kinematics.md, "A revolving wing"):
+// [kinematics] revolution = { rate_deg_per_s, ramp_s } runs, its coefficients refer to the
+// steady revolution's speed at r2·R, and a revolution without a rate is refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include "common/run_flapsim.hpp"
+#include "common/scratch_dir.hpp"
+
+namespace {
+
+using flapsim::test::read_text;
+using flapsim::test::run_flapsim;
+
+const std::string kSource = FLAPSIM_SOURCE_DIR;
+
+std::string revolving_case(const std::string& revolution) {
+  return "name = \"revolve\"\nwing = \"" + kSource + "/wings/flat_plate.toml\"\n"
+         "[kinematics]\nfrequency_hz = 2.0\nsweep = 0.0\nrotation = 45.0\n" + revolution + "\n"
+         "[structure]\nkind = \"rigid\"\n"
+         "[numerics]\nsteps_per_cycle = 40\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 6\n"
+         "[output]\nvtk_every = 0\n";
+}
+
+TEST(RevolvingWingCase, RunsAndRefersItsCoefficientsToTheSteadyRevolution) {
+  // wings/flat_plate.toml: R = 40 mm from the pivot, uniform chord, so r2 = 1/√3 (the radius
+  // of gyration of a rectangle from its end). At Ω = 720°/s the reference speed is
+  // Ω r2 R = 4π · 0.040 / √3 = 0.29022 m/s, reached after the 0.1 s ramp; one period of
+  // 0.5 s is one revolution.
+  flapsim::test::ScratchDir dir("revolving_case");
+  std::ofstream(dir / "case.toml") << revolving_case("revolution = { rate_deg_per_s = -720.0, ramp_s = 0.1 }");
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -q -o " + (dir / "out").string()), 0);
+  const std::string summary = read_text(dir / "out" / "summary.json");
+  const double r2 = flapsim::test::json_number(summary, "r2");
+  EXPECT_NEAR(r2, 1.0 / std::sqrt(3.0), 1e-6);
+  const double expected = 4.0 * std::numbers::pi * 0.040 * r2;
+  EXPECT_NEAR(flapsim::test::json_number(summary, "reference_speed_m_s"), expected, 1e-9 * expected);
+  // Leading edge first at 45°: the wing lifts.
+  EXPECT_GT(flapsim::test::json_number(summary, "mean_lift_N"), 0.0);
+}
+
+TEST(RevolvingWingCase, ARevolutionWithoutARateIsRefusedNamingTheKey) {
+  flapsim::test::ScratchDir dir("revolving_case_zero");
+  std::ofstream(dir / "case.toml") << revolving_case("revolution = { rate_deg_per_s = 0.0 }");
+  EXPECT_EQ(run_flapsim("check " + (dir / "case.toml").string()), 2);
+  std::ofstream(dir / "ramp.toml") << revolving_case("revolution = { rate_deg_per_s = 90.0, ramp_s = -1.0 }");
+  EXPECT_EQ(run_flapsim("check " + (dir / "ramp.toml").string()), 2);
+}
+
+}  // namespace
