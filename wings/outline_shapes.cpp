@@ -98,12 +98,16 @@ Polygon shape_outline(OutlineShape shape, const ShapeSize& s, int samples) {
       const double r = s.tip_radius;
       if (!(r > 0.0 && r <= std::min(half, length) * (1 + 1e-12)))
         throw std::invalid_argument("the tip radius must be > 0 and at most half the chord and the length");
-      const int arc = std::max(4, n / 4);
+      // n points: the two root corners and the two arcs' end points and inner points (the
+      // arcs of a semicircular tip, r = chord/2, share a point: the second gets one more).
+      // (Before: n/4 segments per arc, 52 points at n = 96.)
       const double le = s.leading_edge_x, te = s.leading_edge_x - s.chord;
+      const bool arcs_touch = (le - r) - (te + r) <= 1e-12 * s.chord;
+      const int leading_arc = (n - 4) / 2, trailing_arc = n - 4 - leading_arc + (arcs_touch ? 1 : 0);
       add_point(p, {te, s.root_y});
       add_point(p, {le, s.root_y});
-      add_arc(p, {le - r, s.tip_y - r}, r, r, 0.0, 0.5 * kPi, arc);
-      add_arc(p, {te + r, s.tip_y - r}, r, r, 0.5 * kPi, kPi, arc);
+      add_arc(p, {le - r, s.tip_y - r}, r, r, 0.0, 0.5 * kPi, leading_arc);
+      add_arc(p, {te + r, s.tip_y - r}, r, r, 0.5 * kPi, kPi, trailing_arc);
       break;
     }
   }

@@ -261,8 +261,16 @@ void check_finite_and_bounds(const TomlTable& t, std::string_view key, int line,
     t.fail_at(line, key,
               "value " + format_number(v) + " is a denormal number (magnitude below " +
                   format_number(kSmallestNormal) + "): too small to compute with");
-  if (!b.contains(v))
-    t.fail_at(line, key, "value " + format_number(v) + " out of range: must be " + b.describe());
+  if (!b.contains(v)) {
+    // A bound the key does not state is the cap of every number key, +-1e300 (Bounds):
+    // a value beyond it (1e308 for a key that must be >= 0) is told the cap, not only ">= 0".
+    const bool beyond_cap = (v > b.max && b.max >= 1e300) || (v < b.min && b.min <= -1e300);
+    std::string rule = b.describe();
+    if (beyond_cap)
+      rule = (rule == "any number" ? std::string("a number") : rule + ", a number") +
+             " of magnitude at most 1e300 (the largest a number key accepts)";
+    t.fail_at(line, key, "value " + format_number(v) + " out of range: must be " + rule);
+  }
 }
 
 /// The value of a number node as a double. An integer is accepted only if the double

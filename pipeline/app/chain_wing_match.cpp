@@ -10,7 +10,7 @@ namespace flapsim::app {
 
 std::string chain_wing_mismatch_warning(const FsiSetup& setup) {
   if (!setup.wing || setup.structure_source.rfind("chain file", 0) != 0) return "";
-  const mbd::ChainModel& chain = setup.model.chain;
+  const mbd::ChainModel& chain = setup.chain();
   double chain_mass = 0.0, chain_length = chain.root_offset.norm();  // [kg], [m]
   for (const auto& b : chain.bodies) {
     chain_mass += b.mass;

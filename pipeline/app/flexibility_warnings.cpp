@@ -12,7 +12,7 @@
 namespace flapsim::app {
 
 std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
-  const mbd::ChainModel& chain = setup.model.chain;
+  const mbd::ChainModel& chain = setup.chain();
   if (c.structure.kind != io::Case::Structure::Kind::Flexible || chain.num_dofs() == 0) return "";
   std::vector<reduction::ChainMode> modes;
   try {
@@ -52,13 +52,13 @@ std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
 }
 
 std::string inertial_deflection_warning(const io::Case& c, const FsiSetup& setup) {
-  const mbd::ChainModel& chain = setup.model.chain;
+  const mbd::ChainModel& chain = setup.chain();
   if (c.structure.kind != io::Case::Structure::Kind::Flexible || chain.num_dofs() == 0) return "";
   mbd::QuasiStaticDeflection q;
   try {
     // 64 instants of the cycle: the inertial loads' harmonics up to the 8th are sampled
     // 4 times a period or more.
-    q = mbd::peak_quasi_static_deflection(chain, setup.model.base, 1.0 / c.kinematics.frequency, 64);
+    q = mbd::peak_quasi_static_deflection(chain, setup.model.base(), 1.0 / c.kinematics.frequency, 64);
   } catch (const std::exception&) {
     return "";  // a singular stiffness: the soft-chain and resonance checks speak of it
   }
@@ -83,7 +83,7 @@ std::string inertial_deflection_warning(const io::Case& c, const FsiSetup& setup
 
 std::string large_motion_at_failure(const FsiSetup& setup, const Eigen::VectorXd& last_q,
                                     double peak_tip_bend_deg, double peak_tip_twist_deg) {
-  const mbd::ChainModel& chain = setup.model.chain;
+  const mbd::ChainModel& chain = setup.chain();
   if (chain.num_dofs() == 0 || last_q.size() != chain.num_dofs()) return "";
   constexpr double deg = 180.0 / std::numbers::pi;
   Eigen::Index largest = 0;

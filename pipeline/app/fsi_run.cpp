@@ -32,14 +32,14 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
     fsi::shed_wake(model, data);
     // Chain solves split in halves so far (step halving, mbd/generalized_alpha.hpp): shown once there are any.
     char split[48] = "";
-    if (data.chain.step.split_steps > 0)
-      std::snprintf(split, sizeof split, "%shalved=%ld", model.air ? "  " : "", data.chain.step.split_steps);
+    if (data.structure->split_steps() > 0)
+      std::snprintf(split, sizeof split, "%shalved=%ld", model.air ? "  " : "", data.structure->split_steps());
     if (model.air) {
       char extra[144];
       std::snprintf(extra, sizeof extra, "CL=%.3f  iterations=%d%s", recorder.last().cl, data.last_iterations, split);
-      progress.update(data.step, data.state.time, extra);
+      progress.update(data.step, data.time(), extra);
     } else {
-      progress.update(data.step, data.state.time, split);
+      progress.update(data.step, data.time(), split);
     }
     if (on_step) on_step(data.step, static_cast<long>(setup.steps));
     // SIGINT/SIGTERM: the step is complete and recorded; stop here (interruption.hpp).
@@ -71,7 +71,7 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
     // A chain that had swung beyond small rotations: say so with the failure (the joint,
     // the angles), as the failure is then the wing's motion rather than the solver's.
     const RunRecorder::TipDeflection tip = recorder.peak_tip_deflection();
-    const std::string why = large_motion_at_failure(setup, data.state.q, tip.bend_deg, tip.twist_deg);
+    const std::string why = large_motion_at_failure(setup, fsi::chain_structure(*data.structure).state.q, tip.bend_deg, tip.twist_deg);
     if (why.empty()) {
       recorder.finish(data, "failed", e.what());
       throw;

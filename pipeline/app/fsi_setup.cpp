@@ -85,7 +85,18 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   m.near_wing_core = c.numerics.near_wing_core * mean_chord;
   m.frozen_wake_age = c.numerics.frozen_wake_cycles / c.kinematics.frequency;
   m.far_wake_age = c.numerics.far_wake_cycles / c.kinematics.frequency;
-  if (m.far_wake_age > 0.0) m.far_wake_disk_area = stroke_disk_area(c.kinematics, span);
+  if (m.far_wake_age > 0.0) {
+    m.far_wake_disk_area = stroke_disk_area(c.kinematics, span);
+    // A wing whose span axis keeps one direction (a constant sweep angle and no deviation:
+    // it pitches or plunges only) sweeps no disk: momentum theory's induced velocity
+    // sqrt(T/(2 rho A)) has no area to act on. Refused as bad input rather than given a
+    // made-up area (docs/case_file.md, far_wake_cycles).
+    if (!(m.far_wake_disk_area > 0.0))
+      throw InputError(c.file, c.line_of("numerics.far_wake_cycles"), "numerics.far_wake_cycles",
+                       "the convected far wake needs the disk the wing's span sweeps (momentum theory), and this "
+                       "wing's span axis keeps one direction over the cycle (no sweep or deviation motion: stroke "
+                       "angle 0): set far_wake_cycles = 0 (or give the wing a sweep motion)");
+  }
   m.wake_sum = c.numerics.wake_sum;
   m.tree_tolerance = c.numerics.tree_tolerance;
   if (c.numerics.steady) {  // the straight wake of the steady lattice: one row, 10⁴ mean chords
@@ -144,7 +155,7 @@ void check_lattice_can_follow(const Case& c, const wings::Wing& wing) {
 }
 
 std::string soft_chain_warning(const Case& c, const FsiSetup& setup) {
-  const mbd::ChainModel& chain = setup.model.chain;
+  const mbd::ChainModel& chain = setup.chain();
   if (c.structure.kind != Case::Structure::Kind::Flexible || chain.num_dofs() == 0) return "";
   double f1 = 0.0;
   bool bending = false;
@@ -186,58 +197,60 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   if (s.wing) check_lattice_can_follow(c, *s.wing);
 
   FsiModel& m = s.model;
+  auto chain_structure = std::make_shared<fsi::ChainStructureModel>();
+  fsi::ChainStructureModel& cs = *chain_structure;
   StructureChoice structure = choose_structure(c, options.chain_file, s.wing ? &*s.wing : nullptr);
-  m.chain = std::move(structure.chain);
+  cs.chain = std::move(structure.chain);
   s.structure_source = structure.description;
   s.chain_file = structure.chain_file;
   s.chain_fem = std::move(structure.chain_fem);
   s.spring_scale = options.spring_scale;
   if (!(options.spring_scale > 0.0) || !std::isfinite(options.spring_scale))
     throw InputError("", 0, "--spring-scale", "must be a positive number");
-  if (options.spring_scale != 1.0 && m.chain.num_dofs() > 0) {
-    m.chain.scale_stiffness(options.spring_scale);
+  if (options.spring_scale != 1.0 && cs.chain.num_dofs() > 0) {
+    cs.chain.scale_stiffness(options.spring_scale);
     char buf[64];
     std::snprintf(buf, sizeof buf, ", springs x %g", options.spring_scale);
     s.structure_source += buf;
   }
-  if (c.structure.kind == Case::Structure::Kind::Flexible && m.chain.num_bodies() != c.structure.bodies)
-    s.structure_source += " (" + std::to_string(m.chain.num_bodies()) + " bodies; the case says " +
+  if (c.structure.kind == Case::Structure::Kind::Flexible && cs.chain.num_bodies() != c.structure.bodies)
+    s.structure_source += " (" + std::to_string(cs.chain.num_bodies()) + " bodies; the case says " +
                           std::to_string(c.structure.bodies) + ")";
   for (std::size_t i = 0; i < c.loads.size(); ++i)
-    if (const auto& l = c.loads[i]; l.body > m.chain.num_bodies())
+    if (const auto& l = c.loads[i]; l.body > cs.chain.num_bodies())
       throw InputError(c.file, c.line_of("loads." + std::to_string(i + 1) + ".body"), "loads.body",
                        "body " + std::to_string(l.body) + " is outside the chain of " +
-                           std::to_string(m.chain.num_bodies()) + " bodies");
+                           std::to_string(cs.chain.num_bodies()) + " bodies");
   for (std::size_t i = 0; i < c.markers.size(); ++i)
-    if (const auto& mk = c.markers[i]; mk.body > m.chain.num_bodies())
+    if (const auto& mk = c.markers[i]; mk.body > cs.chain.num_bodies())
       throw InputError(c.file, c.line_of("markers." + std::to_string(i + 1) + ".body"), "markers.body",
                        "marker '" + mk.name + "' on body " + std::to_string(mk.body) +
-                           " is outside the chain of " + std::to_string(m.chain.num_bodies()) + " bodies");
+                           " is outside the chain of " + std::to_string(cs.chain.num_bodies()) + " bodies");
 
-  m.chain.gravity = c.structure.gravity;
-  m.integrator.rho_infinity = c.numerics.rho_infinity;
-  m.integrator.substeps = c.numerics.structure_substeps;
-  const int n = m.chain.num_dofs();
+  cs.chain.gravity = c.structure.gravity;
+  cs.integrator.rho_infinity = c.numerics.rho_infinity;
+  cs.integrator.substeps = c.numerics.structure_substeps;
+  const int n = cs.chain.num_dofs();
   auto initial = [&](const std::vector<double>& values, int line, const char* key) {
     if (values.empty()) return Eigen::VectorXd();
     if (static_cast<int>(values.size()) != n)
       throw InputError(c.file, line, std::string("structure.") + key,
                        "expected " + std::to_string(n) + " values (bend and twist of each of the " +
-                           std::to_string(n / 2) + " joints " + std::to_string(m.chain.first_jointed_body() + 1) +
-                           " ... " + std::to_string(m.chain.num_bodies()) + "), found " +
+                           std::to_string(n / 2) + " joints " + std::to_string(cs.chain.first_jointed_body() + 1) +
+                           " ... " + std::to_string(cs.chain.num_bodies()) + "), found " +
                            std::to_string(values.size()));
     return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(values.data(), n));
   };
-  m.initial_q = initial(c.structure.initial_angles, c.structure.initial_angles_line, "initial_angles_deg");
-  m.initial_v = initial(c.structure.initial_rates, c.structure.initial_rates_line, "initial_rates_deg_per_s");
-  m.base = mbd::make_base_motion(c.kinematics);
+  cs.initial_q = initial(c.structure.initial_angles, c.structure.initial_angles_line, "initial_angles_deg");
+  cs.initial_v = initial(c.structure.initial_rates, c.structure.initial_rates_line, "initial_rates_deg_per_s");
+  cs.base_motion = mbd::make_base_motion(c.kinematics);
+  cs.external_loads = point_loads(c);
   m.frequency = c.kinematics.frequency;
   m.coupling.method = c.numerics.coupling == io::CouplingMethod::InterfaceQuasiNewton
                           ? fsi::CouplingMethod::InterfaceQuasiNewton
                           : fsi::CouplingMethod::Aitken;
   m.coupling.max_iterations = c.numerics.max_coupling_iterations;
   m.coupling.tolerance = c.numerics.coupling_tolerance;
-  m.external_loads = point_loads(c);
   m.air = c.air.enabled;
   m.density = c.air.density;
   m.free_stream = c.air.freestream;
@@ -251,7 +264,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
     g.spanwise_spacing = c.numerics.spanwise_spacing;
     s.grid = uvlm::make_planform_grid(s.wing->outline, g);
     m.lattice = lattice_model(c, p.mean_chord, p.span, s.steps);
-    m.attachment = fsi::attach_wing(m.chain, s.grid->nodes, g.chordwise, g.spanwise);
+    cs.attachment = fsi::attach_wing(cs.chain, s.grid->nodes, g.chordwise, g.spanwise);
     s.reference.area = p.area;
     s.reference.span = p.span;
     s.reference.mean_chord = p.mean_chord;
@@ -277,6 +290,8 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
       throw InputError(c.file, c.line_of("air.freestream"), "air.freestream",
                        "neither a free stream nor a moving wing: no reference speed for the coefficients");
   }
+  m.structure = chain_structure;
+  s.chain_structure = std::move(chain_structure);
   return s;
 }
 

@@ -6,6 +6,7 @@
 /// reference values of the lift coefficient.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,6 +15,7 @@
 #include "mbd/chain_model.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/chain_file.hpp"
+#include "pipeline/fsi/chain_structure.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "wings/wing_model.hpp"
@@ -46,6 +48,10 @@ struct LiftReference {
 
 struct FsiSetup {
   fsi::FsiModel model;
+  /// The run's bar chain (a rigid wing: one body without dofs), the same object as
+  /// model.structure: what the chain's warnings and outputs read.
+  std::shared_ptr<const fsi::ChainStructureModel> chain_structure;
+  const mbd::ChainModel& chain() const { return chain_structure->chain; }
   std::optional<wings::Wing> wing;        ///< the wing (if the case names one)
   std::optional<uvlm::PlanformGrid> grid; ///< lattice grid in the wing frame (if air)
   LiftReference reference;                ///< valid if air

@@ -45,6 +45,8 @@ double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precisio
 inline constexpr double kFlopsPerSecond = 1e9;
 /// Runs estimated above this are "long": flapsim run prints the estimate first [s].
 inline constexpr double kLongRunSeconds = 10.0;
+/// Runs estimated above this print their estimate even with run -q [s].
+inline constexpr double kVeryLongRunSeconds = 3600.0;
 
 /// \param bodies  bodies of the chain the run will use (the case's structure.bodies)
 RunEstimate estimate_run(const io::Case& c, int bodies);

@@ -65,14 +65,16 @@ std::span<const HistoryColumn> history_columns() { return kColumns; }
 StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
                        const mbd::WingKinematics& kinematics, const LiftReference& reference,
                        int outer_body) {
+  // The chain's outputs: bodies' angles, joint deflections, the base's reaction.
+  const mbd::ChainModel& chain = fsi::chain_structure(*model.structure).chain;
+  const fsi::ChainStructureData& cd = fsi::chain_structure(*data.structure);
   StepSample s;
-  s.time = data.state.time;
+  s.time = data.time();
   s.base = kinematics.angles(s.time);
-  s.tip = fsi::body_angles(model.chain, data.chain, kinematics.stroke_plane_angle,
-                           model.chain.num_bodies() - 1);
-  s.outer = fsi::body_angles(model.chain, data.chain, kinematics.stroke_plane_angle, outer_body);
-  if (data.state.q.size() > 0) {
-    const Eigen::VectorXd deflection = data.state.q - model.chain.rest_angles();
+  s.tip = fsi::body_angles(chain, cd.chain, kinematics.stroke_plane_angle, chain.num_bodies() - 1);
+  s.outer = fsi::body_angles(chain, cd.chain, kinematics.stroke_plane_angle, outer_body);
+  if (cd.state.q.size() > 0) {
+    const Eigen::VectorXd deflection = cd.state.q - chain.rest_angles();
     for (Eigen::Index k = 0; k + 1 < deflection.size(); k += 2) {
       s.tip_bend += deflection(k);
       s.tip_twist += deflection(k + 1);
@@ -99,9 +101,9 @@ StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
     s.cd = s.drag / qs;
     s.cp = s.power / (qs * reference.speed);
   }
-  const mbd::BasePose pose = model.base(s.time);
-  s.drive_moment = mbd::base_reaction(model.chain, data.chain, pose, data.loads).moment;
-  s.drive_power = mbd::base_power(model.chain, data.chain, pose, data.loads);
+  const mbd::BasePose pose = model.base()(s.time);
+  s.drive_moment = mbd::base_reaction(chain, cd.chain, pose, cd.loads).moment;
+  s.drive_power = mbd::base_power(chain, cd.chain, pose, cd.loads);
   s.coupling_iterations = data.last_iterations;
   s.coupling_change = data.last_change;
   return s;
@@ -123,9 +125,10 @@ void history_row(const StepSample& sample, const io::Case& c, const fsi::FsiData
                  std::vector<double>& row) {
   std::size_t i = 0;
   for (const HistoryColumn& col : kColumns) row[i++] = col.value(sample);
-  for (int k = 0; k < data.state.q.size(); ++k) row[i++] = data.state.q(k);
+  const fsi::ChainStructureData& cd = fsi::chain_structure(*data.structure);
+  for (int k = 0; k < cd.state.q.size(); ++k) row[i++] = cd.state.q(k);
   for (const auto& m : c.markers) {
-    const Eigen::Vector3d p = mbd::point_position(data.chain, m.body - 1, m.point);
+    const Eigen::Vector3d p = mbd::point_position(cd.chain, m.body - 1, m.point);
     for (int a = 0; a < 3; ++a) row[i++] = p(a);
   }
 }

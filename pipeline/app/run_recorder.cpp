@@ -42,8 +42,8 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
       dir_(existing_directory(output_dir)),
       vtk_every_(vtk_every),
       started_(started),
-      outer_body_(fsi::outer_body(setup.model.chain)),
-      history_(dir_ / "history.csv", history_header(c, setup.model.chain), kHistoryPublishEvery,
+      outer_body_(fsi::outer_body(setup.chain())),
+      history_(dir_ / "history.csv", history_header(c, setup.chain()), kHistoryPublishEvery,
                kHistoryMaxPublishInterval),
       row_(history_.columns().size()) {
   const fsi::FsiModel& model = setup.model;
@@ -66,7 +66,7 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
   r.set("steps_per_cycle", setup.steps_per_cycle);
   r.set("cycles", c.numerics.cycles);
   r.set("dt_s", setup.dt);
-  r.set("bodies", model.chain.num_bodies());
+  r.set("bodies", setup.chain().num_bodies());
   r.set("spring_scale", spring_scale);
   if (model.air) {
     r.set("reference_area_m2", setup.reference.area);
@@ -93,7 +93,7 @@ void RunRecorder::record_initial(const fsi::FsiData& data) {
 
 void RunRecorder::write_series(const fsi::FsiData& data, long step) {
   const fsi::FsiModel& model = setup_.model;
-  const double t = data.state.time;
+  const double t = data.time();
   io::StepValues values;
   values.step = step;
   values.t_over_T = t / setup_.period;
@@ -106,7 +106,7 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
     io::PolyDataMesh wing;
     if (step == 0) {
       Eigen::Matrix3Xd nodes(3, model.lattice.nodes()), velocities(3, model.lattice.nodes());
-      fsi::deformed_nodes(model.attachment, data.chain, nodes, velocities);
+      data.structure->surface(nodes, velocities);
       wing = io::wing_surface_mesh(model.lattice, nodes, velocities, t);
     } else {
       wing = io::wing_surface_mesh(model.lattice, *data.lattice, t);
@@ -124,7 +124,7 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
     io::write_vtp(dir_ / kf, wake, io::Flush::deferred);
     wake_pvd_->append(t, dir_ / kf);
   }
-  io::PolyDataMesh chain = io::chain_mesh(model.chain, data.chain, t);
+  io::PolyDataMesh chain = io::chain_mesh(setup_.chain(), fsi::chain_structure(*data.structure).chain, t);
   io::add_step_values(chain, values);
   const auto cf = io::PvdSeries::step_file_name("vtk/chain", step, "vtp");
   io::write_vtp(dir_ / cf, chain, io::Flush::deferred);
@@ -146,7 +146,7 @@ void RunRecorder::write_state() const {
   io::RunState state;
   state.air = setup_.model.air;
   double length = 0.0;
-  for (const auto& b : setup_.model.chain.bodies) length += b.length;
+  for (const auto& b : setup_.chain().bodies) length += b.length;
   if (length > 0.0) state.length_scale = length;
   if (pressure_range_ > 0.0) state.pressure_range = pressure_range_;
   if (circulation_range_ > 0.0) state.circulation_range = circulation_range_;
@@ -158,7 +158,7 @@ void RunRecorder::write_state() const {
 void RunRecorder::analyse(const fsi::FsiData& data) {
   RunResults& r = results_;
   const double period = setup_.period;
-  const double t_end = data.state.time;
+  const double t_end = data.time();
   const double t_begin = std::max(0.0, t_end - period);
   const std::vector<double> t = series(samples_, [](const StepSample& s) { return s.time; });
   const auto mean = [&](std::vector<double> x) {
@@ -219,7 +219,7 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   r.set("outer_rotation_lag",
         fsi::crossing_lag(t, outer_alpha, base_alpha, right_angle, period, t_begin, t_end).value_or(nan));
 
-  if (setup_.model.chain.num_dofs() > 0) {
+  if (setup_.chain().num_dofs() > 0) {
     const TipDeflection peak = peak_tip_deflection();
     r.set("peak_tip_bend_deg", peak.bend_deg);
     r.set("peak_tip_twist_deg", peak.twist_deg);
@@ -236,9 +236,9 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   r.set("coupling_tolerance_rad", setup_.model.coupling.tolerance);
   r.set("coupling_method", setup_.model.coupling.method == fsi::CouplingMethod::InterfaceQuasiNewton
                                ? std::string("iqn_ils") : std::string("aitken"));
-  if (data.chain.step.split_steps > 0) {
-    r.set("split_structural_steps", data.chain.step.split_steps);
-    r.set("max_structural_pieces", data.chain.step.max_substeps);
+  if (data.structure->split_steps() > 0) {
+    r.set("split_structural_steps", data.structure->split_steps());
+    r.set("max_structural_pieces", data.structure->max_step_pieces());
   }
   if (setup_.model.air) r.set("wake_panels", data.lattice->wake_panels());
 }

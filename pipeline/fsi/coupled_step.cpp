@@ -2,27 +2,22 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 
-#include "mbd/chain_kinematics.hpp"
-#include "mbd/convergence_failure.hpp"
-#include "pipeline/fsi/load_transfer.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 
 namespace flapsim::fsi {
 
 FsiData::FsiData(const FsiModel& model)
-    : chain(model.chain),
-      loads(model.chain.num_bodies()),
+    : structure(model.structure->make_data()),
       aitken(model.coupling.first_relaxation),
-      quasi_newton(model.chain.num_dofs()) {
+      quasi_newton(model.structure->num_dofs()) {
   if (model.air) {
     lattice.emplace(model.lattice);
     nodes.setZero(3, model.lattice.nodes());
     node_velocities.setZero(3, model.lattice.nodes());
   }
-  residual.setZero(model.chain.num_dofs());
+  residual.setZero(structure->interface_size());
 }
 
 namespace {
@@ -35,24 +30,9 @@ std::string significant(double v) {
   return text;
 }
 
-void external_loads(const FsiModel& model, double t, mbd::Loads& loads) {
-  loads.clear();
-  if (model.external_loads) model.external_loads(t, loads);
-}
-
-// Relaxed state: s̃ += ω (ŝ − s̃) for Φ, Φ̇, Φ̈ and the algorithmic acceleration.
-void relax(mbd::ChainState& relaxed, const mbd::ChainState& trial, double omega) {
-  relaxed.q += omega * (trial.q - relaxed.q);
-  relaxed.v += omega * (trial.v - relaxed.v);
-  relaxed.qdd += omega * (trial.qdd - relaxed.qdd);
-  relaxed.a += omega * (trial.a - relaxed.a);
-  relaxed.time = trial.time;
-  relaxed.step = trial.step;
-}
-
-// The lattice solved on the chain's current kinematics at time t (loads in data.lattice).
+// The lattice solved on the structure's current pose at time t (loads in data.lattice).
 void solve_air(const FsiModel& model, FsiData& data, double dt, long step, double t) {
-  deformed_nodes(model.attachment, data.chain, data.nodes, data.node_velocities);
+  data.structure->surface(data.nodes, data.node_velocities);
   if (!data.nodes.allFinite() || !data.node_velocities.allFinite())
     throw NumericalFailure("deformed wing surface is not finite", step, t);
   uvlm::VortexLatticeData& lat = *data.lattice;
@@ -62,72 +42,42 @@ void solve_air(const FsiModel& model, FsiData& data, double dt, long step, doubl
     throw NumericalFailure("aerodynamic loads are not finite", step, t);
 }
 
-// data.loads = external loads at t + the lattice's panel loads (at the current pose).
+// The structure's loads = its external loads at t + the lattice's panel loads (at the
+// current pose).
 void assemble_loads(const FsiModel& model, FsiData& data, double t) {
-  external_loads(model, t, data.loads);
-  if (model.air)
-    add_panel_loads(model.attachment, data.chain, data.lattice->loads, data.loads);
+  data.structure->set_external_loads(t);
+  if (model.air) data.structure->add_panel_loads(data.lattice->loads);
 }
 
-void chain_step(const FsiModel& model, FsiData& data, double dt) {
-  mbd::advance(model.chain, data.chain, model.base, model.integrator, data.state, dt, data.loads,
-               data.trial);
-}
-
-// (Φ, Φ̇, Φ̈, a) as one vector, and back (time and step stay those of `to`).
-void stack(const mbd::ChainState& s, Eigen::VectorXd& x) {
-  const Eigen::Index n = s.q.size();
-  x.resize(4 * n);
-  x << s.q, s.v, s.qdd, s.a;
-}
-void unstack(const Eigen::VectorXd& x, mbd::ChainState& to) {
-  const Eigen::Index n = to.q.size();
-  to.q = x.segment(0, n);
-  to.v = x.segment(n, n);
-  to.qdd = x.segment(2 * n, n);
-  to.a = x.segment(3 * n, n);
-}
-
-double change(const FsiModel& model, const mbd::ChainState& a, const mbd::ChainState& b) {
-  const double rate_scale = 2.0 * std::numbers::pi * model.frequency;  // [rad/s] per flapping radian
-  const double dq = (a.q - b.q).lpNorm<Eigen::Infinity>();
-  const double dv = (a.v - b.v).lpNorm<Eigen::Infinity>() / rate_scale;
-  return std::max(dq, dv);
-}
-
-// Sub-iterations from data.relaxed (steps 1–3 of the file comment) until the structure stops
+// Sub-iterations from the iterate (steps 1–3 of the file comment) until the structure stops
 // changing or k reaches k + limit; k counts the step's lattice solves, delta the last change.
 bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, double t1,
                  CouplingMethod method, int limit, int& k, double& delta) {
+  StructureData& s = *data.structure;
   const int last = k + limit;
   bool first = k == 0;
   while (k < last) {
-    // 1. lattice on the relaxed iterate
-    if (!first)
-      mbd::forward_kinematics(model.chain, data.chain, model.base(t1), data.relaxed.q, data.relaxed.v);
-    // (first of the step: data.chain already holds the kinematics of the predictor = relaxed)
+    // 1. lattice on the iterate
+    if (!first) s.pose_iterate();
+    // (first of the step: the structure's pose is already the predictor's = the iterate)
     first = false;
     solve_air(model, data, dt, step, t1);
     ++k;
-    // 2. chain step with these loads
+    // 2. the structure's step with these loads
     assemble_loads(model, data, t1);
-    chain_step(model, data, dt);
+    s.solve(dt);
     // 3. converged?
-    delta = change(model, data.trial, data.relaxed);
-    if (!std::isfinite(delta)) throw NumericalFailure("coupling produced a non-finite chain state", step, t1);
+    delta = s.change(model.frequency);
+    if (!std::isfinite(delta)) throw NumericalFailure("coupling produced a non-finite structure state", step, t1);
     if (delta <= model.coupling.tolerance) return true;
-    data.residual = data.trial.qdd - data.relaxed.qdd;
+    s.residual(data.residual);
     bool updated = false;
     if (method == CouplingMethod::InterfaceQuasiNewton) {
-      stack(data.trial, data.stacked_trial);
+      s.trial_vector(data.stacked_trial);
       updated = data.quasi_newton.next(data.residual, data.stacked_trial, data.stacked_next);
-      if (updated) {
-        unstack(data.stacked_next, data.relaxed);
-        data.relaxed.time = data.trial.time;
-        data.relaxed.step = data.trial.step;
-      }
+      if (updated) s.set_iterate(data.stacked_next);
     }
-    if (!updated) relax(data.relaxed, data.trial, data.aitken.next(data.residual));
+    if (!updated) s.relax(data.aitken.next(data.residual));
   }
   return false;
 }
@@ -135,17 +85,11 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
 }  // namespace
 
 void initialize(const FsiModel& model, FsiData& data, double t0) {
-  const int n = model.chain.num_dofs();
-  const Eigen::VectorXd q0 = model.initial_q.size() == n ? model.initial_q : model.chain.rest_angles();
-  const Eigen::VectorXd v0 = model.initial_v.size() == n ? model.initial_v : Eigen::VectorXd::Zero(n);
-  external_loads(model, t0, data.loads);
   try {
-    data.state = mbd::make_initial_state(model.chain, data.chain, model.base, t0, q0, v0, data.loads);
-  } catch (const mbd::ConvergenceFailure& e) {
-    throw NumericalFailure("the initial state (t = " + std::to_string(t0) + " s): multibody: " + e.reason());
+    data.structure->initialize(t0);
+  } catch (const StructureFailure& e) {
+    throw NumericalFailure("the initial state (t = " + std::to_string(t0) + " s): " + e.what());
   }
-  data.trial = data.state;
-  data.relaxed = data.state;
   data.step = 0;
   data.last_iterations = 0;
   data.total_iterations = 0;
@@ -153,15 +97,13 @@ void initialize(const FsiModel& model, FsiData& data, double t0) {
 }
 
 void coupled_step(const FsiModel& model, FsiData& data, double dt) {
-  const double t1 = data.state.time + dt;
+  StructureData& s = *data.structure;
+  const double t1 = s.time() + dt;
   const long step = data.step;
   try {
-    if (model.chain.num_dofs() == 0) {
+    if (model.structure->num_dofs() == 0) {
       // Rigid wing: the pose is prescribed; one lattice solve, nothing to iterate.
-      const Eigen::VectorXd none;
-      mbd::forward_kinematics(model.chain, data.chain, model.base(t1), none, none);
-      data.state.time = t1;
-      data.state.step = step + 1;
+      s.prescribe(t1);
       data.last_iterations = 0;
       if (model.air) {
         solve_air(model, data, dt, step, t1);
@@ -172,19 +114,18 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
       assemble_loads(model, data, t1);
       data.last_change = 0.0;
     } else if (!model.air) {
-      external_loads(model, t1, data.loads);
-      chain_step(model, data, dt);
-      data.state = data.trial;
+      s.set_external_loads(t1);
+      s.solve(dt);
+      s.accept();
       data.last_iterations = 0;
       data.last_change = 0.0;
     } else {
-      // 0. predictor: the previous step's aerodynamic loads (their points ride on the bodies).
-      external_loads(model, t1, data.loads);
-      // The previous aerodynamic loads were attached at the previous pose; re-attach
-      // them at the accepted pose of the last step (data.chain holds it).
-      if (step > 0) add_panel_loads(model.attachment, data.chain, data.lattice->loads, data.loads);
-      chain_step(model, data, dt);
-      data.relaxed = data.trial;
+      // 0. predictor: the previous step's aerodynamic loads, transferred at the accepted
+      // pose of the last step (the structure's current pose).
+      s.set_external_loads(t1);
+      if (step > 0) s.add_panel_loads(data.lattice->loads);
+      s.solve(dt);
+      s.start_iterate();
       data.aitken.start_step();
       data.quasi_newton.start_step();
       int k = 0;
@@ -202,11 +143,11 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
                                                       "\"iqn_ils\" (docs/fsi.md, \"Coupling\")")
                                         : std::string()),
                                step, t1);
-      // 4. accept the chain's answer; data.chain holds its kinematics (mbd::advance).
-      data.state = data.trial;
+      // 4. accept the structure's answer; its pose is that answer's (solve()).
+      s.accept();
     }
-  } catch (const mbd::ConvergenceFailure& e) {
-    throw NumericalFailure("multibody: " + e.reason(), step, t1);
+  } catch (const StructureFailure& e) {
+    throw NumericalFailure(e.what(), step, t1);
   } catch (const std::length_error& e) {
     throw NumericalFailure(e.what(), step, t1);
   }
@@ -219,7 +160,7 @@ void shed_wake(const FsiModel& model, FsiData& data) {
   try {
     uvlm::advance(model.lattice, *data.lattice);
   } catch (const std::length_error& e) {
-    throw NumericalFailure(e.what(), data.step - 1, data.state.time);
+    throw NumericalFailure(e.what(), data.step - 1, data.time());
   }
 }
 

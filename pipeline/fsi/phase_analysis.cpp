@@ -79,13 +79,17 @@ std::vector<double> extremum_times(const std::vector<double>& t, const std::vect
   return out;
 }
 
+// The shift (c − t_ref)/period of the candidate nearest t_ref in time: the crossing of the
+// same cycle. NaN if there is none within half a period. (The shift used to be wrapped to
+// (−½, ½] before the nearest was chosen, so a crossing of another cycle, a whole period
+// away, could be taken when the lag drifts from cycle to cycle.)
 double nearest_shift(const std::vector<double>& candidates, double t_ref, double period) {
   double best = std::numeric_limits<double>::quiet_NaN();
   for (double c : candidates) {
-    const double f = wrap_half((c - t_ref) / period);
+    const double f = (c - t_ref) / period;
     if (!(std::abs(f) >= std::abs(best))) best = f;
   }
-  return best;
+  return std::abs(best) <= 0.5 ? best : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace

@@ -47,8 +47,9 @@ double window_mean(const std::vector<double>& t, const std::vector<double>& x, d
 
 /// \brief Mean time shift of the crossings of \p x relative to those of \p reference
 /// within a window, as a fraction of the period [-]: for each crossing of the
-/// reference (same level and direction) the nearest crossing of x, shift wrapped to
-/// (−½, ½]. Positive: x crosses later (lags). nullopt if either has no crossing.
+/// reference (same level and direction) the crossing of x nearest it in time (the same
+/// cycle's; none if it is more than half a period away), shift in [−½, ½]. Positive: x
+/// crosses later (lags). nullopt if either has no crossing.
 /// Both the rising and the falling crossings are used.
 std::optional<double> crossing_lag(const std::vector<double>& t, const std::vector<double>& x,
                                    const std::vector<double>& reference, double level,

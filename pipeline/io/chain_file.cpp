@@ -8,6 +8,9 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
 #include <sstream>
 #include <stdexcept>
 
@@ -76,6 +79,44 @@ ChainFemRecord parse_fem_comparison(const TomlTable& t) {
     m->relative_error = reduction::relative_error(m->chain_hz, m->fem_hz);
   }
   return r;
+}
+
+// A problem the whole chain's validation finds (mbd::ChainModel::validate: "chain: body 3:
+// mass must be > 0", "chain: joint 2: ...", "chain: stiffness matrix ..."), located at the
+// key it concerns: a body's key in its [[bodies]] table, a joint's [bodies.joint], the root's
+// keys. (Every such error used to be reported at root_rotation.)
+[[noreturn]] void fail_at_the_key(const TomlTable& root, const std::vector<TomlTable>& bodies,
+                                  const std::string& what) {
+  std::string msg = what.rfind("chain: ", 0) == 0 ? what.substr(7) : what;
+  const auto numbered = [&](const char* head, std::size_t& index) {
+    if (msg.rfind(head, 0) != 0) return false;
+    const std::size_t colon = msg.find(": ");
+    const int k = std::atoi(msg.c_str() + std::char_traits<char>::length(head));
+    if (colon == std::string::npos || k < 1 || static_cast<std::size_t>(k) > bodies.size()) return false;
+    index = static_cast<std::size_t>(k - 1);
+    msg = msg.substr(colon + 2);
+    return true;
+  };
+  std::size_t k = 0;
+  if (numbered("body ", k)) {
+    const TomlTable& t = bodies[k];
+    const bool about_inertia = msg.find("inertia") != std::string::npos || msg.find("principal") != std::string::npos;
+    std::string key = "inertia";
+    if (msg.rfind("length", 0) == 0) key = "length";
+    else if (msg.rfind("mass", 0) == 0) key = "mass";
+    else if (msg.rfind("non-finite", 0) == 0 || !about_inertia) key = "center_of_mass";
+    t.fail(key, msg);
+  }
+  if (numbered("joint ", k)) {
+    const TomlTable& t = bodies[k];
+    t.fail("joint", "the joint inboard of body " + std::to_string(k + 1) + ": " + msg);
+  }
+  if (msg.rfind("stiffness matrix", 0) == 0) root.fail("joint_stiffness", msg);
+  if (msg.rfind("damping matrix", 0) == 0) root.fail("joint_damping", msg);
+  if (msg.rfind("welded bodies", 0) == 0) root.fail("welded_bodies", msg);
+  if (msg.rfind("root offset", 0) == 0) root.fail("root_offset", msg);
+  if (msg.rfind("root rotation", 0) == 0) root.fail("root_rotation", msg);
+  root.fail("bodies", msg);
 }
 
 mbd::ChainModel parse_chain(const TomlTable& root, std::optional<ChainFemRecord>* fem) {
@@ -170,7 +211,7 @@ mbd::ChainModel parse_chain(const TomlTable& root, std::optional<ChainFemRecord>
   try {
     chain.validate();
   } catch (const std::invalid_argument& e) {
-    root.fail("root_rotation", e.what());
+    fail_at_the_key(root, bodies, e.what());
   }
   if (auto t = root.find_table("fem_comparison")) {
     ChainFemRecord r = parse_fem_comparison(*t);

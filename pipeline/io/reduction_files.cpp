@@ -202,9 +202,11 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
   const Eigen::VectorXd kdiag = lc.chain.stiffness_diagonal();
   s << "\n## Joint stiffness\n\n"
     << (lc.springs == reduction::SpringModel::full
-            ? "Full joint stiffness K = (D C_rr D^T)^-1 from the stations' compliance by reciprocity "
-              "(docs/reduction.md): bend-twist and joint-to-joint coupling kept; the chain's joint angles "
-              "equal the FEM's relative station rotations under every joint load."
+            ? "Full joint stiffness K = (T C T^T)^-1 from the stations' compliance C by reciprocity, T "
+              "taking the stations' deflections and twists to the joint angles (chord slopes of the "
+              "deflection between stations, twist differences; docs/reduction.md): bend-twist and "
+              "joint-to-joint coupling kept; the chain's joint angles equal the FEM's T u under every joint "
+              "load."
             : "Diagonal springs k = 1/(K^-1)_jj from the stations' compliance: coupling dropped "
               "(docs/reduction.md, \"Diagonal springs\").")
     << " Eigenvalues of K: " << lc.joint_stiffness.min_eigenvalue << " ... " << lc.joint_stiffness.max_eigenvalue

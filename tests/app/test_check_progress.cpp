@@ -45,7 +45,7 @@ TEST(CheckProgress, TheSetupOfAWingReducedInProcessIsShownAsRunShowsIt) {
   const app::FsiSetup setup = app::build_fsi_setup_watched(c, {}, "check", {}, o);
   const std::string text = file_contents(f);
   std::fclose(f);
-  EXPECT_EQ(setup.model.chain.num_bodies(), 2);
+  EXPECT_EQ(setup.chain().num_bodies(), 2);
   EXPECT_EQ(text.rfind("check: setup (the wing's FEM, reduction and modes) (stage 1 of 1): ", 0), 0u) << text;
 }
 
@@ -70,9 +70,16 @@ TEST(CheckProgress, SigintDuringChecksReductionEndsItWithStatus130) {
   posix_spawn_file_actions_init(&files);
   posix_spawn_file_actions_addopen(&files, 1, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&files, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const char* was = std::getenv("FLAPSIM_QUIET");
+  const std::string saved = was ? was : "";
   ::setenv("FLAPSIM_QUIET", "1", 1);
   pid_t pid = 0;
-  ASSERT_EQ(::posix_spawn(&pid, binary.c_str(), &files, nullptr, argv.data(), environ), 0);
+  const int spawned = ::posix_spawn(&pid, binary.c_str(), &files, nullptr, argv.data(), environ);
+  // Only the child is quiet: the tests after this one (a sweep's progress lines,
+  // app.SweepProgress.*) must not inherit FLAPSIM_QUIET from this process.
+  if (was) ::setenv("FLAPSIM_QUIET", saved.c_str(), 1);
+  else ::unsetenv("FLAPSIM_QUIET");
+  ASSERT_EQ(spawned, 0);
   posix_spawn_file_actions_destroy(&files);
   std::this_thread::sleep_for(600ms);
   ::kill(pid, SIGINT);

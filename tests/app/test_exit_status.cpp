@@ -45,8 +45,8 @@ TEST(ExitStatus, ThreeForANumericalFailureOfTheRun) {
   std::ofstream(dir / "case.toml") << c;
   const int status = run_flapsim("run " + (dir / "case.toml").string() + " --chain " + (dir / "chain.toml").string() +
                                  " -o " + (dir / "out").string());
-  if (status == 0) GTEST_SKIP() << "the chain did not diverge";
-  EXPECT_EQ(status, 3);
+  // Deterministic: this chain diverges on every run (measured: exit 3), so anything else fails.
+  ASSERT_EQ(status, 3);
   EXPECT_NE(read_text(dir / "out" / "summary.json").find("\"status\": \"failed\""), std::string::npos);
 }
 

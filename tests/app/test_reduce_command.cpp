@@ -33,6 +33,12 @@ TEST(ReduceCommand, WritesBeamChainReportAndVtp) {
   ASSERT_NE(pos, std::string::npos);
   const double fem_mass = std::stod(s.substr(pos + 15));
   EXPECT_NEAR(chain.total_mass(), fem_mass, 1e-12 * fem_mass);
+  // report.md states the stiffness the reduction builds, K = (T C T^T)^-1 with chord slopes
+  // (reduction/joint_stiffness.hpp), not the fitted-slope K = (D C_rr D^T)^-1 of a first
+  // version (docs/reduction.md, "Why chord slopes").
+  const std::string report = read_text(dir / "report.md");
+  EXPECT_NE(report.find("K = (T C T^T)^-1"), std::string::npos);
+  EXPECT_EQ(report.find("C_rr"), std::string::npos);
 }
 
 TEST(ReduceCommand, MissingWingFileExitsTwoAndWritesNothing) {

@@ -41,18 +41,23 @@ TEST_F(HawkmothFem, MeshSizeAndTotalMass) {
   EXPECT_NEAR(m / 33.8e-6, 1.0, 0.01);
 }
 
-TEST_F(HawkmothFem, MassOverSpanThirds) {
-  // Strip sums of element masses by centroid over thirds of the span R (from
-  // the pivot). Reported beside RP Table 1 (13.27 / 13.01 / 7.48 mg); the
-  // strips must add up to the FEM total to round-off.
+TEST_F(HawkmothFem, MassOverSpanThirdsBesideTable1) {
+  // Strip sums of element masses by centroid over thirds of the span R (from the pivot),
+  // against the rotation-phase paper's Table 1: 13.27 / 13.01 / 7.48 mg. Measured +13.8 /
+  // −3.4 / −18.1 % (docs/fem.md, "The hawkmoth": the calibrated veins are heavy at the root,
+  // the scale mass is uniform per area, and Table 1's bodies come from the paper's own
+  // lumping). The tolerance, 20 % per third, is that known difference: a mass model that
+  // moved more mass along the span fails.
   const double R = wing_->span;
   double third[3] = {0.0, 0.0, 0.0};
   for (const ElementMass& e : fem_->system.element_masses)
     third[std::clamp(static_cast<int>(e.centroid.y() / (R / 3.0)), 0, 2)] += e.mass;
+  const double table1_mg[3] = {13.27, 13.01, 7.48};
   std::printf("  span thirds: %.3f / %.3f / %.3f mg (RP Table 1: 13.27 / 13.01 / 7.48)\n", third[0] * 1e6,
               third[1] * 1e6, third[2] * 1e6);
-  EXPECT_NEAR(third[0] + third[1] + third[2], fem_->system.total_mass, 1e-15);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(third[k] * 1e6 / table1_mg[k], 1.0, 0.20) << "third " << k + 1;
   // The mass falls toward the tip, as in Table 1.
+  EXPECT_GT(third[0], third[1]);
   EXPECT_GT(third[1], third[2]);
 }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <numbers>
 #include <random>
 
@@ -13,28 +14,21 @@
 #include "mbd/chain_model.hpp"
 #include "mbd/wing_kinematics.hpp"
 #include "pipeline/fsi/aitken_relaxation.hpp"
+#include "pipeline/fsi/chain_structure.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/fsi/interface_quasi_newton.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/fsi/load_transfer.hpp"
 #include "pipeline/fsi/wing_attachment.hpp"
 #include "uvlm/planform_grid.hpp"
+#include "fsi/plate_wing_fixtures.hpp"
 
 namespace {
 
 using namespace flapsim;
+using flapsim::test::eq8_kinematics;
+using flapsim::test::plate_grid;
 constexpr double kPi = std::numbers::pi;
-
-// A flat rectangular wing, chord 10 mm, span 40 mm, leading edge at x = 2.5 mm (the
-// flat plate of wings/flat_plate.toml), as a lattice grid in the wing frame.
-uvlm::PlanformGrid plate_grid(int nc, int ns) {
-  uvlm::PlanformGridOptions o;
-  o.chordwise = nc;
-  o.spanwise = ns;
-  uvlm::PlanformGrid g = uvlm::make_rectangular_grid(0.010, 0.040, o);
-  for (Eigen::Index k = 0; k < g.nodes.cols(); ++k) g.nodes(0, k) += 0.0025;
-  return g;
-}
 
 // A chain of n bodies along the span with its root frame turned by 5° about z_W and
 // shifted, so the attachment has to use the root placement.
@@ -47,17 +41,6 @@ mbd::ChainModel test_chain(int n, double stiffness) {
   c.root_rotation = mbd::rotation_z(5.0 * kDegToRad);
   c.root_offset = Eigen::Vector3d(0.0005, 0.0, 0.0);
   return c;
-}
-
-mbd::WingKinematics eq8_kinematics(double rotation_phase) {
-  // Eq. 8 of the rotation-phase paper: φ = 10° + 50° cos(2π(ft + δψ)), α = 90° − 45° sin(2πft).
-  mbd::WingKinematics k;
-  k.frequency = 26.1;
-  k.rotation_phase = rotation_phase;
-  k.sweep = mbd::PeriodicSignal::harmonic(10.0 * kDegToRad, {50.0 * kDegToRad}, {});
-  k.deviation = mbd::PeriodicSignal::harmonic(0.0, {}, {});
-  k.rotation = mbd::PeriodicSignal::harmonic(90.0 * kDegToRad, {}, {-45.0 * kDegToRad});
-  return k;
 }
 
 TEST(FsiAttachment, UndeformedChainCarriesTheWingAsARigidBody) {
@@ -161,15 +144,17 @@ std::vector<double> coupled_lift(const fsi::FsiModel& m, int steps, double dt, d
 
 fsi::FsiModel plate_model(const mbd::ChainModel& chain, const uvlm::PlanformGrid& grid, int steps) {
   fsi::FsiModel m;
-  m.chain = chain;
+  auto structure = std::make_shared<fsi::ChainStructureModel>();
+  structure->chain = chain;
   const auto kin = eq8_kinematics(-0.1);
-  m.base = mbd::make_base_motion(kin);
+  structure->base_motion = mbd::make_base_motion(kin);
   m.frequency = kin.frequency;
   m.lattice.chordwise = grid.chordwise;
   m.lattice.spanwise = grid.spanwise;
   m.lattice.core.radius = 0.2 * 0.010;  // 0.2 chord
   m.lattice.wake_capacity = steps;
-  m.attachment = fsi::attach_wing(m.chain, grid.nodes, grid.chordwise, grid.spanwise);
+  structure->attachment = fsi::attach_wing(structure->chain, grid.nodes, grid.chordwise, grid.spanwise);
+  m.structure = structure;
   m.coupling.tolerance = 1e-9;
   return m;
 }

@@ -59,4 +59,23 @@ TEST(FsiPhaseAnalysis, CrossingLagAndWindowMean) {
   EXPECT_NEAR(fsi::window_mean(t, y, 1.0, 3.0), 1.0, 1e-12);
 }
 
+
+TEST(FsiPhaseAnalysis, CrossingLagPairsTheCrossingsOfTheSameCycle) {
+  // x lags the reference sin(2πt) by 0.01 of the period in its first cycle and by 0.05
+  // from t = 0.75 on (the jump where x is near its minimum, far from a crossing). In the
+  // window [0.9, 1.1] the reference rises through 0 at t = 1, and x's crossing of that
+  // cycle is at 1.05: lag 0.05. Before, the shift was wrapped before the nearest was
+  // chosen, and the crossing of the cycle before (t = 0.01, wrapped 0.01) was taken.
+  std::vector<double> t, x, ref;
+  for (int n = -50; n <= 300; ++n) {
+    t.push_back(n / 100.0);
+    ref.push_back(std::sin(2 * kPi * t.back()));
+    const double lag = t.back() < 0.75 ? 0.01 : 0.05;
+    x.push_back(std::sin(2 * kPi * (t.back() - lag)));
+  }
+  const auto lag = fsi::crossing_lag(t, x, ref, 0.0, 1.0, 0.9, 1.1);
+  ASSERT_TRUE(lag.has_value());
+  EXPECT_NEAR(*lag, 0.05, 1e-3);  // linear interpolation between samples 0.01 apart
+}
+
 }  // namespace

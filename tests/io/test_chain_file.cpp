@@ -125,5 +125,25 @@ TEST(ChainFile, BadInputNamesFileLineAndKey) {
                1, "root");
 }
 
+
+// A moving body (jointed, not welded) of zero mass passes the per-body reading (a welded
+// body may be massless) and is refused by the whole chain's validation
+// (mbd::ChainModel::validate: "body 2: mass must be > 0"). Before, every error of that
+// validation was reported at the key root_rotation (line 1); now at the body's own key.
+TEST(ChainFile, AChainValidationErrorNamesTheBodysKeyAndLine) {
+  const std::string inertia = "inertia = [[1e-10, 0, 0], [0, 1e-10, 0], [0, 0, 2e-10]]\n";
+  const std::string body1 = "root = \"rigid\"\n[[bodies]]\nlength = 0.01\nmass = 1e-5\n"
+                            "center_of_mass = [0, 0.005, 0]\n" + inertia;            // lines 1-6
+  const std::string body2 = "[[bodies]]\nlength = 0.01\nmass = 0\n"                  // lines 7-9
+                            "center_of_mass = [0, 0.005, 0]\n" + inertia +             // lines 10-11
+                            "[bodies.joint]\nbend_stiffness = 1e-3\ntwist_stiffness = 1e-4\n";
+  expect_error(body1 + body2, 9, "bodies[1].mass");
+  // A non-symmetric joint-stiffness matrix is reported at its key (line 1 of this text).
+  const std::string matrix = "joint_stiffness = [[1e-3, 1e-4], [0, 1e-4]]\n";
+  const std::string body2_no_springs = "[[bodies]]\nlength = 0.01\nmass = 1e-5\n"
+                                       "center_of_mass = [0, 0.005, 0]\n" + inertia;
+  expect_error(matrix + body1 + body2_no_springs, 1, "joint_stiffness");
+}
+
 }  // namespace
 }  // namespace flapsim::mbd

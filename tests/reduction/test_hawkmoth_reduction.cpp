@@ -159,7 +159,7 @@ TEST(HawkmothThinMembrane, ChainAgainstFemForFourToSixteenBodies) {
   }
 }
 
-TEST_F(HawkmothReduction, ThreeEqualBodiesBesideTable1) {
+TEST_F(HawkmothReduction, ThreeEqualBodiesMassesBesideTable1) {
   const LumpedChain lc = lump_into_chain(*analysis_, 3);
   // Rotation-phase paper, Table 1: 13.27 / 13.01 / 7.48 mg; 0.47 / 3.84 / 1.26e-10 kg m².
   const double paper_mass_mg[3] = {13.27, 13.01, 7.48};
@@ -175,6 +175,13 @@ TEST_F(HawkmothReduction, ThreeEqualBodiesBesideTable1) {
   }
   // The three bodies hold the whole FEM mass to round-off.
   EXPECT_NEAR(sum, lc.fem_mass, 1e-12 * lc.fem_mass);
+  // Table 1's masses, within the FEM's known difference (docs/reduction.md, "Three equal
+  // bodies": +15.1 / −4.2 / −19.0 %; the span thirds of the FEM itself differ alike,
+  // fem.HawkmothFem.MassOverSpanThirdsBesideTable1): 20 % per body. Table 1's inertia
+  // moments are not compared: the paper does not state their axis, and their pattern
+  // (small, large, middle) matches none of the chain's components (docs/reduction.md).
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(1e6 * lc.chain.bodies[static_cast<std::size_t>(k)].mass / paper_mass_mg[k], 1.0, 0.20) << k + 1;
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 // The joint stiffness by reciprocity (docs/reduction.md, "Joint stiffness by
-// reciprocity"; issue 17): K = (D C_rr Dᵀ)⁻¹ from the station compliance C = Aᵀ K_FEM⁻¹ A.
+// reciprocity"; issue 17): K = (T C Tᵀ)⁻¹ (T: chord slopes and twist differences) from the station compliance C = Aᵀ K_FEM⁻¹ A.
 // Checked here: K is symmetric positive definite for every shipped wing and chain size,
 // including the film-like thin-membrane hawkmoth and the robofly whose clamp covers
 // several bodies; and the chain's static joint angles under every unit joint load equal
-// the relative station rotations of the FEM under the same load to round-off.
+// the FEM's T u (chord slopes, twist differences) under the same load to round-off.
 
 #include <gtest/gtest.h>
 

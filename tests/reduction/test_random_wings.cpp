@@ -2,7 +2,7 @@
 // random quadrilateral outlines, a leading-edge rod and random cross veins of random
 // sections and materials, film thicknesses from 8 µm to 200 µm — the reduction never
 // fails and K is always symmetric positive definite (docs/reduction.md: by construction,
-// K = (D C_rr Dᵀ)⁻¹ with C = Aᵀ K_FEM⁻¹ A). Coarse meshes keep it fast.
+// K = (T C Tᵀ)⁻¹ (T: chord slopes and twist differences) with C = Aᵀ K_FEM⁻¹ A). Coarse meshes keep it fast.
 
 #include <gtest/gtest.h>
 

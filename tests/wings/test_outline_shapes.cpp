@@ -70,7 +70,10 @@ TEST(OutlineShapes, RoundedRectangleLosesTheCornersOfItsTip) {
   const w::ShapeSize size{.root_y = 0.0, .tip_y = len, .chord = c, .leading_edge_x = 0.0025, .tip_radius = r};
   const int samples = 96;
   const w::Polygon p = w::shape_outline(w::OutlineShape::rounded_rectangle, size, samples);
-  const int m = samples / 4;
+  // outline_points is the number of points (docs/wing_file.md): the 2 root corners and two
+  // arcs of m segments (m + 1 points each). Before, m was samples / 4: 52 points for 96.
+  EXPECT_EQ(p.size(), static_cast<std::size_t>(samples));
+  const int m = (samples - 4) / 2;
   const double exact = c * len - 2 * (1 - kPi / 4) * r * r;
   const double inscribed = exact - 2 * (kPi / 4 - 0.5 * m * std::sin(kPi / (2 * m))) * r * r;
   EXPECT_NEAR(w::polygon_signed_area(p), inscribed, 1e-15);
@@ -79,6 +82,7 @@ TEST(OutlineShapes, RoundedRectangleLosesTheCornersOfItsTip) {
   const w::ShapeSize round{.root_y = 0.0, .tip_y = len, .chord = c, .leading_edge_x = 0.0, .tip_radius = c / 2};
   const w::Polygon q = w::shape_outline(w::OutlineShape::rounded_rectangle, round, samples);
   EXPECT_FALSE(w::find_self_intersection(q));
+  EXPECT_EQ(q.size(), static_cast<std::size_t>(samples));  // the arcs share their top point
   EXPECT_NEAR(w::polygon_area(q), c * (len - c / 2) + kPi * c * c / 8, 1e-3 * c * len);
   EXPECT_THROW(w::shape_outline(w::OutlineShape::rounded_rectangle,
                                 {.root_y = 0.0, .tip_y = len, .chord = c, .tip_radius = 0.6 * c}, samples),

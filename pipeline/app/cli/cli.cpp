@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <new>
+#include <string>
 
 #include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/app/cli/exit_status.hpp"
@@ -46,6 +47,33 @@ void warn_unused_structure_options(const io::Case& c, const std::string& chain_f
                  c.file.c_str());
 }
 
+// The text of an error as printed: every run of more than 4096 bytes without a space (a
+// value or key echoed from the input; a 2 MB string value once came back whole, 2 MB on
+// stderr; a path is at most 4096 bytes) cut in its middle: its first 200 and last 60 bytes
+// kept, on UTF-8 character boundaries, around "...[N bytes cut]...".
+static std::string shortened(const std::string& text) {
+  constexpr std::size_t kLongestWord = 4096;
+  if (text.size() <= kLongestWord) return text;
+  const auto continuation = [&](std::size_t k) { return (static_cast<unsigned char>(text[k]) & 0xC0) == 0x80; };
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    std::size_t end = i;
+    while (end < text.size() && text[end] != ' ' && text[end] != '\n') ++end;
+    if (end - i > kLongestWord) {
+      std::size_t head = i + 200, tail = end - 60;
+      while (head > i && continuation(head)) --head;
+      while (tail < end && continuation(tail)) ++tail;
+      out.append(text, i, head - i).append("...[").append(std::to_string(tail - head)).append(" bytes cut]...");
+      out.append(text, tail, end - tail);
+    } else {
+      out.append(text, i, end - i);
+    }
+    if (end < text.size()) out.push_back(text[end]);
+    i = end + 1;
+  }
+  return out;
+}
+
 int run(int argc, char** argv) {
   CLI::App app{
       "flapsim: flexible flapping wings, from a wing drawing to lift.\n"
@@ -66,25 +94,25 @@ int run(int argc, char** argv) {
     // --help and --version print and succeed; any other parse error is a usage error.
     return app.exit(e) == 0 ? kExitOk : kExitUsage;
   } catch (const InputError& e) {
-    std::cerr << "flapsim: error: " << e.what() << "\n";
+    std::cerr << "flapsim: error: " << shortened(e.what()) << "\n";
     return kExitInput;
   } catch (const NumericalFailure& e) {
-    std::cerr << "flapsim: numerical failure: " << e.what() << "\n";
+    std::cerr << "flapsim: numerical failure: " << shortened(e.what()) << "\n";
     return kExitNumerical;
   } catch (const app::Interrupted& e) {
-    std::cerr << "flapsim: " << e.what() << "\n";
+    std::cerr << "flapsim: " << shortened(e.what()) << "\n";
     return exit_status_of_signal(e.signal_number());
   } catch (const io::OutputError& e) {
-    std::cerr << "flapsim: output error: " << e.what() << "\n";
+    std::cerr << "flapsim: output error: " << shortened(e.what()) << "\n";
     return kExitOutput;
   } catch (const std::bad_alloc&) {
     std::cerr << "flapsim: system error: out of memory (the run's estimate is printed by 'flapsim check')\n";
     return kExitOutput;
   } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << "flapsim: output error: " << e.what() << "\n";
+    std::cerr << "flapsim: output error: " << shortened(e.what()) << "\n";
     return kExitOutput;
   } catch (const std::exception& e) {
-    std::cerr << "flapsim: system error: " << e.what() << "\n";
+    std::cerr << "flapsim: system error: " << shortened(e.what()) << "\n";
     return kExitOutput;
   }
   return kExitOk;

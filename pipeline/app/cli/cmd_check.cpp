@@ -11,6 +11,7 @@
 
 #include "fem/wing_mesher.hpp"
 #include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/app/numerical_stage.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/watched_setup.hpp"
@@ -49,10 +50,14 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
     // to a minute, shown as run shows it), so that the chain's frequencies can be warned about.
     app::SetupOptions options;
     options.chain_file = chain_file;  // check --chain, as run --chain
-    const app::FsiSetup setup = app::build_fsi_setup_watched(c, options, "check", [&] {
-      if (reduced_in_process && wing) check_meshable(*wing);
+    // A failure of the numerics in the setup (the FEM or the reduction of a wing reduced in
+    // process) is exit status 3, as in run (numerical_stage.hpp), not a system error.
+    const app::FsiSetup setup = app::numerical_stage("check setup", [&] {
+      return app::build_fsi_setup_watched(c, options, "check", [&] {
+        if (reduced_in_process && wing) check_meshable(*wing);
+      });
     });
-    bodies = setup.model.chain.num_bodies();
+    bodies = setup.chain().num_bodies();
     for (const std::string& w : app::setup_warnings(c, setup))
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   }
@@ -110,7 +115,8 @@ void add_check_command(CLI::App& app) {
       "For a flexible case it builds the chain as run does (from --chain, the case's 'chain', or\n"
       "the wing reduced in process) and warns about a chain that does not match the wing, one\n"
       "driven above or near its resonance (docs/case_file.md, \"Warnings\").\n"
-      "Exit status: 0 valid, 2 bad input (the message names file, line and key).\n"
+      "Exit status: 0 valid, 2 bad input (the message names file, line and key), 3 a numerical\n"
+      "failure of the FEM or the reduction of a wing reduced in process (as run).\n"
       "Formats: docs/wing_file.md, docs/case_file.md.");
   auto file = std::make_shared<std::string>();
   auto chain = std::make_shared<std::string>();

@@ -61,8 +61,10 @@ void run_command(const RunArgs& a) {
   options.before_start = [&](const app::FsiSetup& setup) {
     app::record_interrupt(setup_watch.done());
     app::throw_if_interrupted("during the run's setup; nothing was written");
-    const app::RunEstimate estimate = app::estimate_run(c, setup.model.chain.num_bodies());
-    if (!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9))
+    const app::RunEstimate estimate = app::estimate_run(c, setup.chain().num_bodies());
+    // A run estimated over an hour says so even with -q (a 170-day run once started silently).
+    if ((!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9)) ||
+        estimate.seconds > app::kVeryLongRunSeconds)
       std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
     app::refuse_if_it_cannot_fit(estimate, c);
     for (const std::string& w : app::setup_warnings(c, setup))
@@ -123,7 +125,7 @@ void add_run_command(CLI::App& app) {
                   "multiply every joint spring of a flexible chain by S (stiffness calibration; "
                   "frequencies scale by sqrt(S)); default 1")
       ->check(positive_number());
-  cmd->add_flag("-q,--quiet", args->quiet, "no progress line and no report on stdout");
+  cmd->add_flag("-q,--quiet", args->quiet, "no progress line and no report on stdout (a run estimated over an hour still prints its estimate)");
   cmd->add_flag("--force", args->force,
                 "replace another command's outputs in DIR (e.g. the summary.json of 'flapsim reduce')");
   cmd->callback([args] { run_command(*args); });

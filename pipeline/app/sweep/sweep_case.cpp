@@ -2,8 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <new>
+#include <string>
 
 #include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/app/resource_estimate.hpp"
+#include "pipeline/app/watched_setup.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/input_hash.hpp"
 #include "wings/input_error.hpp"
@@ -70,6 +75,72 @@ const Assignment* column_of(const CasePoint& point, const OverrideInputError& e,
   return nullptr;
 }
 
+// A problem the run's setup finds in a case (its chain, its size, its lattice or reference
+// speed), named where it was written: the table's row and column when it is a varied key of
+// a case table; else the case, wing or chain file's key, after the point's values and (for
+// a table) the row.
+[[noreturn]] void fail_case(const SweepInputs& inputs, const CasePoint& point, const PointSource& source,
+                            const InputError& e) {
+  if (!source.file.empty()) {
+    for (const Assignment& a : point)
+      if (a.key == e.key() && key_target(a.key) == KeyTarget::case_file)
+        throw InputError(source.file, source.line, a.key,
+                         e.message() + " (" + (e.file().empty() ? inputs.case_file : e.file()) + ")");
+    throw InputError(e.file(), e.line(), e.key(),
+                     "with " + describe(point) + " (" + source.file + ":" + std::to_string(source.line) +
+                         "): " + e.message());
+  }
+  if (point.empty()) throw e;
+  throw InputError(e.file(), e.line(), e.key(), "with " + describe(point) + ": " + e.message());
+}
+
+// What `flapsim run` refuses before its first step, and `flapsim check` with it, checked for
+// every case before any runs (a sweep used to run such cases and list them as errors, exit 0:
+// a broken --chain, a chain of another body count, a case with no reference speed, a run too
+// large for the memory that ended in std::bad_alloc). The run's setup is built as run builds
+// it: the chain file read and matched to the case, loads and markers on existing bodies, the
+// lattice, its attachment and the reference speed; then the run's size against the memory.
+// A wing reduced in process is not reduced here (its FEM takes seconds to a minute per case,
+// and a sweep runs each case's reduction once, in the case): the rest of its setup is built
+// with the wing as a rigid body, and loads and markers are checked against structure.bodies,
+// the number of bodies the reduction gives. Failures other than bad input (the numerics)
+// are left to the case, which records them in its row.
+void check_like_run(const SweepInputs& inputs, const ResolvedCase& r) {
+  const io::Case& c = r.c;
+  int bodies = c.structure.kind == io::Case::Structure::Kind::Rigid ? 1 : c.structure.bodies;
+  const app::SetupOptions options{inputs.chain_file, r.spring_scale, r.wing_overrides};
+  try {
+    if (!app::reduces_wing_in_process(c, inputs.chain_file) || c.wing_file.empty()) {
+      bodies = app::build_fsi_setup(c, options).chain().num_bodies();
+    } else {
+      for (std::size_t i = 0; i < c.loads.size(); ++i)
+        if (c.loads[i].body > bodies)
+          throw InputError(c.file, c.line_of("loads." + std::to_string(i + 1) + ".body"), "loads.body",
+                           "body " + std::to_string(c.loads[i].body) + " is outside the chain of " +
+                               std::to_string(bodies) + " bodies");
+      for (std::size_t i = 0; i < c.markers.size(); ++i)
+        if (c.markers[i].body > bodies)
+          throw InputError(c.file, c.line_of("markers." + std::to_string(i + 1) + ".body"), "markers.body",
+                           "marker '" + c.markers[i].name + "' on body " + std::to_string(c.markers[i].body) +
+                               " is outside the chain of " + std::to_string(bodies) + " bodies");
+      io::Case lattice_only = c;
+      lattice_only.structure.kind = io::Case::Structure::Kind::Rigid;
+      lattice_only.loads.clear();
+      lattice_only.markers.clear();
+      lattice_only.structure.initial_angles.clear();
+      lattice_only.structure.initial_rates.clear();
+      (void)app::build_fsi_setup(lattice_only, options);
+    }
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception&) {
+    return;  // a numerical failure of the setup: the case's run meets it and records it
+  }
+  app::refuse_if_it_cannot_fit(app::estimate_run(c, bodies), c);
+}
+
 }  // namespace
 
 KeyTarget key_target(const std::string& key) {
@@ -119,6 +190,11 @@ ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point, con
     fail_column(inputs, point, {}, "", false, e, "");
   } catch (const InputError& e) {
     fail_column(inputs, point, {}, "", false, e, "");
+  }
+  try {
+    check_like_run(inputs, r);
+  } catch (const InputError& e) {
+    fail_case(inputs, point, source, e);
   }
   return r;
 }

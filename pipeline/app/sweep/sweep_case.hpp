@@ -46,7 +46,10 @@ struct PointSource {
   int line = 0;
 };
 
-/// \brief Reads and checks the case (and its wing) with the point's values set.
+/// \brief Reads and checks the case (and its wing) with the point's values set, and checks
+/// it as `flapsim check` and `flapsim run` do before a run: the chain file matched to the
+/// case, loads and markers on existing bodies, the lattice and reference speed, the run's
+/// size against the memory (a wing reduced in process: all but the reduction).
 /// \throws flapsim::InputError naming the file and key. A problem of a varied key from a
 ///         case table names the table, the line (the header's for the key's name, an unknown
 ///         key; the row's for its value) and the column; otherwise the case or wing file,

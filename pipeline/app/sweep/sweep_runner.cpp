@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <new>
 #include <optional>
 #include <set>
 #include <thread>
@@ -36,6 +37,9 @@ using Clock = std::chrono::steady_clock;
 
 // The outcome of a case that an interruption kept from starting.
 constexpr const char* kNotRun = "not run";
+
+// The message of a case that ran out of memory (std::bad_alloc).
+constexpr const char* kOutOfMemory = "out of memory (the run's arrays did not fit; fewer cases at once: --jobs)";
 
 // Rank 0 checks every case; the others learn whether to go on (and stop as it does).
 void share_check(const MpiWorld& world, bool ok) {
@@ -182,6 +186,12 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       const ResolvedCase& r = own ? *own : resolved[i];
       app::RunOptions ro;
       ro.output_dir = options.output_dir / case_folder(i, n, plan.points[i]);
+      // The case's folder is locked while the case runs, as `flapsim run` locks its folder
+      // (folder_lock.hpp): a `flapsim run -o DIR/<case>` started meanwhile stops before
+      // writing (exit 4), and a case whose folder another command is writing into now is
+      // not run (status error, the message says so; the same sweep again runs it).
+      io::ensure_directory(ro.output_dir);
+      const io::FolderLock case_lock(ro.output_dir, "sweep");
       ro.chain_file = options.chain_file;
       ro.spring_scale = r.spring_scale;
       ro.wing_overrides = r.wing_overrides;
@@ -206,6 +216,9 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
     } catch (const io::OutputError& e) {
       o.status = "error";
       o.message = e.what();  // "cannot write '…'": stops the sweep once recorded (below)
+    } catch (const std::bad_alloc&) {
+      o.status = "error";
+      o.message = kOutOfMemory;  // stops the sweep once recorded (below), as run exits 4
     } catch (const std::exception& e) {
       o.status = "error";
       o.message = e.what();
@@ -234,9 +247,11 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
     // file-size limit): the next cases would fail alike, so the sweep stops (exit status 4)
     // once the case is in the table; the same command resumes it. (A folder that cannot be
     // written is the case's own error: the others go on.)
-    if (const CaseOutcome& o = rows[i].outcome; o.status == "error" && out_of_room(o.message))
+    // So does a case that ran out of memory (exit status 4, as `flapsim run`).
+    if (const CaseOutcome& o = rows[i].outcome; o.status == "error" && (out_of_room(o.message) || o.message == kOutOfMemory))
       throw io::OutputError(options.output_dir / rows[i].folder,
-                            "the case's output failed, so the sweep stops (no further case starts; sweep.csv "
+                            std::string(o.message == kOutOfMemory ? "the case ran out of memory" : "the case's output failed") +
+                            ", so the sweep stops (no further case starts; sweep.csv "
                             "lists the cases so far; the same command resumes): " + o.message);
   };
   report.stats = schedule_cases(world, todo, report.threads, run, done);

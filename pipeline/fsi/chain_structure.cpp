@@ -1,0 +1,109 @@
+#include "pipeline/fsi/chain_structure.hpp"
+
+#include <numbers>
+
+#include "mbd/chain_kinematics.hpp"
+#include "mbd/convergence_failure.hpp"
+#include "pipeline/fsi/load_transfer.hpp"
+
+namespace flapsim::fsi {
+
+std::unique_ptr<StructureData> ChainStructureModel::make_data() const {
+  return std::make_unique<ChainStructureData>(*this);
+}
+
+ChainStructureData::ChainStructureData(const ChainStructureModel& model)
+    : chain(model.chain), loads(model.chain.num_bodies()), model_(model) {}
+
+void ChainStructureData::initialize(double t0) {
+  const int n = model_.chain.num_dofs();
+  const Eigen::VectorXd q0 = model_.initial_q.size() == n ? model_.initial_q : model_.chain.rest_angles();
+  const Eigen::VectorXd v0 = model_.initial_v.size() == n ? model_.initial_v : Eigen::VectorXd::Zero(n);
+  set_external_loads(t0);
+  try {
+    state = mbd::make_initial_state(model_.chain, chain, model_.base_motion, t0, q0, v0, loads);
+  } catch (const mbd::ConvergenceFailure& e) {
+    throw StructureFailure("multibody: " + e.reason());
+  }
+  trial = state;
+  relaxed = state;
+}
+
+void ChainStructureData::set_external_loads(double t) {
+  loads.clear();
+  if (model_.external_loads) model_.external_loads(t, loads);
+}
+
+void ChainStructureData::add_panel_loads(const uvlm::PanelLoads& panels) {
+  fsi::add_panel_loads(model_.attachment, chain, panels, loads);
+}
+
+void ChainStructureData::prescribe(double t) {
+  const Eigen::VectorXd none;
+  mbd::forward_kinematics(model_.chain, chain, model_.base_motion(t), none, none);
+  state.time = t;
+  state.step += 1;
+}
+
+void ChainStructureData::solve(double dt) {
+  try {
+    mbd::advance(model_.chain, chain, model_.base_motion, model_.integrator, state, dt, loads, trial);
+  } catch (const mbd::ConvergenceFailure& e) {
+    throw StructureFailure("multibody: " + e.reason());
+  }
+}
+
+void ChainStructureData::pose_iterate() {
+  mbd::forward_kinematics(model_.chain, chain, model_.base_motion(trial.time), relaxed.q, relaxed.v);
+}
+
+void ChainStructureData::surface(Eigen::Matrix3Xd& positions, Eigen::Matrix3Xd& velocities) const {
+  deformed_nodes(model_.attachment, chain, positions, velocities);
+}
+
+double ChainStructureData::change(double frequency) const {
+  const double rate_scale = 2.0 * std::numbers::pi * frequency;  // [rad/s] per flapping radian
+  const double dq = (trial.q - relaxed.q).lpNorm<Eigen::Infinity>();
+  const double dv = (trial.v - relaxed.v).lpNorm<Eigen::Infinity>() / rate_scale;
+  return std::max(dq, dv);
+}
+
+void ChainStructureData::residual(Eigen::VectorXd& r) const { r = trial.qdd - relaxed.qdd; }
+
+// (Φ, Φ̇, Φ̈, a) as one vector, and back (time and step stay those of the trial).
+void ChainStructureData::trial_vector(Eigen::VectorXd& x) const {
+  const Eigen::Index n = trial.q.size();
+  x.resize(4 * n);
+  x << trial.q, trial.v, trial.qdd, trial.a;
+}
+
+void ChainStructureData::set_iterate(const Eigen::VectorXd& x) {
+  const Eigen::Index n = relaxed.q.size();
+  relaxed.q = x.segment(0, n);
+  relaxed.v = x.segment(n, n);
+  relaxed.qdd = x.segment(2 * n, n);
+  relaxed.a = x.segment(3 * n, n);
+  relaxed.time = trial.time;
+  relaxed.step = trial.step;
+}
+
+void ChainStructureData::relax(double omega) {
+  relaxed.q += omega * (trial.q - relaxed.q);
+  relaxed.v += omega * (trial.v - relaxed.v);
+  relaxed.qdd += omega * (trial.qdd - relaxed.qdd);
+  relaxed.a += omega * (trial.a - relaxed.a);
+  relaxed.time = trial.time;
+  relaxed.step = trial.step;
+}
+
+const ChainStructureModel& chain_structure(const StructureModel& model) {
+  if (const auto* c = dynamic_cast<const ChainStructureModel*>(&model)) return *c;
+  throw std::logic_error("chain_structure: the run's structure is not a bar chain");
+}
+
+const ChainStructureData& chain_structure(const StructureData& data) {
+  if (const auto* c = dynamic_cast<const ChainStructureData*>(&data)) return *c;
+  throw std::logic_error("chain_structure: the run's structure is not a bar chain");
+}
+
+}  // namespace flapsim::fsi

@@ -1,0 +1,116 @@
+#pragma once
+/// \file structure.hpp
+/// \brief The structure a coupled step drives, as the coupling sees it: a constant
+/// StructureModel and the mutable StructureData it makes (docs/fsi.md, "Structures").
+///
+/// The coupling (coupled_step.hpp) knows nothing else of the structure: it gives it loads
+/// (the panel forces of the lattice at their points), asks it to solve a step, reads the
+/// surface the lattice rides on (positions and velocities of the lattice nodes), and
+/// relaxes its iterate between sub-iterations. Each kind of structure implements this
+/// once: the bar chain (chain_structure.hpp); a rigid wing is a chain without degrees of
+/// freedom. The design follows the solver registry of SHARPy (del Carre et al. 2019,
+/// docs/references.md): the case chooses the structure, the coupled step is one code.
+///
+/// States of a step t_n → t_{n+1}:
+///   accepted s_n — the last accepted state (time());
+///   trial ŝ      — the structure's own answer to the loads of the last solve();
+///   iterate s̃    — what the lattice is solved on: start_iterate() sets it to ŝ,
+///                  relax()/set_iterate() move it, accept() makes ŝ the new s_n.
+/// The relaxation works on one vector per state (trial_vector, set_iterate: every
+/// quantity that defines the state, all affine in the residual within a step) and on a
+/// residual of the interface (residual(): ŝ − s̃ in the quantity the structure's solve
+/// responds to), so Aitken and IQN-ILS (aitken_relaxation.hpp,
+/// interface_quasi_newton.hpp) apply to any structure.
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "mbd/base_motion.hpp"
+#include "uvlm/vortex_lattice.hpp"
+
+namespace flapsim::fsi {
+
+/// A structural solve that failed (no convergence, a non-finite state): its text says
+/// which structure and why; the coupling adds the step and the time (NumericalFailure).
+class StructureFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class StructureData;
+
+/// What a structure is (constant during a run).
+class StructureModel {
+ public:
+  virtual ~StructureModel() = default;
+  /// Unknowns of the structure; 0: a rigid wing (its pose is prescribed, nothing to iterate).
+  virtual int num_dofs() const = 0;
+  /// Lattice nodes the structure carries (the attachment's count).
+  virtual int surface_nodes() const = 0;
+  /// The prescribed motion of the wing base (the clamp) [s → pose].
+  virtual const mbd::BaseMotion& base() const = 0;
+  /// A fresh workspace and state for a run of this model.
+  virtual std::unique_ptr<StructureData> make_data() const = 0;
+};
+
+/// A structure's state and workspace during a run (made by StructureModel::make_data).
+class StructureData {
+ public:
+  virtual ~StructureData() = default;
+
+  /// \brief The initial state at t0 (at its rest configuration unless the model says
+  /// otherwise), with the structure's own external loads at t0.
+  /// \throws StructureFailure
+  virtual void initialize(double t0) = 0;
+  /// Time of the accepted state [s].
+  virtual double time() const = 0;
+
+  /// \brief The loads of the next solve: the structure's external loads at time t [s]
+  /// (prescribed point loads, gravity is the model's) and no aerodynamic load.
+  virtual void set_external_loads(double t) = 0;
+  /// \brief Adds the lattice's panel forces [N] at their points of action [m] (ground
+  /// frame), transferred at the structure's current pose so that force and moment are kept.
+  virtual void add_panel_loads(const uvlm::PanelLoads& panels) = 0;
+
+  /// \brief Rigid structure (num_dofs() == 0): the prescribed pose at t [s] becomes the
+  /// accepted state.
+  virtual void prescribe(double t) = 0;
+  /// \brief Solves the step of dt [s] from the accepted state with the current loads: the
+  /// trial state ŝ. On return the structure's pose (surface()) is the trial's.
+  /// \throws StructureFailure
+  virtual void solve(double dt) = 0;
+  /// The iterate s̃ := ŝ (the predictor of a step).
+  virtual void start_iterate() = 0;
+  /// \brief Puts the structure's pose at the iterate s̃ (its time is the trial's).
+  virtual void pose_iterate() = 0;
+  /// \brief Lattice nodes on the current pose: positions [m] and velocities [m/s], ground
+  /// frame, lattice order (matrices sized by the caller to 3 × surface_nodes()).
+  virtual void surface(Eigen::Matrix3Xd& positions, Eigen::Matrix3Xd& velocities) const = 0;
+
+  /// \brief Convergence measure between ŝ and s̃ [rad for rotations; the structure's
+  /// documented scale], \p frequency [Hz] scales rates to per flapping radian.
+  virtual double change(double frequency) const = 0;
+  /// The interface residual ŝ − s̃ (the quantity Aitken's factor is computed on).
+  virtual void residual(Eigen::VectorXd& r) const = 0;
+  /// Every quantity of ŝ as one vector (IQN-ILS combines these).
+  virtual void trial_vector(Eigen::VectorXd& x) const = 0;
+  /// s̃ := the state of the vector \p x (as trial_vector writes it), at the trial's time.
+  virtual void set_iterate(const Eigen::VectorXd& x) = 0;
+  /// s̃ += ω (ŝ − s̃) for every quantity of the state.
+  virtual void relax(double omega) = 0;
+  /// The accepted state := ŝ (the structure's exact answer to the last loads).
+  virtual void accept() = 0;
+
+  /// Length of residual() (the size of the relaxation's secant vectors).
+  virtual int interface_size() const = 0;
+
+  /// Steps whose structural solve had to be split into smaller pieces since the start
+  /// (step halving), and the most pieces one step needed (1: none split).
+  virtual long split_steps() const = 0;
+  virtual int max_step_pieces() const = 0;
+};
+
+}  // namespace flapsim::fsi

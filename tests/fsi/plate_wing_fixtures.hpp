@@ -1,0 +1,34 @@
+#pragma once
+/// \file plate_wing_fixtures.hpp
+/// \brief The flat-plate wing and the rotation-phase paper's kinematics (eq. 8) that the
+/// coupling tests of tests/fsi drive.
+
+#include "mbd/angle_units.hpp"
+#include "mbd/wing_kinematics.hpp"
+#include "uvlm/planform_grid.hpp"
+
+namespace flapsim::test {
+
+// A flat rectangular wing, chord 10 mm, span 40 mm, leading edge at x = 2.5 mm (the
+// flat plate of wings/flat_plate.toml), as a lattice grid in the wing frame.
+inline uvlm::PlanformGrid plate_grid(int nc, int ns) {
+  uvlm::PlanformGridOptions o;
+  o.chordwise = nc;
+  o.spanwise = ns;
+  uvlm::PlanformGrid g = uvlm::make_rectangular_grid(0.010, 0.040, o);
+  for (Eigen::Index k = 0; k < g.nodes.cols(); ++k) g.nodes(0, k) += 0.0025;
+  return g;
+}
+
+inline mbd::WingKinematics eq8_kinematics(double rotation_phase) {
+  // Eq. 8 of the rotation-phase paper: φ = 10° + 50° cos(2π(ft + δψ)), α = 90° − 45° sin(2πft).
+  mbd::WingKinematics k;
+  k.frequency = 26.1;
+  k.rotation_phase = rotation_phase;
+  k.sweep = mbd::PeriodicSignal::harmonic(10.0 * kDegToRad, {50.0 * kDegToRad}, {});
+  k.deviation = mbd::PeriodicSignal::harmonic(0.0, {}, {});
+  k.rotation = mbd::PeriodicSignal::harmonic(90.0 * kDegToRad, {}, {-45.0 * kDegToRad});
+  return k;
+}
+
+}  // namespace flapsim::test
