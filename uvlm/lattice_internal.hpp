@@ -49,15 +49,23 @@ inline constexpr double kMinTrailingEdgeVortexFraction = 0.01;
 
 /// Rings, collocation points, normals, tangents, areas and surface velocities from the nodes.
 /// Ring corners at the quarter of each panel. The last rings' rear (trailing-edge) segment,
-/// where the wake's newest row is attached, lies on the path the trailing edge travelled
-/// relative to the air in the last step, a quarter of the way back:
-///   r_j = x_j + ¼ (V∞ − v_j) Δt
-/// at trailing-edge node j (v_j its velocity: the wing's motion and deformation), without
-/// the component along the edge and at least kMinTrailingEdgeVortexFraction Δx_j behind
-/// it along the last panel's chordwise direction (Δx_j that panel's chord). The vorticity
-/// shed in a step spans that path, and its lumped vortex sits at its quarter like every
-/// vortex of the lattice (Katz & Plotkin §13.12: the latest wake vortex 0.2–0.3 of the
-/// distance travelled in one step behind the trailing edge). dt = 0 (the steady solve,
+/// where the wake's newest row is attached, lies in the extension of the last panel's
+/// chordwise side t_j at trailing-edge node j, behind the edge by a quarter of the
+/// chordwise part of the path the edge travelled relative to the air in the last step:
+///   r_j = x_j + max(¼ a_j, kMinTrailingEdgeVortexFraction Δx_j) t_j,
+///   (V∞ − v_j) Δt = a_j t_j + b_j e_j + c_j n_j
+/// (v_j the node's velocity: the wing's motion and deformation; e_j along the edge, n_j the
+/// panel's normal, Δx_j the last panel's chord). The path's normal part c_j is left out, so
+/// every ring lies on the wing surface whatever the panel width: with it the rear segment
+/// rose ¼ U Δt sin α out of the plane and corrupted the boundary condition beside
+/// spanwise panels narrower than that (docs/uvlm.md, "Model"). Katz & Plotkin §13.12
+/// (and the program of that section) put the latest wake vortex 0.2–0.3 of the step's
+/// travel behind the trailing edge along the wing's chord. The normal part c_j n_j is kept
+/// in d.shed_lift and given back to the row shed from the vortex when it leaves (advance):
+/// the wake behind its first ring lies on the line the edge travelled through the air, as
+/// before (a revolving wing's lift then changes by +0.5 % from 30 to 60 steps per half
+/// revolution instead of +1.5 % with the wake shed from the panel's plane; test U24).
+/// dt = 0 (the steady solve,
 /// nothing shed; the segment carries no net circulation): ¼ Δx_j along the chord.
 void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
                      const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt);

@@ -51,6 +51,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   lu = Eigen::PartialPivLU<Eigen::MatrixXd>(np);
   factorised_nodes.setZero(3, nn);
   factorised_ring_nodes.setZero(3, nn);
+  shed_lift.setZero(3, ns + 1);
   influence_nodes.setZero(3, nn);
   rhs.setZero(np);
 
@@ -97,15 +98,20 @@ namespace detail {
 
 namespace {
 
-/// Corner of the last rings' rear segment at trailing-edge node j (update_geometry in
-/// lattice_internal.hpp): a quarter of the step's path of the edge relative to the air,
-/// s = ¼ (V∞ − v_j) Δt, without its component along the edge, and at least
-/// kMinTrailingEdgeVortexFraction of the last panel's chord behind the edge; a quarter of
-/// that chord when there is no time step (the steady solve).
+/// The trailing-edge vortex at trailing-edge node j (update_geometry in lattice_internal.hpp):
+/// the corner of the last rings' rear segment, in the extension of the last panel's
+/// chordwise side, behind the edge by a = a quarter of the chordwise part of the step's path
+/// of the edge relative to the air, ¼ (V∞ − v_j) Δt = a t + b e + c n in the oblique basis
+/// (t chordwise, e along the edge, n the normal), and at least
+/// kMinTrailingEdgeVortexFraction of the last panel's chord; a quarter of that chord when
+/// there is no time step (the steady solve). `lift` receives c n, the path's part normal
+/// to the panel, which the shed row gets back when it leaves (advance).
 Eigen::Vector3d trailing_edge_vortex_node(const VortexLatticeModel& m, const Eigen::Matrix3Xd& P,
                                           const Eigen::Matrix3Xd& V, int j,
-                                          const Eigen::Vector3d& free_stream, double dt) {
+                                          const Eigen::Vector3d& free_stream, double dt,
+                                          Eigen::Ref<Eigen::Vector3d> lift) {
   const int nc = m.chordwise, ns = m.spanwise;
+  lift.setZero();
   const Eigen::Vector3d te = P.col(m.node(nc, j)), last = te - P.col(m.node(nc - 1, j));
   const double panel = last.norm();  // chord of the trailing-edge panel [m]
   if (!(dt > 0.0) || !(panel > 0.0)) return te + 0.25 * last;  // steady, or a tip of zero chord
@@ -115,12 +121,13 @@ Eigen::Vector3d trailing_edge_vortex_node(const VortexLatticeModel& m, const Eig
   const double cos_te = t.dot(e);
   const double min_behind = kMinTrailingEdgeVortexFraction * panel;
   const Eigen::Vector3d s = 0.25 * dt * (free_stream - V.col(m.node(nc, j)));  // [m]
-  if (!(1.0 - cos_te * cos_te > 1e-12)) return te + std::max(s.norm(), min_behind) * t;  // degenerate corner
+  if (!(1.0 - cos_te * cos_te > 1e-12)) return te + std::max(s.dot(t), min_behind) * t;  // degenerate corner
   const Eigen::Vector3d n = e.cross(t).normalized();
-  // s = (s·n) n + a t + b e: keep the normal and chordwise parts, the latter at least min_behind.
+  // s = (s·n) n + a t + b e: the chordwise part a, at least min_behind; b e dropped.
   const Eigen::Vector3d w = s - s.dot(n) * n;
   const double a = (w.dot(t) - w.dot(e) * cos_te) / (1.0 - cos_te * cos_te);
-  return te + s.dot(n) * n + std::max(a, min_behind) * t;
+  lift = s.dot(n) * n;
+  return te + std::max(a, min_behind) * t;
 }
 
 }  // namespace
@@ -133,7 +140,7 @@ void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Ei
   for (int j = 0; j <= ns; ++j) {
     for (int i = 0; i < nc; ++i)
       d.ring_nodes.col(m.node(i, j)) = P.col(m.node(i, j)) + 0.25 * (P.col(m.node(i + 1, j)) - P.col(m.node(i, j)));
-    d.ring_nodes.col(m.node(nc, j)) = trailing_edge_vortex_node(m, P, V, j, free_stream, dt);
+    d.ring_nodes.col(m.node(nc, j)) = trailing_edge_vortex_node(m, P, V, j, free_stream, dt, d.shed_lift.col(j));
   }
   for (int j = 0; j < ns; ++j)
     for (int i = 0; i < nc; ++i) {
@@ -313,36 +320,12 @@ void refactorise_if_moved(const VortexLatticeModel& m, VortexLatticeData& d) {
 
 }  // namespace
 
-void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
-           const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt,
-           double rho) {
-  check_inputs(m, nodes, node_velocities, dt, rho);
-  d.free_stream = free_stream;
-  d.dt = dt;
-  d.rho = rho;
-  detail::update_geometry(m, d, nodes, node_velocities, free_stream, dt);
-  refactorise_if_moved(m, d);
-  detail::attach_wake_to_trailing_edge(m, d);
-  detail::build_wake_segments(m, d, detail::WakeView::Wing);
-  wake_velocity_at_collocation(m, d);
-  const int np = m.panels();
-  for (int k = 0; k < np; ++k)
-    d.rhs(k) = -(free_stream - d.surface_velocity.col(k) + d.wake_velocity.col(k)).dot(d.normal.col(k));
-  d.gamma = d.lu.solve(d.rhs);
-  detail::build_bound_segments(m, d);
-  detail::compute_loads(m, d);
-}
+namespace {
 
-void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
-                  const Eigen::Vector3d& free_stream, double rho, double wake_length) {
-  solve_steady(m, d, nodes, free_stream, rho, wake_length, free_stream);
-}
-
-void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
-                  const Eigen::Vector3d& free_stream, double rho, double wake_length,
-                  const Eigen::Vector3d& wake_direction) {
-  const Eigen::Matrix3Xd zero = Eigen::Matrix3Xd::Zero(3, m.nodes());
-  check_inputs(m, nodes, zero, 1.0, rho);
+/// The steady lattice (solve_steady), with the surface velocities in the boundary condition.
+void solve_steady_lattice(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
+                          const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream,
+                          double rho, double wake_length, const Eigen::Vector3d& wake_direction) {
   if (!(free_stream.norm() > 0.0) || !(wake_length > 0.0))
     throw std::invalid_argument("steady vortex lattice: needs a free stream and a wake length > 0");
   if (!(wake_direction.dot(free_stream) > 0.0))
@@ -351,7 +334,7 @@ void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen
   d.free_stream = free_stream;
   d.dt = 1.0;
   d.rho = rho;
-  detail::update_geometry(m, d, nodes, zero, free_stream, 0.0);  // no time step: ¼ panel
+  detail::update_geometry(m, d, nodes, node_velocities, free_stream, 0.0);  // no time step: ¼ panel
   detail::build_influence(m, d);
   d.has_factorisation = false;  // the matrix below includes the wake
   d.has_influence = false;
@@ -384,7 +367,8 @@ void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen
       d.influence(k, m.panel(nc - 1, j)) += d.eval.velocity(k).dot(d.normal.col(k));
   }
   d.lu.compute(d.influence);
-  for (int k = 0; k < np; ++k) d.rhs(k) = -free_stream.dot(d.normal.col(k));
+  for (int k = 0; k < np; ++k)
+    d.rhs(k) = -(free_stream - d.surface_velocity.col(k)).dot(d.normal.col(k));
   d.gamma = d.lu.solve(d.rhs);
   d.gamma_accepted = d.gamma;
   d.gamma_accepted_before = d.gamma;
@@ -393,6 +377,46 @@ void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen
   wake_velocity_at_collocation(m, d);
   detail::build_bound_segments(m, d);
   detail::compute_loads(m, d);
+}
+
+}  // namespace
+
+void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
+           const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt,
+           double rho) {
+  check_inputs(m, nodes, node_velocities, dt, rho);
+  if (m.steady()) {
+    solve_steady_lattice(m, d, nodes, node_velocities, free_stream, rho, m.steady_wake_length, free_stream);
+    d.dt = dt;
+    return;
+  }
+  d.free_stream = free_stream;
+  d.dt = dt;
+  d.rho = rho;
+  detail::update_geometry(m, d, nodes, node_velocities, free_stream, dt);
+  refactorise_if_moved(m, d);
+  detail::attach_wake_to_trailing_edge(m, d);
+  detail::build_wake_segments(m, d, detail::WakeView::Wing);
+  wake_velocity_at_collocation(m, d);
+  const int np = m.panels();
+  for (int k = 0; k < np; ++k)
+    d.rhs(k) = -(free_stream - d.surface_velocity.col(k) + d.wake_velocity.col(k)).dot(d.normal.col(k));
+  d.gamma = d.lu.solve(d.rhs);
+  detail::build_bound_segments(m, d);
+  detail::compute_loads(m, d);
+}
+
+void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
+                  const Eigen::Vector3d& free_stream, double rho, double wake_length) {
+  solve_steady(m, d, nodes, free_stream, rho, wake_length, free_stream);
+}
+
+void solve_steady(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
+                  const Eigen::Vector3d& free_stream, double rho, double wake_length,
+                  const Eigen::Vector3d& wake_direction) {
+  const Eigen::Matrix3Xd zero = Eigen::Matrix3Xd::Zero(3, m.nodes());
+  check_inputs(m, nodes, zero, 1.0, rho);
+  solve_steady_lattice(m, d, nodes, zero, free_stream, rho, wake_length, wake_direction);
 }
 
 }  // namespace flapsim::uvlm

@@ -12,10 +12,10 @@
 ///      the free stream only) and sheds one row from the trailing edge.
 ///
 /// Lattice: vortex rings whose leading edge lies at the quarter chord of each panel;
-/// the last ring's trailing segment (where the wake is attached) lies on the path the
-/// trailing edge travelled relative to the air in the last step, a quarter of the way back
-/// (Katz & Plotkin §13.12; lattice_internal.hpp update_geometry), in the steady solve a
-/// quarter panel chord behind the edge.
+/// the last ring's trailing segment (where the wake is attached) lies in the extension of
+/// the last panel, behind the edge by a quarter of the chordwise part of the edge's path
+/// relative to the air in the last step (Katz & Plotkin §13.12; lattice_internal.hpp
+/// update_geometry), in the steady solve a quarter panel chord behind the edge.
 /// Collocation points at the three-quarter chord point of each panel, normals from the
 /// panel diagonals. Kutta condition (Katz & Plotkin §13.12): the wake ring shed at the
 /// end of a step carries the trailing-edge circulation of that step (Kelvin's theorem),
@@ -131,6 +131,15 @@ struct VortexLatticeModel {
   /// (the reference for tests).
   bool reuse_rigid_influence = true;
 
+  /// Steady lattice in every solve() when > 0 [m]: the wake is one straight row of this
+  /// length along the free stream from the trailing-edge vortex (a horseshoe per strip,
+  /// solve_steady), solved together with the bound rings; the surface velocities enter
+  /// the boundary condition, ∂Γ/∂t is zero and advance() sheds and convects nothing. The
+  /// result does not depend on Δt (for a wing at rest in a free stream; a moving wing gets
+  /// the quasi-steady lattice of each instant). 0: the unsteady lattice.
+  double steady_wake_length = 0.0;
+  bool steady() const { return steady_wake_length > 0.0; }
+
   VortexCore bound_core() const { return {core.model, core.radius * bound_core_fraction}; }
   int panels() const { return chordwise * spanwise; }
   int nodes() const { return (chordwise + 1) * (spanwise + 1); }
@@ -169,6 +178,10 @@ struct VortexLatticeData {
   Eigen::Matrix3Xd nodes;            ///< surface nodes [m]
   Eigen::Matrix3Xd node_velocities;  ///< [m/s]
   Eigen::Matrix3Xd ring_nodes;       ///< vortex-ring corners, (nc+1)(ns+1) [m]
+  /// Per trailing-edge node j: the part of ¼ of the step's path of the edge relative to the
+  /// air normal to the last panel, left out of the trailing-edge vortex (which stays in the
+  /// panel's extension) and given back to the row shed from it (advance) [m]; 3 × (ns+1)
+  Eigen::Matrix3Xd shed_lift;
   Eigen::Matrix3Xd collocation;      ///< three-quarter chord points [m]
   Eigen::Matrix3Xd normal;           ///< unit normals
   Eigen::Matrix3Xd chord_tangent;    ///< unit chordwise direction (toward the trailing edge)
@@ -252,7 +265,8 @@ void solve(const VortexLatticeModel& model, VortexLatticeData& data, const Eigen
            const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt,
            double rho);
 
-/// Accept the last solve: convect the wake over dt and shed one row from the trailing edge.
+/// Accept the last solve: convect the wake over dt and shed one row from the trailing edge
+/// (with model.steady(): only accept the circulations and count the force impulse).
 /// \throws std::length_error when the wake would exceed model.wake_capacity rows
 void advance(const VortexLatticeModel& model, VortexLatticeData& data);
 

@@ -177,10 +177,15 @@ Eigen::Vector3d far_wake_velocity(const VortexLatticeModel& m, const VortexLatti
 void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
   const int nc = m.chordwise, ns = m.spanwise;
   const std::size_t n1 = ns + 1;
-  detail::attach_wake_to_trailing_edge(m, d);  // rows 0..wake_rows
-
   d.force_impulse += d.loads.total_force * d.dt;
   d.force_time += d.dt;
+  if (m.steady()) {  // the steady lattice's straight wake is rebuilt by every solve
+    d.gamma_accepted_before = d.gamma;
+    d.gamma_accepted = d.gamma;
+    ++d.accepted_steps;
+    return;
+  }
+  detail::attach_wake_to_trailing_edge(m, d);  // rows 0..wake_rows
   // Rows older than the frozen- or far-wake age (a prefix: row 0 is the oldest) keep their
   // place (frozen) or move with the far-wake velocity (convected); either way their own
   // velocity is not summed.
@@ -237,6 +242,17 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
       d.wake_prev_w[k] = vf.z();
     }
   }
+  // The row leaving the trailing-edge vortex (in the last panel's extension, where its
+  // velocity was taken: there it coincides with the trailing-edge segment) starts from the
+  // edge's path: it gets back the path's part normal to the panel (update_geometry), so the
+  // wake behind the first ring lies on the line the edge travelled through the air.
+  if (d.wake_rows >= first_free)
+    for (int j = 0; j <= ns; ++j) {
+      const std::size_t k = static_cast<std::size_t>(d.wake_rows) * n1 + j;
+      P.x[k] += d.shed_lift(0, j);
+      P.y[k] += d.shed_lift(1, j);
+      P.z[k] += d.shed_lift(2, j);
+    }
   for (int r = first_free; r <= d.wake_rows; ++r) {
     const bool ab2 = m.wake_integrator == WakeIntegrator::AdamsBashforth2 && d.wake_row_has_prev[r];
     for (std::size_t j = 0; j < n1; ++j) {

@@ -105,6 +105,12 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   }
   m.wake_sum = c.numerics.wake_sum;
   m.tree_tolerance = c.numerics.tree_tolerance;
+  if (c.numerics.steady) {  // the straight wake of the steady lattice: one row, 10⁴ mean chords
+    m.steady_wake_length = 1e4 * mean_chord;
+    m.wake_capacity = 1;
+    m.max_wake_rows = 0;
+    m.far_wake_age = m.frozen_wake_age = 0.0;
+  }
   return m;
 }
 

@@ -126,7 +126,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
                   "wake_sum", "tree_tolerance", "wake_precision", "coupling", "max_coupling_iterations", "coupling_tolerance",
-                  "rho_infinity", "structure_substeps"});
+                  "rho_infinity", "structure_substeps", "steady"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
   // The product in 64 bits, against a documented maximum (an int would wrap).
@@ -165,6 +165,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
       t->get_double("coupling_tolerance", n.coupling_tolerance, Bounds{0.0, 1.0, true, true});
   n.rho_infinity = t->get_double("rho_infinity", n.rho_infinity, Bounds::closed(0.0, 1.0));
   n.structure_substeps = t->get_int("structure_substeps", n.structure_substeps, Bounds::closed(1, 10000));
+  n.steady = t->get_bool("steady", n.steady);
   return n;
 }
 
@@ -385,6 +386,10 @@ Case read_case(TomlTable root) {
   c.air = read_air(root);
   c.structure = read_structure(root);
   c.numerics = read_numerics(root);
+  // The steady lattice's wake leaves along the free stream (docs/uvlm.md, "Steady lattice").
+  if (c.numerics.steady && !(c.air.enabled && c.air.freestream.norm() > 0.0))
+    root.get_table("numerics").fail("steady", "the steady lattice needs air with a free stream "
+                                              "([air] freestream, not zero); its wake leaves along it");
   if (const auto out = root.find_table("output")) {
     out->expect_only({"vtk_every"});
     c.output.vtk_every = out->get_int("vtk_every", c.output.vtk_every, Bounds::non_negative());

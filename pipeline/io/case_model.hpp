@@ -120,6 +120,10 @@ struct Case {
     double coupling_tolerance = 1e-6;       ///< relative change that ends the sub-iterations
     double rho_infinity = 0.9;              ///< generalized-α spectral radius ρ∞ in [0, 1]
     int structure_substeps = 1;             ///< chain sub-steps per time step (docs/multibody.md, "Sub-steps")
+    /// The steady vortex lattice at every step (a straight wake 10⁴ mean chords long along the
+    /// free stream, no ∂Γ/∂t, nothing shed; uvlm::VortexLatticeModel::steady_wake_length):
+    /// results independent of Δt for a wing at rest in a free stream (docs/uvlm.md, "Steady lattice")
+    bool steady = false;
   } numerics;
 
   struct Output {

@@ -78,3 +78,35 @@ TEST(FreeStreamCase, CoefficientsUseTheFreeStreamWhenTheWingDoesNotFlap) {
   EXPECT_NEAR(cl / 0.316, 1.0, 0.10);
   EXPECT_NEAR(number_in(summary, "mean_lift_N") / qs, cl, 1e-3 * cl);
 }
+
+TEST(FreeStreamCase, SteadyLatticeDoesNotDependOnTheTimeStep) {
+  // numerics.steady = true (docs/case_file.md; docs/uvlm.md, "Steady lattice"): the same
+  // glide as above gives the same mean lift and drag at 10 and 40 steps per period (the
+  // steady lattice does not see Δt: 1e-12 relative), the lattice value of the wing within
+  // 10 % (U4, CL 0.316 at 8 × 64), and without the key, at 40 steps per period, the
+  // impulsive start comes within 1.5 % of it over the second period (as above).
+  flapsim::test::ScratchDir dir("free_stream_steady");
+  auto run = [&](int steps, bool steady) {
+    const std::string name = "glide_" + std::to_string(steps) + (steady ? "_steady" : "");
+    std::ofstream(dir / (name + ".toml"))
+        << "name = \"" + name + "\"\nwing = \"" + kSource + "/wings/flat_plate.toml\"\n"
+           "[kinematics]\nfrequency_hz = 20.0\nsweep = 0.0\nrotation = 5.0\n"
+           "[air]\nfreestream = [-5.0, 0.0, 0.0]\n"
+           "[structure]\nkind = \"rigid\"\n"
+           "[numerics]\nsteps_per_cycle = " + std::to_string(steps) + "\ncycles = 2\nchordwise_panels = 4\n"
+           "spanwise_panels = 8\nfree_wake = false\nleading_edge = \"attached\"\nsteady = " +
+               (steady ? "true" : "false") + "\n[output]\nvtk_every = 0\n";
+    EXPECT_EQ(run_flapsim("run " + (dir / (name + ".toml")).string() + " -o " + (dir / name).string()), 0);
+    const std::string summary = read_text(dir / name / "summary.json");
+    return std::pair{number_in(summary, "mean_CL"), number_in(summary, "mean_CD")};
+  };
+  const auto [cl10, cd10] = run(10, true);
+  const auto [cl40, cd40] = run(40, true);
+  const auto [cl_u, cd_u] = run(40, false);
+  std::printf("[ value ] steady lattice CL %.6f, %.6f (10, 40 steps), CD %.6f, %.6f; unsteady at 40 steps CL %.6f, CD %.6f\n",
+              cl10, cl40, cd10, cd40, cl_u, cd_u);
+  EXPECT_NEAR(cl10 / cl40, 1.0, 1e-12);
+  EXPECT_NEAR(cd10 / cd40, 1.0, 1e-12);
+  EXPECT_NEAR(cl40 / 0.316, 1.0, 0.10);
+  EXPECT_NEAR(cl_u / cl40, 1.0, 0.015);
+}

@@ -222,6 +222,19 @@ TEST(CaseFile, CouplingKey) {
   EXPECT_EQ(e.line(), 9);
 }
 
+TEST(CaseFile, SteadyKey) {
+  // docs/case_file.md: `steady` (default false) selects the steady lattice, whose wake
+  // leaves along the free stream: without one it is bad input naming the key and its line.
+  EXPECT_FALSE(case_from_text(kHead).numerics.steady);
+  const std::string air = "[air]\nfreestream = [-5.0, 0.0, 0.0]\n";  // lines 8, 9
+  const p::Case c = case_from_text(kHead + air + "[numerics]\nsteady = true\n");
+  EXPECT_TRUE(c.numerics.steady);
+  const auto e = error_of(kHead + "[numerics]\nsteady = true\n");  // line 9
+  EXPECT_EQ(e.key(), "numerics.steady");
+  EXPECT_EQ(e.line(), 9);
+  EXPECT_NE(std::string(e.what()).find("free stream"), std::string::npos) << e.what();
+}
+
 TEST(CaseFile, BaseTranslationSignals) {
   // docs/case_file.md: heave, surge and lateral move the pivot along z_G, x_G, y_G [m], as
   // signals of s = f t; pose() gives their position, velocity and acceleration.
