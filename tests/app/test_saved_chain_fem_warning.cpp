@@ -126,7 +126,7 @@ TEST(SavedChainFemWarning, AChainEditedAfterReduceLosesTheRecord) {
 }
 
 // A wing reduced in process (no chain file) is compared with its first FEM modes as reduce
-// does. The first MAV film wing (25 um film) with 4 bodies: first bending +144 %
+// does. The first MAV film wing (25 um film) with 4 bodies: first bending +132 % (MAC-paired)
 // (docs/reduction.md, "Film wings"; reduce's own warning: app.CliMessages.AChainThatMisses…).
 // Before: check and run of such a case said nothing of it.
 TEST(SavedChainFemWarning, AWingReducedInProcessIsComparedAsReduceDoes) {
