@@ -17,6 +17,42 @@ double rel(double chain, double fem) { return relative_error(chain, fem); }
 
 }  // namespace
 
+std::vector<ModeMatch> pair_modes_by_mac(const std::vector<Eigen::VectorXd>& fem_samples,
+                                         const std::vector<double>& fem_hz,
+                                         const std::vector<StationModeKind>& fem_kinds,
+                                         const std::vector<Eigen::VectorXd>& chain_samples,
+                                         const std::vector<double>& chain_hz) {
+  std::vector<ModeMatch> out;
+  for (std::size_t i = 0; i < fem_samples.size() && i < fem_kinds.size() && i < fem_hz.size(); ++i) {
+    if (fem_kinds[i] == StationModeKind::film) continue;
+    ModeMatch mm;
+    mm.fem_mode = static_cast<int>(i);
+    for (std::size_t j = 0; j < chain_samples.size() && j < chain_hz.size(); ++j) {
+      const double mac = modal_assurance(fem_samples[i], chain_samples[j]);
+      if (mac > mm.mac) {
+        mm.mac = mac;
+        mm.chain_mode = static_cast<int>(j);
+      }
+    }
+    if (mm.chain_mode < 0) continue;
+    mm.found = true;
+    mm.fem_hz = fem_hz[i];
+    mm.chain_hz = chain_hz[static_cast<std::size_t>(mm.chain_mode)];
+    mm.relative_error = rel(mm.chain_hz, mm.fem_hz);
+    out.push_back(mm);
+  }
+  return out;
+}
+
+ModeMatch first_pair_of_kind(const std::vector<ModeMatch>& pairs, const std::vector<StationModeKind>& fem_kinds,
+                             StationModeKind kind) {
+  for (const ModeMatch& p : pairs)
+    if (p.found && p.fem_mode >= 0 && static_cast<std::size_t>(p.fem_mode) < fem_kinds.size() &&
+        fem_kinds[static_cast<std::size_t>(p.fem_mode)] == kind)
+      return p;
+  return ModeMatch{};
+}
+
 double relative_error(double chain, double fem) {
   // Against a zero reference there is no relative error: it was 0 ("+0.00 %", a perfect
   // match) when a load case had failed to load the FEM (tip_loads.cpp).
@@ -72,48 +108,17 @@ ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
     }
     return v;
   };
-  auto match = [&](StationModeKind kind, bool bending) {
-    ModeMatch mm;
-    for (std::size_t i = 0; i < station_kinds.size(); ++i)
-      if (station_kinds[i].kind == kind) {
-        mm.fem_mode = static_cast<int>(i);
-        break;
-      }
-    for (std::size_t i = 0; i < cmodes.size(); ++i)
-      if (cmodes[i].is_bending() == bending) {
-        mm.chain_mode = static_cast<int>(i);
-        break;
-      }
-    mm.found = mm.fem_mode >= 0 && mm.chain_mode >= 0;
-    if (!mm.found) return mm;
-    mm.fem_hz = modes.frequencies_hz[mm.fem_mode];
-    mm.chain_hz = cmodes[static_cast<std::size_t>(mm.chain_mode)].frequency_hz;
-    mm.relative_error = rel(mm.chain_hz, mm.fem_hz);
-    mm.mac = modal_assurance(fem_samples(modes.shapes.col(mm.fem_mode)),
-                             chain_samples(cmodes[static_cast<std::size_t>(mm.chain_mode)].shape));
-    return mm;
-  };
-  out.bending = match(StationModeKind::bending, true);
-  out.torsion = match(StationModeKind::torsion, false);
-  for (std::size_t i = 0; i < station_kinds.size(); ++i) {
-    if (station_kinds[i].kind == StationModeKind::film || cmodes.empty()) continue;
-    ModeMatch mm;
-    mm.found = true;
-    mm.fem_mode = static_cast<int>(i);
-    const Eigen::VectorXd a_fem = fem_samples(modes.shapes.col(static_cast<Eigen::Index>(i)));
-    for (std::size_t j = 0; j < cmodes.size(); ++j) {
-      const double mac = modal_assurance(a_fem, chain_samples(cmodes[j].shape));
-      if (mac > mm.mac) {
-        mm.mac = mac;
-        mm.chain_mode = static_cast<int>(j);
-      }
-    }
-    if (mm.chain_mode < 0) continue;
-    mm.fem_hz = modes.frequencies_hz[static_cast<Eigen::Index>(i)];
-    mm.chain_hz = cmodes[static_cast<std::size_t>(mm.chain_mode)].frequency_hz;
-    mm.relative_error = rel(mm.chain_hz, mm.fem_hz);
-    out.beam_mode_pairs.push_back(mm);
-  }
+  // Every FEM beam mode with the chain mode whose shape correlates best; the first bending
+  // and torsion rows are taken from these pairs (the chain's own kind of its mode is not
+  // asked: on a coupled mode it may differ from the FEM's, docs/reduction.md).
+  std::vector<Eigen::VectorXd> fem_s, chain_s;
+  std::vector<StationModeKind> fem_k;
+  for (Eigen::Index i = 0; i < modes.shapes.cols(); ++i) fem_s.push_back(fem_samples(modes.shapes.col(i)));
+  for (const auto& m : cmodes) chain_s.push_back(chain_samples(m.shape));
+  for (const auto& sk : station_kinds) fem_k.push_back(sk.kind);
+  out.beam_mode_pairs = pair_modes_by_mac(fem_s, out.fem_hz, fem_k, chain_s, out.chain_hz);
+  out.bending = first_pair_of_kind(out.beam_mode_pairs, fem_k, StationModeKind::bending);
+  out.torsion = first_pair_of_kind(out.beam_mode_pairs, fem_k, StationModeKind::torsion);
 
   // Statics at the inboard edge of the loaded tip zone, the same wrenches on both.
   const TipZone& zone = analysis.tip_zone();

@@ -15,7 +15,8 @@
 
 namespace flapsim::reduction {
 
-/// One mode family (first bending or first torsion) in both models.
+/// One mode family (first bending or first torsion) in both models: the FEM's first mode of
+/// that kind (from the stations) and the chain mode whose shape correlates best with it.
 struct ModeMatch {
   bool found = false;      ///< both models have a mode of this kind
   int fem_mode = -1;       ///< index among the FEM modes
@@ -42,7 +43,7 @@ struct StaticMatch {
 struct ChainFemComparison {
   int num_bodies = 0;
   double fem_mass = 0.0, chain_mass = 0.0;  ///< [kg]
-  ModeMatch bending, torsion;
+  ModeMatch bending, torsion;  ///< the FEM's first bending / torsion mode, paired by MAC
   double measure_s = 0.0;           ///< axis position of the static comparison [m]
   StaticMatch tip_deflection;       ///< w under the tip force on the axis
   StaticMatch tip_bending_rotation; ///< θ under the tip bending moment
@@ -71,6 +72,28 @@ double relative_error(double chain, double fem);
 ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
                                           const LumpedChain& lumped, const fem::ModalResult& modes,
                                           const std::vector<fem::ModeKind>& kinds);
+
+/// \brief Every FEM beam mode (kind bending or torsion, in the order of the FEM modes) with
+/// the chain mode whose sampled shape correlates best with it (largest MAC; ties keep the
+/// lower chain mode): the table "FEM beam modes and the chain mode that correlates best".
+/// \param fem_samples    each FEM mode's shape at the sample points
+/// \param fem_hz         each FEM mode's frequency [Hz]
+/// \param fem_kinds      each FEM mode's kind from the stations (film modes are skipped)
+/// \param chain_samples  each chain mode's shape at the same points
+/// \param chain_hz       each chain mode's frequency [Hz]
+std::vector<ModeMatch> pair_modes_by_mac(const std::vector<Eigen::VectorXd>& fem_samples,
+                                         const std::vector<double>& fem_hz,
+                                         const std::vector<StationModeKind>& fem_kinds,
+                                         const std::vector<Eigen::VectorXd>& chain_samples,
+                                         const std::vector<double>& chain_hz);
+
+/// \brief The first pair of \p pairs (pair_modes_by_mac) whose FEM mode is of \p kind: the
+/// FEM's first bending or torsion mode with the chain mode of the same shape, whatever the
+/// chain's own energy split calls that mode (on a strongly coupled mode the chain's and the
+/// FEM's 0.5 cuts can name the same shape differently). Not found when no FEM mode is of
+/// \p kind.
+ModeMatch first_pair_of_kind(const std::vector<ModeMatch>& pairs, const std::vector<StationModeKind>& fem_kinds,
+                             StationModeKind kind);
 
 /// \brief MAC = (aᵀb)² / (aᵀa · bᵀb).
 double modal_assurance(const Eigen::VectorXd& a, const Eigen::VectorXd& b);

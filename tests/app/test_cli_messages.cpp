@@ -67,7 +67,7 @@ TEST(CliMessages, AnOptionValueOutOfRangeGetsAShortMessage) {
 }
 
 TEST(CliMessages, AChainThatMissesTheFemIsWarnedAbout) {
-  // The first MAV film wing (25 um film) with 4 bodies: first bending +144 % (docs/reduction.md, "Film wings").
+  // The first MAV film wing (25 um film) with 4 bodies: first bending +132 % (MAC-paired) (docs/reduction.md, "Film wings").
   ScratchDir dir("message_mismatch");
   const FlapsimOutcome mav = run_flapsim_capturing_stderr(dir.path(), "reduce " + kSourceDir + "/wings/mav_film_wing_25um.toml --bodies 4 --modes 6 -o " +
                                                    (dir / "mav").string());
