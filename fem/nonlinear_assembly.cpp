@@ -149,11 +149,15 @@ NonlinearAssembler::NonlinearAssembler(const CorotationalModel& model, Constrain
   energy_.resize(model.shells.size() + model.frames.size());
 }
 
+void NonlinearAssembler::load_mass_into_tangent() {
+  std::copy(mass_values_.begin(), mass_values_.end(), tangent_.valuePtr());
+}
+
 double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd& f_int, bool tangent,
                                     const TangentExtras& ex) {
   const int ns = static_cast<int>(model_.shells.size());
   const int nb = static_cast<int>(model_.frames.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (ns + nb > 512)
   for (int e = 0; e < ns; ++e) {
     const CorotationalShell& el = model_.shells[static_cast<size_t>(e)];
     const std::array<Eigen::Vector3d, 3> x{s.position[el.nodes[0]], s.position[el.nodes[1]], s.position[el.nodes[2]]};
@@ -169,7 +173,7 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
                       shell_f_[static_cast<size_t>(e)], tangent ? &shell_K_[static_cast<size_t>(e)] : nullptr, damp,
                       form_ == TangentForm::SymmetricLower);
   }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (ns + nb > 512)
   for (int e = 0; e < nb; ++e) {
     const CorotationalFrame& el = model_.frames[static_cast<size_t>(e)];
     const std::array<Eigen::Vector3d, 2> x{s.position[el.nodes[0]], s.position[el.nodes[1]]};

@@ -93,6 +93,9 @@ class NonlinearAssembler {
   double evaluate(const CorotationalState& state, Eigen::VectorXd& f_int, bool tangent,
                   const TangentExtras& extras = {});
 
+  /// \brief Overwrite the tangent's values with the free–free mass M_ff.
+  void load_mass_into_tangent();
+
   const SparseMatrix& tangent() const { return tangent_; }  ///< free DOFs (see TangentForm)
   const Constraints& constraints() const { return constraints_; }
   const std::vector<int>& free_dofs() const { return free_dofs_; }
