@@ -1,0 +1,133 @@
+#pragma once
+/// \file corotational_kernel.hpp
+/// \brief The element-independent co-rotational (EICR) kernel of Felippa &
+/// Haugen 2005 ("A unified formulation of small-strain corotational finite
+/// elements: I. Theory", CMAME 194:2285–2335), for an element of N nodes with
+/// 6 DOF each whose LINEAR stiffness k in its own reference axes is given.
+///
+/// Given the co-rotated frame T_r (rows: current local axes) and its spin
+/// derivative G (δω̃_r = G δũ, everything in current local components), with
+/// x̄_a the current local node coordinates about the centroid and X̄_a the
+/// reference ones:
+///   deformational displacement  ū_a = x̄_a − X̄_a
+///   deformational rotation      θ̄_a = log(T_r R_a T_0ᵀ)
+///   projector                   P: δū_a = δx̃_a − δx̃_c + x̄̂_a G δũ,  δω̄_a = δω̃_a − G δũ
+///   B = H P,  H = diag(I, H(θ̄_a))  (H = J_l⁻¹, nodal_rotation.hpp)
+///   internal force              f = T̄ᵀ Bᵀ k d          (exactly ∂(½dᵀkd)/∂u in spins)
+///   tangent                     K = T̄ᵀ [Bᵀ k B + sym(K_GR + K_GP)] T̄
+///   K_GR = −F_nm G  (rotation of the frame carrying the nodal forces p = Pᵀ Hᵀ k d)
+///   K_GP = Gᵀ F_nᵀ P  (variation of the lever arms x̄_a in P)
+///   K_GM = Pᵀ Λ H P   (variation of Hᵀ, Λ = ∂(Hᵀm)/∂θ̄, nodal_rotation.hpp)
+/// Left out: the variation of G itself, multiplied by the element's moment
+/// out of balance in the current geometry (second order in the deformation).
+/// In spin variables the consistent tangent is not symmetric (away from
+/// equilibrium, and at equilibrium wherever moments are applied); on request
+/// the geometric part is symmetrised, which costs Newton its quadratic
+/// convergence under large applied moments (measured in docs/fem.md) but gives
+/// an LLᵀ-factorisable matrix for dynamics. tests/fem/test_corotational_element
+/// compares the tangent with finite differences of the force.
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "fem/nodal_rotation.hpp"
+
+namespace flapsim::fem {
+
+/// Co-rotated frame of an element in its current configuration.
+template <int N>
+struct CorotatedFrame {
+  Eigen::Matrix3d axes;                       ///< T_r: rows are current local axes (global comps.)
+  Eigen::Matrix<double, 3, 6 * N> spin_map;   ///< G: δω̃_r = G δũ (local components)
+};
+
+/// Optional velocity-proportional (co-rotational stiffness-proportional) damping.
+template <int N>
+struct EicrDamping {
+  const Eigen::Matrix<double, 6 * N, 1>* velocity = nullptr;  ///< global (ẋ, ω) of the element's nodes
+  double coefficient = 0.0;       ///< a₁ [s]: damping force a₁ Bᵀ k ḋ
+  double tangent_scale = 0.0;     ///< factor of a₁ Bᵀ k B added to the tangent (∂v/∂u)
+};
+
+/// \brief Internal force (global, conjugate to δx and spatial spins), optional
+/// tangent and strain energy of one element.
+/// \param k       linear stiffness in reference local axes (6N × 6N)
+/// \param Xbar    reference local node coordinates about the centroid [m]
+/// \param T0      reference axes (rows) [-]
+/// \param frame   current co-rotated frame and its spin map
+/// \param x, R    current node positions [m] and nodal rotations
+/// \param symmetric  symmetrise the geometric part (else the consistent,
+///                   non-symmetric spin-variable tangent)
+template <int N>
+double eicr_force(const Eigen::Matrix<double, 6 * N, 6 * N>& k, const std::array<Eigen::Vector3d, N>& Xbar,
+                  const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
+                  const std::array<Eigen::Vector3d, N>& x, const std::array<Eigen::Matrix3d, N>& R,
+                  Eigen::Matrix<double, 6 * N, 1>& f, Eigen::Matrix<double, 6 * N, 6 * N>* K,
+                  const EicrDamping<N>& damping = {}, bool symmetric = true) {
+  constexpr int n = 6 * N;
+  using Vec = Eigen::Matrix<double, n, 1>;
+  using Mat = Eigen::Matrix<double, n, n>;
+  const Eigen::Matrix3d& Tr = frame.axes;
+  const auto& G = frame.spin_map;
+  Eigen::Vector3d xc = Eigen::Vector3d::Zero();
+  for (int a = 0; a < N; ++a) xc += x[a];
+  xc /= N;
+  std::array<Eigen::Vector3d, N> xbar;
+  std::array<Eigen::Matrix3d, N> H;
+  Vec d;
+  for (int a = 0; a < N; ++a) {
+    xbar[a] = Tr * (x[a] - xc);
+    d.template segment<3>(6 * a) = xbar[a] - Xbar[a];
+    const Eigen::Vector3d th = rotation_vector(Tr * R[a] * T0.transpose());
+    d.template segment<3>(6 * a + 3) = th;
+    H[a] = inverse_tangent(th);
+  }
+  Mat P = Mat::Zero();
+  for (int a = 0; a < N; ++a) {
+    for (int b = 0; b < N; ++b)
+      P.template block<3, 3>(6 * a, 6 * b).diagonal().setConstant((a == b ? 1.0 : 0.0) - 1.0 / N);
+    P.template block<3, n>(6 * a, 0) += skew(xbar[a]) * G;
+    P.template block<3, 3>(6 * a + 3, 6 * a + 3).setIdentity();
+    P.template block<3, n>(6 * a + 3, 0) -= G;
+  }
+  Mat B = P;
+  for (int a = 0; a < N; ++a) B.template block<3, n>(6 * a + 3, 0) = H[a] * P.template block<3, n>(6 * a + 3, 0);
+
+  Vec fl = k * d;
+  if (damping.velocity != nullptr && damping.coefficient != 0.0) {
+    Vec vl;
+    for (int i = 0; i < 2 * N; ++i) vl.template segment<3>(3 * i) = Tr * damping.velocity->template segment<3>(3 * i);
+    fl += damping.coefficient * (k * (B * vl));
+  }
+  Vec fbar = fl;
+  for (int a = 0; a < N; ++a) fbar.template segment<3>(6 * a + 3) = H[a].transpose() * fl.template segment<3>(6 * a + 3);
+  const Vec p = P.transpose() * fbar;
+  for (int i = 0; i < 2 * N; ++i) f.template segment<3>(3 * i) = Tr.transpose() * p.template segment<3>(3 * i);
+
+  if (K != nullptr) {
+    Mat Kl = B.transpose() * k * B;
+    if (damping.tangent_scale != 0.0) Kl *= 1.0 + damping.tangent_scale;
+    Eigen::Matrix<double, 3, n> FnT = Eigen::Matrix<double, 3, n>::Zero();
+    Mat Kg;
+    for (int i = 0; i < 2 * N; ++i) Kg.template block<3, n>(3 * i, 0) = -skew(p.template segment<3>(3 * i)) * G;
+    for (int a = 0; a < N; ++a) FnT.template block<3, 3>(0, 6 * a) = skew(fbar.template segment<3>(6 * a));
+    Kg += G.transpose() * FnT * P;
+    Mat Kgm = Mat::Zero();  // K_GM = Pᵀ [Λ_a H_a P_a] (rotation rows)
+    for (int a = 0; a < N; ++a)
+      Kgm.template block<3, n>(6 * a + 3, 0) =
+          inverse_tangent_derivative(d.template segment<3>(6 * a + 3), fl.template segment<3>(6 * a + 3)) *
+          B.template block<3, n>(6 * a + 3, 0);
+    Kg += P.transpose() * Kgm;
+    if (symmetric)
+      Kl += 0.5 * (Kg + Kg.transpose());
+    else
+      Kl += Kg;
+    for (int i = 0; i < 2 * N; ++i)
+      for (int j = 0; j < 2 * N; ++j)
+        K->template block<3, 3>(3 * i, 3 * j) = Tr.transpose() * Kl.template block<3, 3>(3 * i, 3 * j) * Tr;
+  }
+  return 0.5 * d.dot(k * d);
+}
+
+}  // namespace flapsim::fem

@@ -1,0 +1,221 @@
+#include "fem/nonlinear_assembly.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "fem/nodal_rotation.hpp"
+
+namespace flapsim::fem {
+
+namespace {
+
+using Vector18d = Eigen::Matrix<double, 18, 1>;
+using Vector12d = Eigen::Matrix<double, 12, 1>;
+
+/// Rotation-invariant frame mass (nonlinear_assembly.hpp): linear-interpolation
+/// translational mass and the torsional inertia lumped isotropically.
+Matrix12d invariant_frame_mass(double length, const FrameProperties& f) {
+  Matrix12d m = Matrix12d::Zero();
+  const double c = f.density * f.section.area * length / 6.0;  // [kg]
+  const double j = f.density * f.section.polar_moment * length / 2.0;  // [kg·m²]
+  for (int d = 0; d < 3; ++d) {
+    m(d, d) = m(6 + d, 6 + d) = 2.0 * c;
+    m(d, 6 + d) = m(6 + d, d) = c;
+    m(3 + d, 3 + d) = m(9 + d, 9 + d) = j;
+  }
+  return m;
+}
+
+template <int N>
+void add_triplets(std::vector<Eigen::Triplet<double>>& out, const Eigen::Matrix<double, 6 * N, 6 * N>& m,
+                  const int* nodes) {
+  for (int a = 0; a < N; ++a)
+    for (int b = 0; b < N; ++b)
+      for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) {
+          const double v = m(6 * a + i, 6 * b + j);
+          if (v != 0.0) out.emplace_back(dof_index(nodes[a], i), dof_index(nodes[b], j), v);
+        }
+}
+
+}  // namespace
+
+CorotationalModel make_corotational_model(const StructuralModel& sm) {
+  const Mesh& mesh = sm.mesh;
+  if (sm.shell.size() != mesh.triangles.size() || sm.frame.size() != mesh.beams.size())
+    throw std::invalid_argument("make_corotational_model: one property entry per element is required");
+  CorotationalModel m;
+  m.reference_positions = mesh.nodes;
+  std::vector<Eigen::Triplet<double>> mt;
+  for (size_t e = 0; e < mesh.triangles.size(); ++e) {
+    const auto& t = mesh.triangles[e];
+    const std::array<Eigen::Vector3d, 3> p{mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]};
+    if (!((p[1] - p[0]).cross(p[2] - p[0]).norm() > 0.0))
+      throw std::invalid_argument("make_corotational_model: triangle " + std::to_string(e) + " has zero area");
+    m.shells.push_back(make_corotational_shell(t, p, sm.shell[e]));
+    add_triplets<3>(mt, shell_element(p, sm.shell[e]).mass, t.data());
+  }
+  for (size_t e = 0; e < mesh.beams.size(); ++e) {
+    const auto& b = mesh.beams[e];
+    const Eigen::Vector3d& a = mesh.nodes[b.nodes[0]];
+    const Eigen::Vector3d& c = mesh.nodes[b.nodes[1]];
+    if (!((c - a).norm() > 0.0))
+      throw std::invalid_argument("make_corotational_model: beam " + std::to_string(e) + " has zero length");
+    m.frames.push_back(make_corotational_frame(b.nodes, a, c, sm.frame[e]));
+    add_triplets<2>(mt, invariant_frame_mass((c - a).norm(), sm.frame[e]), b.nodes.data());
+  }
+  m.mass.resize(mesh.num_dofs(), mesh.num_dofs());
+  m.mass.setFromTriplets(mt.begin(), mt.end());
+  return m;
+}
+
+CorotationalState reference_state(const CorotationalModel& model) {
+  CorotationalState s;
+  s.position = model.reference_positions;
+  s.rotation.assign(model.reference_positions.size(), Eigen::Matrix3d::Identity());
+  return s;
+}
+
+void apply_increment(CorotationalState& s, const Eigen::VectorXd& du) {
+  for (size_t i = 0; i < s.position.size(); ++i) {
+    const Eigen::Index k = static_cast<Eigen::Index>(6 * i);
+    s.position[i] += du.segment<3>(k);
+    const Eigen::Vector3d w = du.segment<3>(k + 3);
+    if (w.squaredNorm() > 0.0) s.rotation[i] = rotation_matrix(w) * s.rotation[i];
+  }
+}
+
+Eigen::VectorXd displacement_vector(const CorotationalModel& model, const CorotationalState& s) {
+  Eigen::VectorXd u(model.num_dofs());
+  for (int i = 0; i < model.num_nodes(); ++i) {
+    u.segment<3>(6 * i) = s.position[i] - model.reference_positions[i];
+    u.segment<3>(6 * i + 3) = rotation_vector(s.rotation[i]);
+  }
+  return u;
+}
+
+NonlinearAssembler::NonlinearAssembler(const CorotationalModel& model, Constraints constraints, TangentForm form)
+    : model_(model), constraints_(std::move(constraints)), form_(form), free_dofs_(constraints_.free_dofs()) {
+  const bool lower = form == TangentForm::SymmetricLower;
+  if (constraints_.num_dofs() != model.num_dofs())
+    throw std::invalid_argument("NonlinearAssembler: constraints do not match the model's DOF count");
+  const std::vector<int> fi = constraints_.free_index();
+  const int nf = constraints_.num_free();
+  std::vector<Eigen::Triplet<double>> t;
+  auto pattern = [&](const int* nodes, int nn) {
+    for (int a = 0; a < nn; ++a)
+      for (int b = 0; b < nn; ++b)
+        for (int i = 0; i < 6; ++i)
+          for (int j = 0; j < 6; ++j) {
+            const int r = fi[dof_index(nodes[a], i)], c = fi[dof_index(nodes[b], j)];
+            if (r >= 0 && c >= 0 && (r >= c || !lower)) t.emplace_back(r, c, 0.0);
+          }
+  };
+  for (const auto& e : model.shells) pattern(e.nodes.data(), 3);
+  for (const auto& e : model.frames) pattern(e.nodes.data(), 2);
+  tangent_.resize(nf, nf);
+  tangent_.setFromTriplets(t.begin(), t.end());
+  tangent_.makeCompressed();
+  auto slot = [&](int gr, int gc) {
+    const int r = fi[gr], c = fi[gc];
+    if (r < 0 || c < 0 || (lower && r < c)) return -1;
+    const int* begin = tangent_.innerIndexPtr() + tangent_.outerIndexPtr()[c];
+    const int* end = tangent_.innerIndexPtr() + tangent_.outerIndexPtr()[c + 1];
+    const int* it = std::lower_bound(begin, end, r);
+    return static_cast<int>(it - tangent_.innerIndexPtr());
+  };
+  auto fill = [&](auto& slots, const int* nodes, int nn) {
+    for (int a = 0; a < nn; ++a)
+      for (int b = 0; b < nn; ++b)
+        for (int i = 0; i < 6; ++i)
+          for (int j = 0; j < 6; ++j)
+            slots[(6 * a + i) * 6 * nn + 6 * b + j] = slot(dof_index(nodes[a], i), dof_index(nodes[b], j));
+  };
+  shell_slots_.resize(model.shells.size());
+  frame_slots_.resize(model.frames.size());
+  for (size_t e = 0; e < model.shells.size(); ++e) fill(shell_slots_[e], model.shells[e].nodes.data(), 3);
+  for (size_t e = 0; e < model.frames.size(); ++e) fill(frame_slots_[e], model.frames[e].nodes.data(), 2);
+  mass_values_.assign(static_cast<size_t>(tangent_.nonZeros()), 0.0);
+  for (int c = 0; c < model.mass.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(model.mass, c); it; ++it) {
+      const int s = slot(static_cast<int>(it.row()), c);
+      if (s >= 0) mass_values_[static_cast<size_t>(s)] += it.value();
+    }
+  shell_K_.resize(model.shells.size());
+  shell_f_.resize(model.shells.size());
+  frame_K_.resize(model.frames.size());
+  frame_f_.resize(model.frames.size());
+  energy_.resize(model.shells.size() + model.frames.size());
+}
+
+void NonlinearAssembler::load_mass_into_tangent() {
+  std::copy(mass_values_.begin(), mass_values_.end(), tangent_.valuePtr());
+}
+
+double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd& f_int, bool tangent,
+                                    const TangentExtras& ex) {
+  const int ns = static_cast<int>(model_.shells.size());
+  const int nb = static_cast<int>(model_.frames.size());
+#pragma omp parallel for schedule(static) if (ns + nb > 512)
+  for (int e = 0; e < ns; ++e) {
+    const CorotationalShell& el = model_.shells[static_cast<size_t>(e)];
+    const std::array<Eigen::Vector3d, 3> x{s.position[el.nodes[0]], s.position[el.nodes[1]], s.position[el.nodes[2]]};
+    const std::array<Eigen::Matrix3d, 3> R{s.rotation[el.nodes[0]], s.rotation[el.nodes[1]], s.rotation[el.nodes[2]]};
+    EicrDamping<3> damp;
+    Vector18d v;
+    if (ex.velocity != nullptr && ex.damping != 0.0) {
+      for (int a = 0; a < 3; ++a) v.segment<6>(6 * a) = ex.velocity->segment<6>(6 * el.nodes[a]);
+      damp = {&v, ex.damping, ex.damping * ex.damping_tangent_scale};
+    }
+    energy_[static_cast<size_t>(e)] =
+        eicr_force<3>(el.local_stiffness, el.reference_local, el.reference_axes, shell_corotated_frame(x), x, R,
+                      shell_f_[static_cast<size_t>(e)], tangent ? &shell_K_[static_cast<size_t>(e)] : nullptr, damp,
+                      form_ == TangentForm::SymmetricLower);
+  }
+#pragma omp parallel for schedule(static) if (ns + nb > 512)
+  for (int e = 0; e < nb; ++e) {
+    const CorotationalFrame& el = model_.frames[static_cast<size_t>(e)];
+    const std::array<Eigen::Vector3d, 2> x{s.position[el.nodes[0]], s.position[el.nodes[1]]};
+    const std::array<Eigen::Matrix3d, 2> R{s.rotation[el.nodes[0]], s.rotation[el.nodes[1]]};
+    EicrDamping<2> damp;
+    Vector12d v;
+    if (ex.velocity != nullptr && ex.damping != 0.0) {
+      for (int a = 0; a < 2; ++a) v.segment<6>(6 * a) = ex.velocity->segment<6>(6 * el.nodes[a]);
+      damp = {&v, ex.damping, ex.damping * ex.damping_tangent_scale};
+    }
+    energy_[static_cast<size_t>(ns + e)] =
+        eicr_force<2>(el.local_stiffness, el.reference_local, el.reference_axes, frame_corotated_frame(el, x, R), x,
+                      R, frame_f_[static_cast<size_t>(e)], tangent ? &frame_K_[static_cast<size_t>(e)] : nullptr,
+                      damp, form_ == TangentForm::SymmetricLower);
+  }
+  f_int.setZero(model_.num_dofs());
+  double energy = 0.0;
+  for (double w : energy_) energy += w;
+  for (int e = 0; e < ns; ++e)
+    for (int a = 0; a < 3; ++a) f_int.segment<6>(6 * model_.shells[e].nodes[a]) += shell_f_[e].segment<6>(6 * a);
+  for (int e = 0; e < nb; ++e)
+    for (int a = 0; a < 2; ++a) f_int.segment<6>(6 * model_.frames[e].nodes[a]) += frame_f_[e].segment<6>(6 * a);
+  if (tangent) {
+    double* val = tangent_.valuePtr();
+    const Eigen::Index nnz = tangent_.nonZeros();
+    for (Eigen::Index i = 0; i < nnz; ++i) val[i] = ex.mass_scale * mass_values_[static_cast<size_t>(i)];
+    for (int e = 0; e < ns; ++e) {
+      const double* k = shell_K_[e].data();  // column-major: k[col * 18 + row]
+      const auto& sl = shell_slots_[e];
+      for (int r = 0; r < 18; ++r)
+        for (int c = 0; c < 18; ++c)
+          if (sl[r * 18 + c] >= 0) val[sl[r * 18 + c]] += k[c * 18 + r];
+    }
+    for (int e = 0; e < nb; ++e) {
+      const double* k = frame_K_[e].data();
+      const auto& sl = frame_slots_[e];
+      for (int r = 0; r < 12; ++r)
+        for (int c = 0; c < 12; ++c)
+          if (sl[r * 12 + c] >= 0) val[sl[r * 12 + c]] += k[c * 12 + r];
+    }
+  }
+  return energy;
+}
+
+}  // namespace flapsim::fem

@@ -1,0 +1,272 @@
+#include "fem/nonlinear_dynamics.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseLU>
+
+#include "fem/nodal_rotation.hpp"
+
+namespace flapsim::fem {
+
+namespace {
+constexpr double kMaxRotationCorrection = 0.3;  ///< largest nodal rotation per Newton correction [rad]
+}  // namespace
+
+DynamicsModel make_dynamics_model(const CorotationalModel& structure, std::vector<int> driven_nodes,
+                                  const DynamicsOptions& options, const std::vector<int>& fixed_dofs) {
+  DynamicsModel m;
+  m.structure = &structure;
+  m.driven_nodes = std::move(driven_nodes);
+  m.eliminated = Constraints(structure.num_dofs());
+  m.eliminated.clamp_nodes(m.driven_nodes);
+  for (int d : fixed_dofs) m.eliminated.fix_dof(d);
+  std::vector<char> driven(static_cast<size_t>(structure.num_nodes()), 0);
+  for (int n : m.driven_nodes) driven[static_cast<size_t>(n)] = 1;
+  for (int d : fixed_dofs)
+    if (!driven[static_cast<size_t>(d / kDofsPerNode)]) m.fixed_not_driven.push_back(d);
+  if (structure.num_nodes() > 0) {
+    Eigen::Vector3d lo = structure.reference_positions[0], hi = lo;
+    for (const auto& p : structure.reference_positions) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    m.size = (hi - lo).norm();
+  }
+  m.options = options;
+  const double r = options.rho_infinity;
+  if (!(r >= 0.0 && r <= 1.0)) throw std::invalid_argument("make_dynamics_model: rho_infinity must be in [0, 1]");
+  m.alpha_m = (2.0 * r - 1.0) / (r + 1.0);
+  m.alpha_f = r / (r + 1.0);
+  m.gamma = 0.5 - m.alpha_m + m.alpha_f;
+  m.beta = 0.25 * (1.0 - m.alpha_m + m.alpha_f) * (1.0 - m.alpha_m + m.alpha_f);
+  return m;
+}
+
+PrescribedMotion rigid_prescribed_motion(const DynamicsModel& model, const Eigen::Vector3d& X0,
+                                         const Eigen::Vector3d& c, const Eigen::Vector3d& vc,
+                                         const Eigen::Vector3d& ac, const Eigen::Matrix3d& Q,
+                                         const Eigen::Vector3d& w, const Eigen::Vector3d& al) {
+  PrescribedMotion p;
+  for (int n : model.driven_nodes) {
+    const Eigen::Vector3d r = Q * (model.structure->reference_positions[static_cast<size_t>(n)] - X0);
+    p.position.push_back(c + r);
+    p.velocity.push_back(vc + w.cross(r));
+    p.acceleration.push_back(ac + al.cross(r) + w.cross(w.cross(r)));
+    p.rotation.push_back(Q);
+    p.angular_velocity.push_back(w);
+    p.angular_acceleration.push_back(al);
+  }
+  return p;
+}
+
+struct DynamicsData::Work {
+  Work(const CorotationalModel& m, const Constraints& c, TangentForm form)
+      : assembler(m, c, form), mass_assembler(m, c, TangentForm::SymmetricLower), form(form) {}
+  NonlinearAssembler assembler;
+  NonlinearAssembler mass_assembler;  ///< only for M_ff at the start
+  TangentForm form;
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
+  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+  bool analysed = false;
+  /// Factorise the Newton matrix; false if it is singular (or, for LLᵀ, not positive definite).
+  bool factorize() {
+    const SparseMatrix& A = assembler.tangent();
+    if (form == TangentForm::SymmetricLower) {
+      if (!analysed) llt.analyzePattern(A);
+      analysed = true;
+      llt.factorize(A);
+      return llt.info() == Eigen::Success;
+    }
+    if (!analysed) lu.analyzePattern(A);
+    analysed = true;
+    lu.factorize(A);
+    return lu.info() == Eigen::Success;
+  }
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    if (form == TangentForm::SymmetricLower)
+      x = llt.solve(b);
+    else
+      x = lu.solve(b);
+  }
+  CorotationalState trial;
+  Eigen::VectorXd f_int, inertia, r, dx, increment, v1, vdot1, a1;
+};
+
+DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& s, const Eigen::VectorXd& v0,
+                           const Eigen::VectorXd& f_ext0)
+    : state(s), velocity(v0), work_(std::make_unique<Work>(*model.structure, model.eliminated, model.options.tangent)) {
+  const CorotationalModel& cm = *model.structure;
+  const int n = cm.num_dofs();
+  if (v0.size() != n || f_ext0.size() != n)
+    throw std::invalid_argument("DynamicsData: velocity or load size does not match the DOF count");
+  Work& w = *work_;
+  w.trial = s;
+  w.f_int.resize(n);
+  w.inertia.resize(n);
+  w.increment.resize(n);
+  w.v1.resize(n);
+  w.vdot1.resize(n);
+  w.a1.resize(n);
+  const auto& free = w.assembler.free_dofs();
+  w.r.resize(static_cast<Eigen::Index>(free.size()));
+  w.dx.resize(static_cast<Eigen::Index>(free.size()));
+  acceleration = Eigen::VectorXd::Zero(n);
+  strain_energy = w.assembler.evaluate(state, w.f_int, false);
+  if (!free.empty()) {
+    w.mass_assembler.load_mass_into_tangent();
+    Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> mllt(w.mass_assembler.tangent());
+    if (mllt.info() != Eigen::Success) throw std::runtime_error("DynamicsData: the free mass matrix is singular");
+    for (size_t i = 0; i < free.size(); ++i) w.r(static_cast<Eigen::Index>(i)) = f_ext0(free[i]) - w.f_int(free[i]);
+    w.dx = mllt.solve(w.r);
+    for (size_t i = 0; i < free.size(); ++i) acceleration(free[i]) = w.dx(static_cast<Eigen::Index>(i));
+  }
+  pseudo_acceleration = acceleration;
+}
+
+DynamicsData::~DynamicsData() = default;
+
+double DynamicsData::kinetic_energy() const {
+  const SparseMatrix& M = work_->assembler.model().mass;
+  return 0.5 * velocity.dot(M * velocity);
+}
+
+StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eigen::VectorXd& f_ext,
+                const PrescribedMotion* pm) {
+  const CorotationalModel& cm = *model.structure;
+  DynamicsData::Work& w = *d.work_;
+  const double am = model.alpha_m, af = model.alpha_f, be = model.beta, ga = model.gamma;
+  const std::vector<int>& free = w.assembler.free_dofs();
+  const Eigen::Index nf = static_cast<Eigen::Index>(free.size());
+  StepResult res;
+  if (f_ext.size() != cm.num_dofs()) throw std::invalid_argument("step: load vector size does not match the DOF count");
+  if (pm != nullptr && pm->position.size() != model.driven_nodes.size())
+    throw std::invalid_argument("step: one prescribed motion per driven node is required");
+
+  // Predictor: q_{n+1} = q_n (no increment), the rates from the scheme. An
+  // extrapolating predictor (v̇_{n+1} = v̇_n) puts the stiff, unresolved modes
+  // (rotations of small rotary inertia, ωh ≫ 1) far off and Newton diverged.
+  w.increment.setZero();
+  w.a1 = -(d.velocity + h * (0.5 - be) * d.pseudo_acceleration) / (h * be);
+  w.v1 = d.velocity + h * (1.0 - ga) * d.pseudo_acceleration + h * ga * w.a1;
+  w.vdot1 = ((1.0 - am) * w.a1 + am * d.pseudo_acceleration - af * d.acceleration) / (1.0 - af);
+  // Driven nodes: their motion at t_{n+1} as given (or at rest where they are).
+  auto place = [&]() {
+    for (size_t i = 0; i < d.state.position.size(); ++i) {
+      w.trial.position[i] = d.state.position[i] + w.increment.segment<3>(static_cast<Eigen::Index>(6 * i));
+      w.trial.rotation[i] =
+          rotation_matrix(w.increment.segment<3>(static_cast<Eigen::Index>(6 * i + 3))) * d.state.rotation[i];
+    }
+    for (size_t k = 0; k < model.driven_nodes.size(); ++k) {
+      const int n = model.driven_nodes[k];
+      if (pm != nullptr) {
+        w.trial.position[n] = pm->position[k];
+        w.trial.rotation[n] = pm->rotation[k];
+      } else {
+        w.trial.position[n] = d.state.position[n];
+        w.trial.rotation[n] = d.state.rotation[n];
+      }
+    }
+  };
+  for (size_t k = 0; k < model.driven_nodes.size(); ++k) {
+    const Eigen::Index o = 6 * model.driven_nodes[k];
+    if (pm != nullptr) {
+      w.v1.segment<3>(o) = pm->velocity[k];
+      w.v1.segment<3>(o + 3) = pm->angular_velocity[k];
+      w.vdot1.segment<3>(o) = pm->acceleration[k];
+      w.vdot1.segment<3>(o + 3) = pm->angular_acceleration[k];
+    } else {
+      w.v1.segment<6>(o).setZero();
+      w.vdot1.segment<6>(o).setZero();
+    }
+    w.a1.segment<6>(o) = ((1.0 - af) * w.vdot1.segment<6>(o) + af * d.acceleration.segment<6>(o) -
+                          am * d.pseudo_acceleration.segment<6>(o)) / (1.0 - am);
+  }
+  // Fixed (not driven) DOFs stay put.
+  for (int i : model.fixed_not_driven) w.increment(i) = w.v1(i) = w.vdot1(i) = w.a1(i) = 0.0;
+  place();
+
+  const double cM = (1.0 - am) / ((1.0 - af) * be * h * h);  // ∂v̇/∂u [1/s²]
+  const double cV = ga / (be * h);                           // ∂v/∂u [1/s]
+  TangentExtras ex;
+  ex.mass_scale = cM;
+  ex.velocity = &w.v1;
+  ex.damping = model.options.stiffness_damping;
+  ex.damping_tangent_scale = cV;
+  double strain = 0.0;
+  for (int it = 0; it <= model.options.max_iterations; ++it) {
+    strain = w.assembler.evaluate(w.trial, w.f_int, true, ex);
+    w.inertia.noalias() = cm.mass * w.vdot1;
+    double scale = 0.0, fi = 0.0, fm = 0.0;
+    for (Eigen::Index i = 0; i < nf; ++i) {
+      const int g = free[static_cast<size_t>(i)];
+      w.r(i) = f_ext(g) - w.f_int(g) - w.inertia(g);
+      scale += f_ext(g) * f_ext(g);
+      fi += w.f_int(g) * w.f_int(g);
+      fm += w.inertia(g) * w.inertia(g);
+    }
+    scale = std::sqrt(std::max({scale, fi, fm}));
+    const double rn = w.r.norm();
+    res.residual = scale > 0.0 ? rn / scale : rn;
+    res.iterations = it;
+    if (!std::isfinite(rn)) {
+      res.failure = "t = " + std::to_string(d.time + h) + " s: the residual is not finite";
+      return res;
+    }
+    if (rn <= model.options.tolerance * scale || rn == 0.0) {
+      res.converged = true;
+      break;
+    }
+    if (it == model.options.max_iterations) break;
+    if (!w.factorize()) {
+      res.failure = "t = " + std::to_string(d.time + h) + " s, iteration " + std::to_string(it) +
+                    ": the Newton matrix is singular or (LLᵀ) not positive definite";
+      return res;
+    }
+    w.solve(w.r, w.dx);
+    double max_t = 0.0, max_r = 0.0;
+    for (Eigen::Index i = 0; i < nf; ++i) {
+      const bool translation = free[static_cast<size_t>(i)] % kDofsPerNode < 3;
+      double& m = translation ? max_t : max_r;
+      m = std::max(m, std::abs(w.dx(i)));
+    }
+    const double tol_u = model.options.increment_tolerance;
+    const bool small_increment = max_t <= tol_u * model.size && max_r <= tol_u;
+    // A correction that turns a node by more than kMaxRotationCorrection is
+    // scaled down to it: far from the solution, the linearisation of the
+    // rotations (exp(ω̂) ≈ I + ω̂) no longer holds and full corrections ran off.
+    if (max_r > kMaxRotationCorrection) w.dx *= kMaxRotationCorrection / max_r;
+    for (Eigen::Index i = 0; i < nf; ++i) {
+      const int g = free[static_cast<size_t>(i)];
+      const double du = w.dx(i);
+      w.increment(g) += du;
+      w.a1(g) += du / (be * h * h);
+      w.v1(g) += cV * du;
+      w.vdot1(g) += cM * du;
+    }
+    place();
+    if (small_increment) {
+      strain = w.assembler.evaluate(w.trial, w.f_int, false, ex);
+      res.iterations = it + 1;
+      res.converged = true;
+      break;
+    }
+  }
+  if (!res.converged) {
+    res.failure = "t = " + std::to_string(d.time + h) + " s: Newton did not converge in " +
+                  std::to_string(model.options.max_iterations) + " iterations (relative residual " +
+                  std::to_string(res.residual) + ")";
+    return res;
+  }
+  std::swap(d.state, w.trial);
+  w.trial = d.state;  // same sizes: no allocation
+  std::swap(d.velocity, w.v1);
+  std::swap(d.acceleration, w.vdot1);
+  std::swap(d.pseudo_acceleration, w.a1);
+  d.time += h;
+  d.strain_energy = strain;
+  return res;
+}
+
+}  // namespace flapsim::fem

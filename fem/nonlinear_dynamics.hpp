@@ -1,0 +1,134 @@
+#pragma once
+/// \file nonlinear_dynamics.hpp
+/// \brief Geometrically nonlinear dynamics of the co-rotational FEM: implicit
+/// generalized-α (Chung & Hulbert 1993) in the Lie-group form of Arnold &
+/// Brüls 2007 (equilibrium at t_{n+1}, pseudo-accelerations a), Newton
+/// iterations on the free DOFs with the symbolic analysis of the Newton matrix
+/// done once (sparse LU of the consistent tangent, or CHOLMOD supernodal LLᵀ
+/// of the symmetrised one: DynamicsOptions::tangent), no allocation in the
+/// step.
+///
+/// Per step (h = Δt, q ⊕ w: x + w_t and exp(ŵ_r) R):
+///   q_{n+1} = q_n ⊕ h Δ,  Δ = v_n + h(½ − β) a_n + hβ a_{n+1}
+///   v_{n+1} = v_n + h(1 − γ) a_n + hγ a_{n+1}
+///   (1 − α_m) a_{n+1} + α_m a_n = (1 − α_f) v̇_{n+1} + α_f v̇_n
+///   M v̇_{n+1} + f_int(q_{n+1}, v_{n+1}) = f_ext(t_{n+1})
+/// with α_m = (2ρ∞ − 1)/(ρ∞ + 1), α_f = ρ∞/(ρ∞ + 1), γ = ½ − α_m + α_f,
+/// β = ¼(1 − α_m + α_f)². Velocities are (ẋ, ω) with ω the spatial angular
+/// velocity; the mass (nonlinear_assembly.hpp) is rotation-invariant and the
+/// nodal rotary inertia isotropic, so M v̇ is the exact inertial force, with
+/// no gyroscopic term. The Newton matrix is c_M M + K_T (+ damping) with
+/// c_M = (1 − α_m)/((1 − α_f)βh²); the tangent operator of exp on the
+/// rotation increment (I + O(h|ω|)) is left out of it, so Newton converges
+/// linearly at a rate of order h|ω|. The symmetrised tangent is cheaper
+/// (LLᵀ) but its Newton matrix can lose definiteness where large moments act
+/// on nodes of small rotary inertia (a frame released from a large
+/// deflection: measured in docs/fem.md); the consistent one is the default.
+///
+/// Base motion. The wing moves with its prescribed base motion in the ground
+/// frame: the clamp nodes are driven (position, rotation and their rates
+/// prescribed at t_{n+1}) and every other node is free. The co-rotational
+/// elements take any rigid rotation exactly (stress-free, test
+/// fem.NonlinearStatic.RigidRotationOfWholeModelIsStressFree), so the large
+/// flapping rotation needs no moving frame and no fictitious (centrifugal,
+/// Coriolis, Euler) forces: they arise from M v̇ in the inertial frame.
+///
+/// Damping (optional): co-rotational stiffness-proportional damping a₁ Bᵀ k ḋ
+/// acting on deformational velocities only. Mass-proportional damping is not
+/// offered: in the ground frame it would damp the rigid flapping motion.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fem/constraints.hpp"
+#include "fem/nonlinear_assembly.hpp"
+
+namespace flapsim::fem {
+
+/// Integrator settings.
+struct DynamicsOptions {
+  double rho_infinity = 1.0;     ///< spectral radius at h → ∞ (1: no numerical dissipation)
+  int max_iterations = 25;       ///< Newton iterations per step
+  double tolerance = 1e-10;      ///< ‖r_free‖ ≤ tolerance · force scale of the step
+  double stiffness_damping = 0.0;  ///< a₁ [s], Rayleigh stiffness-proportional (co-rotational)
+  /// Newton matrix: Consistent (sparse LU) or SymmetricLower (CHOLMOD LLᵀ).
+  TangentForm tangent = TangentForm::Consistent;
+  /// Also converged when the largest Newton correction is below this fraction
+  /// of the model's size (translations) or this many radians (rotations):
+  /// the residual of a small motion can sit at its round-off floor.
+  double increment_tolerance = 1e-13;
+};
+
+/// The constant part: model, which nodes are driven, which DOFs are fixed.
+struct DynamicsModel {
+  const CorotationalModel* structure = nullptr;  ///< must outlive the model and its data
+  std::vector<int> driven_nodes;   ///< nodes whose motion is prescribed (all 6 DOFs)
+  Constraints eliminated;          ///< driven nodes' DOFs (and any fixed DOF)
+  DynamicsOptions options;
+  double alpha_m = 0.0, alpha_f = 0.0, beta = 0.0, gamma = 0.0;  ///< from rho_infinity
+  double size = 0.0;                   ///< bounding-box diagonal of the reference nodes [m]
+  std::vector<int> fixed_not_driven;   ///< DOFs held at their initial values
+};
+
+/// \brief Build the constant part; `fixed_dofs` stay at their initial values.
+DynamicsModel make_dynamics_model(const CorotationalModel& structure, std::vector<int> driven_nodes,
+                                  const DynamicsOptions& options = {}, const std::vector<int>& fixed_dofs = {});
+
+/// Motion of the driven nodes at t_{n+1}, one entry per DynamicsModel::driven_nodes.
+struct PrescribedMotion {
+  std::vector<Eigen::Vector3d> position, velocity, acceleration;  ///< [m, m/s, m/s²]
+  std::vector<Eigen::Matrix3d> rotation;                          ///< reference → current
+  std::vector<Eigen::Vector3d> angular_velocity, angular_acceleration;  ///< spatial [rad/s, rad/s²]
+};
+
+/// \brief Rigid motion of the driven nodes: x = c + Q (X − X₀), R = Q, with the
+/// rates of a rigid body (velocity v_c, spatial ω, α) about the point X₀ → c.
+PrescribedMotion rigid_prescribed_motion(const DynamicsModel& model, const Eigen::Vector3d& X0,
+                                         const Eigen::Vector3d& c, const Eigen::Vector3d& vc,
+                                         const Eigen::Vector3d& ac, const Eigen::Matrix3d& Q,
+                                         const Eigen::Vector3d& omega, const Eigen::Vector3d& alpha);
+
+/// Outcome of one step.
+struct StepResult {
+  bool converged = false;
+  int iterations = 0;
+  double residual = 0.0;   ///< last ‖r_free‖ / force scale
+  std::string failure;     ///< why it stopped (empty when converged)
+};
+
+/// The mutable part: state, rates, work buffers, the factorisation.
+class DynamicsData {
+ public:
+  /// \brief Start at `state` with velocities v0 (full (ẋ, ω)); the initial
+  /// acceleration solves M v̇₀ = f_ext0 − f_int on the free DOFs.
+  DynamicsData(const DynamicsModel& model, const CorotationalState& state, const Eigen::VectorXd& v0,
+               const Eigen::VectorXd& f_ext0);
+  ~DynamicsData();
+  DynamicsData(const DynamicsData&) = delete;
+  DynamicsData& operator=(const DynamicsData&) = delete;
+
+  CorotationalState state;     ///< q_n
+  Eigen::VectorXd velocity;    ///< v_n (full)
+  Eigen::VectorXd acceleration;  ///< v̇_n (full)
+  Eigen::VectorXd pseudo_acceleration;  ///< a_n (full)
+  double time = 0.0;           ///< t_n [s]
+  double strain_energy = 0.0;  ///< at q_n [J]
+  double kinetic_energy() const;  ///< ½ vᵀ M v [J]
+
+ private:
+  friend StepResult step(const DynamicsModel&, DynamicsData&, double, const Eigen::VectorXd&,
+                         const PrescribedMotion*);
+  struct Work;
+  std::unique_ptr<Work> work_;
+};
+
+/// \brief Advance from t_n to t_n + dt. On failure the data keep t_n's values.
+/// \param f_ext       nodal loads at t_{n+1}, full numbering [N, N·m]
+/// \param prescribed  driven nodes' motion at t_{n+1} (nullptr: they stay where they are, at rest)
+StepResult step(const DynamicsModel& model, DynamicsData& data, double dt, const Eigen::VectorXd& f_ext,
+                const PrescribedMotion* prescribed);
+
+}  // namespace flapsim::fem

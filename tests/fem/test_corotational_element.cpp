@@ -1,0 +1,196 @@
+// The EICR elements (fem/corotational_*.hpp) one at a time: a large rigid
+// motion leaves them stress-free, the internal force is the exact gradient of
+// the strain energy, the tangent matches finite differences of the force, and
+// at a small deformation the internal force is the linear element's K u.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "fem/block_rotation.hpp"
+#include "fem/corotational_frame.hpp"
+#include "fem/corotational_shell.hpp"
+#include "fem/nodal_rotation.hpp"
+#include "fem/section_properties.hpp"
+#include "fem_test_helpers.hpp"
+
+namespace flapsim::fem {
+namespace {
+
+const std::array<Eigen::Vector3d, 3> kTri{Eigen::Vector3d(0.01, -0.02, 0.003), Eigen::Vector3d(0.52, 0.05, -0.02),
+                                          Eigen::Vector3d(0.13, 0.41, 0.04)};
+
+FrameProperties tube() {
+  wings::Section sec;
+  sec.outer_diameter = 0.02;
+  sec.wall = 0.003;
+  FrameProperties f;
+  f.youngs_modulus = 2e9;
+  f.shear_modulus = 2e9 / 2.6;
+  f.density = 1000.0;
+  f.section = section_properties(sec);
+  f.up = Eigen::Vector3d(0.1, 0.2, 1.0);
+  return f;
+}
+
+// One element's state: positions and rotations, and its force and tangent.
+template <int N>
+struct Element {
+  std::array<Eigen::Vector3d, N> x;
+  std::array<Eigen::Matrix3d, N> R;
+};
+
+double shell_eval(const CorotationalShell& e, const Element<3>& s, Eigen::Matrix<double, 18, 1>& f, Matrix18d* K,
+                  bool symmetric = true) {
+  return eicr_force<3>(e.local_stiffness, e.reference_local, e.reference_axes, shell_corotated_frame(s.x), s.x, s.R,
+                       f, K, {}, symmetric);
+}
+double frame_eval(const CorotationalFrame& e, const Element<2>& s, Eigen::Matrix<double, 12, 1>& f, Matrix12d* K,
+                  bool symmetric = true) {
+  return eicr_force<2>(e.local_stiffness, e.reference_local, e.reference_axes, frame_corotated_frame(e, s.x, s.R),
+                       s.x, s.R, f, K, {}, symmetric);
+}
+
+template <int N>
+Element<N> perturbed(const Element<N>& s, const Eigen::Matrix<double, 6 * N, 1>& du) {
+  Element<N> t = s;
+  for (int a = 0; a < N; ++a) {
+    t.x[a] += du.template segment<3>(6 * a);
+    t.R[a] = rotation_matrix(du.template segment<3>(6 * a + 3)) * t.R[a];
+  }
+  return t;
+}
+
+// A large rigid motion (rotation of 2.3 rad about a skew axis) plus a
+// deformation of relative size `strain` on top.
+template <int N>
+Element<N> deformed(const std::array<Eigen::Vector3d, N>& X, double strain, unsigned seed) {
+  std::srand(seed);
+  const Eigen::Matrix3d Q = rotation_matrix(2.3 * Eigen::Vector3d(0.3, -0.8, 0.52).normalized());
+  Element<N> s;
+  for (int a = 0; a < N; ++a) {
+    const Eigen::Vector3d dx = strain * Eigen::Vector3d::Random();
+    const Eigen::Vector3d dth = strain * Eigen::Vector3d::Random();
+    s.x[a] = Q * (X[a] + dx) + Eigen::Vector3d(0.4, -1.1, 2.0);
+    s.R[a] = Q * rotation_matrix(dth);
+  }
+  return s;
+}
+
+TEST(CorotationalElement, RigidMotionIsStressFree) {
+  const CorotationalShell sh = make_corotational_shell({0, 1, 2}, kTri, testing::shell(7e10, 0.3, 0.01, 2700));
+  const Element<3> s = deformed<3>(kTri, 0.0, 1);
+  Eigen::Matrix<double, 18, 1> f;
+  const double E = shell_eval(sh, s, f, nullptr);
+  // Scale: the linear element's spurious force K u for the same rigid motion.
+  Eigen::Matrix<double, 18, 1> u;
+  for (int a = 0; a < 3; ++a) {
+    u.segment<3>(6 * a) = s.x[a] - kTri[a];
+    u.segment<3>(6 * a + 3) = rotation_vector(s.R[a]);
+  }
+  const Matrix18d T = block_rotation<18>(sh.reference_axes);
+  const double linear = (T.transpose() * sh.local_stiffness * T * u).cwiseAbs().maxCoeff();
+  std::printf("  shell: |f| %.3e, linear K u %.3e, energy %.3e\n", f.cwiseAbs().maxCoeff(), linear, E);
+  EXPECT_LT(f.cwiseAbs().maxCoeff(), 1e-12 * linear);
+
+  const Eigen::Vector3d a(0.0, 0.0, 0.0), b(0.3, 0.4, 0.1);
+  const CorotationalFrame fr = make_corotational_frame({0, 1}, a, b, tube());
+  const Element<2> sf = deformed<2>({a, b}, 0.0, 2);
+  Eigen::Matrix<double, 12, 1> ff;
+  frame_eval(fr, sf, ff, nullptr);
+  Eigen::Matrix<double, 12, 1> uf;
+  uf << sf.x[0] - a, rotation_vector(sf.R[0]), sf.x[1] - b, rotation_vector(sf.R[1]);
+  const Matrix12d Tf = block_rotation<12>(fr.reference_axes);
+  const double linf = (Tf.transpose() * fr.local_stiffness * Tf * uf).cwiseAbs().maxCoeff();
+  std::printf("  frame: |f| %.3e, linear K u %.3e\n", ff.cwiseAbs().maxCoeff(), linf);
+  EXPECT_LT(ff.cwiseAbs().maxCoeff(), 1e-12 * linf);
+}
+
+// f·δ = dE/dε along random (translation, spin) directions: the force is the
+// gradient of ½ dᵀ k d (central differences, O(ε²) ≈ 1e-10 relative).
+template <int N, class Eval>
+double gradient_error(const Element<N>& s, Eval eval) {
+  Eigen::Matrix<double, 6 * N, 1> f, g;
+  eval(s, f, nullptr);
+  double worst = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    Eigen::Matrix<double, 6 * N, 1> dir = Eigen::Matrix<double, 6 * N, 1>::Random();
+    const double eps = 1e-6;
+    const double Ep = eval(perturbed<N>(s, eps * dir), g, nullptr);
+    const double Em = eval(perturbed<N>(s, -eps * dir), g, nullptr);
+    const double fd = (Ep - Em) / (2.0 * eps);
+    worst = std::max(worst, std::abs(fd - f.dot(dir)) / (f.norm() * dir.norm()));
+  }
+  return worst;
+}
+
+// ‖K δ − FD(f)‖ / ‖FD(f)‖, worst over random directions.
+template <int N, class Eval>
+double tangent_error(const Element<N>& s, Eval eval) {
+  Eigen::Matrix<double, 6 * N, 1> f, fp, fm;
+  Eigen::Matrix<double, 6 * N, 6 * N> K;
+  eval(s, f, &K);
+  double worst = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    Eigen::Matrix<double, 6 * N, 1> dir = Eigen::Matrix<double, 6 * N, 1>::Random();
+    const double eps = 1e-7;
+    eval(perturbed<N>(s, eps * dir), fp, nullptr);
+    eval(perturbed<N>(s, -eps * dir), fm, nullptr);
+    const Eigen::Matrix<double, 6 * N, 1> fd = (fp - fm) / (2.0 * eps);
+    worst = std::max(worst, (K * dir - fd).norm() / fd.norm());
+  }
+  return worst;
+}
+
+TEST(CorotationalElement, ForceIsEnergyGradientAndTangentMatchesDifferences) {
+  const CorotationalShell sh = make_corotational_shell({0, 1, 2}, kTri, testing::shell(7e10, 0.3, 0.01, 2700));
+  const Eigen::Vector3d a(0.0, 0.0, 0.0), b(0.3, 0.4, 0.1);
+  const CorotationalFrame fr = make_corotational_frame({0, 1}, a, b, tube());
+  auto se = [&](const Element<3>& s, Eigen::Matrix<double, 18, 1>& f, Matrix18d* K) { return shell_eval(sh, s, f, K); };
+  auto fe = [&](const Element<2>& s, Eigen::Matrix<double, 12, 1>& f, Matrix12d* K) { return frame_eval(fr, s, f, K); };
+  auto sc = [&](const Element<3>& s, Eigen::Matrix<double, 18, 1>& f, Matrix18d* K) {
+    return shell_eval(sh, s, f, K, false);
+  };
+  auto fc = [&](const Element<2>& s, Eigen::Matrix<double, 12, 1>& f, Matrix12d* K) {
+    return frame_eval(fr, s, f, K, false);
+  };
+  for (double strain : {1e-3, 3e-2}) {
+    const Element<3> s3 = deformed<3>(kTri, strain, 3);
+    const Element<2> s2 = deformed<2>({a, b}, strain, 4);
+    const double gs = gradient_error<3>(s3, se), gf = gradient_error<2>(s2, fe);
+    const double ts = tangent_error<3>(s3, se), tf = tangent_error<2>(s2, fe);
+    const double cs = tangent_error<3>(s3, sc), cf = tangent_error<2>(s2, fc);
+    std::printf("  deformation %.0e: gradient error shell %.2e frame %.2e; tangent error symmetrised: shell %.2e "
+                "frame %.2e, consistent: shell %.2e frame %.2e\n",
+                strain, gs, gf, ts, tf, cs, cf);
+    EXPECT_LT(gs, 1e-7);
+    EXPECT_LT(gf, 1e-7);
+    // The symmetrised tangent drops the skew part, which is of the order of the
+    // element forces, i.e. of the deformation.
+    EXPECT_LT(ts, 10.0 * strain);
+    EXPECT_LT(tf, 10.0 * strain);
+    // The consistent tangent leaves out only the variation of G times the
+    // element's out-of-balance moment, second order in the deformation.
+    EXPECT_LT(cs, 10.0 * strain * strain);
+    EXPECT_LT(cf, 10.0 * strain * strain);
+  }
+}
+
+TEST(CorotationalElement, SmallDeformationGivesLinearForce) {
+  // No rigid motion, deformation 1e-7: f = K_linear u to O(u²).
+  const ShellProperties p = testing::shell(7e10, 0.3, 0.01, 2700);
+  const CorotationalShell sh = make_corotational_shell({0, 1, 2}, kTri, p);
+  const Matrix18d Klin = shell_element(kTri, p).stiffness;
+  Eigen::Matrix<double, 18, 1> u = 1e-7 * Eigen::Matrix<double, 18, 1>::Random();
+  Element<3> s{kTri, {Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity()}};
+  s = perturbed<3>(s, u);
+  Eigen::Matrix<double, 18, 1> f;
+  shell_eval(sh, s, f, nullptr);
+  const double err = (f - Klin * u).norm() / (Klin * u).norm();
+  std::printf("  |f − K u| / |K u| = %.2e\n", err);
+  EXPECT_LT(err, 1e-5);
+}
+
+}  // namespace
+}  // namespace flapsim::fem
