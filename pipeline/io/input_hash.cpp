@@ -145,6 +145,7 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.tree_tolerance", n.tree_tolerance);
   // Only when not the default, so the cases hashed before the key existed keep their hash.
   if (n.coupling != CouplingMethod::Aitken) out.line("numerics.coupling", static_cast<int>(n.coupling));
+  if (n.steady) out.line("numerics.steady", n.steady);  // only then: other fingerprints unchanged
   out.line("numerics.max_coupling_iterations", n.max_coupling_iterations);
   out.line("numerics.coupling_tolerance", n.coupling_tolerance);
   out.line("numerics.rho_infinity", n.rho_infinity);

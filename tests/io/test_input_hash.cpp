@@ -52,6 +52,19 @@ TEST(InputHash, FollowsTheInputsNotTheirPlace) {
   EXPECT_NE(io::input_hash(c, &thick, "", 1.0), h);
   EXPECT_NE(io::input_hash(c, &w, "", 2.0), h);
   EXPECT_NE(io::input_hash(c, nullptr, "", 1.0), h);
+  // Keys hashed only when set (numerics.steady, kinematics.revolution) still count when set.
+  io::Case steady = c;
+  steady.numerics.steady = true;
+  EXPECT_NE(io::input_hash(steady, &w, "", 1.0), h);
+  io::Case revolving = c;
+  revolving.kinematics.revolution.rate = 1.0;
+  EXPECT_NE(io::input_hash(revolving, &w, "", 1.0), h);
+  revolving.kinematics.revolution.ramp = 0.1;
+  EXPECT_NE(io::input_hash(revolving, &w, "", 1.0), io::input_hash([&] {
+              io::Case r = c;
+              r.kinematics.revolution.rate = 1.0;
+              return r;
+            }(), &w, "", 1.0));
 
   // A chain file enters by its bytes.
   std::ofstream(dir / "a.toml") << "# chain a\n";
