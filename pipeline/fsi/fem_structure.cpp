@@ -1,0 +1,151 @@
+#include "pipeline/fsi/fem_structure.hpp"
+
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace flapsim::fsi {
+
+FemStructureModel::FemStructureModel(fem::StructuralModel structural_model, std::vector<int> clamped_nodes,
+                                     mbd::BaseMotion base, const fem::DynamicsOptions& options,
+                                     const Eigen::Matrix3Xd& lattice_nodes, int chordwise, int spanwise,
+                                     double length)
+    : structural(std::move(structural_model)),
+      corotational(fem::make_corotational_model(structural)),
+      dynamics(fem::make_dynamics_model(corotational, std::move(clamped_nodes), options)),
+      base_motion(std::move(base)),
+      attachment(lattice_nodes.cols() > 0 ? attach_wing_to_fem(structural.mesh, lattice_nodes, chordwise, spanwise)
+                                          : FemAttachment{}),
+      length_scale(length) {}
+
+std::unique_ptr<StructureData> FemStructureModel::make_data() const {
+  return std::make_unique<FemStructureData>(*this);
+}
+
+FemStructureData::FemStructureData(const FemStructureModel& model)
+    : model_(model), loads_(Eigen::VectorXd::Zero(model.corotational.num_dofs())) {}
+
+namespace {
+
+// The motion of the driven (clamp) nodes at time t: the base pose, the wing frame's origin
+// at the pivot (the FEM's nodes are in W).
+fem::PrescribedMotion clamp_motion(const FemStructureModel& m, double t) {
+  const mbd::BasePose p = m.base_motion(t);
+  return fem::rigid_prescribed_motion(m.dynamics, Eigen::Vector3d::Zero(), p.position, p.velocity, p.acceleration,
+                                      p.rotation, p.angular_velocity, p.angular_acceleration);
+}
+
+}  // namespace
+
+void FemStructureData::initialize(double t0) {
+  // At rest relative to the base: every node moves rigidly with it at t0.
+  const mbd::BasePose p = model_.base_motion(t0);
+  const fem::CorotationalModel& c = model_.corotational;
+  fem::CorotationalState state = fem::reference_state(c);
+  Eigen::VectorXd v0 = Eigen::VectorXd::Zero(c.num_dofs());
+  for (int n = 0; n < c.num_nodes(); ++n) {
+    const Eigen::Vector3d r = p.rotation * c.reference_positions[static_cast<std::size_t>(n)];
+    state.position[static_cast<std::size_t>(n)] = p.position + r;
+    state.rotation[static_cast<std::size_t>(n)] = p.rotation;
+    v0.segment<3>(fem::dof_index(n, fem::UX)) = p.velocity + p.angular_velocity.cross(r);
+    v0.segment<3>(fem::dof_index(n, fem::RX)) = p.angular_velocity;
+  }
+  set_external_loads(t0);
+  try {
+    dynamics_ = std::make_unique<fem::DynamicsData>(model_.dynamics, state, v0, loads_);
+  } catch (const std::exception& e) {
+    throw StructureFailure(std::string("FEM: ") + e.what());
+  }
+  dynamics_->time = t0;
+  accepted_ = Saved{dynamics_->state, dynamics_->velocity, dynamics_->acceleration, dynamics_->pseudo_acceleration,
+                    dynamics_->time};
+  read_trial();
+  iterate_x_ = trial_x_;
+  iterate_v_ = trial_v_;
+  pose_is_trial_ = true;
+}
+
+void FemStructureData::set_external_loads(double) { loads_.setZero(); }
+
+void FemStructureData::add_panel_loads(const uvlm::PanelLoads& panels) {
+  add_panel_loads_to_fem(model_.attachment, model_.structural.mesh, pose_is_trial_ ? trial_x_ : iterate_x_, panels,
+                         loads_);
+}
+
+void FemStructureData::prescribe(double) {
+  throw std::logic_error("FemStructureData::prescribe: the FEM always has degrees of freedom");
+}
+
+void FemStructureData::restore_accepted() {
+  dynamics_->state = accepted_.state;
+  dynamics_->velocity = accepted_.velocity;
+  dynamics_->acceleration = accepted_.acceleration;
+  dynamics_->pseudo_acceleration = accepted_.pseudo_acceleration;
+  dynamics_->time = accepted_.time;
+}
+
+void FemStructureData::read_trial() {
+  const int nn = model_.corotational.num_nodes();
+  trial_x_.resize(3, nn);
+  trial_v_.resize(3, nn);
+  for (int n = 0; n < nn; ++n) {
+    trial_x_.col(n) = dynamics_->state.position[static_cast<std::size_t>(n)];
+    trial_v_.col(n) = dynamics_->velocity.segment<3>(fem::dof_index(n, fem::UX));
+  }
+}
+
+void FemStructureData::solve(double dt) {
+  restore_accepted();
+  const fem::PrescribedMotion motion = clamp_motion(model_, accepted_.time + dt);
+  const fem::StepResult r = fem::step(model_.dynamics, *dynamics_, dt, loads_, &motion);
+  if (!r.converged) throw StructureFailure("FEM: " + r.failure);
+  read_trial();
+  pose_is_trial_ = true;
+}
+
+void FemStructureData::start_iterate() {
+  iterate_x_ = trial_x_;
+  iterate_v_ = trial_v_;
+}
+
+void FemStructureData::surface(Eigen::Matrix3Xd& positions, Eigen::Matrix3Xd& velocities) const {
+  fem_surface_nodes(model_.attachment, model_.structural.mesh, pose_is_trial_ ? trial_x_ : iterate_x_,
+                    pose_is_trial_ ? trial_v_ : iterate_v_, positions, velocities);
+}
+
+double FemStructureData::change(double frequency) const {
+  const double rate_scale = 2.0 * std::numbers::pi * frequency;  // [rad/s] per flapping radian
+  const double dx = (trial_x_ - iterate_x_).lpNorm<Eigen::Infinity>();
+  const double dv = (trial_v_ - iterate_v_).lpNorm<Eigen::Infinity>() / rate_scale;
+  return std::max(dx, dv) / model_.length_scale;
+}
+
+void FemStructureData::residual(Eigen::VectorXd& r) const {
+  r = Eigen::Map<const Eigen::VectorXd>(trial_x_.data(), trial_x_.size()) -
+      Eigen::Map<const Eigen::VectorXd>(iterate_x_.data(), iterate_x_.size());
+}
+
+void FemStructureData::trial_vector(Eigen::VectorXd& x) const {
+  const Eigen::Index n = trial_x_.size();
+  x.resize(2 * n);
+  x.head(n) = Eigen::Map<const Eigen::VectorXd>(trial_x_.data(), n);
+  x.tail(n) = Eigen::Map<const Eigen::VectorXd>(trial_v_.data(), n);
+}
+
+void FemStructureData::set_iterate(const Eigen::VectorXd& x) {
+  const Eigen::Index n = trial_x_.size();
+  iterate_x_ = Eigen::Map<const Eigen::Matrix3Xd>(x.data(), 3, n / 3);
+  iterate_v_ = Eigen::Map<const Eigen::Matrix3Xd>(x.data() + n, 3, n / 3);
+}
+
+void FemStructureData::relax(double omega) {
+  iterate_x_ += omega * (trial_x_ - iterate_x_);
+  iterate_v_ += omega * (trial_v_ - iterate_v_);
+}
+
+void FemStructureData::accept() {
+  accepted_ = Saved{dynamics_->state, dynamics_->velocity, dynamics_->acceleration, dynamics_->pseudo_acceleration,
+                    dynamics_->time};
+}
+
+}  // namespace flapsim::fsi

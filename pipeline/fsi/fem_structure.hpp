@@ -1,0 +1,103 @@
+#pragma once
+/// \file fem_structure.hpp
+/// \brief The wing's own FEM as the structure of a coupled run (structure.hpp): the
+/// co-rotational shells and veins of fem/ (nonlinear_dynamics.hpp: generalized-α, Newton,
+/// large rotations), moving in the ground frame with its clamp nodes driven by the base
+/// motion, and the lattice riding on its shell (fem_attachment.hpp). docs/fsi.md, "The FEM as
+/// the structure".
+///
+/// What the coupling relaxes is the interface: the translations and velocities of the FEM's
+/// nodes, (x, v), which alone place the lattice; the interface residual is x̂ − x̃ (Aitken's
+/// factor on the displacements, the same factor on the velocities). Each solve restarts the
+/// step from the accepted state, so the structure's answer ŝ to given loads does not depend
+/// on the iterate; the accepted state is ŝ, the FEM's own converged step.
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <vector>
+
+#include "fem/nonlinear_assembly.hpp"
+#include "fem/nonlinear_dynamics.hpp"
+#include "fem/structural_model.hpp"
+#include "mbd/base_motion.hpp"
+#include "pipeline/fsi/fem_attachment.hpp"
+#include "pipeline/fsi/structure.hpp"
+
+namespace flapsim::fsi {
+
+/// The FEM, which of its nodes the base drives, and the lattice on its shell. Built in
+/// place and never copied (the dynamics model points into the co-rotational model).
+class FemStructureModel : public StructureModel {
+ public:
+  /// \param structural     mesh (in the wing frame W, origin at the pivot) and materials
+  /// \param clamped_nodes  the nodes the base drives (all six DOFs)
+  /// \param lattice_nodes  lattice nodes in W, (nc+1)(ns+1) columns [m] (empty: vacuum)
+  /// \param length_scale   the wing's span [m]: the scale of the coupling's change measure
+  FemStructureModel(fem::StructuralModel structural, std::vector<int> clamped_nodes, mbd::BaseMotion base,
+                    const fem::DynamicsOptions& options, const Eigen::Matrix3Xd& lattice_nodes, int chordwise,
+                    int spanwise, double length_scale);
+  FemStructureModel(const FemStructureModel&) = delete;
+  FemStructureModel& operator=(const FemStructureModel&) = delete;
+
+  int num_dofs() const override { return corotational.num_dofs(); }
+  int surface_nodes() const override { return static_cast<int>(attachment.nodes.size()); }
+  const mbd::BaseMotion& base() const override { return base_motion; }
+  std::unique_ptr<StructureData> make_data() const override;
+
+  const fem::StructuralModel structural;
+  const fem::CorotationalModel corotational;
+  const fem::DynamicsModel dynamics;
+  const mbd::BaseMotion base_motion;
+  const FemAttachment attachment;
+  const double length_scale;  ///< [m]
+};
+
+/// The FEM's states during a run.
+class FemStructureData : public StructureData {
+ public:
+  explicit FemStructureData(const FemStructureModel& model);
+
+  void initialize(double t0) override;
+  double time() const override { return accepted_.time; }
+  void set_external_loads(double t) override;
+  void add_panel_loads(const uvlm::PanelLoads& panels) override;
+  void prescribe(double t) override;
+  void solve(double dt) override;
+  void start_iterate() override;
+  void pose_iterate() override { pose_is_trial_ = false; }
+  void surface(Eigen::Matrix3Xd& positions, Eigen::Matrix3Xd& velocities) const override;
+  double change(double frequency) const override;
+  void residual(Eigen::VectorXd& r) const override;
+  void trial_vector(Eigen::VectorXd& x) const override;
+  void set_iterate(const Eigen::VectorXd& x) override;
+  void relax(double omega) override;
+  void accept() override;
+  int interface_size() const override { return 3 * model_.corotational.num_nodes(); }
+  long split_steps() const override { return 0; }
+  int max_step_pieces() const override { return 1; }
+
+  /// The FEM's current (trial, after solve; else accepted) state.
+  const fem::DynamicsData& dynamics() const { return *dynamics_; }
+  /// Node translations [m] and velocities [m/s] of the trial ŝ.
+  const Eigen::Matrix3Xd& trial_positions() const { return trial_x_; }
+
+ private:
+  struct Saved {  // the accepted state, to restart each solve from
+    fem::CorotationalState state;
+    Eigen::VectorXd velocity, acceleration, pseudo_acceleration;
+    double time = 0.0;
+  };
+  void restore_accepted();
+  void read_trial();
+
+  const FemStructureModel& model_;  ///< not owned
+  std::unique_ptr<fem::DynamicsData> dynamics_;
+  Saved accepted_;
+  Eigen::VectorXd loads_;                  ///< nodal loads of the next solve [N, N m]
+  Eigen::Matrix3Xd trial_x_, trial_v_;     ///< ŝ's node translations and velocities
+  Eigen::Matrix3Xd iterate_x_, iterate_v_; ///< s̃'s
+  bool pose_is_trial_ = true;              ///< the surface follows ŝ (else s̃)
+};
+
+}  // namespace flapsim::fsi

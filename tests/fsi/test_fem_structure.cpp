@@ -1,0 +1,115 @@
+// The wing's FEM behind the structure interface (pipeline/fsi/fem_structure.hpp): the coupled
+// step drives it as it drives the chain. A stiff aluminium plate flapped by eq. 8 gives the
+// lift of the rigid plate (the same lattice on a chain without dofs), and a plate in vacuum
+// moves with its clamp: the coupling and the FEM step share one interface.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "fem/structured_mesh.hpp"
+#include "fsi/plate_wing_fixtures.hpp"
+#include "mbd/chain_model.hpp"
+#include "pipeline/fsi/chain_structure.hpp"
+#include "pipeline/fsi/coupled_step.hpp"
+#include "pipeline/fsi/fem_structure.hpp"
+
+namespace {
+
+using namespace flapsim;
+
+// 160 steps per wingbeat: the FEM's Newton solve stalls at 40 (a base rotation of 0.14 rad a
+// step; docs/fem.md, "Geometrically nonlinear FEM").
+constexpr int kChordwise = 3, kSpanwise = 6, kSteps = 160;
+
+// ρ∞ = 0.5: the plate starts at rest relative to its clamp, which the base accelerates: the
+// start rings at the plate's 1 kHz, and numerical dissipation lets it die out.
+const fem::DynamicsOptions kOptions = [] {
+  fem::DynamicsOptions o;
+  o.rho_infinity = 0.5;
+  return o;
+}();
+
+// The plate of plate_grid as shells: 10 mm × 40 mm, root edge (y = 0) clamped.
+std::shared_ptr<fsi::FemStructureModel> fem_plate(double thickness, double youngs_modulus, bool air) {
+  fem::StructuralModel sm;
+  sm.mesh = fem::rectangle_mesh(0.0025 - 0.010, 0.0, 0.010, 0.040, 3, 8);
+  fem::ShellProperties shell;
+  shell.thickness = thickness;
+  shell.youngs_modulus = youngs_modulus;
+  shell.poisson_ratio = 0.3;
+  shell.density = 2700.0;
+  sm.shell.assign(sm.mesh.triangles.size(), shell);
+  std::vector<int> root;
+  for (int n = 0; n < sm.mesh.num_nodes(); ++n)
+    if (sm.mesh.nodes[static_cast<std::size_t>(n)].y() < 1e-12) root.push_back(n);
+  const auto grid = test::plate_grid(kChordwise, kSpanwise);
+  return std::make_shared<fsi::FemStructureModel>(
+      std::move(sm), root, mbd::make_base_motion(test::eq8_kinematics(-0.1)), kOptions,
+      air ? grid.nodes : Eigen::Matrix3Xd(3, 0), kChordwise, kSpanwise, 0.040);
+}
+
+fsi::FsiModel fsi_model(std::shared_ptr<const fsi::StructureModel> structure) {
+  fsi::FsiModel m;
+  m.structure = std::move(structure);
+  m.frequency = 26.1;
+  m.lattice.chordwise = kChordwise;
+  m.lattice.spanwise = kSpanwise;
+  m.lattice.core.radius = 0.2 * 0.010;
+  m.lattice.wake_capacity = kSteps;
+  m.coupling.tolerance = 1e-8;
+  return m;
+}
+
+std::vector<double> lift_history(const fsi::FsiModel& m, double* iterations = nullptr) {
+  fsi::FsiData d(m);
+  fsi::initialize(m, d, 0.0);
+  std::vector<double> lift;
+  for (int n = 0; n < kSteps; ++n) {
+    fsi::coupled_step(m, d, 1.0 / (26.1 * kSteps));
+    lift.push_back(d.lattice->loads.total_force.z());
+    fsi::shed_wake(m, d);
+  }
+  if (iterations) *iterations = static_cast<double>(d.total_iterations) / kSteps;
+  return lift;
+}
+
+TEST(FsiFemStructure, AStiffFemPlateGivesTheRigidPlatesLift) {
+  // Reference: the same lattice carried rigidly (a one-body chain welded to the base), as
+  // fsi.FsiRigidWing.* checks against the lattice driven directly. A 2 mm aluminium plate's
+  // first bending is about 1 kHz, 40 × the wingbeat: it deflects some 20 µm, so the mean lifts
+  // agree within 0.5 % (the bound of the stiff chain, fsi.FsiFlexibleWing.*).
+  auto rigid = std::make_shared<fsi::ChainStructureModel>();
+  mbd::ChainBody b;
+  b.length = 0.040;
+  b.mass = 1e-4;
+  b.center_of_mass = Eigen::Vector3d(-0.0025, 0.02, 0.0);
+  b.inertia = Eigen::Vector3d(1.3e-8, 1e-9, 1.4e-8).asDiagonal();
+  b.outboard_joint = Eigen::Vector3d(0.0, 0.040, 0.0);
+  rigid->chain.bodies = {b};
+  rigid->chain.joints = {mbd::ChainJoint{}};
+  rigid->base_motion = mbd::make_base_motion(test::eq8_kinematics(-0.1));
+  const auto grid = test::plate_grid(kChordwise, kSpanwise);
+  rigid->attachment = fsi::attach_wing(rigid->chain, grid.nodes, kChordwise, kSpanwise);
+  const std::vector<double> reference = lift_history(fsi_model(rigid));
+  double iterations = 0.0;
+  const std::vector<double> fem = lift_history(fsi_model(fem_plate(2e-3, 70e9, true)), &iterations);
+  double peak = 0.0;
+  for (double l : reference) peak = std::max(peak, std::abs(l));
+  ASSERT_GT(peak, 0.0);
+  double mean_reference = 0.0, mean_fem = 0.0, worst = 0.0;
+  for (int n = 0; n < kSteps; ++n) {
+    mean_reference += reference[n] / kSteps;
+    mean_fem += fem[n] / kSteps;
+    worst = std::max(worst, std::abs(fem[n] - reference[n]));
+  }
+  // Mean lift within 0.5 % (measured +0.33 %); step by step within 10 % of the peak (measured
+  // 6.3 %: the plate's 1 kHz ringing, under-resolved at 4 kHz steps, seen by the lattice's
+  // ∂Γ/∂t; 3.2 % in the second half of the wingbeat).
+  EXPECT_NEAR(mean_fem, mean_reference, 5e-3 * std::abs(mean_reference));
+  EXPECT_LT(worst, 0.10 * peak);
+  EXPECT_GE(iterations, 1.0);
+  EXPECT_LT(iterations, 20.0);
+}
+
+}  // namespace
