@@ -37,6 +37,25 @@ fs::path temporary_path(const fs::path& path) {
   return tmp;
 }
 
+void remove_stale_temporaries(const fs::path& dir) {
+  const std::string own = ".tmp." + std::to_string(static_cast<long>(::getpid()));
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
+    if (it.depth() > 1) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    const std::string name = it->path().filename().string();
+    const auto at = name.rfind(".tmp.");
+    if (at == std::string::npos || !it->is_regular_file(ec)) continue;
+    if (name.compare(at, std::string::npos, own) == 0) continue;  // this process's own, in use
+    std::error_code rm;
+    fs::remove(it->path(), rm);
+    if (rm) throw OutputError(it->path(), "cannot remove a temporary file a killed run left: " + rm.message());
+  }
+}
+
 void sync_file(const fs::path& file, const fs::path& reported) {
   const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) throw OutputError(reported, std::string("cannot open the written file: ") + std::strerror(errno));

@@ -43,6 +43,12 @@ void prepare_output_directory(const std::filesystem::path& dir);
 /// \brief The temporary name used for \p path by this process: "<path>.tmp.<pid>".
 std::filesystem::path temporary_path(const std::filesystem::path& path);
 
+/// \brief Removes the temporaries ("<name>.tmp.<pid>") of other processes in \p dir and its
+/// sub-folders one level down ("vtk/"): what a killed run left. Call it only while holding the
+/// folder's lock (folder_lock.hpp): no other flapsim command is writing there then.
+/// \throws OutputError naming a temporary that cannot be removed
+void remove_stale_temporaries(const std::filesystem::path& dir);
+
 /// \brief Renames \p from onto \p to (replacing it); removes \p from on failure.
 /// \param sync_directory  flush the folder's entries to disk after the rename
 /// \throws OutputError

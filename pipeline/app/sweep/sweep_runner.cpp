@@ -192,6 +192,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       // not run (status error, the message says so; the same sweep again runs it).
       io::ensure_directory(ro.output_dir);
       const io::FolderLock case_lock(ro.output_dir, "sweep");
+      io::remove_stale_temporaries(ro.output_dir);  // of a killed run of this case
       ro.chain_file = options.chain_file;
       ro.spring_scale = r.spring_scale;
       ro.wing_overrides = r.wing_overrides;
