@@ -441,6 +441,12 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Polygon& outline,
   // Inside the outline, or on its edge within 0.1 % of the span; segments are sampled
   // so a vein cannot cut across a notch between two inside points.
   const double tol = 1e-3 * span;
+  // A point outside the outline by no more than the tolerance is moved onto the outline
+  // (its nearest point): left outside, gmsh does not embed it in the membrane and the vein
+  // floats unsupported (a spar 0.03 mm outside a 40 mm wing's edge made the FEM singular).
+  for (auto& q : vein.points)
+    if (!contains_point(outline, q, 0.0) && distance_to_boundary(outline, q) <= tol)
+      q = nearest_boundary_point(outline, q);
   for (std::size_t i = 0; i < vein.points.size(); ++i) {
     const int nsamp = i == 0 ? 1 : 8;
     for (int k = 0; k < nsamp; ++k) {
@@ -456,6 +462,8 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Polygon& outline,
     }
   }
 
+  vein.line = v.line_of(pts_key);
+  vein.key = v.key_path(pts_key);
   const std::string shape =
       v.get_choice("shape", {"hollow_circle", "solid_circle", "rectangle"}, "hollow_circle");
   if (shape != "solid_circle" && v.has("diameter"))

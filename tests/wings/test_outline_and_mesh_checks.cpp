@@ -139,3 +139,28 @@ TEST(MeshChecks, ATinyElementSizeIsRefusedBeforeMeshing) {
 }
 
 }  // namespace
+
+TEST(VeinOnOutline, APointOutsideWithinTheToleranceIsMovedOntoTheOutline) {
+  // The wing: a spar 0.03 mm outside a 40 mm wing's edge x = 5 mm (tolerance 0.1 %
+  // of the span = 0.04 mm) passed check, was left outside the membrane by gmsh and made the
+  // FEM singular. Each point now lies on the edge: x = 5 mm exactly (the nearest point of
+  // the edge x = 5, y in [0, 40], to (5.03, y) is (5, y)).
+  std::string text = wing_text(kRectangle);
+  const std::string spar = "points = [[1.0, 0.0], [1.0, 30.0]]";
+  text.replace(text.find(spar), spar.size(), "points = [[5.03, 2.0], [5.03, 30.0], [4.0, 35.0]]");
+  const w::Wing wing = w::read_wing(w::parse_toml_string(text, "v.toml"));
+  ASSERT_EQ(wing.veins[0].points.size(), 3u);
+  EXPECT_EQ(wing.veins[0].points[0].x(), 5e-3);
+  EXPECT_EQ(wing.veins[0].points[1].x(), 5e-3);
+  EXPECT_NEAR(wing.veins[0].points[0].y(), 2e-3, 1e-15);
+  EXPECT_NEAR(wing.veins[0].points[1].y(), 30e-3, 1e-15);
+  EXPECT_EQ(wing.veins[0].points[2], Eigen::Vector2d(4e-3, 35e-3));  // inside: unchanged
+  EXPECT_EQ(wing.veins[0].key, "veins[0].points");
+  EXPECT_EQ(wing.veins[0].line, 15);
+  // Beyond the tolerance (0.05 mm out) it is still refused, at the vein's key.
+  text = wing_text(kRectangle);
+  text.replace(text.find(spar), spar.size(), "points = [[5.05, 2.0], [5.05, 30.0]]");
+  auto e = expect_input_error([&] { w::read_wing(w::parse_toml_string(text, "v.toml")); });
+  EXPECT_EQ(e.key(), "veins[0].points") << e.what();
+  EXPECT_NE(e.message().find("leaves the outline"), std::string::npos) << e.what();
+}
