@@ -258,7 +258,8 @@ Planform read_planform(const TomlTable& p) {
   if (outline_key != "shape")
     for (const char* k : {"chord", "root_y", "leading_edge_x", "tip_radius"})
       if (p.has(k)) p.fail(k, "only applies to 'shape'");
-  const int samples = p.get_int("outline_points", 96, Bounds::closed(16, 10000));
+  const int samples =
+      p.get_int("outline_points", 96, Bounds::closed(16, static_cast<double>(kMaxOutlinePoints)));
   if (p.has("outline_points") && outline_key != "spline" && outline_key != "shape")
     p.fail("outline_points", "only applies to 'spline' and 'shape'");
 
@@ -277,6 +278,11 @@ Planform read_planform(const TomlTable& p) {
     out.outline = read_shape_outline(p, samples);
   } else {
     const auto rows = p.get_number_rows(outline_key, 2);
+    if (rows.size() > kMaxOutlinePoints)
+      p.fail_at(p.line_of_element(outline_key, kMaxOutlinePoints), outline_key,
+                "more than " + std::to_string(kMaxOutlinePoints) +
+                    " points (meshing costs about n^2: simplify the outline to the mesh size, "
+                    "docs/wing_file.md)");
     for (const auto& r : rows) out.outline.emplace_back(r[0] * p.length_scale(), r[1] * p.length_scale());
   }
   // A closing point repeating the first (as drawing programs write it) is accepted.
@@ -294,6 +300,9 @@ Planform read_planform(const TomlTable& p) {
                   "control points " + std::to_string(i + 1) + " and " +
                       std::to_string((i + 1) % out.outline.size() + 1) + " coincide");
     out.outline = closed_spline(out.outline, samples);
+    if (out.outline.size() > kMaxOutlinePoints)
+      p.fail("spline", "the spline is sampled with " + std::to_string(out.outline.size()) + " points, more than " +
+                           std::to_string(kMaxOutlinePoints) + ": lower 'outline_points' or give fewer control points");
   }
 
   // 1. Scale uniformly so the largest y equals the span (pivot to tip).

@@ -164,3 +164,51 @@ TEST(VeinOnOutline, APointOutsideWithinTheToleranceIsMovedOntoTheOutline) {
   EXPECT_EQ(e.key(), "veins[0].points") << e.what();
   EXPECT_NE(e.message().find("leaves the outline"), std::string::npos) << e.what();
 }
+
+// An ellipse of n points (x semi-axis 0.15, y from 0 to 1: units of the span), as a CSV body.
+std::string ellipse_csv(std::size_t n) {
+  std::string s = "x,y\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    s += std::to_string(0.15 * std::cos(t)) + "," + std::to_string(0.5 + 0.5 * std::sin(t)) + "\n";
+  }
+  return s;
+}
+
+TEST(OutlineLimits, AnOutlineOfMoreThanTheMostPointsIsRefusedAtThePointBeyond) {
+  // A 20,000-point CSV outline took 36 CPU s of `check` (gmsh building one edge per point,
+  // about n^2); the limit (5000 points) is refused while reading, at the first point beyond.
+  flapsim::test::ScratchDir dir("outline_limits");
+  std::ofstream(dir / "long.csv") << ellipse_csv(w::kMaxOutlinePoints + 1);
+  std::ofstream(dir / "w.toml") << wing_text("outline_file = \"long.csv\"\nspan = 40.0\n");
+  auto e = expect_input_error([&] { w::load_wing_file((dir / "w.toml").string()); });
+  EXPECT_EQ(e.file(), (dir / "long.csv").lexically_normal().string()) << e.what();
+  EXPECT_EQ(e.line(), static_cast<int>(w::kMaxOutlinePoints) + 2) << e.what();  // header on line 1
+  EXPECT_EQ(e.key(), "planform.outline_file");
+  EXPECT_NE(e.message().find("more than 5000 outline points"), std::string::npos) << e.what();
+  // Exactly the limit is read.
+  std::ofstream(dir / "max.csv") << ellipse_csv(w::kMaxOutlinePoints);
+  EXPECT_EQ(w::read_outline_csv((dir / "max.csv").string(), "k").size(), w::kMaxOutlinePoints);
+
+  // The same outline inline: refused at the line of point 5001 (one point a line).
+  std::string rows = "outline = [\n";
+  for (std::size_t i = 0; i <= w::kMaxOutlinePoints; ++i) {
+    const double t = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(w::kMaxOutlinePoints + 1);
+    rows += '[';  // appended piece by piece: GCC 12 warns (-Wrestrict) on "[" + string
+    rows += std::to_string(6.0 * std::cos(t));
+    rows += ", ";
+    rows += std::to_string(20.0 + 20.0 * std::sin(t));
+    rows += "],\n";
+  }
+  rows += "]\n";
+  e = expect_input_error([&] { w::read_wing(w::parse_toml_string(wing_text(rows), "i.toml")); });
+  EXPECT_EQ(e.key(), "planform.outline") << e.what();
+  EXPECT_EQ(e.line(), 5 + static_cast<int>(w::kMaxOutlinePoints)) << e.what();  // point 1 on line 5
+
+  // A shape or spline sampled with more points: outline_points is bounded by the same limit.
+  e = expect_input_error([&] {
+    w::read_wing(w::parse_toml_string(
+        wing_text("shape = \"half_ellipse\"\nspan = 40.0\nchord = 12.0\noutline_points = 5001\n"), "s.toml"));
+  });
+  EXPECT_EQ(e.key(), "planform.outline_points") << e.what();
+}
