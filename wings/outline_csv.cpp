@@ -67,7 +67,9 @@ OutlineCsv read_outline_csv_lines(const std::string& path, const std::string& ke
                            t.substr(0, 80) + (t.size() > 80 ? "..." : "") + "\"");
     if (out.points.size() >= kMaxOutlinePoints)
       throw InputError(path, line_no, key,
-                       "more than " + std::to_string(kMaxOutlinePoints) + " outline points");
+                       "more than " + std::to_string(kMaxOutlinePoints) +
+                           " outline points (meshing costs about n^2: simplify the outline to "
+                           "the mesh size, docs/wing_file.md)");
     out.points.emplace_back(x, y);
     out.lines.push_back(line_no);
   }

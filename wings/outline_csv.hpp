@@ -18,7 +18,13 @@
 namespace flapsim::wings {
 
 inline constexpr std::size_t kMaxOutlineFileBytes = 4u << 20;  ///< 4 MiB
-inline constexpr std::size_t kMaxOutlinePoints = 100000;
+/// The most points of an outline, from any source (CSV, inline `outline`, `spline` control
+/// points, `outline_points`). gmsh/OpenCASCADE builds one edge per point and its cost
+/// grows about as n² (20,000 points: 36 CPU s of `check`, 40,000: 139 s; 5,000: 1.9 s on
+/// a 2-core AMD EPYC machine shared with other builds, docs/wing_file.md); a longer outline
+/// is refused before any of that work, and the limit is far above what a mesh resolves
+/// (the default element size R/50 puts about 150 elements along a hawkmoth's edge).
+inline constexpr std::size_t kMaxOutlinePoints = 5000;
 
 /// An outline with the CSV line of each point (for messages about a point).
 struct OutlineCsv {

@@ -111,6 +111,23 @@ double distance_to_boundary(const Polygon& poly, const Eigen::Vector2d& p) {
   return best;
 }
 
+Eigen::Vector2d nearest_boundary_point(const Polygon& poly, const Eigen::Vector2d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector2d nearest = p;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = poly[i], d = poly[(i + 1) % n] - a;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    const Eigen::Vector2d q = a + t * d;
+    if ((p - q).norm() < best) {
+      best = (p - q).norm();
+      nearest = q;
+    }
+  }
+  return nearest;
+}
+
 bool contains_point(const Polygon& poly, const Eigen::Vector2d& p, double tolerance) {
   if (distance_to_boundary(poly, p) <= tolerance) return true;
   // Even-odd ray cast toward +x; points on the boundary were handled above.

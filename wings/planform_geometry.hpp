@@ -41,6 +41,9 @@ std::optional<std::pair<int, int>> find_self_intersection(const Polygon& polygon
 /// Distance from p to the polygon boundary [m].
 double distance_to_boundary(const Polygon& polygon, const Eigen::Vector2d& p);
 
+/// The point of the polygon boundary nearest to p [m].
+Eigen::Vector2d nearest_boundary_point(const Polygon& polygon, const Eigen::Vector2d& p);
+
 /// True if p is inside the polygon or within `tolerance` [m] of its boundary.
 bool contains_point(const Polygon& polygon, const Eigen::Vector2d& p, double tolerance);
 

@@ -39,6 +39,9 @@ struct Vein {
   Section root_section;
   Section tip_section;
   Material material;
+  /// Where the vein's points are given, for messages about it after meshing.
+  int line = 0;
+  std::string key;  ///< e.g. "veins[2].points"
 };
 
 /// The membrane: a thin shell over the whole planform.

@@ -235,6 +235,11 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
   s.expect_only({mean_k, cos_k, sin_k});
   auto cos_c = s.find_doubles(cos_k);
   auto sin_c = s.find_doubles(sin_k);
+  for (const auto* k : {&cos_k, &sin_k})
+    if ((k == &cos_k ? cos_c : sin_c).size() > kMaxSignalHarmonics)
+      s.fail_at(s.line_of_element(*k, kMaxSignalHarmonics), *k,
+                "more than " + std::to_string(kMaxSignalHarmonics) +
+                    " harmonics (a time step resolves harmonic n only with more than 2n steps per cycle)");
   for (double& v : cos_c) v *= scale;
   for (double& v : sin_c) v *= scale;
   return mbd::PeriodicSignal::harmonic(s.get_double(mean_k, 0.0, Bounds::any()) * scale,

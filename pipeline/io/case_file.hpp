@@ -32,6 +32,11 @@ Case load_case_file(const std::string& path,
 /// True if the top-level table looks like a case file (it has a [kinematics] table).
 bool is_case_document(const wings::TomlTable& root);
 
+/// The most harmonics of a signal's series (`cos…`, `sin…`): every time step evaluates
+/// each one, and a million made a run's setup hang; 1000 is far beyond what a time step
+/// of steps_per_cycle resolves (harmonic n needs more than 2n steps per cycle).
+inline constexpr std::size_t kMaxSignalHarmonics = 1000;
+
 /// A periodic signal from `table[key]`: a number (constant), a harmonic table
 /// { mean<suffix> = m, cos<suffix> = [a1, a2, ...], sin<suffix> = [b1, ...] } or a
 /// tabulated one { phase = [s0, s1, ...], <values_key> = [v0, v1, ...] } (periodic cubic
@@ -40,6 +45,7 @@ bool is_case_document(const wings::TomlTable& root);
 /// \param suffix     key suffix of the harmonic coefficients, e.g. "_deg" or ""
 /// \param values_key key of the tabulated values, e.g. "deg" or "value"
 /// \param fallback   returned when the key is absent
+/// At most kMaxSignalHarmonics cosine and as many sine coefficients.
 /// \throws flapsim::InputError
 mbd::PeriodicSignal read_periodic_signal(const wings::TomlTable& table, std::string_view key,
                                          std::string_view suffix, std::string_view values_key,

@@ -13,12 +13,12 @@ namespace flapsim::io {
 // else two runs that differ in it would share a hash (and a sweep re-run would keep a
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
-// (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run; they change no result.)
+// (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run; they change no result.)
 static_assert(sizeof(Case) == 1400, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344, "wings::Wing changed: add the new field to canonical_inputs()");
-static_assert(sizeof(wings::Vein) == 160, "wings::Vein changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::Vein) == 200, "wings::Vein changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Section) == 40,
               "wings::Section changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Membrane) == 40,

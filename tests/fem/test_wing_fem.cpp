@@ -12,6 +12,7 @@
 #include "fem/load_cases.hpp"
 #include "fem/static_solver.hpp"
 #include "fem/wing_fem.hpp"
+#include "wings/input_error.hpp"
 #include "wings/wing_file.hpp"
 
 namespace flapsim::fem {
@@ -120,6 +121,37 @@ TEST(WingFem, ElementMassesAddUpToTheWingMass) {
   Eigen::VectorXd ux = Eigen::VectorXd::Zero(fem.model.mesh.num_dofs());
   for (int i = 0; i < fem.model.mesh.num_nodes(); ++i) ux(dof_index(i, UX)) = 1.0;
   EXPECT_NEAR(ux.dot(fem.system.mass * ux) / fem.system.total_mass, 1.0, 1e-12);
+}
+
+TEST(WingMesh, AVeinOutsideTheMembraneIsRefusedNamingIt) {
+  // A vein beside the outline (x = 2.03 mm, the edge at x = 2 mm), as a wing built in code
+  // (the file reader moves such a vein onto the outline): gmsh leaves it outside the
+  // surface, sharing no node with the membrane, and the FEM would be singular.
+  wings::Wing w = small_wing();
+  w.source_file = "small.toml";
+  w.veins[0].points = {{2.03e-3, 0.5e-3}, {2.03e-3, 19.5e-3}};
+  w.veins[0].key = "veins[0].points";
+  w.veins[0].line = 12;
+  try {
+    mesh_wing(w);
+    ADD_FAILURE() << "a vein outside the membrane was meshed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "small.toml");
+    EXPECT_EQ(e.line(), 12);
+    EXPECT_EQ(e.key(), "veins[0].points");
+    EXPECT_NE(e.message().find("'leading edge' is not embedded"), std::string::npos) << e.what();
+  }
+  // On the edge itself it is embedded: every beam node a membrane node.
+  w.veins[0].points = {{2.0e-3, 0.5e-3}, {2.0e-3, 19.5e-3}};
+  const Mesh mesh = mesh_wing(w);
+  std::set<int> shell_nodes;
+  for (const auto& t : mesh.triangles) shell_nodes.insert(t.begin(), t.end());
+  int vein0 = 0;
+  for (const auto& b : mesh.beams) {
+    EXPECT_TRUE(shell_nodes.count(b.nodes[0]) && shell_nodes.count(b.nodes[1]));
+    vein0 += b.vein == 0;
+  }
+  EXPECT_GE(vein0, 19);  // 19 mm at vein_element_size 0.5 mm: at least 19 elements
 }
 
 }  // namespace

@@ -72,4 +72,27 @@ TEST(CaseLimits, ACaseNameIsNotAPath) {
   EXPECT_EQ(p::folder_name_of(""), "case");
 }
 
+TEST(CaseLimits, ASignalOfMoreThanTheMostHarmonicsIsRefusedAtItsEntry) {
+  // One million sweep harmonics ran unbounded (every step evaluates each one). The limit is
+  // 1000 cosine and 1000 sine coefficients; the error names entry 1001 of the array.
+  std::string many = "[";
+  for (std::size_t i = 0; i <= p::kMaxSignalHarmonics; ++i) many += (i ? ",\n" : "") + std::string("0.001");
+  many += "]";
+  std::string text = case_text("");
+  const std::string sweep = "cos_deg = [60.0]";
+  text.replace(text.find(sweep), sweep.size(), "cos_deg = " + many);
+  auto e = error_of(text);
+  EXPECT_EQ(e.key(), "kinematics.sweep.cos_deg") << e.what();
+  EXPECT_EQ(e.line(), 4 + static_cast<int>(p::kMaxSignalHarmonics)) << e.what();  // one entry a line from line 4
+  EXPECT_NE(e.message().find("more than 1000 harmonics"), std::string::npos) << e.what();
+  // Exactly the limit is read, as is the same count of sines.
+  text = case_text("");
+  const std::string rot = "sin_deg = [-60.0]";
+  many = "[-60.0";
+  for (std::size_t i = 1; i < p::kMaxSignalHarmonics; ++i) many += ", 0.0";
+  many += "]";
+  text.replace(text.find(rot), rot.size(), "sin_deg = " + many);
+  EXPECT_NO_THROW(case_from_text(text));
+}
+
 }  // namespace

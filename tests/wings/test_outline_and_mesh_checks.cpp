@@ -139,3 +139,76 @@ TEST(MeshChecks, ATinyElementSizeIsRefusedBeforeMeshing) {
 }
 
 }  // namespace
+
+TEST(VeinOnOutline, APointOutsideWithinTheToleranceIsMovedOntoTheOutline) {
+  // The wing: a spar 0.03 mm outside a 40 mm wing's edge x = 5 mm (tolerance 0.1 %
+  // of the span = 0.04 mm) passed check, was left outside the membrane by gmsh and made the
+  // FEM singular. Each point now lies on the edge: x = 5 mm exactly (the nearest point of
+  // the edge x = 5, y in [0, 40], to (5.03, y) is (5, y)).
+  std::string text = wing_text(kRectangle);
+  const std::string spar = "points = [[1.0, 0.0], [1.0, 30.0]]";
+  text.replace(text.find(spar), spar.size(), "points = [[5.03, 2.0], [5.03, 30.0], [4.0, 35.0]]");
+  const w::Wing wing = w::read_wing(w::parse_toml_string(text, "v.toml"));
+  ASSERT_EQ(wing.veins[0].points.size(), 3u);
+  EXPECT_EQ(wing.veins[0].points[0].x(), 5e-3);
+  EXPECT_EQ(wing.veins[0].points[1].x(), 5e-3);
+  EXPECT_NEAR(wing.veins[0].points[0].y(), 2e-3, 1e-15);
+  EXPECT_NEAR(wing.veins[0].points[1].y(), 30e-3, 1e-15);
+  EXPECT_EQ(wing.veins[0].points[2], Eigen::Vector2d(4e-3, 35e-3));  // inside: unchanged
+  EXPECT_EQ(wing.veins[0].key, "veins[0].points");
+  EXPECT_EQ(wing.veins[0].line, 15);
+  // Beyond the tolerance (0.05 mm out) it is still refused, at the vein's key.
+  text = wing_text(kRectangle);
+  text.replace(text.find(spar), spar.size(), "points = [[5.05, 2.0], [5.05, 30.0]]");
+  auto e = expect_input_error([&] { w::read_wing(w::parse_toml_string(text, "v.toml")); });
+  EXPECT_EQ(e.key(), "veins[0].points") << e.what();
+  EXPECT_NE(e.message().find("leaves the outline"), std::string::npos) << e.what();
+}
+
+// An ellipse of n points (x semi-axis 0.15, y from 0 to 1: units of the span), as a CSV body.
+std::string ellipse_csv(std::size_t n) {
+  std::string s = "x,y\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    s += std::to_string(0.15 * std::cos(t)) + "," + std::to_string(0.5 + 0.5 * std::sin(t)) + "\n";
+  }
+  return s;
+}
+
+TEST(OutlineLimits, AnOutlineOfMoreThanTheMostPointsIsRefusedAtThePointBeyond) {
+  // A 20,000-point CSV outline took 36 CPU s of `check` (gmsh building one edge per point,
+  // about n^2); the limit (5000 points) is refused while reading, at the first point beyond.
+  flapsim::test::ScratchDir dir("outline_limits");
+  std::ofstream(dir / "long.csv") << ellipse_csv(w::kMaxOutlinePoints + 1);
+  std::ofstream(dir / "w.toml") << wing_text("outline_file = \"long.csv\"\nspan = 40.0\n");
+  auto e = expect_input_error([&] { w::load_wing_file((dir / "w.toml").string()); });
+  EXPECT_EQ(e.file(), (dir / "long.csv").lexically_normal().string()) << e.what();
+  EXPECT_EQ(e.line(), static_cast<int>(w::kMaxOutlinePoints) + 2) << e.what();  // header on line 1
+  EXPECT_EQ(e.key(), "planform.outline_file");
+  EXPECT_NE(e.message().find("more than 5000 outline points"), std::string::npos) << e.what();
+  // Exactly the limit is read.
+  std::ofstream(dir / "max.csv") << ellipse_csv(w::kMaxOutlinePoints);
+  EXPECT_EQ(w::read_outline_csv((dir / "max.csv").string(), "k").size(), w::kMaxOutlinePoints);
+
+  // The same outline inline: refused at the line of point 5001 (one point a line).
+  std::string rows = "outline = [\n";
+  for (std::size_t i = 0; i <= w::kMaxOutlinePoints; ++i) {
+    const double t = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(w::kMaxOutlinePoints + 1);
+    rows += '[';  // appended piece by piece: GCC 12 warns (-Wrestrict) on "[" + string
+    rows += std::to_string(6.0 * std::cos(t));
+    rows += ", ";
+    rows += std::to_string(20.0 + 20.0 * std::sin(t));
+    rows += "],\n";
+  }
+  rows += "]\n";
+  e = expect_input_error([&] { w::read_wing(w::parse_toml_string(wing_text(rows), "i.toml")); });
+  EXPECT_EQ(e.key(), "planform.outline") << e.what();
+  EXPECT_EQ(e.line(), 5 + static_cast<int>(w::kMaxOutlinePoints)) << e.what();  // point 1 on line 5
+
+  // A shape or spline sampled with more points: outline_points is bounded by the same limit.
+  e = expect_input_error([&] {
+    w::read_wing(w::parse_toml_string(
+        wing_text("shape = \"half_ellipse\"\nspan = 40.0\nchord = 12.0\noutline_points = 5001\n"), "s.toml"));
+  });
+  EXPECT_EQ(e.key(), "planform.outline_points") << e.what();
+}
