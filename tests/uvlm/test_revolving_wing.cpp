@@ -74,12 +74,14 @@ Coefficients revolve(double alpha_deg, LeadingEdge leading_edge, int steps = 30)
 
 }  // namespace
 
-TEST(RevolvingWing, ForceIsNormalToTheWingAndMeasuredLiftLiesBetweenTheModels) {
+TEST(RevolvingWing, ForceIsNormalToTheWingAndTheTwoModelsBracketTheMeasuredLift) {
   // Revolving wings carry no leading-edge suction: the force is normal to the wing
   // ([Usherwood & Ellington 2002], summary), so drag / lift = tan α for a flat wing; both
   // `none` and `separated` must give that (within 1°). The translational lift measured on
   // this wing ([Dickinson et al. 1999]: CL = 0.225 + 1.58 sin(2.13α − 7.20°)) lies between
   // the two models at 20°–60° (docs/uvlm.md: `separated` 4–32 % above, `none` 17–27 % below).
+  // A bracket, not a validation of either model: issue 30's shed leading-edge vortex is to
+  // meet the measurement itself (within 10 %).
   for (double alpha : {20.0, 40.0, 60.0}) {
     const Coefficients sep = revolve(alpha, LeadingEdge::Separated);
     const Coefficients none = revolve(alpha, LeadingEdge::None);
