@@ -1,4 +1,4 @@
-// The mutation fuzzer (tests/common/mutation_fuzzer.hpp) over the arguments of `flapsim
+// The mutation fuzzer (tests/io/mutation_fuzzer.hpp) over the arguments of `flapsim
 // sweep`: `--vary KEY=VALUES` texts, each loaded variation's values written into a valid case
 // as the sweep writes them (sweep::load_case_with), and `--cases` CSV tables. Each mutant
 // must be accepted with what docs/sweeps.md allows (a key, 1 … 10000 finite values; a table
@@ -13,7 +13,7 @@
 #include <set>
 #include <string>
 
-#include "common/mutation_fuzzer.hpp"
+#include "io/mutation_fuzzer.hpp"
 #include "common/scratch_dir.hpp"
 #include "io/documented_ranges.hpp"
 #include "pipeline/app/sweep/case_table.hpp"

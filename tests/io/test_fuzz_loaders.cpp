@@ -28,7 +28,7 @@
 #include <thread>
 #include <vector>
 
-#include "common/mutation_fuzzer.hpp"
+#include "io/mutation_fuzzer.hpp"
 #include "common/scratch_dir.hpp"
 #include "io/documented_ranges.hpp"
 #include "pipeline/io/case_file.hpp"
