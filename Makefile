@@ -1,7 +1,10 @@
 # flapsim — the commands users drive. The targets that build (all but help, clean,
 # plots and sweep-plots) install missing Debian packages first (tools/install_deps.sh),
 # then configure and build as needed.
-#   make build           install missing packages, configure and build build/flapsim
+#   make build           install missing packages, configure and build everything
+#                        (build/flapsim, the tests and the benchmarks)
+#   make program         the same for build/flapsim and its two shared modules only
+#                        (what run, model and phase-study build)
 #   make run [CASE=cases/x.toml]   a case (default: the full pipeline on the hawkmoth
 #                        wing: wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz)
 #                        into out/<case>/, with a preview PNG and a ParaView state
@@ -28,12 +31,12 @@ CMAKE_ARGS ?=
 OUT        ?= out
 MAKEFLAGS  += --no-print-directory
 
-.PHONY: all deps build test test-asan fuzz bench clean help
+.PHONY: all deps build program test test-asan fuzz bench clean help
 
 all: build
 
 help:
-	@sed -n '1,22p' Makefile
+	@sed -n '1,24p' Makefile
 
 deps:
 	@tools/install_deps.sh
@@ -43,6 +46,11 @@ $(BUILD)/CMakeCache.txt: | deps
 
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j$(JOBS)
+
+# The program alone: a first `make run` compiles no test or benchmark (docs/performance.md,
+# "Build time").
+program: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) --target flapsim -j$(JOBS)
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)

@@ -6,6 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  ccache  # used by CMakeLists.txt when present: a rebuild of unchanged sources is free
   libeigen3-dev libspectra-dev
   libgmsh-dev gmsh
   libvtk9-dev

@@ -1,7 +1,7 @@
 # tools/model.mk — `make model WING=wings/<wing>.toml [BODIES=N]`: regenerate
 # out/<wing>/ (mesh, FEM modes, equivalent beam and bar chain) from any wing file;
 # `make hawkmoth-model` is the same with the default wing, wings/hawkmoth.toml.
-# Included from the top-level Makefile, which defines BUILD, OUT and `build`.
+# Included from the top-level Makefile, which defines BUILD, OUT and `program`.
 #
 # Each stage is a file target whose prerequisites are its real inputs: the wing file
 # and every file it names (its outline CSV; tools/toml_inputs.py lists them), the
@@ -39,9 +39,10 @@ $(shell mkdir -p $(MODEL_OUT) && \
 endif
 MODEL_INPUTS := $(or $(MODEL_FILES),$(WING)) $(MODEL_BIN)
 
-# `build` runs first (cmake relinks flapsim only if a source changed, keeping its time
-# stamp otherwise); the stage files are then judged against the binary.
-model: build $(MODEL_OUT)/mesh.msh $(MODEL_OUT)/modes.csv $(MODEL_OUT)/chain.toml
+# `program` runs first (cmake relinks flapsim only if a source changed, keeping its time
+# stamp otherwise; it builds no test or benchmark); the stage files are then judged
+# against the binary.
+model: program $(MODEL_OUT)/mesh.msh $(MODEL_OUT)/modes.csv $(MODEL_OUT)/chain.toml
 	@echo "model of $(WING) ($(BODIES) bodies) in $(MODEL_OUT)/: mesh.vtu, fem.vtu, reduction.vtm, chain.toml, report.md"
 
 hawkmoth-model: model

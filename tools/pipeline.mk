@@ -1,6 +1,6 @@
 # tools/pipeline.mk — runs, the rotation-phase study and the figures (docs/fsi.md,
 # docs/hawkmoth_walkthrough.md). Included from the top-level Makefile, which defines
-# BUILD, OUT and `build`; uses the case of tools/case.mk and the model of tools/model.mk.
+# BUILD, OUT, `build` and `program`; uses the case of tools/case.mk and the model of tools/model.mk.
 #
 #   make run [CASE=cases/x.toml]   run a case (default cases/hover_flexible.toml: the
 #                       hawkmoth wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz)
@@ -43,7 +43,7 @@ RUN_OUT           ?= $(OUT)/$(CASE_NAME)$(if $(and $(RUN_CHAIN),$(filter $(MODEL
 .PHONY: run run-pipeline phase-study plots figures sweep-plots validate
 
 
-run: build $(RUN_CHAIN)
+run: program $(RUN_CHAIN)
 	@$(PIPELINE_BIN) check $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) > /dev/null
 	@start=$$(date +%s.%N); \
 	OMP_NUM_THREADS=1 $(PIPELINE_BIN) run $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) \
@@ -64,13 +64,13 @@ run-pipeline: run
 
 ifeq ($(origin CASE),command line)
 # The rotation-phase sweep of the given case.
-phase-study: build $(RUN_CHAIN)
+phase-study: program $(RUN_CHAIN)
 	@mkdir -p $(PHASE_OUT)
 	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) \
 	  --spring-scale $(PIPELINE_SPRINGS) --vary kinematics.rotation_phase=$(PHASES) \
 	  -o $(PHASE_OUT)/$(CASE_NAME) -j $(PHASE_JOBS)
 else
-phase-study: build $(PIPELINE_CHAIN)
+phase-study: program $(PIPELINE_CHAIN)
 	@mkdir -p $(PHASE_OUT)
 	@start=$$(date +%s.%N); \
 	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep cases/rotation_phase_rigid_coupled.toml \
@@ -97,7 +97,7 @@ plots:
 # docs/figures from a fresh phase study (its own folder, emptied first), PDF and PNG.
 FIGURES_OUT   ?= docs/figures
 FIGURES_STUDY ?= $(OUT)/figures/phase_study
-figures: build $(PIPELINE_CHAIN)
+figures: program $(PIPELINE_CHAIN)
 	rm -rf $(FIGURES_STUDY)
 	$(MAKE) --no-print-directory phase-study PHASE_OUT=$(FIGURES_STUDY)
 	$(PIPELINE_PYTHON) tools/plot_phase_study.py $(FIGURES_STUDY) $(FIGURES_OUT) --prefix phase_
