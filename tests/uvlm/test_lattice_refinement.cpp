@@ -19,7 +19,7 @@ namespace {
 constexpr double kAlpha = 8.0 * M_PI / 180.0;
 constexpr double kChord = 1.0, kSpan = 3.0;  // AR 3 [m]; U = 1 m/s, ρ = 1 kg/m³
 
-struct Coefficients {
+struct LatticeCoefficients {
   double cl_kj = 0, cd_kj = 0;            // Kutta–Joukowski, leading edge attached
   double cl_b = 0, cd_b = 0;              // Bernoulli, leading edge attached
   double cl_kj_none = 0, cl_b_none = 0;   // both routes, leading edge `none`
@@ -34,7 +34,7 @@ enum class Solve { Unsteady, SteadyMode, SteadyPlanarWake };
 /// `chords` chords of travel (Solve::Unsteady), or the steady lattice (numerics.steady,
 /// solve() with steady_wake_length = 10⁴ c, at that Δt), or the steady lattice with its
 /// straight wake in the wing's plane instead of along V∞.
-Coefficients plate(int ns, Spacing spacing, double steps_per_chord, double chords,
+LatticeCoefficients plate(int ns, Spacing spacing, double steps_per_chord, double chords,
                    Solve how = Solve::Unsteady) {
   PlanformGridOptions o;
   o.chordwise = 4;
@@ -70,7 +70,7 @@ Coefficients plate(int ns, Spacing spacing, double steps_per_chord, double chord
   const double qs = 0.5 * kChord * kSpan;
   VortexLatticeModel none = m;
   none.leading_edge = LeadingEdge::None;
-  Coefficients c;
+  LatticeCoefficients c;
   compute_kutta_joukowski_loads(m, d);
   c.cl_kj = d.loads.total_force.dot(lift) / qs;
   c.cd_kj = d.loads.total_force.dot(v) / qs;
@@ -106,7 +106,7 @@ TEST(LatticeRefinement, InducedDragErrorDoesNotGrowWithSpanwiseRefinement) {
   for (Spacing sp : {Spacing::Uniform, Spacing::Cosine}) {
     double last_kj = 0.0, last_b = 0.0;
     for (int ns : {16, 32, 64, 128, 256}) {
-      const Coefficients c = plate(ns, sp, 4.0, 20.0);
+      const LatticeCoefficients c = plate(ns, sp, 4.0, 20.0);
       const double e_kj = c.cd_kj / c.cd_t - 1.0, e_b = c.cd_b / c.cd_t - 1.0;
       std::printf("[ value ] %s 4 x %d: CL %.5f, CDi KJ %.6f (%+.3f %%), Bernoulli %.6f (%+.3f %%), Trefftz %.6f\n",
                   name(sp), ns, c.cl_kj, c.cd_kj, 100 * e_kj, c.cd_b, 100 * e_b, c.cd_t);
@@ -130,8 +130,8 @@ TEST(LatticeRefinement, CosineAndUniformSpacingConvergeToTheSameLoads) {
   // 0.466 on uniform spacing at 4 × 128.
   double first_cl = 0.0, first_cd = 0.0;
   for (int ns : {16, 64, 256}) {
-    const Coefficients u = plate(ns, Spacing::Uniform, 4.0, 20.0);
-    const Coefficients c = plate(ns, Spacing::Cosine, 4.0, 20.0);
+    const LatticeCoefficients u = plate(ns, Spacing::Uniform, 4.0, 20.0);
+    const LatticeCoefficients c = plate(ns, Spacing::Cosine, 4.0, 20.0);
     const double dcl = c.cl_kj / u.cl_kj - 1.0, dcd = c.cd_kj / u.cd_kj - 1.0;
     const double dcl_b = c.cl_b / u.cl_b - 1.0;
     std::printf("[ value ] 4 x %d: CL uniform %.5f, cosine %.5f (%+.3f %%; Bernoulli %+.3f %%); CDi %.6f, %.6f (%+.3f %%)\n",
@@ -161,13 +161,13 @@ TEST(LatticeRefinement, LoadRoutesAgreeInSteadyFlow) {
   // Measured (4 × 16, 40 chords): −0.15 % at U Δt = 2c, −0.04 … −0.00 % at c/4, −0.03 % steady.
   for (Spacing sp : {Spacing::Uniform, Spacing::Cosine})
     for (double steps_per_chord : {0.5, 4.0}) {
-      const Coefficients c = plate(16, sp, steps_per_chord, 40.0);
+      const LatticeCoefficients c = plate(16, sp, steps_per_chord, 40.0);
       const double r = c.cl_b_none / c.cl_kj_none - 1.0;
       std::printf("[ value ] %s 4 x 16, U dt = %g c: CL (none) KJ %.5f, Bernoulli %.5f (%+.3f %%)\n", name(sp),
                   1.0 / steps_per_chord, c.cl_kj_none, c.cl_b_none, 100 * r);
       EXPECT_LT(std::abs(r), 2e-3) << name(sp) << ", U dt = " << 1.0 / steps_per_chord << " c";
     }
-  const Coefficients s = plate(16, Spacing::Uniform, 4.0, 0.0, Solve::SteadyMode);
+  const LatticeCoefficients s = plate(16, Spacing::Uniform, 4.0, 0.0, Solve::SteadyMode);
   EXPECT_NEAR(s.cl_b_none / s.cl_kj_none, 1.0, 2e-3);
 }
 
@@ -175,8 +175,8 @@ TEST(LatticeRefinement, SteadyLiftDoesNotDependOnTheTimeStep) {
   // 1. The steady lattice (numerics.steady: a straight wake 10⁴ chords long along V∞,
   //    solved with the rings, no ∂Γ/∂t) does not see Δt at all: the same circulations and
   //    loads at U Δt = 2c and c/4, bit for bit, equal to solve_steady's.
-  const Coefficients s2 = plate(16, Spacing::Uniform, 0.5, 0.0, Solve::SteadyMode);
-  const Coefficients s4 = plate(16, Spacing::Uniform, 4.0, 0.0, Solve::SteadyMode);
+  const LatticeCoefficients s2 = plate(16, Spacing::Uniform, 0.5, 0.0, Solve::SteadyMode);
+  const LatticeCoefficients s4 = plate(16, Spacing::Uniform, 4.0, 0.0, Solve::SteadyMode);
   EXPECT_EQ(s2.cl_kj, s4.cl_kj);
   EXPECT_EQ(s2.cl_b, s4.cl_b);
   EXPECT_EQ(s2.cd_kj, s4.cd_kj);
@@ -185,8 +185,8 @@ TEST(LatticeRefinement, SteadyLiftDoesNotDependOnTheTimeStep) {
   //    behind the edge, the shed rows on the edge's path through the air) and in the wake's
   //    length (40 chords); within 0.2 %, the agreement asked of the two load routes
   //    (measured +0.04 %; 20 chords +0.01 %).
-  const Coefficients u20 = plate(16, Spacing::Uniform, 4.0, 20.0);
-  const Coefficients u40 = plate(16, Spacing::Uniform, 4.0, 40.0);
+  const LatticeCoefficients u20 = plate(16, Spacing::Uniform, 4.0, 20.0);
+  const LatticeCoefficients u40 = plate(16, Spacing::Uniform, 4.0, 40.0);
   std::printf("[ value ] steady CL %.5f; impulsive start, U dt = c/4: 20 c %.5f, 40 c %.5f (%+.3f %%)\n",
               s4.cl_kj, u20.cl_kj, u40.cl_kj, 100 * (u40.cl_kj / s4.cl_kj - 1));
   EXPECT_NEAR(u40.cl_kj / s4.cl_kj, 1.0, 2e-3);
@@ -198,9 +198,9 @@ TEST(LatticeRefinement, SteadyLiftDoesNotDependOnTheTimeStep) {
   //    plane does: the bound is the steady lattice's CL with its wake in the plane against
   //    along V∞ (computed here). Measured: KJ −0.09 %, Bernoulli −0.20 % (before issue 29:
   //    +0.27 %, −0.67 %); the bound 0.51 %.
-  const Coefficients a = plate(16, Spacing::Uniform, 0.5, 40.0);
-  const Coefficients b = u40;
-  const Coefficients planar = plate(16, Spacing::Uniform, 4.0, 0.0, Solve::SteadyPlanarWake);
+  const LatticeCoefficients a = plate(16, Spacing::Uniform, 0.5, 40.0);
+  const LatticeCoefficients b = u40;
+  const LatticeCoefficients planar = plate(16, Spacing::Uniform, 4.0, 0.0, Solve::SteadyPlanarWake);
   const double bound = std::abs(planar.cl_kj / s4.cl_kj - 1.0);
   std::printf("[ value ] U dt = 2c vs c/4: CL KJ %.5f, %.5f (%+.3f %%), Bernoulli %.5f, %.5f (%+.3f %%); "
               "steady, planar wake vs along V: %+.3f %%\n",
