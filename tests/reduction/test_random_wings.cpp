@@ -61,7 +61,7 @@ wings::Wing random_wing(std::mt19937& rng) {
   w.mesh.element_size = span / 14.0;
   w.mesh.vein_element_size = span / 14.0;
   const wings::Material rod = material(rng, 5e9, 2e11, 1500.0);
-  wings::Vein le{"leading edge", {le0, le1}, section(rng), section(rng), rod};
+  wings::Vein le{"leading edge", {le0, le1}, section(rng), section(rng), rod, 0, ""};
   le.tip_section = le.root_section;
   le.tip_section.outer_diameter *= 0.5;
   le.tip_section.wall *= 0.5;
@@ -73,7 +73,7 @@ wings::Wing random_wing(std::mt19937& rng) {
     const double a = 0.1 + 0.8 * u(rng), b = 0.1 + 0.8 * u(rng);
     const Eigen::Vector2d p = le0 + a * (le1 - le0), q = te0 + b * (te1 - te0);
     const wings::Section s = section(rng);
-    w.veins.push_back({"cross", {p, q}, s, s, material(rng, 5e9, 2e11, 1500.0)});
+    w.veins.push_back({"cross", {p, q}, s, s, material(rng, 5e9, 2e11, 1500.0), 0, ""});
   }
   return w;
 }

@@ -46,7 +46,7 @@ wings::Wing swept_wing(double sweep_dx_mm) {
   root.wall = 0.3 * kMm;
   tip.outer_diameter = 0.3 * kMm;
   tip.wall = 0.15 * kMm;
-  w.veins.push_back({"leading edge", {le0, le1}, root, tip, pet});
+  w.veins.push_back({"leading edge", {le0, le1}, root, tip, pet, 0, ""});
   return w;
 }
 
