@@ -15,14 +15,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace flapsim::fem {
+#include "fem/skew.hpp"
 
-/// Skew-symmetric matrix v̂ with v̂ w = v × w.
-inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d S;
-  S << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return S;
-}
+namespace flapsim::fem {
 
 /// \brief exp(θ̂) by the Rodrigues formula; θ the rotation vector [rad].
 inline Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d& theta) {

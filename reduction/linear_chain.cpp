@@ -1,5 +1,5 @@
 #include "reduction/linear_chain.hpp"
-#include "reduction/skew.hpp"
+#include "fem/skew.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -10,6 +10,8 @@
 #include <string>
 
 namespace flapsim::reduction {
+
+using fem::skew;
 
 LinearChain::LinearChain(const mbd::ChainModel& chain) : chain_(&chain) {
   chain.validate();

@@ -1,10 +1,12 @@
 #include "reduction/strip_mass.hpp"
-#include "reduction/skew.hpp"
+#include "fem/skew.hpp"
 
 #include <stdexcept>
 #include <string>
 
 namespace flapsim::reduction {
+
+using fem::skew;
 
 namespace {
 

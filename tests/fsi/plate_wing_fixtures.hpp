@@ -4,6 +4,7 @@
 /// coupling tests of tests/fsi drive.
 
 #include "mbd/angle_units.hpp"
+#include "mbd/chain_model.hpp"
 #include "mbd/wing_kinematics.hpp"
 #include "uvlm/planform_grid.hpp"
 
@@ -29,6 +30,20 @@ inline mbd::WingKinematics eq8_kinematics(double rotation_phase) {
   k.deviation = mbd::PeriodicSignal::harmonic(0.0, {}, {});
   k.rotation = mbd::PeriodicSignal::harmonic(90.0 * kDegToRad, {}, {-45.0 * kDegToRad});
   return k;
+}
+
+// The plate as a rigid wing: one body welded to the base (mass and inertia for outputs only).
+inline mbd::ChainModel rigid_plate_chain() {
+  mbd::ChainModel c;
+  mbd::ChainBody b;
+  b.length = 0.040;
+  b.mass = 1e-4;
+  b.center_of_mass = Eigen::Vector3d(-0.0025, 0.02, 0.0);
+  b.inertia = Eigen::Vector3d(1.3e-8, 1e-9, 1.4e-8).asDiagonal();
+  b.outboard_joint = Eigen::Vector3d(0.0, 0.040, 0.0);
+  c.bodies = {b};
+  c.joints = {mbd::ChainJoint{}};
+  return c;
 }
 
 }  // namespace flapsim::test

@@ -80,14 +80,7 @@ TEST(FsiFemStructure, AStiffFemPlateGivesTheRigidPlatesLift) {
   // first bending is about 1 kHz, 40 × the wingbeat: it deflects some 20 µm, so the mean lifts
   // agree within 0.5 % (the bound of the stiff chain, fsi.FsiFlexibleWing.*).
   auto rigid = std::make_shared<fsi::ChainStructureModel>();
-  mbd::ChainBody b;
-  b.length = 0.040;
-  b.mass = 1e-4;
-  b.center_of_mass = Eigen::Vector3d(-0.0025, 0.02, 0.0);
-  b.inertia = Eigen::Vector3d(1.3e-8, 1e-9, 1.4e-8).asDiagonal();
-  b.outboard_joint = Eigen::Vector3d(0.0, 0.040, 0.0);
-  rigid->chain.bodies = {b};
-  rigid->chain.joints = {mbd::ChainJoint{}};
+  rigid->chain = test::rigid_plate_chain();
   rigid->base_motion = mbd::make_base_motion(test::eq8_kinematics(-0.1));
   const auto grid = test::plate_grid(kChordwise, kSpanwise);
   rigid->attachment = fsi::attach_wing(rigid->chain, grid.nodes, kChordwise, kSpanwise);

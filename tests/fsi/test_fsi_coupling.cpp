@@ -28,6 +28,7 @@ namespace {
 using namespace flapsim;
 using flapsim::test::eq8_kinematics;
 using flapsim::test::plate_grid;
+using flapsim::test::rigid_plate_chain;
 constexpr double kPi = std::numbers::pi;
 
 // A chain of n bodies along the span with its root frame turned by 5° about z_W and
@@ -159,18 +160,6 @@ fsi::FsiModel plate_model(const mbd::ChainModel& chain, const uvlm::PlanformGrid
   return m;
 }
 
-mbd::ChainModel rigid_plate_chain() {
-  mbd::ChainModel c;
-  mbd::ChainBody b;
-  b.length = 0.040;
-  b.mass = 1e-4;
-  b.center_of_mass = Eigen::Vector3d(-0.0025, 0.02, 0.0);
-  b.inertia = Eigen::Vector3d(1.3e-8, 1e-9, 1.4e-8).asDiagonal();
-  b.outboard_joint = Eigen::Vector3d(0.0, 0.040, 0.0);
-  c.bodies = {b};
-  c.joints = {mbd::ChainJoint{}};
-  return c;
-}
 
 TEST(FsiRigidWing, CoupledPathGivesTheLoadsOfTheLatticeDrivenDirectly) {
   // Reference: the same lattice given the prescribed motion directly, x = R_GW(t) x_W,

@@ -1,10 +1,11 @@
 #pragma once
 /// \file skew.hpp
-/// \brief The cross-product matrix: skew(v)·w = v × w.
+/// \brief The cross-product matrix: skew(v)·w = v × w (the co-rotational FEM's spins, the
+/// reduction's strip inertias and chain Jacobians).
 
 #include <Eigen/Core>
 
-namespace flapsim::reduction {
+namespace flapsim::fem {
 
 inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d s;
@@ -12,4 +13,4 @@ inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   return s;
 }
 
-}  // namespace flapsim::reduction
+}  // namespace flapsim::fem
