@@ -10,6 +10,7 @@
 /// How to add a result: docs/output_files.md, "Adding a result or a history column".
 
 #include <array>
+#include <cmath>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
@@ -243,8 +244,11 @@ inline constexpr std::array kRunReport = {
                "there; check the results with more "
                "steps_per_cycle (docs/multibody.md, \"Step halving\")",
                [](const RunResults& r) { return r.has("split_structural_steps"); }},
+    // Only for a wing that reverses its stroke: a revolving wing or a plate held in a free
+    // stream has no rotation phase ("base nan, tip nan" read as a failure).
     ReportLine{"rotation phase: base {base_rotation_phase}, tip {tip_rotation_phase}; "
-               "tip alpha lag {tip_rotation_lag} of the period"},
+               "tip alpha lag {tip_rotation_lag} of the period",
+               [](const RunResults& r) { return std::isfinite(r.number("base_rotation_phase")); }},
 };
 
 /// \brief The report: the shown lines of kRunReport, each ending with a newline.
