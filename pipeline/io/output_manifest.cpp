@@ -7,6 +7,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -206,16 +207,20 @@ constexpr off_t kReserveBytes = 64 * 1024;
 
 fs::path reserve_path(const fs::path& dir) { return temporary_path(dir / ".flapsim_outputs_reserve"); }
 
+// The reserve, made before anything else is written: a disk without room for it is
+// refused (the command would fill it and could not record how it ended). Other failures (a
+// file system without fallocate) leave no reserve: the last record is then best effort.
 void make_reserve(const fs::path& dir) {
   const fs::path p = reserve_path(dir);
   const int fd = ::open(p.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) return;  // best effort: no reserve, the last record may fail on a full disk
-  const bool ok = ::posix_fallocate(fd, 0, kReserveBytes) == 0;
-  ::close(fd);
-  if (!ok) {
-    std::error_code ignored;
-    fs::remove(p, ignored);
-  }
+  int err = fd < 0 ? errno : ::posix_fallocate(fd, 0, kReserveBytes);
+  if (fd >= 0) ::close(fd);
+  if (err == 0) return;
+  std::error_code ignored;
+  fs::remove(p, ignored);
+  if (err == ENOSPC || err == EDQUOT)
+    throw OutputError(dir, "less than 64 KiB free on its disk: no room to record how the command ends "
+                           "(free some space, or write the outputs elsewhere with -o)");
 }
 
 void release_reserve(const fs::path& dir) {
@@ -246,8 +251,13 @@ void OutputFolderClaim::claim(bool force) {
   // Another command writing here now would have its files removed and mixed with ours.
   prepare_output_directory(dir_);
   if (!lock_) lock_ = std::make_unique<FolderLock>(dir_, command_);
-  claim_output_folder(dir_, command_, force);
-  make_reserve(dir_);
+  make_reserve(dir_);  // before the manifest says "running": refused on a disk without room
+  try {
+    claim_output_folder(dir_, command_, force);
+  } catch (...) {
+    release_reserve(dir_);
+    throw;
+  }
   state_ = State::open;
 }
 

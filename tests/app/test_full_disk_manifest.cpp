@@ -85,4 +85,28 @@ TEST(FullDiskManifest, ARunThatFillsTheDiskRecordsFailedNotRunning) {
   EXPECT_EQ(err.find("vtkExecutive"), std::string::npos) << err;
 }
 
+TEST(FullDiskManifest, ADiskWithoutRoomForTheLastRecordIsRefusedBeforeAnythingIsWritten) {
+  // A disk with less than the 64 KiB the claim keeps for the manifest's last record (a 48 KiB
+  // tmpfs): before, the run started, filled the disk, exited 4 and left the manifest saying
+  // 'running'; now the claim is refused (exit 4, naming the folder and the room) and no
+  // manifest says 'running'.
+  ScratchDir dir("full_disk_no_reserve");
+  std::ofstream(dir / "case.toml") << small_plate_case("rigid", 3, 1);
+  const std::string mnt = (dir / "mnt").string();
+  std::filesystem::create_directories(mnt);
+  const std::string script =
+      "mount -t tmpfs -o size=48k none '" + mnt + "' || exit 99; "
+      "FLAPSIM_QUIET=1 OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' run '" + (dir / "case.toml").string() +
+      "' -o '" + mnt + "/run' > /dev/null 2> '" + (dir / "stderr.txt").string() + "'; s=$?; "
+      "cp '" + mnt + "/run/flapsim_outputs.toml' '" + (dir / "manifest.txt").string() + "' 2> /dev/null; exit $s";
+  std::ofstream(dir / "in_namespace.sh") << script << "\n";
+  const int status = std::system(("unshare -rm sh '" + (dir / "in_namespace.sh").string() + "' 2> /dev/null").c_str());
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (code == 99 || code == 1 || code == 127) GTEST_SKIP() << "no private tmpfs here (unshare -rm, mount): " << code;
+  const std::string err = read_text(dir / "stderr.txt");
+  EXPECT_EQ(code, 4) << err;
+  EXPECT_NE(err.find("64 KiB"), std::string::npos) << err;
+  EXPECT_EQ(read_text(dir / "manifest.txt").find("running"), std::string::npos);
+}
+
 }  // namespace
