@@ -71,7 +71,9 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
     // A chain that had swung beyond small rotations: say so with the failure (the joint,
     // the angles), as the failure is then the wing's motion rather than the solver's.
     const RunRecorder::TipDeflection tip = recorder.peak_tip_deflection();
-    const std::string why = large_motion_at_failure(setup, fsi::chain_structure(*data.structure).state.q, tip.bend_deg, tip.twist_deg);
+    Eigen::VectorXd last_q;
+    data.structure->joint_angles(last_q);
+    const std::string why = large_motion_at_failure(setup, last_q, tip.bend_deg, tip.twist_deg);
     if (why.empty()) {
       recorder.finish(data, "failed", e.what());
       throw;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mbd/wing_kinematics.hpp"
+#include "pipeline/app/fem_structure_setup.hpp"
 #include "pipeline/app/structure_source.hpp"
 #include "reduction/linear_chain.hpp"
 #include "wings/input_error.hpp"
@@ -296,7 +297,18 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
       throw InputError(c.file, c.line_of("air.freestream"), "air.freestream",
                        "neither a free stream nor a moving wing: no reference speed for the coefficients");
   }
-  m.structure = chain_structure;
+  if (c.structure.kind == Case::Structure::Kind::Fem) {
+    const double span = wings::planform_properties(s.wing->outline).span;
+    s.fem_structure = make_fem_structure(c, *s.wing, cs.base_motion,
+                                         s.grid ? s.grid->nodes : Eigen::Matrix3Xd(3, 0), span);
+    const fem::Mesh& mesh = s.fem_structure->structural.mesh;
+    s.structure_source += " (" + std::to_string(mesh.num_nodes()) + " nodes, " +
+                          std::to_string(mesh.triangles.size()) + " triangles, " +
+                          std::to_string(mesh.beams.size()) + " vein elements)";
+    m.structure = s.fem_structure;
+  } else {
+    m.structure = chain_structure;
+  }
   s.chain_structure = std::move(chain_structure);
   return s;
 }

@@ -17,6 +17,7 @@
 #include "pipeline/io/chain_file.hpp"
 #include "pipeline/fsi/chain_structure.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
+#include "pipeline/fsi/fem_structure.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "wings/wing_model.hpp"
 
@@ -52,6 +53,9 @@ struct FsiSetup {
   /// model.structure: what the chain's warnings and outputs read.
   std::shared_ptr<const fsi::ChainStructureModel> chain_structure;
   const mbd::ChainModel& chain() const { return chain_structure->chain; }
+  /// kind = "fem": the wing's FEM, the same object as model.structure (null otherwise; then
+  /// chain_structure is a rigid one-body chain of the wing, for what reads a chain).
+  std::shared_ptr<const fsi::FemStructureModel> fem_structure;
   std::optional<wings::Wing> wing;        ///< the wing (if the case names one)
   std::optional<uvlm::PlanformGrid> grid; ///< lattice grid in the wing frame (if air)
   LiftReference reference;                ///< valid if air

@@ -54,7 +54,7 @@ double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precisio
   return 1.9e8 / 2;
 }
 
-RunEstimate estimate_run(const io::Case& c, int bodies) {
+RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
   RunEstimate e;
   const auto& n = c.numerics;
   e.steps = n.total_steps();
@@ -87,7 +87,7 @@ RunEstimate estimate_run(const io::Case& c, int bodies) {
     const double free_rows = old_after_cycles > 0.0
                                  ? std::max(1.0, std::floor(old_after_cycles * n.steps_per_cycle))
                                  : std::numeric_limits<double>::infinity();
-    const double solves = bodies > 1 ? iterations : 1.0;
+    const double solves = bodies > 1 || fem_dofs > 0 ? iterations : 1.0;
     const double bound_segments = (nc + 1) * ns + nc * (ns + 1);
     auto step_cost = [&](double r) {
       const double segs = (r + 1) * ns + r * (ns + 1);
@@ -107,22 +107,36 @@ RunEstimate estimate_run(const io::Case& c, int bodies) {
   const double dofs = 2.0 * std::max(bodies, 1);
   memory += 8.0 * dofs * dofs * 8;
   e.structure_flops = bodies > 1 ? steps * iterations * 3.0 * (2.0 / 3.0) * dofs * dofs * dofs : 0.0;
+  if (fem_dofs > 0) {
+    // The FEM: its sparse factor (about 30 n log₂ n entries of 8 B plus indices, the same
+    // nested-dissection count) and a few Newton iterations (~4) per coupling iteration.
+    const double n_fem = fem_dofs;
+    memory += 30.0 * n_fem * std::log2(std::max(n_fem, 2.0)) * 12.0 + 40.0 * n_fem * 8.0;
+    const double solves_per_step = c.air.enabled ? iterations : 1.0;  // in vacuum nothing to couple
+    e.fem_seconds = steps * solves_per_step * 4.0 * kFemSecondsPerIteration1000 * std::pow(n_fem / 1000.0, 1.5);
+  }
   e.memory_bytes = memory;
   e.isa = uvlm::kernel_isa();
   e.interactions_per_second =
       nominal_interactions_per_second(e.isa, c.numerics.wake_precision == io::WakePrecision::Single);
-  e.seconds = e.interactions / e.interactions_per_second + e.structure_flops / kFlopsPerSecond;
+  e.seconds = e.interactions / e.interactions_per_second + e.structure_flops / kFlopsPerSecond + e.fem_seconds;
   return e;
 }
 
 std::string describe(const RunEstimate& e) {
-  char buf[320];
+  char buf[400];
   const std::string isa(uvlm::kernel_isa_name(e.isa));
+  const std::string structure = e.fem_seconds > 0.0 ? "FEM solves ~" + seconds_text(e.fem_seconds)
+                                                    : [&] {
+                                                        char f[48];
+                                                        std::snprintf(f, sizeof f, "%.2g chain flop", e.structure_flops);
+                                                        return std::string(f);
+                                                      }();
   std::snprintf(buf, sizeof buf,
                 "estimate: %lld steps, up to %lld wake panels, memory ~%s, %.2g Biot-Savart interactions, "
-                "%.2g chain flop, time of the order of %s (one thread, %s kernel at a nominal %.2g interactions/s)",
+                "%s, time of the order of %s (one thread, %s kernel at a nominal %.2g interactions/s)",
                 static_cast<long long>(e.steps), static_cast<long long>(e.wake_panels),
-                bytes_text(e.memory_bytes).c_str(), e.interactions, e.structure_flops,
+                bytes_text(e.memory_bytes).c_str(), e.interactions, structure.c_str(),
                 seconds_text(e.seconds).c_str(), isa.c_str(), e.interactions_per_second);
   return buf;
 }

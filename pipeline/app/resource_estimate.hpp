@@ -29,6 +29,7 @@ struct RunEstimate {
   double lattice_bytes = 0.0;      ///< of it, the lattice's influence matrix and its LU [B]
   double interactions = 0.0;       ///< Biot–Savart segment-point evaluations of the whole run
   double structure_flops = 0.0;    ///< dense chain solves of the whole run [flop]
+  double fem_seconds = 0.0;        ///< the FEM structure's solves of the whole run (kind = "fem") [s]
   double interactions_per_second = 0.0;  ///< the nominal throughput the time assumes [1/s]
   uvlm::KernelIsa isa = uvlm::KernelIsa::Scalar;  ///< the kernel variant it assumes
   double seconds = 0.0;            ///< order of magnitude of the wall time, one thread [s]
@@ -48,8 +49,16 @@ inline constexpr double kLongRunSeconds = 10.0;
 /// Runs estimated above this print their estimate even with run -q [s].
 inline constexpr double kVeryLongRunSeconds = 3600.0;
 
-/// \param bodies  bodies of the chain the run will use (the case's structure.bodies)
-RunEstimate estimate_run(const io::Case& c, int bodies);
+/// Time of one Newton iteration of the FEM structure (assembly and sparse factorisation)
+/// for 1000 DOFs [s], scaled by (DOFs/1000)^1.5 (the factorisation of a 2-D mesh's matrix
+/// under a fill-reducing ordering: George & Liu 1981, nested dissection). Measured on the
+/// development machine: a 150-node plate (900 DOFs) 17 ms, the hawkmoth's 27 618 DOFs 2.4 s
+/// (docs/fsi.md, "The FEM as the structure").
+inline constexpr double kFemSecondsPerIteration1000 = 0.02;
+
+/// \param bodies    bodies of the chain the run will use (the case's structure.bodies)
+/// \param fem_dofs  DOFs of the FEM structure (kind = "fem"; 0 for a chain)
+RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs = 0);
 
 /// One line: "estimate: N steps, up to W wake panels, memory ~X, ~Y interactions, ~T".
 std::string describe(const RunEstimate& e);

@@ -63,23 +63,18 @@ constexpr HistoryColumn kColumns[] = {
 std::span<const HistoryColumn> history_columns() { return kColumns; }
 
 StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
-                       const mbd::WingKinematics& kinematics, const LiftReference& reference,
-                       int outer_body) {
-  // The chain's outputs: bodies' angles, joint deflections, the base's reaction.
-  const mbd::ChainModel& chain = fsi::chain_structure(*model.structure).chain;
-  const fsi::ChainStructureData& cd = fsi::chain_structure(*data.structure);
+                       const mbd::WingKinematics& kinematics, const LiftReference& reference) {
+  // The structure's outputs: its sections' angles, the tip's deflection, the base's
+  // reaction (alike for every structure: fsi::StructureReadout).
+  const fsi::StructureReadout out = data.structure->readout();
   StepSample s;
   s.time = data.time();
   s.base = kinematics.angles(s.time);
-  s.tip = fsi::body_angles(chain, cd.chain, kinematics.stroke_plane_angle, chain.num_bodies() - 1);
-  s.outer = fsi::body_angles(chain, cd.chain, kinematics.stroke_plane_angle, outer_body);
-  if (cd.state.q.size() > 0) {
-    const Eigen::VectorXd deflection = cd.state.q - chain.rest_angles();
-    for (Eigen::Index k = 0; k + 1 < deflection.size(); k += 2) {
-      s.tip_bend += deflection(k);
-      s.tip_twist += deflection(k + 1);
-    }
-  }
+  const Eigen::Matrix3d r_sg = mbd::rotation_y(kinematics.stroke_plane_angle).transpose();
+  s.tip = mbd::stroke_angles(r_sg * out.tip_rotation);
+  s.outer = mbd::stroke_angles(r_sg * out.outer_rotation);
+  s.tip_bend = out.tip_bend;
+  s.tip_twist = out.tip_twist;
   if (model.air) {
     const uvlm::PanelLoads& loads = data.lattice->loads;
     s.force = loads.total_force;
@@ -101,9 +96,8 @@ StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
     s.cd = s.drag / qs;
     s.cp = s.power / (qs * reference.speed);
   }
-  const mbd::BasePose pose = model.base()(s.time);
-  s.drive_moment = mbd::base_reaction(chain, cd.chain, pose, cd.loads).moment;
-  s.drive_power = mbd::base_power(chain, cd.chain, pose, cd.loads);
+  s.drive_moment = out.drive_moment;
+  s.drive_power = out.drive_power;
   s.coupling_iterations = data.last_iterations;
   s.coupling_change = data.last_change;
   return s;
@@ -125,8 +119,12 @@ void history_row(const StepSample& sample, const io::Case& c, const fsi::FsiData
                  std::vector<double>& row) {
   std::size_t i = 0;
   for (const HistoryColumn& col : kColumns) row[i++] = col.value(sample);
+  Eigen::VectorXd q;
+  data.structure->joint_angles(q);
+  for (Eigen::Index k = 0; k < q.size(); ++k) row[i++] = q(k);
+  if (c.markers.empty()) return;
+  // Markers ride on a chain's bodies (the case reader refuses them for the FEM).
   const fsi::ChainStructureData& cd = fsi::chain_structure(*data.structure);
-  for (int k = 0; k < cd.state.q.size(); ++k) row[i++] = cd.state.q(k);
   for (const auto& m : c.markers) {
     const Eigen::Vector3d p = mbd::point_position(cd.chain, m.body - 1, m.point);
     for (int a = 0; a < 3; ++a) row[i++] = p(a);

@@ -26,8 +26,10 @@ namespace flapsim::app {
 struct StepSample {
   double time = 0.0;                 ///< t [s]
   mbd::WingKinematics::Angles base;  ///< prescribed base angles φ, θ, α [rad] and their rates
-  mbd::StrokeAngles tip;            ///< last body, relative to the undeformed chain [rad]
-  mbd::StrokeAngles outer;          ///< the outer body (fsi::outer_body) [rad]
+  /// The tip section relative to the undeformed wing [rad]: the chain's last body, the FEM's
+  /// fitted outer tenth of the span (fsi::StructureReadout).
+  mbd::StrokeAngles tip;
+  mbd::StrokeAngles outer;          ///< the outer section: the chain's outer body (fsi::outer_body), the FEM's band at 5/6 R [rad]
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< total aerodynamic force, ground [N]
   double lift = 0.0;                 ///< force along the lift direction [N] (LiftReference)
   double drag = 0.0;                 ///< force along the air's motion relative to the wing [N]; < 0: thrust
@@ -43,8 +45,9 @@ struct StepSample {
   double cp = 0.0;                   ///< power coefficient P / (½ ρ U_ref³ S) [-]
   int coupling_iterations = 0;       ///< lattice solves of the step
   double coupling_change = 0.0;      ///< structure change at the end of the step [rad]
-  /// The tip's deflection relative to the base, from the joint angles (0 for a rigid wing):
-  /// the sum over the joints of bend − rest bend, and of twist − rest twist [rad].
+  /// The tip's deflection relative to the base (0 for a rigid wing): the chain's sum over the
+  /// joints of bend − rest bend, and of twist − rest twist; the FEM's tip section rotation
+  /// relative to the base, Rx(bend) Ry(twist) [rad] (fsi::StructureReadout).
   double tip_bend = 0.0;
   double tip_twist = 0.0;
 };
@@ -52,10 +55,8 @@ struct StepSample {
 /// \brief The sample of the step just taken (after fsi::coupled_step).
 /// \param kinematics  the case's base kinematics (angles, stroke plane)
 /// \param reference   references and directions of the coefficients (ignored in vacuum)
-/// \param outer_body  0-based index of the outer body (fsi::outer_body)
 StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
-                       const mbd::WingKinematics& kinematics, const LiftReference& reference,
-                       int outer_body);
+                       const mbd::WingKinematics& kinematics, const LiftReference& reference);
 
 /// A column every run writes.
 struct HistoryColumn {

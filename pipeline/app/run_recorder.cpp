@@ -7,7 +7,9 @@
 #include <limits>
 #include <numbers>
 
+#include "pipeline/fsi/fem_structure.hpp"
 #include "pipeline/fsi/phase_analysis.hpp"
+#include "pipeline/io/fem_run_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/fsi/wing_attachment.hpp"
 #include "pipeline/io/fsi_vtk.hpp"
@@ -33,6 +35,19 @@ std::vector<double> series(const std::vector<StepSample>& samples, Get get) {
   return x;
 }
 
+// The structure's frame: the FEM's deformed mesh (fem.pvd) or the chain's bodies (chain.pvd).
+io::PolyDataMesh structure_frame(const FsiSetup& setup, const fsi::FsiData& data, double t) {
+  if (setup.fem_structure) {
+    const fsi::FemStructureModel& m = *setup.fem_structure;
+    const auto& fem = dynamic_cast<const fsi::FemStructureData&>(*data.structure);
+    const mbd::BasePose p = m.base_motion(t);
+    return io::fem_frame_mesh(m.structural.mesh, fem.trial_positions(), p.rotation, p.position, t);
+  }
+  return io::chain_mesh(setup.chain(), fsi::chain_structure(*data.structure).chain, t);
+}
+
+std::string structure_series(const FsiSetup& setup) { return setup.fem_structure ? "fem" : "chain"; }
+
 }  // namespace
 
 RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::filesystem::path& output_dir,
@@ -52,7 +67,7 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
       wing_pvd_.emplace(dir_ / "wing.pvd");
       wake_pvd_.emplace(dir_ / "wake.pvd");
     }
-    chain_pvd_.emplace(dir_ / "chain.pvd");
+    chain_pvd_.emplace(dir_ / (structure_series(setup) + ".pvd"));
     series_published_ = std::chrono::steady_clock::now();
     io::ensure_directory(dir_ / "vtk");
     write_state();
@@ -66,7 +81,9 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
   r.set("steps_per_cycle", setup.steps_per_cycle);
   r.set("cycles", c.numerics.cycles);
   r.set("dt_s", setup.dt);
+  r.set("structure_kind", std::string(wings::choice_name(io::kStructureKindNames, c.structure.kind)));
   r.set("bodies", setup.chain().num_bodies());
+  if (setup.fem_structure) r.set("fem_nodes", setup.fem_structure->structural.mesh.num_nodes());
   r.set("spring_scale", spring_scale);
   if (model.air) {
     r.set("reference_area_m2", setup.reference.area);
@@ -81,7 +98,7 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
 }
 
 void RunRecorder::record(const fsi::FsiData& data) {
-  samples_.push_back(sample_step(setup_.model, data, case_.kinematics, setup_.reference, outer_body_));
+  samples_.push_back(sample_step(setup_.model, data, case_.kinematics, setup_.reference));
   history_row(samples_.back(), case_, data, row_);
   history_.append(std::span<const double>(row_.data(), row_.size()));
   if (vtk_every_ > 0 && data.step % vtk_every_ == 0) write_series(data, data.step);
@@ -124,9 +141,9 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
     io::write_vtp(dir_ / kf, wake, io::Flush::deferred);
     wake_pvd_->append(t, dir_ / kf);
   }
-  io::PolyDataMesh chain = io::chain_mesh(setup_.chain(), fsi::chain_structure(*data.structure).chain, t);
+  io::PolyDataMesh chain = structure_frame(setup_, data, t);
   io::add_step_values(chain, values);
-  const auto cf = io::PvdSeries::step_file_name("vtk/chain", step, "vtp");
+  const auto cf = io::PvdSeries::step_file_name("vtk/" + structure_series(setup_), step, "vtp");
   io::write_vtp(dir_ / cf, chain, io::Flush::deferred);
   chain_pvd_->append(t, dir_ / cf);
   publish_series(false);
@@ -145,6 +162,7 @@ void RunRecorder::publish_series(bool now) {
 void RunRecorder::write_state() const {
   io::RunState state;
   state.air = setup_.model.air;
+  state.chain_pvd = structure_series(setup_) + ".pvd";
   double length = 0.0;
   for (const auto& b : setup_.chain().bodies) length += b.length;
   if (length > 0.0) state.length_scale = length;
@@ -213,13 +231,13 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
         fsi::crossing_lag(t, tip_alpha, base_alpha, right_angle, period, t_begin, t_end).value_or(nan));
   const double phi_mean = fsi::window_mean(t, base_phi, t_begin, t_end);
   r.set("tip_sweep_lag", fsi::crossing_lag(t, tip_phi, base_phi, phi_mean, period, t_begin, t_end).value_or(nan));
-  r.set("outer_body", outer_body_ + 1);
+  if (!setup_.fem_structure) r.set("outer_body", outer_body_ + 1);  // the FEM's: the band at 5/6 R
   r.set("outer_rotation_phase",
         fsi::rotation_phase(t, outer_phi, outer_alpha, period, t_begin, t_end).value_or(nan));
   r.set("outer_rotation_lag",
         fsi::crossing_lag(t, outer_alpha, base_alpha, right_angle, period, t_begin, t_end).value_or(nan));
 
-  if (setup_.chain().num_dofs() > 0) {
+  if (setup_.model.structure->num_dofs() > 0) {
     const TipDeflection peak = peak_tip_deflection();
     r.set("peak_tip_bend_deg", peak.bend_deg);
     r.set("peak_tip_twist_deg", peak.twist_deg);

@@ -53,7 +53,10 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"steps_per_cycle", "", K::integer, "", "", "time steps per flapping cycle"},
       ResultDefinition{"cycles", "", K::integer, "", "", "flapping cycles of the case"},
       ResultDefinition{"dt_s", "s", K::number, "%.6g", "", "time step"},
-      ResultDefinition{"bodies", "", K::integer, "", "", "bodies of the chain (1: rigid wing)"},
+      ResultDefinition{"structure_kind", "", K::text, "", "",
+                       "the case's structure.kind: \"rigid\", \"flexible\" (the bar chain) or \"fem\" (the wing's FEM)"},
+      ResultDefinition{"bodies", "", K::integer, "", "", "bodies of the chain (1: rigid wing and FEM)"},
+      ResultDefinition{"fem_nodes", "", K::integer, "", "", "nodes of the FEM structure (kind = \"fem\")"},
       ResultDefinition{"spring_scale", "", K::number, "%.6g", "",
                        "factor on every joint spring (flapsim run --spring-scale)"},
       ResultDefinition{"inputs_hash", "", K::text, "", "",
@@ -135,10 +138,10 @@ inline constexpr auto kRunResults = [] {
       // The flexible wing's deflection (chains with joints).
       ResultDefinition{"peak_tip_bend_deg", "deg", K::number, "%.1f", "",
                        "largest |Σ (bend − rest bend)| over the joints during the run: the tip's bend "
-                       "relative to the base (flexible wing)"},
+                       "relative to the base (flexible wing); the FEM's: the tip section's (fsi::StructureReadout)"},
       ResultDefinition{"peak_tip_twist_deg", "deg", K::number, "%.1f", "",
                        "largest |Σ (twist − rest twist)| over the joints during the run: the tip's twist "
-                       "relative to the base (flexible wing)"},
+                       "relative to the base (flexible wing); the FEM's: the tip section's (fsi::StructureReadout)"},
       // The numerics.
       ResultDefinition{"mean_coupling_iterations", "", K::number, "%.2f", "iterations",
                        "lattice solves per step, mean over the run"},

@@ -31,6 +31,16 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
     s.description = "rigid wing (one body welded to the base)";
     return s;
   }
+  if (c.structure.kind == Kind::Fem) {
+    // The FEM is built by the setup (fem_structure_setup.hpp); the rigid chain of the wing
+    // stands for it where a chain is read (its outline length, the chain-only warnings).
+    if (!wing)
+      throw InputError(c.file, c.line_of("structure.kind"), "structure.kind",
+                       "the FEM structure is built from the wing file: name one with 'wing'");
+    s.chain = make_rigid_chain(*wing);
+    s.description = "the wing's FEM (geometrically nonlinear shells and veins)";
+    return s;
+  }
   const std::string path = !chain_override.empty() ? chain_override : c.chain_file;
   if (!path.empty()) {
     s.chain = io::read_chain_file(path, &s.chain_fem);

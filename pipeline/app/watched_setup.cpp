@@ -11,6 +11,7 @@ bool reduces_wing_in_process(const io::Case& c, const std::string& chain_file) {
 }
 
 std::string setup_stage_name(const io::Case& c, const std::string& chain_file) {
+  if (c.structure.kind == io::Case::Structure::Kind::Fem) return "setup (the wing's FEM)";
   return reduces_wing_in_process(c, chain_file) ? "setup (the wing's FEM, reduction and modes)" : "setup";
 }
 

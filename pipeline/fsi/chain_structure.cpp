@@ -2,9 +2,11 @@
 
 #include <numbers>
 
+#include "mbd/chain_energy.hpp"
 #include "mbd/chain_kinematics.hpp"
 #include "mbd/convergence_failure.hpp"
 #include "pipeline/fsi/load_transfer.hpp"
+#include "pipeline/fsi/phase_analysis.hpp"
 
 namespace flapsim::fsi {
 
@@ -104,6 +106,29 @@ const ChainStructureModel& chain_structure(const StructureModel& model) {
 const ChainStructureData& chain_structure(const StructureData& data) {
   if (const auto* c = dynamic_cast<const ChainStructureData*>(&data)) return *c;
   throw std::logic_error("chain_structure: the run's structure is not a bar chain");
+}
+
+StructureReadout ChainStructureData::readout() const {
+  const mbd::ChainModel& c = model_.chain;
+  StructureReadout r;
+  const auto relative = [&](int body) -> Eigen::Matrix3d {
+    return chain.bodies[static_cast<std::size_t>(body)].rotation * c.root_rotation.transpose();
+  };
+  r.tip_rotation = relative(c.num_bodies() - 1);
+  r.outer_rotation = relative(outer_body(c));
+  if (state.q.size() > 0) {
+    const Eigen::VectorXd deflection = state.q - c.rest_angles();
+    for (Eigen::Index k = 0; k + 1 < deflection.size(); k += 2) {
+      r.tip_bend += deflection(k);
+      r.tip_twist += deflection(k + 1);
+    }
+  }
+  const mbd::BasePose pose = model_.base_motion(time());
+  const mbd::BaseReaction reaction = mbd::base_reaction(c, chain, pose, loads);
+  r.drive_force = reaction.force;
+  r.drive_moment = reaction.moment;
+  r.drive_power = mbd::base_power(c, chain, pose, loads);
+  return r;
 }
 
 }  // namespace flapsim::fsi

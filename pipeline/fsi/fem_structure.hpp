@@ -76,6 +76,8 @@ class FemStructureData : public StructureData {
   int interface_size() const override { return 3 * model_.corotational.num_nodes(); }
   long split_steps() const override { return 0; }
   int max_step_pieces() const override { return 1; }
+  StructureReadout readout() const override;  // fem_readout.cpp
+  void joint_angles(Eigen::VectorXd& q) const override { q.resize(0); }
 
   /// The FEM's current (trial, after solve; else accepted) state.
   const fem::DynamicsData& dynamics() const { return *dynamics_; }

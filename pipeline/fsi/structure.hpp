@@ -42,6 +42,28 @@ class StructureFailure : public std::runtime_error {
 
 class StructureData;
 
+/// What a run records of a structure at its accepted state (history.csv, summary.json),
+/// defined alike for every structure so that runs compare column by column (docs/fsi.md,
+/// "Outputs"). Sections: the chain's last body and its outer body (the one at 5/6 of the
+/// length); the FEM's best-fit rigid rotation of its nodes in the outer tenth of the span
+/// and in the band ±R/20 about 5/6 of the span (fem_readout.cpp).
+struct StructureReadout {
+  /// Rotation of the tip section, ground ← wing frame W, relative to its undeformed
+  /// orientation (the base's rotation for an undeformed wing) [-].
+  Eigen::Matrix3d tip_rotation = Eigen::Matrix3d::Identity();
+  /// The same for the outer section [-].
+  Eigen::Matrix3d outer_rotation = Eigen::Matrix3d::Identity();
+  /// The tip's bend and twist relative to the base [rad]: the chain's sums of the joints'
+  /// bend and twist deflections; the FEM's tip section rotation relative to the base,
+  /// R_Wᵀ R_tip = Rx(bend) Ry(twist) (the chain's joint convention, mbd/chain_model.hpp).
+  double tip_bend = 0.0, tip_twist = 0.0;
+  /// Force [N] and moment about the pivot [N m] the base exerts on the wing, ground frame
+  /// (inertial, aerodynamic, gravity and point loads together), and the power it supplies,
+  /// ω·M + v·F at the pivot [W].
+  Eigen::Vector3d drive_force = Eigen::Vector3d::Zero(), drive_moment = Eigen::Vector3d::Zero();
+  double drive_power = 0.0;
+};
+
 /// What a structure is (constant during a run).
 class StructureModel {
  public:
@@ -111,6 +133,12 @@ class StructureData {
   /// (step halving), and the most pieces one step needed (1: none split).
   virtual long split_steps() const = 0;
   virtual int max_step_pieces() const = 0;
+
+  /// The run's record of the accepted state (not used by the coupling).
+  virtual StructureReadout readout() const = 0;
+  /// The structure's joint angles for history.csv [rad] (the chain's Φ: bend, twist per
+  /// jointed body); empty for a structure without joints (a rigid wing, the FEM).
+  virtual void joint_angles(Eigen::VectorXd& q) const = 0;
 };
 
 }  // namespace flapsim::fsi

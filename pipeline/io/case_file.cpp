@@ -86,28 +86,50 @@ Case::Air read_air(const TomlTable& root) {
 }
 
 Case::Structure read_structure(const TomlTable& root) {
+  using Kind = Case::Structure::Kind;
   Case::Structure s;
   const TomlTable t = root.get_table("structure");
-  t.expect_only({"kind", "bodies", "gravity", "initial_angles_deg", "initial_rates_deg_per_s"});
+  t.expect_only({"kind", "bodies", "gravity", "initial_angles_deg", "initial_rates_deg_per_s", "element_size_mm",
+                 "vein_element_size_mm", "stiffness_damping_s"});
   s.kind = t.get_choice("kind", kStructureKindNames);
-  if (s.kind == Case::Structure::Kind::Rigid) {
+  if (s.kind == Kind::Rigid) {
     s.bodies = t.get_int("bodies", 1, Bounds::closed(1, 1000));
     if (s.bodies != 1)
       t.fail("bodies", "a rigid wing is one body (found " + std::to_string(s.bodies) +
                            "): omit bodies, or set kind = \"flexible\" for a chain of bodies");
-  } else
+  } else if (s.kind == Kind::Flexible) {
     s.bodies = t.get_int("bodies", Bounds::closed(2, 1000));
+  } else {
+    // The FEM has no bodies: a chain's count would say nothing about it.
+    if (t.has("bodies"))
+      t.fail("bodies", "kind = \"fem\" integrates the wing's own FEM, which has no bodies: omit bodies "
+                       "(the mesh follows the wing file, or element_size_mm)");
+    s.bodies = 1;
+    s.fem_element_size = 1e-3 * t.get_double("element_size_mm", 0.0, Bounds::closed(1e-3, 1e3));
+    s.fem_vein_element_size = 1e-3 * t.get_double("vein_element_size_mm", 0.0, Bounds::closed(1e-3, 1e3));
+    s.fem_stiffness_damping = t.get_double("stiffness_damping_s", 0.0, Bounds::closed(0.0, 1.0));
+  }
+  if (s.kind != Kind::Fem)
+    for (const char* key : {"element_size_mm", "vein_element_size_mm", "stiffness_damping_s"})
+      if (t.has(key)) t.fail(key, "a key of the FEM structure (kind = \"fem\"); this case's kind has no FEM");
   if (t.has("bodies")) s.bodies_line = t.line_of("bodies");
   if (t.has("gravity")) {
     const auto g = t.get_doubles("gravity");
     if (g.size() != 3)
       t.fail("gravity", "expected [g_x, g_y, g_z] in m/s² (3 numbers), found " + std::to_string(g.size()));
     s.gravity = Eigen::Vector3d(g[0], g[1], g[2]);
+    if (s.kind == Kind::Fem && s.gravity.norm() > 0.0)
+      t.fail("gravity", "the FEM structure does not take gravity yet (docs/fsi.md, \"The FEM as the structure\"); "
+                        "run the chain (kind = \"flexible\") or leave gravity out (an insect wing's weight is "
+                        "small against its inertial loads)");
   }
   for (const char* key : {"initial_angles_deg", "initial_rates_deg_per_s"}) {
     if (!t.has(key)) continue;
-    if (s.kind == Case::Structure::Kind::Rigid)
+    if (s.kind == Kind::Rigid)
       t.fail(key, "a rigid wing has no joints: give initial angles for a flexible structure");
+    if (s.kind == Kind::Fem)
+      t.fail(key, "the FEM structure starts at rest relative to its base, undeformed; joint angles are "
+                  "the bar chain's (kind = \"flexible\")");
     std::vector<double> v = t.get_doubles(key, Bounds::any(), 1);
     for (double& x : v) x *= kDegToRad;
     const bool angles = std::string_view(key) == "initial_angles_deg";
@@ -400,6 +422,15 @@ Case read_case(TomlTable root) {
     c.output.vtk_every = out->get_int("vtk_every", c.output.vtk_every, Bounds::non_negative());
   }
   const auto loads = root.get_tables("loads");
+  // Point loads and markers name the chain's bodies; the FEM structure has none.
+  if (c.structure.kind == Case::Structure::Kind::Fem) {
+    if (!loads.empty())
+      loads.front().fail("body", "point loads act on the bodies of a chain; the FEM structure (kind = \"fem\") "
+                                 "has none: remove [[loads]] or run the chain (kind = \"flexible\")");
+    if (const auto markers = root.get_tables("markers"); !markers.empty())
+      markers.front().fail("body", "markers ride on the bodies of a chain; the FEM structure (kind = \"fem\") "
+                                   "has none: remove [[markers]] or run the chain (kind = \"flexible\")");
+  }
   for (const auto& t : loads) c.loads.push_back(read_load(t, c.structure.bodies));
   const auto markers = root.get_tables("markers");
   for (std::size_t i = 0; i < markers.size(); ++i)

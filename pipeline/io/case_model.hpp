@@ -78,7 +78,9 @@ struct Case {
   } air;
 
   struct Structure {
-    enum class Kind { Rigid, Flexible };
+    /// rigid: one body; flexible: the bar chain; fem: the wing's own geometrically
+    /// nonlinear FEM (docs/fsi.md, "The FEM as the structure").
+    enum class Kind { Rigid, Flexible, Fem };
     Kind kind = Kind::Rigid;
     int bodies = 1;  ///< number of chain bodies (1 for a rigid wing)
     int bodies_line = 0;  ///< line of structure.bodies in the case file (0: not given), for messages
@@ -88,6 +90,12 @@ struct Case {
     /// body (`initial_angles_deg`, `initial_rates_deg_per_s`); empty: the rest angles, at rest.
     std::vector<double> initial_angles, initial_rates;
     int initial_angles_line = 0, initial_rates_line = 0;  ///< their lines (0: not given)
+    /// kind = "fem": the FEM's element sizes [m] (`element_size_mm`, `vein_element_size_mm`;
+    /// 0: the wing file's mesh, as `flapsim modes` meshes it).
+    double fem_element_size = 0.0, fem_vein_element_size = 0.0;
+    /// kind = "fem": co-rotational stiffness-proportional (Rayleigh) damping a₁ [s]
+    /// (`stiffness_damping_s`; 0: none).
+    double fem_stiffness_damping = 0.0;
   } structure;
 
   struct Numerics {
@@ -151,8 +159,10 @@ inline constexpr double kHoverFarWakeCyclesMax = 0.625;
 
 /// The names the case file gives the choices above, each with its value
 /// (wings::TomlTable::get_choice reads them, wings::choice_name names a value).
-inline constexpr std::array<std::pair<std::string_view, Case::Structure::Kind>, 2> kStructureKindNames{
-    {{"rigid", Case::Structure::Kind::Rigid}, {"flexible", Case::Structure::Kind::Flexible}}};
+inline constexpr std::array<std::pair<std::string_view, Case::Structure::Kind>, 3> kStructureKindNames{
+    {{"rigid", Case::Structure::Kind::Rigid},
+     {"flexible", Case::Structure::Kind::Flexible},
+     {"fem", Case::Structure::Kind::Fem}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::Spacing>, 2> kSpacingNames{
     {{"uniform", uvlm::Spacing::Uniform}, {"cosine", uvlm::Spacing::Cosine}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::LoadMethod>, 2> kLoadMethodNames{

@@ -62,6 +62,11 @@ std::string describe_case(const Case& c) {
     s += "  air                    none (vacuum)\n";
   if (c.structure.kind == Case::Structure::Kind::Rigid)
     s += "  structure              rigid\n";
+  else if (c.structure.kind == Case::Structure::Kind::Fem)
+    s += line("  structure              the wing's FEM, geometrically nonlinear (element size %s)",
+              c.structure.fem_element_size > 0.0
+                  ? (std::to_string(c.structure.fem_element_size * 1e3).substr(0, 6) + " mm").c_str()
+                  : "of the wing file");
   else
     s += line("  structure              flexible, %d bodies", c.structure.bodies);
   const auto& n = c.numerics;

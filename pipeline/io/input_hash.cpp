@@ -14,7 +14,7 @@ namespace flapsim::io {
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run; they change no result.)
-static_assert(sizeof(Case) == 1400, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1424, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344, "wings::Wing changed: add the new field to canonical_inputs()");
@@ -120,6 +120,11 @@ void case_fields(Canonical& out, const Case& c) {
     out.line("structure.initial_angles", c.structure.initial_angles[i]);
   for (std::size_t i = 0; i < c.structure.initial_rates.size(); ++i)
     out.line("structure.initial_rates", c.structure.initial_rates[i]);
+  if (c.structure.kind == Case::Structure::Kind::Fem) {  // only then: earlier fingerprints stay
+    out.line("structure.element_size", c.structure.fem_element_size);
+    out.line("structure.vein_element_size", c.structure.fem_vein_element_size);
+    out.line("structure.stiffness_damping", c.structure.fem_stiffness_damping);
+  }
   const Case::Numerics& n = c.numerics;
   out.line("numerics.steps_per_cycle", n.steps_per_cycle);
   out.line("numerics.cycles", n.cycles);

@@ -78,6 +78,8 @@ class HeavePlateData : public fsi::StructureData {
   int interface_size() const override { return 1; }
   long split_steps() const override { return 0; }
   int max_step_pieces() const override { return 1; }
+  fsi::StructureReadout readout() const override { return {}; }
+  void joint_angles(Eigen::VectorXd& q) const override { q.resize(0); }
 
   HeaveState accepted, trial, iterate, pose;
   double force = 0.0;  // F_z of the current loads [N]

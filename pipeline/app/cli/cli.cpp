@@ -13,6 +13,7 @@
 #include "pipeline/app/cli/exit_status.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
+#include "wings/toml_reader.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "wings/input_error.hpp"
@@ -38,13 +39,14 @@ const io::Case& print_case_warnings(const io::Case& c) {
 }
 
 void warn_unused_structure_options(const io::Case& c, const std::string& chain_file, double spring_scale) {
-  if (c.structure.kind != io::Case::Structure::Kind::Rigid) return;
+  if (c.structure.kind == io::Case::Structure::Kind::Flexible) return;
+  const std::string kind(wings::choice_name(io::kStructureKindNames, c.structure.kind));
   if (!chain_file.empty())
-    std::fprintf(stderr, "flapsim: warning: --chain %s is not used: %s says structure.kind = \"rigid\"\n",
-                 chain_file.c_str(), c.file.c_str());
+    std::fprintf(stderr, "flapsim: warning: --chain %s is not used: %s says structure.kind = \"%s\"\n",
+                 chain_file.c_str(), c.file.c_str(), kind.c_str());
   if (spring_scale != 1.0)
-    std::fprintf(stderr, "flapsim: warning: --spring-scale is not used: %s says structure.kind = \"rigid\"\n",
-                 c.file.c_str());
+    std::fprintf(stderr, "flapsim: warning: --spring-scale is not used: %s says structure.kind = \"%s\"\n",
+                 c.file.c_str(), kind.c_str());
 }
 
 // The text of an error as printed: every run of more than 4096 bytes without a space (a

@@ -42,7 +42,7 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
     throw InputError(c.file, c.line_of("wing"), "wing",
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "
                      "file, or set air = \"none\" for a vacuum run of the chain");
-  int bodies = c.structure.bodies;
+  int bodies = c.structure.bodies, fem_dofs = 0;
   const bool reduced_in_process = app::reduces_wing_in_process(c, chain_file);
   if (reduced_in_process && wing) app::check_lattice_can_follow(c, *wing);
   {
@@ -58,10 +58,11 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
       });
     });
     bodies = setup.chain().num_bodies();
+    if (setup.fem_structure) fem_dofs = setup.fem_structure->num_dofs();
     for (const std::string& w : app::setup_warnings(c, setup))
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   }
-  const app::RunEstimate estimate = app::estimate_run(c, bodies);
+  const app::RunEstimate estimate = app::estimate_run(c, bodies, fem_dofs);
   app::refuse_if_it_cannot_fit(estimate, c);
   text += "  " + app::describe(estimate) + "\n";
   if (wing) {

@@ -61,7 +61,8 @@ void run_command(const RunArgs& a) {
   options.before_start = [&](const app::FsiSetup& setup) {
     app::record_interrupt(setup_watch.done());
     app::throw_if_interrupted("during the run's setup; nothing was written");
-    const app::RunEstimate estimate = app::estimate_run(c, setup.chain().num_bodies());
+    const app::RunEstimate estimate = app::estimate_run(
+        c, setup.chain().num_bodies(), setup.fem_structure ? setup.fem_structure->num_dofs() : 0);
     // A run estimated over an hour says so even with -q (a 170-day run once started silently).
     if ((!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9)) ||
         estimate.seconds > app::kVeryLongRunSeconds)
@@ -86,7 +87,7 @@ void run_command(const RunArgs& a) {
     // The files this run wrote (with vtk_every = 0 no series and no ParaView state; in
     // vacuum no wake): the line used to name all six whatever was written.
     std::string written;
-    for (const char* f : {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "run.pvsm"})
+    for (const char* f : {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "fem.pvd", "run.pvsm"})
       if (std::filesystem::exists(options.output_dir / f)) written += (written.empty() ? "" : ", ") + std::string(f);
     std::printf("outputs in %s (%s)\n", options.output_dir.string().c_str(), written.c_str());
   }
@@ -98,12 +99,14 @@ void add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   auto* cmd = app.add_subcommand(
       "run",
-      "Simulate a case: the wing's bar chain (or a rigid wing) flapping in air, strongly coupled "
-      "with the unsteady vortex lattice, or in vacuum (air = \"none\").\n"
+      "Simulate a case: the wing's bar chain (or a rigid wing, or the wing's own FEM with\n"
+      "structure.kind = \"fem\") flapping in air, strongly coupled with the unsteady vortex\n"
+      "lattice, or in vacuum (air = \"none\").\n"
       "Writes into DIR: history.csv (t, base and tip Euler angles, aerodynamic force, lift, CL,\n"
       "coupling iterations, joint angles, markers), summary.json (last-cycle mean lift and CL,\n"
       "rotation phases of base and tip, coupling statistics, wall time) and the ParaView series\n"
-      "wing.pvd (deformed surface: pressure jump, circulation), wake.pvd, chain.pvd.\n"
+      "wing.pvd (deformed surface: pressure jump, circulation), wake.pvd, chain.pvd (fem.pvd:\n"
+      "the FEM's deformed mesh, displacement and membrane strain).\n"
       "A flexible case takes its chain from --chain, else from the case's 'chain' key, else it\n"
       "reduces the case's wing in process to structure.bodies bodies (as 'flapsim reduce').\n"
       "Also writes run.pvsm, a ParaView state of the series and the lift (docs/fsi.md).\n"

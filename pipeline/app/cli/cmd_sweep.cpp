@@ -20,6 +20,7 @@
 #include "pipeline/app/sweep/case_table.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
+#include "wings/toml_reader.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "wings/input_error.hpp"
 
@@ -88,11 +89,12 @@ void sweep_command(const SweepArgs& a) {
   check_chain_option(a.chain_file);
   const io::Case base = print_case_warnings(io::load_case_file(a.case_file));  // each case is checked again
   warn_unused_structure_options(base, a.chain_file, a.spring_scale);
-  if (base.structure.kind == io::Case::Structure::Kind::Rigid &&
+  if (base.structure.kind != io::Case::Structure::Kind::Flexible &&
       std::find(plan.keys.begin(), plan.keys.end(), "spring_scale") != plan.keys.end())
-    std::fprintf(stderr, "flapsim: warning: spring_scale changes nothing: %s says structure.kind = \"rigid\" "
-                         "(no springs); the rows that differ only in it will be equal\n",
-                 a.case_file.c_str());
+    std::fprintf(stderr, "flapsim: warning: spring_scale changes nothing: %s says structure.kind = \"%s\" "
+                         "(no joint springs); the rows that differ only in it will be equal\n",
+                 a.case_file.c_str(),
+                 std::string(wings::choice_name(io::kStructureKindNames, base.structure.kind)).c_str());
   sweep::SweepOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;

@@ -38,7 +38,7 @@ void refuse_wing_keys_that_change_nothing(const SweepInputs& inputs, const Resol
       why = "the chain comes from the chain file " + chain +
             ", so of the wing only the outline (planform.*) reaches the run; drop the chain file to have the "
             "wing reduced in process for each value, or vary spring_scale";
-    else if (!flexible && (ends_with(key, ".youngs_modulus") || ends_with(key, ".poisson_ratio") ||
+    else if (r.c.structure.kind == io::Case::Structure::Kind::Rigid && (ends_with(key, ".youngs_modulus") || ends_with(key, ".poisson_ratio") ||
                            starts_with(key, "mesh.")))
       why = "a rigid wing uses only the wing's outline and mass, not its stiffness or mesh";
     if (!why.empty())

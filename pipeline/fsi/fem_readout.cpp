@@ -1,0 +1,98 @@
+/// \file fem_readout.cpp
+/// \brief What a run records of the FEM structure (structure.hpp, StructureReadout): its
+/// tip and outer sections as best-fit rigid rotations of the nodes in a band of the span,
+/// and the force and moment the base exerts on the wing from the balance of the whole FEM.
+///
+/// Sections. The nodes whose reference span coordinate y_W lies in the outer tenth of the
+/// span (y ≥ 0.9 R: where the last body of a 10-body chain sits) and in the band ±R/20
+/// about 5/6 R (the chain's outer body, fsi::outer_body) are fitted by the rotation that
+/// best carries their reference positions (about their centroid) onto the current ones,
+/// equal weights (Kabsch 1976; Horn 1987: the SVD of the cross-covariance). On a film wing
+/// the band's film cambers: the fit is the section's mean rotation.
+///
+/// Drive. The base acts on the wing through the driven (clamp) nodes: their reactions
+/// r = f_int + M v̇ − f_ext (with f_ext the loads of the last solve, aerodynamic and
+/// external). The free nodes' equations hold to Newton's tolerance and the co-rotational
+/// internal forces are self-equilibrated (Felippa & Haugen 2005, the projector), so the
+/// reactions' wrench is that of M v̇ − f_ext summed over all nodes: F = Σ (M v̇ − f_ext)_t,
+/// N = Σ (x − p) × (M v̇ − f_ext)_t + (M v̇ − f_ext)_r about the pivot p. It carries the
+/// wing's stiff modes as they ring: a run started from rest relative to an accelerating
+/// base excites them, and generalized-α with ρ∞ near 1 hardly damps them (docs/fsi.md,
+/// "The FEM as the structure").
+
+#include <Eigen/SVD>
+
+#include <cmath>
+
+#include "fem/nodal_rotation.hpp"
+#include "pipeline/fsi/fem_structure.hpp"
+
+namespace flapsim::fsi {
+
+namespace {
+
+constexpr double kTipBandStart = 0.9;        ///< tip section: y ≥ 0.9 R
+constexpr double kOuterBandCentre = 5.0 / 6.0;  ///< outer section: about 5/6 R ...
+constexpr double kOuterBandHalfWidth = 0.05;    ///< ... ± R/20
+
+// The rotation that best carries the reference positions of `nodes` onto their current
+// ones (both about their centroids): ground ← W for an undeformed wing at the base.
+Eigen::Matrix3d fitted_rotation(const std::vector<Eigen::Vector3d>& reference, const fem::CorotationalState& s,
+                                const std::vector<int>& nodes) {
+  if (nodes.size() < 3) return Eigen::Matrix3d::Identity();
+  Eigen::Vector3d X = Eigen::Vector3d::Zero(), x = Eigen::Vector3d::Zero();
+  for (int n : nodes) {
+    X += reference[static_cast<std::size_t>(n)];
+    x += s.position[static_cast<std::size_t>(n)];
+  }
+  X /= static_cast<double>(nodes.size());
+  x /= static_cast<double>(nodes.size());
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();  // Σ (X − X̄)(x − x̄)ᵀ
+  for (int n : nodes)
+    H += (reference[static_cast<std::size_t>(n)] - X) * (s.position[static_cast<std::size_t>(n)] - x).transpose();
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
+  D(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+  return svd.matrixV() * D * svd.matrixU().transpose();
+}
+
+}  // namespace
+
+StructureReadout FemStructureData::readout() const {
+  const fem::CorotationalModel& c = model_.corotational;
+  const fem::DynamicsData& d = *dynamics_;
+  const std::vector<Eigen::Vector3d>& X = c.reference_positions;
+  double span = 0.0;
+  for (const auto& p : X) span = std::max(span, p.y());
+  std::vector<int> tip, outer;
+  for (int n = 0; n < c.num_nodes(); ++n) {
+    const double y = X[static_cast<std::size_t>(n)].y();
+    if (y >= kTipBandStart * span) tip.push_back(n);
+    if (std::abs(y - kOuterBandCentre * span) <= kOuterBandHalfWidth * span) outer.push_back(n);
+  }
+  StructureReadout r;
+  r.tip_rotation = fitted_rotation(X, d.state, tip);
+  r.outer_rotation = fitted_rotation(X, d.state, outer);
+
+  const mbd::BasePose pose = model_.base_motion(d.time);
+  // Tip relative to the base, in W: Rx(bend) Ry(twist) (the chain's joint convention).
+  const Eigen::Matrix3d rel = pose.rotation.transpose() * r.tip_rotation;
+  r.tip_bend = std::atan2(rel(2, 1), rel(1, 1));
+  const double cb = std::cos(r.tip_bend), sb = std::sin(r.tip_bend);
+  Eigen::Matrix3d rx;
+  rx << 1.0, 0.0, 0.0, 0.0, cb, -sb, 0.0, sb, cb;
+  const Eigen::Matrix3d ry = rx.transpose() * rel;
+  r.tip_twist = std::atan2(ry(0, 2), ry(0, 0));
+
+  const Eigen::VectorXd f = c.mass * d.acceleration - loads_;  // [N, N m]
+  for (int n = 0; n < c.num_nodes(); ++n) {
+    const Eigen::Vector3d force = f.segment<3>(fem::dof_index(n, fem::UX));
+    r.drive_force += force;
+    r.drive_moment += (d.state.position[static_cast<std::size_t>(n)] - pose.position).cross(force) +
+                      f.segment<3>(fem::dof_index(n, fem::RX));
+  }
+  r.drive_power = pose.angular_velocity.dot(r.drive_moment) + pose.velocity.dot(r.drive_force);
+  return r;
+}
+
+}  // namespace flapsim::fsi

@@ -1,0 +1,66 @@
+// `[structure] kind = "fem"` in a case file (docs/case_file.md, "[structure]"): its keys
+// are read in SI units, and what belongs to the chain (bodies, joint angles, point loads,
+// markers) or is not yet taken (gravity) is refused at its file, line and key.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "inline_case.hpp"
+#include "pipeline/io/case_model.hpp"
+#include "wings/input_error.hpp"
+
+namespace p = flapsim::io;
+
+namespace {
+
+const std::string kFemHead =
+    "wing = \"valid_tiny_wing.toml\"\n"                                   // 1
+    "[kinematics]\n"                                                      // 2
+    "frequency_hz = 20.0\n"                                               // 3
+    "sweep = { mean_deg = 0.0, cos_deg = [60.0] }\n"                      // 4
+    "rotation = { mean_deg = 90.0, sin_deg = [-60.0] }\n"                 // 5
+    "[structure]\n"                                                       // 6
+    "kind = \"fem\"\n";                                                   // 7
+
+}  // namespace
+
+TEST(CaseFemStructure, KeysAreReadInSiUnits) {
+  const p::Case c = case_from_text(kFemHead + "element_size_mm = 1.5\nvein_element_size_mm = 0.5\n"
+                                              "stiffness_damping_s = 2e-5\n");
+  EXPECT_EQ(c.structure.kind, p::Case::Structure::Kind::Fem);
+  EXPECT_EQ(c.structure.bodies, 1);
+  EXPECT_DOUBLE_EQ(c.structure.fem_element_size, 1.5e-3);       // mm → m
+  EXPECT_DOUBLE_EQ(c.structure.fem_vein_element_size, 0.5e-3);
+  EXPECT_DOUBLE_EQ(c.structure.fem_stiffness_damping, 2e-5);    // s
+  // Defaults: the wing file's mesh, no damping.
+  const p::Case d = case_from_text(kFemHead);
+  EXPECT_EQ(d.structure.fem_element_size, 0.0);
+  EXPECT_EQ(d.structure.fem_vein_element_size, 0.0);
+  EXPECT_EQ(d.structure.fem_stiffness_damping, 0.0);
+}
+
+TEST(CaseFemStructure, WhatBelongsToTheChainIsRefusedAtItsLineAndKey) {
+  struct Bad {
+    std::string text;
+    int line;
+    std::string key;
+  };
+  const Bad cases[] = {
+      {kFemHead + "bodies = 10\n", 8, "structure.bodies"},
+      {kFemHead + "initial_angles_deg = [1.0, 2.0]\n", 8, "structure.initial_angles_deg"},
+      {kFemHead + "gravity = [0.0, 0.0, -9.81]\n", 8, "structure.gravity"},
+      {kFemHead + "element_size_mm = 0.0\n", 8, "structure.element_size_mm"},
+      {kFemHead + "stiffness_damping_s = -1e-5\n", 8, "structure.stiffness_damping_s"},
+      {kFemHead + "[[loads]]\nbody = 1\npoint = [0, 0, 0]\nforce = [0, 0, 1]\n", 9, "loads[0].body"},
+      {kFemHead + "[[markers]]\nname = \"tip\"\nbody = 1\npoint = [0, 0, 0]\n", 10, "markers[0].body"},
+      // and the FEM's keys in a chain's case
+      {kFemHead.substr(0, kFemHead.find("kind")) + "kind = \"flexible\"\nbodies = 3\nelement_size_mm = 1.0\n", 9,
+       "structure.element_size_mm"},
+  };
+  for (const auto& b : cases) {
+    const flapsim::InputError e = error_of(b.text);
+    EXPECT_EQ(e.line(), b.line) << b.text << "\n" << e.what();
+    EXPECT_EQ(e.key(), b.key) << b.text << "\n" << e.what();
+    EXPECT_EQ(e.file().find("inline_case.toml") != std::string::npos, true) << e.what();
+  }
+}
