@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include "reduction/tip_loads.hpp"
 
 namespace flapsim::reduction {
 
@@ -133,7 +136,6 @@ ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
     }
   const SectionSampler edge = analysis.sampler({out.measure_s}, 0.25 * a);
   const SectionMotion f_force = edge.sample(0, analysis.uz().col(kForceOnAxis));
-  const SectionMotion f_moment = edge.sample(0, analysis.uz().col(kBendingMoment));
   const SectionMotion f_torque = edge.sample(0, analysis.uz().col(kTorque));
   // The FEM read in the chain's coordinates: its station motion u = Aᵀ x under the load
   // case mapped to joint angles Φ = T u, the map that defines K (joint_stiffness.hpp).
@@ -156,14 +158,52 @@ ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
   // The force case is a force on the axis (n = 0) at the zone's centroid span.
   const Eigen::VectorXd q_force = lin.static_response(lin.generalized_force(
       b_load, p_load, Eigen::Vector3d(0.0, 0.0, w[kForceOnAxis].force_z), Eigen::Vector3d::Zero()));
-  const Eigen::VectorXd q_moment = lin.static_response(lin.generalized_force(
-      b_load, p_load, Eigen::Vector3d::Zero(), Eigen::Vector3d(w[kBendingMoment].moment_n, 0.0, 0.0)));
   const Eigen::VectorXd q_torque = lin.static_response(lin.generalized_force(
       b_load, p_load, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, w[kTorque].moment_s, 0.0)));
   out.tip_deflection = {lin.displacement(b_meas, p_meas, fem_joint_angles(kForceOnAxis)).z(),
                         lin.displacement(b_meas, p_meas, q_force).z(), 0.0, f_force.w};
-  out.tip_bending_rotation = {lin.rotation(b_meas, fem_joint_angles(kBendingMoment)).x(),
-                              lin.rotation(b_meas, q_moment).x(), 0.0, f_moment.theta};
+  // The bending rotation is read where its sign is certain: the rotation conjugate to the
+  // load, on both sides, for a moment M_n on the chain's tip body (docs/reduction.md, "A tip
+  // moment on a film tip"). Read at the measuring body, as the two rows above, the tip-zone
+  // moment's rotation took the sign of whatever the stations there saw: on a film wing the
+  // film, which the couple twists about the rod (a 75 mm rod-and-film wing: FEM −1.6e-4 rad at
+  // 6 bodies under the positive 1e-6 N m, rows −36 … −131 %). The FEM: f the moment spread over
+  // the tip body's strip by mass, as a station spreads its loads (station_compliance.hpp),
+  // θ = fᵀ K⁻¹ f / M_n; the chain: its generalized force Q of the same moment on the same
+  // body (the strip's nodal forces are that moment: Σ f = 0, Σ f (s − s_j) = M_n,
+  // Σ f n = 0), θ = Qᵀ K_c⁻¹ Q / M_n, the tip body's rotation. Both are positive (K and K_c
+  // positive definite) and both the same thing, twice the strain energy over M_n; the
+  // chain's equals the FEM's under the station loads Tᵀ Q of the same Q (exact at the
+  // stations), so the row shows how the FEM takes the moment spread over the body against
+  // how the chain's stations take it.
+  const int b_tip = nb - 1;
+  const double s_body = a * b_tip;  // the tip body's inboard joint [m]
+  {
+    const Eigen::Index nn = analysis.nodes().cols();
+    Eigen::VectorXd mass(nn);
+    std::vector<int> strip;
+    for (Eigen::Index i = 0; i < nn; ++i) {
+      const int d = fem::dof_index(static_cast<int>(i), fem::UZ);
+      mass[i] = analysis.system().mass.coeff(d, d);
+      if (!analysis.clamped()[static_cast<std::size_t>(i)] && analysis.s()[i] >= s_body)
+        strip.push_back(static_cast<int>(i));
+    }
+    const double m_n = w[kBendingMoment].moment_n;
+    const Eigen::VectorXd f_body =
+        weighted_wrench_load(strip, analysis.s(), analysis.n(), mass, s_body, 0.0, TipWrench{0.0, m_n, 0.0});
+    double theta_fem = std::numeric_limits<double>::quiet_NaN(), theta_fit = theta_fem;
+    if (f_body.allFinite()) {
+      const Eigen::VectorXd x_body = analysis.solve(f_body);
+      theta_fem = f_body.dot(x_body) / m_n;
+      Eigen::VectorXd uz(nn);
+      for (Eigen::Index i = 0; i < nn; ++i) uz[i] = x_body[fem::dof_index(static_cast<int>(i), fem::UZ)];
+      theta_fit = analysis.sampler({s_body + 0.5 * a}, 0.25 * a).sample(0, uz).theta;
+    }
+    const Eigen::VectorXd q_tip = lin.generalized_force(b_tip, Eigen::Vector3d(0.0, s_body + 0.5 * a, 0.0),
+                                                        Eigen::Vector3d::Zero(), Eigen::Vector3d(m_n, 0.0, 0.0));
+    out.tip_bending_rotation = {theta_fem, q_tip.dot(lin.static_response(q_tip)) / m_n, 0.0, theta_fit};
+  }
+  out.bending_body_s = s_body;
   out.tip_twist = {lin.rotation(b_meas, fem_joint_angles(kTorque)).y(), lin.rotation(b_meas, q_torque).y(), 0.0,
                    f_torque.phi};
   for (StaticMatch* s : {&out.tip_deflection, &out.tip_bending_rotation, &out.tip_twist})

@@ -44,10 +44,15 @@ struct ChainFemComparison {
   int num_bodies = 0;
   double fem_mass = 0.0, chain_mass = 0.0;  ///< [kg]
   ModeMatch bending, torsion;  ///< the FEM's first bending / torsion mode, paired by MAC
-  double measure_s = 0.0;           ///< axis position of the static comparison [m]
-  StaticMatch tip_deflection;       ///< w under the tip force on the axis
-  StaticMatch tip_bending_rotation; ///< θ under the tip bending moment
-  StaticMatch tip_twist;            ///< φ under the tip torque
+  double measure_s = 0.0;           ///< axis position of the deflection and twist rows [m]
+  StaticMatch tip_deflection;       ///< w under the tip force on the axis, at measure_s
+  /// θ conjugate to a bending moment M_n on the chain's tip body, on both sides: the FEM's
+  /// fᵀ K⁻¹ f / M_n for the moment spread over the tip body's strip by mass, the chain's
+  /// Qᵀ K_c⁻¹ Q / M_n (its tip body's rotation); positive by construction on both. Beside
+  /// it (fem_section_fit) the section fit's θ at the tip body's mid-span under that load.
+  StaticMatch tip_bending_rotation;
+  double bending_body_s = 0.0;      ///< inboard joint of the tip body, where that moment's strip starts [m]
+  StaticMatch tip_twist;            ///< φ under the tip torque, at measure_s
   std::vector<double> fem_hz;       ///< all FEM modes [Hz]
   std::vector<std::string> fem_kinds;        ///< from the stations: "bending", "torsion", "film"
   std::vector<std::string> fem_shape_kinds;  ///< fem::classify_modes (strip fits of the whole shape)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -79,6 +80,29 @@ Eigen::VectorXd tip_load_vector(const TipZone& zone, const Eigen::VectorXd& s,
   const Eigen::VectorXd f = a.transpose() * lambda;
   Eigen::VectorXd load = Eigen::VectorXd::Zero(6 * s.size());
   for (int r = 0; r < m; ++r) load[6 * zone.nodes[static_cast<std::size_t>(r)] + 2] = f[r];
+  return load;
+}
+
+Eigen::VectorXd weighted_wrench_load(const std::vector<int>& nodes, const Eigen::VectorXd& s,
+                                     const Eigen::VectorXd& n, const Eigen::VectorXd& weights, double s_ref,
+                                     double n_ref, const TipWrench& wrench) {
+  const auto m = static_cast<Eigen::Index>(nodes.size());
+  Eigen::MatrixX3d b(m, 3);
+  Eigen::VectorXd w(m);
+  for (Eigen::Index r = 0; r < m; ++r) {
+    const int i = nodes[static_cast<std::size_t>(r)];
+    b.row(r) << 1.0, s[i] - s_ref, -(n[i] - n_ref);
+    w[r] = weights[i];
+  }
+  const Eigen::Matrix3d g = b.transpose() * w.asDiagonal() * b;
+  const Eigen::Vector3d rhs(wrench.force_z, wrench.moment_n, wrench.moment_s);
+  Eigen::Vector3d lambda = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(g);
+  if (ldlt.info() == Eigen::Success && ldlt.isPositive() && ldlt.vectorD().minCoeff() > 1e-12 * ldlt.vectorD().maxCoeff())
+    lambda = ldlt.solve(rhs);
+  const Eigen::VectorXd f = w.asDiagonal() * (b * lambda);
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(6 * s.size());
+  for (Eigen::Index r = 0; r < m; ++r) load[6 * nodes[static_cast<std::size_t>(r)] + 2] = f[r];
   return load;
 }
 

@@ -45,6 +45,22 @@ TipZone make_tip_zone(const Eigen::VectorXd& s, const Eigen::VectorXd& n, double
 Eigen::VectorXd tip_load_vector(const TipZone& zone, const Eigen::VectorXd& s,
                                 const Eigen::VectorXd& n, const TipWrench& wrench);
 
+/// \brief Out-of-plane nodal forces on \p nodes weighted by \p weights, as a station spreads
+/// its load over its band (RBE3-like, station_compliance.hpp): f = W B (BᵀWB)⁻¹ g with B rows
+/// [1, s − s_ref, −(n − n_ref)] and g = (F_z, M_n, M_s), so that Σ f = F_z,
+/// Σ f (s − s_ref) = M_n, −Σ f (n − n_ref) = M_s. Used for a moment spread over the chain's
+/// tip body by mass (reduction_report.cpp; docs/reduction.md, "A tip moment on a film tip").
+/// \param nodes    loaded nodes
+/// \param s, n     axis coordinates of all nodes [m]
+/// \param weights  weight of every node (e.g. its u_z mass) [any unit, ≥ 0]
+/// \param s_ref, n_ref  reference point of the wrench [m]
+/// \param wrench   the resultant about the reference point
+/// \return a full load vector (6 DOF per node, only u_z entries set) [N]; non-finite entries
+///         when the weighted nodes cannot carry the wrench (fewer than three, or on one line)
+Eigen::VectorXd weighted_wrench_load(const std::vector<int>& nodes, const Eigen::VectorXd& s,
+                                     const Eigen::VectorXd& n, const Eigen::VectorXd& weights, double s_ref,
+                                     double n_ref, const TipWrench& wrench);
+
 /// \brief The wrench of a force F_z applied at chordwise position \p n_point (at the
 /// zone's centroid span position).
 /// \param zone      the tip zone

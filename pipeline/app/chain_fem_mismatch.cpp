@@ -15,25 +15,29 @@ bool misses_fem_static(const reduction::StaticMatch& m) {
 
 std::string static_mismatch_warning(const reduction::ChainFemComparison& c, const std::string& report) {
   std::string missed;
+  char at_measure[48], at_body[64];
+  std::snprintf(at_measure, sizeof at_measure, " at s = %.2f mm", c.measure_s * 1e3);
+  std::snprintf(at_body, sizeof at_body, " (from s = %.2f mm)", c.bending_body_s * 1e3);
   struct Row {
     const char* name;
+    const char* where;
     const char* unit;
     const reduction::StaticMatch* m;
   };
-  for (const Row& r : {Row{"tip deflection under the tip force", "m", &c.tip_deflection},
-                       Row{"bending rotation under the tip moment", "rad", &c.tip_bending_rotation},
-                       Row{"twist under the tip torque", "rad", &c.tip_twist}}) {
+  // The bending row is the rotation conjugate to a moment spread over the chain's tip body,
+  // on both sides; the others are read at the measuring body (docs/reduction.md).
+  for (const Row& r : {Row{"tip deflection under the tip force", at_measure, "m", &c.tip_deflection},
+                       Row{"bending rotation of the tip body under a moment spread over it", at_body, "rad",
+                           &c.tip_bending_rotation},
+                       Row{"twist under the tip torque", at_measure, "rad", &c.tip_twist}}) {
     if (!misses_fem_static(*r.m)) continue;
-    char text[200];
-    std::snprintf(text, sizeof text, "%s%s %+.1f %% (chain %.4g %s, FEM %.4g %s)", missed.empty() ? "" : "; ", r.name,
-                  100.0 * r.m->relative_error, r.m->chain, r.unit, r.m->fem, r.unit);
+    char text[240];
+    std::snprintf(text, sizeof text, "%s%s%s %+.1f %% (chain %.4g %s, FEM %.4g %s)", missed.empty() ? "" : "; ", r.name,
+                  r.where, 100.0 * r.m->relative_error, r.m->chain, r.unit, r.m->fem, r.unit);
     missed += text;
   }
   if (missed.empty()) return "";
-  char where[64];
-  std::snprintf(where, sizeof where, "%.2f mm", c.measure_s * 1e3);
-  return "the chain's static response differs from the FEM's under the same tip load, at s = " + std::string(where) +
-         ": " + missed +
+  return "the chain's static response differs from the FEM's under the same load: " + missed +
          ". The chain takes a load on a body as a wrench at its joints; the FEM answers to where on the body "
          "it acts as well: too few bodies for the load (try more --bodies), or a wing that is not one beam (film "
          "beyond a rod that carries the load chordwise, a swept wing: more bodies converge slowly), and the chain's "

@@ -22,10 +22,11 @@ inline constexpr double kChainFemMismatch = 0.10;
 /// kChainFemMismatch.
 bool misses_fem_mode(const reduction::ModeMatch& m);
 
-/// Chain against FEM, a static row of report.md (tip deflection under the tip force, bending
-/// rotation under the tip moment, twist under the tip torque, both read in the chain's
-/// coordinates): beyond this relative error [-] reduce warns. The same convention as the
-/// modes (docs/reduction.md, "Checking the chain against the FEM").
+/// Chain against FEM, a static row of report.md (tip deflection under the tip force and twist
+/// under the tip torque, read in the chain's coordinates at the measuring body; bending rotation
+/// conjugate to a moment spread over the chain's tip body, on both sides): beyond this relative
+/// error [-] reduce warns. The same convention as the modes (docs/reduction.md, "Checking the
+/// chain against the FEM").
 inline constexpr double kChainFemStaticMismatch = 0.10;
 
 /// \brief Whether the chain's static response \p m misses the FEM's by more than

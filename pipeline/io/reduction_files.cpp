@@ -174,16 +174,22 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
     s << "| " << name << " | " << m.fem << " | " << m.chain << " | " << format_percent(m.relative_error) << " | |\n";
   };
   static_row("tip deflection under the tip force on the axis [m]", c.tip_deflection);
-  static_row("tip bending rotation under the tip moment [rad]", c.tip_bending_rotation);
+  static_row("bending rotation of the tip body under a moment spread over it [rad]", c.tip_bending_rotation);
   static_row("tip twist under the tip torque [rad]", c.tip_twist);
-  s << "\nStatic responses at s = " << c.measure_s
+  s << "\nTip deflection and twist at s = " << c.measure_s
     << " m (mid-point of the outermost body clear of the loaded tip zone); the FEM load cases of the beam extraction, "
        "the same wrenches on the chain. Both read in the chain's coordinates: the FEM's station motion mapped to joint "
        "angles (the map that defines K), then the chain's kinematics at that point (docs/reduction.md, \"Checking the "
-       "chain against the FEM\"). The FEM's section fit there (every node alike, camber terms) gives w = "
-    << c.tip_deflection.fem_section_fit << " m, theta = " << c.tip_bending_rotation.fem_section_fit
-    << " rad, twist = " << c.tip_twist.fem_section_fit
-    << " rad: far from the rows' FEM values where the sections are not rigid (film beyond a rod).\n\n"
+       "chain against the FEM\"). Bending rotation: the rotation conjugate to the moment on both sides (twice the "
+       "strain energy over the moment, positive by construction), the moment spread by mass over the tip body's strip "
+       "from s = "
+    << c.bending_body_s
+    << " m on the FEM and put on the tip body of the chain (docs/reduction.md, \"A tip moment on a film tip\"). "
+       "The FEM's section fit (every node alike, camber terms) gives w = "
+    << c.tip_deflection.fem_section_fit << " m and twist = " << c.tip_twist.fem_section_fit
+    << " rad there, theta = " << c.tip_bending_rotation.fem_section_fit
+    << " rad at the tip body's mid-span: far from the rows' FEM values where the sections are not rigid (film beyond "
+       "a rod).\n\n"
     << "## FEM modes\n\nKind from the stations' motion (docs/reduction.md, \"Mode kinds from the stations\"); "
        "beam share: the share of the motion the stations' rigid sections carry; shape: the FEM's own "
        "shape classification.\n\n| mode | f [Hz] | kind | beam share | shape |\n|---|---|---|---|---|\n";
@@ -260,6 +266,7 @@ void write_reduction_summary(const fs::path& path, const reduction::BeamProperti
   j.set("tip_deflection_fem_m", c.tip_deflection.fem);
   j.set("tip_deflection_chain_m", c.tip_deflection.chain);
   j.set("tip_deflection_relative_error", c.tip_deflection.relative_error);
+  j.set("tip_rotation_body_s_m", c.bending_body_s);
   j.set("tip_rotation_fem_rad", c.tip_bending_rotation.fem);
   j.set("tip_rotation_chain_rad", c.tip_bending_rotation.chain);
   j.set("tip_rotation_relative_error", c.tip_bending_rotation.relative_error);

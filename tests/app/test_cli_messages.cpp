@@ -76,7 +76,8 @@ TEST(CliMessages, AChainThatMissesTheFemIsWarnedAbout) {
       << mav.err;
   // A plate whose first modes the chain follows (-3 % / -1 %): no mode warning. (Its static rows,
   // 2 bodies over a 10 mm plate with the loaded tip zone inside the measured body, miss by
-  // -44 % / +65 % and are warned about on their own: test_static_mismatch_warning.cpp.)
+  // -11 % (the bending rotation conjugate to a moment on the tip body; -44 % when it was read at
+  // the measured body) / +65 % and are warned about on their own: test_static_mismatch_warning.cpp.)
   const FlapsimOutcome tiny = run_flapsim_capturing_stderr(dir.path(), "reduce " + kSourceDir + "/tests/data/valid_tiny_wing.toml --bodies 2 "
                                                     "--modes 4 -o " + (dir / "tiny").string());
   EXPECT_EQ(tiny.status, 0);

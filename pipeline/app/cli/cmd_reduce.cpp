@@ -109,7 +109,8 @@ void run_reduce(const ReduceOptions& o) {
                 << "): the chain does not represent this wing well (too few bodies: try more --bodies; or a beam "
                    "cannot: a low aspect ratio, a film that cambers; docs/reduction.md); see " << (dir / "report.md").string() << "\n";
   // Static rows beyond the same bound: said as well (the swept film wing of docs/reduction.md:
-  // bending rotation under the tip moment +74 % at 6 bodies while its first bending is -2.3 %).
+  // bending rotation of the tip body under a moment on it +143 % at 6 bodies while its first
+  // bending is -2.3 %).
   const std::string statics = app::static_mismatch_warning(cmp, (dir / "report.md").string());
   if (!statics.empty()) std::cerr << "flapsim: warning: " << statics << "\n";
 }
