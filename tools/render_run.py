@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Pictures of a flapsim run without opening ParaView: PNG snapshots of the wing
 (coloured by the pressure jump), its wake (by circulation) and the bar chain at chosen
-phases of the last wingbeat, rendered offscreen with VTK's Python (python3-vtk9).
+phases of the last wingbeat, rendered offscreen with VTK's Python (python3-vtk9). A run
+of the wing's FEM (structure kind "fem", fem.pvd) shows the FEM's deformed surface
+instead, coloured by its displacement beyond the base's rigid motion (its twist and
+camber), with the veins drawn dark.
 
     xvfb-run -a tools/render_run.py out/hover_flexible                 # phases 0, 0.25, 0.5, 0.75
     xvfb-run -a tools/render_run.py out/hover_flexible --phases 0.25 -o preview.png
@@ -11,7 +14,7 @@ xvfb-run (Debian packages xvfb, xauth; tools/install_deps.sh installs them). The
 t/T of the run's kinematics (t = 0 at the start of the run, where the case's
 phase-0 angles hold), taken within the last complete wingbeat written. Each picture is
 titled with t/T, t and the lift of its frame. Exit status 0, or 2 on bad input (a folder
-without wing.pvd or chain.pvd, a phase outside [0, 1)). docs/fsi.md, "Pictures".
+without chain.pvd or fem.pvd, a phase outside [0, 1)). docs/fsi.md, "Pictures".
 """
 import argparse
 import json
@@ -140,8 +143,43 @@ def frame_title(t, frequency, phase, lift):
     return f"t/T = {s:.3f} ({where})   t = {t * 1e3:.2f} ms   lift = {lift * 1e3:.4g} mN"
 
 
+def add_fem_surface(renderer, fem):
+    """The FEM's deformed triangles coloured by |displacement_m| (white at rest to dark
+    blue at the frame's largest), its veins (lines) left to the tubes of the caller."""
+    magnitude = vtk.vtkArrayCalculator()
+    magnitude.SetInputData(fem)
+    magnitude.SetAttributeTypeToPointData()
+    magnitude.AddVectorArrayName("displacement_m")
+    magnitude.SetFunction("mag(displacement_m)")
+    magnitude.SetResultArrayName("displacement_magnitude_m")
+    magnitude.Update()
+    surface = magnitude.GetOutput()
+    top = max(surface.GetPointData().GetArray("displacement_magnitude_m").GetRange()[1], 1e-12)
+    lut = vtk.vtkLookupTable()
+    lut.SetTableRange(0.0, top)
+    lut.SetHueRange(0.6, 0.6)
+    lut.SetSaturationRange(0.0, 1.0)
+    lut.SetValueRange(1.0, 0.55)
+    lut.Build()
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputData(surface)
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("displacement_magnitude_m")
+    mapper.SetLookupTable(lut)
+    mapper.SetScalarRange(0.0, top)
+    mapper.SetColorModeToMapScalars()
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetAmbient(0.3)
+    actor.GetProperty().SetDiffuse(0.7)
+    renderer.AddActor(actor)
+
+
 def render(run, time_index, phase, args, output, view):
     wing_series, wake_series, chain_series, frequency = run
+    fem_run = read_vtp(chain_series[time_index][1]).GetPointData().GetArray("displacement_m") is not None
+    if fem_run and not args.wing_color:
+        wing_series = []  # the FEM's own surface shows the wing (the lattice lies on it)
     t, chain_file = chain_series[time_index]
     renderer = vtk.vtkRenderer()
     renderer.SetBackground(1.0, 1.0, 1.0)
@@ -185,6 +223,8 @@ def render(run, time_index, phase, args, output, view):
     chain = read_vtp(chain_file)
     if math.isnan(lift):
         lift = field(chain, "lift_N")
+    if chain.GetPointData().GetArray("displacement_m") is not None:
+        add_fem_surface(renderer, chain)
     tubes = vtk.vtkTubeFilter()
     tubes.SetInputData(chain)
     bounds = (wing if wing is not None else chain).GetBounds()
@@ -251,7 +291,9 @@ def main():
 
     chain_pvd = os.path.join(args.run, "chain.pvd")
     if not os.path.isfile(chain_pvd):
-        fail(f"{args.run}: no chain.pvd (a run with [output] vtk_every = 0 writes no pictures)")
+        chain_pvd = os.path.join(args.run, "fem.pvd")  # a run of the wing's FEM
+    if not os.path.isfile(chain_pvd):
+        fail(f"{args.run}: no chain.pvd nor fem.pvd (a run with [output] vtk_every = 0 writes no pictures)")
     for ph in args.phases:
         if not 0.0 <= ph < 1.0:
             fail(f"--phases: {ph} is outside [0, 1)")
