@@ -1,5 +1,6 @@
 #include "fem/displacement_control.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -24,6 +25,12 @@ DisplacementControlResult solve_displacement_controlled(const CorotationalModel&
   const CorotationalState start = state;
   const int node = controlled_dof / kDofsPerNode, d = controlled_dof % kDofsPerNode;
   state.position[static_cast<size_t>(node)][d] = model.reference_positions[static_cast<size_t>(node)][d] + value;
+  Eigen::Vector3d lo = model.reference_positions[0], hi = lo;
+  for (const Eigen::Vector3d& p : model.reference_positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double size = (hi - lo).norm();  // [m]
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
   lu.analyzePattern(asmb.tangent());
   DisplacementControlResult res;
@@ -49,8 +56,20 @@ DisplacementControlResult solve_displacement_controlled(const CorotationalModel&
     }
     dx = lu.solve(r);
     ++res.iterations;
-    for (Eigen::Index i = 0; i < nf; ++i) du(free[static_cast<size_t>(i)]) = dx(i);
+    double max_t = 0.0, max_r = 0.0;
+    for (Eigen::Index i = 0; i < nf; ++i) {
+      const int g = free[static_cast<size_t>(i)];
+      du(g) = dx(i);
+      double& m = g % kDofsPerNode < 3 ? max_t : max_r;
+      m = std::max(m, std::abs(dx(i)));
+    }
     apply_increment(state, du);
+    if (max_t <= opt.increment_tolerance * size && max_r <= opt.increment_tolerance) {
+      asmb.evaluate(state, f_int, false);
+      res.reaction = f_int(controlled_dof);
+      res.converged = true;
+      return res;
+    }
   }
   if (res.failure.empty())
     res.failure = "Newton did not converge in " + std::to_string(opt.max_iterations) +

@@ -28,6 +28,12 @@ struct DisplacementControlOptions {
   /// ‖r_free‖ ≤ tolerance · ‖f_int‖ over all DOFs (the internal force with the
   /// reactions of the fixed and the controlled DOFs: the force scale of the state).
   double tolerance = 1e-8;
+  /// Also converged when the largest Newton correction is below this fraction
+  /// of the model's size (bounding-box diagonal; translations) or this many
+  /// radians (rotations): where the membrane is far stiffer than the bending
+  /// (a rod: EA L²/EI ~ 1e5) the residual of a small deflection has a
+  /// round-off floor above `tolerance`.
+  double increment_tolerance = 1e-12;
 };
 
 /// Outcome of one prescribed value.
