@@ -115,6 +115,27 @@ void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bo
   });
 }
 
+namespace {
+
+/// Where p lies against the wing along node column j: true with its height η above the
+/// surface [m] (along the panel normal n) when its foot falls within the chord, on the
+/// panel (i, j) (or (i, j−1) at the tip column) whose chordwise side it projects onto.
+bool height_over_wing(const VortexLatticeModel& m, const VortexLatticeData& d, const Eigen::Vector3d& p, int j,
+                      double& eta, Eigen::Vector3d& n) {
+  const int strip = std::min(j, m.spanwise - 1);
+  for (int i = 0; i < m.chordwise; ++i) {
+    const Eigen::Vector3d a = d.nodes.col(m.node(i, j)), u = d.nodes.col(m.node(i + 1, j)) - a;
+    const double t = (p - a).dot(u) / u.squaredNorm();
+    if (t < 0.0 || t >= 1.0) continue;
+    n = d.normal.col(m.panel(i, strip));
+    eta = (p - a - t * u).dot(n);
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Vector3d& far_velocity) {
   LeadingEdgeSheet& s = d.le_sheet;
   const int ns = m.spanwise;
@@ -132,6 +153,9 @@ void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, c
     const bool ab2 = !far && m.wake_integrator == WakeIntegrator::AdamsBashforth2 && s.row_has_prev[r];
     for (std::size_t j = 0; j < n1; ++j) {
       const std::size_t k = static_cast<std::size_t>(r) * n1 + j;
+      double eta0 = 0.0;
+      Eigen::Vector3d normal;
+      const bool over = !far && height_over_wing(m, d, P.position(k), static_cast<int>(j), eta0, normal);
       const Eigen::Vector3d vel = far ? far_velocity : Eigen::Vector3d(P.u[k] + V.x(), P.v[k] + V.y(), P.w[k] + V.z());
       if (ab2) {
         P.x[k] += dt * (1.5 * vel.x() - 0.5 * s.prev_u[k]);
@@ -145,6 +169,15 @@ void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, c
       s.prev_u[k] = vel.x();
       s.prev_v[k] = vel.y();
       s.prev_w[k] = vel.z();
+      // A free vortex does not pass through the wing: a node that crossed the surface
+      // within the chord in this step is put back on its side, mirrored.
+      double eta1 = 0.0;
+      Eigen::Vector3d normal1;
+      if (over && height_over_wing(m, d, P.position(k), static_cast<int>(j), eta1, normal1) && eta0 * eta1 < 0.0) {
+        P.x[k] -= 2.0 * eta1 * normal1.x();
+        P.y[k] -= 2.0 * eta1 * normal1.y();
+        P.z[k] -= 2.0 * eta1 * normal1.z();
+      }
     }
     s.row_has_prev[r] = 1;
     s.row_age[r] += dt;

@@ -39,6 +39,10 @@
 ///  - advance: when any strip shed in the step, the release row leaves (it is convected
 ///    from where it was) and the leading-edge ring becomes sheet ring `rows` with its
 ///    circulation; a new release row is placed at the next solve.
+/// A node of the sheet that crosses the wing's surface within the chord in a step is put
+/// back on its side, mirrored: a free vortex does not pass through a solid surface
+/// (without it the sheet of a plate pitched to 45° went under the plate and the shed
+/// circulation ran away; docs/uvlm.md, "Leading-edge vortex shedding: measurements").
 /// The sheet's segments are free vortices: no force acts on them. They induce velocity on
 /// the wing (the boundary condition and the Bernoulli loads), on the trailing-edge wake
 /// and on themselves.
