@@ -153,4 +153,33 @@ TEST(LeadingEdgeShedding, PitchRampShedsOnceTheAttachedLespExceedsTheCriticalVal
   EXPECT_NEAR(s[onset_shed].t, 1.5, 0.051);
   // Shedding goes on while the attached-flow LESP stays above the critical value.
   for (int k = onset_shed; k < steps; ++k) EXPECT_TRUE(s[k].shedding) << "step " << k;
+  // The same ramp nose down is the mirror image (z → −z): the edge sheds on the other
+  // side at the same steps, LESP −0.11, the lift reversed (to round-off).
+  auto down = [&](double t) { return -alpha(t); };
+  auto down_rate = [&](double t) { return -alpha_rate(t); };
+  const auto n = run(shed, steps, down, down_rate);
+  for (int k = 0; k < steps; ++k) {
+    EXPECT_EQ(n[k].shedding, s[k].shedding) << "step " << k;
+    EXPECT_NEAR(n[k].lesp, -s[k].lesp, 1e-9) << "step " << k;
+    EXPECT_NEAR(n[k].cl, -s[k].cl, 1e-9 * (1.0 + std::abs(s[k].cl))) << "step " << k;
+  }
+}
+
+TEST(LeadingEdgeShedding, PitchRampLiftConvergesWithTheTimeStepWhileTheVortexGrows) {
+  // The ramp above (K = 0.11, LESP_crit = 0.11, 16 chordwise panels) with U Δt = 0.05 c and
+  // 0.025 c: while the leading-edge vortex grows over the plate (to α = 25°, t U/c = 3) the
+  // two CL histories agree within 4 % at every 0.25 c/U (measured: 1.538/1.578 at the
+  // onset, 2.078/2.091, 2.630/2.698, 3.258/3.348 at t U/c = 1.5, 2, 2.5, 3: at most 2.8 %).
+  // Later, as the vortex leaves the plate, neither is smooth (docs/uvlm.md).
+  const double K = 0.11, rate = 2.0 * K, top = 45.0 * kDeg, t0 = 1.0, t1 = t0 + top / rate;
+  auto alpha = [&](double t) { return t < t0 ? 0.0 : (t < t1 ? rate * (t - t0) : top); };
+  auto alpha_rate = [&](double t) { return (t >= t0 && t < t1) ? rate : 0.0; };
+  PitchingPlate coarse, fine;
+  fine.dt = 0.025;
+  const auto a = run(coarse, 60, alpha, alpha_rate), b = run(fine, 120, alpha, alpha_rate);
+  for (int k = 29; k < 60; k += 5) {  // t U/c = 1.5, 1.75, …, 3.0
+    ASSERT_NEAR(a[k].t, b[2 * k + 1].t, 1e-12);
+    EXPECT_NEAR(b[2 * k + 1].cl / a[k].cl, 1.0, 0.04) << "t U/c = " << a[k].t;
+    EXPECT_TRUE(a[k].shedding && b[2 * k + 1].shedding) << "t U/c = " << a[k].t;
+  }
 }
