@@ -107,6 +107,25 @@ void attach_wake_to_trailing_edge(const VortexLatticeModel& m, VortexLatticeData
 void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
                             bool include_bound);
 
+/// Leading-edge sheet (LeadingEdge::Shed; leading_edge_sheet.hpp, leading_edge_shedding.cpp).
+/// Place the release row from the edge's path through the air in half a step (the free
+/// stream, the edge's motion and the trailing-edge wake's velocity); clears the sheet's segments.
+void place_release_row(const VortexLatticeModel& m, VortexLatticeData& d);
+/// The sheet's segments (the leading-edge rings with d.le_sheet.current), cores as seen from `view`.
+void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, WakeView view);
+/// The part of the boundary condition's right-hand side from the segments on the first
+/// bound vortices that the leading-edge rings carry at their accepted circulation.
+void add_leading_edge_ring_to_rhs(const VortexLatticeModel& m, VortexLatticeData& d);
+/// After d.gamma = A⁻¹ r: the LESP of every strip, and the circulations with the
+/// leading-edge rings of the strips beyond LESP_crit; true when a strip shed.
+bool shed_leading_edge_vorticity(const VortexLatticeModel& m, VortexLatticeData& d);
+/// Velocity of the sheet's nodes (into d.le_sheet.nodes u/v/w) from the wake (by its tree
+/// when wake_by_tree), the far wake, the bound and trailing-edge segments and the sheet.
+void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bool wake_by_tree);
+/// Convect the sheet's free rows over d.dt (far_velocity for rows older than the far-wake
+/// age) and, when a strip shed, release the release row with the leading-edge rings.
+void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Vector3d& far_velocity);
+
 /// Compute the loads selected by the model.
 void compute_loads(const VortexLatticeModel& m, VortexLatticeData& d);
 

@@ -9,7 +9,9 @@
 namespace flapsim::uvlm::detail {
 
 /// Circulation of ring (i, j) [m²/s]; 0 outside the lattice.
+/// Ring (−1, j) is the leading-edge ring of a shedding leading edge (leading_edge_sheet.hpp).
 inline double ring_gamma(const VortexLatticeModel& m, const VortexLatticeData& d, int i, int j) {
+  if (i == -1 && j >= 0 && j < m.spanwise && d.le_sheet.active()) return d.le_sheet.current(j);
   return (i < 0 || i >= m.chordwise || j < 0 || j >= m.spanwise) ? 0.0 : d.gamma(m.panel(i, j));
 }
 

@@ -25,6 +25,8 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
     throw std::invalid_argument("vortex lattice: far-wake age must be >= 0 and excludes a frozen wake");
   if (m.far_wake_age > 0.0 && (!(m.far_wake_disk_area > 0.0) || !(m.far_wake_speed_factor > 0.0)))
     throw std::invalid_argument("vortex lattice: a convected far wake needs a disk area and speed factor > 0");
+  if (m.leading_edge == LeadingEdge::Shed && !(m.lesp_critical > 0.0))
+    throw std::invalid_argument("vortex lattice: the critical leading-edge suction parameter must be > 0");
   if (m.core_growth.enabled &&
       (!(m.core_growth.kinematic_viscosity > 0.0) || !(m.core_growth.squire_a1 >= 0.0)))
     throw std::invalid_argument("vortex lattice: core growth needs a viscosity > 0 and a1 >= 0");
@@ -78,6 +80,8 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   if (m.wake_sum == WakeSum::Tree) wake_tree.reserve(wake_segments.capacity());
   for (auto& s : ring_side) s.reserve(np);
   eval.reserve(std::max<std::size_t>(bound_n, np));
+
+  if (m.leading_edge == LeadingEdge::Shed) le_sheet.allocate(ns, np, wake_capacity + 1);
 
   loads.force.setZero(3, np);
   loads.point.setZero(3, np);
@@ -218,7 +222,9 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d, bool las
 
 void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d) {
   const int nc = m.chordwise, ns = m.spanwise;
+  const bool sheet = d.le_sheet.active();  // ring −1: the leading-edge ring (leading_edge_sheet.hpp)
   auto G = [&](int i, int j) {
+    if (sheet && i == -1 && j >= 0 && j < ns) return d.le_sheet.current(j);
     return (i < 0 || i >= nc || j < 0 || j >= ns) ? 0.0 : d.gamma(m.panel(i, j));
   };
   d.bound_segments.clear();
@@ -246,8 +252,9 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
   // comes between them (lattice_internal.hpp).
   const bool far = d.far_tree_rows > 0 && d.far_wake_segments.size() > 0;
   const bool bound_with_wake = include_bound && !far;
+  const SegmentSet& sheet = d.le_sheet.segments;  // empty unless a leading edge sheds
   auto direct = [&](bool wake, bool bound) {
-    const std::size_t segments = (wake ? d.wake_segments.size() : 0) +
+    const std::size_t segments = (wake ? d.wake_segments.size() + sheet.size() : 0) +
                                  (bound ? d.bound_segments.size() + d.trailing_edge_segments.size() : 0);
     if (segments == 0) return;
     for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
@@ -257,6 +264,7 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
         add_induced_velocity_single(d.wake_segments, x, y, z, c, u, v, w, m.core);
       else if (wake)
         add_induced_velocity(d.wake_segments, x, y, z, c, u, v, w, m.core);
+      if (wake && sheet.size() > 0) add_induced_velocity(sheet, x, y, z, c, u, v, w, m.core);
       if (bound) {
         add_induced_velocity(d.bound_segments, x, y, z, c, u, v, w, m.bound_core());
         add_induced_velocity(d.trailing_edge_segments, x, y, z, c, u, v, w, m.core);
@@ -397,11 +405,22 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   refactorise_if_moved(m, d);
   detail::attach_wake_to_trailing_edge(m, d);
   detail::build_wake_segments(m, d, detail::WakeView::Wing);
+  const bool shed = m.leading_edge == LeadingEdge::Shed;
+  if (shed) {  // the leading-edge sheet with every strip's leading-edge ring as accepted
+    detail::place_release_row(m, d);
+    d.le_sheet.current = d.le_sheet.accepted;
+    detail::build_sheet_segments(m, d, detail::WakeView::Wing);
+  }
   wake_velocity_at_collocation(m, d);
   const int np = m.panels();
   for (int k = 0; k < np; ++k)
     d.rhs(k) = -(free_stream - d.surface_velocity.col(k) + d.wake_velocity.col(k)).dot(d.normal.col(k));
+  if (shed) detail::add_leading_edge_ring_to_rhs(m, d);
   d.gamma = d.lu.solve(d.rhs);
+  if (shed && detail::shed_leading_edge_vorticity(m, d)) {  // strips beyond LESP_crit shed
+    detail::build_sheet_segments(m, d, detail::WakeView::Wing);
+    wake_velocity_at_collocation(m, d);
+  }
   detail::build_bound_segments(m, d);
   detail::compute_loads(m, d);
 }

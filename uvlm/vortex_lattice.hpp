@@ -29,6 +29,7 @@
 #include "uvlm/biot_savart.hpp"
 #include "uvlm/core_growth.hpp"
 #include "uvlm/lattice_segments.hpp"
+#include "uvlm/leading_edge_sheet.hpp"
 #include "uvlm/segment_tree.hpp"
 #include "uvlm/vortex_core.hpp"
 
@@ -59,7 +60,13 @@ enum class LoadMethod {
 enum class LeadingEdge {
   None,      ///< dropped: normal (pressure) forces only
   Attached,  ///< kept in the panel plane (potential flow: induced drag, thrust)
-  Separated  ///< its magnitude turned to the panel normal (Polhamus' suction analogy, NASA TN D-3767)
+  Separated, ///< its magnitude turned to the panel normal (Polhamus' suction analogy, NASA TN D-3767)
+  /// Kept in the panel plane while the leading-edge suction parameter (LESP) of the strip
+  /// stays below model.lesp_critical; beyond it vorticity leaves the leading edge as a
+  /// free vortex sheet of the strength that holds the LESP at the critical value
+  /// (Ramesh et al. 2014, J. Fluid Mech. 751; Hirato et al. 2021, J. Aircraft;
+  /// leading_edge_sheet.hpp)
+  Shed
 };
 
 /// What the lattice is: constant during a run.
@@ -77,6 +84,10 @@ struct VortexLatticeModel {
   WakeIntegrator wake_integrator = WakeIntegrator::AdamsBashforth2;
   LoadMethod load_method = LoadMethod::Bernoulli;
   LeadingEdge leading_edge = LeadingEdge::Attached;
+  /// The critical leading-edge suction parameter of LeadingEdge::Shed (leading_edge_sheet.hpp):
+  /// 0.11, the value of a thin flat plate at low Reynolds number of Ramesh et al. 2014
+  /// (J. Fluid Mech. 751), as the authors' own flat-plate examples use it.
+  double lesp_critical = 0.11;
   /// Evaluate the wake's direct sums in single precision: its self-induced velocity (the
   /// free-wake convection, the cost of a run) and its velocity at the wing's collocation
   /// and load points; about twice as fast, relative error ~1e-6 in these velocities (the
@@ -233,6 +244,8 @@ struct VortexLatticeData {
   Eigen::Vector3d far_tree_shift = Eigen::Vector3d::Zero();  ///< far-wake displacement since [m]
   PointSet far_targets;      ///< target points moved back by far_tree_shift (scratch)
   SegmentTree wake_tree;              ///< the tree code's storage (model.wake_sum = Tree)
+  /// The vortex sheet shed from the leading edge (model.leading_edge = Shed; empty otherwise).
+  LeadingEdgeSheet le_sheet;
   SegmentSet ring_side[4];  ///< unit-circulation ring sides for the influence matrix
   PointSet eval;
 

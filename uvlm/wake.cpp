@@ -195,6 +195,7 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
   // Velocity of every free wake node.
   auto& P = d.wake_nodes;
   P.zero_velocity();
+  bool wake_by_tree = false;  // the tree holds the whole wake (for the leading-edge sheet's nodes)
   if (m.wake_model == WakeModel::Free && first < P.size) {
     const std::size_t n = P.size - first;
     double *x = P.x.data() + first, *y = P.y.data() + first, *z = P.z.data() + first;
@@ -212,8 +213,11 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
     // Near-wing treatment, the other way round: the wake sees the bound vortices through
     // the near-wing core, so a wake node passing close to the lattice is not flung away.
     const VortexCore bound_seen_from_wake{m.core.model, std::max(m.core.radius, m.near_wing_core)};
+    // The leading-edge sheet (LeadingEdge::Shed), seen from the wake: empty otherwise.
+    if (m.leading_edge == LeadingEdge::Shed) detail::build_sheet_segments(m, d, detail::WakeView::Wake);
+    const SegmentSet& sheet = d.le_sheet.segments;
     const std::size_t segments = (by_tree ? 0 : d.wake_segments.size()) + d.bound_segments.size() +
-                                 d.trailing_edge_segments.size();
+                                 d.trailing_edge_segments.size() + sheet.size();
     // The direct sums at the wake nodes, one parallel region (lattice_internal.hpp).
     detail::for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
       const double *xi = x + i0, *yi = y + i0, *zi = z + i0;
@@ -226,8 +230,11 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
       }
       add_induced_velocity(d.bound_segments, xi, yi, zi, c, ui, vi, wi, bound_seen_from_wake);
       add_induced_velocity(d.trailing_edge_segments, xi, yi, zi, c, ui, vi, wi, m.core);
+      if (sheet.size() > 0) add_induced_velocity(sheet, xi, yi, zi, c, ui, vi, wi, m.core);
     });
+    wake_by_tree = by_tree;
   }
+  if (m.leading_edge == LeadingEdge::Shed) detail::sheet_node_velocities(m, d, wake_by_tree);
   const double dt = d.dt;
   const Eigen::Vector3d& V = d.free_stream;
   if (m.far_wake_age > 0.0 && first_free > 0) {
@@ -274,6 +281,8 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
     d.wake_row_has_prev[r] = 1;
   }
   for (int r = 0; r <= d.wake_rows; ++r) d.wake_row_age[r] += dt;
+  if (m.leading_edge == LeadingEdge::Shed)
+    detail::move_and_release_sheet(m, d, m.far_wake_age > 0.0 ? far_wake_velocity(m, d) : V);
 
   // Truncation: drop the oldest row first so the new one fits.
   if (m.max_wake_rows > 0)

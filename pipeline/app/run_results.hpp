@@ -74,7 +74,7 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"free_stream_speed_m_s", "m/s", K::number, "%.6g", "", "|U∞| (in air)"},
       ResultDefinition{"load_method", "", K::text, "", "", "load route: bernoulli or kutta_joukowski (in air)"},
       ResultDefinition{"leading_edge", "", K::text, "", "",
-                       "leading-edge model: none, attached or separated (in air)"},
+                       "leading-edge model: none, attached, separated or shed (in air)"},
       ResultDefinition{"r2", "", K::number, "%.4f", "",
                        "non-dimensional radius of gyration of the outline's area (in air)"},
       // How the run ended.

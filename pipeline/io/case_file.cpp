@@ -144,7 +144,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
   const auto t = root.find_table("numerics");
   if (!t) return n;
   t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
-                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "core_model",
+                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "lesp_critical", "core_model",
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
                   "wake_sum", "tree_tolerance", "wake_precision", "coupling", "max_coupling_iterations", "coupling_tolerance",
@@ -164,6 +164,9 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.spanwise_spacing = t->get_choice("spanwise_spacing", kSpacingNames, std::optional(both));
   n.load_method = t->get_choice("load_method", kLoadMethodNames, std::optional(n.load_method));
   n.leading_edge = t->get_choice("leading_edge", kLeadingEdgeNames, std::optional(n.leading_edge));
+  n.lesp_critical = t->get_double("lesp_critical", n.lesp_critical, Bounds{0.0, 10.0, true, false});
+  if (t->has("lesp_critical") && n.leading_edge != uvlm::LeadingEdge::Shed)
+    t->fail("lesp_critical", "the critical leading-edge suction parameter acts only with leading_edge = \"shed\"");
   n.core_model = t->get_choice("core_model", kCoreModelNames, std::optional(n.core_model));
   n.core_radius = t->get_double("core_radius", n.core_radius, Bounds{0.0, 1.0, true, false});
   n.wake_order = t->get_int("wake_order", n.wake_order, Bounds::closed(1, 2));

@@ -108,7 +108,9 @@ struct Case {
     uvlm::Spacing chordwise_spacing = uvlm::Spacing::Uniform;  ///< "uniform" | "cosine" (`spacing` sets both)
     uvlm::Spacing spanwise_spacing = uvlm::Spacing::Uniform;   ///< "uniform" | "cosine"
     uvlm::LoadMethod load_method = uvlm::LoadMethod::Bernoulli;  ///< "bernoulli" | "kutta_joukowski"
-    uvlm::LeadingEdge leading_edge = uvlm::LeadingEdge::Separated;  ///< "none" | "attached" | "separated"
+    uvlm::LeadingEdge leading_edge = uvlm::LeadingEdge::Separated;  ///< "none" | "attached" | "separated" | "shed"
+    /// Critical leading-edge suction parameter of leading_edge = "shed" (uvlm/leading_edge_sheet.hpp)
+    double lesp_critical = 0.11;
     uvlm::CoreModel core_model = uvlm::CoreModel::LambOseen;  ///< vortex core: "cutoff" | "lamb_oseen"
     double core_radius = 0.05;              ///< core radius as a fraction of the mean chord
     int wake_order = 1;                     ///< 1 | 2 (wake convection order)
@@ -167,10 +169,11 @@ inline constexpr std::array<std::pair<std::string_view, uvlm::Spacing>, 2> kSpac
     {{"uniform", uvlm::Spacing::Uniform}, {"cosine", uvlm::Spacing::Cosine}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::LoadMethod>, 2> kLoadMethodNames{
     {{"bernoulli", uvlm::LoadMethod::Bernoulli}, {"kutta_joukowski", uvlm::LoadMethod::KuttaJoukowski}}};
-inline constexpr std::array<std::pair<std::string_view, uvlm::LeadingEdge>, 3> kLeadingEdgeNames{
+inline constexpr std::array<std::pair<std::string_view, uvlm::LeadingEdge>, 4> kLeadingEdgeNames{
     {{"none", uvlm::LeadingEdge::None},
      {"attached", uvlm::LeadingEdge::Attached},
-     {"separated", uvlm::LeadingEdge::Separated}}};
+     {"separated", uvlm::LeadingEdge::Separated},
+     {"shed", uvlm::LeadingEdge::Shed}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::CoreModel>, 2> kCoreModelNames{
     {{"cutoff", uvlm::CoreModel::CutOff}, {"lamb_oseen", uvlm::CoreModel::LambOseen}}};
 inline constexpr std::array<std::pair<std::string_view, uvlm::WakeSum>, 2> kWakeSumNames{

@@ -78,6 +78,8 @@ std::string describe_case(const Case& c) {
   s += line("  loads                  %s, leading edge %s",
             std::string(wings::choice_name(kLoadMethodNames, n.load_method)).c_str(),
             std::string(wings::choice_name(kLeadingEdgeNames, n.leading_edge)).c_str());
+  if (n.leading_edge == uvlm::LeadingEdge::Shed)
+    s += line("  critical LESP          %.4g", n.lesp_critical);
   s += line("  vortex core            %s, radius %.4g mean chords",
             std::string(wings::choice_name(kCoreModelNames, n.core_model)).c_str(), n.core_radius);
   s += line("  wake                   %s, order %d, %s", n.free_wake ? "free" : "prescribed", n.wake_order,

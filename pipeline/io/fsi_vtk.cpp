@@ -59,17 +59,38 @@ PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& m, const uvlm::VortexLatt
   const int ns = m.spanwise, rows = d.wake_rows;
   const int n1 = ns + 1;
   const std::size_t nodes = rows > 0 ? static_cast<std::size_t>(rows + 1) * n1 : 0;
-  mesh.points.resize(3, static_cast<Eigen::Index>(nodes));
+  // The leading-edge sheet (leading_edge = "shed"): its node rows 0 … rows (the last the
+  // release row) and the first bound vortex's row, rings 0 … rows (the last: the
+  // leading-edge ring), after the trailing-edge wake; cell field leading_edge_sheet = 1.
+  const uvlm::LeadingEdgeSheet& le = d.le_sheet;
+  const int le_rings = le.active() && (le.rows > 0 || le.accepted.cwiseAbs().maxCoeff() > 0.0) ? le.rows + 1 : 0;
+  const std::size_t le_nodes = le_rings > 0 ? static_cast<std::size_t>(le_rings + 1) * n1 : 0;
+  mesh.points.resize(3, static_cast<Eigen::Index>(nodes + le_nodes));
   for (std::size_t k = 0; k < nodes; ++k)
     mesh.points.col(static_cast<Eigen::Index>(k)) = d.wake_nodes.position(k);
-  Eigen::VectorXd gamma(static_cast<Eigen::Index>(rows) * ns);
+  for (std::size_t k = 0; k + n1 < le_nodes; ++k)
+    mesh.points.col(static_cast<Eigen::Index>(nodes + k)) = le.nodes.position(k);
+  for (int j = 0; le_nodes > 0 && j < n1; ++j)
+    mesh.points.col(static_cast<Eigen::Index>(nodes + le_nodes - n1 + j)) = d.ring_nodes.col(m.node(0, j));
+  Eigen::VectorXd gamma(static_cast<Eigen::Index>(rows + le_rings) * ns);
   for (int r = 0; r < rows; ++r)
     for (int j = 0; j < ns; ++j) {
       const int a = r * n1 + j;
       mesh.polygons.push_back({a, a + 1, a + n1 + 1, a + n1});
       gamma(r * ns + j) = d.wake_gamma[static_cast<std::size_t>(r) * ns + j];
     }
+  for (int r = 0; r < le_rings; ++r)
+    for (int j = 0; j < ns; ++j) {
+      const int a = static_cast<int>(nodes) + r * n1 + j;
+      mesh.polygons.push_back({a, a + 1, a + n1 + 1, a + n1});
+      gamma((rows + r) * ns + j) = r < le.rows ? le.gamma[static_cast<std::size_t>(r) * ns + j] : le.accepted(j);
+    }
   mesh.cell_data.add_scalar("circulation_m2_s", gamma);
+  if (le.active()) {
+    Eigen::VectorXd sheet = Eigen::VectorXd::Zero(gamma.size());
+    sheet.tail(static_cast<Eigen::Index>(le_rings) * ns).setOnes();
+    mesh.cell_data.add_scalar("leading_edge_sheet", sheet);
+  }
   return mesh;
 }
 

@@ -34,7 +34,8 @@ struct StepValues {
 /// \brief Adds field data "step", "t_over_T", "lift_N" and "CL" to \p mesh.
 void add_step_values(PolyDataMesh& mesh, const StepValues& values);
 
-/// \brief The wake sheet (rings between shed rows, the newest row at the trailing edge).
+/// \brief The wake sheet (rings between shed rows, the newest row at the trailing edge);
+/// with leading_edge = "shed" the leading-edge sheet after it (cell field leading_edge_sheet = 1).
 PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& model,
                                const uvlm::VortexLatticeData& data, double time);
 

@@ -14,7 +14,7 @@ namespace flapsim::io {
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run; they change no result.)
-static_assert(sizeof(Case) == 1424, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1432, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344, "wings::Wing changed: add the new field to canonical_inputs()");
@@ -134,6 +134,7 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.spanwise_spacing", static_cast<int>(n.spanwise_spacing));
   out.line("numerics.load_method", static_cast<int>(n.load_method));
   out.line("numerics.leading_edge", static_cast<int>(n.leading_edge));
+  if (n.leading_edge == uvlm::LeadingEdge::Shed) out.line("numerics.lesp_critical", n.lesp_critical);
   out.line("numerics.core_model", static_cast<int>(n.core_model));
   out.line("numerics.core_radius", n.core_radius);
   out.line("numerics.wake_order", n.wake_order);

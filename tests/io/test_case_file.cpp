@@ -202,6 +202,21 @@ TEST(CaseFile, LoadModelAndSpacingKeys) {
   EXPECT_EQ(e.line(), 9);
 }
 
+TEST(CaseFile, ShedLeadingEdgeAndItsCriticalLesp) {
+  // docs/case_file.md: leading_edge = "shed" with lesp_critical in (0, 10], default 0.11
+  // (Ramesh et al. 2014's flat plate); the key with another leading-edge model is bad input.
+  const p::Case c = case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\nlesp_critical = 0.2\n");
+  EXPECT_EQ(c.numerics.leading_edge, flapsim::uvlm::LeadingEdge::Shed);
+  EXPECT_EQ(c.numerics.lesp_critical, 0.2);
+  EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\n").numerics.lesp_critical, 0.11);
+  for (const char* bad : {"leading_edge = \"shed\"\nlesp_critical = 0.0\n", "leading_edge = \"shed\"\nlesp_critical = 11\n",
+                          "leading_edge = \"separated\"\nlesp_critical = 0.2\n"}) {
+    const auto e = error_of(kHead + "[numerics]\n" + bad);  // the key on line 10
+    EXPECT_EQ(e.key(), "numerics.lesp_critical") << bad;
+    EXPECT_EQ(e.line(), 10) << bad;
+  }
+}
+
 TEST(CaseFile, WakePrecisionKey) {
   // docs/case_file.md: `wake_precision` = "single" (default) | "double" for the wake's direct sums.
   EXPECT_EQ(case_from_text(kHead).numerics.wake_precision, p::WakePrecision::Single);

@@ -1,0 +1,124 @@
+/// \file leading_edge_shedding.cpp
+/// \brief The LESP criterion in the lattice's solve (leading_edge_sheet.hpp): the LESP of
+/// each strip and the circulations with the leading-edge rings of the strips that shed.
+///
+/// Every strip's leading-edge ring first keeps the circulation it had (nothing shed:
+/// Γ* = A⁻¹ r). The strips whose |LESP| then exceeds LESP_crit (Ramesh et al. 2014, J.
+/// Fluid Mech. 751: a leading edge sheds only when its suction parameter exceeds the
+/// critical value, and then just enough to hold it there) get an increment δ_j of their
+/// leading-edge ring, which adds the column b_j (its normal velocity at the collocation
+/// points) to the system: A Γ = r − B δ, and the condition
+///     Γ(0, j) − (G_j + δ_j) = ±Γ_crit,j   (Γ_1 at ±LESP_crit, the sign of the LESP without shedding)
+/// closes it. With Γ = Γ* − A⁻¹ B δ (the influence matrix's factorisation, one solve per
+/// column) this is the small bordered system (I + [A⁻¹B]_first row) δ = Γ*_1 ∓ Γ_crit,
+/// solved exactly. A strip that exceeds LESP_crit only once its neighbours shed joins
+/// and the system is solved again (at most ns times).
+
+#include "uvlm/lattice_internal.hpp"
+#include "uvlm/leading_edge_sheet.hpp"
+#include "uvlm/vortex_lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flapsim::uvlm::detail {
+
+namespace {
+
+/// Γ_1 at LESP = 1 for strip j [m²/s]: U c (θ1 + sin θ1) / 1.13 (leading_edge_sheet.hpp).
+double unit_lesp_gamma(const VortexLatticeModel& m, const VortexLatticeData& d, int j) {
+  double chord = 0.0;
+  for (int i = 0; i < m.chordwise; ++i) chord += d.chord_length(m.panel(i, j));
+  const double first = d.chord_length(m.panel(0, j));
+  const double theta1 = std::acos(std::clamp(1.0 - 2.0 * first / chord, -1.0, 1.0));
+  const Eigen::Vector3d w =
+      d.free_stream - 0.5 * (d.node_velocities.col(m.node(0, j)) + d.node_velocities.col(m.node(0, j + 1)));
+  const Eigen::Vector3d e = d.span_tangent.col(m.panel(0, j));
+  const double speed = (w - w.dot(e) * e).norm();
+  return speed * chord * (theta1 + std::sin(theta1)) / kLespLatticeFactor;
+}
+
+/// LESP of every strip from d.gamma and the sheet's current leading-edge rings; returns
+/// whether a strip not yet shedding exceeds LESP_crit (and marks it, with its target sign).
+bool update_lesp(const VortexLatticeModel& m, VortexLatticeData& d, Eigen::VectorXd& target) {
+  LeadingEdgeSheet& s = d.le_sheet;
+  bool joined = false;
+  for (int j = 0; j < m.spanwise; ++j) {
+    const double unit = unit_lesp_gamma(m, d, j);
+    const double gamma1 = d.gamma(m.panel(0, j)) - s.current(j);
+    s.critical_gamma(j) = m.lesp_critical * unit;
+    s.lesp(j) = unit > 0.0 ? gamma1 / unit : (gamma1 == 0.0 ? 0.0 : std::copysign(HUGE_VAL, gamma1));
+    if (!s.shedding[j] && std::abs(gamma1) > s.critical_gamma(j)) {
+      s.shedding[j] = 1;
+      target(j) = std::copysign(s.critical_gamma(j), gamma1);
+      joined = true;
+    }
+  }
+  return joined;
+}
+
+/// Normal velocity at every collocation point of the unit leading-edge ring of strip j:
+/// release row R_(j+1) → R_j, legs R → first bound vortex (the wake's core, as the sheet's
+/// segments), and the segment on the first bound vortex (the bound core, as the bound segment).
+void unit_ring_column(const VortexLatticeModel& m, VortexLatticeData& d, int j) {
+  const LeadingEdgeSheet& s = d.le_sheet;
+  const std::size_t base = static_cast<std::size_t>(s.rows) * (m.spanwise + 1);
+  const Eigen::Vector3d r0 = s.nodes.position(base + j), r1 = s.nodes.position(base + j + 1);
+  const Eigen::Vector3d a0 = d.ring_nodes.col(m.node(0, j)), a1 = d.ring_nodes.col(m.node(0, j + 1));
+  const VortexCore bound = m.bound_core();
+  for (int k = 0; k < m.panels(); ++k) {
+    const Eigen::Vector3d p = d.collocation.col(k);
+    const Eigen::Vector3d v = segment_velocity(r1, r0, 1.0, p, m.core) + segment_velocity(r0, a0, 1.0, p, m.core) +
+                              segment_velocity(a1, r1, 1.0, p, m.core) + segment_velocity(a0, a1, 1.0, p, bound);
+    d.le_sheet.columns(k, j) = v.dot(d.normal.col(k));
+  }
+}
+
+}  // namespace
+
+void add_leading_edge_ring_to_rhs(const VortexLatticeModel& m, VortexLatticeData& d) {
+  const LeadingEdgeSheet& s = d.le_sheet;
+  const VortexCore bound = m.bound_core();
+  for (int j = 0; j < m.spanwise; ++j) {
+    const double g = s.accepted(j);
+    if (g == 0.0) continue;
+    const Eigen::Vector3d a0 = d.ring_nodes.col(m.node(0, j)), a1 = d.ring_nodes.col(m.node(0, j + 1));
+    for (int k = 0; k < m.panels(); ++k)
+      d.rhs(k) -= segment_velocity(a0, a1, g, d.collocation.col(k), bound).dot(d.normal.col(k));
+  }
+}
+
+bool shed_leading_edge_vorticity(const VortexLatticeModel& m, VortexLatticeData& d) {
+  LeadingEdgeSheet& s = d.le_sheet;
+  const int ns = m.spanwise;
+  s.current = s.accepted;
+  std::fill(s.shedding.begin(), s.shedding.end(), 0);
+  Eigen::VectorXd& target = s.border_rhs;
+  Eigen::VectorXd& signed_target = s.target;  // ±Γ_crit of each shedding strip
+  signed_target.setZero();
+  if (!update_lesp(m, d, signed_target)) return false;
+  s.gamma0 = d.gamma;
+  s.columns.setZero();
+  for (int pass = 0; pass <= ns; ++pass) {
+    for (int j = 0; j < ns; ++j)
+      if (s.shedding[j]) unit_ring_column(m, d, j);
+    s.response = d.lu.solve(s.columns);
+    s.border.setIdentity();
+    for (int j = 0; j < ns; ++j) {
+      target(j) = 0.0;
+      if (!s.shedding[j]) continue;
+      for (int k = 0; k < ns; ++k)
+        if (s.shedding[k]) s.border(j, k) += s.response(m.panel(0, j), k);
+      target(j) = s.gamma0(m.panel(0, j)) - s.accepted(j) - signed_target(j);
+    }
+    s.border_lu.compute(s.border);
+    s.increment = s.border_lu.solve(target);
+    d.gamma = s.gamma0;
+    d.gamma.noalias() -= s.response * s.increment;
+    s.current = s.accepted + s.increment;
+    if (!update_lesp(m, d, signed_target)) break;
+  }
+  return true;
+}
+
+}  // namespace flapsim::uvlm::detail

@@ -1,0 +1,202 @@
+/// \file leading_edge_sheet.cpp
+/// \brief The leading-edge vortex sheet (leading_edge_sheet.hpp): storage, the release row,
+/// its segments, and its convection and release at the end of a step.
+
+#include "uvlm/leading_edge_sheet.hpp"
+
+#include "uvlm/lattice_internal.hpp"
+#include "uvlm/vortex_lattice.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace flapsim::uvlm {
+
+void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
+  capacity = rings;
+  rows = 0;
+  const std::size_t n1 = static_cast<std::size_t>(ns) + 1;
+  const std::size_t node_rows = static_cast<std::size_t>(rings) + 1;
+  nodes.reserve(node_rows * n1);
+  gamma.assign(static_cast<std::size_t>(rings) * ns, 0.0);
+  prev_u.assign(node_rows * n1, 0.0);
+  prev_v.assign(node_rows * n1, 0.0);
+  prev_w.assign(node_rows * n1, 0.0);
+  row_has_prev.assign(node_rows, 0);
+  row_age.assign(node_rows, 0.0);
+  current.setZero(ns);
+  accepted.setZero(ns);
+  lesp.setZero(ns);
+  critical_gamma.setZero(ns);
+  shedding.assign(static_cast<std::size_t>(ns), 0);
+  // Rings 0 … rings (the last: the leading-edge ring): spanwise rows 0 … rings, legs of each ring.
+  segments.reserve(node_rows * static_cast<std::size_t>(ns) + node_rows * n1);
+  columns.setZero(np, ns);
+  response.setZero(np, ns);
+  border.setZero(ns, ns);
+  border_rhs.setZero(ns);
+  increment.setZero(ns);
+  target.setZero(ns);
+  gamma0.setZero(np);
+  border_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(ns);
+}
+
+namespace detail {
+
+void place_release_row(const VortexLatticeModel& m, VortexLatticeData& d) {
+  LeadingEdgeSheet& s = d.le_sheet;
+  const int ns = m.spanwise;
+  s.segments.clear();  // the edge's velocity below: the trailing-edge wake's only
+  for (int j = 0; j <= ns; ++j) d.eval.set(j, d.nodes.col(m.node(0, j)));
+  induced_at_eval_points(m, d, ns + 1, false);
+  const std::size_t base = static_cast<std::size_t>(s.rows) * (ns + 1);
+  for (int j = 0; j <= ns; ++j) {
+    const Eigen::Vector3d w = d.free_stream - d.node_velocities.col(m.node(0, j)) + d.eval.velocity(j);
+    s.nodes.set(base + j, d.nodes.col(m.node(0, j)) + 0.5 * d.dt * w);
+  }
+  s.nodes.size = base + ns + 1;
+  s.row_age[s.rows] = 0.0;
+}
+
+void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, WakeView view) {
+  LeadingEdgeSheet& s = d.le_sheet;
+  const int ns = m.spanwise, L = s.rows;
+  const std::size_t n1 = static_cast<std::size_t>(ns) + 1;
+  s.segments.clear();
+  // Ring r ≤ L (ring L: the leading-edge ring, to the first bound vortex = node row L+1).
+  auto G = [&](int r, int j) {
+    if (r < 0 || r > L || j < 0 || j >= ns) return 0.0;
+    return r == L ? s.current(j) : s.gamma[static_cast<std::size_t>(r) * ns + j];
+  };
+  auto node = [&](int q, int j) -> Eigen::Vector3d {
+    return q <= L ? s.nodes.position(static_cast<std::size_t>(q) * n1 + j) : Eigen::Vector3d(d.ring_nodes.col(m.node(0, j)));
+  };
+  auto age = [&](int q) { return q <= L ? s.row_age[q] : 0.0; };
+  const double rc0 = m.core.radius, rc0_2 = rc0 * rc0;
+  const double floor2 = view == WakeView::Wing ? m.near_wing_core * m.near_wing_core : 0.0;
+  auto ratio = [&](double g, double a) {
+    double rc2 = grown_core_radius2(m.core_growth, rc0, a, g);
+    if (a > m.near_wing_min_age) rc2 = std::max(rc2, floor2);
+    return rc0_2 / rc2;
+  };
+  auto push = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, double g, double a_age) {
+    if (g != 0.0) s.segments.push(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), g, ratio(g, a_age));
+  };
+  // Spanwise, node rows 0 … L, direction j → j+1: rear of ring q−1 minus front of ring q.
+  // (Row L+1, on the first bound vortex, is part of the bound segment there.)
+  for (int q = 0; q <= L; ++q)
+    for (int j = 0; j < ns; ++j) push(node(q, j), node(q, j + 1), G(q - 1, j) - G(q, j), age(q));
+  // Legs of ring r, column j, from node row r to r+1: root side of (r, j) minus tip side of (r, j−1).
+  for (int r = 0; r <= L; ++r)
+    for (int j = 0; j <= ns; ++j)
+      push(node(r, j), node(r + 1, j), G(r, j) - G(r, j - 1), 0.5 * (age(r) + age(r + 1)));
+}
+
+void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bool wake_by_tree) {
+  LeadingEdgeSheet& s = d.le_sheet;
+  PointSet& P = s.nodes;
+  P.zero_velocity();
+  if (m.wake_model != WakeModel::Free || P.size == 0) return;
+  const std::size_t n = P.size;
+  double *x = P.x.data(), *y = P.y.data(), *z = P.z.data(), *u = P.u.data(), *v = P.v.data(), *w = P.w.data();
+  add_far_wake_velocity(d, x, y, z, n, u, v, w);
+  if (wake_by_tree) d.wake_tree.add_induced_velocity(x, y, z, n, u, v, w);
+  const VortexCore bound_seen_from_wake{m.core.model, std::max(m.core.radius, m.near_wing_core)};
+  const std::size_t segments = (wake_by_tree ? 0 : d.wake_segments.size()) + d.bound_segments.size() +
+                               d.trailing_edge_segments.size() + s.segments.size();
+  for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
+    const double *xi = x + i0, *yi = y + i0, *zi = z + i0;
+    double *ui = u + i0, *vi = v + i0, *wi = w + i0;
+    if (!wake_by_tree) add_induced_velocity(d.wake_segments, xi, yi, zi, c, ui, vi, wi, m.core);
+    add_induced_velocity(d.bound_segments, xi, yi, zi, c, ui, vi, wi, bound_seen_from_wake);
+    add_induced_velocity(d.trailing_edge_segments, xi, yi, zi, c, ui, vi, wi, m.core);
+    add_induced_velocity(s.segments, xi, yi, zi, c, ui, vi, wi, m.core);
+  });
+}
+
+namespace {
+
+/// Where p lies against the wing along node column j: true with its height η above the
+/// surface [m] (along the panel normal n) when its foot falls within the chord, on the
+/// panel (i, j) (or (i, j−1) at the tip column) whose chordwise side it projects onto.
+bool height_over_wing(const VortexLatticeModel& m, const VortexLatticeData& d, const Eigen::Vector3d& p, int j,
+                      double& eta, Eigen::Vector3d& n) {
+  const int strip = std::min(j, m.spanwise - 1);
+  for (int i = 0; i < m.chordwise; ++i) {
+    const Eigen::Vector3d a = d.nodes.col(m.node(i, j)), u = d.nodes.col(m.node(i + 1, j)) - a;
+    const double t = (p - a).dot(u) / u.squaredNorm();
+    if (t < 0.0 || t >= 1.0) continue;
+    n = d.normal.col(m.panel(i, strip));
+    eta = (p - a - t * u).dot(n);
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Vector3d& far_velocity) {
+  LeadingEdgeSheet& s = d.le_sheet;
+  const int ns = m.spanwise;
+  const std::size_t n1 = static_cast<std::size_t>(ns) + 1;
+  bool release = false;
+  for (int j = 0; j < ns; ++j) release = release || s.current(j) != s.accepted(j);
+  // Rows 0 … rows−1 are free; the release row moves only when it leaves.
+  const int moving = s.rows + (release ? 1 : 0);
+  const double dt = d.dt;
+  const Eigen::Vector3d& V = d.free_stream;
+  const double far_age = m.far_wake_age;
+  PointSet& P = s.nodes;
+  for (int r = 0; r < moving; ++r) {
+    const bool far = far_age > 0.0 && s.row_age[r] > far_age;
+    const bool ab2 = !far && m.wake_integrator == WakeIntegrator::AdamsBashforth2 && s.row_has_prev[r];
+    for (std::size_t j = 0; j < n1; ++j) {
+      const std::size_t k = static_cast<std::size_t>(r) * n1 + j;
+      double eta0 = 0.0;
+      Eigen::Vector3d normal;
+      const bool over = !far && height_over_wing(m, d, P.position(k), static_cast<int>(j), eta0, normal);
+      const Eigen::Vector3d vel = far ? far_velocity : Eigen::Vector3d(P.u[k] + V.x(), P.v[k] + V.y(), P.w[k] + V.z());
+      if (ab2) {
+        P.x[k] += dt * (1.5 * vel.x() - 0.5 * s.prev_u[k]);
+        P.y[k] += dt * (1.5 * vel.y() - 0.5 * s.prev_v[k]);
+        P.z[k] += dt * (1.5 * vel.z() - 0.5 * s.prev_w[k]);
+      } else {
+        P.x[k] += dt * vel.x();
+        P.y[k] += dt * vel.y();
+        P.z[k] += dt * vel.z();
+      }
+      s.prev_u[k] = vel.x();
+      s.prev_v[k] = vel.y();
+      s.prev_w[k] = vel.z();
+      // A free vortex does not pass through the wing: a node that crossed the surface
+      // within the chord in this step is put back on its side, mirrored.
+      double eta1 = 0.0;
+      Eigen::Vector3d normal1;
+      if (over && height_over_wing(m, d, P.position(k), static_cast<int>(j), eta1, normal1) && eta0 * eta1 < 0.0) {
+        P.x[k] -= 2.0 * eta1 * normal1.x();
+        P.y[k] -= 2.0 * eta1 * normal1.y();
+        P.z[k] -= 2.0 * eta1 * normal1.z();
+      }
+    }
+    s.row_has_prev[r] = 1;
+    s.row_age[r] += dt;
+  }
+  if (release) {
+    if (s.rows + 1 > s.capacity)
+      throw std::length_error("vortex lattice: leading-edge sheet exceeds its capacity of " +
+                              std::to_string(s.capacity) + " rows");
+    for (int j = 0; j < ns; ++j) s.gamma[static_cast<std::size_t>(s.rows) * ns + j] = s.current(j);
+    ++s.rows;
+    s.row_has_prev[s.rows] = 0;
+    s.row_age[s.rows] = 0.0;
+    const std::size_t from = static_cast<std::size_t>(s.rows - 1) * n1, to = from + n1;
+    for (std::size_t j = 0; j < n1; ++j) s.nodes.set(to + j, P.position(from + j));  // placed again at the next solve
+    P.size = to + n1;
+  }
+  s.accepted = s.current;
+}
+
+}  // namespace detail
+
+}  // namespace flapsim::uvlm

@@ -1,0 +1,88 @@
+#pragma once
+/// \file leading_edge_sheet.hpp
+/// \brief The vortex sheet a leading edge sheds when its suction exceeds what it can hold
+/// (LeadingEdge::Shed; docs/uvlm.md, "Leading-edge vortex shedding").
+///
+/// The criterion is the leading-edge suction parameter of Ramesh, Gopalarathnam, Granlund,
+/// Ol & Edwards 2014 (J. Fluid Mech. 751, 500–538): LESP = A0, the leading-edge
+/// singularity of the bound vorticity γ(θ) = 2U [A0 (1 + cos θ)/sin θ + Σ An sin nθ],
+/// x = c/2 (1 − cos θ). While |LESP| ≤ LESP_crit the leading edge holds its suction; beyond
+/// it vorticity leaves the leading edge in just the amount that holds |LESP| at LESP_crit.
+/// On a vortex lattice the LESP of a strip comes from its first bound vortex, Γ_1: the A0
+/// term alone gives ∫_0^Δx γ dx = U c A0 (θ1 + sin θ1), θ1 = acos(1 − 2Δx/c), for the first
+/// panel of chord Δx, and Hirato, Shen, Gopalarathnam & Edwards (J. Aircraft 2019, eq. 6;
+/// 2021 for finite wings) take
+///     LESP = 1.13 Γ_1 / (U c (θ1 + sin θ1)),
+/// the factor 1.13 being the lattice's lumped first vortex against the integral (test
+/// uvlm.LeadingEdgeShedding.SteadyStripLespIsTheThinAerofoilA0: a steady flat strip's LESP
+/// is CL/(2π), thin-aerofoil theory's A0, within 0.8 % with 8 to 32 chordwise panels).
+/// Here U is the speed of the strip's leading edge through the air in the plane normal to
+/// the span (|V∞ − v_LE| without its spanwise part: U∞ for a plate in a stream that
+/// pitches about its leading edge, ω r for a revolving wing) and c the strip's chord.
+///
+/// The sheet, per spanwise strip, like the trailing-edge wake (Katz & Plotkin §13.12):
+///  - node rows 0 … rows−1 are free (convected with the local velocity, their cores grow
+///    with age like the wake's); row `rows` is the release row R, placed at every solve at
+///    R = x_LE + ½ Δt (V∞ − v_LE + v_wake), half of the step's path of the air past the
+///    leading edge (Ramesh et al. 2014 place a new leading-edge vortex there; v_wake is the
+///    trailing-edge wake's velocity at the edge);
+///  - ring r < rows spans node rows r and r+1 with circulation gamma[r ns + j];
+///  - the leading-edge ring of strip j spans from the release row to the lattice's first
+///    bound vortex (ring-node row 0, a quarter panel behind the edge) with circulation
+///    current(j). Its segment on the first bound vortex is part of that bound segment
+///    (net circulation current(j) − Γ(0, j)), so the first bound vortex of the strip is
+///    Γ_1 = Γ(0, j) − current(j): the LESP counts the vorticity the sheet left on the wing.
+///    Unless the strip sheds, current = accepted (the sheet goes on as it was); a strip
+///    that sheds gets the increment that puts |LESP| at LESP_crit, found with the
+///    circulations in one linear solve (the bordered system through the influence
+///    matrix's factorisation: leading_edge_shedding.cpp);
+///  - advance: when any strip shed in the step, the release row leaves (it is convected
+///    from where it was) and the leading-edge ring becomes sheet ring `rows` with its
+///    circulation; a new release row is placed at the next solve.
+/// A node of the sheet that crosses the wing's surface within the chord in a step is put
+/// back on its side, mirrored: a free vortex does not pass through a solid surface
+/// (without it the sheet of a plate pitched to 45° went under the plate and the shed
+/// circulation ran away; docs/uvlm.md, "Leading-edge vortex shedding: measurements").
+/// The sheet's segments are free vortices: no force acts on them. They induce velocity on
+/// the wing (the boundary condition and the Bernoulli loads), on the trailing-edge wake
+/// and on themselves.
+
+#include "uvlm/biot_savart.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include <vector>
+
+namespace flapsim::uvlm {
+
+/// Hirato et al.'s factor between the lattice's first bound vortex and the integral of
+/// the A0 term over the first panel (J. Aircraft 2019, eq. 6).
+inline constexpr double kLespLatticeFactor = 1.13;
+
+struct LeadingEdgeSheet {
+  int rows = 0;                      ///< stored rings; node rows 0 … rows (row `rows` = release row)
+  int capacity = 0;                  ///< rings the storage holds
+  PointSet nodes;                    ///< node (r, j) at r (ns+1) + j [m]
+  std::vector<double> gamma;         ///< ring circulations [m²/s], ring r strip j at r ns + j
+  std::vector<double> prev_u, prev_v, prev_w;  ///< node velocities of the last step (AB2) [m/s]
+  std::vector<char> row_has_prev;
+  std::vector<double> row_age;       ///< time since each node row left the leading edge [s]
+  Eigen::VectorXd current;           ///< leading-edge ring circulation of the last solve, per strip [m²/s]
+  Eigen::VectorXd accepted;          ///< the same at the last accepted step [m²/s]
+  Eigen::VectorXd lesp;              ///< LESP of each strip in the last solve
+  Eigen::VectorXd critical_gamma;    ///< |Γ_1| at LESP_crit per strip in the last solve [m²/s]
+  std::vector<char> shedding;        ///< per strip: shed in the last solve
+  SegmentSet segments;               ///< the sheet's segments (without the one on the first bound vortex)
+  // Scratch of the bordered solve (allocated once).
+  Eigen::MatrixXd columns;           ///< np × ns: normal velocity of each unit leading-edge ring
+  Eigen::MatrixXd response;          ///< np × ns: A⁻¹ columns
+  Eigen::MatrixXd border;            ///< ns × ns
+  Eigen::VectorXd border_rhs, increment, gamma0, target;
+  Eigen::PartialPivLU<Eigen::MatrixXd> border_lu;
+  bool active() const { return capacity > 0; }
+  /// Allocate for ns strips, np panels and `rings` sheet rings.
+  void allocate(int ns, int np, int rings);
+};
+
+}  // namespace flapsim::uvlm
