@@ -29,6 +29,7 @@ struct OptimizeArgs {
   std::string case_file, output_dir, chain_file, maximize, algorithm;
   std::vector<std::string> vary, constraints;
   int max_evaluations = 50;
+  int starts = 1;
   int vtk_every = 0;
   double x_tolerance = 1e-3;
   double initial_step = 0.25;
@@ -56,19 +57,21 @@ void optimize_command(const OptimizeArgs& a) {
   options.quiet = a.quiet;
   if (a.algorithm == "bobyqa") options.algorithm = optimize::Algorithm::bobyqa;
   if (a.algorithm == "cobyla") options.algorithm = optimize::Algorithm::cobyla;
+  options.starts = a.starts;
   options.search.max_evaluations = a.max_evaluations;
   options.search.x_tolerance = a.x_tolerance;
   options.search.initial_step = a.initial_step;
   app::install_interrupt_handlers();  // SIGINT/SIGTERM: the run under way finishes its step, exit 130/143
   const optimize::OptimizeReport report = optimize::run_optimization(a.case_file, problem, options);
-  if (a.quiet) return;
+  if (a.quiet || !report.root) return;
   const optimize::Evaluation& best = report.evaluations.at(*report.best);
   const std::string objective(app::kRunResults[problem.objective].key);
   std::printf("optimum: %s  %s = %.6g\n", sweep::describe(best.point).c_str(), objective.c_str(),
               optimize::result_value(best, problem.objective));
-  std::printf("%zu evaluations (%zu run, %zu kept), NLopt %s: %s; %.1f s wall\n", report.evaluations.size(),
-              report.runs, report.evaluations.size() - report.runs, optimize::algorithm_name(report.algorithm).c_str(),
-              report.stop_reason.c_str(), report.wall_s);
+  std::printf("%zu evaluations (%zu run, %zu kept), NLopt %s: %s; %d rank%s, %.1f s wall\n",
+              report.evaluations.size(), report.runs, report.evaluations.size() - report.runs,
+              optimize::algorithm_name(report.algorithm).c_str(), report.stop_reason.c_str(), report.ranks,
+              report.ranks == 1 ? "" : "s", report.wall_s);
   const std::filesystem::path dir(a.output_dir);
   std::printf("case at the optimum: %s%s\nreport: %s\nevaluations: %s\n", report.optimum_case.string().c_str(),
               report.optimum_spring_scale != 1.0
@@ -108,6 +111,10 @@ void add_optimize_command(CLI::App& app) {
       ->check(CLI::IsMember({"bobyqa", "cobyla"}));
   cmd->add_option("--max-evaluations", args->max_evaluations, "evaluations at most (default 50)")
       ->check(whole_number(1, 100000));
+  cmd->add_option("--starts", args->starts,
+                  "independent searches: from the case's values, then from Halton points of the bounds (default 1); "
+                  "spread over MPI ranks under mpirun/srun")
+      ->check(whole_number(1, 1000));
   cmd->add_option("--x-tolerance", args->x_tolerance,
                   "converged when a step moves every key by less than this fraction of its range (default 0.001)")
       ->check(CLI::Range(1e-9, 0.5));

@@ -28,6 +28,9 @@ std::string optimize_report(const std::string& case_file, const Problem& problem
   md += "- maximise: `" + key_of(problem.objective) + "`\n";
   for (const Constraint& c : problem.constraints) md += "- subject to: `" + c.text + "`\n";
   md += "- algorithm: NLopt " + algorithm_name(report.algorithm) + " (docs/optimize.md)\n";
+  if (report.starts > 1)
+    md += "- starts: " + std::to_string(report.starts) + " (the case's values, then Halton points; docs/optimize.md)\n";
+  md += "- ranks: " + std::to_string(report.ranks) + "\n";
   md += "- stopped: " + report.stop_reason + "\n";
   md += "- evaluations: " + std::to_string(report.evaluations.size()) + " (" + std::to_string(report.runs) +
         " run, " + std::to_string(report.evaluations.size() - report.runs) + " kept from an earlier run), " +
@@ -71,18 +74,22 @@ std::string optimize_report(const std::string& case_file, const Problem& problem
     md += "The search stopped at its maximum of evaluations before converging: run the same command with a "
           "larger --max-evaluations to go on (the points evaluated so far are reused).\n\n";
 
+  const bool several = report.starts > 1;
   md += "## Evaluations\n\n| # |";
+  if (several) md += " start |";
   for (const Bound& b : problem.bounds) md += " `" + b.key + "` |";
   md += " `" + key_of(problem.objective) + "` |";
   for (const Constraint& c : problem.constraints) md += " `" + key_of(c.result) + "` |";
   md += " status |\n|---|";
-  for (std::size_t i = 0; i < problem.bounds.size() + 2 + problem.constraints.size(); ++i) md += "---|";
+  for (std::size_t i = 0; i < problem.bounds.size() + 2 + problem.constraints.size() + (several ? 1 : 0); ++i)
+    md += "---|";
   md += "\n";
   for (std::size_t i = 0; i < report.evaluations.size(); ++i) {
     const Evaluation& e = report.evaluations[i];
     // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive, GCC bug 105329)
     // about `" " + std::string&&` once inlined.
     md.append("| ").append(std::to_string(report.numbers[i])).append(" |");
+    if (several) md.append(" ").append(std::to_string(report.start_of[i])).append(" |");
     for (const sweep::Assignment& a : e.point) md.append(" ").append(sweep::value_label(a.value)).append(" |");
     md.append(" ").append(number(result_value(e, problem.objective))).append(" |");
     for (const Constraint& c : problem.constraints) md.append(" ").append(number(result_value(e, c.result))).append(" |");

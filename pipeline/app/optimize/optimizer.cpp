@@ -5,11 +5,27 @@
 #include <cstdio>
 #include <limits>
 
+#include <omp.h>
+
+#include <algorithm>
+#include <csignal>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "pipeline/app/interruption.hpp"
 #include "pipeline/app/optimize/optimize_report.hpp"
+#include "pipeline/app/optimize/start_points.hpp"
+#include "pipeline/app/sweep/case_scheduler.hpp"
+#include "pipeline/app/sweep/mpi_world.hpp"
+#include "pipeline/app/sweep/summary_reader.hpp"
+#include "pipeline/app/sweep/sweep_table.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/app/optimize/optimum_case.hpp"
 #include "pipeline/app/optimize/point_evaluator.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/csv_writer.hpp"
 #include "pipeline/io/folder_lock.hpp"
 #include "wings/input_error.hpp"
 
@@ -55,6 +71,46 @@ std::string short_number(double v) {
   return buf;
 }
 
+// A start's search as the scheduler carries it to rank 0 (sweep::CaseOutcome's message):
+// the first line why it stopped (or the error), then one line per evaluation in order:
+// "<inputs hash> <run|kept> <value> <value> ...". Rank 0 reads each evaluation's results
+// from DIR/runs/<hash>/summary.json (the ranks share the output folder, as a sweep's do).
+std::string encode_start(const std::string& first_line, const std::vector<Evaluation>& evaluations) {
+  std::string s = first_line;
+  for (const char c : {'\n', '\r'}) std::replace(s.begin(), s.end(), c, ' ');
+  for (const Evaluation& e : evaluations) {
+    // Appended piece by piece (GCC 12's -Wrestrict false positive, GCC bug 105329).
+    s.append("\n").append(e.inputs_hash).append(e.message == "kept" ? " kept" : " run");
+    for (const sweep::Assignment& a : e.point) s.append(" ").append(io::format_number(a.value));
+  }
+  return s;
+}
+
+std::vector<Evaluation> decode_start(const Problem& p, const std::string& message, const std::filesystem::path& runs,
+                                     int rank, const std::string& host, std::string& first_line) {
+  std::istringstream in(message);
+  std::getline(in, first_line);
+  std::vector<Evaluation> out;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    Evaluation e;
+    std::string how;
+    fields >> e.inputs_hash >> how;
+    for (const Bound& b : p.bounds) {
+      std::string v;
+      fields >> v;
+      e.point.push_back({b.key, std::stod(v)});
+    }
+    if (auto r = sweep::read_summary_results(runs / e.inputs_hash / "summary.json")) e.results = std::move(*r);
+    e.status = e.results.text("status").empty() ? "error" : e.results.text("status");
+    e.message = how == "kept" ? "kept" : e.results.text("error");
+    e.rank = rank;
+    e.host = host;
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
 }  // namespace
 
 double result_value(const Evaluation& e, std::size_t result) {
@@ -75,15 +131,23 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
     for (std::size_t j = 0; j < i; ++j)
       if (problem.bounds[i].key == problem.bounds[j].key)
         throw InputError("", 0, "--vary", "'" + problem.bounds[i].key + "' is varied twice");
+  if (options.starts < 1 || (options.starts > 1 && problem.bounds.size() > 20))
+    throw InputError("", 0, "--starts", "1 start, or several with at most 20 varied keys");
 
+  sweep::MpiWorld world;
+  report.root = world.rank() == 0;
+  report.ranks = world.size();
   const sweep::SweepInputs inputs{case_file, options.chain_file, options.spring_scale};
   EvaluatorOptions eo;
   eo.runs_dir = options.output_dir / "runs";
   eo.vtk_every = options.vtk_every;
   eo.force = options.force;
+  eo.rank = world.rank();
   const PointEvaluator evaluator(inputs, eo);
+  const std::string host = sweep::host_name();
 
-  // 1. The start and the bounds, checked before anything is written.
+  // 1. The start and the bounds, checked before anything is written (on every rank: the
+  //    same input gives each the same verdict).
   std::vector<double> lo, hi;
   for (const Bound& b : problem.bounds) {
     const std::optional<double> own = value_in_inputs(inputs, b.key);
@@ -98,67 +162,173 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
       x[i] = edge;
       check_resolves(evaluator, point_of(problem, x));
     }
+  const std::vector<std::vector<double>> starts =
+      start_points(report.start, lo, hi, static_cast<std::size_t>(options.starts));
 
-  io::ensure_directory(options.output_dir);
-  const io::FolderLock lock(options.output_dir, "optimize");  // no other command writes into DIR meanwhile
+  std::optional<io::FolderLock> lock;  // rank 0: no other command writes into DIR meanwhile
+  std::optional<EvaluationTable> table;
   std::vector<std::string> keys;
   for (const Bound& b : problem.bounds) keys.push_back(b.key);
-  EvaluationTable table(options.output_dir / "evaluations.csv", keys);
+  if (report.root) {
+    io::ensure_directory(options.output_dir);
+    io::ensure_directory(eo.runs_dir);
+    lock.emplace(options.output_dir, "optimize");
+    table.emplace(options.output_dir / "evaluations.csv", keys);
+  }
+  // The threads of a run: this thread's (--threads, or the cores); under MPI each rank's
+  // share of its machine's cores. Set on the worker thread that runs the search (a new
+  // thread does not inherit the OpenMP setting of this one).
+  int omp_threads = omp_get_max_threads();
+  if (world.active()) {
+    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    omp_threads = std::max(1, cores / std::max(1, world.ranks_on_host()));
+  }
 
-  // 2. The search.
+  // 2. The searches, one per start, over the ranks (sweep::schedule_cases, one at a time
+  //    per rank: a run uses the rank's cores). Rank 0 records its own evaluations as they
+  //    come, the others' when their search ends.
+  std::mutex mutex;  // the table and the line on stderr
   const std::string objective_key(app::kRunResults[problem.objective].key);
-  const Evaluate evaluate = [&](const std::vector<double>& x) {
-    EvaluationOutcome o = evaluator.evaluate(point_of(problem, x));
-    const std::size_t number = table.record(o.evaluation);
-    report.evaluations.push_back(o.evaluation);
-    report.numbers.push_back(number);
-    if (o.evaluation.message != "kept") ++report.runs;
-    const Evaluation& e = report.evaluations.back();
-    if (feasible(problem, e) && std::isfinite(result_value(e, problem.objective)) &&
-        (!report.best || result_value(e, problem.objective) > result_value(report.evaluations[*report.best], problem.objective)))
-      report.best = report.evaluations.size() - 1;
-    if (!options.quiet) {
-      std::string line = "optimize: evaluation " + std::to_string(report.evaluations.size()) + " (" +
-                         (e.message == "kept" ? "kept" : e.status == "ok" ? "run" : e.status) + ")  " +
-                         sweep::describe(e.point) + "  " + objective_key + " " +
-                         short_number(result_value(e, problem.objective));
-      if (!feasible(problem, e) && e.status == "ok") line += " (violates a constraint)";
-      if (report.best)
-        line += "  | best " + short_number(result_value(report.evaluations[*report.best], problem.objective)) +
-                " at evaluation " + std::to_string(*report.best + 1);
-      std::fprintf(stderr, "%s\n", line.c_str());
+  const sweep::RunCase run = [&](std::size_t start) {
+    sweep::CaseOutcome o;
+    o.rank = world.rank();
+    o.host = host;
+    if (app::pending_interrupt() != 0) {
+      o.status = "not run";
+      return o;
     }
-    if (o.error) std::rethrow_exception(o.error);
-    PointValue v;
-    v.objective = result_value(e, problem.objective);
-    if (!std::isfinite(v.objective))
-      throw InputError("", 0, "--maximize",
-                       "'" + objective_key + "' is not set by a run of this case at " + sweep::describe(e.point) +
-                           " (e.g. a result of runs in air in a case in vacuum); see evaluations.csv");
-    for (const Constraint& c : problem.constraints) {
-      const double cv = result_value(e, c.result);
-      if (!std::isfinite(cv))
-        throw InputError("", 0, "--constraint",
-                         "'" + c.text + "': the result is not set by a run of this case at " +
-                             sweep::describe(e.point));
-      v.violations.push_back(scaled_violation(c, cv));
+    omp_set_num_threads(omp_threads);
+    std::vector<Evaluation> evaluations;
+    std::optional<std::size_t> best;
+    const Evaluate evaluate = [&](const std::vector<double>& x) {
+      EvaluationOutcome eval = evaluator.evaluate(point_of(problem, x));
+      evaluations.push_back(eval.evaluation);
+      const Evaluation& e = evaluations.back();
+      if (feasible(problem, e) && std::isfinite(result_value(e, problem.objective)) &&
+          (!best || result_value(e, problem.objective) > result_value(evaluations[*best], problem.objective)))
+        best = evaluations.size() - 1;
+      {
+        const std::lock_guard<std::mutex> guard(mutex);
+        if (table) (void)table->record(e);
+        if (!options.quiet) {
+          std::string line = "optimize: " + (starts.size() > 1 ? "start " + std::to_string(start + 1) + ", " : std::string()) +
+                             "evaluation " + std::to_string(evaluations.size()) + " (" +
+                             (e.message == "kept" ? "kept" : e.status == "ok" ? "run" : e.status) + ")  " +
+                             sweep::describe(e.point) + "  " + objective_key + " " +
+                             short_number(result_value(e, problem.objective));
+          if (!feasible(problem, e) && e.status == "ok") line += " (violates a constraint)";
+          if (best)
+            line += "  | best " + short_number(result_value(evaluations[*best], problem.objective)) +
+                    " at evaluation " + std::to_string(*best + 1);
+          if (world.active()) line += "  (rank " + std::to_string(world.rank()) + ")";
+          std::fprintf(stderr, "%s\n", line.c_str());
+        }
+      }
+      if (eval.error) std::rethrow_exception(eval.error);
+      PointValue v;
+      v.objective = result_value(e, problem.objective);
+      if (!std::isfinite(v.objective))
+        throw InputError("", 0, "--maximize",
+                         "'" + objective_key + "' is not set by a run of this case at " + sweep::describe(e.point) +
+                             " (e.g. a result of runs in air in a case in vacuum); see evaluations.csv");
+      for (const Constraint& c : problem.constraints) {
+        const double cv = result_value(e, c.result);
+        if (!std::isfinite(cv))
+          throw InputError("", 0, "--constraint",
+                           "'" + c.text + "': the result is not set by a run of this case at " +
+                               sweep::describe(e.point));
+        v.violations.push_back(scaled_violation(c, cv));
+      }
+      return v;
+    };
+    SearchOptions so = options.search;
+    so.algorithm = report.algorithm;
+    std::string first_line;
+    try {
+      const SearchResult sr = search(lo, hi, starts[start], problem.constraints.size(), so, evaluate);
+      o.status = "ok";
+      first_line = (sr.max_evaluations_reached ? "max " : "done ") + sr.stop_reason;
+    } catch (const app::Interrupted& e) {
+      o.status = "interrupted";
+      first_line = e.what();
+    } catch (const NumericalFailure& e) {
+      o.status = "failed";
+      first_line = e.what();
+    } catch (const InputError& e) {
+      o.status = "input";
+      first_line = e.what();
+    } catch (const std::exception& e) {
+      o.status = "error";
+      first_line = e.what();
     }
-    return v;
+    o.message = encode_start(first_line, evaluations);
+    return o;
   };
-  SearchOptions so = options.search;
-  so.algorithm = report.algorithm;
-  const SearchResult sr = search(lo, hi, report.start, problem.constraints.size(), so, evaluate);
-  report.stop_reason = sr.stop_reason;
-  report.max_evaluations_reached = sr.max_evaluations_reached;
+  std::vector<std::optional<std::vector<Evaluation>>> by_start(starts.size());
+  std::vector<std::string> stop_lines(starts.size());
+  std::optional<std::size_t> failed_start;
+  std::string failed_status;
+  const sweep::CaseDone done = [&](std::size_t start, sweep::CaseOutcome&& o) {
+    if (o.status == "not run") return;
+    std::vector<Evaluation> evaluations =
+        decode_start(problem, o.message, eo.runs_dir, o.rank, o.host, stop_lines[start]);
+    {
+      const std::lock_guard<std::mutex> guard(mutex);
+      for (const Evaluation& e : evaluations) (void)table->record(e);
+    }
+    by_start[start] = std::move(evaluations);
+    if (o.status != "ok" && !failed_start) {
+      failed_start = start;
+      failed_status = o.status;
+    }
+  };
+  std::vector<std::size_t> todo(starts.size());
+  for (std::size_t i = 0; i < todo.size(); ++i) todo[i] = i;
+  (void)sweep::schedule_cases(world, todo, 1, run, done);
+  if (!report.root) return report;
+  if (failed_start) {
+    const std::string& why = stop_lines[*failed_start];
+    if (failed_status == "failed") throw NumericalFailure(why);
+    if (failed_status == "input") throw InputError("", 0, "", why);
+    if (failed_status == "interrupted") {
+      const int signal = app::pending_interrupt() != 0 ? app::pending_interrupt() : SIGINT;
+      throw app::Interrupted(signal, why + "; the same command again goes on from the points evaluated so far");
+    }
+    throw std::runtime_error(why);
+  }
+  if (const int signal = app::pending_interrupt(); signal != 0)
+    throw app::Interrupted(signal, std::string("optimisation interrupted by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                                       "; the same command again goes on from the points evaluated so far");
 
-  // 3. The optimum and the report.
+  // 3. The optimum over every start (in the order of the starts: the same on any number of
+  //    ranks) and the report.
+  report.starts = starts.size();
+  for (std::size_t s = 0; s < by_start.size(); ++s) {
+    if (!by_start[s]) continue;
+    const std::string& line = stop_lines[s];
+    report.stop_reason += (report.stop_reason.empty() ? "" : "; ") +
+                          (starts.size() > 1 ? "start " + std::to_string(s + 1) + ": " : std::string()) +
+                          line.substr(line.find(' ') + 1);
+    if (line.rfind("max ", 0) == 0) report.max_evaluations_reached = true;
+    for (Evaluation& e : *by_start[s]) {
+      report.numbers.push_back(table->record(e));
+      if (e.message != "kept") ++report.runs;
+      report.evaluations.push_back(std::move(e));
+      report.start_of.push_back(s + 1);
+      const Evaluation& last = report.evaluations.back();
+      if (feasible(problem, last) && std::isfinite(result_value(last, problem.objective)) &&
+          (!report.best ||
+           result_value(last, problem.objective) > result_value(report.evaluations[*report.best], problem.objective)))
+        report.best = report.evaluations.size() - 1;
+    }
+  }
   if (report.best) {
     const Evaluation& best = report.evaluations[*report.best];
     const WrittenCase w = write_case_at(
         inputs, best.point, options.output_dir, "optimum",
         "The case at the optimum of flapsim optimize (" + objective_key + " = " +
-            short_number(result_value(best, problem.objective)) + ", evaluation " +
-            std::to_string(report.numbers[*report.best]) + " of DIR/evaluations.csv),\nfrom " + case_file +
+            short_number(result_value(best, problem.objective)) + ", the run in runs/" + best.inputs_hash +
+            "/),\nfrom " + case_file +
             " with " + sweep::describe(best.point) + ". Run it with flapsim run.");
     report.optimum_case = w.case_file;
     report.optimum_spring_scale = w.spring_scale;

@@ -9,8 +9,12 @@
 ///    bounds; the middle of the bounds when the files do not write the key) and each
 ///    key at either bound are resolved and checked, so a bad key or a bound that makes an
 ///    invalid case stops with exit status 2 and nothing run.
-/// 2. The search, serial; a progress line per evaluation (stderr).
-/// 3. The optimum is the best evaluated point that satisfies every constraint (not
+/// 2. The search: one NLopt search per start (--starts N; start_points.hpp), each on one
+///    worker, the starts spread over MPI ranks under mpirun/srun by the sweep's scheduler
+///    (sweep::schedule_cases); a run uses its rank's share of the cores. A progress line per
+///    evaluation (stderr). Rank 0 writes evaluations.csv: its own evaluations as they come,
+///    another rank's when its search ends (their runs are in the shared DIR/runs/).
+/// 3. The optimum is the best evaluated point, over the starts in their order, that satisfies every constraint (not
 ///    NLopt's last iterate, which COBYLA may leave slightly infeasible): DIR/optimum.toml
 ///    and DIR/report.md. No evaluated point satisfies the constraints: report.md says so,
 ///    no optimum.toml, and flapsim::InputError naming --constraint (exit status 2).
@@ -34,10 +38,15 @@ struct OptimizeOptions {
   bool force = false;              ///< run every point, also those an earlier run evaluated
   bool quiet = false;              ///< no progress lines
   std::optional<Algorithm> algorithm;  ///< none: BOBYQA, or COBYLA with constraints
+  int starts = 1;                  ///< independent searches (start_points.hpp), spread over MPI ranks
   SearchOptions search;            ///< its algorithm is set from `algorithm`
 };
 
 struct OptimizeReport {
+  bool root = true;                    ///< this process holds the table (rank 0, or no MPI)
+  int ranks = 1;
+  std::size_t starts = 1;
+  std::vector<std::size_t> start_of;   ///< the start (1-based) of each evaluation
   Algorithm algorithm = Algorithm::bobyqa;
   std::vector<double> start;           ///< the start, one value per bound
   std::vector<Evaluation> evaluations; ///< the distinct points of this search, in order

@@ -1,6 +1,8 @@
 #include "pipeline/app/optimize/point_evaluator.hpp"
 
+#include <chrono>
 #include <optional>
+#include <thread>
 
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
@@ -11,6 +13,11 @@
 #include "pipeline/io/folder_lock.hpp"
 
 namespace flapsim::optimize {
+
+namespace {
+// The longest wait for another evaluation of the same point to end [s] (a day: a run).
+constexpr int kLongestWaitS = 86400;
+}  // namespace
 
 PointEvaluator::PointEvaluator(sweep::SweepInputs inputs, EvaluatorOptions options)
     : inputs_(std::move(inputs)), options_(std::move(options)), host_(sweep::host_name()) {}
@@ -28,16 +35,33 @@ EvaluationOutcome PointEvaluator::evaluate(const sweep::CasePoint& point) const 
   e.rank = options_.rank;
   e.host = host_;
   const std::filesystem::path dir = folder(r.inputs_hash);
-  if (!options_.force) {
-    if (auto kept = sweep::kept_results(dir / "summary.json", r.inputs_hash)) {
-      e.results = std::move(*kept);
-      e.status = "ok";
-      e.message = "kept";
-      return out;
-    }
-  }
+  const auto kept = [&]() {
+    if (options_.force) return false;
+    auto results = sweep::kept_results(dir / "summary.json", r.inputs_hash);
+    if (!results) return false;
+    e.results = std::move(*results);
+    e.status = "ok";
+    e.message = "kept";
+    return true;
+  };
+  if (kept()) return out;
   io::ensure_directory(dir);
-  const io::FolderLock lock(dir, "optimize");  // as a sweep locks each case's folder
+  // The folder is locked while the point runs, as a sweep locks each case's folder. Two
+  // starts (on two ranks) may ask for the same point at once: the second waits for the
+  // first's run and keeps its results.
+  std::optional<io::FolderLock> lock;
+  for (int waited_s = 0;; ++waited_s) {
+    try {
+      lock.emplace(dir, "optimize");
+      break;
+    } catch (const io::OutputError& err) {
+      if (std::string(err.what()).find("is writing into this folder now") == std::string::npos ||
+          waited_s >= kLongestWaitS)
+        throw;
+    }
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+  }
+  if (kept()) return out;
   io::remove_stale_temporaries(dir);           // of a killed run of this point
   app::RunOptions ro;
   ro.output_dir = dir;
