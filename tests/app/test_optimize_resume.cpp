@@ -2,6 +2,7 @@
 // again does not run any evaluated point again, and ends where an uninterrupted one ends.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -59,6 +60,13 @@ TEST(OptimizeResume, AnInterruptedOptimisationRerunsNoEvaluatedPoint) {
   ASSERT_EQ(test::run_flapsim(command + " -o " + (dir / "whole").string()), 0);
   EXPECT_EQ(evaluated_hashes(dir / "whole"), resumed);
   EXPECT_EQ(test::read_text(dir / "whole" / "optimum.toml"), test::read_text(dir / "opt" / "optimum.toml"));
+
+  // The plot tool draws the optimisation (tools/plot_optimize.py, make optimize-plots).
+  const std::string plot = "/usr/bin/python3 '" + std::string(FLAPSIM_SOURCE_DIR) + "/tools/plot_optimize.py' '" +
+                           (dir / "whole").string() + "' '" + (dir / "plots").string() + "' > /dev/null";
+  ASSERT_EQ(std::system(plot.c_str()), 0);
+  for (const char* name : {"optimize_objective.png", "optimize_path.png", "optimize_lift_cycle.png"})
+    EXPECT_EQ(test::read_text(dir / "plots" / name).substr(0, 4), "\x89PNG") << name;
 
   // A third run of the same command runs nothing.
   ASSERT_EQ(test::run_flapsim(command + " -o " + (dir / "whole").string()), 0);
