@@ -32,6 +32,8 @@ TEST(OptimizeErrors, BadInputExitsTwoNamingTheOptionWithNothingWritten) {
       {"--vary kinematics.rotation_phase=-0.1:x --maximize mean_lift_N", "--vary", "not a finite number"},
       {"--vary kinematics.nope=0:1 --maximize mean_lift_N", "--vary", "kinematics.nope"},
       {"--vary kinematics.frequency_hz=-5:30 --maximize mean_lift_N", "--vary", "kinematics.frequency_hz = -5"},
+      // An integer key: the search's values are not whole numbers (the case file's reader refuses them).
+      {"--vary numerics.steps_per_cycle=12:48 --maximize mean_lift_N", "--vary", "numerics.steps_per_cycle"},
       {"--vary kinematics.rotation_phase=-0.1:0.1 --vary kinematics.rotation_phase=0:0.1 --maximize mean_lift_N",
        "--vary", "varied twice"},
       {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize lift", "--maximize", "not a result"},

@@ -50,7 +50,7 @@ TEST(OptimizeResume, AnInterruptedOptimisationRerunsNoEvaluatedPoint) {
     EXPECT_EQ(test::read_text(dir / "opt" / "runs" / first[i] / "summary.json"), summaries[i]) << "run again: " << first[i];
   }
   const std::string report = test::read_text(dir / "opt" / "report.md");
-  EXPECT_NE(report.find(" run, 4 kept from an earlier run"), std::string::npos) << report;
+  EXPECT_NE(report.find(" run, 4 kept: evaluated before"), std::string::npos) << report;
   std::size_t folders = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir / "opt" / "runs")) ++folders;
   EXPECT_EQ(folders, resumed.size());  // one run per evaluated point

@@ -33,7 +33,7 @@ std::string optimize_report(const std::string& case_file, const Problem& problem
   md += "- ranks: " + std::to_string(report.ranks) + "\n";
   md += "- stopped: " + report.stop_reason + "\n";
   md += "- evaluations: " + std::to_string(report.evaluations.size()) + " (" + std::to_string(report.runs) +
-        " run, " + std::to_string(report.evaluations.size() - report.runs) + " kept from an earlier run), " +
+        " run, " + std::to_string(report.evaluations.size() - report.runs) + " kept: evaluated before, by an earlier run or another start), " +
         number(report.wall_s) + " s wall\n\n";
 
   md += "| key | lower bound | upper bound | start | optimum |\n|---|---|---|---|---|\n";

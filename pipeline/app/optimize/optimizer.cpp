@@ -156,10 +156,13 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
     hi.push_back(b.hi);
   }
   check_resolves(evaluator, point_of(problem, report.start));
+  // Each key at either bound and at an inner point that is no whole number (1/π of the
+  // way): an integer key (numerics.steps_per_cycle), which NLopt's values would break
+  // mid-search, is refused here.
   for (std::size_t i = 0; i < problem.bounds.size(); ++i)
-    for (const double edge : {lo[i], hi[i]}) {
+    for (const double value : {lo[i], hi[i], lo[i] + (hi[i] - lo[i]) * 0.31830988618379067}) {
       std::vector<double> x = report.start;
-      x[i] = edge;
+      x[i] = value;
       check_resolves(evaluator, point_of(problem, x));
     }
   const std::vector<std::vector<double>> starts =

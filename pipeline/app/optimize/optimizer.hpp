@@ -7,8 +7,9 @@
 ///
 /// 1. Before any run: the start (each key at the case's own value, clamped into its
 ///    bounds; the middle of the bounds when the files do not write the key) and each
-///    key at either bound are resolved and checked, so a bad key or a bound that makes an
-///    invalid case stops with exit status 2 and nothing run.
+///    key at either bound and at an inner value that is no whole number are resolved and
+///    checked, so a bad key, a bound that makes an invalid case or an integer key stops
+///    with exit status 2 and nothing run.
 /// 2. The search: one NLopt search per start (--starts N; start_points.hpp), each on one
 ///    worker, the starts spread over MPI ranks under mpirun/srun by the sweep's scheduler
 ///    (sweep::schedule_cases); a run uses its rank's share of the cores. A progress line per
