@@ -22,7 +22,7 @@ using namespace flapsim;
 // (docs/optimize.md).
 TEST(OptimizeRotationPhase, FindsTheRigidOptimumOfAFineGridWithinAFewEvaluations) {
   const test::ScratchDir dir("optimize_phase");
-  const std::string text = test::shortened_rotation_phase_case(60, 3);
+  const std::string text = test::shortened_case("rotation_phase_rigid", 60, 3);
   ASSERT_FALSE(text.empty()) << "cases/rotation_phase_rigid.toml no longer has the keys this test shortens";
   std::ofstream(dir / "case.toml") << text;
 

@@ -255,8 +255,8 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
       o.status = "interrupted";
       first_line = e.what();
     } catch (const NumericalFailure& e) {
-      o.status = "failed";
-      first_line = e.what();
+      o.status = "failed";  // the start's search ends at the failed run; the other starts go on
+      first_line = std::string("failed ") + e.what();
     } catch (const InputError& e) {
       o.status = "input";
       first_line = e.what();
@@ -270,6 +270,7 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
   std::vector<std::optional<std::vector<Evaluation>>> by_start(starts.size());
   std::vector<std::string> stop_lines(starts.size());
   std::optional<std::size_t> failed_start;
+  bool any_failed = false;
   std::string failed_status;
   const sweep::CaseDone done = [&](std::size_t start, sweep::CaseOutcome&& o) {
     if (o.status == "not run") return;
@@ -280,7 +281,8 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
       for (const Evaluation& e : evaluations) (void)table->record(e);
     }
     by_start[start] = std::move(evaluations);
-    if (o.status != "ok" && !failed_start) {
+    if (o.status == "failed") any_failed = true;
+    if (o.status != "ok" && o.status != "failed" && !failed_start) {
       failed_start = start;
       failed_status = o.status;
     }
@@ -291,7 +293,6 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
   if (!report.root) return report;
   if (failed_start) {
     const std::string& why = stop_lines[*failed_start];
-    if (failed_status == "failed") throw NumericalFailure(why);
     if (failed_status == "input") throw InputError("", 0, "", why);
     if (failed_status == "interrupted") {
       const int signal = app::pending_interrupt() != 0 ? app::pending_interrupt() : SIGINT;
@@ -311,6 +312,7 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
     const std::string& line = stop_lines[s];
     report.stop_reason += (report.stop_reason.empty() ? "" : "; ") +
                           (starts.size() > 1 ? "start " + std::to_string(s + 1) + ": " : std::string()) +
+                          (line.rfind("failed ", 0) == 0 ? "a run failed, so the search stopped: " : "") +
                           line.substr(line.find(' ') + 1);
     if (line.rfind("max ", 0) == 0) report.max_evaluations_reached = true;
     for (Evaluation& e : *by_start[s]) {
@@ -338,6 +340,9 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
   }
   report.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();
   write_optimize_report(options.output_dir, case_file, problem, report);
+  if (!report.best && any_failed)
+    throw NumericalFailure("no evaluated point completed and satisfied the constraints; " + report.stop_reason +
+                           " (" + (options.output_dir / "report.md").string() + ")");
   if (!report.best) {
     std::string constraints;
     for (const Constraint& c : problem.constraints) constraints += (constraints.empty() ? "" : ", ") + c.text;

@@ -66,9 +66,13 @@ struct OptimizeReport {
 double result_value(const Evaluation& e, std::size_t result);
 
 /// \brief Runs the optimisation.
+/// A run that fails numerically ends its start's search (its row in evaluations.csv says
+/// status "failed"; report.md says which start stopped and why); the other starts go on,
+/// and the optimum is the best of the points that completed, as a sweep goes on past a
+/// failed case.
 /// \throws flapsim::InputError before any run for bad input, and after the search when no
-///         evaluated point satisfies the constraints; NumericalFailure when a run fails
-///         (its row in evaluations.csv says which); app::Interrupted; io::OutputError
+///         evaluated point satisfies the constraints; NumericalFailure when no point
+///         completed and a run failed; app::Interrupted; io::OutputError
 OptimizeReport run_optimization(const std::string& case_file, const Problem& problem, const OptimizeOptions& options);
 
 }  // namespace flapsim::optimize
