@@ -1,5 +1,5 @@
 # flapsim — the commands users drive. The targets that build (all but help, clean,
-# plots and sweep-plots) install missing Debian packages first (tools/install_deps.sh),
+# plots, sweep-plots and optimize-plots) install missing Debian packages first (tools/install_deps.sh),
 # then configure and build as needed.
 #   make build           install missing packages, configure and build everything
 #                        (build/flapsim, the tests and the benchmarks)
@@ -17,6 +17,7 @@
 #   make plots           PDF and PNG figures of the phase study in out/plots
 #   make figures         docs/figures from a fresh phase study
 #   make sweep-plots SWEEP=DIR/sweep.csv   mean lift (and power) against each varied key
+#   make optimize-plots DIR=DIR   objective, path and lift of a flapsim optimize folder
 #   make validate        reference-vs-computed table of the validation cases
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
 #   make fuzz            the loader fuzzer with many more mutants (FUZZ_MUTANTS per loader)

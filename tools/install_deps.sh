@@ -15,6 +15,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev
   libsimbody-dev
   libopenmpi-dev openmpi-bin
+  libnlopt-cxx-dev  # flapsim optimize (NLopt: BOBYQA, COBYLA)
   python3-matplotlib
   python3-vtk9 xvfb xauth
 )

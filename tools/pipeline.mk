@@ -16,6 +16,9 @@
 #   make figures        docs/figures from a fresh phase study
 #   make sweep-plots SWEEP=DIR/sweep.csv   mean lift (and power) against each varied key
 #                       of any sweep, in DIR/plots (or SWEEP_PLOTS=...)
+#   make optimize-plots DIR=DIR   of a flapsim optimize folder: objective against evaluation,
+#                       the path through the keys, the optimum's lift over a cycle beside the
+#                       start's, in DIR/plots (or OPTIMIZE_PLOTS=...)
 #   make validate       reference-vs-computed table of the validation cases
 #
 # The coupled runs are small (6 x 10 panels): one OpenMP thread per run is faster than
@@ -40,7 +43,7 @@ RUN_CHAIN         := $(if $(CASE_NEEDS_MODEL),$(PIPELINE_CHAIN))
 # to out/<case name>_run/.
 RUN_OUT           ?= $(OUT)/$(CASE_NAME)$(if $(and $(RUN_CHAIN),$(filter $(MODEL_OUT),$(OUT)/$(CASE_NAME))),_run)
 
-.PHONY: run run-pipeline phase-study plots figures sweep-plots validate
+.PHONY: run run-pipeline phase-study plots figures sweep-plots optimize-plots validate
 
 
 run: program $(RUN_CHAIN)
@@ -106,6 +109,11 @@ figures: program $(PIPELINE_CHAIN)
 sweep-plots:
 	@test -n "$(SWEEP)" || { echo "usage: make sweep-plots SWEEP=DIR/sweep.csv [SWEEP_PLOTS=OUTPUT_DIR]" >&2; exit 2; }
 	$(PIPELINE_PYTHON) tools/plot_sweep.py $(SWEEP) $(SWEEP_PLOTS)
+
+# A flapsim optimize folder (docs/optimize.md, "Plotting an optimisation").
+optimize-plots:
+	@test -n "$(DIR)" || { echo "usage: make optimize-plots DIR=OPTIMIZE_DIR [OPTIMIZE_PLOTS=OUTPUT_DIR]" >&2; exit 2; }
+	$(PIPELINE_PYTHON) tools/plot_optimize.py $(DIR) $(OPTIMIZE_PLOTS)
 
 validate: build $(PIPELINE_CHAIN)
 	@test -f $(PHASE_OUT)/rigid/sweep.csv -a -f $(PHASE_OUT)/flexible/sweep.csv || \

@@ -79,7 +79,7 @@ static std::string shortened(const std::string& text) {
 int run(int argc, char** argv) {
   CLI::App app{
       "flapsim: flexible flapping wings, from a wing drawing to lift.\n"
-      "Stages: mesh -> modes (FEM) -> reduce (beam, bar chain) -> run (FSI) -> sweep."};
+      "Stages: mesh -> modes (FEM) -> reduce (beam, bar chain) -> run (FSI) -> sweep, optimize."};
   app.require_subcommand(1);
   app.set_version_flag("--version", "flapsim 0.1.0");
   add_check_command(app);
@@ -88,6 +88,7 @@ int run(int argc, char** argv) {
   add_reduce_command(app);
   add_run_command(app);
   add_sweep_command(app);
+  add_optimize_command(app);
   for (CLI::App* command : app.get_subcommands({})) add_threads_option(*command);
   // The exit-status contract (exit_status.hpp, README.md): each kind of error has one status.
   try {

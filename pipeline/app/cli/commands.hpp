@@ -19,6 +19,7 @@ void add_modes_command(CLI::App& app);   ///< flapsim modes WING.toml -o DIR
 void add_reduce_command(CLI::App& app);  ///< flapsim reduce WING.toml -o DIR --bodies N
 void add_run_command(CLI::App& app);     ///< flapsim run CASE.toml -o DIR
 void add_sweep_command(CLI::App& app);   ///< flapsim sweep CASE.toml --vary KEY=VALUES -o DIR
+void add_optimize_command(CLI::App& app);  ///< flapsim optimize CASE.toml --vary KEY=LO:HI --maximize RESULT -o DIR
 
 /// The --chain option of run and sweep: "" (none) or an existing file.
 /// \throws flapsim::InputError (key "--chain") if the file does not exist

@@ -1,0 +1,23 @@
+#pragma once
+/// \file optimize_report.hpp
+/// \brief DIR/report.md of `flapsim optimize`: the problem (case, keys and bounds,
+/// objective, constraints, algorithm), the start, every evaluation of the search with its
+/// values, objective and constraints, the optimum (or why there is none), why the search
+/// stopped, and how to run the optimum (docs/optimize.md, "Outputs").
+
+#include <filesystem>
+#include <string>
+
+#include "pipeline/app/optimize/optimizer.hpp"
+
+namespace flapsim::optimize {
+
+/// \brief The report's Markdown text.
+std::string optimize_report(const std::string& case_file, const Problem& problem, const OptimizeReport& report);
+
+/// \brief Writes it atomically as DIR/report.md.
+/// \throws io::OutputError
+void write_optimize_report(const std::filesystem::path& dir, const std::string& case_file, const Problem& problem,
+                           const OptimizeReport& report);
+
+}  // namespace flapsim::optimize

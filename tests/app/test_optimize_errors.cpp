@@ -1,0 +1,88 @@
+// flapsim optimize's bad input (issue 33): bad bounds, an unknown key, objective or
+// constraint exit 2 naming the option with nothing written; a constraint no evaluated point
+// satisfies exits 2 after the search, its report saying so, no optimum.toml.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/run_flapsim.hpp"
+#include "common/scratch_dir.hpp"
+#include "sweep_test_helpers.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace flapsim;
+
+struct BadOptimizeInput {
+  const char* options;
+  const char* named;  // the option the message names
+  const char* says;   // and what it says
+};
+
+TEST(OptimizeErrors, BadInputExitsTwoNamingTheOptionWithNothingWritten) {
+  const test::ScratchDir dir("optimize_errors");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  const BadOptimizeInput cases[] = {
+      {"--vary kinematics.rotation_phase=0.1:-0.1 --maximize mean_lift_N", "--vary", "LO < HI"},
+      {"--vary kinematics.rotation_phase=0.1:0.1 --maximize mean_lift_N", "--vary", "LO < HI"},
+      {"--vary kinematics.rotation_phase=-0.1 --maximize mean_lift_N", "--vary", "KEY=LO:HI"},
+      {"--vary kinematics.rotation_phase=-0.1:x --maximize mean_lift_N", "--vary", "not a finite number"},
+      {"--vary kinematics.nope=0:1 --maximize mean_lift_N", "--vary", "kinematics.nope"},
+      {"--vary kinematics.frequency_hz=-5:30 --maximize mean_lift_N", "--vary", "kinematics.frequency_hz = -5"},
+      // An integer key: the search's values are not whole numbers (the case file's reader refuses them).
+      {"--vary numerics.steps_per_cycle=12:48 --maximize mean_lift_N", "--vary", "numerics.steps_per_cycle"},
+      {"--vary kinematics.rotation_phase=-0.1:0.1 --vary kinematics.rotation_phase=0:0.1 --maximize mean_lift_N",
+       "--vary", "varied twice"},
+      {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize lift", "--maximize", "not a result"},
+      {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize case", "--maximize", "not a number"},
+      {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize wall_time_s", "--maximize", "differs from run to run"},
+      {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize mean_lift_N --constraint 'mean_lift_N=1'", "--constraint",
+       "RESULT>=X"},
+      {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize mean_lift_N --constraint 'lift>=1'", "--constraint",
+       "not a result"},
+      {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize mean_lift_N --constraint 'mean_lift_N>=x'",
+       "--constraint", "not a finite number"},
+      {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize mean_power_W --constraint 'mean_lift_N>=0' "
+       "--algorithm bobyqa",
+       "--algorithm", "cobyla"},
+  };
+  for (const BadOptimizeInput& c : cases) {
+    const fs::path out = dir / "out";
+    fs::remove_all(out);
+    const auto outcome = test::run_flapsim_capturing_stderr(
+        dir.path(), "optimize " + (dir / "case.toml").string() + " " + c.options + " -o " + out.string());
+    EXPECT_EQ(outcome.status, 2) << c.options;
+    EXPECT_NE(outcome.err.find("'" + std::string(c.named) + "'"), std::string::npos) << c.options << "\n" << outcome.err;
+    EXPECT_NE(outcome.err.find(c.says), std::string::npos) << c.options << "\n" << outcome.err;
+    EXPECT_FALSE(fs::exists(out)) << c.options << ": nothing may be written";
+  }
+}
+
+TEST(OptimizeErrors, AConstraintNoEvaluatedPointSatisfiesIsReportedAndExitsTwo) {
+  const test::ScratchDir dir("optimize_infeasible");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  const fs::path out = dir / "out";
+  const auto outcome = test::run_flapsim_capturing_stderr(
+      dir.path(), "optimize " + (dir / "case.toml").string() +
+               " --vary kinematics.rotation_phase=-0.25:0.15 --maximize mean_power_W --constraint 'mean_lift_N>=1'"
+               " --max-evaluations 5 -o " + out.string());
+  EXPECT_EQ(outcome.status, 2);
+  EXPECT_NE(outcome.err.find("key '--constraint': no evaluated point satisfies mean_lift_N>=1"), std::string::npos)
+      << outcome.err;
+  // The constraint is indeed out of reach of every evaluated point (their lift, from the table).
+  const auto table = test::read_sweep_table((out / "evaluations.csv").string());
+  ASSERT_TRUE(table.rectangular);
+  ASSERT_GE(table.rows.size(), 2u);
+  ASSERT_LE(table.rows.size(), 5u);  // --max-evaluations (COBYLA may ask for a point twice: one run)
+  for (const auto& row : table.rows) {
+    EXPECT_EQ(row.at("status"), "ok");
+    EXPECT_LT(std::stod(row.at("mean_lift_N")), 1.0);
+  }
+  EXPECT_NE(test::read_text(out / "report.md").find("## No optimum"), std::string::npos);
+  EXPECT_FALSE(fs::exists(out / "optimum.toml"));
+}
+
+}  // namespace

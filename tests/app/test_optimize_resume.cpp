@@ -1,0 +1,76 @@
+// flapsim optimize resumed (issue 33): an optimisation stopped by --max-evaluations and run
+// again does not run any evaluated point again, and ends where an uninterrupted one ends.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "common/run_flapsim.hpp"
+#include "common/scratch_dir.hpp"
+#include "sweep_test_helpers.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace flapsim;
+
+// The points of evaluations.csv, in order (their inputs hashes).
+std::vector<std::string> evaluated_hashes(const fs::path& dir) {
+  std::vector<std::string> hashes;
+  for (const auto& row : test::read_sweep_table((dir / "evaluations.csv").string()).rows)
+    hashes.push_back(row.at("inputs_hash"));
+  return hashes;
+}
+
+TEST(OptimizeResume, AnInterruptedOptimisationRerunsNoEvaluatedPoint) {
+  const test::ScratchDir dir("optimize_resume");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
+  const std::string command = "optimize " + (dir / "case.toml").string() +
+                              " --vary kinematics.rotation_phase=-0.25:0.15 --vary kinematics.frequency_hz=20:30"
+                              " --maximize mean_lift_N -q";
+
+  // Stopped after 4 evaluations (BOBYQA's first model takes 2n + 1 = 5 points).
+  ASSERT_EQ(test::run_flapsim(command + " --max-evaluations 4 -o " + (dir / "opt").string()), 0);
+  const std::vector<std::string> first = evaluated_hashes(dir / "opt");
+  ASSERT_EQ(first.size(), 4u);
+  EXPECT_NE(test::read_text(dir / "opt" / "report.md").find("maximum number of evaluations"), std::string::npos);
+  // Each run's summary.json, to tell whether the rerun ran it again (its wall time would change).
+  std::vector<std::string> summaries;
+  for (const std::string& h : first) summaries.push_back(test::read_text(dir / "opt" / "runs" / h / "summary.json"));
+
+  // Run again to the end: the 4 points are kept (their files untouched), the rest run.
+  ASSERT_EQ(test::run_flapsim(command + " -o " + (dir / "opt").string()), 0);
+  const std::vector<std::string> resumed = evaluated_hashes(dir / "opt");
+  ASSERT_GT(resumed.size(), first.size());
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    EXPECT_EQ(resumed[i], first[i]);
+    EXPECT_EQ(test::read_text(dir / "opt" / "runs" / first[i] / "summary.json"), summaries[i]) << "run again: " << first[i];
+  }
+  const std::string report = test::read_text(dir / "opt" / "report.md");
+  EXPECT_NE(report.find(" run, 4 kept: evaluated before"), std::string::npos) << report;
+  std::size_t folders = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir / "opt" / "runs")) ++folders;
+  EXPECT_EQ(folders, resumed.size());  // one run per evaluated point
+
+  // Deterministic: an uninterrupted optimisation evaluates the same points in the same order
+  // and writes the same optimum.
+  ASSERT_EQ(test::run_flapsim(command + " -o " + (dir / "whole").string()), 0);
+  EXPECT_EQ(evaluated_hashes(dir / "whole"), resumed);
+  EXPECT_EQ(test::read_text(dir / "whole" / "optimum.toml"), test::read_text(dir / "opt" / "optimum.toml"));
+
+  // The plot tool draws the optimisation (tools/plot_optimize.py, make optimize-plots).
+  const std::string plot = "/usr/bin/python3 '" + std::string(FLAPSIM_SOURCE_DIR) + "/tools/plot_optimize.py' '" +
+                           (dir / "whole").string() + "' '" + (dir / "plots").string() + "' > /dev/null";
+  ASSERT_EQ(std::system(plot.c_str()), 0);
+  for (const char* name : {"optimize_objective.png", "optimize_path.png", "optimize_lift_cycle.png"})
+    EXPECT_EQ(test::read_text(dir / "plots" / name).substr(0, 4), "\x89PNG") << name;
+
+  // A third run of the same command runs nothing.
+  ASSERT_EQ(test::run_flapsim(command + " -o " + (dir / "whole").string()), 0);
+  EXPECT_NE(test::read_text(dir / "whole" / "report.md").find("(0 run, "), std::string::npos);
+}
+
+}  // namespace
