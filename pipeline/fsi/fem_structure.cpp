@@ -97,7 +97,10 @@ void FemStructureData::read_trial() {
 void FemStructureData::solve(double dt) {
   restore_accepted();
   const fem::PrescribedMotion motion = clamp_motion(model_, accepted_.time + dt);
-  const fem::StepResult r = fem::step(model_.dynamics, *dynamics_, dt, loads_, &motion);
+  // A sub-iteration after the first starts Newton from the last answer of this step: the
+  // answer to the given loads is the same to the solver's tolerance (fem_structure.hpp).
+  const fem::StepResult r =
+      fem::step(model_.dynamics, *dynamics_, dt, loads_, &motion, fem::StepStart::PreviousSolution);
   if (!r.converged) throw StructureFailure("FEM: " + r.failure);
   read_trial();
   pose_is_trial_ = true;
