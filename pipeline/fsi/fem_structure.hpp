@@ -53,6 +53,19 @@ class FemStructureModel : public StructureModel {
   const double length_scale;  ///< [m]
 };
 
+/// \brief The FEM's Newton tolerance in a coupled run, from the coupling's: the coupling
+/// converges when max(|δx|, |δv|/(2πf)) ≤ τ L between sub-iterations (change()), and the
+/// FEM's own error should be well below that, so that its answer to given loads does not
+/// depend on where its Newton started (the warm start of a sub-iteration). A modified
+/// Newton whose corrections contract by ρ ≤ refactor_rate leaves an error of at most
+/// ρ/(1 − ρ) times its last correction ε L; the velocity error is γ/(βΔt) times it, i.e.
+/// (γ/β)(N/2π) ε L per flapping radian at N steps per cycle. Asked: both below 1 % of τ:
+///   ε = 0.01 τ (1 − ρ)/ρ / max(1, (γ/β) N/(2π))
+/// (τ = 1e-6, N = 100, ρ∞ = 1, ρ = 0.25: ε = 9.4e-10). Returns `options` with
+/// increment_tolerance = ε (translations relative to the model size, rotations in rad).
+fem::DynamicsOptions coupled_dynamics_options(fem::DynamicsOptions options, double coupling_tolerance,
+                                              int steps_per_cycle);
+
 /// The FEM's states during a run.
 class FemStructureData : public StructureData {
  public:
