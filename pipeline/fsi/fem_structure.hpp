@@ -9,8 +9,11 @@
 /// What the coupling relaxes is the interface: the translations and velocities of the FEM's
 /// nodes, (x, v), which alone place the lattice; the interface residual is x̂ − x̃ (Aitken's
 /// factor on the displacements, the same factor on the velocities). Each solve restarts the
-/// step from the accepted state, so the structure's answer ŝ to given loads does not depend
-/// on the iterate; the accepted state is ŝ, the FEM's own converged step.
+/// step from the accepted state; its Newton starts from the step's last answer (the first
+/// solve of a step from the rigid-base predictor), so the structure's answer ŝ to given
+/// loads does not depend on the iterate to the FEM's tolerance, which
+/// coupled_dynamics_options puts at 1 % of the coupling's; the accepted state is ŝ, the
+/// FEM's own converged step.
 
 #include <Eigen/Core>
 
