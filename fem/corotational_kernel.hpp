@@ -83,26 +83,45 @@ double eicr_force(const Eigen::Matrix<double, 6 * N, 6 * N>& k, const std::array
     d.template segment<3>(6 * a + 3) = th;
     H[a] = inverse_tangent(th);
   }
-  Mat P = Mat::Zero();
-  for (int a = 0; a < N; ++a) {
-    for (int b = 0; b < N; ++b)
-      P.template block<3, 3>(6 * a, 6 * b).diagonal().setConstant((a == b ? 1.0 : 0.0) - 1.0 / N);
-    P.template block<3, n>(6 * a, 0) += skew(xbar[a]) * G;
-    P.template block<3, 3>(6 * a + 3, 6 * a + 3).setIdentity();
-    P.template block<3, n>(6 * a + 3, 0) -= G;
+  // P and B = H P are formed only for the tangent or damping: the force alone (every
+  // iteration of a modified Newton, nonlinear_dynamics.hpp) applies Pᵀ in closed form.
+  const bool damped = damping.velocity != nullptr && damping.coefficient != 0.0;
+  Mat P, B;
+  if (K != nullptr || damped) {
+    P.setZero();
+    for (int a = 0; a < N; ++a) {
+      for (int b = 0; b < N; ++b)
+        P.template block<3, 3>(6 * a, 6 * b).diagonal().setConstant((a == b ? 1.0 : 0.0) - 1.0 / N);
+      P.template block<3, n>(6 * a, 0) += skew(xbar[a]) * G;
+      P.template block<3, 3>(6 * a + 3, 6 * a + 3).setIdentity();
+      P.template block<3, n>(6 * a + 3, 0) -= G;
+    }
+    B = P;
+    for (int a = 0; a < N; ++a) B.template block<3, n>(6 * a + 3, 0) = H[a] * P.template block<3, n>(6 * a + 3, 0);
   }
-  Mat B = P;
-  for (int a = 0; a < N; ++a) B.template block<3, n>(6 * a + 3, 0) = H[a] * P.template block<3, n>(6 * a + 3, 0);
 
   Vec fl = k * d;
-  if (damping.velocity != nullptr && damping.coefficient != 0.0) {
+  if (damped) {
     Vec vl;
     for (int i = 0; i < 2 * N; ++i) vl.template segment<3>(3 * i) = Tr * damping.velocity->template segment<3>(3 * i);
     fl += damping.coefficient * (k * (B * vl));
   }
   Vec fbar = fl;
   for (int a = 0; a < N; ++a) fbar.template segment<3>(6 * a + 3) = H[a].transpose() * fl.template segment<3>(6 * a + 3);
-  const Vec p = P.transpose() * fbar;
+  // p = Pᵀ f̄: with n_a, m_a the force and moment parts of f̄,
+  //   p_t,b = n_b − (1/N) Σ n_a,  p_r,b = m_b,  p += Gᵀ Σ_a (n_a × x̄_a − m_a).
+  Vec p;
+  Eigen::Vector3d nsum = Eigen::Vector3d::Zero(), lever = Eigen::Vector3d::Zero();
+  for (int a = 0; a < N; ++a) {
+    const Eigen::Vector3d na = fbar.template segment<3>(6 * a), ma = fbar.template segment<3>(6 * a + 3);
+    nsum += na;
+    lever += na.cross(xbar[a]) - ma;
+  }
+  for (int a = 0; a < N; ++a) {
+    p.template segment<3>(6 * a) = fbar.template segment<3>(6 * a) - nsum / N;
+    p.template segment<3>(6 * a + 3) = fbar.template segment<3>(6 * a + 3);
+  }
+  p.noalias() += G.transpose() * lever;
   for (int i = 0; i < 2 * N; ++i) f.template segment<3>(3 * i) = Tr.transpose() * p.template segment<3>(3 * i);
 
   if (K != nullptr) {

@@ -1,11 +1,12 @@
 #include "fem/nonlinear_dynamics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include <Eigen/CholmodSupport>
-#include <Eigen/SparseLU>
 
+#include "fem/newton_matrix.hpp"
 #include "fem/nodal_rotation.hpp"
 
 namespace flapsim::fem {
@@ -63,35 +64,17 @@ PrescribedMotion rigid_prescribed_motion(const DynamicsModel& model, const Eigen
 
 struct DynamicsData::Work {
   Work(const CorotationalModel& m, const Constraints& c, TangentForm form)
-      : assembler(m, c, form), mass_assembler(m, c, TangentForm::SymmetricLower), form(form) {}
+      : assembler(m, c, form), mass_assembler(m, c, TangentForm::SymmetricLower), matrix(form, assembler.free_dofs()) {}
   NonlinearAssembler assembler;
   NonlinearAssembler mass_assembler;  ///< only for M_ff at the start
-  TangentForm form;
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
-  bool analysed = false;
-  /// Factorise the Newton matrix; false if it is singular (or, for LLᵀ, not positive definite).
-  bool factorize() {
-    const SparseMatrix& A = assembler.tangent();
-    if (form == TangentForm::SymmetricLower) {
-      if (!analysed) llt.analyzePattern(A);
-      analysed = true;
-      llt.factorize(A);
-      return llt.info() == Eigen::Success;
-    }
-    if (!analysed) lu.analyzePattern(A);
-    analysed = true;
-    lu.factorize(A);
-    return lu.info() == Eigen::Success;
-  }
-  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-    if (form == TangentForm::SymmetricLower)
-      x = llt.solve(b);
-    else
-      x = lu.solve(b);
-  }
+  NewtonMatrix matrix;
   CorotationalState trial;
   Eigen::VectorXd f_int, inertia, r, dx, increment, v1, vdot1, a1;
+  Eigen::VectorXd last_increment;  ///< the last converged step's increment (full)
+  Eigen::VectorXd du;              ///< a Newton correction (full)
+  std::vector<char> rotations_free;  ///< per node: its three rotations are free
+  double last_time = 0.0, last_h = 0.0;  ///< its t_n and Δt
+  bool has_last = false;
 };
 
 DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& s, const Eigen::VectorXd& v0,
@@ -109,6 +92,13 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
   w.v1.resize(n);
   w.vdot1.resize(n);
   w.a1.resize(n);
+  w.last_increment.resize(n);
+  w.du.resize(n);
+  w.rotations_free.assign(static_cast<std::size_t>(cm.num_nodes()), 0);
+  for (int node = 0; node < cm.num_nodes(); ++node)
+    w.rotations_free[static_cast<std::size_t>(node)] =
+        !model.eliminated.is_fixed(kDofsPerNode * node + 3) && !model.eliminated.is_fixed(kDofsPerNode * node + 4) &&
+        !model.eliminated.is_fixed(kDofsPerNode * node + 5);
   const auto& free = w.assembler.free_dofs();
   w.r.resize(static_cast<Eigen::Index>(free.size()));
   w.dx.resize(static_cast<Eigen::Index>(free.size()));
@@ -132,140 +122,228 @@ double DynamicsData::kinetic_energy() const {
   return 0.5 * velocity.dot(M * velocity);
 }
 
+namespace {
+
+/// The rotation of the driven base (its first driven node) in a state; I without one.
+Eigen::Matrix3d base_frame(const DynamicsModel& model, const CorotationalState& s) {
+  return model.driven_nodes.empty() ? Eigen::Matrix3d::Identity()
+                                    : s.rotation[static_cast<std::size_t>(model.driven_nodes.front())];
+}
+
+}  // namespace
+
 StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eigen::VectorXd& f_ext,
-                const PrescribedMotion* pm) {
+                const PrescribedMotion* pm, StepStart start) {
   const CorotationalModel& cm = *model.structure;
   DynamicsData::Work& w = *d.work_;
-  const double am = model.alpha_m, af = model.alpha_f, be = model.beta, ga = model.gamma;
   const std::vector<int>& free = w.assembler.free_dofs();
   const Eigen::Index nf = static_cast<Eigen::Index>(free.size());
-  StepResult res;
   if (f_ext.size() != cm.num_dofs()) throw std::invalid_argument("step: load vector size does not match the DOF count");
   if (pm != nullptr && pm->position.size() != model.driven_nodes.size())
     throw std::invalid_argument("step: one prescribed motion per driven node is required");
+  // One Newton solve of the step: from the warm start or the predictor, with the kept
+  // matrix (reuse) or a fresh one every iteration.
+  auto newton_step = [&](bool warm, bool reuse) -> StepResult {
+    SolverCounters& count = d.counters_;
+    const double am = model.alpha_m, af = model.alpha_f, be = model.beta, ga = model.gamma;
+    StepResult res;
 
-  // Predictor: q_{n+1} = q_n (no increment), the rates from the scheme. An
-  // extrapolating predictor (v̇_{n+1} = v̇_n) puts the stiff, unresolved modes
-  // (rotations of small rotary inertia, ωh ≫ 1) far off and Newton diverged.
-  w.increment.setZero();
-  w.a1 = -(d.velocity + h * (0.5 - be) * d.pseudo_acceleration) / (h * be);
-  w.v1 = d.velocity + h * (1.0 - ga) * d.pseudo_acceleration + h * ga * w.a1;
-  w.vdot1 = ((1.0 - am) * w.a1 + am * d.pseudo_acceleration - af * d.acceleration) / (1.0 - af);
-  // Driven nodes: their motion at t_{n+1} as given (or at rest where they are).
-  auto place = [&]() {
-    for (size_t i = 0; i < d.state.position.size(); ++i) {
-      w.trial.position[i] = d.state.position[i] + w.increment.segment<3>(static_cast<Eigen::Index>(6 * i));
-      w.trial.rotation[i] =
-          rotation_matrix(w.increment.segment<3>(static_cast<Eigen::Index>(6 * i + 3))) * d.state.rotation[i];
+    // Predictor (the increment q_n → q_{n+1}; the rates follow from the scheme):
+    // - warm: the last converged answer of this step;
+    // - rigid: every node carried with the base's rigid increment (rotation ΔQ about the first
+    //   driven node p): x̃ = p_{n+1} + ΔQ (x_n − p_n), R̃ = ΔQ R_n; the deformation seen from the
+    //   base is kept, so a flapping wing starts where its base has taken it;
+    // - else q_{n+1} = q_n. (Extrapolating with v̇_n put the stiff, unresolved modes, rotations
+    //   of small rotary inertia with ωh ≫ 1, far off and Newton diverged.)
+    if (warm) {
+      w.increment = w.last_increment;
+    } else if (model.options.rigid_predictor && pm != nullptr && !model.driven_nodes.empty()) {
+      const auto p0 = static_cast<std::size_t>(model.driven_nodes.front());
+      const Eigen::Matrix3d dQ = pm->rotation.front() * d.state.rotation[p0].transpose();
+      const Eigen::Vector3d spin = rotation_vector(dQ);
+      for (std::size_t i = 0; i < d.state.position.size(); ++i) {
+        const Eigen::Index o = static_cast<Eigen::Index>(kDofsPerNode * i);
+        w.increment.segment<3>(o) =
+            pm->position.front() + dQ * (d.state.position[i] - d.state.position[p0]) - d.state.position[i];
+        w.increment.segment<3>(o + 3) = spin;
+      }
+    } else {
+      w.increment.setZero();
     }
+    for (int i : model.fixed_not_driven) w.increment(i) = 0.0;
+    w.a1 = (w.increment / h - d.velocity - h * (0.5 - be) * d.pseudo_acceleration) / (h * be);
+    w.v1 = d.velocity + h * (1.0 - ga) * d.pseudo_acceleration + h * ga * w.a1;
+    w.vdot1 = ((1.0 - am) * w.a1 + am * d.pseudo_acceleration - af * d.acceleration) / (1.0 - af);
+    // Driven nodes: their motion at t_{n+1} as given (or at rest where they are).
+    auto place = [&]() {
+      for (size_t i = 0; i < d.state.position.size(); ++i) {
+        w.trial.position[i] = d.state.position[i] + w.increment.segment<3>(static_cast<Eigen::Index>(6 * i));
+        w.trial.rotation[i] =
+            rotation_matrix(w.increment.segment<3>(static_cast<Eigen::Index>(6 * i + 3))) * d.state.rotation[i];
+      }
+      for (size_t k = 0; k < model.driven_nodes.size(); ++k) {
+        const int n = model.driven_nodes[k];
+        if (pm != nullptr) {
+          w.trial.position[n] = pm->position[k];
+          w.trial.rotation[n] = pm->rotation[k];
+        } else {
+          w.trial.position[n] = d.state.position[n];
+          w.trial.rotation[n] = d.state.rotation[n];
+        }
+      }
+    };
     for (size_t k = 0; k < model.driven_nodes.size(); ++k) {
-      const int n = model.driven_nodes[k];
+      const Eigen::Index o = 6 * model.driven_nodes[k];
       if (pm != nullptr) {
-        w.trial.position[n] = pm->position[k];
-        w.trial.rotation[n] = pm->rotation[k];
+        w.v1.segment<3>(o) = pm->velocity[k];
+        w.v1.segment<3>(o + 3) = pm->angular_velocity[k];
+        w.vdot1.segment<3>(o) = pm->acceleration[k];
+        w.vdot1.segment<3>(o + 3) = pm->angular_acceleration[k];
       } else {
-        w.trial.position[n] = d.state.position[n];
-        w.trial.rotation[n] = d.state.rotation[n];
+        w.v1.segment<6>(o).setZero();
+        w.vdot1.segment<6>(o).setZero();
+      }
+      w.a1.segment<6>(o) = ((1.0 - af) * w.vdot1.segment<6>(o) + af * d.acceleration.segment<6>(o) -
+                            am * d.pseudo_acceleration.segment<6>(o)) / (1.0 - am);
+    }
+    // Fixed (not driven) DOFs stay put.
+    for (int i : model.fixed_not_driven) w.increment(i) = w.v1(i) = w.vdot1(i) = w.a1(i) = 0.0;
+    place();
+    const Eigen::Matrix3d frame = base_frame(model, w.trial);
+
+    const double cM = (1.0 - am) / ((1.0 - af) * be * h * h);  // ∂v̇/∂u [1/s²]
+    const double cV = ga / (be * h);                           // ∂v/∂u [1/s]
+    TangentExtras ex;
+    ex.mass_scale = cM;
+    ex.velocity = &w.v1;
+    ex.damping = model.options.stiffness_damping;
+    ex.damping_tangent_scale = cV;
+    double strain = 0.0, previous = 0.0;  // previous: the last correction's size
+    bool refactor = false;
+    for (int it = 0; it <= model.options.max_iterations; ++it) {
+      // A new matrix: none kept, another Δt, full Newton, or the kept one contracted too
+      // slowly in the last iteration.
+      const bool new_matrix = !reuse || !w.matrix.valid() || w.matrix.step_size() != h || refactor;
+      refactor = false;
+      strain = w.assembler.evaluate(w.trial, w.f_int, new_matrix, ex);
+      auto residual = [&](double& scale) {
+        w.inertia.noalias() = cm.mass * w.vdot1;
+        double fe = 0.0, fi = 0.0, fm = 0.0;
+        for (Eigen::Index i = 0; i < nf; ++i) {
+          const int g = free[static_cast<size_t>(i)];
+          w.r(i) = f_ext(g) - w.f_int(g) - w.inertia(g);
+          fe += f_ext(g) * f_ext(g);
+          fi += w.f_int(g) * w.f_int(g);
+          fm += w.inertia(g) * w.inertia(g);
+        }
+        scale = std::sqrt(std::max({fe, fi, fm}));
+        return w.r.norm();
+      };
+      double scale = 0.0;
+      const double rn = residual(scale);
+      res.residual = scale > 0.0 ? rn / scale : rn;
+      if (!std::isfinite(rn)) {
+        res.failure = "t = " + std::to_string(d.time + h) + " s: the residual is not finite";
+        return res;
+      }
+      if (rn <= model.options.tolerance * scale || rn == 0.0) {
+        res.converged = true;
+        break;
+      }
+      if (it == model.options.max_iterations) break;
+      if (new_matrix) {
+        ++count.factorizations;
+        if (!w.matrix.factorize(w.assembler.tangent(), frame, h)) {
+          res.failure = "t = " + std::to_string(d.time + h) + " s, iteration " + std::to_string(it) +
+                        ": the Newton matrix is singular";
+          count.lu_fallbacks = w.matrix.lu_fallbacks();
+          return res;
+        }
+        count.lu_fallbacks = w.matrix.lu_fallbacks();
+      }
+      w.matrix.solve(w.r, frame, w.dx);
+      ++count.iterations;
+      double max_t = 0.0, max_r = 0.0;
+      for (Eigen::Index i = 0; i < nf; ++i) {
+        const bool translation = free[static_cast<size_t>(i)] % kDofsPerNode < 3;
+        double& m = translation ? max_t : max_r;
+        m = std::max(m, std::abs(w.dx(i)));
+      }
+      const double tol_u = model.options.increment_tolerance;
+      const bool small_increment = max_t <= tol_u * model.size && max_r <= tol_u;
+      // Contraction of a kept matrix: the ratio of successive corrections (the residual's
+      // ratio is no measure: the first correction of a thin membrane stretches it and
+      // raises the residual, by 20–200 on the hawkmoth, whatever the matrix). Too slow: a
+      // new matrix at this iterate; growing: this correction is dropped as well.
+      const double size = std::max(max_t / model.size, max_r);
+      if (!new_matrix && it > 0 && !small_increment && size > model.options.refactor_rate * previous) {
+        refactor = true;
+        if (size > previous) continue;
+      }
+      previous = size;
+      // A correction that turns a node by more than kMaxRotationCorrection is
+      // scaled down to it: far from the solution, the linearisation of the
+      // rotations (exp(ω̂) ≈ I + ω̂) no longer holds and full corrections ran off.
+      if (max_r > kMaxRotationCorrection) w.dx *= kMaxRotationCorrection / max_r;
+      // The correction moves the trial: x ← x + δx and, on a node whose three rotations are
+      // free, R ← exp(δω̂) R, the update the tangent linearises (spatial spins); the step's
+      // rotation increment is then log(R R_nᵀ) (Arnold & Brüls 2007). Adding δω to the
+      // increment instead is off by ½ hΔ × δω, and Newton converged linearly at that rate.
+      w.du.setZero();
+      for (Eigen::Index i = 0; i < nf; ++i) w.du(free[static_cast<size_t>(i)]) = w.dx(i);
+      for (std::size_t node = 0; node < w.rotations_free.size(); ++node) {
+        if (!w.rotations_free[node]) continue;
+        const Eigen::Index o = static_cast<Eigen::Index>(kDofsPerNode * node + 3);
+        const Eigen::Matrix3d R = rotation_matrix(w.du.segment<3>(o)) * w.trial.rotation[node];
+        w.du.segment<3>(o) = rotation_vector(R * d.state.rotation[node].transpose()) - w.increment.segment<3>(o);
+      }
+      for (int g : free) {
+        const double du = w.du(g);
+        w.increment(g) += du;
+        w.a1(g) += du / (be * h * h);
+        w.v1(g) += cV * du;
+        w.vdot1(g) += cM * du;
+      }
+      place();
+      if (small_increment) {
+        strain = w.assembler.evaluate(w.trial, w.f_int, false, ex);
+        res.iterations = it + 1;
+        res.converged = true;
+        break;
       }
     }
-  };
-  for (size_t k = 0; k < model.driven_nodes.size(); ++k) {
-    const Eigen::Index o = 6 * model.driven_nodes[k];
-    if (pm != nullptr) {
-      w.v1.segment<3>(o) = pm->velocity[k];
-      w.v1.segment<3>(o + 3) = pm->angular_velocity[k];
-      w.vdot1.segment<3>(o) = pm->acceleration[k];
-      w.vdot1.segment<3>(o + 3) = pm->angular_acceleration[k];
-    } else {
-      w.v1.segment<6>(o).setZero();
-      w.vdot1.segment<6>(o).setZero();
-    }
-    w.a1.segment<6>(o) = ((1.0 - af) * w.vdot1.segment<6>(o) + af * d.acceleration.segment<6>(o) -
-                          am * d.pseudo_acceleration.segment<6>(o)) / (1.0 - am);
-  }
-  // Fixed (not driven) DOFs stay put.
-  for (int i : model.fixed_not_driven) w.increment(i) = w.v1(i) = w.vdot1(i) = w.a1(i) = 0.0;
-  place();
-
-  const double cM = (1.0 - am) / ((1.0 - af) * be * h * h);  // ∂v̇/∂u [1/s²]
-  const double cV = ga / (be * h);                           // ∂v/∂u [1/s]
-  TangentExtras ex;
-  ex.mass_scale = cM;
-  ex.velocity = &w.v1;
-  ex.damping = model.options.stiffness_damping;
-  ex.damping_tangent_scale = cV;
-  double strain = 0.0;
-  for (int it = 0; it <= model.options.max_iterations; ++it) {
-    strain = w.assembler.evaluate(w.trial, w.f_int, true, ex);
-    w.inertia.noalias() = cm.mass * w.vdot1;
-    double scale = 0.0, fi = 0.0, fm = 0.0;
-    for (Eigen::Index i = 0; i < nf; ++i) {
-      const int g = free[static_cast<size_t>(i)];
-      w.r(i) = f_ext(g) - w.f_int(g) - w.inertia(g);
-      scale += f_ext(g) * f_ext(g);
-      fi += w.f_int(g) * w.f_int(g);
-      fm += w.inertia(g) * w.inertia(g);
-    }
-    scale = std::sqrt(std::max({scale, fi, fm}));
-    const double rn = w.r.norm();
-    res.residual = scale > 0.0 ? rn / scale : rn;
-    res.iterations = it;
-    if (!std::isfinite(rn)) {
-      res.failure = "t = " + std::to_string(d.time + h) + " s: the residual is not finite";
+    if (!res.converged) {
+      res.failure = "t = " + std::to_string(d.time + h) + " s: Newton did not converge in " +
+                    std::to_string(model.options.max_iterations) + " iterations (relative residual " +
+                    std::to_string(res.residual) + ")";
       return res;
     }
-    if (rn <= model.options.tolerance * scale || rn == 0.0) {
-      res.converged = true;
-      break;
-    }
-    if (it == model.options.max_iterations) break;
-    if (!w.factorize()) {
-      res.failure = "t = " + std::to_string(d.time + h) + " s, iteration " + std::to_string(it) +
-                    ": the Newton matrix is singular or (LLᵀ) not positive definite";
-      return res;
-    }
-    w.solve(w.r, w.dx);
-    double max_t = 0.0, max_r = 0.0;
-    for (Eigen::Index i = 0; i < nf; ++i) {
-      const bool translation = free[static_cast<size_t>(i)] % kDofsPerNode < 3;
-      double& m = translation ? max_t : max_r;
-      m = std::max(m, std::abs(w.dx(i)));
-    }
-    const double tol_u = model.options.increment_tolerance;
-    const bool small_increment = max_t <= tol_u * model.size && max_r <= tol_u;
-    // A correction that turns a node by more than kMaxRotationCorrection is
-    // scaled down to it: far from the solution, the linearisation of the
-    // rotations (exp(ω̂) ≈ I + ω̂) no longer holds and full corrections ran off.
-    if (max_r > kMaxRotationCorrection) w.dx *= kMaxRotationCorrection / max_r;
-    for (Eigen::Index i = 0; i < nf; ++i) {
-      const int g = free[static_cast<size_t>(i)];
-      const double du = w.dx(i);
-      w.increment(g) += du;
-      w.a1(g) += du / (be * h * h);
-      w.v1(g) += cV * du;
-      w.vdot1(g) += cM * du;
-    }
-    place();
-    if (small_increment) {
-      strain = w.assembler.evaluate(w.trial, w.f_int, false, ex);
-      res.iterations = it + 1;
-      res.converged = true;
-      break;
-    }
-  }
-  if (!res.converged) {
-    res.failure = "t = " + std::to_string(d.time + h) + " s: Newton did not converge in " +
-                  std::to_string(model.options.max_iterations) + " iterations (relative residual " +
-                  std::to_string(res.residual) + ")";
+    d.strain_energy = strain;
     return res;
+  };
+
+  const bool warm = start == StepStart::PreviousSolution && w.has_last && w.last_time == d.time && w.last_h == h;
+  // With a kept Newton matrix first; if that fails, once more with a fresh matrix every
+  // iteration (full Newton).
+  StepResult res = newton_step(warm, model.options.reuse_factorization);
+  if (!res.converged && model.options.reuse_factorization) {
+    ++d.counters_.retries;
+    const int before = res.iterations;
+    res = newton_step(false, false);
+    res.iterations += before;
   }
+  if (!res.converged) return res;
+  w.last_increment = w.increment;
+  w.last_time = d.time;
+  w.last_h = h;
+  w.has_last = true;
   std::swap(d.state, w.trial);
   w.trial = d.state;  // same sizes: no allocation
   std::swap(d.velocity, w.v1);
   std::swap(d.acceleration, w.vdot1);
   std::swap(d.pseudo_acceleration, w.a1);
   d.time += h;
-  d.strain_energy = strain;
+  ++d.counters_.steps;
   return res;
 }
 

@@ -4,9 +4,10 @@
 /// generalized-α (Chung & Hulbert 1993) in the Lie-group form of Arnold &
 /// Brüls 2007 (equilibrium at t_{n+1}, pseudo-accelerations a), Newton
 /// iterations on the free DOFs with the symbolic analysis of the Newton matrix
-/// done once (sparse LU of the consistent tangent, or CHOLMOD supernodal LLᵀ
-/// of the symmetrised one: DynamicsOptions::tangent), no allocation in the
-/// step.
+/// done once (CHOLMOD supernodal LLᵀ of the symmetrised tangent, or sparse LU:
+/// DynamicsOptions::tangent) and the factor kept across steps, no allocation in
+/// the step (CHOLMOD's and SparseLU's own buffers, and the rare LU fallback,
+/// excepted).
 ///
 /// Per step (h = Δt, q ⊕ w: x + w_t and exp(ŵ_r) R):
 ///   q_{n+1} = q_n ⊕ h Δ,  Δ = v_n + h(½ − β) a_n + hβ a_{n+1}
@@ -19,11 +20,23 @@
 /// nodal rotary inertia isotropic, so M v̇ is the exact inertial force, with
 /// no gyroscopic term. The Newton matrix is c_M M + K_T (+ damping) with
 /// c_M = (1 − α_m)/((1 − α_f)βh²); the tangent operator of exp on the
-/// rotation increment (I + O(h|ω|)) is left out of it, so Newton converges
-/// linearly at a rate of order h|ω|. The symmetrised tangent is cheaper
-/// (LLᵀ) but its Newton matrix can lose definiteness where large moments act
-/// on nodes of small rotary inertia (a frame released from a large
-/// deflection: measured in docs/fem.md); the consistent one is the default.
+/// rotation increment (I + O(h|ω|)) is left out of it.
+///
+/// Newton (docs/fem.md, "Cost"):
+/// - Predictor: the free nodes carried rigidly with the driven base from t_n to
+///   t_{n+1} (the rotation and translation of the first driven node), the
+///   deformation in the base frame kept; or q_n at rest (no driven motion); or
+///   the last converged answer of the same step (StepStart::PreviousSolution,
+///   for the sub-iterations of a coupled step).
+/// - Modified Newton: the factorised Newton matrix (newton_matrix.hpp) is kept
+///   across iterations and steps, turned with the base's rotation, and made
+///   anew from the current tangent when the residual falls by less than
+///   DynamicsOptions::refactor_rate in an iteration, when h changes, or when a
+///   step with the kept matrix fails (the step is then redone with a fresh
+///   matrix every iteration).
+/// - CHOLMOD LLᵀ of the symmetrised tangent by default, sparse LU when LLᵀ
+///   finds it not positive definite (a frame released from a large deflection:
+///   measured in docs/fem.md), or the consistent tangent by LU on request.
 ///
 /// Base motion. The wing moves with its prescribed base motion in the ground
 /// frame: the clamp nodes are driven (position, rotation and their rates
@@ -54,12 +67,36 @@ struct DynamicsOptions {
   int max_iterations = 25;       ///< Newton iterations per step
   double tolerance = 1e-10;      ///< ‖r_free‖ ≤ tolerance · force scale of the step
   double stiffness_damping = 0.0;  ///< a₁ [s], Rayleigh stiffness-proportional (co-rotational)
-  /// Newton matrix: Consistent (sparse LU) or SymmetricLower (CHOLMOD LLᵀ).
-  TangentForm tangent = TangentForm::Consistent;
+  /// Newton matrix: SymmetricLower (CHOLMOD LLᵀ, LU if not positive definite) or
+  /// Consistent (sparse LU of the non-symmetric tangent).
+  TangentForm tangent = TangentForm::SymmetricLower;
   /// Also converged when the largest Newton correction is below this fraction
   /// of the model's size (translations) or this many radians (rotations):
   /// the residual of a small motion can sit at its round-off floor.
   double increment_tolerance = 1e-13;
+  /// Keep the factorised Newton matrix across iterations and steps (modified
+  /// Newton); false: a new tangent and factorisation every iteration.
+  bool reuse_factorization = true;
+  /// A kept matrix is made anew when an iteration reduces the residual by less
+  /// than this factor (‖r_{k+1}‖ > refactor_rate ‖r_k‖).
+  double refactor_rate = 0.25;
+  /// Carry the free nodes with the driven base's rigid increment (else start at q_n).
+  bool rigid_predictor = true;
+};
+
+/// Where a step's Newton iterations start.
+enum class StepStart {
+  Predictor,         ///< the predictor of DynamicsOptions (rigid or at rest)
+  PreviousSolution,  ///< the last converged answer of this same step (same t_n and Δt), if any
+};
+
+/// Work done since the data were made (for benchmarks and reports).
+struct SolverCounters {
+  long steps = 0;               ///< converged steps
+  long iterations = 0;          ///< Newton iterations (linear solves)
+  long factorizations = 0;      ///< Newton matrices factorised
+  long lu_fallbacks = 0;        ///< of which by LU because LLᵀ failed
+  long retries = 0;             ///< steps redone with a fresh matrix every iteration
 };
 
 /// The constant part: model, which nodes are driven, which DOFs are fixed.
@@ -117,18 +154,23 @@ class DynamicsData {
   double time = 0.0;           ///< t_n [s]
   double strain_energy = 0.0;  ///< at q_n [J]
   double kinetic_energy() const;  ///< ½ vᵀ M v [J]
+  const SolverCounters& counters() const { return counters_; }
 
  private:
   friend StepResult step(const DynamicsModel&, DynamicsData&, double, const Eigen::VectorXd&,
-                         const PrescribedMotion*);
+                         const PrescribedMotion*, StepStart);
   struct Work;
   std::unique_ptr<Work> work_;
+  SolverCounters counters_;
 };
 
 /// \brief Advance from t_n to t_n + dt. On failure the data keep t_n's values.
 /// \param f_ext       nodal loads at t_{n+1}, full numbering [N, N·m]
 /// \param prescribed  driven nodes' motion at t_{n+1} (nullptr: they stay where they are, at rest)
+/// \param start       PreviousSolution: start from the answer of the last converged call if
+///                    it was made from the same t_n with the same dt (the caller restored
+///                    the data to that t_n's state); else the predictor
 StepResult step(const DynamicsModel& model, DynamicsData& data, double dt, const Eigen::VectorXd& f_ext,
-                const PrescribedMotion* prescribed);
+                const PrescribedMotion* prescribed, StepStart start = StepStart::Predictor);
 
 }  // namespace flapsim::fem

@@ -1,5 +1,6 @@
 #include "pipeline/fsi/fem_structure.hpp"
 
+#include <algorithm>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,17 @@ FemStructureModel::FemStructureModel(fem::StructuralModel structural_model, std:
       attachment(lattice_nodes.cols() > 0 ? attach_wing_to_fem(structural.mesh, lattice_nodes, chordwise, spanwise)
                                           : FemAttachment{}),
       length_scale(length) {}
+
+fem::DynamicsOptions coupled_dynamics_options(fem::DynamicsOptions options, double coupling_tolerance,
+                                              int steps_per_cycle) {
+  const double r = options.rho_infinity;
+  const double am = (2.0 * r - 1.0) / (r + 1.0), af = r / (r + 1.0);
+  const double gamma = 0.5 - am + af, beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
+  const double rho = std::clamp(options.refactor_rate, 1e-3, 0.9);
+  const double rate = std::max(1.0, gamma / beta * steps_per_cycle / (2.0 * std::numbers::pi));
+  options.increment_tolerance = 0.01 * coupling_tolerance * (1.0 - rho) / rho / rate;
+  return options;
+}
 
 std::unique_ptr<StructureData> FemStructureModel::make_data() const {
   return std::make_unique<FemStructureData>(*this);
@@ -97,7 +109,10 @@ void FemStructureData::read_trial() {
 void FemStructureData::solve(double dt) {
   restore_accepted();
   const fem::PrescribedMotion motion = clamp_motion(model_, accepted_.time + dt);
-  const fem::StepResult r = fem::step(model_.dynamics, *dynamics_, dt, loads_, &motion);
+  // A sub-iteration after the first starts Newton from the last answer of this step: the
+  // answer to the given loads is the same to the solver's tolerance (fem_structure.hpp).
+  const fem::StepResult r =
+      fem::step(model_.dynamics, *dynamics_, dt, loads_, &motion, fem::StepStart::PreviousSolution);
   if (!r.converged) throw StructureFailure("FEM: " + r.failure);
   read_trial();
   pose_is_trial_ = true;

@@ -9,8 +9,11 @@
 /// What the coupling relaxes is the interface: the translations and velocities of the FEM's
 /// nodes, (x, v), which alone place the lattice; the interface residual is x̂ − x̃ (Aitken's
 /// factor on the displacements, the same factor on the velocities). Each solve restarts the
-/// step from the accepted state, so the structure's answer ŝ to given loads does not depend
-/// on the iterate; the accepted state is ŝ, the FEM's own converged step.
+/// step from the accepted state; its Newton starts from the step's last answer (the first
+/// solve of a step from the rigid-base predictor), so the structure's answer ŝ to given
+/// loads does not depend on the iterate to the FEM's tolerance, which
+/// coupled_dynamics_options puts at 1 % of the coupling's; the accepted state is ŝ, the
+/// FEM's own converged step.
 
 #include <Eigen/Core>
 
@@ -52,6 +55,19 @@ class FemStructureModel : public StructureModel {
   const FemAttachment attachment;
   const double length_scale;  ///< [m]
 };
+
+/// \brief The FEM's Newton tolerance in a coupled run, from the coupling's: the coupling
+/// converges when max(|δx|, |δv|/(2πf)) ≤ τ L between sub-iterations (change()), and the
+/// FEM's own error should be well below that, so that its answer to given loads does not
+/// depend on where its Newton started (the warm start of a sub-iteration). A modified
+/// Newton whose corrections contract by ρ ≤ refactor_rate leaves an error of at most
+/// ρ/(1 − ρ) times its last correction ε L; the velocity error is γ/(βΔt) times it, i.e.
+/// (γ/β)(N/2π) ε L per flapping radian at N steps per cycle. Asked: both below 1 % of τ:
+///   ε = 0.01 τ (1 − ρ)/ρ / max(1, (γ/β) N/(2π))
+/// (τ = 1e-6, N = 100, ρ∞ = 1, ρ = 0.25: ε = 9.4e-10). Returns `options` with
+/// increment_tolerance = ε (translations relative to the model size, rotations in rad).
+fem::DynamicsOptions coupled_dynamics_options(fem::DynamicsOptions options, double coupling_tolerance,
+                                              int steps_per_cycle);
 
 /// The FEM's states during a run.
 class FemStructureData : public StructureData {

@@ -1,0 +1,61 @@
+#include "fem/newton_matrix.hpp"
+
+namespace flapsim::fem {
+
+NewtonMatrix::NewtonMatrix(TangentForm form, const std::vector<int>& free_dofs) : form_(form) {
+  if (free_dofs.size() % kDofsPerNode != 0) rotatable_ = false;
+  for (std::size_t i = 0; rotatable_ && i < free_dofs.size(); i += kDofsPerNode)
+    for (int d = 0; d < kDofsPerNode; ++d)
+      if (free_dofs[i + static_cast<std::size_t>(d)] != free_dofs[i] + d || free_dofs[i] % kDofsPerNode != 0)
+        rotatable_ = false;
+  rhs_.resize(static_cast<Eigen::Index>(free_dofs.size()));
+}
+
+bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame, double h) {
+  valid_ = false;
+  frame_ = frame;
+  h_ = h;
+  if (form_ == TangentForm::SymmetricLower) {
+    if (!llt_analysed_) llt_.analyzePattern(A);
+    llt_analysed_ = true;
+    llt_.factorize(A);
+    if (llt_.info() == Eigen::Success) {
+      using_lu_ = false;
+      valid_ = true;
+      return true;
+    }
+    // Not positive definite (the symmetrised tangent under large moments on nodes of
+    // small rotary inertia): the same matrix by LU.
+    ++fallbacks_;
+    full_ = A.selfadjointView<Eigen::Lower>();
+    using_lu_ = true;
+    if (!lu_analysed_) lu_.analyzePattern(full_);
+    lu_analysed_ = true;
+    lu_.factorize(full_);
+  } else {
+    using_lu_ = true;
+    if (!lu_analysed_) lu_.analyzePattern(A);
+    lu_analysed_ = true;
+    lu_.factorize(A);
+  }
+  valid_ = lu_.info() == Eigen::Success;
+  return valid_;
+}
+
+void NewtonMatrix::rotate(Eigen::VectorXd& v, const Eigen::Matrix3d& S) const {
+  for (Eigen::Index i = 0; i + 2 < v.size(); i += 3) v.segment<3>(i) = S * v.segment<3>(i).eval();
+}
+
+void NewtonMatrix::solve(const Eigen::VectorXd& r, const Eigen::Matrix3d& frame, Eigen::VectorXd& x) {
+  const Eigen::Matrix3d S = frame * frame_.transpose();
+  const bool turn = rotatable_ && !S.isIdentity(0.0);
+  rhs_ = r;
+  if (turn) rotate(rhs_, S.transpose());
+  if (using_lu_)
+    x = lu_.solve(rhs_);
+  else
+    x = llt_.solve(rhs_);
+  if (turn) rotate(x, S);
+}
+
+}  // namespace flapsim::fem
