@@ -49,12 +49,14 @@ inline constexpr double kLongRunSeconds = 10.0;
 /// Runs estimated above this print their estimate even with run -q [s].
 inline constexpr double kVeryLongRunSeconds = 3600.0;
 
-/// Time of one Newton iteration of the FEM structure (assembly and sparse factorisation)
-/// for 1000 DOFs [s], scaled by (DOFs/1000)^1.5 (the factorisation of a 2-D mesh's matrix
-/// under a fill-reducing ordering: George & Liu 1981, nested dissection). Measured on the
-/// development machine: a 150-node plate (900 DOFs) 17 ms, the hawkmoth's 27 618 DOFs 2.4 s
-/// (docs/fsi.md, "The FEM as the structure").
-inline constexpr double kFemSecondsPerIteration1000 = 0.02;
+/// Time of one Newton iteration of the FEM structure (assembly, a share of the kept
+/// factorisation's renewals, the solve) for 1000 DOFs [s], scaled by (DOFs/1000)^1.5 (the
+/// factorisation of a 2-D mesh's matrix under a fill-reducing ordering: George & Liu 1981,
+/// nested dissection). Measured on the development machine (2-core Xeon, modified Newton of
+/// docs/fem.md, "Cost"): the hawkmoth's 27 618 DOFs 0.16 s an iteration (1.32 s a step of
+/// 8.3 iterations), i.e. 1.1e-3 s at 1000 DOFs; a 2010-DOF film wing in air 2.7 ms
+/// (0.95e-3 s at 1000); with a margin for slower CPUs.
+inline constexpr double kFemSecondsPerIteration1000 = 1.5e-3;
 
 /// \param bodies    bodies of the chain the run will use (the case's structure.bodies)
 /// \param fem_dofs  DOFs of the FEM structure (kind = "fem"; 0 for a chain)
