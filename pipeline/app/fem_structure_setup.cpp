@@ -23,7 +23,7 @@ std::shared_ptr<const fsi::FemStructureModel> make_fem_structure(const io::Case&
   options = fsi::coupled_dynamics_options(options, c.numerics.coupling_tolerance, c.numerics.steps_per_cycle);
   const int nc = c.numerics.chordwise_panels, ns = c.numerics.spanwise_panels;
   return std::make_shared<const fsi::FemStructureModel>(std::move(f.model), std::move(clamped), base, options,
-                                                        lattice_nodes, nc, ns, span);
+                                                        lattice_nodes, nc, ns, span, c.structure.gravity);
 }
 
 }  // namespace flapsim::app

@@ -10,14 +10,20 @@ namespace flapsim::fsi {
 FemStructureModel::FemStructureModel(fem::StructuralModel structural_model, std::vector<int> clamped_nodes,
                                      mbd::BaseMotion base, const fem::DynamicsOptions& options,
                                      const Eigen::Matrix3Xd& lattice_nodes, int chordwise, int spanwise,
-                                     double length)
+                                     double length, const Eigen::Vector3d& gravity)
     : structural(std::move(structural_model)),
       corotational(fem::make_corotational_model(structural)),
       dynamics(fem::make_dynamics_model(corotational, std::move(clamped_nodes), options)),
       base_motion(std::move(base)),
       attachment(lattice_nodes.cols() > 0 ? attach_wing_to_fem(structural.mesh, lattice_nodes, chordwise, spanwise)
                                           : FemAttachment{}),
-      length_scale(length) {}
+      length_scale(length),
+      gravity_loads([&] {
+        if (gravity.isZero(0.0)) return Eigen::VectorXd();
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(corotational.num_dofs());
+        for (int n = 0; n < corotational.num_nodes(); ++n) g.segment<3>(fem::dof_index(n, fem::UX)) = gravity;
+        return Eigen::VectorXd(corotational.mass * g);
+      }()) {}
 
 fem::DynamicsOptions coupled_dynamics_options(fem::DynamicsOptions options, double coupling_tolerance,
                                               int steps_per_cycle) {
@@ -77,7 +83,12 @@ void FemStructureData::initialize(double t0) {
   pose_is_trial_ = true;
 }
 
-void FemStructureData::set_external_loads(double) { loads_.setZero(); }
+void FemStructureData::set_external_loads(double) {
+  if (model_.gravity_loads.size() > 0)
+    loads_ = model_.gravity_loads;
+  else
+    loads_.setZero();
+}
 
 void FemStructureData::add_panel_loads(const uvlm::PanelLoads& panels) {
   add_panel_loads_to_fem(model_.attachment, model_.structural.mesh, pose_is_trial_ ? trial_x_ : iterate_x_, panels,

@@ -37,9 +37,10 @@ class FemStructureModel : public StructureModel {
   /// \param clamped_nodes  the nodes the base drives (all six DOFs)
   /// \param lattice_nodes  lattice nodes in W, (nc+1)(ns+1) columns [m] (empty: vacuum)
   /// \param length_scale   the wing's span [m]: the scale of the coupling's change measure
+  /// \param gravity        g in the ground frame [m/s²] (zero: none)
   FemStructureModel(fem::StructuralModel structural, std::vector<int> clamped_nodes, mbd::BaseMotion base,
                     const fem::DynamicsOptions& options, const Eigen::Matrix3Xd& lattice_nodes, int chordwise,
-                    int spanwise, double length_scale);
+                    int spanwise, double length_scale, const Eigen::Vector3d& gravity = Eigen::Vector3d::Zero());
   FemStructureModel(const FemStructureModel&) = delete;
   FemStructureModel& operator=(const FemStructureModel&) = delete;
 
@@ -54,6 +55,10 @@ class FemStructureModel : public StructureModel {
   const mbd::BaseMotion base_motion;
   const FemAttachment attachment;
   const double length_scale;  ///< [m]
+  /// The weight M g of every node (g at each translational DOF, through the FEM's mass
+  /// matrix: its resultant is the FEM's mass times g, its moment that of the mass
+  /// distribution) [N]; empty without gravity.
+  const Eigen::VectorXd gravity_loads;
 };
 
 /// \brief The FEM's Newton tolerance in a coupled run, from the coupling's: the coupling

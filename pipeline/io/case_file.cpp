@@ -118,10 +118,6 @@ Case::Structure read_structure(const TomlTable& root) {
     if (g.size() != 3)
       t.fail("gravity", "expected [g_x, g_y, g_z] in m/s² (3 numbers), found " + std::to_string(g.size()));
     s.gravity = Eigen::Vector3d(g[0], g[1], g[2]);
-    if (s.kind == Kind::Fem && s.gravity.norm() > 0.0)
-      t.fail("gravity", "the FEM structure does not take gravity yet (docs/fsi.md, \"The FEM as the structure\"); "
-                        "run the chain (kind = \"flexible\") or leave gravity out (an insect wing's weight is "
-                        "small against its inertial loads)");
   }
   for (const char* key : {"initial_angles_deg", "initial_rates_deg_per_s"}) {
     if (!t.has(key)) continue;

@@ -1,6 +1,6 @@
 // `[structure] kind = "fem"` in a case file (docs/case_file.md, "[structure]"): its keys
-// are read in SI units, and what belongs to the chain (bodies, joint angles, point loads,
-// markers) or is not yet taken (gravity) is refused at its file, line and key.
+// are read in SI units (gravity as for any structure), and what belongs to the chain
+// (bodies, joint angles, point loads, markers) is refused at its file, line and key.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -26,12 +26,13 @@ const std::string kFemHead =
 
 TEST(CaseFemStructure, KeysAreReadInSiUnits) {
   const p::Case c = case_from_text(kFemHead + "element_size_mm = 1.5\nvein_element_size_mm = 0.5\n"
-                                              "stiffness_damping_s = 2e-5\n");
+                                              "stiffness_damping_s = 2e-5\ngravity = [0.0, 0.0, -9.81]\n");
   EXPECT_EQ(c.structure.kind, p::Case::Structure::Kind::Fem);
   EXPECT_EQ(c.structure.bodies, 1);
   EXPECT_DOUBLE_EQ(c.structure.fem_element_size, 1.5e-3);       // mm → m
   EXPECT_DOUBLE_EQ(c.structure.fem_vein_element_size, 0.5e-3);
   EXPECT_DOUBLE_EQ(c.structure.fem_stiffness_damping, 2e-5);    // s
+  EXPECT_DOUBLE_EQ(c.structure.gravity.z(), -9.81);              // m/s², ground frame
   // Defaults: the wing file's mesh, no damping.
   const p::Case d = case_from_text(kFemHead);
   EXPECT_EQ(d.structure.fem_element_size, 0.0);
@@ -48,7 +49,6 @@ TEST(CaseFemStructure, WhatBelongsToTheChainIsRefusedAtItsLineAndKey) {
   const Bad cases[] = {
       {kFemHead + "bodies = 10\n", 8, "structure.bodies"},
       {kFemHead + "initial_angles_deg = [1.0, 2.0]\n", 8, "structure.initial_angles_deg"},
-      {kFemHead + "gravity = [0.0, 0.0, -9.81]\n", 8, "structure.gravity"},
       {kFemHead + "element_size_mm = 0.0\n", 8, "structure.element_size_mm"},
       {kFemHead + "stiffness_damping_s = -1e-5\n", 8, "structure.stiffness_damping_s"},
       {kFemHead + "[[loads]]\nbody = 1\npoint = [0, 0, 0]\nforce = [0, 0, 1]\n", 9, "loads[0].body"},
