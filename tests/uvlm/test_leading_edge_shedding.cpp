@@ -144,8 +144,12 @@ TEST(LeadingEdgeShedding, PitchRampShedsOnceTheAttachedLespExceedsTheCriticalVal
   for (int k = 0; k < steps; ++k) {
     if (onset_shed < 0 && s[k].shedding) onset_shed = k;
     if (onset_held < 0 && std::abs(h[k].lesp) > 0.11) onset_held = k;
-    if (onset_shed < 0) ASSERT_EQ(s[k].cl, h[k].cl) << "before the onset the runs are the same, step " << k;
-    if (s[k].shedding) EXPECT_NEAR(s[k].lesp, 0.11, 1e-9) << "step " << k;
+    if (onset_shed < 0) {
+      ASSERT_EQ(s[k].cl, h[k].cl) << "before the onset the runs are the same, step " << k;
+    }
+    if (s[k].shedding) {
+      EXPECT_NEAR(s[k].lesp, 0.11, 1e-9) << "step " << k;
+    }
     EXPECT_LE(std::abs(s[k].lesp), 0.11 + 1e-9) << "step " << k;
   }
   ASSERT_GE(onset_held, 0);
