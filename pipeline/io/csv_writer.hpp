@@ -23,6 +23,10 @@ namespace flapsim::io {
 /// \brief Shortest round-trip text of a number; "nan", "inf", "-inf" for non-finite values.
 std::string format_number(double value);
 
+/// \brief The cells of one CSV line as write_csv quotes them (RFC 4180: "a, b", and "" for
+/// a quote inside); a trailing CR is dropped.
+std::vector<std::string> split_csv_line(const std::string& line);
+
 /// \brief A CSV time series (one row per step) for long runs.
 ///
 /// Rows are appended to a working file "<path>.tmp.<pid>". Every \p publish_every

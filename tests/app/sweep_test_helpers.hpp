@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/io/csv_writer.hpp"
+
 namespace flapsim::test {
 
 // The flat plate, rigid, eq. 8 kinematics, 3 x 4 panels, `steps` steps of one cycle:
@@ -31,43 +33,15 @@ struct SweepTable {
   bool rectangular = true;  // every row has as many cells as the header
 };
 
-// One CSV line (RFC 4180 quoting: "a, b" and "" for a quote inside).
-inline std::vector<std::string> split_csv_line(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cur;
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cur += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cur += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      cells.push_back(cur);
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  cells.push_back(cur);
-  return cells;
-}
 
 inline SweepTable read_sweep_table(const std::string& path) {
   SweepTable t;
   std::ifstream in(path);
   std::string line;
   if (!std::getline(in, line)) return t;
-  t.header = split_csv_line(line);
+  t.header = flapsim::io::split_csv_line(line);
   while (std::getline(in, line)) {
-    const auto cells = split_csv_line(line);
+    const auto cells = flapsim::io::split_csv_line(line);
     if (cells.size() != t.header.size()) t.rectangular = false;
     std::map<std::string, std::string> row;
     for (std::size_t i = 0; i < cells.size() && i < t.header.size(); ++i) row[t.header[i]] = cells[i];

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include "fem/assembly.hpp"
+#include "fem/section_properties.hpp"
 #include "fem/structural_model.hpp"
 #include "fem/structured_mesh.hpp"
 
@@ -31,6 +32,20 @@ inline StructuralModel uniform_beam_model(Mesh mesh, const FrameProperties& f) {
   m.frame.assign(mesh.beams.size(), f);
   m.mesh = std::move(mesh);
   return m;
+}
+
+/// The soft cantilever rod of the nonlinear dynamics tests: a frame along x, L = 1 m,
+/// 10 elements, solid, 20 mm across, E = 1e8 Pa, G = E/2.6, ρ = 1000 kg/m³.
+inline StructuralModel soft_rod() {
+  wings::Section sec;
+  sec.outer_diameter = 0.02;
+  sec.wall = 0.01;
+  FrameProperties f;
+  f.youngs_modulus = 1e8;
+  f.shear_modulus = 1e8 / 2.6;
+  f.density = 1000.0;
+  f.section = section_properties(sec);
+  return uniform_beam_model(line_mesh({0, 0, 0}, {1, 0, 0}, 10), f);
 }
 
 /// Bending stiffness D = E h³ / (12 (1 − ν²)).

@@ -31,19 +31,6 @@ std::vector<int> nodes_at_x(const Mesh& m, double x) {
   return out;
 }
 
-// A cantilever frame along x (L = 1 m, 10 elements), a solid rod.
-StructuralModel rod() {
-  wings::Section sec;
-  sec.outer_diameter = 0.02;
-  sec.wall = 0.01;
-  FrameProperties f;
-  f.youngs_modulus = 1e8;
-  f.shear_modulus = 1e8 / 2.6;
-  f.density = 1000.0;
-  f.section = section_properties(sec);
-  return testing::uniform_beam_model(line_mesh({0, 0, 0}, {1, 0, 0}, 10), f);
-}
-
 // First clamped frequency [Hz] of the co-rotational model's linearisation:
 // the linear K with the co-rotational (rotation-invariant) mass.
 double first_frequency(const StructuralModel& sm, const CorotationalModel& cm, const std::vector<int>& clamp,
@@ -99,7 +86,7 @@ TEST(NonlinearDynamics, SecondOrderInTimeStep) {
   // log₂(|q_h − q_h/2| / |q_h/2 − q_h/4|) = 2 (Chung & Hulbert 1993). A smooth
   // start: a release from a static deflection would put the stiff modes that
   // no step resolves (rotations of small rotary inertia) into motion.
-  const StructuralModel sm = rod();
+  const StructuralModel sm = testing::soft_rod();
   const CorotationalModel cm = make_corotational_model(sm);
   Eigen::VectorXd phi;
   const double f1 = first_frequency(sm, cm, {0}, &phi);

@@ -21,19 +21,7 @@
 namespace flapsim::fem {
 namespace {
 
-// A cantilever frame along x (L = 1 m, 10 elements), a solid rod 20 mm across, E = 1e8 Pa.
-StructuralModel energy_rod() {
-  wings::Section sec;
-  sec.outer_diameter = 0.02;
-  sec.wall = 0.01;
-  FrameProperties f;
-  f.youngs_modulus = 1e8;
-  f.shear_modulus = 1e8 / 2.6;
-  f.density = 1000.0;
-  f.section = section_properties(sec);
-  return testing::uniform_beam_model(line_mesh({0, 0, 0}, {1, 0, 0}, 10), f);
-}
-
+// The rod: testing::soft_rod (fem_test_helpers.hpp), L = 1 m, 20 mm across, E = 1e8 Pa.
 struct Drift {
   double worst = 0.0;           ///< max |E − E₀| / E₀ over the run
   double iterations = 0.0;      ///< Newton iterations per step
@@ -48,7 +36,7 @@ struct Drift {
 // rotational modes (rotary inertia ρI_pℓ/2, ωΔt ≈ 20) ringing, and their energy exchange
 // with the resolved motion is not an error of the integrator that Δt controls (docs/fem.md).
 Drift energy_drift(int per_period, int periods) {
-  const StructuralModel sm = energy_rod();
+  const StructuralModel sm = testing::soft_rod();
   const CorotationalModel cm = make_corotational_model(sm);
   Constraints c(cm.num_dofs());
   c.clamp_nodes({0});
@@ -121,7 +109,7 @@ TEST(NonlinearEnergy, ReleaseFromALargeStaticDeflectionRunsThrough100PeriodsWith
   // modes: the run goes through, and the energy no longer runs away: it never rises above
   // E₀ by the conservation tolerance 1e-4 (measured +8.3e-5; with ρ∞ = 1 it
   // passed 1e-3 by period 45). It falls by up to 6.9e-4 (the numerical dissipation).
-  const StructuralModel sm = energy_rod();
+  const StructuralModel sm = testing::soft_rod();
   const CorotationalModel cm = make_corotational_model(sm);
   Constraints c(cm.num_dofs());
   c.clamp_nodes({0});

@@ -48,42 +48,14 @@ std::string cell(const app::RunResults& r, std::size_t i) {
 
 }  // namespace
 
-std::vector<std::string> split_csv_line(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cur;
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cur += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cur += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      cells.push_back(std::move(cur));
-      cur.clear();
-    } else if (c != '\r') {
-      cur += c;
-    }
-  }
-  cells.push_back(std::move(cur));
-  return cells;
-}
-
 EvaluationTable::EvaluationTable(std::filesystem::path path, std::vector<std::string> keys)
     : path_(std::move(path)), header_(table_header(keys)), results_(result_columns(keys)),
       hash_column_(column_of(header_, "inputs_hash")), status_column_(column_of(header_, "status")) {
   std::ifstream in(path_);
   std::string line;
-  if (!in || !std::getline(in, line) || split_csv_line(line) != header_) return;
+  if (!in || !std::getline(in, line) || io::split_csv_line(line) != header_) return;
   while (std::getline(in, line)) {
-    auto cells = split_csv_line(line);
+    auto cells = io::split_csv_line(line);
     if (cells.size() != header_.size() || row_of_hash_.count(cells[hash_column_])) continue;
     row_of_hash_.emplace(cells[hash_column_], rows_.size());
     rows_.push_back(std::move(cells));

@@ -55,7 +55,4 @@ class EvaluationTable {
   std::map<std::string, std::size_t> row_of_hash_;
 };
 
-/// \brief The cells of a CSV line (RFC 4180 quoting).
-std::vector<std::string> split_csv_line(const std::string& line);
-
 }  // namespace flapsim::optimize
