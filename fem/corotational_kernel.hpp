@@ -3,7 +3,10 @@
 /// \brief The element-independent co-rotational (EICR) kernel of Felippa &
 /// Haugen 2005 ("A unified formulation of small-strain corotational finite
 /// elements: I. Theory", CMAME 194:2285–2335), for an element of N nodes with
-/// 6 DOF each whose LINEAR stiffness k in its own reference axes is given.
+/// 6 DOF each whose response in its own reference axes is given: a LINEAR
+/// stiffness k (eicr_force), or any energy W(d) of the deformational
+/// displacements with its gradient and Hessian (eicr_force_with_law: the
+/// tension-field membrane, corotational_shell.hpp); k below is that Hessian.
 ///
 /// Given the co-rotated frame T_r (rows: current local axes) and its spin
 /// derivative G (δω̃_r = G δũ, everything in current local components), with
@@ -52,19 +55,22 @@ struct EicrDamping {
 
 /// \brief Internal force (global, conjugate to δx and spatial spins), optional
 /// tangent and strain energy of one element.
-/// \param k       linear stiffness in reference local axes (6N × 6N)
+/// \param law     the element's response in its co-rotated frame:
+///                 `double law(const Vec& d, Vec& f_local, Mat* k_local)` returns the strain
+///                 energy [J], the local force f̄ = ∂W/∂d and, if asked, its tangent k = ∂f̄/∂d
+///                 (symmetric); a linear element is W = ½ dᵀ k d (LinearLocalLaw below)
 /// \param Xbar    reference local node coordinates about the centroid [m]
 /// \param T0      reference axes (rows) [-]
 /// \param frame   current co-rotated frame and its spin map
 /// \param x, R    current node positions [m] and nodal rotations
 /// \param symmetric  symmetrise the geometric part (else the consistent,
 ///                   non-symmetric spin-variable tangent)
-template <int N>
-double eicr_force(const Eigen::Matrix<double, 6 * N, 6 * N>& k, const std::array<Eigen::Vector3d, N>& Xbar,
-                  const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
-                  const std::array<Eigen::Vector3d, N>& x, const std::array<Eigen::Matrix3d, N>& R,
-                  Eigen::Matrix<double, 6 * N, 1>& f, Eigen::Matrix<double, 6 * N, 6 * N>* K,
-                  const EicrDamping<N>& damping = {}, bool symmetric = true) {
+template <int N, class LocalLaw>
+double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d, N>& Xbar,
+                           const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
+                           const std::array<Eigen::Vector3d, N>& x, const std::array<Eigen::Matrix3d, N>& R,
+                           Eigen::Matrix<double, 6 * N, 1>& f, Eigen::Matrix<double, 6 * N, 6 * N>* K,
+                           const EicrDamping<N>& damping = {}, bool symmetric = true) {
   constexpr int n = 6 * N;
   using Vec = Eigen::Matrix<double, n, 1>;
   using Mat = Eigen::Matrix<double, n, n>;
@@ -100,7 +106,9 @@ double eicr_force(const Eigen::Matrix<double, 6 * N, 6 * N>& k, const std::array
     for (int a = 0; a < N; ++a) B.template block<3, n>(6 * a + 3, 0) = H[a] * P.template block<3, n>(6 * a + 3, 0);
   }
 
-  Vec fl = k * d;
+  Vec fl;
+  Mat k;  // the local tangent, formed only when the tangent or the damping needs it
+  const double energy = law(d, fl, (K != nullptr || damped) ? &k : nullptr);
   if (damped) {
     Vec vl;
     for (int i = 0; i < 2 * N; ++i) vl.template segment<3>(3 * i) = Tr * damping.velocity->template segment<3>(3 * i);
@@ -146,7 +154,29 @@ double eicr_force(const Eigen::Matrix<double, 6 * N, 6 * N>& k, const std::array
       for (int j = 0; j < 2 * N; ++j)
         K->template block<3, 3>(3 * i, 3 * j) = Tr.transpose() * Kl.template block<3, 3>(3 * i, 3 * j) * Tr;
   }
-  return 0.5 * d.dot(k * d);
+  return energy;
+}
+
+/// The linear local response W = ½ dᵀ k d of a small-strain element.
+template <int N>
+struct LinearLocalLaw {
+  const Eigen::Matrix<double, 6 * N, 6 * N>& k;
+  double operator()(const Eigen::Matrix<double, 6 * N, 1>& d, Eigen::Matrix<double, 6 * N, 1>& fl,
+                    Eigen::Matrix<double, 6 * N, 6 * N>* kt) const {
+    fl.noalias() = k * d;
+    if (kt != nullptr) *kt = k;
+    return 0.5 * d.dot(fl);
+  }
+};
+
+/// \brief eicr_force_with_law for a linear local stiffness k (reference local axes).
+template <int N>
+double eicr_force(const Eigen::Matrix<double, 6 * N, 6 * N>& k, const std::array<Eigen::Vector3d, N>& Xbar,
+                  const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
+                  const std::array<Eigen::Vector3d, N>& x, const std::array<Eigen::Matrix3d, N>& R,
+                  Eigen::Matrix<double, 6 * N, 1>& f, Eigen::Matrix<double, 6 * N, 6 * N>* K,
+                  const EicrDamping<N>& damping = {}, bool symmetric = true) {
+  return eicr_force_with_law<N>(LinearLocalLaw<N>{k}, Xbar, T0, frame, x, R, f, K, damping, symmetric);
 }
 
 }  // namespace flapsim::fem

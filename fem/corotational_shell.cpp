@@ -1,6 +1,9 @@
 #include "fem/corotational_shell.hpp"
 
+#include <cmath>
+
 #include "fem/block_rotation.hpp"
+#include "fem/tension_field_membrane.hpp"
 
 namespace flapsim::fem {
 
@@ -14,6 +17,23 @@ CorotationalShell make_corotational_shell(const std::array<int, 3>& nodes,
   const Matrix18d T = block_rotation<18>(e.reference_axes);
   e.local_stiffness = T * shell_element(p, s).stiffness * T.transpose();
   e.local_stiffness = 0.5 * (e.local_stiffness + e.local_stiffness.transpose()).eval();
+  std::array<double, 3> lx{}, ly{};
+  for (int a = 0; a < 3; ++a) {
+    const Eigen::Vector3d d = e.reference_axes * (p[a] - p[0]);
+    lx[a] = d.x();
+    ly[a] = d.y();
+  }
+  const Eigen::Matrix<double, 9, 3> L9 = opt_basic_lumping(lx, ly, s.thickness);
+  constexpr int kMembraneDof[3] = {0, 1, 5};  // u, v, θz of each node
+  e.membrane_lumping.setZero();
+  for (int a = 0; a < 3; ++a)
+    for (int i = 0; i < 3; ++i) e.membrane_lumping.row(6 * a + kMembraneDof[i]) = L9.row(3 * a + i);
+  e.volume = 0.5 * std::abs(lx[1] * ly[2] - lx[2] * ly[1]) * s.thickness;
+  e.youngs_modulus = s.youngs_modulus;
+  e.poisson_ratio = s.poisson_ratio;
+  e.stiffness_without_basic_membrane =
+      e.local_stiffness -
+      e.membrane_lumping * plane_stress(s.youngs_modulus, s.poisson_ratio) * e.membrane_lumping.transpose() / e.volume;
   const Eigen::Vector3d c = (p[0] + p[1] + p[2]) / 3.0;
   for (int a = 0; a < 3; ++a) e.reference_local[a] = e.reference_axes * (p[a] - c);
   return e;
@@ -40,6 +60,23 @@ CorotatedFrame<3> shell_corotated_frame(const std::array<Eigen::Vector3d, 3>& x)
   fr.spin_map(2, 6 * 1 + 1) = 1.0 / l01;
   fr.spin_map(2, 6 * 0 + 1) = -1.0 / l01;
   return fr;
+}
+
+Eigen::Vector3d shell_membrane_strain(const CorotationalShell& e, const Eigen::Matrix<double, 18, 1>& d) {
+  return e.membrane_lumping.transpose() * d / e.volume;
+}
+
+double ShellTensionFieldLaw::operator()(const Eigen::Matrix<double, 18, 1>& d, Eigen::Matrix<double, 18, 1>& fl,
+                                        Matrix18d* kt) const {
+  const CorotationalShell& e = shell;
+  const MembraneResponse m = tension_field_response(shell_membrane_strain(e, d), e.youngs_modulus, e.poisson_ratio);
+  fl.noalias() = e.stiffness_without_basic_membrane * d;
+  fl.noalias() += e.membrane_lumping * m.stress;
+  if (kt != nullptr) {
+    *kt = e.stiffness_without_basic_membrane;
+    kt->noalias() += e.membrane_lumping * (m.tangent / e.volume) * e.membrane_lumping.transpose();
+  }
+  return 0.5 * d.dot(e.stiffness_without_basic_membrane * d) + e.volume * m.energy_density;
 }
 
 }  // namespace flapsim::fem

@@ -27,7 +27,27 @@ struct CorotationalShell {
   Matrix18d local_stiffness;             ///< k in reference local axes
   Eigen::Matrix3d reference_axes;        ///< T₀ (rows)
   std::array<Eigen::Vector3d, 3> reference_local;  ///< X̄_a about the centroid [m]
+  /// The split k = k_rest + L C Lᵀ / V of the membrane's constant-strain part (for the
+  /// tension-field membrane, tension_field_membrane.hpp): L the OPT basic force lumping
+  /// on the 18 local DOFs, V = A h [m³].
+  Matrix18d stiffness_without_basic_membrane;
+  Eigen::Matrix<double, 18, 3> membrane_lumping;  ///< L [m²]
+  double volume = 0.0;                   ///< V [m³]
+  double youngs_modulus = 0.0;           ///< E [Pa]
+  double poisson_ratio = 0.0;            ///< ν [-]
 };
+
+/// The local response of a shell whose membrane cannot carry compression: the
+/// constant membrane strain ε = Lᵀ d / V relaxed by the tension-field law, the
+/// rest (bending, the OPT's higher-order membrane part) linear. W = ½ dᵀ k_rest d + V w(ε).
+struct ShellTensionFieldLaw {
+  const CorotationalShell& shell;
+  double operator()(const Eigen::Matrix<double, 18, 1>& d, Eigen::Matrix<double, 18, 1>& f_local,
+                    Matrix18d* k_local) const;
+};
+
+/// \brief The constant membrane strain (εxx, εyy, γxy) of local displacements d.
+Eigen::Vector3d shell_membrane_strain(const CorotationalShell& shell, const Eigen::Matrix<double, 18, 1>& d);
 
 /// \brief Reference data of a triangle with corners p (global) and properties s.
 CorotationalShell make_corotational_shell(const std::array<int, 3>& nodes,

@@ -41,11 +41,12 @@ void add_triplets(std::vector<Eigen::Triplet<double>>& out, const Eigen::Matrix<
 
 }  // namespace
 
-CorotationalModel make_corotational_model(const StructuralModel& sm) {
+CorotationalModel make_corotational_model(const StructuralModel& sm, MembraneLaw membrane_law) {
   const Mesh& mesh = sm.mesh;
   if (sm.shell.size() != mesh.triangles.size() || sm.frame.size() != mesh.beams.size())
     throw std::invalid_argument("make_corotational_model: one property entry per element is required");
   CorotationalModel m;
+  m.membrane_law = membrane_law;
   m.reference_positions = mesh.nodes;
   std::vector<Eigen::Triplet<double>> mt;
   for (size_t e = 0; e < mesh.triangles.size(); ++e) {
@@ -168,10 +169,15 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
       for (int a = 0; a < 3; ++a) v.segment<6>(6 * a) = ex.velocity->segment<6>(6 * el.nodes[a]);
       damp = {&v, ex.damping, ex.damping * ex.damping_tangent_scale};
     }
+    Matrix18d* K = tangent ? &shell_K_[static_cast<size_t>(e)] : nullptr;
+    const bool symmetric = form_ == TangentForm::SymmetricLower;
     energy_[static_cast<size_t>(e)] =
-        eicr_force<3>(el.local_stiffness, el.reference_local, el.reference_axes, shell_corotated_frame(x), x, R,
-                      shell_f_[static_cast<size_t>(e)], tangent ? &shell_K_[static_cast<size_t>(e)] : nullptr, damp,
-                      form_ == TangentForm::SymmetricLower);
+        model_.membrane_law == MembraneLaw::TensionField
+            ? eicr_force_with_law<3>(ShellTensionFieldLaw{el}, el.reference_local, el.reference_axes,
+                                     shell_corotated_frame(x), x, R, shell_f_[static_cast<size_t>(e)], K, damp,
+                                     symmetric)
+            : eicr_force<3>(el.local_stiffness, el.reference_local, el.reference_axes, shell_corotated_frame(x), x,
+                            R, shell_f_[static_cast<size_t>(e)], K, damp, symmetric);
   }
 #pragma omp parallel for schedule(static) if (ns + nb > 512)
   for (int e = 0; e < nb; ++e) {

@@ -37,8 +37,15 @@
 
 namespace flapsim::fem {
 
+/// How the shells' membrane responds to compression.
+enum class MembraneLaw {
+  Elastic,       ///< linear in the co-rotated frame, compression as tension
+  TensionField,  ///< no compression: wrinkles or slack (tension_field_membrane.hpp)
+};
+
 /// Constant co-rotational model.
 struct CorotationalModel {
+  MembraneLaw membrane_law = MembraneLaw::Elastic;
   std::vector<Eigen::Vector3d> reference_positions;  ///< X [m]
   std::vector<CorotationalShell> shells;
   std::vector<CorotationalFrame> frames;
@@ -49,7 +56,8 @@ struct CorotationalModel {
 
 /// \brief The co-rotational model of a linear structural model (same mesh,
 /// elements, materials). Throws std::invalid_argument on degenerate elements.
-CorotationalModel make_corotational_model(const StructuralModel& model);
+CorotationalModel make_corotational_model(const StructuralModel& model,
+                                          MembraneLaw membrane_law = MembraneLaw::Elastic);
 
 /// Current configuration.
 struct CorotationalState {

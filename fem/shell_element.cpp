@@ -72,13 +72,35 @@ Eigen::Matrix<double, 3, 9> dkt_B(const std::array<double, 3>& x, const std::arr
   return B;
 }
 
+}  // namespace
+
 Eigen::Matrix3d plane_stress(double E, double nu) {
   Eigen::Matrix3d C;
   C << 1.0, nu, 0.0, nu, 1.0, 0.0, 0.0, 0.0, 0.5 * (1.0 - nu);
   return C * (E / (1.0 - nu * nu));
 }
 
-}  // namespace
+Eigen::Matrix<double, 9, 3> opt_basic_lumping(const std::array<double, 3>& x, const std::array<double, 3>& y,
+                                              double h) {
+  // Notation of Felippa (2003): xij = xi − xj, nodes 1, 2, 3 = indices 0, 1, 2.
+  const double x12 = x[0] - x[1], x23 = x[1] - x[2], x31 = x[2] - x[0];
+  const double y12 = y[0] - y[1], y23 = y[1] - y[2], y31 = y[2] - y[0];
+  const double x21 = -x12, x32 = -x23, x13 = -x31;
+  const double y21 = -y12, y32 = -y23, y13 = -y31;
+  // Force lumping of a constant stress field, drilling share α_b.
+  const double ab = 1.5;
+  Eigen::Matrix<double, 9, 3> Lm;
+  Lm << y23, 0.0, x32,
+        0.0, x32, y23,
+        ab / 6 * y23 * (y13 - y21), ab / 6 * x32 * (x31 - x12), ab / 3 * (x31 * y13 - x12 * y21),
+        y31, 0.0, x13,
+        0.0, x13, y31,
+        ab / 6 * y31 * (y21 - y32), ab / 6 * x13 * (x12 - x23), ab / 3 * (x12 * y21 - x23 * y32),
+        y12, 0.0, x21,
+        0.0, x21, y12,
+        ab / 6 * y12 * (y32 - y13), ab / 6 * x21 * (x23 - x31), ab / 3 * (x23 * y32 - x31 * y13);
+  return Lm * (0.5 * h);
+}
 
 Eigen::Matrix3d shell_axes(const std::array<Eigen::Vector3d, 3>& p) {
   const Eigen::Vector3d ex = (p[1] - p[0]).normalized();
@@ -123,19 +145,8 @@ Matrix9d opt_membrane_stiffness(const std::array<double, 3>& x, const std::array
   const double V = A * h;
   const Eigen::Matrix3d C = plane_stress(E, nu);
 
-  // Basic stiffness: force lumping of a constant stress field, drilling share α_b.
-  const double ab = 1.5;
-  Eigen::Matrix<double, 9, 3> Lm;
-  Lm << y23, 0.0, x32,
-        0.0, x32, y23,
-        ab / 6 * y23 * (y13 - y21), ab / 6 * x32 * (x31 - x12), ab / 3 * (x31 * y13 - x12 * y21),
-        y31, 0.0, x13,
-        0.0, x13, y31,
-        ab / 6 * y31 * (y21 - y32), ab / 6 * x13 * (x12 - x23), ab / 3 * (x12 * y21 - x23 * y32),
-        y12, 0.0, x21,
-        0.0, x21, y12,
-        ab / 6 * y12 * (y32 - y13), ab / 6 * x21 * (x23 - x31), ab / 3 * (x23 * y32 - x31 * y13);
-  Lm *= 0.5 * h;
+  // Basic stiffness: force lumping of a constant stress field.
+  const Eigen::Matrix<double, 9, 3> Lm = opt_basic_lumping(x, y, h);
   Matrix9d K = Lm * C * Lm.transpose() / V;
 
   // Higher-order stiffness on the deviatoric corner rotations θ̃ = θ − θ_CST.

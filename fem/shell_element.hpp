@@ -51,6 +51,16 @@ Matrix9d dkt_stiffness(const std::array<double, 3>& x, const std::array<double, 
 Eigen::Vector3d dkt_curvature(const std::array<double, 3>& x, const std::array<double, 3>& y,
                               const Eigen::Matrix<double, 9, 1>& u, double xi, double eta);
 
+/// \brief Plane-stress elasticity (σxx, σyy, τxy) = C (εxx, εyy, γxy) [Pa].
+Eigen::Matrix3d plane_stress(double E, double nu);
+
+/// \brief The OPT membrane's basic force lumping L (Felippa 2003, α_b = 3/2), local
+/// DOFs (u, v, θz) per node: the element's constant strain is ε = Lᵀ d / (A h) and the
+/// nodal forces of a constant stress σ are L σ, so the basic stiffness is L C Lᵀ / (A h).
+/// \param h  thickness [m]
+Eigen::Matrix<double, 9, 3> opt_basic_lumping(const std::array<double, 3>& x, const std::array<double, 3>& y,
+                                              double h);
+
 /// \brief OPT membrane stiffness (α_b = 3/2, β₀ = max(½(1 − 4ν²), 0.01), the
 /// optimal β₁…β₉), local DOFs (u, v, θz) per node.
 /// \param h  thickness [m]
