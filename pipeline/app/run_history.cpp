@@ -79,6 +79,7 @@ StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
   s.outer = mbd::stroke_angles(r_sg * out.outer_rotation);
   s.tip_bend = out.tip_bend;
   s.tip_twist = out.tip_twist;
+  s.tip_position = out.tip_position;
   if (model.air) {
     const uvlm::PanelLoads& loads = data.lattice->loads;
     s.force = loads.total_force;

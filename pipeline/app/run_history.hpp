@@ -50,6 +50,8 @@ struct StepSample {
   /// relative to the base, Rx(bend) Ry(twist) [rad] (fsi::StructureReadout).
   double tip_bend = 0.0;
   double tip_twist = 0.0;
+  /// The tip point, ground frame [m] (fsi::StructureReadout::tip_position; tip_path.vtp).
+  Eigen::Vector3d tip_position = Eigen::Vector3d::Zero();
 };
 
 /// \brief The sample of the step just taken (after fsi::coupled_step).

@@ -12,6 +12,7 @@
 #include "pipeline/io/fem_run_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/fsi/wing_attachment.hpp"
+#include "mbd/chain_kinematics.hpp"
 #include "pipeline/io/fsi_vtk.hpp"
 #include "pipeline/io/pvsm_state.hpp"
 #include "pipeline/io/vtk_writers.hpp"
@@ -43,7 +44,12 @@ io::PolyDataMesh structure_frame(const FsiSetup& setup, const fsi::FsiData& data
     const mbd::BasePose p = m.base_motion(t);
     return io::fem_frame_mesh(m.structural.mesh, fem.trial_positions(), p.rotation, p.position, t);
   }
-  return io::chain_mesh(setup.chain(), fsi::chain_structure(*data.structure).chain, t);
+  const fsi::ChainStructureData& chain = fsi::chain_structure(*data.structure);
+  io::PolyDataMesh mesh = io::chain_mesh(setup.chain(), chain.chain, t);
+  Eigen::VectorXd q;
+  data.structure->joint_angles(q);
+  io::add_joint_fields(mesh, setup.chain(), chain.chain, q);
+  return mesh;
 }
 
 std::string structure_series(const FsiSetup& setup) { return setup.fem_structure ? "fem" : "chain"; }
@@ -62,6 +68,9 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
                kHistoryMaxPublishInterval),
       row_(history_.columns().size()) {
   const fsi::FsiModel& model = setup.model;
+  if (model.air) dynamic_pressure_ = setup.reference.dynamic_pressure_area(model.density) / setup.reference.area;
+  tip_path_.name = "tip";
+  for (const auto& m : c.markers) marker_paths_.push_back(io::Trajectory{m.name, {}, {}});
   if (vtk_every_ > 0) {
     if (model.air) {
       wing_pvd_.emplace(dir_ / "wing.pvd");
@@ -101,11 +110,40 @@ void RunRecorder::record(const fsi::FsiData& data) {
   samples_.push_back(sample_step(setup_.model, data, case_.kinematics, setup_.reference));
   history_row(samples_.back(), case_, data, row_);
   history_.append(std::span<const double>(row_.data(), row_.size()));
+  // The markers' positions are the row's last columns (run_history.hpp).
+  const std::size_t marker_columns = 3 * marker_paths_.size();
+  record_paths(samples_.back().time, samples_.back().tip_position,
+               std::span<const double>(row_.data() + row_.size() - marker_columns, marker_columns));
   if (vtk_every_ > 0 && data.step % vtk_every_ == 0) write_series(data, data.step);
 }
 
 void RunRecorder::record_initial(const fsi::FsiData& data) {
+  std::vector<double> markers;
+  if (!case_.markers.empty()) {  // markers ride on a chain's bodies (the case reader's rule)
+    const fsi::ChainStructureData& cd = fsi::chain_structure(*data.structure);
+    for (const auto& m : case_.markers) {
+      const Eigen::Vector3d p = mbd::point_position(cd.chain, m.body - 1, m.point);
+      markers.insert(markers.end(), {p.x(), p.y(), p.z()});
+    }
+  }
+  record_paths(data.time(), data.structure->readout().tip_position, markers);
   if (vtk_every_ > 0) write_series(data, 0);
+}
+
+void RunRecorder::record_paths(double t, const Eigen::Vector3d& tip, std::span<const double> markers) {
+  tip_path_.times.push_back(t);
+  tip_path_.points.push_back(tip);
+  for (std::size_t k = 0; k < marker_paths_.size(); ++k) {
+    marker_paths_[k].times.push_back(t);
+    marker_paths_[k].points.emplace_back(markers[3 * k], markers[3 * k + 1], markers[3 * k + 2]);
+  }
+}
+
+void RunRecorder::write_paths() const {
+  io::write_vtp(dir_ / "tip_path.vtp", io::trajectory_mesh(tip_path_, setup_.period));
+  for (std::size_t k = 0; k < marker_paths_.size(); ++k)
+    io::write_vtp(dir_ / ("marker_" + std::to_string(k + 1) + "_path.vtp"),
+                  io::trajectory_mesh(marker_paths_[k], setup_.period));
 }
 
 void RunRecorder::write_series(const fsi::FsiData& data, long step) {
@@ -115,8 +153,13 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
   values.step = step;
   values.t_over_T = t / setup_.period;
   if (step > 0) {
-    values.lift = samples_.back().lift;
-    values.cl = samples_.back().cl;
+    const StepSample& last = samples_.back();
+    values.lift = last.lift;
+    values.cl = last.cl;
+    values.drag = last.drag;
+    values.cd = last.cd;
+    values.power = last.power;
+    values.drive_power = last.drive_power;
   }
   if (model.air) {
     // Step 0 is the pose before the first solve: the lattice placed on the chain, no loads.
@@ -129,6 +172,8 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
       wing = io::wing_surface_mesh(model.lattice, *data.lattice, t);
       pressure_range_ = std::max(pressure_range_, data.lattice->loads.pressure_jump.cwiseAbs().maxCoeff());
     }
+    model.structure->rigid_surface(t, rigid_nodes_);
+    io::add_wing_reference_fields(wing, dynamic_pressure_, rigid_nodes_);
     io::add_step_values(wing, values);
     const auto wf = io::PvdSeries::step_file_name("vtk/wing", step, "vtp");
     io::write_vtp(dir_ / wf, wing, io::Flush::deferred);
@@ -285,6 +330,7 @@ RunResults RunRecorder::finish(const fsi::FsiData& data, const std::string& stat
   }
   try {
     publish_series(true);  // the frames written since the last publication
+    if (vtk_every_ > 0) write_paths();
   } catch (const io::OutputError& e) {
     if (!history_failure) history_failure = std::current_exception();
     final_status = "failed";

@@ -3,11 +3,13 @@
 /// \brief What a run leaves behind, step by step: a row of history.csv per step (columns
 /// in run_history.hpp), the ParaView series every `vtk_every` steps, the samples kept
 /// for the end-of-run analysis; at the end (or at a numerical failure) the run's
-/// results (run_results.hpp), written as summary.json.
+/// results (run_results.hpp), written as summary.json, and (with the series) the paths of
+/// the tip and of the markers over every step (tip_path.vtp, marker_<k>_path.vtp).
 
 #include <chrono>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,7 @@
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "pipeline/io/pvd_series.hpp"
+#include "pipeline/io/trajectory_vtk.hpp"
 
 namespace flapsim::app {
 
@@ -77,6 +80,10 @@ class RunRecorder {
   /// if kSeriesPublishInterval has passed since then or \p now. \throws io::OutputError
   void publish_series(bool now);
   void write_state() const;  ///< run.pvsm (io/pvsm_state.hpp), colour ranges as seen so far
+  /// Adds the tip's and the markers' positions at time \p t [s] to their paths.
+  void record_paths(double t, const Eigen::Vector3d& tip, std::span<const double> markers);
+  /// tip_path.vtp and marker_<k>_path.vtp (atomic). \throws io::OutputError
+  void write_paths() const;
   void analyse(const fsi::FsiData& data);
 
   const io::Case& case_;
@@ -91,6 +98,11 @@ class RunRecorder {
   std::chrono::steady_clock::time_point series_published_;  ///< last publication of the .pvd files
   double pressure_range_ = 0.0;     ///< largest |Δp| written [Pa]
   double circulation_range_ = 0.0;  ///< largest |Γ| of the wake written [m²/s]
+  /// q_ref = ½ ρ U_ref² of the run's CL (wing.vtp Cp = Δp / q_ref) [Pa]; 0 in vacuum.
+  double dynamic_pressure_ = 0.0;
+  Eigen::Matrix3Xd rigid_nodes_;   ///< the lattice on the rigid wing at a frame's time [m]
+  io::Trajectory tip_path_;                  ///< the tip at t = 0 and after every step
+  std::vector<io::Trajectory> marker_paths_;  ///< the case's markers, likewise
   std::vector<StepSample> samples_;
   RunResults results_;
 };

@@ -115,6 +115,7 @@ StructureReadout ChainStructureData::readout() const {
     return chain.bodies[static_cast<std::size_t>(body)].rotation * c.root_rotation.transpose();
   };
   r.tip_rotation = relative(c.num_bodies() - 1);
+  r.tip_position = mbd::point_position(chain, c.num_bodies() - 1, c.bodies.back().outboard_joint);
   r.outer_rotation = relative(outer_body(c));
   if (state.q.size() > 0) {
     const Eigen::VectorXd deflection = state.q - c.rest_angles();

@@ -43,6 +43,7 @@ class ChainStructureModel : public StructureModel {
   int surface_nodes() const override { return static_cast<int>(attachment.nodes.size()); }
   const mbd::BaseMotion& base() const override { return base_motion; }
   std::unique_ptr<StructureData> make_data() const override;
+  const Eigen::Matrix3Xd& reference_surface() const override { return attachment.reference_nodes; }
 };
 
 /// The chain's kinematics, states and loads during a run.

@@ -60,6 +60,13 @@ FemAttachment attach_wing_to_fem(const fem::Mesh& mesh, const Eigen::Matrix3Xd& 
   a.num_fem_nodes = mesh.num_nodes();
   a.nodes.reserve(static_cast<std::size_t>(nn));
   for (int n = 0; n < nn; ++n) a.nodes.push_back(locate_on_shell(mesh, nodes_wing.col(n)));
+  a.reference_nodes.setZero(3, nn);
+  for (int n = 0; n < nn; ++n) {
+    const ShellPoint& sp = a.nodes[static_cast<std::size_t>(n)];
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(sp.triangle)];
+    for (int i = 0; i < 3; ++i)
+      a.reference_nodes.col(n) += sp.weights[static_cast<std::size_t>(i)] * mesh.nodes[static_cast<std::size_t>(tri[static_cast<std::size_t>(i)])];
+  }
   // A panel's point of action: quarter chord, mid-span (uvlm::PanelLoads::point).
   const auto node = [&](int i, int j) -> Eigen::Vector3d { return nodes_wing.col(i + (chordwise + 1) * j); };
   a.panels.reserve(static_cast<std::size_t>(chordwise * spanwise));

@@ -38,6 +38,10 @@ struct FemAttachment {
   std::vector<ShellPoint> nodes;   ///< one per lattice node, lattice order
   std::vector<ShellPoint> panels;  ///< one per panel, lattice panel order
   int num_fem_nodes = 0;
+  /// The lattice nodes on the undeformed shell, Σᵢ wᵢ Xᵢ over the reference mesh, in its
+  /// frame W [m] (a node off its triangle's plane is carried in the plane;
+  /// StructureModel::reference_surface).
+  Eigen::Matrix3Xd reference_nodes;
 };
 
 /// \brief The shell point of \p p [m] (reference configuration, the mesh's frame): the

@@ -23,6 +23,7 @@
 #include <Eigen/SVD>
 
 #include <cmath>
+#include <limits>
 
 #include "fem/nodal_rotation.hpp"
 #include "pipeline/fsi/fem_structure.hpp"
@@ -64,6 +65,15 @@ StructureReadout FemStructureData::readout() const {
   const std::vector<Eigen::Vector3d>& X = c.reference_positions;
   double span = 0.0;
   for (const auto& p : X) span = std::max(span, p.y());
+  // The tip point: of the nodes at the largest y_W (an outline's tip, or its tip edge), the
+  // one nearest the span axis y_W (where a chain's end is).
+  std::size_t tip_node = 0;
+  double tip_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t n = 0; n < X.size(); ++n)
+    if (X[n].y() >= span * (1.0 - 1e-9) && X[n].x() * X[n].x() + X[n].z() * X[n].z() < tip_distance) {
+      tip_distance = X[n].x() * X[n].x() + X[n].z() * X[n].z();
+      tip_node = n;
+    }
   std::vector<int> tip, outer;
   for (int n = 0; n < c.num_nodes(); ++n) {
     const double y = X[static_cast<std::size_t>(n)].y();
@@ -73,6 +83,7 @@ StructureReadout FemStructureData::readout() const {
   StructureReadout r;
   r.tip_rotation = fitted_rotation(X, d.state, tip);
   r.outer_rotation = fitted_rotation(X, d.state, outer);
+  if (!X.empty()) r.tip_position = d.state.position[tip_node];
 
   const mbd::BasePose pose = model_.base_motion(d.time);
   // Tip relative to the base, in W: Rx(bend) Ry(twist) (the chain's joint convention).

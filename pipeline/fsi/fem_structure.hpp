@@ -48,6 +48,7 @@ class FemStructureModel : public StructureModel {
   int surface_nodes() const override { return static_cast<int>(attachment.nodes.size()); }
   const mbd::BaseMotion& base() const override { return base_motion; }
   std::unique_ptr<StructureData> make_data() const override;
+  const Eigen::Matrix3Xd& reference_surface() const override { return attachment.reference_nodes; }
 
   const fem::StructuralModel structural;
   const fem::CorotationalModel corotational;

@@ -62,6 +62,11 @@ struct StructureReadout {
   /// ω·M + v·F at the pivot [W].
   Eigen::Vector3d drive_force = Eigen::Vector3d::Zero(), drive_moment = Eigen::Vector3d::Zero();
   double drive_power = 0.0;
+  /// The tip point, ground frame [m]: the chain's end (the last body's outboard joint, on
+  /// its axis); of the FEM's nodes at the largest reference span coordinate y_W (the
+  /// outline's tip or tip edge), the one nearest the span axis.
+  /// Its trajectory is the run's tip_path.vtp.
+  Eigen::Vector3d tip_position = Eigen::Vector3d::Zero();
 };
 
 /// What a structure is (constant during a run).
@@ -76,6 +81,19 @@ class StructureModel {
   virtual const mbd::BaseMotion& base() const = 0;
   /// A fresh workspace and state for a run of this model.
   virtual std::unique_ptr<StructureData> make_data() const = 0;
+  /// The lattice nodes as the undeformed structure carries them, in the wing frame W [m],
+  /// lattice order (3 × surface_nodes()): the chain at its rest angles, the FEM's shell at
+  /// its reference mesh. The rigid wing's surface at time t is this moved with the base.
+  virtual const Eigen::Matrix3Xd& reference_surface() const = 0;
+
+  /// \brief The lattice nodes on the undeformed wing moved with the prescribed base motion at
+  /// \p t [s]: x = p(t) + R(t) X, ground frame [m] (\p positions resized to 3 × surface_nodes()).
+  /// A run's surface minus this is the wing's deformation (wing.vtp displacement_m).
+  void rigid_surface(double t, Eigen::Matrix3Xd& positions) const {
+    const mbd::BasePose pose = base()(t);
+    positions.noalias() = pose.rotation * reference_surface();
+    positions.colwise() += pose.position;
+  }
 };
 
 /// A structure's state and workspace during a run (made by StructureModel::make_data).

@@ -48,6 +48,7 @@ WingAttachment attach_wing(const mbd::ChainModel& chain, const Eigen::Matrix3Xd&
   const mbd::ChainData ref = reference_kinematics(chain);
   WingAttachment a;
   a.num_bodies = chain.num_bodies();
+  a.reference_nodes = nodes_wing;
   a.joint_span.resize(chain.bodies.size());
   for (std::size_t k = 0; k < a.joint_span.size(); ++k)
     a.joint_span[k] = span_coordinate(chain, ref.bodies[k].origin);

@@ -33,6 +33,9 @@ struct WingAttachment {
   std::vector<int> panel_body;   ///< host body of each panel's load, lattice panel order
   std::vector<double> joint_span;  ///< span coordinate s_k of each body's inboard joint [m]
   int num_bodies = 0;
+  /// The lattice nodes in W as attached [m]: where the chain at its rest angles, base at
+  /// the identity, carries them (the undeformed wing; StructureModel::reference_surface).
+  Eigen::Matrix3Xd reference_nodes;
 };
 
 /// Span coordinates [m] of the bodies' inboard joints along the root frame's y axis in

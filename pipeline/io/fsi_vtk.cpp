@@ -2,6 +2,9 @@
 
 #include "mbd/chain_kinematics.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace flapsim::io {
 
 PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& m,
@@ -45,11 +48,29 @@ PolyDataMesh wing_surface_mesh(const uvlm::VortexLatticeModel& m, const Eigen::M
   return mesh;
 }
 
+void add_wing_reference_fields(PolyDataMesh& wing, double q_ref, const Eigen::Matrix3Xd& rigid_nodes) {
+  if (!(q_ref > 0.0)) throw std::invalid_argument("add_wing_reference_fields: q_ref must be > 0");
+  if (rigid_nodes.cols() != wing.points.cols())
+    throw std::invalid_argument("add_wing_reference_fields: " + std::to_string(rigid_nodes.cols()) +
+                                " rigid nodes for " + std::to_string(wing.points.cols()) + " points");
+  const ScalarField* pressure = nullptr;
+  for (const ScalarField& f : wing.cell_data.scalars)
+    if (f.name == "pressure_jump_Pa") pressure = &f;
+  if (!pressure) throw std::invalid_argument("add_wing_reference_fields: the mesh has no pressure_jump_Pa");
+  Eigen::VectorXd cp = pressure->values / q_ref;
+  wing.cell_data.add_scalar("Cp", std::move(cp));
+  wing.point_data.add_vector("displacement_m", wing.points - rigid_nodes);
+}
+
 void add_step_values(PolyDataMesh& mesh, const StepValues& v) {
   mesh.field_data.add_number("step", static_cast<double>(v.step));
   mesh.field_data.add_number("t_over_T", v.t_over_T);
   mesh.field_data.add_number("lift_N", v.lift);
   mesh.field_data.add_number("CL", v.cl);
+  mesh.field_data.add_number("drag_N", v.drag);
+  mesh.field_data.add_number("CD", v.cd);
+  mesh.field_data.add_number("power_W", v.power);
+  mesh.field_data.add_number("drive_power_W", v.drive_power);
 }
 
 PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& m, const uvlm::VortexLatticeData& d,
@@ -72,20 +93,34 @@ PolyDataMesh wake_mesh(const uvlm::VortexLatticeModel& m, const uvlm::VortexLatt
     mesh.points.col(static_cast<Eigen::Index>(nodes + k)) = le.nodes.position(k);
   for (int j = 0; le_nodes > 0 && j < n1; ++j)
     mesh.points.col(static_cast<Eigen::Index>(nodes + le_nodes - n1 + j)) = d.ring_nodes.col(m.node(0, j));
-  Eigen::VectorXd gamma(static_cast<Eigen::Index>(rows + le_rings) * ns);
+  // Age of each node row [s]: the trailing-edge wake's rows 0 … rows, then the sheet's rows
+  // 0 … le.rows and the leading edge's own row (age 0).
+  const int te_node_rows = nodes > 0 ? rows + 1 : 0, le_node_rows = le_rings > 0 ? le_rings + 1 : 0;
+  std::vector<double> row_age(static_cast<std::size_t>(te_node_rows + le_node_rows), 0.0);
+  for (int r = 0; r < te_node_rows; ++r) row_age[static_cast<std::size_t>(r)] = d.wake_row_age[static_cast<std::size_t>(r)];
+  for (int r = 0; r + 1 < le_node_rows; ++r)
+    row_age[static_cast<std::size_t>(te_node_rows + r)] = le.row_age[static_cast<std::size_t>(r)];
+  Eigen::VectorXd point_age(mesh.points.cols());
+  for (Eigen::Index k = 0; k < point_age.size(); ++k) point_age(k) = row_age[static_cast<std::size_t>(k / n1)];
+  Eigen::VectorXd gamma(static_cast<Eigen::Index>(rows + le_rings) * ns), age(gamma.size());
   for (int r = 0; r < rows; ++r)
     for (int j = 0; j < ns; ++j) {
       const int a = r * n1 + j;
       mesh.polygons.push_back({a, a + 1, a + n1 + 1, a + n1});
       gamma(r * ns + j) = d.wake_gamma[static_cast<std::size_t>(r) * ns + j];
+      age(r * ns + j) = 0.5 * (row_age[static_cast<std::size_t>(r)] + row_age[static_cast<std::size_t>(r + 1)]);
     }
   for (int r = 0; r < le_rings; ++r)
     for (int j = 0; j < ns; ++j) {
       const int a = static_cast<int>(nodes) + r * n1 + j;
       mesh.polygons.push_back({a, a + 1, a + n1 + 1, a + n1});
       gamma((rows + r) * ns + j) = r < le.rows ? le.gamma[static_cast<std::size_t>(r) * ns + j] : le.accepted(j);
+      const std::size_t row = static_cast<std::size_t>(te_node_rows + r);
+      age((rows + r) * ns + j) = 0.5 * (row_age[row] + row_age[row + 1]);
     }
   mesh.cell_data.add_scalar("circulation_m2_s", gamma);
+  mesh.cell_data.add_scalar("age_s", age);
+  mesh.point_data.add_scalar("age_s", point_age);
   if (le.active()) {
     Eigen::VectorXd sheet = Eigen::VectorXd::Zero(gamma.size());
     sheet.tail(static_cast<Eigen::Index>(le_rings) * ns).setOnes();
@@ -117,6 +152,31 @@ PolyDataMesh chain_mesh(const mbd::ChainModel& chain, const mbd::ChainData& data
   }
   mesh.cell_data.add_scalar("body", body_index);
   return mesh;
+}
+
+void add_joint_fields(PolyDataMesh& mesh, const mbd::ChainModel& chain, const mbd::ChainData& data,
+                      const Eigen::VectorXd& q) {
+  const int nb = chain.num_bodies(), n = chain.num_dofs();
+  if (q.size() != 0 && q.size() != n)
+    throw std::invalid_argument("add_joint_fields: " + std::to_string(q.size()) + " joint angles for " +
+                                std::to_string(n) + " degrees of freedom");
+  Eigen::VectorXd moment = Eigen::VectorXd::Zero(n);
+  if (q.size() == n && n > 0) moment = data.stiffness * (q - data.rest);
+  Eigen::VectorXd bend = Eigen::VectorXd::Zero(2 * nb), twist = bend, bend_moment = bend, twist_moment = bend;
+  for (int k = 0; k < nb; ++k) {
+    const int dof = chain.dof_of_body(k);
+    if (dof < 0 || q.size() == 0) continue;
+    for (int cell : {k, nb + k}) {  // the body's joint line and its centre-of-mass line
+      bend(cell) = q(dof);
+      twist(cell) = q(dof + 1);
+      bend_moment(cell) = moment(dof);
+      twist_moment(cell) = moment(dof + 1);
+    }
+  }
+  mesh.cell_data.add_scalar("bend_rad", bend);
+  mesh.cell_data.add_scalar("twist_rad", twist);
+  mesh.cell_data.add_scalar("bend_moment_Nm", bend_moment);
+  mesh.cell_data.add_scalar("twist_moment_Nm", twist_moment);
 }
 
 }  // namespace flapsim::io

@@ -149,8 +149,9 @@ std::vector<std::string> command_outputs(const std::string& command) {
   if (command == "reduce")
     return {"beam.csv", "chain.toml", "reduction.vtm", "reduction/*.vtp", "report.md", "summary.json"};
   if (command == "run")
-    return {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "run.pvsm",
-            "vtk/wing_*.vtp", "vtk/wake_*.vtp", "vtk/chain_*.vtp"};
+    return {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "fem.pvd", "run.pvsm",
+            "tip_path.vtp", "marker_*_path.vtp", "vtk/wing_*.vtp", "vtk/wake_*.vtp", "vtk/chain_*.vtp",
+            "vtk/fem_*.vtp"};
   return {};
 }
 

@@ -33,6 +33,7 @@ class HeavePlateModel : public fsi::StructureModel {
   int surface_nodes() const override { return static_cast<int>(nodes_wing.cols()); }
   const mbd::BaseMotion& base() const override { return motion; }
   std::unique_ptr<fsi::StructureData> make_data() const override;
+  const Eigen::Matrix3Xd& reference_surface() const override { return nodes_wing; }
 };
 
 class HeavePlateData : public fsi::StructureData {

@@ -87,7 +87,8 @@ void run_command(const RunArgs& a) {
     // The files this run wrote (with vtk_every = 0 no series and no ParaView state; in
     // vacuum no wake): the line used to name all six whatever was written.
     std::string written;
-    for (const char* f : {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "fem.pvd", "run.pvsm"})
+    for (const char* f : {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "fem.pvd", "run.pvsm",
+                          "tip_path.vtp"})
       if (std::filesystem::exists(options.output_dir / f)) written += (written.empty() ? "" : ", ") + std::string(f);
     std::printf("outputs in %s (%s)\n", options.output_dir.string().c_str(), written.c_str());
   }
