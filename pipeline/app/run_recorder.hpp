@@ -5,6 +5,7 @@
 /// for the end-of-run analysis; at the end (or at a numerical failure) the run's
 /// results (run_results.hpp), written as summary.json.
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <optional>
@@ -18,6 +19,8 @@
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "pipeline/io/pvd_series.hpp"
+#include "pipeline/io/state_camera.hpp"
+#include "pipeline/io/vtk_writers.hpp"
 
 namespace flapsim::app {
 
@@ -76,6 +79,8 @@ class RunRecorder {
   /// Flushes the frames written since the last publication and rewrites the .pvd files,
   /// if kSeriesPublishInterval has passed since then or \p now. \throws io::OutputError
   void publish_series(bool now);
+  /// Keeps what run.pvsm needs of a written frame (the wing's, or the chain's in vacuum).
+  void record_for_state(const io::PolyDataMesh& frame, long step);
   void write_state() const;  ///< run.pvsm (io/pvsm_state.hpp), colour ranges as seen so far
   void analyse(const fsi::FsiData& data);
 
@@ -89,8 +94,14 @@ class RunRecorder {
   std::vector<double> row_;
   std::optional<io::PvdSeries> wing_pvd_, wake_pvd_, chain_pvd_;
   std::chrono::steady_clock::time_point series_published_;  ///< last publication of the .pvd files
-  double pressure_range_ = 0.0;     ///< largest |Δp| written [Pa]
-  double circulation_range_ = 0.0;  ///< largest |Γ| of the wake written [m²/s]
+  /// What run.pvsm's colour ranges and cameras come from (io::RunState): the wing's
+  /// colour field of every panel of every frame after t = 0 (Cp, or Δp [Pa] without
+  /// it), the wake's |Γ| [m²/s], the field data names of a frame, the wing's (or
+  /// chain's) frames for the cameras.
+  std::string wing_field_ = "pressure_jump_Pa";
+  std::vector<double> wing_values_, circulation_values_;
+  std::vector<std::string> frame_fields_;
+  io::StateCameraChooser camera_;
   std::vector<StepSample> samples_;
   RunResults results_;
 };
