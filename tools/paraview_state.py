@@ -112,7 +112,7 @@ class State:
 
 
 def chart_visible_series(state, columns):
-    """The series ParaView's line chart draws from a table with columns: every column
+    """The series ParaView's line chart draws from a table of these columns: every column
     but the X array, except those SeriesVisibility sets to 0 (a column the state does not
     name is drawn: ParaView's default)."""
     rep = state.of_type("XYChartRepresentation")[0]
@@ -152,9 +152,9 @@ def field(data, name, default=float("nan")):
 
 
 def build_renderer(state, view, t, solid=None):
-    """A vtkRenderer of the 3-D view view at time t [s]: its representations, scalar
-    bars and camera. solid: {pvd file name: (r, g, b)} draws that series in one flat
-    colour instead (for measuring what a picture shows)."""
+    """A vtkRenderer of the 3-D view (a RenderView proxy) at time t [s]: its
+    representations, scalar bars and camera. solid: {pvd file name: (r, g, b)} draws
+    that series in one flat colour instead (for measuring what a picture shows)."""
     solid = solid or {}
     renderer = vtk.vtkRenderer()
     renderer.SetBackground(*(view.numbers("Background") or [1.0, 1.0, 1.0]))
@@ -235,14 +235,14 @@ def view_size(view, size=None):
 
 
 def caption(state, t):
-    """t/T and the lift of the chart's frame nearest to t."""
+    """t/T and the lift of the chart's frame nearest to time t."""
     frame = read_vtp(nearest_frame(state.series[state.timed_reader()], t))
     return (f"t/T = {field(frame, 't_over_T'):.3f}   t = {t * 1e3:.2f} ms   "
             f"lift = {field(frame, 'lift_N') * 1e3:.4g} mN")
 
 
 def render(state, view, t, size=None, solid=None, title=True, window=None):
-    """The picture of view at time t, as a vtkImageData (RGB); drawn in window (a
+    """The picture of the 3-D view at time t, as a vtkImageData (RGB); drawn in window (a
     vtkRenderWindow kept over several pictures: one X connection) or in a new one."""
     renderer = build_renderer(state, view, t, solid)
     w, h = view_size(view, size)
