@@ -19,6 +19,8 @@
 #   make sweep-plots SWEEP=DIR/sweep.csv   mean lift (and power) against each varied key
 #   make optimize-plots DIR=DIR   objective, path and lift of a flapsim optimize folder
 #   make validate        reference-vs-computed table of the validation cases
+#   make snapshot RUN=DIR   a run's ParaView state rendered headless at 4 phases (PNG)
+#   make movie [CASE=...]   MP4 of the state's view over the case's last wingbeat
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
 #   make fuzz            the loader fuzzer with many more mutants (FUZZ_MUTANTS per loader)
 #   make clean           remove build/ and build-asan/
@@ -37,7 +39,7 @@ MAKEFLAGS  += --no-print-directory
 all: build
 
 help:
-	@sed -n '1,24p' Makefile
+	@sed -n '1,26p' Makefile
 
 deps:
 	@tools/install_deps.sh

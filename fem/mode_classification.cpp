@@ -66,10 +66,14 @@ ModeShapeMeasures measure_mode_shape(const Mesh& mesh, const std::vector<double>
     const double sxx = a.Wxx - a.W * xbar * xbar, sxu = a.Wxu - a.W * xbar * ubar;
     const double slope = sxx > 1e-300 ? sxu / sxx : 0.0;
     const double suu = a.Wuu - a.W * ubar * ubar;
-    const double fit_energy = a.W * ubar * ubar + slope * sxu;  // Σ w (a + b(x − x̄))²
+    // The fit's energy Σ w (ū + b(x − x̄))² = W ū² + b² Sxx (x̄ the strip's mass centre,
+    // so no cross term): the section's translation (bending) and its rotation about its
+    // mass centre (torsion). Binning each strip's whole energy by where its fitted line
+    // crosses zero called the hawkmoth's second bending mode (435 Hz, its sections
+    // twisting about an axis inside the chord as they translate) torsion.
     ec += std::max(0.0, suu - slope * sxu);
-    const double u_le = ubar + slope * (a.xmax - xbar), u_te = ubar + slope * (a.xmin - xbar);
-    if (u_le * u_te < 0.0) et += fit_energy; else eb += fit_energy;
+    eb += a.W * ubar * ubar;
+    et += slope * sxu;  // b² Sxx
     if (std::abs(ubar) > 0.0 && prev_mean * ubar < 0.0 &&
         std::abs(ubar) > 1e-3 * std::sqrt(e_oop / std::max(a.W, 1e-300)))
       ++out.spanwise_sign_changes;

@@ -4,11 +4,12 @@
 /// chordwise or in-plane. Wing frame: y along the span, x along the chord.
 ///
 /// Method: the out-of-plane displacement uz of the nodes in each of a number of
-/// spanwise strips is fitted by least squares with uz ≈ a + b (x − x̄) (a section
-/// that translates and rotates rigidly). The fit residual measures chordwise
-/// bending (camber); where the fitted line changes sign between the leading and
-/// trailing edges of a strip, the section twists about an axis inside the chord
-/// (torsion), otherwise it mostly translates (bending). Energies are mass-weighted.
+/// spanwise strips is fitted by least squares with uz ≈ a + b (x − x̄), x̄ the strip's
+/// mass centre (a section that translates and rotates rigidly). The fit residual
+/// measures chordwise bending (camber); of the fit, the translation W a² counts as
+/// bending and the rotation b² Σ w (x − x̄)² as torsion. Energies are mass-weighted.
+/// (Binning each strip's whole fit by whether its line changes sign inside the chord
+/// called the hawkmoth's second bending mode torsion: its sections also twist.)
 
 #include <string>
 #include <vector>
@@ -28,8 +29,8 @@ std::string to_string(ModeKind kind);
 /// Shares of the mass-weighted displacement energy of a mode shape.
 struct ModeShapeMeasures {
   double in_plane = 0.0;   ///< Σ m (ux² + uy²) / Σ m |u|²
-  double bending = 0.0;    ///< share of uz in strips that translate (no sign change across the chord)
-  double torsion = 0.0;    ///< share of uz in strips whose fitted line changes sign inside the chord
+  double bending = 0.0;    ///< share of uz in the strips' translation (fitted mean)
+  double torsion = 0.0;    ///< share of uz in the strips' rotation about their mass centre (fitted slope)
   double chordwise = 0.0;  ///< share of uz not explained by the strip-wise linear fit
   int spanwise_sign_changes = 0;  ///< nodal lines of the strip mean displacement along the span
 };

@@ -1,11 +1,11 @@
-# tools/case.mk — the case of `make run CASE=...` and `make phase-study CASE=...`
+# tools/case.mk — the case of `make run CASE=...`, `make movie CASE=...` and `make phase-study CASE=...`
 # (default cases/hover_flexible.toml). Included by the top-level Makefile before
 # tools/model.mk: a flexible case without its own chain file runs with the chain of its
 # wing's model, so its wing becomes the WING of `make model` (out/<wing>/chain.toml).
 
 CASE ?= cases/hover_flexible.toml
 
-CASE_GOALS := run run-pipeline phase-study
+CASE_GOALS := run run-pipeline phase-study movie
 ifneq ($(filter $(CASE_GOALS),$(MAKECMDGOALS)),)
 # make splits its values at spaces: a path with one would reach flapsim as several words
 # (and the case's name as nothing: outputs into out/ itself). Said plainly instead.

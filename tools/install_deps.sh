@@ -18,6 +18,7 @@ packages=(
   libnlopt-cxx-dev  # flapsim optimize (NLopt: BOBYQA, COBYLA)
   python3-matplotlib
   python3-vtk9 xvfb xauth
+  ffmpeg  # make movie: tools/paraview_state.py --movie encodes the frames (H.264 MP4)
 )
 
 missing=()

@@ -43,7 +43,7 @@ MODEL_INPUTS := $(or $(MODEL_FILES),$(WING)) $(MODEL_BIN)
 # stamp otherwise; it builds no test or benchmark); the stage files are then judged
 # against the binary.
 model: program $(MODEL_OUT)/mesh.msh $(MODEL_OUT)/modes.csv $(MODEL_OUT)/chain.toml
-	@echo "model of $(WING) ($(BODIES) bodies) in $(MODEL_OUT)/: mesh.vtu, fem.vtu, reduction.vtm, chain.toml, report.md"
+	@echo "model of $(WING) ($(BODIES) bodies) in $(MODEL_OUT)/: mesh.vtu, fem.vtu (ParaView: fem_modes.pvsm), reduction.vtm, chain.toml, report.md"
 
 hawkmoth-model: model
 
@@ -51,9 +51,10 @@ hawkmoth-model: model
 $(MODEL_OUT)/mesh.msh $(MODEL_OUT)/mesh.vtu &: $(MODEL_INPUTS)
 	$(MODEL_BIN) mesh $(WING) -o $(MODEL_OUT)
 
-# Stage 2: FEM modes and static load cases (modes.csv, fem.vtu). The commands mesh the
-# wing themselves; the mesh stage is a prerequisite so the stages run in order.
-$(MODEL_OUT)/modes.csv $(MODEL_OUT)/fem.vtu &: $(MODEL_INPUTS) $(MODEL_OUT)/mesh.msh
+# Stage 2: FEM modes and static load cases (modes.csv, fem.vtu, and fem_modes.pvsm, the
+# ParaView state animating mode 1). The commands mesh the wing themselves; the mesh stage
+# is a prerequisite so the stages run in order.
+$(MODEL_OUT)/modes.csv $(MODEL_OUT)/fem.vtu $(MODEL_OUT)/fem_modes.pvsm &: $(MODEL_INPUTS) $(MODEL_OUT)/mesh.msh
 	$(MODEL_BIN) modes $(WING) -o $(MODEL_OUT)
 
 # Stage 3: equivalent beam and bar chain, with the chain-vs-FEM report.

@@ -20,6 +20,10 @@
 #                       the path through the keys, the optimum's lift over a cycle beside the
 #                       start's, in DIR/plots (or OPTIMIZE_PLOTS=...)
 #   make validate       reference-vs-computed table of the validation cases
+#   make snapshot RUN=DIR   the run's ParaView state (DIR/run.pvsm) rendered headless at
+#                       phases 0, 0.25, 0.5, 0.75 of the last wingbeat: DIR/snapshots/*.png
+#   make movie [CASE=cases/x.toml]   the state's front view over the case's last wingbeat,
+#                       DIR/movie.mp4 (the run first if its folder has no state or the case is newer)
 #
 # The coupled runs are small (6 x 10 panels): one OpenMP thread per run is faster than
 # two on a busy machine, and the sweeps already fill the cores with whole cases.
@@ -43,7 +47,7 @@ RUN_CHAIN         := $(if $(CASE_NEEDS_MODEL),$(PIPELINE_CHAIN))
 # to out/<case name>_run/.
 RUN_OUT           ?= $(OUT)/$(CASE_NAME)$(if $(and $(RUN_CHAIN),$(filter $(MODEL_OUT),$(OUT)/$(CASE_NAME))),_run)
 
-.PHONY: run run-pipeline phase-study plots figures sweep-plots optimize-plots validate
+.PHONY: run run-pipeline phase-study plots figures sweep-plots optimize-plots validate snapshot movie
 
 
 run: program $(RUN_CHAIN)
@@ -54,7 +58,7 @@ run: program $(RUN_CHAIN)
 	end=$$(date +%s.%N); \
 	echo "FSI run: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"; \
 	if [ -f $(RUN_OUT)/chain.pvd ]; then \
-	  xvfb-run -a $(PIPELINE_PYTHON) tools/render_run.py $(RUN_OUT) --phases 0.25 \
+	  $(XVFB_RUN) $(PIPELINE_PYTHON) tools/render_run.py $(RUN_OUT) --phases 0.25 \
 	    -o $(RUN_OUT)/preview.png > /dev/null || exit $$?; \
 	  echo "preview: $(RUN_OUT)/preview.png (the wing at mid-downstroke of the last wingbeat)"; \
 	  echo "ParaView: cd $(RUN_OUT) && paraview --state=run.pvsm"; \
@@ -119,3 +123,23 @@ validate: build $(PIPELINE_CHAIN)
 	@test -f $(PHASE_OUT)/rigid/sweep.csv -a -f $(PHASE_OUT)/flexible/sweep.csv || \
 	  $(MAKE) --no-print-directory phase-study
 	$(PIPELINE_PYTHON) tools/validate.py --build $(BUILD) --out $(OUT)
+
+# Headless pictures of a run's ParaView state (tools/paraview_state.py: VTK's Python reads
+# run.pvsm's objects and renders them offscreen; README, "ParaView"). xvfb-run -a starts
+# its search for a free display at a number drawn from the shell's PID: two started at
+# once from the same number could share one server and lose it when the other ends.
+# -noreset: Xvfb resets when its last client leaves, and a window opened then fails.
+XVFB_RUN := xvfb-run -a -n $$(( 100 + $$$$ % 800 )) -s "-screen 0 1280x1024x24 -noreset"
+snapshot:
+	@test -n "$(RUN)" || { echo "usage: make snapshot RUN=DIR (a run folder with run.pvsm)" >&2; exit 2; }
+	$(XVFB_RUN) $(PIPELINE_PYTHON) tools/paraview_state.py $(RUN)/run.pvsm
+
+# MOVIE_SIZE="W H" (default: the state's view, 960 x 540); MOVIE_FPS frames per second.
+MOVIE_SIZE ?=
+MOVIE_FPS  ?= 25
+movie:
+	@if [ ! -f $(RUN_OUT)/run.pvsm -o $(CASE) -nt $(RUN_OUT)/run.pvsm ]; then \
+	  $(MAKE) --no-print-directory run CASE=$(CASE) || exit $$?; fi
+	@test -f $(RUN_OUT)/run.pvsm || { echo "make movie: $(RUN_OUT) has no run.pvsm (the case writes no frames: [output] vtk_every = 0)" >&2; exit 2; }
+	$(XVFB_RUN) $(PIPELINE_PYTHON) tools/paraview_state.py $(RUN_OUT)/run.pvsm --movie $(RUN_OUT)/movie.mp4 \
+	  $(if $(MOVIE_SIZE),--size $(MOVIE_SIZE)) --fps $(MOVIE_FPS)

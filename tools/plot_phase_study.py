@@ -174,15 +174,17 @@ def main():
         folder = os.path.join(study, "flexible", r["folder"])
         h = read_history(os.path.join(folder, "history.csv"))
         keep, s = last_cycle(h, case_frequency(folder))
-        # Base and tip drawn bold on top; the outer body thin and beneath, so it hides nothing.
+        # Base and tip drawn bold; the outer body's thin dotted lines on top of them (drawn
+        # beneath, they vanished wherever they ran along the tip's lines), thin enough to
+        # leave the bold lines readable through their gaps.
         for col, label, style, lw, z in (
                 ("phi_base_deg", r"$\varphi_\mathrm{base}$", "C0-", 2.0, 3),
                 ("phi_tip_deg", r"$\varphi_\mathrm{tip}$", "C0--", 2.0, 4),
                 ("alpha_base_deg", r"$\alpha_\mathrm{base}$", "C1-", 2.0, 3),
                 ("alpha_tip_deg", r"$\alpha_\mathrm{tip}$", "C1--", 2.0, 4),
                 ("theta_tip_deg", r"$\theta_\mathrm{tip}$", "C2--", 1.5, 4),
-                ("phi_outer_deg", r"$\varphi_\mathrm{outer\ body}$", "C0:", 1.0, 2),
-                ("alpha_outer_deg", r"$\alpha_\mathrm{outer\ body}$", "C1:", 1.0, 2)):
+                ("phi_outer_deg", r"$\varphi_\mathrm{outer\ body}$", "C0:", 1.2, 5),
+                ("alpha_outer_deg", r"$\alpha_\mathrm{outer\ body}$", "C1:", 1.2, 5)):
             if col not in h.dtype.names:
                 continue
             y = h[col][keep]

@@ -54,6 +54,13 @@ io::PolyDataMesh structure_frame(const FsiSetup& setup, const fsi::FsiData& data
 
 std::string structure_series(const FsiSetup& setup) { return setup.fem_structure ? "fem" : "chain"; }
 
+// The values of a cell scalar of \p mesh, or nullptr.
+const Eigen::VectorXd* cell_scalar(const io::PolyDataMesh& mesh, const std::string& name) {
+  for (const io::ScalarField& f : mesh.cell_data.scalars)
+    if (f.name == name) return &f.values;
+  return nullptr;
+}
+
 }  // namespace
 
 RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::filesystem::path& output_dir,
@@ -170,17 +177,17 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
       wing = io::wing_surface_mesh(model.lattice, nodes, velocities, t);
     } else {
       wing = io::wing_surface_mesh(model.lattice, *data.lattice, t);
-      pressure_range_ = std::max(pressure_range_, data.lattice->loads.pressure_jump.cwiseAbs().maxCoeff());
     }
     model.structure->rigid_surface(t, rigid_nodes_);
     io::add_wing_reference_fields(wing, dynamic_pressure_, rigid_nodes_);
     io::add_step_values(wing, values);
+    record_for_state(wing, step);
     const auto wf = io::PvdSeries::step_file_name("vtk/wing", step, "vtp");
     io::write_vtp(dir_ / wf, wing, io::Flush::deferred);
     wing_pvd_->append(t, dir_ / wf);
     io::PolyDataMesh wake = io::wake_mesh(model.lattice, *data.lattice, t);
-    if (wake.cell_data.scalars.front().values.size() > 0)
-      circulation_range_ = std::max(circulation_range_, wake.cell_data.scalars.front().values.cwiseAbs().maxCoeff());
+    if (const Eigen::VectorXd* gamma = cell_scalar(wake, "circulation_m2_s"))
+      circulation_values_.insert(circulation_values_.end(), gamma->begin(), gamma->end());
     io::add_step_values(wake, values);
     const auto kf = io::PvdSeries::step_file_name("vtk/wake", step, "vtp");
     io::write_vtp(dir_ / kf, wake, io::Flush::deferred);
@@ -188,10 +195,22 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
   }
   io::PolyDataMesh chain = structure_frame(setup_, data, t);
   io::add_step_values(chain, values);
+  if (!model.air) record_for_state(chain, step);
   const auto cf = io::PvdSeries::step_file_name("vtk/" + structure_series(setup_), step, "vtp");
   io::write_vtp(dir_ / cf, chain, io::Flush::deferred);
   chain_pvd_->append(t, dir_ / cf);
   publish_series(false);
+}
+
+void RunRecorder::record_for_state(const io::PolyDataMesh& frame, long step) {
+  frame_fields_.clear();
+  for (const auto& [name, value] : frame.field_data.numbers) frame_fields_.push_back(name);
+  camera_.add_frame(frame);
+  if (step == 0) return;  // no loads before the first solve
+  const Eigen::VectorXd* values = cell_scalar(frame, "Cp");
+  wing_field_ = values ? "Cp" : "pressure_jump_Pa";
+  if (!values) values = cell_scalar(frame, wing_field_);
+  if (values) wing_values_.insert(wing_values_.end(), values->begin(), values->end());
 }
 
 void RunRecorder::publish_series(bool now) {
@@ -211,8 +230,17 @@ void RunRecorder::write_state() const {
   double length = 0.0;
   for (const auto& b : setup_.chain().bodies) length += b.length;
   if (length > 0.0) state.length_scale = length;
-  if (pressure_range_ > 0.0) state.pressure_range = pressure_range_;
-  if (circulation_range_ > 0.0) state.circulation_range = circulation_range_;
+  // Robust colour ranges: a percentile of |value| over the frames (the extreme is one
+  // frame's leading-edge peak; with it the rest of the wing looked grey).
+  std::vector<double> wing = wing_values_, gamma = circulation_values_;
+  const double wing_range = io::magnitude_percentile(wing, io::kStateColourPercentile);
+  const double gamma_range = io::magnitude_percentile(gamma, io::kStateColourPercentile);
+  state.wing_field = wing_field_;
+  if (wing_range > 0.0) state.wing_range = wing_range;
+  if (gamma_range > 0.0) state.circulation_range = gamma_range;
+  if (!frame_fields_.empty()) state.frame_fields = frame_fields_;
+  state.bounds = camera_.bounds();
+  state.front = camera_.best(io::state_box(state), static_cast<double>(io::kStateViewWidth) / io::kStateViewHeight);
   io::write_run_state(dir_ / "run.pvsm", state);
 }
 

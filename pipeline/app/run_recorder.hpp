@@ -6,6 +6,7 @@
 /// results (run_results.hpp), written as summary.json, and (with the series) the paths of
 /// the tip and of the markers over every step (tip_path.vtp, marker_<k>_path.vtp).
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <optional>
@@ -20,7 +21,9 @@
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "pipeline/io/pvd_series.hpp"
+#include "pipeline/io/state_camera.hpp"
 #include "pipeline/io/trajectory_vtk.hpp"
+#include "pipeline/io/vtk_writers.hpp"
 
 namespace flapsim::app {
 
@@ -79,6 +82,8 @@ class RunRecorder {
   /// Flushes the frames written since the last publication and rewrites the .pvd files,
   /// if kSeriesPublishInterval has passed since then or \p now. \throws io::OutputError
   void publish_series(bool now);
+  /// Keeps what run.pvsm needs of a written frame (the wing's, or the chain's in vacuum).
+  void record_for_state(const io::PolyDataMesh& frame, long step);
   void write_state() const;  ///< run.pvsm (io/pvsm_state.hpp), colour ranges as seen so far
   /// Adds the tip's and the markers' positions at time \p t [s] to their paths.
   void record_paths(double t, const Eigen::Vector3d& tip, std::span<const double> markers);
@@ -96,13 +101,19 @@ class RunRecorder {
   std::vector<double> row_;
   std::optional<io::PvdSeries> wing_pvd_, wake_pvd_, chain_pvd_;
   std::chrono::steady_clock::time_point series_published_;  ///< last publication of the .pvd files
-  double pressure_range_ = 0.0;     ///< largest |Δp| written [Pa]
-  double circulation_range_ = 0.0;  ///< largest |Γ| of the wake written [m²/s]
   /// q_ref = ½ ρ U_ref² of the run's CL (wing.vtp Cp = Δp / q_ref) [Pa]; 0 in vacuum.
   double dynamic_pressure_ = 0.0;
   Eigen::Matrix3Xd rigid_nodes_;   ///< the lattice on the rigid wing at a frame's time [m]
   io::Trajectory tip_path_;                  ///< the tip at t = 0 and after every step
   std::vector<io::Trajectory> marker_paths_;  ///< the case's markers, likewise
+  /// What run.pvsm's colour ranges and cameras come from (io::RunState): the wing's
+  /// colour field of every panel of every frame after t = 0 (Cp, or Δp [Pa] without
+  /// it), the wake's |Γ| [m²/s], the field data names of a frame, the wing's (or
+  /// chain's) frames for the cameras.
+  std::string wing_field_ = "pressure_jump_Pa";
+  std::vector<double> wing_values_, circulation_values_;
+  std::vector<std::string> frame_fields_;
+  io::StateCameraChooser camera_;
   std::vector<StepSample> samples_;
   RunResults results_;
 };

@@ -145,7 +145,7 @@ std::vector<std::string> shared(const std::vector<std::string>& a, const std::ve
 
 std::vector<std::string> command_outputs(const std::string& command) {
   if (command == "mesh") return {"mesh.msh", "mesh.vtu"};
-  if (command == "modes") return {"modes.csv", "fem.vtu"};
+  if (command == "modes") return {"modes.csv", "fem.vtu", "fem_modes.pvsm"};
   if (command == "reduce")
     return {"beam.csv", "chain.toml", "reduction.vtm", "reduction/*.vtp", "report.md", "summary.json"};
   if (command == "run")

@@ -1,5 +1,8 @@
 #include "pipeline/io/pvsm_state.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <ostream>
 #include <sstream>
 #include <utility>
@@ -7,77 +10,60 @@
 
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
+#include "pipeline/io/pvsm_proxy.hpp"
 #include "pipeline/io/xml_text.hpp"
 
 namespace flapsim::io {
 
 namespace {
 
-// One <Proxy> of the state: its properties as element values or proxy references.
-class ProxyXml {
- public:
-  ProxyXml(std::string group, std::string type, int id, int servers)
-      : group_(std::move(group)), type_(std::move(type)), id_(id), servers_(servers) {}
-
-  ProxyXml& values(const std::string& name, const std::vector<std::string>& v) {
-    body_ << "      <Property name=\"" << name << "\" id=\"" << id_ << "." << name << "\" number_of_elements=\""
-          << v.size() << "\">\n";
-    for (std::size_t i = 0; i < v.size(); ++i)
-      body_ << "        <Element index=\"" << i << "\" value=\"" << xml_attribute(v[i]) << "\"/>\n";
-    body_ << "      </Property>\n";
-    return *this;
-  }
-  ProxyXml& value(const std::string& name, const std::string& v) { return values(name, {v}); }
-  ProxyXml& number(const std::string& name, double v) { return values(name, {format_number(v)}); }
-  ProxyXml& numbers(const std::string& name, const std::vector<double>& v) {
-    std::vector<std::string> s;
-    for (double x : v) s.push_back(format_number(x));
-    return values(name, s);
-  }
-  ProxyXml& proxies(const std::string& name, const std::vector<int>& ids, bool output_port = false) {
-    body_ << "      <Property name=\"" << name << "\" id=\"" << id_ << "." << name << "\" number_of_elements=\""
-          << ids.size() << "\">\n";
-    for (int i : ids)
-      body_ << "        <Proxy value=\"" << i << "\"" << (output_port ? " output_port=\"0\"" : "") << "/>\n";
-    body_ << "      </Property>\n";
-    return *this;
-  }
-  std::string str() const {
-    return "    <Proxy group=\"" + group_ + "\" type=\"" + type_ + "\" id=\"" + std::to_string(id_) +
-           "\" servers=\"" + std::to_string(servers_) + "\">\n" + body_.str() + "    </Proxy>\n";
-  }
-
- private:
-  std::string group_, type_;
-  int id_, servers_;
-  std::ostringstream body_;
-};
-
-// ParaView's "Cool to Warm" diverging map over [-range, range] (blue, grey, red).
+// ParaView's "Cool to Warm" diverging map over [-range, range] (blue, grey, red), fixed:
+// no rescaling when the time changes (AutomaticRescaleRangeMode -1, "Never").
 ProxyXml diverging_lookup_table(int id, double range) {
   ProxyXml lut("lookup_tables", "PVLookupTable", id, 21);
   lut.numbers("RGBPoints", {-range, 0.231373, 0.298039, 0.752941, 0.0, 0.865003, 0.865003, 0.865003, range,
                             0.705882, 0.0156863, 0.14902})
       .value("ColorSpace", "3")  // diverging
       .value("ScalarRangeInitialized", "1")
-      .value("AutomaticRescaleRangeMode", "1");  // grow and update every time step
+      .value("AutomaticRescaleRangeMode", "-1");
   return lut;
 }
 
+// The side view: along the span at mid-stroke, from beyond the tip (+y), level with the
+// stroke plane: the stroke seen edge-on and the wake below it.
+ViewDirection side_view() { return {{0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}; }
+
 }  // namespace
+
+std::array<double, 6> state_box(const RunState& s) {
+  const double L = s.length_scale;
+  std::array<double, 6> box = s.bounds.value_or(std::array<double, 6>{-L, L, -L, L, -L, L});
+  box[4] -= 0.15 * L;  // the near wake below the stroke
+  return box;
+}
+
+double magnitude_percentile(std::vector<double>& values, double p) {
+  if (values.empty()) return 0.0;
+  for (double& v : values) v = std::abs(v);
+  const auto n = values.size();
+  auto rank = static_cast<std::size_t>(std::ceil(p / 100.0 * static_cast<double>(n)));
+  rank = std::clamp<std::size_t>(rank, 1, n);
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank - 1), values.end());
+  return values[rank - 1];
+}
 
 std::string run_state_xml(const RunState& s) {
   // Proxy ids: 256, 261, 263 are ParaView's own time keeper, animation scene and time
   // cue, which loading a state updates in place; the others are this file's.
   constexpr int kTimeKeeper = 256, kScene = 261, kTimeCue = 263;
   constexpr int kWingReader = 1001, kWakeReader = 1002, kChainReader = 1003, kLiftOverTime = 1004;
-  constexpr int kWingRep = 2001, kWakeRep = 2002, kChainRep = 2003, kChartRep = 2004;
-  constexpr int kPressureLut = 3001, kCirculationLut = 3002;
-  constexpr int kRenderView = 4001, kChartView = 4002, kLayout = 5001;
+  constexpr int kChartRep = 2004;
+  constexpr int kWingLut = 3001, kCirculationLut = 3002;
+  constexpr int kRenderView = 4001, kChartView = 4002, kSideView = 4003, kLayout = 5001;
 
   std::vector<ProxyXml> proxies;
-  std::vector<std::pair<int, std::string>> sources, representations, luts;
-  std::vector<int> readers, shown;
+  std::vector<std::pair<int, std::string>> sources, representations, luts, scalar_bars;
+  std::vector<int> readers;
 
   const auto reader = [&](int id, const std::string& file) {
     ProxyXml r("sources", "PVDReader", id, 1);
@@ -86,88 +72,158 @@ std::string run_state_xml(const RunState& s) {
     sources.emplace_back(id, file);
     readers.push_back(id);
   };
-  const auto representation = [&](int id, int input, const std::string& name) {
-    ProxyXml r("representations", "GeometryRepresentation", id, 21);
-    r.proxies("Input", {input}, true).value("Visibility", "1");
-    representations.emplace_back(id, name);
-    shown.push_back(id);
-    return r;
-  };
-
   if (s.air) {
     reader(kWingReader, s.wing_pvd);
     reader(kWakeReader, s.wake_pvd);
   }
   reader(kChainReader, s.chain_pvd);
-
+  const bool cp = s.wing_field == "Cp";
   if (s.air) {
-    // The wing coloured by the pressure jump (cell data), with its panel edges.
-    ProxyXml wing = representation(kWingRep, kWingReader, "wing");
-    wing.value("Representation", "Surface With Edges")
-        .values("ColorArrayName", {"", "", "", "1", "pressure_jump_Pa"})
-        .proxies("LookupTable", {kPressureLut});
-    proxies.push_back(std::move(wing));
-    proxies.push_back(diverging_lookup_table(kPressureLut, s.pressure_range));
-    luts.emplace_back(kPressureLut, "pressure_jump_Pa.PVLookupTable");
-    // The wake coloured by circulation, half transparent.
-    ProxyXml wake = representation(kWakeRep, kWakeReader, "wake");
-    wake.value("Representation", "Surface")
-        .values("ColorArrayName", {"", "", "", "1", "circulation_m2_s"})
-        .proxies("LookupTable", {kCirculationLut})
-        .number("Opacity", 0.5);
-    proxies.push_back(std::move(wake));
+    proxies.push_back(diverging_lookup_table(kWingLut, s.wing_range));
+    luts.emplace_back(kWingLut, s.wing_field + ".PVLookupTable");
     proxies.push_back(diverging_lookup_table(kCirculationLut, s.circulation_range));
     luts.emplace_back(kCirculationLut, "circulation_m2_s.PVLookupTable");
   }
-  // The chain as thick black lines.
-  ProxyXml chain = representation(kChainRep, kChainReader, "chain");
-  chain.value("Representation", "Wireframe")
-      .values("ColorArrayName", {"", "", "", "0", ""})
-      .numbers("DiffuseColor", {0.0, 0.0, 0.0})
-      .numbers("AmbientColor", {0.0, 0.0, 0.0})
-      .number("LineWidth", 4.0);
-  proxies.push_back(std::move(chain));
 
-  // Lift over time: the field data of every step of the first series, one table.
+  // The representations of one 3-D view (ids base + 1 …; a representation belongs to one
+  // view): the wing coloured by wing_field with its panel edges, the wake's vortex lines
+  // coloured by circulation, translucent, the chain as thick black lines; a scalar bar
+  // for each coloured one. Returns the ids the view lists.
+  const auto view_representations = [&](int base, const std::string& view_name) {
+    std::vector<int> shown;
+    const auto representation = [&](int id, int input, const std::string& name) {
+      ProxyXml r("representations", "GeometryRepresentation", id, 21);
+      r.proxies("Input", {input}, true).value("Visibility", "1");
+      representations.emplace_back(id, name + " (" + view_name + ")");
+      shown.push_back(id);
+      return r;
+    };
+    const auto scalar_bar = [&](int id, int lut, const std::string& title, const std::vector<double>& position) {
+      ProxyXml bar("representations", "ScalarBarWidgetRepresentation", id, 21);
+      bar.proxies("LookupTable", {lut})
+          .value("Title", title)
+          .value("ComponentTitle", "")
+          .value("Visibility", "1")
+          .value("Enabled", "1")
+          .value("WindowLocation", "Any Location")
+          .numbers("Position", position)
+          .number("ScalarBarLength", 0.4)
+          .numbers("TitleColor", {0.0, 0.0, 0.0})
+          .numbers("LabelColor", {0.0, 0.0, 0.0});
+      proxies.push_back(std::move(bar));
+      scalar_bars.emplace_back(id, title + " (" + view_name + ")");
+      shown.push_back(id);
+    };
+    if (s.air) {
+      ProxyXml wing = representation(base + 1, kWingReader, "wing");
+      wing.value("Representation", "Surface With Edges")
+          .values("ColorArrayName", {"", "", "", "1", s.wing_field})
+          .proxies("LookupTable", {kWingLut});
+      proxies.push_back(std::move(wing));
+      ProxyXml wake = representation(base + 2, kWakeReader, "wake");
+      wake.value("Representation", "Wireframe")
+          .values("ColorArrayName", {"", "", "", "1", "circulation_m2_s"})
+          .proxies("LookupTable", {kCirculationLut})
+          .number("Opacity", 0.35)
+          .number("LineWidth", 1.0)
+          .number("Ambient", 1.0)  // unlit: a line's colour is its circulation's, whatever its angle
+          .number("Diffuse", 0.0);
+      proxies.push_back(std::move(wake));
+    }
+    ProxyXml chain = representation(base + 3, kChainReader, "chain");
+    chain.value("Representation", "Wireframe")
+        .values("ColorArrayName", {"", "", "", "0", ""})
+        .numbers("DiffuseColor", {0.0, 0.0, 0.0})
+        .numbers("AmbientColor", {0.0, 0.0, 0.0})
+        .number("LineWidth", 4.0);
+    proxies.push_back(std::move(chain));
+    if (s.air) {
+      scalar_bar(base + 4, kWingLut, cp ? "Cp" : "pressure jump [Pa]", {0.89, 0.52});
+      scalar_bar(base + 5, kCirculationLut, "circulation [m^2/s]", {0.89, 0.05});
+    }
+    return shown;
+  };
+
+  // Cameras with parallel projection that frame the box (state_box) in a view of
+  // kStateViewWidth x kStateViewHeight.
+  const std::array<double, 6> box = state_box(s);
+  const auto camera = [&](ProxyXml& view, const ViewDirection& d) {
+    const FramingCamera c = frame_box(box, d, static_cast<double>(kStateViewWidth) / kStateViewHeight);
+    view.numbers("CameraPosition", {c.position[0], c.position[1], c.position[2]})
+        .numbers("CameraFocalPoint", {c.focal_point[0], c.focal_point[1], c.focal_point[2]})
+        .numbers("CameraViewUp", {c.up[0], c.up[1], c.up[2]})
+        .value("CameraParallelProjection", "1")
+        .number("CameraParallelScale", c.parallel_scale)
+        .numbers("CenterOfRotation", {c.focal_point[0], c.focal_point[1], c.focal_point[2]})
+        .values("ViewSize", {std::to_string(kStateViewWidth), std::to_string(kStateViewHeight)})
+        .numbers("Background", {1.0, 1.0, 1.0})
+        .value("UseColorPaletteForBackground", "0")
+        .value("OrientationAxesVisibility", "1");
+  };
+  ProxyXml view("views", "RenderView", kRenderView, 16);
+  view.proxies("Representations", view_representations(2100, "front"));
+  camera(view, s.front);
+  proxies.push_back(std::move(view));
+  ProxyXml side("views", "RenderView", kSideView, 16);
+  side.proxies("Representations", view_representations(2200, "side"));
+  camera(side, side_view());
+  proxies.push_back(std::move(side));
+
+  // Lift over time: the field data of every step of the first series, one table whose
+  // columns are the frames' field data and ParaView's Time; lift_N and CL drawn against
+  // t/T, every other column named hidden (ParaView draws a column the state does not name).
   const int timed = s.air ? kWingReader : kChainReader;
   ProxyXml over_time("filters", "ExtractFieldDataOverTime", kLiftOverTime, 1);
   over_time.proxies("Input", {timed}, true).value("AutoDetectGlobalTemporalDataArrays", "0");
   proxies.push_back(std::move(over_time));
   sources.emplace_back(kLiftOverTime, "lift over time");
+  std::vector<std::string> columns = s.frame_fields;
+  for (const char* c : {"Time", "TimeValue", "N", "vtkValidPointMask", "step", "t_over_T"})
+    if (std::find(columns.begin(), columns.end(), c) == columns.end()) columns.emplace_back(c);
+  for (const std::string& c : state_chart_series())
+    if (std::find(columns.begin(), columns.end(), c) == columns.end()) columns.push_back(c);
+  std::vector<std::string> visibility, corner, colour, label;
+  for (const std::string& c : columns) {
+    const bool lift = c == "lift_N", cl = c == "CL";
+    visibility.insert(visibility.end(), {c, lift || cl ? "1" : "0"});
+    if (lift) {
+      corner.insert(corner.end(), {c, "0"});  // left axis
+      colour.insert(colour.end(), {c, "0", "0", "0"});
+      label.insert(label.end(), {c, "lift [N]"});
+    } else if (cl) {
+      corner.insert(corner.end(), {c, "1"});  // right axis
+      colour.insert(colour.end(), {c, "0.231373", "0.298039", "0.752941"});
+      label.insert(label.end(), {c, "CL"});
+    }
+  }
   ProxyXml chart_rep("representations", "XYChartRepresentation", kChartRep, 21);
   chart_rep.proxies("Input", {kLiftOverTime}, true)
       .value("Visibility", "1")
       .value("AttributeType", "6")  // row data of the table
       .value("UseIndexForXAxis", "0")
-      .value("XArrayName", "Time")
-      .values("SeriesVisibility", {s.air ? "lift_N" : "t_over_T", "1"});
+      .value("XArrayName", "t_over_T")
+      .values("SeriesVisibility", visibility)
+      .values("SeriesPlotCorner", corner)
+      .values("SeriesColor", colour)
+      .values("SeriesLabel", label);
   proxies.push_back(std::move(chart_rep));
   representations.emplace_back(kChartRep, "lift over time chart");
-
-  // The 3-D view, looking at the stroke plane from above and in front.
-  const double L = s.length_scale;
-  ProxyXml view("views", "RenderView", kRenderView, 16);
-  view.proxies("Representations", shown)
-      .numbers("CameraPosition", {1.6 * L, -2.0 * L, 1.6 * L})
-      .numbers("CameraFocalPoint", {0.0, 0.0, 0.0})
-      .numbers("CameraViewUp", {0.0, 0.0, 1.0})
-      .number("CameraParallelScale", 1.2 * L)
-      .value("OrientationAxesVisibility", "1");
-  proxies.push_back(std::move(view));
   ProxyXml chart("views", "XYChartView", kChartView, 16);
   chart.proxies("Representations", {kChartRep})
-      .values("LeftAxisTitle", {s.air ? "lift [N]" : "t/T"})
-      .values("BottomAxisTitle", {"t [s]"})
-      .value("HideTimeMarker", "0");
+      .value("ChartTitle", s.air ? "lift and CL" : "lift (vacuum: none)")
+      .value("LeftAxisTitle", "lift [N]")
+      .value("RightAxisTitle", "CL")
+      .value("BottomAxisTitle", "t/T")
+      .value("HideTimeMarker", "1");  // the marker sits at t [s], the axis is t/T
   proxies.push_back(std::move(chart));
 
   ProxyXml keeper("misc", "TimeKeeper", kTimeKeeper, 16);
-  keeper.proxies("TimeSources", readers).proxies("Views", {kRenderView, kChartView});
+  keeper.proxies("TimeSources", readers).proxies("Views", {kRenderView, kSideView, kChartView});
   proxies.push_back(std::move(keeper));
   ProxyXml scene("animation", "AnimationScene", kScene, 16);
   scene.proxies("TimeKeeper", {kTimeKeeper})
       .proxies("Cues", {kTimeCue})
-      .proxies("ViewModules", {kRenderView, kChartView})
+      .proxies("ViewModules", {kRenderView, kSideView, kChartView})
       .value("PlayMode", "2");  // snap to the time steps of the series
   proxies.push_back(std::move(scene));
   ProxyXml cue("animation", "TimeAnimationCue", kTimeCue, 16);
@@ -176,16 +232,21 @@ std::string run_state_xml(const RunState& s) {
 
   std::ostringstream x;
   x << "<?xml version=\"1.0\"?>\n"
-       "<!-- flapsim run: ParaView state (File > Load State). Files are relative to this file's folder. -->\n"
+       "<!-- flapsim run: ParaView state (File > Load State). Files are relative to this file's folder.\n"
+       "     Colour ranges: +/- the "
+    << format_number(s.percentile) << "th percentile of |" << s.wing_field
+    << "| (wing) and |circulation_m2_s| (wake) over the frames written. -->\n"
        "<ParaView>\n"
        "  <ServerManagerState version=\"5.11.0\">\n";
   for (const ProxyXml& p : proxies) x << p.str();
-  // The layout: the 3-D view on the left (60 %), the chart on the right.
+  // The layout: on the left (60 %) the front view above the side view, the chart on the right.
   x << "    <Proxy group=\"misc\" type=\"ViewLayout\" id=\"" << kLayout << "\" servers=\"20\">\n"
-    << "      <Layout number_of_elements=\"3\">\n"
+    << "      <Layout number_of_elements=\"5\">\n"
     << "        <Item direction=\"2\" fraction=\"0.6\" view=\"0\"/>\n"
-    << "        <Item direction=\"0\" fraction=\"0.5\" view=\"" << kRenderView << "\"/>\n"
+    << "        <Item direction=\"1\" fraction=\"0.6\" view=\"0\"/>\n"
     << "        <Item direction=\"0\" fraction=\"0.5\" view=\"" << kChartView << "\"/>\n"
+    << "        <Item direction=\"0\" fraction=\"0.5\" view=\"" << kRenderView << "\"/>\n"
+    << "        <Item direction=\"0\" fraction=\"0.5\" view=\"" << kSideView << "\"/>\n"
     << "      </Layout>\n"
     << "    </Proxy>\n";
   const auto collection = [&](const std::string& name, const std::vector<std::pair<int, std::string>>& items) {
@@ -197,9 +258,10 @@ std::string run_state_xml(const RunState& s) {
   collection("layouts", {{kLayout, "Layout #1"}});
   collection("lookup_tables", luts);
   collection("representations", representations);
+  collection("scalar_bars", scalar_bars);
   collection("sources", sources);
   collection("timekeeper", {{kTimeKeeper, "TimeKeeper1"}});
-  collection("views", {{kRenderView, "RenderView1"}, {kChartView, "LineChartView1"}});
+  collection("views", {{kRenderView, "RenderView1"}, {kSideView, "RenderView2"}, {kChartView, "LineChartView1"}});
   x << "    <CustomProxyDefinitions/>\n"
        "    <Links/>\n"
        "  </ServerManagerState>\n"

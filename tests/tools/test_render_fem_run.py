@@ -39,7 +39,7 @@ check(os.path.isfile(os.path.join(run, "fem.pvd")), "no fem.pvd")
 check(not os.path.exists(os.path.join(run, "chain.pvd")), "a FEM run wrote chain.pvd")
 script = os.path.join(a.source, "tools", "render_run.py")
 png = os.path.join(work, "fem.png")
-subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1024x768x24", "/usr/bin/python3", script, run,
+subprocess.run(tool_test_args.XVFB_RUN + ["/usr/bin/python3", script, run,
                 "--phases", "0.25", "-o", png, "--size", "600", "400"], check=True)
 reader = vtk.vtkPNGReader()
 reader.SetFileName(png)

@@ -32,7 +32,7 @@ run = os.path.join(work, "run")
 subprocess.run([a.flapsim, "run", case, "-o", run, "-q"], check=True, env=env)
 
 script = os.path.join(a.source, "tools", "render_run.py")
-xvfb = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24"]
+xvfb = tool_test_args.XVFB_RUN
 failures = []
 
 

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -19,6 +20,7 @@
 #include "pipeline/app/numerical_stage.hpp"
 #include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
+#include "pipeline/io/fem_modes_state.hpp"
 #include "pipeline/io/fem_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
@@ -37,6 +39,7 @@ struct ModesArgs {
   std::string out_dir = "out";
   int modes = 20;
   int bodies = 10;
+  int state_mode = 1;  ///< the mode fem_modes.pvsm animates (1-based)
   bool force = false;
 };
 
@@ -63,6 +66,10 @@ std::vector<io::ModeLabel> mode_labels(const fem::WingFem& fem, const fem::WingM
 void run_modes(const ModesArgs& args) {
   if (args.modes < 1 || args.modes > 500)
     throw InputError("<command line>", 0, "--modes", "must be between 1 and 500, got " + std::to_string(args.modes));
+  if (args.state_mode < 1 || args.state_mode > args.modes)
+    throw InputError("<command line>", 0, "--state-mode",
+                     "must be between 1 and --modes (" + std::to_string(args.modes) + "), got " +
+                         std::to_string(args.state_mode));
   // 1. Wing; the output folder writable before any work (else exit 4 naming it).
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
   print_wing_warnings(wing);
@@ -98,6 +105,22 @@ void run_modes(const ModesArgs& args) {
   monitor.stage("writing the outputs");
   io::write_modes_csv(dir / "modes.csv", m.modes, labels);
   io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, labels, results);
+  {
+    io::FemModeView view;
+    view.mode = args.state_mode;
+    const auto k = static_cast<std::size_t>(args.state_mode - 1);
+    view.frequency_hz = m.modes.frequencies_hz(static_cast<Eigen::Index>(k));
+    view.kind = labels[k].kind;
+    view.shape_kind = labels[k].shape_kind;
+    view.bounds = {mesh.nodes[0].x(), mesh.nodes[0].x(), mesh.nodes[0].y(), mesh.nodes[0].y(),
+                   mesh.nodes[0].z(), mesh.nodes[0].z()};
+    for (const auto& x : mesh.nodes)
+      for (int i = 0; i < 3; ++i) {
+        view.bounds[2 * i] = std::min(view.bounds[2 * i], x(i));
+        view.bounds[2 * i + 1] = std::max(view.bounds[2 * i + 1], x(i));
+      }
+    io::write_fem_modes_state(dir / "fem_modes.pvsm", view);
+  }
   claim.finish("complete");
   monitor.done();
 
@@ -109,7 +132,8 @@ void run_modes(const ModesArgs& args) {
     std::printf("%5d %12.3f  %-8s %10.3f  %s\n", static_cast<int>(k + 1), m.modes.frequencies_hz(k), l.kind.c_str(),
                 l.beam_share, l.shape_kind.c_str());
   }
-  std::printf("wrote %s, %s\n", (dir / "modes.csv").string().c_str(), (dir / "fem.vtu").string().c_str());
+  std::printf("wrote %s, %s, %s (ParaView: mode %d animated)\n", (dir / "modes.csv").string().c_str(),
+              (dir / "fem.vtu").string().c_str(), (dir / "fem_modes.pvsm").string().c_str(), args.state_mode);
 }
 
 }  // namespace
@@ -128,7 +152,9 @@ void add_modes_command(CLI::App& app) {
       "point vectors mode_NN scaled so the largest displacement is 10 % of the span (field data\n"
       "mode_NN_frequency_Hz, mode_NN_kind, mode_NN_beam_share, mode_NN_shape_kind,\n"
       "mode_NN_scale) and static_<case>_m_per_N[_m]\n"
-      "(displacement per unit load). Exit status: 0 ok, 2 bad input, 3 numerical failure\n"
+      "(displacement per unit load), and DIR/fem_modes.pvsm: a ParaView state animating the\n"
+      "--state-mode mode (Warp By Vector, its frequency and kinds as text).\n"
+      "Exit status: 0 ok, 2 bad input, 3 numerical failure\n"
       "of the FEM, 4 output error, 130/143 interrupted by SIGINT/SIGTERM (at once;\n"
       "flapsim_outputs.toml says \"interrupted\"). A stage over 2 s is shown on stderr.");
   auto args = std::make_shared<ModesArgs>();
@@ -138,6 +164,7 @@ void add_modes_command(CLI::App& app) {
   cmd->add_option("--bodies", args->bodies, "bodies of the chain whose stations name the modes (as flapsim reduce --bodies)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
+  cmd->add_option("--state-mode", args->state_mode, "the mode fem_modes.pvsm animates (1-based)")->capture_default_str();
   cmd->add_flag("--force", args->force, "replace another command's outputs in the folder that this command would overwrite");
   cmd->callback([args] { run_modes(*args); });
 }
