@@ -11,8 +11,17 @@
 ///     Γ(0, j) − (G_j + δ_j) = ±Γ_crit,j   (Γ_1 at ±LESP_crit, the sign of the LESP without shedding)
 /// closes it. With Γ = Γ* − A⁻¹ B δ (the influence matrix's factorisation, one solve per
 /// column) this is the small bordered system (I + [A⁻¹B]_first row) δ = Γ*_1 ∓ Γ_crit,
-/// solved exactly. A strip that exceeds LESP_crit only once its neighbours shed joins
-/// and the system is solved again (at most ns times).
+/// solved exactly. The strips are coupled (a strip's shedding changes its neighbours'
+/// LESP), so the set of strips that shed is found by iteration until it satisfies the
+/// criterion's complementarity conditions on every strip: a strip that sheds holds ±LESP_crit
+/// with an increment of the sign of its LESP (it sheds vorticity of that sign); a strip
+/// that does not shed has |LESP| ≤ LESP_crit. A strip that would need an increment of the
+/// other sign to stay at ±LESP_crit once its neighbours shed leaves the set (its LESP is
+/// then inside the band); one that exceeds LESP_crit only once its neighbours shed joins;
+/// the system is solved again after each change (at most 2 ns + 1 solves). Without the
+/// first rule such strips shed vorticity of the wrong sign to hold their LESP (6 of 310
+/// strip-steps on the Robofly wing at 50°, 30 steps; test
+/// uvlm.RevolvingWing.ShedLeadingEdgeHoldsEveryStripAtTheCriticalLesp).
 
 #include "uvlm/lattice_internal.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
@@ -96,10 +105,12 @@ bool shed_leading_edge_vorticity(const VortexLatticeModel& m, VortexLatticeData&
   Eigen::VectorXd& target = s.border_rhs;
   Eigen::VectorXd& signed_target = s.target;  // ±Γ_crit of each shedding strip
   signed_target.setZero();
-  if (!update_lesp(m, d, signed_target)) return false;
+  const bool exceeded = update_lesp(m, d, signed_target);
+  s.lesp_unshed = s.lesp;
+  if (!exceeded) return false;
   s.gamma0 = d.gamma;
   s.columns.setZero();
-  for (int pass = 0; pass <= ns; ++pass) {
+  for (int pass = 0;; ++pass) {
     for (int j = 0; j < ns; ++j)
       if (s.shedding[j]) unit_ring_column(m, d, j);
     s.response = d.lu.solve(s.columns);
@@ -116,9 +127,27 @@ bool shed_leading_edge_vorticity(const VortexLatticeModel& m, VortexLatticeData&
     d.gamma = s.gamma0;
     d.gamma.noalias() -= s.response * s.increment;
     s.current = s.accepted + s.increment;
+    if (pass >= 2 * ns) {  // no consistent set found (not met in the tests): keep the last solve
+      update_lesp(m, d, signed_target);
+      break;
+    }
+    // A strip sheds only vorticity of the sign of its LESP (the increment that lowers |Γ_1|
+    // to Γ_crit); one that would have to shed the opposite sign to stay at ±LESP_crit once
+    // its neighbours shed does not shed (its LESP is then inside the band), and the system
+    // is solved again without it.
+    bool dropped = false;
+    for (int j = 0; j < ns; ++j)
+      if (s.shedding[j] && !(s.increment(j) * signed_target(j) > 0.0)) {
+        s.shedding[j] = 0;
+        signed_target(j) = 0.0;
+        dropped = true;
+      }
+    if (dropped) continue;
     if (!update_lesp(m, d, signed_target)) break;
   }
-  return true;
+  for (int j = 0; j < ns; ++j)
+    if (s.shedding[j]) return true;
+  return false;
 }
 
 }  // namespace flapsim::uvlm::detail

@@ -28,6 +28,7 @@ void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
   current.setZero(ns);
   accepted.setZero(ns);
   lesp.setZero(ns);
+  lesp_unshed.setZero(ns);
   critical_gamma.setZero(ns);
   shedding.assign(static_cast<std::size_t>(ns), 0);
   // Rings 0 … rings (the last: the leading-edge ring): spanwise rows 0 … rings, legs of each ring.

@@ -35,7 +35,8 @@
 ///    Unless the strip sheds, current = accepted (the sheet goes on as it was); a strip
 ///    that sheds gets the increment that puts |LESP| at LESP_crit, found with the
 ///    circulations in one linear solve (the bordered system through the influence
-///    matrix's factorisation: leading_edge_shedding.cpp);
+///    matrix's factorisation; which strips shed: the criterion's complementarity
+///    conditions on all strips at once, leading_edge_shedding.cpp);
 ///  - advance: when any strip shed in the step, the release row leaves (it is convected
 ///    from where it was) and the leading-edge ring becomes sheet ring `rows` with its
 ///    circulation; a new release row is placed at the next solve.
@@ -71,6 +72,7 @@ struct LeadingEdgeSheet {
   Eigen::VectorXd current;           ///< leading-edge ring circulation of the last solve, per strip [m²/s]
   Eigen::VectorXd accepted;          ///< the same at the last accepted step [m²/s]
   Eigen::VectorXd lesp;              ///< LESP of each strip in the last solve
+  Eigen::VectorXd lesp_unshed;       ///< the same before the solve's shedding (every ring as accepted)
   Eigen::VectorXd critical_gamma;    ///< |Γ_1| at LESP_crit per strip in the last solve [m²/s]
   std::vector<char> shedding;        ///< per strip: shed in the last solve
   SegmentSet segments;               ///< the sheet's segments (without the one on the first bound vortex)

@@ -85,8 +85,9 @@ struct VortexLatticeModel {
   LoadMethod load_method = LoadMethod::Bernoulli;
   LeadingEdge leading_edge = LeadingEdge::Attached;
   /// The critical leading-edge suction parameter of LeadingEdge::Shed (leading_edge_sheet.hpp):
-  /// 0.11, the value of a thin flat plate at low Reynolds number of Ramesh et al. 2014
-  /// (J. Fluid Mech. 751), as the authors' own flat-plate examples use it.
+  /// 0.11, Ramesh et al. 2014's value for a thin flat plate at Re = 1000 (J. Fluid Mech. 751;
+  /// stated so in the authors' code documentation, UnsteadyFlowSolvers.jl), the closest of
+  /// their flat-plate values to insect Reynolds numbers (10²–10³); not fitted to any case.
   double lesp_critical = 0.11;
   /// Evaluate the wake's direct sums in single precision: its self-induced velocity (the
   /// free-wake convection, the cost of a run) and its velocity at the wing's collocation
