@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "wings/input_error.hpp"
+#include "wings/toml_key_path.hpp"
 #include "wings/toml_preflight.hpp"
 
 namespace flapsim::wings {
@@ -36,21 +37,6 @@ const toml::node* as_node(const void* p) { return static_cast<const toml::node*>
 int line_of_node(const toml::node& n, int fallback) {
   const auto line = static_cast<int>(n.source().begin.line);
   return line > 0 ? line : fallback;
-}
-
-const char* type_name(const toml::node& n) {
-  switch (n.type()) {
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a floating-point number";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
-    default: return "nothing";
-  }
 }
 
 std::string format_number(double v) {
@@ -111,35 +97,36 @@ TomlTable parse_toml_string(std::string_view text, const std::string& name) {
 
 void TomlTable::apply_overrides(const std::vector<std::pair<std::string, std::string>>& overrides) {
   for (const auto& [dotted, value_text] : overrides) {
-    if (dotted.empty() || dotted.front() == '.' || dotted.back() == '.')
-      throw OverrideInputError(file(), dotted, "override: not a dotted key such as kinematics.frequency_hz", dotted);
+    const auto refuse = [this, &dotted = dotted](const std::string& why) {
+      return OverrideInputError(file(), dotted, "override: " + why, dotted);
+    };
+    try {
+      (void)parse_key_path(dotted);
+    } catch (const KeyPathError& e) {
+      throw refuse(e.what());
+    }
     toml::table parsed;
     try {
       const std::string text = "v = " + value_text;
       refuse_toml_the_parser_cannot_read_safely(text, "override");
       parsed = toml::parse(std::string_view(text), std::string_view("override"));
     } catch (const InputError& e) {
-      throw OverrideInputError(file(), dotted,
-                               "override: \"" + value_text + "\" is not a TOML value (" + e.message() + ")", dotted);
+      throw refuse("\"" + value_text + "\" is not a TOML value (" + e.message() + ")");
     } catch (const toml::parse_error& e) {
-      throw OverrideInputError(file(), dotted,
-                               "override: \"" + value_text + "\" is not a TOML value (" +
-                                   std::string(e.description()) + "); quote strings: '\"cosine\"'",
-                               dotted);
+      throw refuse("\"" + value_text + "\" is not a TOML value (" + std::string(e.description()) +
+                   "); quote strings: '\"cosine\"'");
     }
-    // Walk (and create) the tables on the way; the last component is the key to set.
-    toml::table* t = const_cast<toml::table*>(as_tbl(table_));
-    std::size_t start = 0;
-    for (std::size_t dot = dotted.find('.'); dot != std::string::npos;
-         start = dot + 1, dot = dotted.find('.', start)) {
-      const std::string part = dotted.substr(start, dot - start);
-      toml::node* n = t->get(part);
-      if (!n) n = &t->insert_or_assign(part, toml::table{}).first->second;
-      if (!n->is_table())
-        throw OverrideInputError(file(), dotted, "override: '" + dotted.substr(0, dot) + "' is not a table", dotted);
-      t = n->as_table();
+    // The tables on the way are created; an array element (KEY[i]) must exist and be a number.
+    const toml::node& value = *parsed.get("v");
+    try {
+      const ValueSlot slot = find_value_slot(*const_cast<toml::table*>(as_tbl(table_)), dotted, true);
+      if (slot.array && !value.is_number())
+        throw KeyPathError("'" + dotted + "' is an element of an array of numbers: its value must be a number, not " +
+                           toml_type_name(value));
+      slot.set(value);
+    } catch (const KeyPathError& e) {
+      throw refuse(e.what());
     }
-    t->insert_or_assign(dotted.substr(start), *parsed.get("v"));
     doc_->overridden.push_back(key_path(dotted));
   }
 }
@@ -188,10 +175,11 @@ void TomlTable::raise(int line, const std::string& key_path, const std::string& 
   // A value set by an override has no line in the file: say where it came from instead.
   // The problem concerns the override when it is about its key, a part of its value, or a
   // table on its path (a typo in a table's name: "kinematic.frequency_hz" is an unknown
-  // table "kinematic", not a problem of the file's first line).
+  // table "kinematic", not a problem of the file's first line), or the array of an
+  // overridden element ("sin_deg" when "sin_deg[0]" was set).
   for (const auto& k : doc_->overridden)
     if (key_path == k || key_path.rfind(k + ".", 0) == 0 || key_path.rfind(k + "[", 0) == 0 ||
-        k.rfind(key_path + ".", 0) == 0)
+        k.rfind(key_path + ".", 0) == 0 || k.rfind(key_path + "[", 0) == 0)
       throw OverrideInputError(file(), key_path, message, k);
   throw InputError(file(), line > 0 ? line : line_, key_path, message);
 }
@@ -206,7 +194,7 @@ void TomlTable::fail_at(int line, std::string_view key, const std::string& messa
 
 void TomlTable::fail_type(std::string_view key, const char* expected) const {
   const auto* n = as_node(node(key));
-  fail(key, std::string("expected ") + expected + ", found " + (n ? type_name(*n) : "nothing"));
+  fail(key, std::string("expected ") + expected + ", found " + (n ? toml_type_name(*n) : "nothing"));
 }
 
 bool TomlTable::has(std::string_view key) const { return node(key) != nullptr; }
@@ -398,7 +386,7 @@ std::vector<double> TomlTable::find_doubles(std::string_view key, const Bounds& 
     const int line = line_of_node(e, line_of(key));
     const std::string ek = std::string(key) + "[" + std::to_string(i) + "]";
     if (!e.is_number())
-      fail_at(line, ek, std::string("expected a number, found ") + type_name(e));
+      fail_at(line, ek, std::string("expected a number, found ") + toml_type_name(e));
     const double v = exact_number(*this, ek, line, e);
     check_finite_and_bounds(*this, ek, line, v, bounds);
     out.push_back(v);
@@ -435,7 +423,7 @@ std::vector<std::vector<double>> TomlTable::get_number_rows(std::string_view key
     std::vector<double> row;
     for (const auto& x : *e.as_array()) {
       if (!x.is_number())
-        fail_at(line_of_node(x, line), ek, std::string("expected a number, found ") + type_name(x));
+        fail_at(line_of_node(x, line), ek, std::string("expected a number, found ") + toml_type_name(x));
       const double v = exact_number(*this, ek, line, x);
       check_finite_and_bounds(*this, ek, line, v, Bounds::any());
       row.push_back(v);
@@ -528,7 +516,7 @@ std::vector<TomlTable> TomlTable::get_tables(std::string_view key, std::size_t m
       const auto& e = *arr.get(i);
       const std::string ek = std::string(key) + "[" + std::to_string(i) + "]";
       const int line = line_of_node(e, line_of(key));
-      if (!e.is_table()) fail_at(line, ek, std::string("expected a table, found ") + type_name(e));
+      if (!e.is_table()) fail_at(line, ek, std::string("expected a table, found ") + toml_type_name(e));
       out.push_back(TomlTable(doc_, e.as_table(), key_path(ek), line));
     }
   }

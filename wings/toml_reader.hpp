@@ -186,12 +186,14 @@ class TomlTable {
   Eigen::Vector3d get_length_vector3(std::string_view key) const;
 
   // --- overrides (parameter sweeps) -------------------------------------------------------
-  /// Sets values before reading, e.g. {"kinematics.rotation_phase", "-0.1"} or
-  /// {"numerics.spacing", "\"cosine\""}: each value is TOML text; missing tables on the
-  /// way are created. Errors about an overridden key name the key and say it came from
-  /// an override (there is no file line). Call on the top-level table of a freshly
-  /// parsed file, before any reading.
-  /// \throws flapsim::InputError for a value that is not TOML or a path through a non-table
+  /// Sets values before reading, e.g. {"kinematics.rotation_phase", "-0.1"},
+  /// {"numerics.spacing", "\"cosine\""} or {"kinematics.rotation.sin_deg[0]", "-50"}: each
+  /// value is TOML text; missing tables on the way are created; KEY[i] (0-based) replaces
+  /// an existing number of an array with a number (wings/toml_key_path.hpp). Errors about
+  /// an overridden key name the key and say it came from an override (there is no file
+  /// line). Call on the top-level table of a freshly parsed file, before any reading.
+  /// \throws flapsim::InputError for a value that is not TOML, a path through a non-table,
+  ///         an index out of range, of a non-array or of an element that is not a number
   void apply_overrides(const std::vector<std::pair<std::string, std::string>>& overrides);
 
   // --- sub-tables -------------------------------------------------------------------

@@ -30,8 +30,12 @@ std::set<std::string> hashes_of(const test::SweepTable& t) {
 }
 
 // Runs `command` serially into dir/serial and on 3 ranks into dir/mpi; expects the same
-// optimum.toml and evaluated points, and evaluations on at least two ranks.
-void compare_three_ranks_with_serial(const test::ScratchDir& dir, const std::string& command) {
+// optimum.toml and evaluated points, and evaluations on at least `least_ranks` ranks.
+// The scheduler hands the next start to whichever rank asks first (sweep::schedule_cases):
+// each rank takes one of the 3 starts unless a start ends before the last rank has asked,
+// which starts of a few milliseconds (the rigid plate) may do, starts of seconds not.
+void compare_three_ranks_with_serial(const test::ScratchDir& dir, const std::string& command,
+                                     std::size_t least_ranks) {
   ASSERT_EQ(test::run_flapsim(command + (dir / "serial").string()), 0);
 
   // Open MPI refuses to run as root unless told twice; --oversubscribe: any rank count on any core count.
@@ -49,7 +53,7 @@ void compare_three_ranks_with_serial(const test::ScratchDir& dir, const std::str
   EXPECT_EQ(hashes_of(parallel), hashes_of(serial));  // the same points, whatever their order
   std::set<std::string> ranks;
   for (const auto& row : parallel.rows) ranks.insert(row.at("rank"));
-  EXPECT_GE(ranks.size(), 2u) << "the starts ran on one rank only";
+  EXPECT_GE(ranks.size(), least_ranks) << "the starts ran on " << ranks.size() << " of 3 ranks";
   for (const auto& row : serial.rows) EXPECT_EQ(row.at("rank"), "0");
 }
 
@@ -59,13 +63,15 @@ TEST(OptimizeMpi, ThreeStartsOnThreeRanksFindTheSerialOptimum) {
   compare_three_ranks_with_serial(dir, "optimize " + (dir / "case.toml").string() +
                                            " --vary kinematics.rotation_phase=-0.25:0.15 --vary "
                                            "kinematics.frequency_hz=20:30 --maximize mean_lift_N --starts 3 "
-                                           "--max-evaluations 12 -q -o ");
+                                           "--max-evaluations 12 -q -o ",
+                                  2);
 }
 
 // cases/rotation_phase_flexible.toml at 40 steps per cycle over 2 cycles (shipped: 100 × 6)
 // with the shipped 10-body hawkmoth chain (no reduction), δψ in [-0.25, 0.15] and the
 // spring factor in [1, 4]: under a second per run. A soft wing at some points fails to
-// converge; that ends its start's search only (docs/optimize.md).
+// converge; that ends its start's search only (docs/optimize.md). Two of the starts take 10
+// evaluations each (seconds): every rank runs one.
 TEST(OptimizeMpi, TheFlexibleRotationPhaseAndSpringProblemOnThreeRanksFindsTheSerialOptimum) {
   const test::ScratchDir dir("optimize_mpi_flexible");
   const std::string text = test::shortened_case("rotation_phase_flexible", 40, 2);
@@ -74,7 +80,8 @@ TEST(OptimizeMpi, TheFlexibleRotationPhaseAndSpringProblemOnThreeRanksFindsTheSe
   const std::string chain = std::string(FLAPSIM_SOURCE_DIR) + "/cases/chains/hawkmoth_10_bodies.toml";
   compare_three_ranks_with_serial(dir, "optimize " + (dir / "case.toml").string() + " --chain " + chain +
                                            " --vary kinematics.rotation_phase=-0.25:0.15 --vary spring_scale=1:4"
-                                           " --maximize mean_lift_N --starts 3 --max-evaluations 10 -q -o ");
+                                           " --maximize mean_lift_N --starts 3 --max-evaluations 10 -q -o ",
+                                  3);  // issue 33: evaluations on every rank
   // optimum.toml with the spring factor its header gives runs to the optimum's lift.
   const std::string optimum = test::read_text(dir / "serial" / "optimum.toml");
   const auto at = optimum.find("# Run with --spring-scale ");

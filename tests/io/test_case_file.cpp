@@ -181,6 +181,26 @@ TEST(CaseFile, OverridesForSweeps) {
   EXPECT_THROW(p::load_case_file(path, {{"numerics.cylces", "2"}}), InputError);        // typo
 }
 
+// The amplitudes of eq. 8 (cases/rotation_phase_rigid.toml) set as array elements,
+// KEY[i]: φ = 10° + A_φ cos 2π(ft + δψ), α = 90° + b_1 sin 2πft.
+TEST(CaseFile, ArrayElementOverridesSetTheAmplitudes) {
+  const std::string path = kSource + "/cases/rotation_phase_rigid.toml";
+  const p::Case c = p::load_case_file(
+      path, {{"kinematics.sweep.cos_deg[0]", "55"}, {"kinematics.rotation.sin_deg[0]", "-30"}});
+  const double f = c.kinematics.frequency;  // [Hz]
+  ASSERT_EQ(f, 26.1);
+  EXPECT_NEAR(c.kinematics.angles(0.0).sweep.value, (10.0 + 55.0) * kDegToRad, 1e-12);
+  EXPECT_NEAR(c.kinematics.angles(0.25 / f).rotation.value, (90.0 - 30.0) * kDegToRad, 1e-12);
+  try {
+    p::load_case_file(path, {{"kinematics.rotation.sin_deg[1]", "-30"}});  // one harmonic only
+    ADD_FAILURE() << "an element beyond the array accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "kinematics.rotation.sin_deg[1]");
+    EXPECT_EQ(e.line(), 0);
+    EXPECT_NE(e.message().find("has 1 element"), std::string::npos) << e.what();
+  }
+}
+
 TEST(CaseFile, LoadModelAndSpacingKeys) {
   // docs/case_file.md: `spacing` sets both directions, the per-direction keys override it;
   // the load route and the leading-edge model are named choices.

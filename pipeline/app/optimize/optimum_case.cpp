@@ -8,6 +8,7 @@
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "wings/input_error.hpp"
+#include "wings/toml_key_path.hpp"
 #include "wings/toml_reader.hpp"
 
 namespace flapsim::optimize {
@@ -17,24 +18,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::string_view kWingPrefix = "wing.";
-
-// The table holding the last part of a dotted key (created on the way when `create`).
-toml::table* table_of(toml::table& root, const std::string& dotted, std::string& last, bool create) {
-  toml::table* t = &root;
-  std::size_t start = 0;
-  for (std::size_t dot = dotted.find('.'); dot != std::string::npos; start = dot + 1, dot = dotted.find('.', start)) {
-    const std::string part = dotted.substr(start, dot - start);
-    toml::node* n = t->get(part);
-    if (!n) {
-      if (!create) return nullptr;
-      n = &t->insert_or_assign(part, toml::table{}).first->second;
-    }
-    if (!n->is_table()) return nullptr;
-    t = n->as_table();
-  }
-  last = dotted.substr(start);
-  return t;
-}
 
 toml::table parse(const std::string& path) {
   (void)wings::parse_toml_file(path);  // the project's checks and messages (size, syntax)
@@ -61,15 +44,18 @@ void move_path(toml::table& t, const std::string& key, const fs::path& from_fold
 }
 
 void set_number(toml::table& root, const std::string& dotted, double value) {
-  std::string last;
-  toml::table* t = table_of(root, dotted, last, true);
-  if (!t) return;  // resolve_case refused such a key before any run
+  wings::ValueSlot slot;
+  try {
+    slot = wings::find_value_slot(root, dotted, true);
+  } catch (const wings::KeyPathError&) {
+    return;  // resolve_case refused such a key before any run
+  }
   // An integer key stays an integer (resolve_case accepted the value, so it is integral).
-  const toml::node* old = t->get(last);
+  const toml::node* old = slot.get();
   if (old && old->is_integer())
-    t->insert_or_assign(last, static_cast<std::int64_t>(value));
+    slot.set(toml::value<std::int64_t>(static_cast<std::int64_t>(value)));
   else
-    t->insert_or_assign(last, value);
+    slot.set(toml::value<double>(value));
 }
 
 std::string text_of(const toml::table& t) {
@@ -90,13 +76,13 @@ std::optional<double> value_in_inputs(const sweep::SweepInputs& inputs, const st
     if (file.empty()) return std::nullopt;
   }
   toml::table root = parse(file);
-  std::string last;
-  const toml::table* t = table_of(root, dotted, last, false);
-  if (!t) return std::nullopt;
-  const toml::node* n = t->get(last);
-  if (!n) return std::nullopt;
-  if (const auto v = n->value<double>()) return *v;
-  return std::nullopt;
+  try {
+    const toml::node* n = wings::find_value_slot(root, dotted, false).get();
+    if (n)
+      if (const auto v = n->value<double>()) return *v;
+  } catch (const wings::KeyPathError&) {
+  }
+  return std::nullopt;  // not in the file (its default applies), or not a number key
 }
 
 WrittenCase write_case_at(const sweep::SweepInputs& inputs, const sweep::CasePoint& point, const fs::path& dir,
