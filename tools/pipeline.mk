@@ -119,3 +119,16 @@ validate: build $(PIPELINE_CHAIN)
 	@test -f $(PHASE_OUT)/rigid/sweep.csv -a -f $(PHASE_OUT)/flexible/sweep.csv || \
 	  $(MAKE) --no-print-directory phase-study
 	$(PIPELINE_PYTHON) tools/validate.py --build $(BUILD) --out $(OUT)
+
+# Convergence study of a case (docs/uvlm.md, "Convergence study"): the case at
+# CONVERGENCE_LEVELS lattice levels and as many time-step levels, each the last refined by
+# 2, with the observed order and the Richardson-extrapolated mean lift (tools/convergence.py).
+# CONVERGENCE_ARGS passes more, e.g. "--lattice 6x10,12x20,24x40 --study lattice".
+CONVERGENCE_LEVELS ?= 3
+CONVERGENCE_ARGS   ?=
+CONVERGENCE_OUT    ?= $(OUT)/convergence/$(CASE_NAME)
+.PHONY: convergence
+convergence: program $(RUN_CHAIN)
+	OMP_NUM_THREADS=1 /usr/bin/python3 tools/convergence.py $(CASE) --flapsim $(PIPELINE_BIN) \
+	  $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) --levels $(CONVERGENCE_LEVELS) -j $(PHASE_JOBS) \
+	  -o $(CONVERGENCE_OUT) $(CONVERGENCE_ARGS)
