@@ -14,6 +14,8 @@
 #   make test            build and run every test (ctest)
 #   make test-asan       every test again, built with ASan + UBSan
 #   make phase-study [CASE=...]   the rotation-phase sweeps (rigid and flexible wing)
+#   make convergence CASE=...   the case at 3 lattice and 3 time-step levels: observed
+#                        order and Richardson-extrapolated mean lift (out/convergence/)
 #   make plots           PDF and PNG figures of the phase study in out/plots
 #   make figures         docs/figures from a fresh phase study
 #   make sweep-plots SWEEP=DIR/sweep.csv   mean lift (and power) against each varied key

@@ -42,6 +42,10 @@ struct AssembledSystem {
 /// \brief Assemble K and M (triplets, summed) and the element masses.
 /// \param model  mesh and element properties; triangles must have non-zero area
 ///               and beams non-zero length (throws std::invalid_argument otherwise)
-AssembledSystem assemble(const StructuralModel& model);
+///
+/// With \p threads ≥ 2 the element matrices are computed in two halves on two threads and
+/// K and M are built side by side; the triplets keep the serial order, so the matrices are
+/// the same bits as with one thread.
+AssembledSystem assemble(const StructuralModel& model, int threads = 1);
 
 }  // namespace flapsim::fem

@@ -15,8 +15,9 @@ namespace flapsim::reduction {
 
 ClampedWingAnalysis::ClampedWingAnalysis(const fem::Mesh& mesh, const fem::AssembledSystem& system,
                                          const fem::Constraints& constraints,
-                                         const AnalysisOptions& options)
-    : system_(&system), constraints_(&constraints), options_(options) {
+                                         const AnalysisOptions& options,
+                                         std::shared_ptr<const fem::StaticSolver> factor)
+    : system_(&system), constraints_(&constraints), options_(options), solver_(std::move(factor)) {
   const int nn = mesh.num_nodes();
   if (nn == 0) throw std::invalid_argument("reduction: empty mesh");
   if (constraints.num_dofs() != mesh.num_dofs())
@@ -46,7 +47,10 @@ ClampedWingAnalysis::ClampedWingAnalysis(const fem::Mesh& mesh, const fem::Assem
   }
   element_size_ = count > 0 ? total / static_cast<double>(count) : 0.0;
 
-  solver_ = std::make_unique<fem::StaticSolver>(system.stiffness, constraints);
+  if (!solver_) solver_ = std::make_shared<const fem::StaticSolver>(system.stiffness, constraints);
+  if (solver_->constraints().num_dofs() != constraints.num_dofs() ||
+      solver_->constraints().num_free() != constraints.num_free())
+    throw std::invalid_argument("reduction: the given factorisation is not of these constraints");
   const double span = nodes_.row(1).maxCoeff();
   const double zone_length = options.tip_zone_fraction * span;
 

@@ -57,8 +57,12 @@ class ClampedWingAnalysis {
   /// \param system       assembled K and M
   /// \param constraints  the root clamp (at least one clamped node)
   /// \param options      axis choice, tip zone, load magnitudes
+  /// \param factor       the factorised clamped stiffness, if the caller has it already
+  ///                     (a fem::StaticSolver of system.stiffness and these constraints;
+  ///                     used from one thread at a time); else the analysis factorises
   ClampedWingAnalysis(const fem::Mesh& mesh, const fem::AssembledSystem& system,
-                      const fem::Constraints& constraints, const AnalysisOptions& options = {});
+                      const fem::Constraints& constraints, const AnalysisOptions& options = {},
+                      std::shared_ptr<const fem::StaticSolver> factor = nullptr);
 
   const AxisFrame& axis() const { return axis_; }
   const TipZone& tip_zone() const { return zone_; }
@@ -132,7 +136,7 @@ class ClampedWingAnalysis {
   const fem::AssembledSystem* system_ = nullptr;
   const fem::Constraints* constraints_ = nullptr;
   AnalysisOptions options_;
-  std::unique_ptr<fem::StaticSolver> solver_;  // one factorisation for both passes
+  std::shared_ptr<const fem::StaticSolver> solver_;  // one factorisation for both passes
   Eigen::Matrix3Xd nodes_;
 
   std::vector<bool> clamped_;

@@ -5,7 +5,7 @@
 
 CASE ?= cases/hover_flexible.toml
 
-CASE_GOALS := run run-pipeline phase-study movie
+CASE_GOALS := run run-pipeline phase-study movie convergence
 ifneq ($(filter $(CASE_GOALS),$(MAKECMDGOALS)),)
 # make splits its values at spaces: a path with one would reach flapsim as several words
 # (and the case's name as nothing: outputs into out/ itself). Said plainly instead.

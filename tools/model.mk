@@ -30,7 +30,7 @@ MODEL_PYTHON ?= /usr/bin/python3
 # Read the wing's inputs and remember the number of bodies (in a file that changes only
 # when the value does) only when a goal needs the model, so other make commands leave
 # out/ alone.
-MODEL_GOALS := model hawkmoth-model run run-pipeline phase-study plots validate figures
+MODEL_GOALS := model hawkmoth-model run run-pipeline phase-study convergence plots validate figures
 ifneq ($(filter $(MODEL_GOALS),$(MAKECMDGOALS)),)
 MODEL_FILES := $(shell $(MODEL_PYTHON) tools/toml_inputs.py wing $(WING))
 $(shell mkdir -p $(MODEL_OUT) && \

@@ -143,3 +143,16 @@ movie:
 	@test -f $(RUN_OUT)/run.pvsm || { echo "make movie: $(RUN_OUT) has no run.pvsm (the case writes no frames: [output] vtk_every = 0)" >&2; exit 2; }
 	$(XVFB_RUN) $(PIPELINE_PYTHON) tools/paraview_state.py $(RUN_OUT)/run.pvsm --movie $(RUN_OUT)/movie.mp4 \
 	  $(if $(MOVIE_SIZE),--size $(MOVIE_SIZE)) --fps $(MOVIE_FPS)
+
+# Convergence study of a case (docs/uvlm.md, "Convergence study"): the case at
+# CONVERGENCE_LEVELS lattice levels and as many time-step levels, each the last refined by
+# 2, with the observed order and the Richardson-extrapolated mean lift (tools/convergence.py).
+# CONVERGENCE_ARGS passes more, e.g. "--lattice 6x10,12x20,24x40 --study lattice".
+CONVERGENCE_LEVELS ?= 3
+CONVERGENCE_ARGS   ?=
+CONVERGENCE_OUT    ?= $(OUT)/convergence/$(CASE_NAME)
+.PHONY: convergence
+convergence: program $(RUN_CHAIN)
+	OMP_NUM_THREADS=1 /usr/bin/python3 tools/convergence.py $(CASE) --flapsim $(PIPELINE_BIN) \
+	  $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) --levels $(CONVERGENCE_LEVELS) -j $(PHASE_JOBS) \
+	  -o $(CONVERGENCE_OUT) $(CONVERGENCE_ARGS)

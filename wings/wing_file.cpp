@@ -1,5 +1,7 @@
 #include "wings/wing_file.hpp"
 
+#include "wings/surface_shape.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -531,7 +533,7 @@ Wing read_wing(TomlTable root) {
                           "file (no [planform]): run takes it with --chain");
   }
   root.expect_only({"name", "description", "length_unit", "planform", "materials", "membrane",
-                    "veins", "mesh"});
+                    "veins", "mesh", "surface"});
   root.read_length_unit();
   Wing wing;
   try {
@@ -600,6 +602,7 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
                                      " " + root.length_unit() + ", span " + fmt(wing.span / root.length_scale()) + " " +
                                      root.length_unit() + ")");
   }
+  if (const auto surface = root.find_table("surface")) wing.surface = read_surface_shape(*surface);
   // The mesh-size budget (mesh_budget.hpp): refused here, before gmsh runs out of memory.
   if (const double n = estimated_mesh_elements(wing); n > kMaxMeshElements) {
     const auto mesh = root.find_table("mesh");

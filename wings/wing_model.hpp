@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "wings/input_warning.hpp"
+#include "wings/surface_shape.hpp"
 
 namespace flapsim::wings {
 
@@ -89,6 +90,9 @@ struct Wing {
   /// A gap the vortex lattice would cover (area_share 0 if none or negligible, below 1 %);
   /// a run in air refuses such a wing (app/fsi_setup), the FEM stages warn.
   LatticeGap lattice_gap;
+  /// Twist, camber and dihedral of the lattice's reference surface ([surface]; flat if
+  /// absent). Lattice-only: the FEM, the reduction and the chain use the flat planform.
+  SurfaceShape surface;
 };
 
 }  // namespace flapsim::wings

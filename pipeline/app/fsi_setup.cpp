@@ -1,5 +1,7 @@
 #include "pipeline/app/fsi_setup.hpp"
 
+#include "pipeline/app/lattice_surface.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -271,6 +273,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
     g.chordwise_spacing = c.numerics.chordwise_spacing;
     g.spanwise_spacing = c.numerics.spanwise_spacing;
     s.grid = uvlm::make_planform_grid(s.wing->outline, g);
+    shape_lattice_surface(*s.wing, *s.grid);  // [surface]: twist, camber, dihedral (lattice-only)
     m.lattice = lattice_model(c, p.mean_chord, p.span, s.steps);
     cs.attachment = fsi::attach_wing(cs.chain, s.grid->nodes, g.chordwise, g.spanwise);
     s.reference.area = p.area;
@@ -299,6 +302,13 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
                        "neither a free stream nor a moving wing: no reference speed for the coefficients");
   }
   if (c.structure.kind == Case::Structure::Kind::Fem) {
+    // The FEM's shell is the flat planform and the lattice rides on it: a shaped lattice
+    // surface would sit off the shell it is attached to (docs/uvlm.md, "Twist, camber and dihedral").
+    if (s.wing && !s.wing->surface.flat())
+      throw InputError(s.wing->source_file, s.wing->surface.line, "surface",
+                       "twist, camber and dihedral shape the vortex lattice only; structure.kind = \"fem\" "
+                       "runs the flat FEM of the planform: use kind = \"rigid\" or \"flexible\" (the chain), "
+                       "or remove [surface]");
     const double span = wings::planform_properties(s.wing->outline).span;
     s.fem_structure = make_fem_structure(c, *s.wing, cs.base_motion,
                                          s.grid ? s.grid->nodes : Eigen::Matrix3Xd(3, 0), span);

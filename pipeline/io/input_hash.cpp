@@ -13,14 +13,16 @@ namespace flapsim::io {
 // else two runs that differ in it would share a hash (and a sweep re-run would keep a
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
-// (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run; they change no result.)
+// (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages; they change no result.)
 static_assert(sizeof(Case) == 1432, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
-static_assert(sizeof(wings::Wing) == 344, "wings::Wing changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::Wing) == 344 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Vein) == 200, "wings::Vein changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Section) == 40,
               "wings::Section changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::SurfaceShape) == 56,
+              "wings::SurfaceShape changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Membrane) == 40,
               "wings::Membrane changed: add the new field to canonical_inputs()");
 
@@ -92,6 +94,14 @@ void wing_fields(Canonical& out, const wings::Wing& w) {
   out.line("wing.mesh.element_size", w.mesh.element_size);
   out.line("wing.mesh.vein_element_size", w.mesh.vein_element_size);
   out.line("wing.clamp_y", w.clamp_y);
+  if (!w.surface.flat()) {  // only then: the fingerprints of flat wings stay as they were
+    out.line("wing.surface.twist_root", w.surface.twist_root);
+    out.line("wing.surface.twist_tip", w.surface.twist_tip);
+    out.line("wing.surface.twist_axis", w.surface.twist_axis);
+    out.line("wing.surface.camber", w.surface.camber);
+    out.line("wing.surface.camber_position", w.surface.camber_position);
+    out.line("wing.surface.dihedral", w.surface.dihedral);
+  }
 }
 
 void case_fields(Canonical& out, const Case& c) {

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,6 +39,25 @@ TEST(FemCommands, MeshAndModesWriteTheirFiles) {
   EXPECT_EQ(run_flapsim("modes " + wing + " -o " + bad.string() + " --modes 0"), 2);
   EXPECT_EQ(run_flapsim("mesh " + (scratch / "missing.toml").string() + " -o " + bad.string()), 2);
   EXPECT_FALSE(fs::exists(bad / "modes.csv"));
+}
+
+// `flapsim modes --threads 2` runs the eigen-solve beside the static side (one factorisation
+// of K shared by the tip load cases and the chain that names the modes) and assembles on
+// two threads; every number must be the one of --threads 1, to the bit (both files).
+TEST(FemCommands, ModesOnTwoThreadsWriteTheFilesOfOneThread) {
+  const flapsim::test::ScratchDir scratch("modes_threads");
+  const std::string wing = std::string(FLAPSIM_SOURCE_DIR) + "/wings/mav_film_wing_25um.toml";
+  for (const char* t : {"1", "2"})
+    ASSERT_EQ(run_flapsim("modes " + wing + " -o " + (scratch / t).string() + " --modes 8 --threads " + t), 0);
+  auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (const char* f : {"modes.csv", "fem.vtu"}) {
+    const std::string one = bytes(scratch / "1" / f), two = bytes(scratch / "2" / f);
+    EXPECT_GT(one.size(), 100u) << f;
+    EXPECT_EQ(one, two) << f;
+  }
 }
 
 // Cell \p index of a CSV line or markdown table row split by \p sep, trimmed.

@@ -123,6 +123,35 @@ TEST(WingFem, ElementMassesAddUpToTheWingMass) {
   EXPECT_NEAR(ux.dot(fem.system.mass * ux) / fem.system.total_mass, 1.0, 1e-12);
 }
 
+TEST(WingFem, AssemblyOnTwoThreadsGivesTheSameBitsAsOnOne) {
+  // The threaded assembly (flapsim modes --threads 2) keeps the serial order of the
+  // triplets, so K, M and the element masses must be equal bit for bit, not just close:
+  // a difference in the last bit would move the modes of `flapsim modes` and the chain
+  // file of `flapsim reduce` (docs/performance.md, "FEM stage").
+  const wings::Wing w = small_wing();
+  const StructuralModel model = wing_structural_model(w, mesh_wing(w));
+  const AssembledSystem one = assemble(model, 1), two = assemble(model, 2);
+  auto same = [](const SparseMatrix& a, const SparseMatrix& b) {
+    if (a.rows() != b.rows() || a.nonZeros() != b.nonZeros()) return false;
+    for (int c = 0; c < a.outerSize(); ++c) {
+      SparseMatrix::InnerIterator ia(a, c), ib(b, c);
+      for (; ia && ib; ++ia, ++ib)
+        if (ia.row() != ib.row() || ia.value() != ib.value()) return false;
+      if (ia || ib) return false;
+    }
+    return true;
+  };
+  EXPECT_TRUE(same(one.stiffness, two.stiffness));
+  EXPECT_TRUE(same(one.mass, two.mass));
+  EXPECT_EQ(one.total_mass, two.total_mass);
+  ASSERT_EQ(one.element_masses.size(), two.element_masses.size());
+  for (std::size_t e = 0; e < one.element_masses.size(); ++e) {
+    EXPECT_EQ(one.element_masses[e].index, two.element_masses[e].index);
+    EXPECT_EQ(one.element_masses[e].mass, two.element_masses[e].mass);
+    EXPECT_TRUE(one.element_masses[e].second_moment == two.element_masses[e].second_moment);
+  }
+}
+
 TEST(WingMesh, AVeinOutsideTheMembraneIsRefusedNamingIt) {
   // A vein beside the outline (x = 2.03 mm, the edge at x = 2 mm), as a wing built in code
   // (the file reader moves such a vein onto the outline): gmsh leaves it outside the

@@ -2,6 +2,7 @@
 // writes DIR/modes.csv (mode, frequency_hz, kind) and DIR/fem.vtu (mode shapes
 // and the static tip load cases as point data).
 #include "pipeline/app/cli/commands.hpp"
+#include "pipeline/app/cli/thread_options.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -9,24 +10,18 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <limits>
 #include <filesystem>
 #include <memory>
 #include <string>
 
-#include "fem/load_cases.hpp"
-#include "fem/static_solver.hpp"
 #include "fem/wing_fem.hpp"
-#include "pipeline/app/numerical_stage.hpp"
+#include "pipeline/app/wing_modes_stage.hpp"
 #include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/fem_modes_state.hpp"
 #include "pipeline/io/fem_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
-#include "reduction/chain_lumping.hpp"
-#include "reduction/reduction_failure.hpp"
-#include "reduction/station_mode_kind.hpp"
 #include "wings/input_error.hpp"
 #include "wings/wing_file.hpp"
 
@@ -43,26 +38,6 @@ struct ModesArgs {
   bool force = false;
 };
 
-// The modes named from the stations of the N-body chain, as `flapsim reduce` names them;
-// a wing that cannot be reduced to N bodies keeps the shape classification (with a warning).
-std::vector<io::ModeLabel> mode_labels(const fem::WingFem& fem, const fem::WingModes& m, int bodies) {
-  std::vector<io::ModeLabel> labels;
-  for (const fem::ModeKind k : m.kinds) labels.push_back({fem::to_string(k), std::numeric_limits<double>::quiet_NaN(), fem::to_string(k)});
-  try {
-    const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp);
-    const reduction::LumpedChain lc = reduction::lump_into_chain(analysis, bodies);
-    const auto measures = reduction::classify_modes_by_stations(lc, m.modes.shapes);
-    for (std::size_t i = 0; i < labels.size(); ++i) {
-      labels[i].kind = reduction::to_string(measures[i].kind);
-      labels[i].beam_share = measures[i].beam_share;
-    }
-  } catch (const reduction::ReductionFailure& e) {
-    std::cerr << "warning: modes named by their shape, not by the stations of a " << bodies
-              << "-body chain: " << e.what() << "\n";
-  }
-  return labels;
-}
-
 void run_modes(const ModesArgs& args) {
   if (args.modes < 1 || args.modes > 500)
     throw InputError("<command line>", 0, "--modes", "must be between 1 and 500, got " + std::to_string(args.modes));
@@ -78,31 +53,18 @@ void run_modes(const ModesArgs& args) {
   // SIGINT/SIGTERM: "interrupted" in the manifest, exit 130/143 at once; progress of long stages.
   app::StageMonitor monitor(claim, 5);
   claim.claim(args.force);
-  // 2. Mesh, K and M, root clamp; a failing solver is a numerical failure (exit 3).
-  monitor.stage("mesh and FEM matrices");
-  const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
+  // 2–5. Mesh, K and M, root clamp; the lowest modes of the clamped wing; the static tip
+  // load cases; the modes' names from the stations of the chain (docs/reduction.md). A
+  // failing solver is a numerical failure (exit 3).
+  const app::WingModesStage r =
+      app::compute_wing_modes(wing, args.modes, args.bodies, command_threads(), [&](const std::string& s) { monitor.stage(s); });
+  const fem::WingFem& fem = r.fem;
   const fem::Mesh& mesh = fem.model.mesh;
-  // 3. Lowest modes of the clamped wing, classified by shape.
-  monitor.stage("FEM modes");
-  const fem::WingModes m = app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, args.modes); });
-  // 4. Static tip load cases (unit loads) with one factorisation.
-  monitor.stage("static load cases");
-  std::vector<io::StaticResult> results = app::numerical_stage("FEM static load cases", [&] {
-    const fem::StaticSolver statics(fem.system.stiffness, fem.root_clamp);
-    std::vector<io::StaticResult> out;
-    for (auto& lc : fem::tip_load_cases(mesh, fem::tip_station(mesh))) {
-      Eigen::VectorXd u = statics.solve(lc.loads);
-      if (!u.allFinite()) throw NumericalFailure("FEM static load case '" + lc.name + "': non-finite displacements");
-      out.push_back({std::move(lc), std::move(u)});
-    }
-    return out;
-  });
-  // 5. Mode names from the stations of the chain (docs/reduction.md).
-  monitor.stage("mode names");
-  const std::vector<io::ModeLabel> labels =
-      app::numerical_stage("mode names", [&] { return mode_labels(fem, m, args.bodies); });
-  // 6. Outputs (each atomic).
+  const fem::WingModes& m = r.modes;
+  const std::vector<io::ModeLabel>& labels = r.labels;
+  const std::vector<io::StaticResult>& results = r.statics;
   monitor.stage("writing the outputs");
+  // 6. Outputs (each atomic).
   io::write_modes_csv(dir / "modes.csv", m.modes, labels);
   io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, labels, results);
   {

@@ -26,7 +26,7 @@ bool ends_with(const std::string& s, std::string_view suffix) {
 // A wing key that cannot change the run is a sweep that varies nothing: every case would
 // give the same numbers (a stiffness sweep with --chain gave identical rows). A flexible
 // case with a chain file takes its structure from the chain: of the wing only the outline
-// (the lattice) counts. A rigid wing uses the outline and the mass, never the stiffness or
+// and the [surface] shape (the lattice) count. A rigid wing uses the outline and the mass, never the stiffness or
 // the mesh.
 void refuse_wing_keys_that_change_nothing(const SweepInputs& inputs, const ResolvedCase& r) {
   const bool flexible = r.c.structure.kind == io::Case::Structure::Kind::Flexible;
@@ -34,9 +34,10 @@ void refuse_wing_keys_that_change_nothing(const SweepInputs& inputs, const Resol
   for (const auto& [key, value] : r.wing_overrides) {
     (void)value;
     std::string why;
-    if (flexible && !chain.empty() && !starts_with(key, "planform."))
+    if (flexible && !chain.empty() && !starts_with(key, "planform.") && !starts_with(key, "surface."))
       why = "the chain comes from the chain file " + chain +
-            ", so of the wing only the outline (planform.*) reaches the run; drop the chain file to have the "
+            ", so of the wing only the lattice's outline and surface (planform.*, surface.*) reach the run; drop "
+            "the chain file to have the "
             "wing reduced in process for each value, or vary spring_scale";
     else if (r.c.structure.kind == io::Case::Structure::Kind::Rigid && (ends_with(key, ".youngs_modulus") || ends_with(key, ".poisson_ratio") ||
                            starts_with(key, "mesh.")))
