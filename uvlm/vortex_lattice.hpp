@@ -151,7 +151,7 @@ struct VortexLatticeModel {
   /// solve factorise every new matrix (the direct solve). 0: always the direct solve.
   /// docs/uvlm.md, "Solving for the circulations".
   int iterative_min_panels = 150;
-  double iterative_tolerance = 1e-12;
+  double iterative_tolerance = 1e-13;
   int refactor_iterations = 12;
   int iterative_restart = 30;        ///< GMRES restart length
   int iterative_max_iterations = 90; ///< then the direct solve
