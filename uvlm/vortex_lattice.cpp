@@ -4,6 +4,8 @@
 #include "uvlm/lattice_internal.hpp"
 #include "uvlm/rigid_motion.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -51,8 +53,8 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   gamma_accepted_before.setZero(np);
   influence.setZero(np, np);
   lu = Eigen::PartialPivLU<Eigen::MatrixXd>(np);
-  factorised_nodes.setZero(3, nn);
-  factorised_ring_nodes.setZero(3, nn);
+  matrix_nodes.setZero(3, nn);
+  matrix_ring_nodes.setZero(3, nn);
   shed_lift.setZero(3, ns + 1);
   influence_nodes.setZero(3, nn);
   rhs.setZero(np);
@@ -78,7 +80,9 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
     far_targets.reserve(std::max(wake_nodes_n, std::max<std::size_t>(bound_n, np)));
   }
   if (m.wake_sum == WakeSum::Tree) wake_tree.reserve(wake_segments.capacity());
-  for (auto& s : ring_side) s.reserve(np);
+  influence_segments.reserve(nc, ns, omp_get_max_threads());
+  horseshoe.reserve(4);
+  if (m.iterative_min_panels > 0 && np >= m.iterative_min_panels) gmres.reserve(np, m.iterative_restart);
   eval.reserve(std::max<std::size_t>(bound_n, np));
 
   if (m.leading_edge == LeadingEdge::Shed) le_sheet.allocate(ns, np, wake_capacity + 1);
@@ -169,57 +173,6 @@ void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Ei
     }
 }
 
-void build_influence(const VortexLatticeModel& m, VortexLatticeData& d, bool last_row_only) {
-  const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
-  for (auto& s : d.ring_side) s.clear();
-  for (int j = 0; j < ns; ++j)
-    for (int i = 0; i < nc; ++i) {
-      // Traversal R(i,j+1) → R(i,j) → R(i+1,j) → R(i+1,j+1) → R(i,j+1).
-      const Eigen::Vector3d r00 = d.ring_nodes.col(m.node(i, j)), r10 = d.ring_nodes.col(m.node(i + 1, j));
-      const Eigen::Vector3d r01 = d.ring_nodes.col(m.node(i, j + 1)), r11 = d.ring_nodes.col(m.node(i + 1, j + 1));
-      d.ring_side[0].push(r01, r00, 1.0);
-      d.ring_side[1].push(r00, r10, 1.0);
-      d.ring_side[2].push(r10, r11, 1.0);
-      d.ring_side[3].push(r11, r01, 1.0);
-    }
-  const VortexCore core = m.bound_core();
-  const double inv_rc2 = 1.0 / (core.radius * core.radius);
-  const double inv_rc2_wake = 1.0 / (m.core.radius * m.core.radius);
-  const auto& S = d.ring_side;
-  // Columns k0, k0 + step, …: every ring, or the last row's (panel index i + nc j).
-  const int k0 = last_row_only ? nc - 1 : 0, step = last_row_only ? nc : 1;
-  const int columns = last_row_only ? ns : np;
-#pragma omp parallel for schedule(static) if (np * columns >= 32 * 32)
-  for (int i = 0; i < np; ++i) {
-    const double px = d.collocation(0, i), py = d.collocation(1, i), pz = d.collocation(2, i);
-    const double nx = d.normal(0, i), ny = d.normal(1, i), nz = d.normal(2, i);
-    double* row = &d.influence(i, 0);  // column-major: stride np between columns
-    for (int s = 0; s < 4; ++s) {
-      const double *ax = S[s].ax(), *ay = S[s].ay(), *az = S[s].az();
-      const double *bx = S[s].bx(), *by = S[s].by(), *bz = S[s].bz(), *il = S[s].inv_length2();
-      if (s == 0)
-        for (int k = k0; k < np; k += step) row[static_cast<std::size_t>(k) * np] = 0.0;
-      for (int k = k0; k < np; k += step) {
-        double u = 0, v = 0, w = 0;
-        // The trailing segment of a last-row ring has the wake's core (see the model).
-        const double s_rc = (s == 2 && k % nc == nc - 1) ? inv_rc2_wake : inv_rc2;
-        switch (core.model) {
-          case CoreModel::CutOff:
-            segment_velocity<CoreModel::CutOff>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, s_rc * il[k], u, v, w);
-            break;
-          case CoreModel::LambOseen:
-            segment_velocity<CoreModel::LambOseen>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, s_rc * il[k], u, v, w);
-            break;
-          case CoreModel::Vatistas:
-            segment_velocity<CoreModel::Vatistas>(px, py, pz, ax[k], ay[k], az[k], bx[k], by[k], bz[k], 1.0, s_rc * il[k], u, v, w);
-            break;
-        }
-        row[static_cast<std::size_t>(k) * np] += u * nx + v * ny + w * nz;
-      }
-    }
-  }
-}
-
 void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d) {
   const int nc = m.chordwise, ns = m.spanwise;
   const bool sheet = d.le_sheet.active();  // ring −1: the leading-edge ring (leading_edge_sheet.hpp)
@@ -308,8 +261,9 @@ void wake_velocity_at_collocation(const VortexLatticeModel& m, VortexLatticeData
   for (int k = 0; k < np; ++k) d.wake_velocity.col(k) = d.eval.velocity(k);
 }
 
-void refactorise_if_moved(const VortexLatticeModel& m, VortexLatticeData& d) {
-  if (d.has_factorisation && d.nodes == d.factorised_nodes && d.ring_nodes == d.factorised_ring_nodes) return;
+/// The influence matrix of the current rings, rebuilt when the surface moved since it was built.
+void update_influence(const VortexLatticeModel& m, VortexLatticeData& d) {
+  if (d.has_matrix && d.nodes == d.matrix_nodes && d.ring_nodes == d.matrix_ring_nodes) return;
   // Under a rigid motion of the whole surface only the last row's columns change (their
   // rings end on the trailing-edge vortex, which follows the edge's speed): the others
   // are kept from the last full computation (against whose nodes the motion is checked,
@@ -320,10 +274,40 @@ void refactorise_if_moved(const VortexLatticeModel& m, VortexLatticeData& d) {
     d.influence_nodes = d.nodes;
     d.has_influence = true;
   }
+  d.matrix_nodes = d.nodes;
+  d.matrix_ring_nodes = d.ring_nodes;
+  d.has_matrix = true;
+  d.factorisation_current = false;
+}
+
+void factorise(VortexLatticeData& d) {
   d.lu.compute(d.influence);
-  d.factorised_nodes = d.nodes;
-  d.factorised_ring_nodes = d.ring_nodes;
   d.has_factorisation = true;
+  d.factorisation_current = true;
+  ++d.solver_counts.factorisations;
+}
+
+/// d.gamma = A⁻¹ d.rhs: by the factorisation of A (the direct solve), or by GMRES from the
+/// last circulations, preconditioned by the factorisation of an earlier A (model.iterative).
+void solve_circulations(const VortexLatticeModel& m, VortexLatticeData& d) {
+  ++d.solver_counts.solves;
+  if (!d.factorisation_current && !(m.iterative(m.panels()) && d.has_factorisation)) factorise(d);
+  if (d.factorisation_current) {
+    d.gamma = d.lu.solve(d.rhs);
+    return;
+  }
+  const PreconditionedGmres::Result r =
+      d.gmres.solve(d.influence, d.lu, d.rhs, d.gamma, m.iterative_tolerance, m.iterative_max_iterations);
+  ++d.solver_counts.iterative_solves;
+  d.solver_counts.iterations += r.iterations;
+  if (!r.converged) {  // the earlier factorisation is too far from this matrix
+    factorise(d);
+    d.gamma = d.lu.solve(d.rhs);
+    return;
+  }
+  d.solver_counts.worst_residual = std::max(d.solver_counts.worst_residual, r.relative_residual);
+  // The matrix has moved far from the factorised one: factorise this one for the next solves.
+  if (r.iterations > m.refactor_iterations) factorise(d);
 }
 
 }  // namespace
@@ -344,8 +328,8 @@ void solve_steady_lattice(const VortexLatticeModel& m, VortexLatticeData& d, con
   d.rho = rho;
   detail::update_geometry(m, d, nodes, node_velocities, free_stream, 0.0);  // no time step: ¼ panel
   detail::build_influence(m, d);
-  d.has_factorisation = false;  // the matrix below includes the wake
-  d.has_influence = false;
+  d.has_factorisation = d.factorisation_current = false;  // the matrix below includes the wake
+  d.has_matrix = d.has_influence = false;
 
   // One straight wake row, trailing-edge row 1 and far row 0, carried by the trailing-edge ring.
   const Eigen::Vector3d dir = wake_direction.normalized();
@@ -358,7 +342,7 @@ void solve_steady_lattice(const VortexLatticeModel& m, VortexLatticeData& d, con
   }
   // Influence of each unit horseshoe (wake ring j, traversed like a bound ring) joins the
   // column of ring (nc−1, j).
-  SegmentSet& horseshoe = d.ring_side[0];  // free again once the bound influence is built
+  SegmentSet& horseshoe = d.horseshoe;
   for (int k = 0; k < np; ++k) d.eval.set(k, d.collocation.col(k));
   for (int j = 0; j < ns; ++j) {
     const Eigen::Vector3d f0 = d.wake_nodes.position(ns + 1 + j), f1 = d.wake_nodes.position(ns + 2 + j);
@@ -402,7 +386,7 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   d.dt = dt;
   d.rho = rho;
   detail::update_geometry(m, d, nodes, node_velocities, free_stream, dt);
-  refactorise_if_moved(m, d);
+  update_influence(m, d);
   detail::attach_wake_to_trailing_edge(m, d);
   detail::build_wake_segments(m, d, detail::WakeView::Wing);
   const bool shed = m.leading_edge == LeadingEdge::Shed;
@@ -416,7 +400,7 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   for (int k = 0; k < np; ++k)
     d.rhs(k) = -(free_stream - d.surface_velocity.col(k) + d.wake_velocity.col(k)).dot(d.normal.col(k));
   if (shed) detail::add_leading_edge_ring_to_rhs(m, d);
-  d.gamma = d.lu.solve(d.rhs);
+  solve_circulations(m, d);  // the sheet's columns below need the factorisation of this matrix: direct
   if (shed && detail::shed_leading_edge_vorticity(m, d)) {  // strips beyond LESP_crit shed
     detail::build_sheet_segments(m, d, detail::WakeView::Wing);
     wake_velocity_at_collocation(m, d);

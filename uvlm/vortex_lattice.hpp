@@ -28,8 +28,10 @@
 
 #include "uvlm/biot_savart.hpp"
 #include "uvlm/core_growth.hpp"
+#include "uvlm/influence_matrix.hpp"
 #include "uvlm/lattice_segments.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
+#include "uvlm/preconditioned_gmres.hpp"
 #include "uvlm/segment_tree.hpp"
 #include "uvlm/vortex_core.hpp"
 
@@ -142,6 +144,22 @@ struct VortexLatticeModel {
   /// speed, and are recomputed every solve). false: the whole matrix at every solve
   /// (the reference for tests).
   bool reuse_rigid_influence = true;
+  /// The circulations of lattices with at least this many panels are solved by GMRES
+  /// (preconditioned_gmres.hpp) on the current influence matrix, preconditioned by the LU
+  /// factorisation of an earlier one, to ‖r − A Γ‖₂ ≤ iterative_tolerance ‖r‖₂; the matrix
+  /// is factorised anew only when a solve needs more than refactor_iterations iterations
+  /// (or does not converge). Smaller lattices, a leading edge that sheds and the steady
+  /// solve factorise every new matrix (the direct solve). 0: always the direct solve.
+  /// docs/uvlm.md, "Solving for the circulations".
+  int iterative_min_panels = 150;
+  double iterative_tolerance = 1e-13;
+  int refactor_iterations = 12;
+  int iterative_restart = 30;        ///< GMRES restart length
+  int iterative_max_iterations = 90; ///< then the direct solve
+  bool iterative(int panels) const {
+    return iterative_min_panels > 0 && panels >= iterative_min_panels && leading_edge != LeadingEdge::Shed &&
+           !steady();
+  }
 
   /// Steady lattice in every solve() when > 0 [m]: the wake is one straight row of this
   /// length along the free stream from the trailing-edge vortex (a horseshoe per strip,
@@ -179,6 +197,15 @@ struct PanelLoads {
 /// Moment [N·m] of the panel forces about `point` [m].
 Eigen::Vector3d moment_about(const PanelLoads& loads, const Eigen::Vector3d& point);
 
+/// How the circulations of the solves so far were found (for benchmarks and docs).
+struct LatticeSolverCounts {
+  long solves = 0;            ///< linear solves (one per solve() with a new right-hand side)
+  long factorisations = 0;    ///< LU factorisations of the influence matrix
+  long iterative_solves = 0;  ///< solves by GMRES
+  long iterations = 0;        ///< their GMRES iterations
+  double worst_residual = 0;  ///< largest relative residual a GMRES solve returned
+};
+
 /// Mutable workspace of one lattice: geometry of the last solve, circulations, the
 /// wake and the loads. Constructed once per run; nothing in solve/advance allocates.
 struct VortexLatticeData {
@@ -209,12 +236,18 @@ struct VortexLatticeData {
   Eigen::VectorXd gamma_accepted;  ///< last accepted step (for ∂Γ/∂t); zero before the first
   Eigen::VectorXd gamma_accepted_before;  ///< the accepted step before that (BDF2 ∂Γ/∂t)
 
-  // Influence matrix and its factorisation (reused while the surface does not change).
+  // Influence matrix (rebuilt when the surface moved) and a factorisation: of this matrix
+  // (the direct solve), or of an earlier one, which preconditions GMRES (iterative solve).
   Eigen::MatrixXd influence;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-  Eigen::Matrix3Xd factorised_nodes;
-  Eigen::Matrix3Xd factorised_ring_nodes;  ///< the trailing-edge vortex moves with the edge's speed
-  bool has_factorisation = false;
+  Eigen::Matrix3Xd matrix_nodes;       ///< the nodes `influence` was built at
+  Eigen::Matrix3Xd matrix_ring_nodes;  ///< the trailing-edge vortex moves with the edge's speed
+  bool has_matrix = false;
+  bool has_factorisation = false;      ///< lu holds a factorisation (possibly of an earlier matrix)
+  bool factorisation_current = false;  ///< lu factorises `influence` itself
+  InfluenceSegments influence_segments;  ///< the segments the matrix is built from (scratch)
+  PreconditionedGmres gmres;           ///< storage of the iterative solve (model.iterative_min_panels)
+  LatticeSolverCounts solver_counts;
   /// The nodes at which the whole influence matrix was last computed (its columns of the
   /// rings off the last row hold for every rigid motion of them; model.reuse_rigid_influence).
   Eigen::Matrix3Xd influence_nodes;
@@ -247,7 +280,7 @@ struct VortexLatticeData {
   SegmentTree wake_tree;              ///< the tree code's storage (model.wake_sum = Tree)
   /// The vortex sheet shed from the leading edge (model.leading_edge = Shed; empty otherwise).
   LeadingEdgeSheet le_sheet;
-  SegmentSet ring_side[4];  ///< unit-circulation ring sides for the influence matrix
+  SegmentSet horseshoe;  ///< the steady solve's unit horseshoe (scratch)
   PointSet eval;
 
   PanelLoads loads;

@@ -1,0 +1,62 @@
+#pragma once
+/// \file influence_lanes.hpp
+/// \brief One row of the influence matrix's segment terms: the normal velocity at one
+/// collocation point of every unit-circulation segment of the lattice, out[s] = n · v_s(P),
+/// vectorised over the segments. Included by the kernel variant files
+/// (biot_savart_scalar.cpp, _avx2.cpp, _avx512.cpp), each compiled for its instruction set;
+/// everything here is TU-local. Each segment's term is segment_velocity
+/// (biot_savart_kernel.hpp) evaluated alone, lane by lane, with no sum across segments: no
+/// fused multiply–add (-ffp-contract=off), square root and division correctly rounded, so
+/// every variant gives the bits of the scalar formula (influence_matrix.hpp).
+
+#include "uvlm/biot_savart_kernel.hpp"
+#include "uvlm/vortex_core.hpp"
+
+#include <cstddef>
+
+namespace flapsim::uvlm::detail {
+
+/// The arguments of one row: `segments` unit segments A→B with their scale
+/// 1/(r_c² |B − A|²) (segment_velocity's), the point P and its unit normal n.
+struct InfluenceRowCall {
+  std::size_t segments = 0;
+  const double *ax, *ay, *az, *bx, *by, *bz;  ///< segment ends [m]
+  const double* scale;                        ///< 1/(r_c² |B − A|²) [1/m⁴]
+  CoreModel model;
+  double px, py, pz;  ///< collocation point [m]
+  double nx, ny, nz;  ///< its unit normal
+  double* out;        ///< n · v_s for each segment [1/m] (velocity per unit circulation)
+};
+
+namespace {  // TU-local: one copy per instruction set
+
+template <CoreModel M>
+void influence_row(const InfluenceRowCall& c) {
+  const double *__restrict ax = c.ax, *__restrict ay = c.ay, *__restrict az = c.az;
+  const double *__restrict bx = c.bx, *__restrict by = c.by, *__restrict bz = c.bz;
+  const double* __restrict scale = c.scale;
+  double* __restrict out = c.out;
+  const double px = c.px, py = c.py, pz = c.pz, nx = c.nx, ny = c.ny, nz = c.nz;
+#pragma omp simd
+  for (std::size_t s = 0; s < c.segments; ++s) {
+    double u = 0.0, v = 0.0, w = 0.0;
+    segment_velocity<M, double>(px, py, pz, ax[s], ay[s], az[s], bx[s], by[s], bz[s], 1.0, scale[s], u, v, w);
+    out[s] = u * nx + v * ny + w * nz;
+  }
+}
+
+inline void influence_row_any_model(const InfluenceRowCall& c) {
+  switch (c.model) {
+    case CoreModel::CutOff: influence_row<CoreModel::CutOff>(c); break;
+    case CoreModel::LambOseen: influence_row<CoreModel::LambOseen>(c); break;
+    case CoreModel::Vatistas: influence_row<CoreModel::Vatistas>(c); break;
+  }
+}
+
+}  // namespace
+
+void influence_row_scalar(const InfluenceRowCall& c);
+void influence_row_avx2(const InfluenceRowCall& c);
+void influence_row_avx512(const InfluenceRowCall& c);
+
+}  // namespace flapsim::uvlm::detail
