@@ -19,6 +19,19 @@ namespace {
 constexpr double kFilmE = 4.0e9;   // Mylar [Pa]
 constexpr double kFilmNu = 0.38;
 
+/// A 25 µm Mylar triangle with 2 mm sides [m].
+std::array<Eigen::Vector3d, 3> film_triangle_corners() {
+  return {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2e-3, 0, 0), Eigen::Vector3d(0.6e-3, 1.8e-3, 0)};
+}
+CorotationalShell film_triangle() {
+  ShellProperties props;
+  props.thickness = 25e-6;
+  props.youngs_modulus = kFilmE;
+  props.poisson_ratio = kFilmNu;
+  props.density = 1390.0;
+  return make_corotational_shell({0, 1, 2}, film_triangle_corners(), props);
+}
+
 TEST(TensionFieldMembrane, ATautFilmIsTheLinearPlaneStressMaterial) {
   // Both principal stresses positive: σ = C ε exactly.
   const Eigen::Vector3d e(2e-4, 1e-4, 0.5e-4);
@@ -81,14 +94,8 @@ TEST(TensionFieldMembrane, ACompressedTriangleCarriesNoForceInAnyOrientation) {
   // The co-rotational shell (EICR kernel) with the tension-field law: a 25 µm Mylar
   // triangle shrunk by 0.1 % in its plane carries nothing, turned by 40° or not; the
   // same triangle stretched by 0.1 % carries what the linear element carries.
-  const std::array<Eigen::Vector3d, 3> p{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2e-3, 0, 0),
-                                         Eigen::Vector3d(0.6e-3, 1.8e-3, 0)};
-  ShellProperties props;
-  props.thickness = 25e-6;
-  props.youngs_modulus = kFilmE;
-  props.poisson_ratio = kFilmNu;
-  props.density = 1390.0;
-  const CorotationalShell shell = make_corotational_shell({0, 1, 2}, p, props);
+  const std::array<Eigen::Vector3d, 3> p = film_triangle_corners();
+  const CorotationalShell shell = film_triangle();
   const Eigen::Matrix3d turn = rotation_matrix(Eigen::Vector3d(0.3, -0.5, 0.4).normalized() * (40.0 * std::numbers::pi / 180));
   for (const double scale : {0.999, 1.001}) {
     for (const Eigen::Matrix3d& Q : {Eigen::Matrix3d(Eigen::Matrix3d::Identity()), turn}) {
@@ -113,14 +120,7 @@ TEST(TensionFieldMembrane, ACompressedTriangleCarriesNoForceInAnyOrientation) {
 TEST(TensionFieldMembrane, TheShellsLocalForceAndTangentAreThoseOfItsEnergy) {
   // A 25 µm Mylar triangle (2 mm sides) in a wrinkled state: the local force of
   // ShellTensionFieldLaw is ∂W/∂d and its tangent ∂f/∂d (central differences).
-  const std::array<Eigen::Vector3d, 3> p{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2e-3, 0, 0),
-                                         Eigen::Vector3d(0.6e-3, 1.8e-3, 0)};
-  ShellProperties props;
-  props.thickness = 25e-6;
-  props.youngs_modulus = kFilmE;
-  props.poisson_ratio = kFilmNu;
-  props.density = 1390.0;
-  const CorotationalShell shell = make_corotational_shell({0, 1, 2}, p, props);
+  const CorotationalShell shell = film_triangle();
   const ShellTensionFieldLaw law{shell};
   Eigen::Matrix<double, 18, 1> d = Eigen::Matrix<double, 18, 1>::Zero();
   d(6) = 6e-7;    // node 1 pulled along x: stretch

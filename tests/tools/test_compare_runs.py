@@ -15,13 +15,8 @@ import tool_test_args
 a, work = tool_test_args.arguments("flapsim", "source", "work")
 env = dict(os.environ, FLAPSIM_QUIET="1", OMP_NUM_THREADS="1")
 script = os.path.join(a.source, "tools", "compare_runs.py")
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
+check = tool_test_args.Checks()
+failures = check.failures
 
 
 def run(name, phase, steps):

@@ -19,26 +19,12 @@ from vtk.util.numpy_support import vtk_to_numpy
 import tool_test_args
 
 a, work = tool_test_args.arguments("flapsim", "source", "work")
-case = os.path.join(work, "movie_plate.toml")
-with open(case, "w") as f:
-    f.write(f'name = "movie_plate"\nwing = "{a.source}/wings/flat_plate.toml"\n'
-            "[kinematics]\nfrequency_hz = 26.1\n"
-            "sweep = { mean_deg = 10.0, cos_deg = [50.0] }\n"
-            "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
-            '[structure]\nkind = "rigid"\n'
-            "[numerics]\nsteps_per_cycle = 50\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 4\n"
-            "core_radius = 0.2\n[output]\nvtk_every = 1\n")
-env = dict(os.environ, FLAPSIM_QUIET="1", OMP_NUM_THREADS="1")
+case = tool_test_args.write_flapping_plate_case(a.source, os.path.join(work, "movie_plate.toml"), "movie_plate", 50, 1, 1)
 out = os.path.join(work, "out")
 run = os.path.join(out, "movie_plate")
-subprocess.run([a.flapsim, "run", case, "-o", run, "-q"], check=True, env=env)
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
+tool_test_args.run_case(a.flapsim, case, run)
+check = tool_test_args.Checks()
+failures = check.failures
 
 
 r = subprocess.run(["make", "-C", a.source, "--no-print-directory", "movie", f"CASE={case}", f"OUT={out}",

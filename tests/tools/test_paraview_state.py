@@ -29,25 +29,11 @@ a, work = tool_test_args.arguments("flapsim", "source", "work")
 sys.path.insert(0, os.path.join(a.source, "tools"))
 import paraview_state  # noqa: E402
 
-case = os.path.join(work, "case.toml")
-with open(case, "w") as f:
-    f.write(f'name = "plate"\nwing = "{a.source}/wings/flat_plate.toml"\n'
-            "[kinematics]\nfrequency_hz = 26.1\n"
-            "sweep = { mean_deg = 10.0, cos_deg = [50.0] }\n"
-            "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
-            '[structure]\nkind = "rigid"\n'
-            "[numerics]\nsteps_per_cycle = 24\ncycles = 2\nchordwise_panels = 3\nspanwise_panels = 4\n"
-            "core_radius = 0.2\n[output]\nvtk_every = 2\n")
-env = dict(os.environ, FLAPSIM_QUIET="1", OMP_NUM_THREADS="1")
+case = tool_test_args.write_flapping_plate_case(a.source, os.path.join(work, "case.toml"), "plate", 24, 2, 2)
 run = os.path.join(work, "run")
-subprocess.run([a.flapsim, "run", case, "-o", run, "-q"], check=True, env=env)
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
+tool_test_args.run_case(a.flapsim, case, run)
+check = tool_test_args.Checks()
+failures = check.failures
 
 
 def frames(pvd):

@@ -26,13 +26,8 @@ with open(case, "w") as f:
 env = dict(os.environ, FLAPSIM_QUIET="1", OMP_NUM_THREADS="1")
 run = os.path.join(work, "run")
 subprocess.run([a.flapsim, "run", case, "-o", run, "-q"], check=True, env=env)
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
+check = tool_test_args.Checks()
+failures = check.failures
 
 
 check(os.path.isfile(os.path.join(run, "fem.pvd")), "no fem.pvd")

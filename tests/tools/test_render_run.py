@@ -18,28 +18,14 @@ from vtk.util.numpy_support import vtk_to_numpy
 import tool_test_args
 
 a, work = tool_test_args.arguments("flapsim", "source", "work")
-case = os.path.join(work, "case.toml")
-with open(case, "w") as f:
-    f.write(f'name = "plate"\nwing = "{a.source}/wings/flat_plate.toml"\n'
-            "[kinematics]\nfrequency_hz = 26.1\n"
-            "sweep = { mean_deg = 10.0, cos_deg = [50.0] }\n"
-            "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
-            '[structure]\nkind = "rigid"\n'
-            "[numerics]\nsteps_per_cycle = 12\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 4\n"
-            "core_radius = 0.2\n[output]\nvtk_every = 3\n")
-env = dict(os.environ, FLAPSIM_QUIET="1", OMP_NUM_THREADS="1")
+case = tool_test_args.write_flapping_plate_case(a.source, os.path.join(work, "case.toml"), "plate", 12, 1, 3)
 run = os.path.join(work, "run")
-subprocess.run([a.flapsim, "run", case, "-o", run, "-q"], check=True, env=env)
+tool_test_args.run_case(a.flapsim, case, run)
 
 script = os.path.join(a.source, "tools", "render_run.py")
 xvfb = tool_test_args.XVFB_RUN
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
+check = tool_test_args.Checks()
+failures = check.failures
 
 
 def render(extra, png, phase="0.25"):

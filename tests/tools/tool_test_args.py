@@ -4,6 +4,7 @@ xvfb-run command line of the tests that render."""
 import argparse
 import os
 import shutil
+import subprocess
 
 # xvfb-run with its own X display: -a alone starts its search at :99, so two tests started
 # at once (ctest -j, or another build's tests on the machine) took the same display, and
@@ -26,3 +27,40 @@ def arguments(*names):
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     return a, work
+
+
+# The environment of the tests' own flapsim runs: no progress line, one thread each.
+RUN_ENV = dict(os.environ, FLAPSIM_QUIET="1", OMP_NUM_THREADS="1")
+
+
+def write_flapping_plate_case(source, path, name="plate", steps_per_cycle=12, cycles=1, vtk_every=3):
+    """Writes the rigid flat plate (wings/flat_plate.toml) flapped at 26.1 Hz, sweep 10° ± 50°,
+    rotation 90° − 45° sin, on a 3 × 4 lattice, to `path`; returns `path`."""
+    with open(path, "w") as f:
+        f.write(f'name = "{name}"\nwing = "{source}/wings/flat_plate.toml"\n'
+                "[kinematics]\nfrequency_hz = 26.1\n"
+                "sweep = { mean_deg = 10.0, cos_deg = [50.0] }\n"
+                "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
+                '[structure]\nkind = "rigid"\n'
+                f"[numerics]\nsteps_per_cycle = {steps_per_cycle}\ncycles = {cycles}\n"
+                "chordwise_panels = 3\nspanwise_panels = 4\n"
+                f"core_radius = 0.2\n[output]\nvtk_every = {vtk_every}\n")
+    return path
+
+
+def run_case(flapsim, case, run):
+    """`flapsim run case -o run -q`; a failure fails the test. Returns `run`."""
+    subprocess.run([flapsim, "run", case, "-o", run, "-q"], check=True, env=RUN_ENV)
+    return run
+
+
+class Checks:
+    """check(ok, message): records and prints a failed check; `failures` lists them."""
+
+    def __init__(self):
+        self.failures = []
+
+    def __call__(self, ok, message):
+        if not ok:
+            self.failures.append(message)
+            print("FAIL:", message)
