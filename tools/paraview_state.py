@@ -21,6 +21,7 @@ docs/fsi.md, "Rendering the state headless".
 import argparse
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -165,7 +166,9 @@ def build_renderer(state, view, t, solid=None):
         if rep.type == "ScalarBarWidgetRepresentation":
             bar = vtk.vtkScalarBarActor()
             bar.SetLookupTable(lookup_table(state.proxies[rep.get("LookupTable")[0]]))
-            bar.SetTitle(rep.one("Title", ""))
+            # A long title ("circulation [m^2/s]") breaks before its unit: centred over a bar
+            # at the view's right edge, one line ran off the picture.
+            bar.SetTitle(re.sub(r" ([\[(])", r"\n\1", rep.one("Title", ""), count=1))
             bar.SetOrientationToVertical()
             bar.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
             x, y = rep.numbers("Position") or [0.89, 0.05]
@@ -173,8 +176,13 @@ def build_renderer(state, view, t, solid=None):
             bar.SetWidth(0.1)
             bar.SetHeight(rep.numbers("ScalarBarLength", [0.33])[0])
             bar.SetNumberOfLabels(5)
-            for text in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
+            # Fixed font sizes: fitted to the bar's width, a short title ("Cp") was drawn
+            # taller than the bar's labels by five.
+            bar.UnconstrainedFontSizeOn()
+            bar.SetVerticalTitleSeparation(8)  # [px] between the title and the top label
+            for text, size in ((bar.GetTitleTextProperty(), 16), (bar.GetLabelTextProperty(), 14)):
                 text.SetColor(0, 0, 0)
+                text.SetFontSize(size)
                 text.ShadowOff()
                 text.ItalicOff()
             renderer.AddViewProp(bar)
