@@ -76,12 +76,7 @@ void add_leading_edge_forces(const VortexLatticeModel& m, VortexLatticeData& d) 
   const int nc = m.chordwise, ns = m.spanwise;
   const std::size_t n = static_cast<std::size_t>(nc) * ns;
   const auto& S = d.bound_segments;
-  for (std::size_t s = 0; s < n; ++s) {
-    d.eval.x[s] = 0.5 * (S.ax()[s] + S.bx()[s]);
-    d.eval.y[s] = 0.5 * (S.ay()[s] + S.by()[s]);
-    d.eval.z[s] = 0.5 * (S.az()[s] + S.bz()[s]);
-  }
-  detail::induced_at_eval_points(m, d, n, true);
+  detail::induced_at_bound_midpoints(m, d, n);  // each segment's own velocity left out
   d.loads.leading_edge_force.setZero();
   for (int j = 0; j < ns; ++j) {
     Eigen::Vector3d suction = Eigen::Vector3d::Zero();

@@ -71,6 +71,20 @@ Eigen::Vector3d segment_velocity(const Eigen::Vector3d& a, const Eigen::Vector3d
   return {u, v, w};
 }
 
+Eigen::Vector3d segment_velocity(const SegmentSet& segments, std::size_t k, const Eigen::Vector3d& p,
+                                 const VortexCore& core) {
+  if (!(core.radius > 0.0)) throw std::invalid_argument("vortex core radius must be > 0");
+  if (k >= segments.size()) throw std::out_of_range("segment_velocity: no such segment");
+  const SegmentSet& s = segments;
+  double u = 0, v = 0, w = 0;
+  detail::KernelCall<double> c{1, s.ax() + k, s.ay() + k, s.az() + k, s.bx() + k, s.by() + k, s.bz() + k,
+                               s.gamma() + k, s.inv_length2() + k, s.core_ratio2() + k,
+                               1.0 / (core.radius * core.radius), core.model, 1, &p.x(), &p.y(), &p.z(),
+                               &u, &v, &w};
+  dispatch(c);
+  return {u, v, w};
+}
+
 void add_induced_velocity(const SegmentSet& segments, PointSet& points, const VortexCore& core) {
   add_induced_velocity(segments, points.x.data(), points.y.data(), points.z.data(), points.size,
                        points.u.data(), points.v.data(), points.w.data(), core);

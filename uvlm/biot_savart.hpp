@@ -77,6 +77,11 @@ struct PointSet {
 Eigen::Vector3d segment_velocity(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double gamma,
                                  const Eigen::Vector3d& p, const VortexCore& core);
 
+/// Velocity [m/s] induced at p by segment k of `segments` alone, by the kernel of the sums
+/// below (the same arithmetic; no allocation): what a sum over the set holds of that segment.
+Eigen::Vector3d segment_velocity(const SegmentSet& segments, std::size_t k, const Eigen::Vector3d& p,
+                                 const VortexCore& core);
+
 /// Add the velocity induced by every segment of `segments` to each point of `points`
 /// (points.u/v/w += …). Parallel over points (OpenMP), vectorised over segments.
 /// \param core  regularisation; core.radius > 0 [m]

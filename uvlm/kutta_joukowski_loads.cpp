@@ -12,15 +12,9 @@ namespace flapsim::uvlm {
 void compute_kutta_joukowski_loads(const VortexLatticeModel& m, VortexLatticeData& d) {
   const int nc = m.chordwise, ns = m.spanwise;
   const auto& S = d.bound_segments;
-  const std::size_t nb = S.size();
-  for (std::size_t s = 0; s < nb; ++s) {
-    d.eval.x[s] = 0.5 * (S.ax()[s] + S.bx()[s]);
-    d.eval.y[s] = 0.5 * (S.ay()[s] + S.by()[s]);
-    d.eval.z[s] = 0.5 * (S.az()[s] + S.bz()[s]);
-  }
-  // Wake and bound velocity at the midpoints; a segment adds nothing at its own midpoint
-  // (the core factor vanishes on its line), so "excluding itself" needs no special case.
-  detail::induced_at_eval_points(m, d, nb, true);
+  // Wake, trailing-edge and bound velocity at the midpoints, each segment's own left out
+  // (lattice_internal.hpp: rounding puts the midpoint inside its tiny core, off its line).
+  detail::induced_at_bound_midpoints(m, d, S.size());
 
   for (int k = 0; k < m.panels(); ++k)
     d.loads.force.col(k) = d.rho * detail::gamma_rate(d, k) * d.area(k) * d.normal.col(k);

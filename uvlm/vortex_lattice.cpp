@@ -232,6 +232,22 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
   }
 }
 
+void induced_at_bound_midpoints(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n) {
+  const auto& S = d.bound_segments;
+  for (std::size_t s = 0; s < n; ++s) {
+    d.eval.x[s] = 0.5 * (S.ax()[s] + S.bx()[s]);
+    d.eval.y[s] = 0.5 * (S.ay()[s] + S.by()[s]);
+    d.eval.z[s] = 0.5 * (S.az()[s] + S.bz()[s]);
+  }
+  induced_at_eval_points(m, d, n, true);
+  for (std::size_t s = 0; s < n; ++s) {
+    const Eigen::Vector3d own = segment_velocity(S, s, d.eval.position(s), m.bound_core());
+    d.eval.u[s] -= own.x();
+    d.eval.v[s] -= own.y();
+    d.eval.w[s] -= own.z();
+  }
+}
+
 void compute_loads(const VortexLatticeModel& m, VortexLatticeData& d) {
   if (m.load_method == LoadMethod::Bernoulli)
     compute_bernoulli_loads(m, d);
