@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "app/stiff_plate_wing.hpp"
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 
@@ -21,25 +22,6 @@ namespace {
 
 using namespace flapsim;
 
-// A 40 mm × 10 mm plate, 1 mm thick, E = 700 GPa, ρ = 2700 kg/m³ (a fictitious, very stiff
-// material): EI = E t³ c / 12 = 5.8e-4 N m², m' = ρ t c = 0.027 kg/m, first bending of the
-// cantilever f₁ = (1.875²/2π) √(EI/(m' R⁴)) = 162 Hz (Blevins 1979, table 8-1), 6.2 × 26.1 Hz.
-const char* const kStiffPlateWing = R"(name = "stiff_plate"
-length_unit = "mm"
-[planform]
-outline = [[2.5, 0.0], [2.5, 40.0], [-7.5, 40.0], [-7.5, 0.0]]
-clamp_y = 0.0
-[materials.stiff]
-youngs_modulus = 7.0e11
-poisson_ratio = 0.3
-density = 2700.0
-[membrane]
-thickness = 1.0
-material = "stiff"
-[mesh]
-element_size = 2.5
-vein_element_size = 2.5
-)";
 
 // Eq. 8 with a 20° sweep amplitude, 80 steps per cycle, one cycle. ρ∞ = 0: the start from
 // rest relative to an accelerating base excites the FEM's stiff modes, which generalized-α
@@ -83,7 +65,7 @@ History read_history(const std::filesystem::path& file) {
 
 TEST(FemStructureCase, AStiffFemPlateFliesAndIsDrivenAsTheRigidPlate) {
   test::ScratchDir dir("fem_structure_case");
-  std::ofstream(dir / "wing.toml") << kStiffPlateWing;
+  std::ofstream(dir / "wing.toml") << test::kStiffPlateWing;
   for (const std::string kind : {"rigid", "fem"}) {
     std::ofstream(dir / (kind + ".toml")) << plate_case(kind);
     ASSERT_EQ(test::run_flapsim("run " + (dir / (kind + ".toml")).string() + " -q -o " + (dir / kind).string()), 0)

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "app/stiff_plate_wing.hpp"
 #include "app/one_joint_chain.hpp"
 #include "app/robustness_helpers.hpp"
 #include "common/run_flapsim.hpp"
@@ -251,28 +252,10 @@ TEST(RunViewFields, TheFlexiblePlatesJointsTipPathAndDisplacementAgreeWithItsHis
     EXPECT_LT(point_vector(start, "displacement_m", p).norm(), 1e-15) << p;
 }
 
-// The plate of test app.FemStructureCase.* (40 mm × 10 mm × 1 mm, E = 700 GPa: first
-// bending 162 Hz), meshed at 2.5 mm: mesh nodes on the tip edge at x = 2.5, 0, −2.5, … mm.
-const char* const kStiffFemPlate = R"(name = "stiff_plate"
-length_unit = "mm"
-[planform]
-outline = [[2.5, 0.0], [2.5, 40.0], [-7.5, 40.0], [-7.5, 0.0]]
-clamp_y = 0.0
-[materials.stiff]
-youngs_modulus = 7.0e11
-poisson_ratio = 0.3
-density = 2700.0
-[membrane]
-thickness = 1.0
-material = "stiff"
-[mesh]
-element_size = 2.5
-vein_element_size = 2.5
-)";
 
 TEST(RunViewFields, TheFemPlatesDisplacementAndTipAreItsFramesNodes) {
   ScratchDir dir("run_view_fields_fem");
-  std::ofstream(dir / "wing.toml") << kStiffFemPlate;
+  std::ofstream(dir / "wing.toml") << test::kStiffPlateWing;
   const fs::path rigid = run_case(dir, "rigid", plate_case("", "[structure]\nkind = \"rigid\"\n", "", "wing.toml"));
   const fs::path out =
       run_case(dir, "fem", plate_case("", "[structure]\nkind = \"fem\"\n", "rho_infinity = 0.0\n", "wing.toml"));

@@ -12,9 +12,6 @@ import os
 import subprocess
 import sys
 
-import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
 import tool_test_args
 
@@ -48,12 +45,8 @@ if os.path.isfile(movie):
     sampled = sorted(glob.glob(os.path.join(frames, "*.png")))
     check(len(sampled) >= 5, f"{len(sampled)} sampled frames, expected >= 5")
     for png in sampled:
-        reader = vtk.vtkPNGReader()
-        reader.SetFileName(png)
-        reader.Update()
-        image = reader.GetOutput()
-        w, h, _ = image.GetDimensions()
-        rgb = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3] / 255.0
+        rgb = tool_test_args.read_png_rgb(png)
+        h, w, _ = rgb.shape
         rgb = rgb[::-1]  # VTK's rows start at the bottom
         inked = (rgb < 0.85).any(axis=2)[: int(0.9 * h), : int(0.84 * w)]
         core = inked.copy()  # 2 erosions by the 3 x 3 cross

@@ -103,12 +103,8 @@ flat = os.path.join(work, "flat")
 subprocess.run(xvfb + ["/usr/bin/python3", os.path.join(a.source, "tools", "paraview_state.py"),
                        os.path.join(run, "run.pvsm"), "-o", flat, "--wing-colour", "1", "0", "1"], check=True)
 for phase in ("0.00", "0.25", "0.50", "0.75"):
-    png = vtk.vtkPNGReader()
-    png.SetFileName(os.path.join(flat, f"front_phase_{phase}.png"))
-    png.Update()
-    image = png.GetOutput()
-    w, h, _ = image.GetDimensions()
-    rgb = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3] / 255.0
+    rgb = tool_test_args.read_png_rgb(os.path.join(flat, f"front_phase_{phase}.png"))
+    h, w, _ = rgb.shape
     magenta = (rgb[:, :, 0] > 0.5) & (rgb[:, :, 2] > 0.5) & (rgb[:, :, 1] < 0.5 * np.minimum(rgb[:, :, 0], rgb[:, :, 2]))
     share = magenta.mean()
     print(f"phase {phase}: the wing covers {100 * share:.1f} % of the front view ({w} x {h})")

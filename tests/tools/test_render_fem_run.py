@@ -11,8 +11,6 @@ import os
 import subprocess
 import sys
 
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
 import tool_test_args
 
@@ -36,12 +34,8 @@ script = os.path.join(a.source, "tools", "render_run.py")
 png = os.path.join(work, "fem.png")
 subprocess.run(tool_test_args.XVFB_RUN + ["/usr/bin/python3", script, run,
                 "--phases", "0.25", "-o", png, "--size", "600", "400"], check=True)
-reader = vtk.vtkPNGReader()
-reader.SetFileName(png)
-reader.Update()
-image = reader.GetOutput()
-w, h, _ = image.GetDimensions()
-rgb = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3] / 255.0
+rgb = tool_test_args.read_png_rgb(png)
+h, w, _ = rgb.shape
 r, g, b = rgb[:, :, 0], rgb[:, :, 1], rgb[:, :, 2]
 blue = (b > r + 0.15) & (b > g)
 share = blue.mean()

@@ -12,8 +12,6 @@ import os
 import subprocess
 import sys
 
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
 import tool_test_args
 
@@ -31,13 +29,7 @@ failures = check.failures
 def render(extra, png, phase="0.25"):
     subprocess.run(xvfb + ["/usr/bin/python3", script, run, "--phases", phase, "-o", png,
                            "--size", "600", "400"] + extra, check=True)
-    reader = vtk.vtkPNGReader()
-    reader.SetFileName(png)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    rgb = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3] / 255.0
-    return rgb
+    return tool_test_args.read_png_rgb(png)
 
 
 # 1. The wing in one colour: orange (1, 0.5, 0) shaded keeps g ≈ r/2 and b ≈ 0.

@@ -64,3 +64,16 @@ class Checks:
         if not ok:
             self.failures.append(message)
             print("FAIL:", message)
+
+
+def read_png_rgb(path):
+    """The picture at `path` as an (h, w, 3) array of RGB in [0, 1], rows as VTK stores them
+    (the first row at the bottom)."""
+    import vtk  # the rendering tests' module only: the other tools tests run without it
+    from vtk.util.numpy_support import vtk_to_numpy
+    reader = vtk.vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3] / 255.0
