@@ -55,7 +55,18 @@ CorotationalModel make_corotational_model(const StructuralModel& sm, MembraneLaw
     if (!((p[1] - p[0]).cross(p[2] - p[0]).norm() > 0.0))
       throw std::invalid_argument("make_corotational_model: triangle " + std::to_string(e) + " has zero area");
     m.shells.push_back(make_corotational_shell(t, p, sm.shell[e]));
+    if (membrane_law == MembraneLaw::Film)
+      m.films.push_back(make_film_triangle(t, p, sm.shell[e].thickness, sm.shell[e].youngs_modulus,
+                                           sm.shell[e].poisson_ratio));
     add_triplets<3>(mt, shell_element(p, sm.shell[e]).mass, t.data());
+  }
+  if (membrane_law == MembraneLaw::Film) {
+    std::vector<double> D(mesh.triangles.size());
+    for (size_t e = 0; e < mesh.triangles.size(); ++e) {
+      const ShellProperties& s = sm.shell[e];
+      D[e] = s.youngs_modulus * s.thickness * s.thickness * s.thickness / (12.0 * (1.0 - s.poisson_ratio * s.poisson_ratio));
+    }
+    m.hinges = make_film_hinges(mesh.triangles, D, mesh.nodes);
   }
   for (size_t e = 0; e < mesh.beams.size(); ++e) {
     const auto& b = mesh.beams[e];
@@ -69,6 +80,20 @@ CorotationalModel make_corotational_model(const StructuralModel& sm, MembraneLaw
   m.mass.resize(mesh.num_dofs(), mesh.num_dofs());
   m.mass.setFromTriplets(mt.begin(), mt.end());
   return m;
+}
+
+std::vector<int> film_only_rotation_dofs(const CorotationalModel& model) {
+  std::vector<int> dofs;
+  if (model.membrane_law != MembraneLaw::Film) return dofs;
+  std::vector<char> film(static_cast<size_t>(model.num_nodes()), 0), frame(film.size(), 0);
+  for (const auto& e : model.films)
+    for (int n : e.nodes) film[static_cast<size_t>(n)] = 1;
+  for (const auto& e : model.frames)
+    for (int n : e.nodes) frame[static_cast<size_t>(n)] = 1;
+  for (int n = 0; n < model.num_nodes(); ++n)
+    if (film[static_cast<size_t>(n)] && !frame[static_cast<size_t>(n)])
+      for (int d = 3; d < kDofsPerNode; ++d) dofs.push_back(kDofsPerNode * n + d);
+  return dofs;
 }
 
 CorotationalState reference_state(const CorotationalModel& model) {
@@ -115,6 +140,7 @@ NonlinearAssembler::NonlinearAssembler(const CorotationalModel& model, Constrain
   };
   for (const auto& e : model.shells) pattern(e.nodes.data(), 3);
   for (const auto& e : model.frames) pattern(e.nodes.data(), 2);
+  for (const auto& e : model.hinges) pattern(e.nodes.data(), 4);
   tangent_.resize(nf, nf);
   tangent_.setFromTriplets(t.begin(), t.end());
   tangent_.makeCompressed();
@@ -137,6 +163,10 @@ NonlinearAssembler::NonlinearAssembler(const CorotationalModel& model, Constrain
   frame_slots_.resize(model.frames.size());
   for (size_t e = 0; e < model.shells.size(); ++e) fill(shell_slots_[e], model.shells[e].nodes.data(), 3);
   for (size_t e = 0; e < model.frames.size(); ++e) fill(frame_slots_[e], model.frames[e].nodes.data(), 2);
+  hinge_slots_.resize(model.hinges.size());
+  for (size_t e = 0; e < model.hinges.size(); ++e) fill(hinge_slots_[e], model.hinges[e].nodes.data(), 4);
+  hinge_f_.resize(model.hinges.size());
+  hinge_K_.resize(model.hinges.size());
   mass_values_.assign(static_cast<size_t>(tangent_.nonZeros()), 0.0);
   for (int c = 0; c < model.mass.outerSize(); ++c)
     for (SparseMatrix::InnerIterator it(model.mass, c); it; ++it) {
@@ -147,7 +177,7 @@ NonlinearAssembler::NonlinearAssembler(const CorotationalModel& model, Constrain
   shell_f_.resize(model.shells.size());
   frame_K_.resize(model.frames.size());
   frame_f_.resize(model.frames.size());
-  energy_.resize(model.shells.size() + model.frames.size());
+  energy_.resize(model.shells.size() + model.frames.size() + model.hinges.size());
 }
 
 void NonlinearAssembler::load_mass_into_tangent() {
@@ -170,6 +200,21 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
       damp = {&v, ex.damping, ex.damping * ex.damping_tangent_scale};
     }
     Matrix18d* K = tangent ? &shell_K_[static_cast<size_t>(e)] : nullptr;
+    if (model_.membrane_law == MembraneLaw::Film) {  // translations only, no damping
+      Eigen::Matrix<double, 9, 1> f9;
+      Eigen::Matrix<double, 9, 9> K9;
+      energy_[static_cast<size_t>(e)] =
+          film_triangle_force(model_.films[static_cast<size_t>(e)], x, f9, K != nullptr ? &K9 : nullptr);
+      Vector18d& f18 = shell_f_[static_cast<size_t>(e)];
+      f18.setZero();
+      for (int a = 0; a < 3; ++a) f18.segment<3>(6 * a) = f9.segment<3>(3 * a);
+      if (K != nullptr) {
+        K->setZero();
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) K->block<3, 3>(6 * a, 6 * b) = K9.block<3, 3>(3 * a, 3 * b);
+      }
+      continue;
+    }
     const bool symmetric = form_ == TangentForm::SymmetricLower;
     energy_[static_cast<size_t>(e)] =
         model_.membrane_law == MembraneLaw::TensionField
@@ -195,6 +240,15 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
                       R, frame_f_[static_cast<size_t>(e)], tangent ? &frame_K_[static_cast<size_t>(e)] : nullptr,
                       damp, form_ == TangentForm::SymmetricLower);
   }
+  const int nh = static_cast<int>(model_.hinges.size());
+#pragma omp parallel for schedule(static) if (nh > 512)
+  for (int e = 0; e < nh; ++e) {
+    const FilmHinge& h = model_.hinges[static_cast<size_t>(e)];
+    const std::array<Eigen::Vector3d, 4> x{s.position[h.nodes[0]], s.position[h.nodes[1]], s.position[h.nodes[2]],
+                                           s.position[h.nodes[3]]};
+    energy_[static_cast<size_t>(ns + nb + e)] = film_hinge_force(
+        h, x, hinge_f_[static_cast<size_t>(e)], tangent ? &hinge_K_[static_cast<size_t>(e)] : nullptr);
+  }
   f_int.setZero(model_.num_dofs());
   double energy = 0.0;
   for (double w : energy_) energy += w;
@@ -202,6 +256,8 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
     for (int a = 0; a < 3; ++a) f_int.segment<6>(6 * model_.shells[e].nodes[a]) += shell_f_[e].segment<6>(6 * a);
   for (int e = 0; e < nb; ++e)
     for (int a = 0; a < 2; ++a) f_int.segment<6>(6 * model_.frames[e].nodes[a]) += frame_f_[e].segment<6>(6 * a);
+  for (int e = 0; e < nh; ++e)
+    for (int a = 0; a < 4; ++a) f_int.segment<3>(6 * model_.hinges[e].nodes[a]) += hinge_f_[e].segment<3>(3 * a);
   if (tangent) {
     double* val = tangent_.valuePtr();
     const Eigen::Index nnz = tangent_.nonZeros();
@@ -219,6 +275,17 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
       for (int r = 0; r < 12; ++r)
         for (int c = 0; c < 12; ++c)
           if (sl[r * 12 + c] >= 0) val[sl[r * 12 + c]] += k[c * 12 + r];
+    }
+    for (int e = 0; e < nh; ++e) {  // translations only: row 3a+i of K is DOF 6a+i
+      const auto& K = hinge_K_[e];
+      const auto& sl = hinge_slots_[e];
+      for (int a = 0; a < 4; ++a)
+        for (int i = 0; i < 3; ++i)
+          for (int b = 0; b < 4; ++b)
+            for (int j = 0; j < 3; ++j) {
+              const int slot = sl[(6 * a + i) * 24 + 6 * b + j];
+              if (slot >= 0) val[slot] += K(3 * a + i, 3 * b + j);
+            }
     }
   }
   return energy;

@@ -33,6 +33,8 @@
 #include "fem/constraints.hpp"
 #include "fem/corotational_frame.hpp"
 #include "fem/corotational_shell.hpp"
+#include "fem/film_hinge.hpp"
+#include "fem/film_triangle.hpp"
 #include "fem/structural_model.hpp"
 
 namespace flapsim::fem {
@@ -41,6 +43,10 @@ namespace flapsim::fem {
 enum class MembraneLaw {
   Elastic,       ///< linear in the co-rotated frame, compression as tension
   TensionField,  ///< no compression: wrinkles or slack (tension_field_membrane.hpp)
+  /// The shells are films: membrane only, translations only, the tension-field law on
+  /// the Green strain (film_triangle.hpp); no bending, no drilling. The rotations of
+  /// nodes that no frame touches carry nothing and are fixed (make_dynamics_model).
+  Film,
 };
 
 /// Constant co-rotational model.
@@ -48,11 +54,17 @@ struct CorotationalModel {
   MembraneLaw membrane_law = MembraneLaw::Elastic;
   std::vector<Eigen::Vector3d> reference_positions;  ///< X [m]
   std::vector<CorotationalShell> shells;
+  std::vector<FilmTriangle> films;  ///< MembraneLaw::Film: one per shell, same order
+  std::vector<FilmHinge> hinges;    ///< MembraneLaw::Film: the films' bending, one per interior edge
   std::vector<CorotationalFrame> frames;
   SparseMatrix mass;  ///< rotation-invariant mass (see above), full numbering
   int num_nodes() const { return static_cast<int>(reference_positions.size()); }
   int num_dofs() const { return kDofsPerNode * num_nodes(); }
 };
+
+/// \brief The rotational DOFs no element stiffens: of every node that only film
+/// triangles touch (MembraneLaw::Film); empty for other laws.
+std::vector<int> film_only_rotation_dofs(const CorotationalModel& model);
 
 /// \brief The co-rotational model of a linear structural model (same mesh,
 /// elements, materials). Throws std::invalid_argument on degenerate elements.
@@ -118,6 +130,9 @@ class NonlinearAssembler {
   std::vector<double> mass_values_;  ///< M_ff aligned with tangent_'s values
   std::vector<std::array<int, 18 * 18>> shell_slots_;
   std::vector<std::array<int, 12 * 12>> frame_slots_;
+  std::vector<std::array<int, 24 * 24>> hinge_slots_;
+  std::vector<Eigen::Matrix<double, 12, 1>> hinge_f_;
+  std::vector<Eigen::Matrix<double, 12, 12>> hinge_K_;
   std::vector<Matrix18d> shell_K_;
   std::vector<Eigen::Matrix<double, 18, 1>> shell_f_;
   std::vector<Matrix12d> frame_K_;

@@ -22,10 +22,12 @@ DynamicsModel make_dynamics_model(const CorotationalModel& structure, std::vecto
   m.driven_nodes = std::move(driven_nodes);
   m.eliminated = Constraints(structure.num_dofs());
   m.eliminated.clamp_nodes(m.driven_nodes);
-  for (int d : fixed_dofs) m.eliminated.fix_dof(d);
+  std::vector<int> fixed = fixed_dofs;
+  for (int d : film_only_rotation_dofs(structure)) fixed.push_back(d);
+  for (int d : fixed) m.eliminated.fix_dof(d);
   std::vector<char> driven(static_cast<size_t>(structure.num_nodes()), 0);
   for (int n : m.driven_nodes) driven[static_cast<size_t>(n)] = 1;
-  for (int d : fixed_dofs)
+  for (int d : fixed)
     if (!driven[static_cast<size_t>(d / kDofsPerNode)]) m.fixed_not_driven.push_back(d);
   if (structure.num_nodes() > 0) {
     Eigen::Vector3d lo = structure.reference_positions[0], hi = lo;
@@ -72,6 +74,8 @@ struct DynamicsData::Work {
   Eigen::VectorXd f_int, inertia, r, dx, increment, v1, vdot1, a1;
   Eigen::VectorXd last_increment;  ///< the last converged step's increment (full)
   Eigen::VectorXd du;              ///< a Newton correction (full)
+  Eigen::VectorXd increment0, a10, v10, vdot10;  ///< the iterate a line search starts from
+  std::vector<Eigen::Matrix3d> rotation0;        ///< its trial rotations
   std::vector<char> rotations_free;  ///< per node: its three rotations are free
   double last_time = 0.0, last_h = 0.0;  ///< its t_n and Δt
   bool has_last = false;
@@ -95,6 +99,11 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
   w.last_increment.resize(n);
   w.du.resize(n);
   w.rotations_free.assign(static_cast<std::size_t>(cm.num_nodes()), 0);
+  w.rotation0.resize(static_cast<std::size_t>(cm.num_nodes()));
+  w.increment0.resize(n);
+  w.a10.resize(n);
+  w.v10.resize(n);
+  w.vdot10.resize(n);
   for (int node = 0; node < cm.num_nodes(); ++node)
     w.rotations_free[static_cast<std::size_t>(node)] =
         !model.eliminated.is_fixed(kDofsPerNode * node + 3) && !model.eliminated.is_fixed(kDofsPerNode * node + 4) &&
@@ -289,22 +298,55 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       // free, R ← exp(δω̂) R, the update the tangent linearises (spatial spins); the step's
       // rotation increment is then log(R R_nᵀ) (Arnold & Brüls 2007). Adding δω to the
       // increment instead is off by ½ hΔ × δω, and Newton converged linearly at that rate.
-      w.du.setZero();
-      for (Eigen::Index i = 0; i < nf; ++i) w.du(free[static_cast<size_t>(i)]) = w.dx(i);
-      for (std::size_t node = 0; node < w.rotations_free.size(); ++node) {
-        if (!w.rotations_free[node]) continue;
-        const Eigen::Index o = static_cast<Eigen::Index>(kDofsPerNode * node + 3);
-        const Eigen::Matrix3d R = rotation_matrix(w.du.segment<3>(o)) * w.trial.rotation[node];
-        w.du.segment<3>(o) = rotation_vector(R * d.state.rotation[node].transpose()) - w.increment.segment<3>(o);
+      // Apply α δx from the iterate (increment0, rotation0, rates).
+      auto apply = [&](double alpha) {
+        w.du.setZero();
+        for (Eigen::Index i = 0; i < nf; ++i) w.du(free[static_cast<size_t>(i)]) = alpha * w.dx(i);
+        for (std::size_t node = 0; node < w.rotations_free.size(); ++node) {
+          if (!w.rotations_free[node]) continue;
+          const Eigen::Index o = static_cast<Eigen::Index>(kDofsPerNode * node + 3);
+          const Eigen::Matrix3d R = rotation_matrix(w.du.segment<3>(o)) * w.rotation0[node];
+          w.du.segment<3>(o) = rotation_vector(R * d.state.rotation[node].transpose()) - w.increment0.segment<3>(o);
+        }
+        for (int g : free) {
+          const double du = w.du(g);
+          w.increment(g) = w.increment0(g) + du;
+          w.a1(g) = w.a10(g) + du / (be * h * h);
+          w.v1(g) = w.v10(g) + cV * du;
+          w.vdot1(g) = w.vdot10(g) + cM * du;
+        }
+        place();
+      };
+      w.increment0 = w.increment;
+      w.a10 = w.a1;
+      w.v10 = w.v1;
+      w.vdot10 = w.vdot1;
+      for (std::size_t node = 0; node < w.rotations_free.size(); ++node) w.rotation0[node] = w.trial.rotation[node];
+      apply(1.0);
+      if (model.options.line_search && !small_increment) {
+        // s(α) = δxᵀ r(q + α δx): the slope of the step's incremental potential along the
+        // correction (Crisfield 1991, §9.3); a full step is kept when |s(1)| ≤ ½ s(0).
+        const double s0 = w.dx.dot(w.r);
+        double lo = 0.0, s_lo = s0, hi = 1.0;
+        auto slope = [&]() {
+          w.assembler.evaluate(w.trial, w.f_int, false, ex);
+          double scale_unused = 0.0;
+          residual(scale_unused);
+          return w.dx.dot(w.r);
+        };
+        double s_hi = slope();
+        if (s0 > 0.0 && std::isfinite(s_hi) && std::abs(s_hi) > 0.5 * s0 && s_hi < 0.0) {
+          double alpha = 1.0;
+          for (int k = 0; k < 8; ++k) {
+            alpha = lo + (hi - lo) * s_lo / (s_lo - s_hi);  // regula falsi on the bracket
+            alpha = std::clamp(alpha, lo + 0.05 * (hi - lo), hi - 0.05 * (hi - lo));
+            apply(alpha);
+            const double sa = slope();
+            if (std::abs(sa) <= 0.5 * s0) break;
+            if (sa > 0.0) { lo = alpha; s_lo = sa; } else { hi = alpha; s_hi = sa; }
+          }
+        }
       }
-      for (int g : free) {
-        const double du = w.du(g);
-        w.increment(g) += du;
-        w.a1(g) += du / (be * h * h);
-        w.v1(g) += cV * du;
-        w.vdot1(g) += cM * du;
-      }
-      place();
       if (small_increment) {
         strain = w.assembler.evaluate(w.trial, w.f_int, false, ex);
         res.iterations = it + 1;

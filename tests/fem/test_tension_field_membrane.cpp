@@ -8,6 +8,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Eigenvalues>
+
 #include "fem/corotational_kernel.hpp"
 #include "fem/corotational_shell.hpp"
 #include "fem/nodal_rotation.hpp"
