@@ -13,7 +13,8 @@
 /// solve of a step from the rigid-base predictor), so the structure's answer ŝ to given
 /// loads does not depend on the iterate to the FEM's tolerance, which
 /// coupled_dynamics_options puts at 1 % of the coupling's; the accepted state is ŝ, the
-/// FEM's own converged step.
+/// FEM's own converged step. An intermediate solve may stop at a looser tolerance
+/// (set_solve_accuracy: the coupled step asks for 1 % of its current change; coupled_step.hpp).
 
 #include <Eigen/Core>
 
