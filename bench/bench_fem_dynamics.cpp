@@ -12,6 +12,8 @@
 // Targets and the measured numbers: docs/fem.md, "Geometrically nonlinear FEM".
 #include <benchmark/benchmark.h>
 
+#include <Eigen/CholmodSupport>
+
 #include <exception>
 #include <memory>
 #include <string>
@@ -123,9 +125,13 @@ void structure_step(benchmark::State& state, const std::string& wing, const std:
   set_counters(state, static_cast<const fsi::FemStructureData&>(*d), steps, steps);
 }
 
-void coupled_cycle(benchmark::State& state, const std::string& wing, const std::string& flight) {
+// steps: how many coupled steps from the start (0: one whole cycle); loose: the coupling's
+// intermediate structure solves to 1 % of its change (CouplingSettings::loose_intermediate_solves).
+void coupled_cycle(benchmark::State& state, const std::string& wing, const std::string& flight, int steps_run = 0,
+                   bool loose = true) {
   const auto s = make_setup(wing, flight, true);
-  const int n = s->flight.numerics.steps_per_cycle;
+  s->model.coupling.loose_intermediate_solves = loose;
+  const int n = steps_run > 0 ? steps_run : s->flight.numerics.steps_per_cycle;
   const double dt = 1.0 / (s->flight.kinematics.frequency * n);
   long steps = 0, solves = 0;
   std::unique_ptr<fsi::FsiData> d;
@@ -144,9 +150,44 @@ void coupled_cycle(benchmark::State& state, const std::string& wing, const std::
     steps += n;
     solves += d->total_iterations;
   }
-  set_counters(state, static_cast<const fsi::FemStructureData&>(*d->structure), n, d->total_iterations);
+  set_counters(state, static_cast<const fsi::FemStructureData&>(*d->structure), n,
+               d->total_iterations + d->accuracy_solves + n);
+  state.counters["lattice_per_step"] = static_cast<double>(d->total_iterations) / n;
   state.counters["mean_s_per_step"] =
       benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// The Newton matrix c_M M + K_T of the hawkmoth's default FEM (at rest in its reference
+// state, 100 steps per cycle): CHOLMOD's supernodal LLᵀ with the fill-reducing ordering
+// range(0) (0: CHOLMOD's default choice, 1: AMD, 2: METIS, 3: NESDIS); each iteration one
+// numeric factorisation and one solve. Counters: nonzeros of L and flops of a factorisation.
+void BM_HawkmothNewtonMatrixFactorisation(benchmark::State& state) {
+  const auto s = make_setup("wings/hawkmoth.toml", "cases/hover_flexible.toml", false);
+  const fsi::FemStructureModel& m = *s->structure;
+  fem::NonlinearAssembler assembler(m.corotational, m.dynamics.eliminated);
+  Eigen::VectorXd f(m.corotational.num_dofs());
+  const double h = 1.0 / (s->flight.kinematics.frequency * s->flight.numerics.steps_per_cycle);
+  fem::TangentExtras ex;
+  ex.mass_scale = (1.0 - m.dynamics.alpha_m) / ((1.0 - m.dynamics.alpha_f) * m.dynamics.beta * h * h);
+  assembler.evaluate(fem::reference_state(m.corotational), f, true, ex);
+  Eigen::CholmodSupernodalLLT<fem::SparseMatrix, Eigen::Lower> llt;
+  const int ordering[] = {0, CHOLMOD_AMD, CHOLMOD_METIS, CHOLMOD_NESDIS};
+  if (state.range(0) > 0) {
+    llt.cholmod().nmethods = 1;
+    llt.cholmod().method[0].ordering = ordering[state.range(0)];
+    llt.cholmod().postorder = 1;
+  }
+  llt.analyzePattern(assembler.tangent());
+  const Eigen::VectorXd r = Eigen::VectorXd::Ones(assembler.tangent().rows());
+  Eigen::VectorXd x;
+  for (auto _ : state) {
+    llt.factorize(assembler.tangent());
+    x = llt.solve(r);
+    benchmark::DoNotOptimize(x.data());
+  }
+  state.counters["lnz"] = llt.cholmod().lnz;
+  state.counters["flops"] = llt.cholmod().fl;
+  state.counters["ordering"] = llt.cholmod().selected >= 0 ? llt.cholmod().method[llt.cholmod().selected].ordering : -1;
 }
 
 void BM_HawkmothFemStructureStep(benchmark::State& state) {
@@ -158,20 +199,28 @@ void BM_HawkmothFemStructureStepLegacy(benchmark::State& state) {
 void BM_FilmWingFemStructureStep(benchmark::State& state) {
   structure_step(state, "wings/mav_film_wing_25um.toml", "cases/mav_film_wing.toml");
 }
+// Argument: 1 loose intermediate structure solves (the default), 0 all at full accuracy.
 void BM_HawkmothFemCoupledCycle(benchmark::State& state) {
-  coupled_cycle(state, "wings/hawkmoth.toml", "cases/hover_flexible.toml");
+  coupled_cycle(state, "wings/hawkmoth.toml", "cases/hover_flexible.toml", 0, state.range(0) != 0);
+}
+// The first state.range(0) coupled steps of the hawkmoth's hover (a short, representative
+// part of the cycle for profiling: the start of the downstroke).
+void BM_HawkmothFemCoupledSteps(benchmark::State& state) {
+  coupled_cycle(state, "wings/hawkmoth.toml", "cases/hover_flexible.toml", static_cast<int>(state.range(0)));
 }
 void BM_FilmWingFemCoupledCycle(benchmark::State& state) {
   coupled_cycle(state, "wings/mav_film_wing_25um.toml", "cases/mav_film_wing.toml");
 }
 
+BENCHMARK(BM_HawkmothNewtonMatrixFactorisation)->DenseRange(0, 3)->Iterations(3)->Unit(benchmark::kMillisecond);
 // 100 (hawkmoth) and 80 (film wing) structure steps: one cycle each.
 // Argument: DynamicsOptions::refactor_rate in percent.
 BENCHMARK(BM_HawkmothFemStructureStep)->Arg(25)->Arg(60)->Iterations(100)->Unit(benchmark::kMillisecond)->UseRealTime();
 // The legacy solver: the first 3 steps only (seconds each).
 BENCHMARK(BM_HawkmothFemStructureStepLegacy)->Arg(0)->Iterations(3)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_FilmWingFemStructureStep)->Arg(25)->Iterations(80)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_HawkmothFemCoupledCycle)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(BM_HawkmothFemCoupledCycle)->Arg(1)->Arg(0)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(BM_HawkmothFemCoupledSteps)->Arg(10)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 BENCHMARK(BM_FilmWingFemCoupledCycle)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace

@@ -142,7 +142,7 @@ Eigen::Matrix3d base_frame(const DynamicsModel& model, const CorotationalState& 
 }  // namespace
 
 StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eigen::VectorXd& f_ext,
-                const PrescribedMotion* pm, StepStart start) {
+                const PrescribedMotion* pm, StepStart start, double tolerance_scale) {
   const CorotationalModel& cm = *model.structure;
   DynamicsData::Work& w = *d.work_;
   const std::vector<int>& free = w.assembler.free_dofs();
@@ -150,6 +150,7 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
   if (f_ext.size() != cm.num_dofs()) throw std::invalid_argument("step: load vector size does not match the DOF count");
   if (pm != nullptr && pm->position.size() != model.driven_nodes.size())
     throw std::invalid_argument("step: one prescribed motion per driven node is required");
+  if (!(tolerance_scale >= 1.0)) throw std::invalid_argument("step: tolerance_scale must be at least 1");
   // One Newton solve of the step: from the warm start or the predictor, with the kept
   // matrix (reuse) or a fresh one every iteration.
   auto newton_step = [&](bool warm, bool reuse) -> StepResult {
@@ -255,7 +256,7 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
         res.failure = "t = " + std::to_string(d.time + h) + " s: the residual is not finite";
         return res;
       }
-      if (rn <= model.options.tolerance * scale || rn == 0.0) {
+      if (rn <= tolerance_scale * model.options.tolerance * scale || rn == 0.0) {
         res.converged = true;
         break;
       }
@@ -278,7 +279,7 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
         double& m = translation ? max_t : max_r;
         m = std::max(m, std::abs(w.dx(i)));
       }
-      const double tol_u = model.options.increment_tolerance;
+      const double tol_u = tolerance_scale * model.options.increment_tolerance;
       const bool small_increment = max_t <= tol_u * model.size && max_r <= tol_u;
       // Contraction of a kept matrix: the ratio of successive corrections (the residual's
       // ratio is no measure: the first correction of a thin membrane stretches it and

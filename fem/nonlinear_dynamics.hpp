@@ -162,7 +162,7 @@ class DynamicsData {
 
  private:
   friend StepResult step(const DynamicsModel&, DynamicsData&, double, const Eigen::VectorXd&,
-                         const PrescribedMotion*, StepStart);
+                         const PrescribedMotion*, StepStart, double);
   struct Work;
   std::unique_ptr<Work> work_;
   SolverCounters counters_;
@@ -174,7 +174,11 @@ class DynamicsData {
 /// \param start       PreviousSolution: start from the answer of the last converged call if
 ///                    it was made from the same t_n with the same dt (the caller restored
 ///                    the data to that t_n's state); else the predictor
+/// \param tolerance_scale  ≥ 1: Newton stops at this multiple of DynamicsOptions::tolerance
+///                    and increment_tolerance (an intermediate answer, e.g. a coupling
+///                    sub-iteration far from its fixed point; docs/fsi.md); 1: full accuracy
 StepResult step(const DynamicsModel& model, DynamicsData& data, double dt, const Eigen::VectorXd& f_ext,
-                const PrescribedMotion* prescribed, StepStart start = StepStart::Predictor);
+                const PrescribedMotion* prescribed, StepStart start = StepStart::Predictor,
+                double tolerance_scale = 1.0);
 
 }  // namespace flapsim::fem

@@ -16,6 +16,11 @@
 ///     residual, or with CouplingMethod::InterfaceQuasiNewton, from the second
 ///     sub-iteration on, the IQN-ILS combination of the step's answers ŝ
 ///     (interface_quasi_newton.hpp); and back to 1;
+///  Accuracy of the structure's solves (StructureData::set_solve_accuracy): a sub-iteration
+///  that starts from a change δ of the last one solves to max(1, δ / tolerance) times the
+///  structure's own tolerance (the FEM's error then stays below 1 % of δ), the predictor to
+///  the first change of the previous step; converged on a looser answer, the structure is
+///  solved once more with the same loads at full accuracy and the change measured again;
 ///  4. accept ŝ (the structure's exact answer to the last loads); then (shed_wake, after
 ///     the caller has written its outputs of the step) convect and shed the wake.
 /// The number of lattice solves of the step is its coupling iteration count.
@@ -48,6 +53,9 @@ struct CouplingSettings {
   int max_iterations = 50;      ///< lattice solves per step before giving up
   double tolerance = 1e-6;      ///< see the file comment [rad]
   double first_relaxation = 0.5;  ///< ω of the very first sub-iteration
+  /// Intermediate structure solves to 1 % of the coupling's current change (file comment);
+  /// false: every solve at the structure's full accuracy.
+  bool loose_intermediate_solves = true;
 };
 
 struct FsiModel {
@@ -79,6 +87,8 @@ struct FsiData {
   long step = 0;             ///< steps taken
   int last_iterations = 0;   ///< lattice solves in the last step
   double last_change = 0.0;  ///< convergence measure at the end of the last step [rad]
+  double first_change = 0.0;  ///< the last step's change after its first sub-iteration [rad]
+  long accuracy_solves = 0;   ///< structure solves repeated at full accuracy (see above)
   long total_iterations = 0;
 
   /// Time of the accepted state [s].

@@ -123,7 +123,7 @@ void FemStructureData::solve(double dt) {
   // A sub-iteration after the first starts Newton from the last answer of this step: the
   // answer to the given loads is the same to the solver's tolerance (fem_structure.hpp).
   const fem::StepResult r =
-      fem::step(model_.dynamics, *dynamics_, dt, loads_, &motion, fem::StepStart::PreviousSolution);
+      fem::step(model_.dynamics, *dynamics_, dt, loads_, &motion, fem::StepStart::PreviousSolution, accuracy_);
   if (!r.converged) throw StructureFailure("FEM: " + r.failure);
   read_trial();
   pose_is_trial_ = true;

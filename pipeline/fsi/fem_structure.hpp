@@ -13,7 +13,8 @@
 /// solve of a step from the rigid-base predictor), so the structure's answer ŝ to given
 /// loads does not depend on the iterate to the FEM's tolerance, which
 /// coupled_dynamics_options puts at 1 % of the coupling's; the accepted state is ŝ, the
-/// FEM's own converged step.
+/// FEM's own converged step. An intermediate solve may stop at a looser tolerance
+/// (set_solve_accuracy: the coupled step asks for 1 % of its current change; coupled_step.hpp).
 
 #include <Eigen/Core>
 
@@ -86,6 +87,7 @@ class FemStructureData : public StructureData {
   void add_panel_loads(const uvlm::PanelLoads& panels) override;
   void prescribe(double t) override;
   void solve(double dt) override;
+  double set_solve_accuracy(double factor) override { return accuracy_ = factor > 1.0 ? factor : 1.0; }
   void start_iterate() override;
   void pose_iterate() override { pose_is_trial_ = false; }
   void surface(Eigen::Matrix3Xd& positions, Eigen::Matrix3Xd& velocities) const override;
@@ -122,6 +124,7 @@ class FemStructureData : public StructureData {
   Eigen::Matrix3Xd trial_x_, trial_v_;     ///< ŝ's node translations and velocities
   Eigen::Matrix3Xd iterate_x_, iterate_v_; ///< s̃'s
   bool pose_is_trial_ = true;              ///< the surface follows ŝ (else s̃)
+  double accuracy_ = 1.0;                  ///< the next solve's tolerance, in multiples of the FEM's
 };
 
 }  // namespace flapsim::fsi

@@ -122,6 +122,14 @@ class StructureData {
   /// trial state ŝ. On return the structure's pose (surface()) is the trial's.
   /// \throws StructureFailure
   virtual void solve(double dt) = 0;
+  /// \brief The next solves may stop at \p factor (≥ 1) times the structure's own convergence
+  /// tolerance: an intermediate answer of the coupling, far from its fixed point. 1 (the
+  /// default): full accuracy, which the accepted state must have. Returns the factor the
+  /// structure will use: 1 for a structure solved to its accuracy whatever the factor (the chain).
+  virtual double set_solve_accuracy(double factor) {
+    (void)factor;
+    return 1.0;
+  }
   /// The iterate s̃ := ŝ (the predictor of a step).
   virtual void start_iterate() = 0;
   /// \brief Puts the structure's pose at the iterate s̃ (its time is the trial's).

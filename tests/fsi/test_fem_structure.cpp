@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <numbers>
 
 #include "fem/structured_mesh.hpp"
 #include "fsi/plate_wing_fixtures.hpp"
@@ -146,6 +147,98 @@ TEST(FsiFemStructure, AWarmStartedSolveGivesTheColdSolvesAnswer) {
   std::printf("  warm vs cold %.2e of the span; the load moves the plate by %.2e\n", apart, moved);
   EXPECT_LT(apart, 1e-10);
   EXPECT_GT(moved, 1e-6);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(FsiFemStructure, ALooseSolveFinishedAtFullAccuracyGivesTheColdSolvesAnswer) {
+  // StructureData::set_solve_accuracy: an intermediate solve stops at 10⁴ times the FEM's
+  // tolerance, and the full-accuracy solve that follows it (warm, from the loose answer) must
+  // give the cold full-accuracy solve's answer to the FEM's tolerance (as the warm start
+  // above: 1e-10 of the span), while the loose solve itself takes fewer Newton iterations.
+  const auto plate = fem_plate(2e-4, 70e9, true);
+  const double dt = 1.0 / (26.1 * kSteps);
+  uvlm::PanelLoads load;
+  load.force = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
+  load.force.row(2).setConstant(2e-4);
+  load.point = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
+  auto loose_data = plate->make_data();
+  auto cold_data = plate->make_data();
+  auto& loose = static_cast<fsi::FemStructureData&>(*loose_data);
+  auto& cold = static_cast<fsi::FemStructureData&>(*cold_data);
+  loose.initialize(0.0);
+  cold.initialize(0.0);
+  for (fsi::FemStructureData* d : {&loose, &cold}) {
+    d->set_external_loads(dt);
+    d->add_panel_loads(load);
+  }
+  EXPECT_EQ(loose.set_solve_accuracy(1e4), 1e4);
+  loose.solve(dt);
+  const long loose_iterations = loose.dynamics().counters().iterations;
+  const Eigen::Matrix3Xd loose_answer = loose.trial_positions();
+  EXPECT_EQ(loose.set_solve_accuracy(0.5), 1.0);  // never tighter than the FEM's own tolerance
+  loose.solve(dt);
+  cold.solve(dt);
+  const long cold_iterations = cold.dynamics().counters().iterations;
+  const double span = 0.040;
+  const double apart = (loose.trial_positions() - cold.trial_positions()).lpNorm<Eigen::Infinity>() / span;
+  const double loose_error = (loose_answer - cold.trial_positions()).lpNorm<Eigen::Infinity>() / span;
+  std::printf("  loose then full vs cold %.2e of the span (loose alone %.2e); Newton iterations %ld loose, %ld cold\n",
+              apart, loose_error, loose_iterations, cold_iterations);
+  EXPECT_LT(apart, 1e-10);
+  EXPECT_LT(loose_iterations, cold_iterations);
+}
+
+TEST(FsiFemStructure, LooseIntermediateSolvesKeepTheCoupledAnswer) {
+  // CouplingSettings::loose_intermediate_solves (coupled_step.hpp): the coupling's
+  // intermediate structure solves to 1 % of its current change, the accepted one at full
+  // accuracy. Both runs converge every step to the coupling tolerance τ = 1e-8 (fsi_model),
+  // so their accepted states may differ by the coupling's own error, a few τ (bound: 10 τ of
+  // the span), and their lifts by that error seen through the lattice's ∂Γ/∂t, which divides
+  // a change over one step by Δt: τ/(2π f Δt) = τ N/2π of the peak at N steps per wingbeat
+  // (bound 10 τ N/2π; the states alone move it by about τ). A 0.2 mm aluminium plate
+  // (first bending near 100 Hz, 4 × the wingbeat: it bends), the first 40 steps of the
+  // wingbeat, with fewer Newton iterations in all.
+  constexpr int kRun = 40;
+  const double dt = 1.0 / (26.1 * kSteps);
+  auto run = [&](bool loose, std::vector<double>& lift, Eigen::Matrix3Xd& x, long& newton) {
+    fsi::FsiModel m = fsi_model(fem_plate(2e-4, 70e9, true));
+    m.coupling.loose_intermediate_solves = loose;
+    fsi::FsiData d(m);
+    fsi::initialize(m, d, 0.0);
+    double worst = 0.0;
+    for (int n = 0; n < kRun; ++n) {
+      fsi::coupled_step(m, d, dt);
+      lift.push_back(d.lattice->loads.total_force.z());
+      fsi::shed_wake(m, d);
+      const auto& s = static_cast<const fsi::FemStructureData&>(*d.structure);
+      x.conservativeResize(3, s.trial_positions().cols() * (n + 1));
+      x.rightCols(s.trial_positions().cols()) = s.trial_positions();
+      worst = std::max(worst, d.last_change);
+    }
+    newton = static_cast<const fsi::FemStructureData&>(*d.structure).dynamics().counters().iterations;
+    EXPECT_LE(worst, m.coupling.tolerance);
+    return d.accuracy_solves;
+  };
+  std::vector<double> lift_full, lift_loose;
+  Eigen::Matrix3Xd x_full, x_loose;
+  long newton_full = 0, newton_loose = 0;
+  EXPECT_EQ(run(false, lift_full, x_full, newton_full), 0);
+  EXPECT_GT(run(true, lift_loose, x_loose, newton_loose), 0);
+  double peak = 0.0, lift_apart = 0.0;
+  for (int n = 0; n < kRun; ++n) {
+    peak = std::max(peak, std::abs(lift_full[n]));
+    lift_apart = std::max(lift_apart, std::abs(lift_loose[n] - lift_full[n]));
+  }
+  const double span = 0.040, tau = 1e-8;
+  const double apart = (x_loose - x_full).lpNorm<Eigen::Infinity>() / span;
+  std::printf("  states %.2e of the span, lift %.2e of its peak apart; Newton iterations %ld loose, %ld full\n", apart,
+              lift_apart / peak, newton_loose, newton_full);
+  EXPECT_LT(apart, 10.0 * tau);
+  EXPECT_LT(lift_apart, 10.0 * tau * kSteps / (2.0 * std::numbers::pi) * peak);
+  EXPECT_LT(newton_loose, newton_full);
 }
 
 }  // namespace
