@@ -38,46 +38,12 @@ void PreconditionedGmres::reserve(int n, int restart) {
   w_.setZero(n);
   z_.setZero(n);
   r_.setZero(n);
-  inverse_.setZero(n, n);
-}
-
-void PreconditionedGmres::set_preconditioner(const Eigen::PartialPivLU<Eigen::MatrixXd>& preconditioner) {
-  const Eigen::Index n = inverse_.rows();
-  if (preconditioner.rows() != n) throw std::invalid_argument("GMRES: the preconditioner's size is not the reserved one");
-  // M⁻¹ = U⁻¹ L⁻¹ P, column by column: each column is the solve of one unit vector, the
-  // same operations whichever thread does it.
-  const bool parallel = n >= kParallelRows && !omp_in_parallel() && omp_get_max_threads() > 1;
-#pragma omp parallel for schedule(static) if (parallel)
-  for (int b = 0; b < kProductBlocks; ++b) {
-    const Eigen::Index c0 = n * b / kProductBlocks, c1 = n * (b + 1) / kProductBlocks;
-    auto block = inverse_.middleCols(c0, c1 - c0);
-    block.setZero();
-    for (Eigen::Index c = c0; c < c1; ++c) block(preconditioner.permutationP().indices()(c), c - c0) = 1.0;  // P e_c
-    preconditioner.matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(block);
-    preconditioner.matrixLU().triangularView<Eigen::Upper>().solveInPlace(block);
-  }
 }
 
 PreconditionedGmres::Result PreconditionedGmres::solve(const Eigen::MatrixXd& a,
                                                        const Eigen::PartialPivLU<Eigen::MatrixXd>& preconditioner,
                                                        const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                                        double tolerance, int max_iterations) {
-  return solve_with(
-      a, [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) { out = preconditioner.solve(v); }, b, x, tolerance,
-      max_iterations);
-}
-
-PreconditionedGmres::Result PreconditionedGmres::solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
-                                                       Eigen::VectorXd& x, double tolerance, int max_iterations) {
-  return solve_with(
-      a, [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) { multiply(inverse_, v, out); }, b, x, tolerance,
-      max_iterations);
-}
-
-template <class Precondition>
-PreconditionedGmres::Result PreconditionedGmres::solve_with(const Eigen::MatrixXd& a, Precondition&& precondition,
-                                                            const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                                                            double tolerance, int max_iterations) {
   const Eigen::Index n = basis_.rows();
   const int restart = static_cast<int>(hessenberg_.cols());
   if (a.rows() != n || a.cols() != n || b.size() != n || x.size() != n)
@@ -106,8 +72,7 @@ PreconditionedGmres::Result PreconditionedGmres::solve_with(const Eigen::MatrixX
     g_(0) = beta;
     int j = 0;
     for (; j < restart && result.iterations < max_iterations;) {
-      r_ = basis_.col(j);  // r_ is free until the restart recomputes it
-      precondition(r_, z_);
+      z_ = preconditioner.solve(basis_.col(j));
       multiply(a, z_, w_);
       for (int i = 0; i <= j; ++i) {  // modified Gram–Schmidt
         const double h = w_.dot(basis_.col(i));
@@ -143,7 +108,7 @@ PreconditionedGmres::Result PreconditionedGmres::solve_with(const Eigen::MatrixX
       y_(i) = s / hessenberg_(i, i);
     }
     w_.noalias() = basis_.leftCols(j) * y_.head(j);
-    precondition(w_, z_);
+    z_ = preconditioner.solve(w_);
     x += z_;
   }
 }

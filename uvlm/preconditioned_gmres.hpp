@@ -32,25 +32,11 @@ class PreconditionedGmres {
   Result solve(const Eigen::MatrixXd& a, const Eigen::PartialPivLU<Eigen::MatrixXd>& preconditioner,
                const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance, int max_iterations);
 
-  /// Keep M⁻¹ of this factorisation as the preconditioner of solve(a, b, …): computed once
-  /// (2 n³ flops, the columns in fixed blocks shared among the threads), it turns each
-  /// iteration's two triangular solves (serial) into one product with M⁻¹, split among the
-  /// threads like the product with A (the same 2 n² flops; the same bits on any thread count).
-  void set_preconditioner(const Eigen::PartialPivLU<Eigen::MatrixXd>& preconditioner);
-  /// The same as solve(a, preconditioner, …) with the kept M⁻¹ (set_preconditioner).
-  Result solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance,
-               int max_iterations);
-
  private:
   Eigen::MatrixXd basis_;      ///< n × (restart + 1): the Krylov basis V
   Eigen::MatrixXd hessenberg_; ///< (restart + 1) × restart, triangularised in place
   Eigen::VectorXd cosine_, sine_, g_, y_;
   Eigen::VectorXd w_, z_, r_;
-  Eigen::MatrixXd inverse_;    ///< n × n: M⁻¹ (set_preconditioner)
-
-  template <class Precondition>
-  Result solve_with(const Eigen::MatrixXd& a, Precondition&& precondition, const Eigen::VectorXd& b,
-                    Eigen::VectorXd& x, double tolerance, int max_iterations);
 };
 
 }  // namespace flapsim::uvlm

@@ -300,7 +300,6 @@ void factorise(VortexLatticeData& d) {
   d.lu.compute(d.influence);
   d.has_factorisation = true;
   d.factorisation_current = true;
-  d.preconditioner_current = false;
   ++d.solver_counts.factorisations;
 }
 
@@ -313,12 +312,8 @@ void solve_circulations(const VortexLatticeModel& m, VortexLatticeData& d) {
     d.gamma = d.lu.solve(d.rhs);
     return;
   }
-  if (!d.preconditioner_current) {  // M⁻¹ of the factorisation the GMRES solves use
-    d.gmres.set_preconditioner(d.lu);
-    d.preconditioner_current = true;
-  }
   const PreconditionedGmres::Result r =
-      d.gmres.solve(d.influence, d.rhs, d.gamma, m.iterative_tolerance, m.iterative_max_iterations);
+      d.gmres.solve(d.influence, d.lu, d.rhs, d.gamma, m.iterative_tolerance, m.iterative_max_iterations);
   ++d.solver_counts.iterative_solves;
   d.solver_counts.iterations += r.iterations;
   if (!r.converged) {  // the earlier factorisation is too far from this matrix
@@ -349,7 +344,7 @@ void solve_steady_lattice(const VortexLatticeModel& m, VortexLatticeData& d, con
   d.rho = rho;
   detail::update_geometry(m, d, nodes, node_velocities, free_stream, 0.0);  // no time step: ¼ panel
   detail::build_influence(m, d);
-  d.has_factorisation = d.factorisation_current = d.preconditioner_current = false;  // the matrix below includes the wake
+  d.has_factorisation = d.factorisation_current = false;  // the matrix below includes the wake
   d.has_matrix = d.has_influence = false;
 
   // One straight wake row, trailing-edge row 1 and far row 0, carried by the trailing-edge ring.

@@ -245,7 +245,6 @@ struct VortexLatticeData {
   bool has_matrix = false;
   bool has_factorisation = false;      ///< lu holds a factorisation (possibly of an earlier matrix)
   bool factorisation_current = false;  ///< lu factorises `influence` itself
-  bool preconditioner_current = false; ///< gmres holds the inverse of lu's factorisation
   InfluenceSegments influence_segments;  ///< the segments the matrix is built from (scratch)
   PreconditionedGmres gmres;           ///< storage of the iterative solve (model.iterative_min_panels)
   LatticeSolverCounts solver_counts;

@@ -11,7 +11,6 @@
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -169,41 +168,4 @@ TEST(IterativeSolve, GmresSolvesADenseSystemToItsTolerance) {
   x.setZero();
   const Eigen::PartialPivLU<Eigen::MatrixXd> far(Eigen::MatrixXd::Identity(n, n));
   EXPECT_FALSE(g.solve(A, far, b, x, 1e-14, 2).converged);
-}
-
-TEST(IterativeSolve, TheKeptInverseIsThePreconditionerOfTheFactorsOnAnyThreadCount) {
-  // M⁻¹ kept from M's factors (set_preconditioner, 2 n³ flops in column blocks) preconditions
-  // as the factors do: the same answer to the tolerance, about the same iterations, and the
-  // same bits on one and two threads (the products are split in fixed row blocks). n = 500,
-  // above the size from which the products are shared among threads.
-  const int n = 500;
-  const Eigen::MatrixXd M = Eigen::MatrixXd::Random(n, n) + 40.0 * Eigen::MatrixXd::Identity(n, n);
-  const Eigen::MatrixXd A = M + 0.5 * Eigen::MatrixXd::Random(n, n);
-  const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
-  PreconditionedGmres g;
-  g.reserve(n, 30);
-  Eigen::VectorXd by_factors = Eigen::VectorXd::Zero(n);
-  const PreconditionedGmres::Result rf = g.solve(A, lu, b, by_factors, 1e-13, 100);
-  const int threads = omp_get_max_threads();
-  Eigen::VectorXd by_inverse[2];
-  PreconditionedGmres::Result ri[2];
-  for (int t = 0; t < 2; ++t) {
-    omp_set_num_threads(t + 1);
-    g.set_preconditioner(lu);
-    by_inverse[t] = Eigen::VectorXd::Zero(n);
-    ri[t] = g.solve(A, b, by_inverse[t], 1e-13, 100);
-  }
-  omp_set_num_threads(threads);
-  const Eigen::VectorXd exact = A.partialPivLu().solve(b);
-  std::printf("[ value ] GMRES, n = %d: %d iterations by M's factors, %d by M^-1; answers %.2g, %.2g from A's LU\n", n,
-              rf.iterations, ri[0].iterations, (by_factors - exact).norm() / exact.norm(),
-              (by_inverse[0] - exact).norm() / exact.norm());
-  ASSERT_TRUE(rf.converged);
-  ASSERT_TRUE(ri[0].converged);
-  EXPECT_LE((b - A * by_inverse[0]).norm(), 1e-13 * b.norm());  // the stopping test on the true residual
-  EXPECT_LT((by_inverse[0] - exact).norm(), 1e-11 * exact.norm());
-  EXPECT_LE(std::abs(ri[0].iterations - rf.iterations), 1);
-  EXPECT_EQ(ri[0].iterations, ri[1].iterations);
-  EXPECT_TRUE(by_inverse[0] == by_inverse[1]);  // bit for bit on 1 and 2 threads
 }
