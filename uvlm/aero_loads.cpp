@@ -100,11 +100,20 @@ void compute_bernoulli_loads(const VortexLatticeModel& m, VortexLatticeData& d) 
   add_leading_edge_forces(m, d);
   // Bound-induced velocity at the collocation points (the tangential part matters on a
   // curved or deformed surface; on a flat one it is normal to the panels).
+  // On the threads of one parallel region, each point's sum as on one thread
+  // (detail::for_target_chunks): the same bits whatever the thread count.
   for (int k = 0; k < np; ++k) d.eval.set(k, d.collocation.col(k));
   d.eval.size = np;
   d.eval.zero_velocity();
-  add_induced_velocity(d.bound_segments, d.eval, m.bound_core());
-  add_induced_velocity(d.trailing_edge_segments, d.eval, m.core);
+  const std::size_t segments = d.bound_segments.size() + d.trailing_edge_segments.size();
+  detail::for_target_chunks(static_cast<std::size_t>(np), static_cast<std::size_t>(np) * segments,
+                            [&](std::size_t i0, std::size_t c) {
+                              PointSet& e = d.eval;
+                              const double *x = e.x.data() + i0, *y = e.y.data() + i0, *z = e.z.data() + i0;
+                              double *u = e.u.data() + i0, *v = e.v.data() + i0, *w = e.w.data() + i0;
+                              add_induced_velocity(d.bound_segments, x, y, z, c, u, v, w, m.bound_core());
+                              add_induced_velocity(d.trailing_edge_segments, x, y, z, c, u, v, w, m.core);
+                            });
   const auto& R = d.ring_nodes;
   for (int j = 0; j < ns; ++j)
     for (int i = 0; i < nc; ++i) {

@@ -60,16 +60,19 @@ void collect_segments(const VortexLatticeModel& m, VortexLatticeData& d, bool la
   };
   // Rows of chordwise ring index q in [q0, nc): spanwise segments on node rows q0..nc
   // (direction j → j+1; row nc, the trailing-edge vortex, has the wake's core) and
-  // chordwise segments of those rows (direction q → q+1).
+  // chordwise segments of those rows (direction q → q+1). Both with q running fastest, as
+  // the columns do (ring q + nc j): the assembly below then reads each side's terms of
+  // consecutive columns from consecutive entries of the rows (a segment's term does not
+  // depend on where it is stored).
   const int q0 = last_row_only ? nc - 1 : 0, rows = nc - q0;
   std::vector<int>& col = g.column;
   const int span0 = static_cast<int>(g.size);
-  for (int q = q0; q <= nc; ++q)
-    for (int j = 0; j < ns; ++j) push(m.node(q, j), m.node(q, j + 1), q == nc ? inv_rc2_wake : inv_rc2);
+  for (int j = 0; j < ns; ++j)
+    for (int q = q0; q <= nc; ++q) push(m.node(q, j), m.node(q, j + 1), q == nc ? inv_rc2_wake : inv_rc2);
   const int chord0 = static_cast<int>(g.size);
   for (int j = 0; j <= ns; ++j)
     for (int q = q0; q < nc; ++q) push(m.node(q, j), m.node(q + 1, j), inv_rc2);
-  auto span = [&](int q, int j) { return span0 + (q - q0) * ns + j; };
+  auto span = [&](int q, int j) { return span0 + j * (rows + 1) + (q - q0); };
   auto chord = [&](int q, int j) { return chord0 + j * rows + (q - q0); };
   g.columns = 0;
   for (int j = 0; j < ns; ++j)
