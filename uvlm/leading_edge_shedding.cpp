@@ -21,7 +21,8 @@
 /// the system is solved again after each change (at most 2 ns + 1 solves). Without the
 /// first rule such strips shed vorticity of the wrong sign to hold their LESP (6 of 310
 /// strip-steps on the Robofly wing at 50°, 30 steps; test
-/// uvlm.RevolvingWing.ShedLeadingEdgeHoldsEveryStripAtTheCriticalLesp).
+/// uvlm.RevolvingWing.ShedLeadingEdgeHoldsEveryStripAtTheCriticalLesp). A strip at an end of
+/// the outline (kResolvedStripChordRatio) never joins.
 
 #include "uvlm/lattice_internal.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
