@@ -42,9 +42,9 @@ Eigen::Vector3d leading_edge_force(const VortexLatticeModel& m, VortexLatticeDat
   Eigen::Vector3d out = Eigen::Vector3d::Zero();
   switch (m.leading_edge) {
     case LeadingEdge::None: break;
-    case LeadingEdge::Attached:
-    case LeadingEdge::Shed:  // the suction the edge holds, up to LESP_crit (leading_edge_sheet.hpp)
-      out = suction;
+    case LeadingEdge::Attached: out = suction; break;
+    case LeadingEdge::Shed:  // the suction the edge holds (leading_edge_loads.cpp)
+      out = shed_edge_force(m, d, j, suction);
       break;
     case LeadingEdge::Separated:
       // Polhamus: the suction's magnitude acts normal to the surface, on the side the

@@ -127,6 +127,10 @@ void add_leading_edge_ring_to_rhs(const VortexLatticeModel& m, VortexLatticeData
 /// After d.gamma = A⁻¹ r: the LESP of every strip, and the circulations with the
 /// leading-edge rings of the strips beyond LESP_crit; true when a strip shed.
 bool shed_leading_edge_vorticity(const VortexLatticeModel& m, VortexLatticeData& d);
+/// The leading-edge force of strip j with the shed leading edge, from the in-plane suction
+/// the lattice gives it (leading_edge_loads.cpp).
+Eigen::Vector3d shed_edge_force(const VortexLatticeModel& m, const VortexLatticeData& d, int j,
+                                const Eigen::Vector3d& suction);
 /// Velocity of the sheet's nodes (into d.le_sheet.nodes u/v/w) from the wake (by its tree
 /// when wake_by_tree), the far wake, the bound and trailing-edge segments and the sheet.
 void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bool wake_by_tree);

@@ -21,7 +21,8 @@
 /// the system is solved again after each change (at most 2 ns + 1 solves). Without the
 /// first rule such strips shed vorticity of the wrong sign to hold their LESP (6 of 310
 /// strip-steps on the Robofly wing at 50°, 30 steps; test
-/// uvlm.RevolvingWing.ShedLeadingEdgeHoldsEveryStripAtTheCriticalLesp).
+/// uvlm.RevolvingWing.ShedLeadingEdgeHoldsEveryStripAtTheCriticalLesp). A strip at an end of
+/// the outline (kResolvedStripChordRatio) never joins.
 
 #include "uvlm/lattice_internal.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
@@ -34,8 +35,9 @@ namespace flapsim::uvlm::detail {
 
 namespace {
 
-/// Γ_1 at LESP = 1 for strip j [m²/s]: U c (θ1 + sin θ1) / 1.13 (leading_edge_sheet.hpp).
-double unit_lesp_gamma(const VortexLatticeModel& m, const VortexLatticeData& d, int j) {
+/// Γ_1 at LESP = 1 for strip j [m²/s]: U c (θ1 + sin θ1) / 1.13 (leading_edge_sheet.hpp);
+/// keeps U and c in the sheet (the suction of a shedding strip, leading_edge_loads.cpp).
+double unit_lesp_gamma(const VortexLatticeModel& m, VortexLatticeData& d, int j) {
   double chord = 0.0;
   for (int i = 0; i < m.chordwise; ++i) chord += d.chord_length(m.panel(i, j));
   const double first = d.chord_length(m.panel(0, j));
@@ -44,7 +46,18 @@ double unit_lesp_gamma(const VortexLatticeModel& m, const VortexLatticeData& d, 
       d.free_stream - 0.5 * (d.node_velocities.col(m.node(0, j)) + d.node_velocities.col(m.node(0, j + 1)));
   const Eigen::Vector3d e = d.span_tangent.col(m.panel(0, j));
   const double speed = (w - w.dot(e) * e).norm();
+  d.le_sheet.edge_speed(j) = speed;
+  d.le_sheet.strip_chord(j) = chord;
   return speed * chord * (theta1 + std::sin(theta1)) / kLespLatticeFactor;
+}
+
+/// Whether strip j resolves a leading edge (kResolvedStripChordRatio): the chords of its
+/// two node columns, leading- to trailing-edge node, within the factor of each other.
+bool strip_is_resolved(const VortexLatticeModel& m, const VortexLatticeData& d, int j) {
+  const int nc = m.chordwise;
+  const double c0 = (d.nodes.col(m.node(nc, j)) - d.nodes.col(m.node(0, j))).norm();
+  const double c1 = (d.nodes.col(m.node(nc, j + 1)) - d.nodes.col(m.node(0, j + 1))).norm();
+  return std::min(c0, c1) >= kResolvedStripChordRatio * std::max(c0, c1);
 }
 
 /// LESP of every strip from d.gamma and the sheet's current leading-edge rings; returns
@@ -53,11 +66,12 @@ bool update_lesp(const VortexLatticeModel& m, VortexLatticeData& d, Eigen::Vecto
   LeadingEdgeSheet& s = d.le_sheet;
   bool joined = false;
   for (int j = 0; j < m.spanwise; ++j) {
+    s.resolved[j] = strip_is_resolved(m, d, j) ? 1 : 0;
     const double unit = unit_lesp_gamma(m, d, j);
     const double gamma1 = d.gamma(m.panel(0, j)) - s.current(j);
     s.critical_gamma(j) = m.lesp_critical * unit;
     s.lesp(j) = unit > 0.0 ? gamma1 / unit : (gamma1 == 0.0 ? 0.0 : std::copysign(HUGE_VAL, gamma1));
-    if (!s.shedding[j] && std::abs(gamma1) > s.critical_gamma(j)) {
+    if (s.resolved[j] && !s.shedding[j] && std::abs(gamma1) > s.critical_gamma(j)) {
       s.shedding[j] = 1;
       target(j) = std::copysign(s.critical_gamma(j), gamma1);
       joined = true;

@@ -31,6 +31,9 @@ void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
   lesp_unshed.setZero(ns);
   critical_gamma.setZero(ns);
   shedding.assign(static_cast<std::size_t>(ns), 0);
+  resolved.assign(static_cast<std::size_t>(ns), 1);
+  edge_speed.setZero(ns);
+  strip_chord.setZero(ns);
   // Rings 0 … rings (the last: the leading-edge ring): spanwise rows 0 … rings, legs of each ring.
   segments.reserve(node_rows * static_cast<std::size_t>(ns) + node_rows * n1);
   columns.setZero(np, ns);

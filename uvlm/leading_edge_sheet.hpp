@@ -61,6 +61,14 @@ namespace flapsim::uvlm {
 /// the A0 term over the first panel (J. Aircraft 2019, eq. 6).
 inline constexpr double kLespLatticeFactor = 1.13;
 
+/// A strip whose two node columns' chords differ by more than this factor holds an end of
+/// the outline (a rounded root or tip, where the chord falls toward zero): its lattice does
+/// not resolve a leading edge that faces the flow, so the 2-D criterion is not applied there
+/// and the strip keeps the suction analogy of LeadingEdge::Separated (Polhamus 1966). A
+/// rectangular or gently tapered strip (ratio ≥ 0.5) is resolved. Chosen on the geometry
+/// (docs/uvlm.md, "Leading-edge vortex shedding: measurements"), not on a result.
+inline constexpr double kResolvedStripChordRatio = 0.5;
+
 struct LeadingEdgeSheet {
   int rows = 0;                      ///< stored rings; node rows 0 … rows (row `rows` = release row)
   int capacity = 0;                  ///< rings the storage holds
@@ -75,6 +83,9 @@ struct LeadingEdgeSheet {
   Eigen::VectorXd lesp_unshed;       ///< the same before the solve's shedding (every ring as accepted)
   Eigen::VectorXd critical_gamma;    ///< |Γ_1| at LESP_crit per strip in the last solve [m²/s]
   std::vector<char> shedding;        ///< per strip: shed in the last solve
+  std::vector<char> resolved;        ///< per strip: the criterion applies (kResolvedStripChordRatio)
+  Eigen::VectorXd edge_speed;        ///< U of each strip's LESP in the last solve [m/s]
+  Eigen::VectorXd strip_chord;       ///< c of each strip's LESP in the last solve [m]
   SegmentSet segments;               ///< the sheet's segments (without the one on the first bound vortex)
   // Scratch of the bordered solve (allocated once).
   Eigen::MatrixXd columns;           ///< np × ns: normal velocity of each unit leading-edge ring
