@@ -8,12 +8,12 @@ A's time after that start, as a fraction of the period (negative: the wing rotat
 the stroke reverses). Fig. 15 gives the same measure at the tip. Here, over one whole
 cycle (the last one the run completed):
 
-  t0        the base's sweep maximum that starts the cycle (the stroke reversal before
-            the falling alpha = 90 deg crossing); t0 + T/2 the sweep minimum (before the
-            rising crossing);
-  base      the base's falling alpha = 90 deg crossing within [t0 - T/2, t0 + T/2) and
-            its rising one within [t0, t0 + T): (crossing - reversal) / T, mean of the two;
-            reproduces the case's dpsi;
+  t0        the base's sweep maximum that starts the cycle (the stroke reversal of
+            the falling alpha = 90 deg crossing); r1 = t0 + T/2 the adjacent sweep minimum
+            (the rising crossing's; t0 - T/2 if the run ends before t0 + T);
+  base      the base's falling alpha = 90 deg crossing within half a period of t0 and
+            its rising one within half a period of r1: (crossing - reversal) / T, mean of
+            the two; reproduces the case's dpsi;
   rp_phase  the same for a wing section (the tip, or the outer body): ITS crossings of
             the SAME cycle (the same windows) minus the BASE's reversals: the paper's
             tip rotation phase of Fig. 15 (read as: the tip's point A on the cycle that
@@ -90,25 +90,31 @@ def first_in(times, lo, hi):
     return inside[0] if inside else None
 
 
-def last_cycle_start(t, phi_base, period):
-    """The last base sweep maximum t0 with the whole window [t0 - T/2, t0 + T] in the run."""
-    starts = [s for s in extrema(t, phi_base, +1) if s - 0.5 * period >= t[0] and s + period <= t[-1] + 1e-12 * period]
-    if not starts:
-        raise PhaseError("no complete wingbeat (a base sweep maximum with half a period before it "
-                         "and a whole period after it)")
-    return starts[-1]
+def last_cycle(t, phi_base, period):
+    """The last whole wingbeat of the run: (t0, r1), t0 a base sweep maximum and r1 the
+    adjacent sweep minimum (t0 + T/2, or t0 - T/2 when the run ends too soon after t0), with
+    a whole period around them in the run: each crossing is sought within half a period of
+    its reversal, so the windows cover [min(t0, r1) - T/2, max(t0, r1) + T/2]."""
+    tol = 1e-12 * period
+    for t0 in reversed(extrema(t, phi_base, +1)):
+        for r1 in (t0 + 0.5 * period, t0 - 0.5 * period):
+            if min(t0, r1) - 0.5 * period >= t[0] - tol and max(t0, r1) + 0.5 * period <= t[-1] + tol:
+                return t0, r1
+    raise PhaseError("no complete wingbeat (a base sweep maximum and the adjacent minimum, each with half "
+                     "a period on either side)")
 
 
 def section_phases(hist, section, period):
     """base, rp_phase, rp_lead, own_phase of a section ('tip' or 'outer') over the last
     complete cycle, fractions of the period; None where a crossing is missing."""
     t = hist["t_s"]
-    t0 = last_cycle_start(t, hist["phi_base_deg"], period)
-    windows = {-1: (t0 - 0.5 * period, t0 + 0.5 * period, t0),  # falling: reversal at phi max
-               +1: (t0, t0 + period, t0 + 0.5 * period)}        # rising: reversal at phi min
+    t0, r1 = last_cycle(t, hist["phi_base_deg"], period)
+    # falling crossing: reversal at the sweep maximum; rising: at the sweep minimum
+    windows = {-1: t0, +1: r1}
     base, sec, own = [], [], []
     phi_sec = hist["phi_%s_deg" % section]
-    for direction, (lo, hi, reversal) in windows.items():
+    for direction, reversal in windows.items():
+        lo, hi = reversal - 0.5 * period, reversal + 0.5 * period
         tb = first_in(crossings(t, hist["alpha_base_deg"], 90.0, direction), lo, hi)
         ts = first_in(crossings(t, hist["alpha_%s_deg" % section], 90.0, direction), lo, hi)
         if tb is None or ts is None:

@@ -47,8 +47,11 @@ def write_run(folder, dpsi, lag, sweep_lag, cycles=4, steps=400, drop=None):
 
 # Leads of the size the paper's Fig. 15 shows (tip 5 and 13 % ahead) and one near the window
 # edge (dpsi + lag = -0.48: the same-cycle rule must not take the crossing of the next cycle).
-for dpsi, lag, sweep_lag in [(-0.10, -0.05, 0.02), (0.10, -0.13, 0.03), (0.0, -0.007, 0.0), (-0.20, -0.28, 0.01)]:
-    run = write_run(os.path.join(work, "r_%+.2f_%+.3f" % (dpsi, lag)), dpsi, lag, sweep_lag)
+# Two-cycle runs (the shortened reproduction's) hold a whole wingbeat only with the sweep
+# minimum before the maximum for some dpsi (+0.10) and after it for others (-0.10).
+for dpsi, lag, sweep_lag, cycles in [(-0.10, -0.05, 0.02, 4), (0.10, -0.13, 0.03, 4), (0.0, -0.007, 0.0, 4),
+                                     (-0.20, -0.28, 0.01, 4), (-0.10, -0.05, 0.02, 2), (0.10, -0.13, 0.03, 2)]:
+    run = write_run(os.path.join(work, "r_%+.2f_%+.3f_%d" % (dpsi, lag, cycles)), dpsi, lag, sweep_lag, cycles=cycles)
     r = rotation_phase.run_phases(run, "tip")
     # 400 samples a period and linear interpolation of a sine near its zero: error below 1e-5 T.
     for key, want in (("base", dpsi), ("rp_phase", dpsi + lag), ("rp_lead", lag), ("own_phase", dpsi + lag - sweep_lag)):
@@ -61,7 +64,7 @@ for dpsi, lag, sweep_lag in [(-0.10, -0.05, 0.02), (0.10, -0.13, 0.03), (0.0, -0
 
 # The command line: the same numbers; bad inputs exit 2 naming the file.
 tool = os.path.join(args.source, "tools", "rotation_phase.py")
-run = os.path.join(work, "r_-0.10_-0.050")
+run = os.path.join(work, "r_-0.10_-0.050_4")
 p = subprocess.run([sys.executable, tool, run], capture_output=True, text=True)
 check(p.returncode == 0 and "tip_rp_lead -0.0500" in p.stdout, "command line: %d %r" % (p.returncode, p.stdout))
 bad = write_run(os.path.join(work, "no_alpha_tip"), 0.0, 0.0, 0.0, drop="alpha_tip_deg")
