@@ -235,11 +235,13 @@ def main(argv=None):
         ru = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu = None if a.report_only else ru.ru_utime + ru.ru_stime
         if not a.report_only:
-            rr.write_atomic(plan.path("timing.json"), json.dumps({"wall_s": wall, "cpu_s": cpu, "jobs": a.jobs}))
+            plan.load = os.getloadavg()[0]
+            rr.write_atomic(plan.path("timing.json"), json.dumps({"wall_s": wall, "cpu_s": cpu, "jobs": a.jobs,
+                                                                  "load_average": plan.load}))
         else:
             try:
                 t = rr.read_json(plan.path("timing.json"))
-                wall, cpu = t["wall_s"], t["cpu_s"]
+                wall, cpu, plan.load = t["wall_s"], t["cpu_s"], t.get("load_average")
             except ReproduceError:
                 pass
         reproduce_report.write(plan, a, wall, cpu)

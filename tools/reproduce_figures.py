@@ -63,7 +63,7 @@ def lift_cycle(plan, folder, name):
                     ax.plot(w[0], [v * 1e3 for v in w[1]["lift_N"]], color=COLORS[d], label="δψ = %+.2f" % d)
                     drawn += 1
             if not drawn:
-                stopped(ax, "no run of this model\nreached a whole wingbeat")
+                stopped(ax, "no run of this model finished\n(where each stops: the tables)")
             ax.set_title("%s, leading edge `%s`" % (label, m), fontsize=9)
             ax.axhline(0, color="k", lw=0.5)
             if j == 0:
