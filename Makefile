@@ -42,7 +42,7 @@ MAKEFLAGS  += --no-print-directory
 all: build
 
 help:
-	@sed -n '1,27p' Makefile
+	@sed -n '1,31p' Makefile
 
 deps:
 	@tools/install_deps.sh
