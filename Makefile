@@ -21,6 +21,7 @@
 #   make sweep-plots SWEEP=DIR/sweep.csv   mean lift (and power) against each varied key
 #   make optimize-plots DIR=DIR   objective, path and lift of a flapsim optimize folder
 #   make validate        reference-vs-computed table of the validation cases
+#   make reproduce       docs/reproduction.md: every claim of the two papers beside flapsim's
 #   make snapshot RUN=DIR   a run's ParaView state rendered headless at 4 phases (PNG)
 #   make movie [CASE=...]   MP4 of the state's view over the case's last wingbeat
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
@@ -41,7 +42,7 @@ MAKEFLAGS  += --no-print-directory
 all: build
 
 help:
-	@sed -n '1,26p' Makefile
+	@sed -n '1,31p' Makefile
 
 deps:
 	@tools/install_deps.sh

@@ -20,6 +20,9 @@
 #                       the path through the keys, the optimum's lift over a cycle beside the
 #                       start's, in DIR/plots (or OPTIMIZE_PLOTS=...)
 #   make validate       reference-vs-computed table of the validation cases
+#   make reproduce      every claim of the two papers beside flapsim's, for each leading-edge
+#                       model: docs/reproduction.md and docs/figures/reproduction_*.pdf/png
+#                       (tools/reproduce.py; REPRODUCE_JOBS, REPRODUCE_ARGS="--quick" etc.)
 #   make snapshot RUN=DIR   the run's ParaView state (DIR/run.pvsm) rendered headless at
 #                       phases 0, 0.25, 0.5, 0.75 of the last wingbeat: DIR/snapshots/*.png
 #   make movie [CASE=cases/x.toml]   the state's front view over the case's last wingbeat,
@@ -47,7 +50,7 @@ RUN_CHAIN         := $(if $(CASE_NEEDS_MODEL),$(PIPELINE_CHAIN))
 # to out/<case name>_run/.
 RUN_OUT           ?= $(OUT)/$(CASE_NAME)$(if $(and $(RUN_CHAIN),$(filter $(MODEL_OUT),$(OUT)/$(CASE_NAME))),_run)
 
-.PHONY: run run-pipeline phase-study plots figures sweep-plots optimize-plots validate snapshot movie
+.PHONY: run run-pipeline phase-study plots figures sweep-plots optimize-plots validate reproduce snapshot movie
 
 
 run: program $(RUN_CHAIN)
@@ -123,6 +126,20 @@ validate: build $(PIPELINE_CHAIN)
 	@test -f $(PHASE_OUT)/rigid/sweep.csv -a -f $(PHASE_OUT)/flexible/sweep.csv || \
 	  $(MAKE) --no-print-directory phase-study
 	$(PIPELINE_PYTHON) tools/validate.py --build $(BUILD) --out $(OUT)
+
+# The papers' claims beside flapsim's (docs/reproduction.md): builds the program and the
+# multibody tests (the Simbody check), then tools/reproduce.py runs everything from scratch
+# into $(REPRODUCE_OUT), one OpenMP thread per run, REPRODUCE_JOBS runs at a time.
+REPRODUCE_OUT  ?= $(OUT)/reproduce
+REPRODUCE_JOBS ?= $(shell nproc)
+REPRODUCE_ARGS ?=
+reproduce: program
+	cmake --build $(BUILD) --target test_mbd -j$(JOBS)
+	@start=$$(date +%s.%N); \
+	$(PIPELINE_PYTHON) tools/reproduce.py --build $(BUILD) --out $(REPRODUCE_OUT) --jobs $(REPRODUCE_JOBS) \
+	  $(REPRODUCE_ARGS) || exit $$?; \
+	end=$$(date +%s.%N); \
+	echo "make reproduce: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"
 
 # Headless pictures of a run's ParaView state (tools/paraview_state.py: VTK's Python reads
 # run.pvsm's objects and renders them offscreen; README, "ParaView"). xvfb-run -a starts
