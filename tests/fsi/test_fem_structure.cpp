@@ -25,6 +25,15 @@ using namespace flapsim;
 // test passes there too: docs/fem.md, "Geometrically nonlinear FEM".)
 constexpr int kChordwise = 3, kSpanwise = 6, kSteps = 160;
 
+// The same upward force [N] on every panel of the plate's lattice.
+uvlm::PanelLoads lift_on_every_panel(double newtons) {
+  uvlm::PanelLoads load;
+  load.force = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
+  load.force.row(2).setConstant(newtons);
+  load.point = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
+  return load;
+}
+
 // ρ∞ = 0.5: the plate starts at rest relative to its clamp, which the base accelerates: the
 // start rings at the plate's 1 kHz, and numerical dissipation lets it die out.
 const fem::DynamicsOptions kOptions = [] {
@@ -121,10 +130,7 @@ TEST(FsiFemStructure, AWarmStartedSolveGivesTheColdSolvesAnswer) {
   // itself moves the plate by far more.
   const auto plate = fem_plate(2e-4, 70e9, true);
   const double dt = 1.0 / (26.1 * kSteps);
-  uvlm::PanelLoads load;
-  load.force = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
-  load.force.row(2).setConstant(2e-4);
-  load.point = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
+  const uvlm::PanelLoads load = lift_on_every_panel(2e-4);
   auto warm_data = plate->make_data();
   auto cold_data = plate->make_data();
   auto& warm = static_cast<fsi::FemStructureData&>(*warm_data);
@@ -160,10 +166,7 @@ TEST(FsiFemStructure, ALooseSolveFinishedAtFullAccuracyGivesTheColdSolvesAnswer)
   // above: 1e-10 of the span), while the loose solve itself takes fewer Newton iterations.
   const auto plate = fem_plate(2e-4, 70e9, true);
   const double dt = 1.0 / (26.1 * kSteps);
-  uvlm::PanelLoads load;
-  load.force = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
-  load.force.row(2).setConstant(2e-4);
-  load.point = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
+  const uvlm::PanelLoads load = lift_on_every_panel(2e-4);
   auto loose_data = plate->make_data();
   auto cold_data = plate->make_data();
   auto& loose = static_cast<fsi::FemStructureData&>(*loose_data);
