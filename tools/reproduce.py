@@ -14,8 +14,7 @@ passes its time limit is reported where it stopped; the table regenerates when i
 Usage: reproduce.py [--build build] [--out out/reproduce] [--doc docs/reproduction.md]
                     [--figures docs/figures] [--jobs 2] [--quick] [--no-sensitivity]
 Runs of `shed` stop at --shed-limit seconds of wall clock (default 60: on the shipped
-cases its sheet breaks down within the first cycles and its runs then slow down as the sheet
-grows). --quick: 2 cycles of 40 steps on a 3 x 5 lattice, 1 vacuum cycle, fewer phases, shed
+cases its sheet grows over the cycles and its runs cost many times the other models'). --quick: 2 cycles of 40 steps on a 3 x 5 lattice, 1 vacuum cycle, fewer phases, shed
 limited to 20 s a run: every row filled in a few tens of seconds, numbers not converged
 (the test tools.Reproduce.*). Exit 0 when the report is written (runs that stop are
 results); 2 when an input or the build is missing; the report is then not written.

@@ -214,8 +214,9 @@ def aero_rows(plan):
     rows.append(("eq. 7 (Lua et al.'s kinematics), rigid wing: mean CL", "RP §2, Fig. 8", "2.06 (RP's UVLM); 2.08 measured",
                  cells, "`separated` gives the full suction as vortex lift (+13 % on this wing), `none` none of it "
                  "(−10 %); the paper's UVLM is a normal-force Bernoulli lattice like `none` (docs/uvlm.md, "
-                 "\"Leading edge: validation and the default\"); `shed`'s sheet breaks down after the first "
-                 "reversal (docs/uvlm.md, \"Leading-edge vortex shedding\"): its mean is no result",
+                 "\"Leading edge: validation and the default\"); `shed`'s lift is not converged in the time step on a "
+                 "flapping wing (spikes at reversal; docs/uvlm.md, \"Leading-edge vortex shedding: measurements\"): "
+                 "where it runs, its mean is no result yet",
                  "flapsim run cases/lua_rigid.toml with numerics.leading_edge = each model"))
     cells = {}
     for m in MODELS:
@@ -432,8 +433,8 @@ def write(plan, a, wall, cpu=None):
           len(plan.runs), a.jobs, wall, ", %.0f CPU s" % cpu if cpu else "") +
       ("(Load average %.1f at the end of the run: the machine was shared with other builds.)\n" % plan.load
        if getattr(plan, "load", None) else ""))
-    T("`shed` (the leading-edge vortex sheet, docs/uvlm.md) is experimental: on a flapping wing its sheet breaks "
-      "down; its cells say where each run stops (or its time limit, %.0f s), and fill in when it runs.\n"
+    T("`shed` (the leading-edge vortex sheet, docs/uvlm.md) is experimental: on a flapping wing its lift is not "
+      "converged in the time step and its runs are slow; its cells say where each run stops (or its time limit, %.0f s), and fill in when it runs.\n"
       % plan.s["shed_limit"])
     T("## Structure and vacuum (no leading-edge model)\n")
     T(md_table(("claim", "source", "paper", "flapsim", "error", "why it differs", "command"), structure_rows(plan)))
