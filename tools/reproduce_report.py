@@ -53,6 +53,18 @@ def phases(plan, key, section="tip"):
         return None
 
 
+
+def flexible_phase_cells(plan, wing, dpsi, describe):
+    """One cell per leading-edge model of the flexible run of `wing` at `dpsi`: describe(phases,
+    summary) where it ran and its tip crossed α = 90°, else where it stopped."""
+    cells = {}
+    for m in MODELS:
+        key = "flex:%s:%s:%+.2f" % (wing, m, dpsi)
+        ok, s, stop = result(plan, key)
+        p = phases(plan, key)
+        cells[m] = describe(p, s) if ok and p else (stop or "no crossing")
+    return cells
+
 def pct(x, ref):
     return "%+.1f %%" % (100.0 * (x / ref - 1.0))
 
@@ -251,18 +263,10 @@ def aero_rows(plan):
                          "rotation_phase_flexible.toml --chain <10-body chain>", ", ".join("%+.2f" % d for d in grid))))
     for d in (-0.05, 0.05):
         for w, label in (("mb", "33.8 mg"), ("rp", "43.4 mg")):
-            cells = {}
-            for m in MODELS:
-                key = "flex:%s:%s:%+.2f" % (w, m, d)
-                ok, s, stop = result(plan, key)
-                p = phases(plan, key)
-                if ok and p:
-                    cells[m] = ("tip α = 90° %.1f %% ahead of the base, its sweep %.1f %% behind; own phase %+.1f %%; "
-                                "twist ≤ %.1f°" % (
-                        -100 * p["rp_lead"], 100 * (p["rp_phase"] - p["own_phase"]), 100 * p["own_phase"],
-                        s.get("peak_tip_twist_deg", float("nan"))))
-                else:
-                    cells[m] = stop or "no crossing"
+            cells = flexible_phase_cells(plan, w, d, lambda p, s: (
+                "tip α = 90° %.1f %% ahead of the base, its sweep %.1f %% behind; own phase %+.1f %%; "
+                "twist ≤ %.1f°" % (-100 * p["rp_lead"], 100 * (p["rp_phase"] - p["own_phase"]), 100 * p["own_phase"],
+                                   s.get("peak_tip_twist_deg", float("nan")))))
             rows.append(("Fig. 14: base vs tip Euler angles, flexible %s wing, δψ = %+.2f" % (label, d),
                          "RP Fig. 14", "tip rotates ahead of the base, its sweep lags (curves; docs/hawkmoth_walkthrough.md)", cells,
                          "the sign of lead and lag is the paper's; their size follows the tip's twist, which the "
@@ -270,16 +274,9 @@ def aero_rows(plan):
                          "flapsim run cases/rotation_phase_flexible.toml --chain <10-body chain>; tools/rotation_phase.py"))
     for d, tip in ((-0.10, -0.15), (0.10, -0.03)):
         for w, label in (("mb", "33.8 mg"), ("rp", "43.4 mg")):
-            cells = {}
-            for m in MODELS:
-                key = "flex:%s:%s:%+.2f" % (w, m, d)
-                ok, s, stop = result(plan, key)
-                p = phases(plan, key)
-                if ok and p:
-                    cells[m] = "RP def. %+.3f (%+.1f %%); own reversal %+.3f (%+.1f %%)" % (
-                        p["rp_phase"], 100 * (p["rp_phase"] - tip), p["own_phase"], 100 * (p["own_phase"] - tip))
-                else:
-                    cells[m] = stop or "no crossing"
+            cells = flexible_phase_cells(plan, w, d, lambda p, s, tip=tip: (
+                "RP def. %+.3f (%+.1f %%); own reversal %+.3f (%+.1f %%)" % (
+                    p["rp_phase"], 100 * (p["rp_phase"] - tip), p["own_phase"], 100 * (p["own_phase"] - tip))))
             rows.append(("Fig. 15: tip rotation phase at δψ = %+.2f, flexible %s wing" % (d, label), "RP Fig. 15 (text)",
                          "%+.2f (tip %.0f %% ahead of the base)" % (tip, 100 * (d - tip)), cells,
                          "RP def.: the tip's α = 90° crossing minus the base's sweep reversal, same cycle (Figs. 10, 15); "
