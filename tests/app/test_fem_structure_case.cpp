@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "app/history_csv.hpp"
 #include "app/stiff_plate_wing.hpp"
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
@@ -35,34 +36,6 @@ std::string plate_case(const std::string& kind) {
          "core_radius = 0.2\nrho_infinity = 0.0\n[output]\nvtk_every = 40\n";
 }
 
-struct History {
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> rows;
-  std::vector<double> column(const std::string& name) const {
-    const auto at = std::find(names.begin(), names.end(), name);
-    EXPECT_NE(at, names.end()) << name;
-    std::vector<double> x;
-    if (at == names.end()) return x;
-    const std::size_t c = static_cast<std::size_t>(at - names.begin());
-    for (const auto& r : rows) x.push_back(r.at(c));
-    return x;
-  }
-};
-
-History read_history(const std::filesystem::path& file) {
-  History h;
-  std::ifstream in(file);
-  std::string line, cell;
-  std::getline(in, line);
-  for (std::stringstream s(line); std::getline(s, cell, ',');) h.names.push_back(cell);
-  while (std::getline(in, line)) {
-    std::vector<double> r;
-    for (std::stringstream s(line); std::getline(s, cell, ',');) r.push_back(std::stod(cell));
-    h.rows.push_back(r);
-  }
-  return h;
-}
-
 TEST(FemStructureCase, AStiffFemPlateFliesAndIsDrivenAsTheRigidPlate) {
   test::ScratchDir dir("fem_structure_case");
   std::ofstream(dir / "wing.toml") << test::kStiffPlateWing;
@@ -77,8 +50,8 @@ TEST(FemStructureCase, AStiffFemPlateFliesAndIsDrivenAsTheRigidPlate) {
   EXPECT_GT(test::json_number(fem, "fem_nodes"), 50.0) << fem;
 
   // The same columns, in the same order: chain and FEM runs compare column by column.
-  const History hr = read_history(dir / "rigid" / "history.csv");
-  const History hf = read_history(dir / "fem" / "history.csv");
+  const test::HistoryCsv hr = test::read_history_csv(dir / "rigid" / "history.csv");
+  const test::HistoryCsv hf = test::read_history_csv(dir / "fem" / "history.csv");
   ASSERT_EQ(hr.names, hf.names);
   ASSERT_EQ(hr.rows.size(), 80u);
   ASSERT_EQ(hf.rows.size(), 80u);

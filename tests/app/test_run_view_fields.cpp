@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "app/stiff_plate_wing.hpp"
+#include "app/history_csv.hpp"
 #include "app/one_joint_chain.hpp"
 #include "app/robustness_helpers.hpp"
 #include "common/run_flapsim.hpp"
@@ -100,32 +101,6 @@ Eigen::Vector3d point(vtkPolyData* d, vtkIdType k) {
   return {p[0], p[1], p[2]};
 }
 
-// history.csv: one row per step (row n − 1 is step n), by column name.
-struct StepHistory {
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> rows;
-  double at(long step, const std::string& name) const {
-    const auto c = std::find(names.begin(), names.end(), name);
-    EXPECT_NE(c, names.end()) << name;
-    if (c == names.end()) return NAN;
-    return rows.at(static_cast<std::size_t>(step - 1)).at(static_cast<std::size_t>(c - names.begin()));
-  }
-};
-
-StepHistory read_step_history(const fs::path& file) {
-  StepHistory h;
-  std::ifstream in(file);
-  std::string line, cell;
-  std::getline(in, line);
-  for (std::stringstream s(line); std::getline(s, cell, ',');) h.names.push_back(cell);
-  while (std::getline(in, line)) {
-    std::vector<double> r;
-    for (std::stringstream s(line); std::getline(s, cell, ',');) r.push_back(std::stod(cell));
-    h.rows.push_back(r);
-  }
-  return h;
-}
-
 TEST(RunViewFields, TheRigidPlatesCpDisplacementWakeAgeAndFrameLoads) {
   ScratchDir dir("run_view_fields_rigid");
   const fs::path out = run_case(dir, "rigid", plate_case("", "[structure]\nkind = \"rigid\"\n"));
@@ -133,7 +108,7 @@ TEST(RunViewFields, TheRigidPlatesCpDisplacementWakeAgeAndFrameLoads) {
   const double u_ref = flapsim::test::json_number(summary, "reference_speed_m_s");
   const double area = flapsim::test::json_number(summary, "reference_area_m2");
   const double dt = flapsim::test::json_number(summary, "dt_s");
-  const StepHistory h = read_step_history(out / "history.csv");
+  const flapsim::test::HistoryCsv h = flapsim::test::read_history_csv(out / "history.csv");
   const long step = 8;
 
   // Cp = Δp / q_ref with q_ref = ½ ρ U_ref², the dynamic pressure of CL = L / (q_ref S)
@@ -201,7 +176,7 @@ TEST(RunViewFields, TheFlexiblePlatesJointsTipPathAndDisplacementAgreeWithItsHis
   const fs::path out = run_case(dir, "flexible",
                                 plate_case("chain = \"chain.toml\"\n", "[structure]\nkind = \"flexible\"\nbodies = 2\n"
                                            "[[markers]]\nname = \"tip\"\nbody = 2\npoint = [0.0, 0.02, 0.0]\n"));
-  const StepHistory h = read_step_history(out / "history.csv");
+  const flapsim::test::HistoryCsv h = flapsim::test::read_history_csv(out / "history.csv");
   const long step = 8;
 
   // chain.vtp: body 2's joint angles are history.csv's bend_2_rad, twist_2_rad, on its
@@ -312,7 +287,7 @@ TEST(RunViewFields, ARunThatStopsWithExitStatusThreeLeavesTheTipPathSoFar) {
   ASSERT_EQ(flapsim::test::run_flapsim("run " + (dir / "case.toml").string() + " --chain " +
                                        (dir / "chain.toml").string() + " -o " + (dir / "out").string()),
             3);
-  const StepHistory h = read_step_history(dir / "out" / "history.csv");
+  const flapsim::test::HistoryCsv h = flapsim::test::read_history_csv(dir / "out" / "history.csv");
   ASSERT_GE(h.rows.size(), 1u);
   const auto path = read_frame(dir / "out" / "tip_path.vtp");
   const long steps = static_cast<long>(h.rows.size());
