@@ -132,7 +132,8 @@ bool shed_leading_edge_vorticity(const VortexLatticeModel& m, VortexLatticeData&
 Eigen::Vector3d shed_edge_force(const VortexLatticeModel& m, const VortexLatticeData& d, int j,
                                 const Eigen::Vector3d& suction);
 /// Velocity of the sheet's nodes (into d.le_sheet.nodes u/v/w) from the wake (by its tree
-/// when wake_by_tree), the far wake, the bound and trailing-edge segments and the sheet.
+/// when wake_by_tree), the far wake, the bound and trailing-edge segments and the sheet;
+/// zero for the rows older than the far-wake age, which move with the far-wake velocity.
 void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bool wake_by_tree);
 /// Convect the sheet's free rows over d.dt (far_velocity for rows older than the far-wake
 /// age) and, when a strip shed, release the release row with the leading-edge rings.

@@ -102,8 +102,20 @@ void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bo
   PointSet& P = s.nodes;
   P.zero_velocity();
   if (m.wake_model != WakeModel::Free || P.size == 0) return;
-  const std::size_t n = P.size;
-  double *x = P.x.data(), *y = P.y.data(), *z = P.z.data(), *u = P.u.data(), *v = P.v.data(), *w = P.w.data();
+  // Rows older than the far-wake age (the oldest rows, stored first) move with the far-wake
+  // velocity (move_and_release_sheet): their induced velocity is not summed, as the wake's
+  // (the same positions bit for bit; the flexible hover with the shipped chain 19.9 → 12.5
+  // CPU s, docs/performance.md).
+  std::size_t first = 0;
+  if (m.far_wake_age > 0.0) {
+    int r = 0;
+    while (r < s.rows && s.row_age[r] > m.far_wake_age) ++r;
+    first = static_cast<std::size_t>(r) * (m.spanwise + 1);
+  }
+  if (first >= P.size) return;
+  const std::size_t n = P.size - first;
+  double *x = P.x.data() + first, *y = P.y.data() + first, *z = P.z.data() + first, *u = P.u.data() + first,
+         *v = P.v.data() + first, *w = P.w.data() + first;
   add_far_wake_velocity(d, x, y, z, n, u, v, w);
   if (wake_by_tree) d.wake_tree.add_induced_velocity(x, y, z, n, u, v, w);
   const VortexCore bound_seen_from_wake{m.core.model, std::max(m.core.radius, m.near_wing_core)};

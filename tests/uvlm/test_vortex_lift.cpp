@@ -1,10 +1,12 @@
 // Leading-edge vortex lift by the suction analogy on a flat AR 1 delta wing (docs/validation.md
 // U20, U22): the separated leading-edge model against Polhamus' formula with the constants of
-// the same lattice, and against the measured lift Polhamus compared his formula with.
+// the same lattice, and against the measured lift Polhamus compared his formula with; the
+// shed leading edge (LeadingEdge::Shed) on the same wing started impulsively (U22b).
 #include "planform_wings.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -30,6 +32,63 @@ PlanformWing delta_wing() {
   w.chord = [=](double y) { return root * (1.0 - 2.0 * std::abs(y) / b); };
   w.leading_edge = [=](double y) { return -root * 2.0 * std::abs(y) / b; };
   return w;
+}
+
+/// The experimental points of [Polhamus 1966] Fig. 12 for AR 1
+/// (tests/data/delta_wing_ar1_polhamus1966_fig12.csv): α [deg], CL, data set.
+struct MeasuredLift {
+  double alpha_deg = 0.0, cl = 0.0;
+  int set = 0;
+};
+std::vector<MeasuredLift> polhamus_fig12() {
+  std::ifstream in(std::string(FLAPSIM_SOURCE_DIR) + "/tests/data/delta_wing_ar1_polhamus1966_fig12.csv");
+  std::vector<MeasuredLift> points;
+  MeasuredLift p;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#' && std::sscanf(line.c_str(), "%lf,%lf,%d", &p.alpha_deg, &p.cl, &p.set) == 3)
+      points.push_back(p);
+  return points;
+}
+
+/// Per-step lift coefficient (Bernoulli route, on the lattice's area) of the delta wing
+/// started impulsively at α in a stream of U = 1 (ρ = 1), free wake with a fixed Lamb–Oseen
+/// core of `core` [m], steps_per_root_chord steps per root chord of travel, over `travel`
+/// root chords: the mean, least and largest of the steps from `average_from` root chords on.
+struct StartedLift {
+  double mean = 0.0, least = 0.0, largest = 0.0;
+};
+StartedLift impulsively_started_delta_wing(double alpha, LeadingEdge leading_edge, int steps_per_root_chord,
+                                           double travel, double average_from, double core) {
+  const PlanformWing w = delta_wing();
+  const double root = 2.0;
+  const int steps = static_cast<int>(std::lround(travel * steps_per_root_chord));
+  const int first = static_cast<int>(std::lround(average_from * steps_per_root_chord));
+  VortexLatticeModel m;
+  m.chordwise = w.chordwise;
+  m.spanwise = w.spanwise();
+  m.wake_capacity = steps + 1;
+  m.core = {CoreModel::LambOseen, core};
+  m.leading_edge = leading_edge;
+  VortexLatticeData d(m);
+  const Eigen::Vector3d v(-std::cos(alpha), 0.0, std::sin(alpha));
+  const Eigen::Vector3d lift(std::sin(alpha), 0.0, std::cos(alpha));
+  const Eigen::Matrix3Xd nodes = w.nodes();
+  const Eigen::Matrix3Xd still = Eigen::Matrix3Xd::Zero(3, m.nodes());
+  StartedLift r;
+  int n = 0;
+  for (int k = 0; k <= steps; ++k) {
+    solve(m, d, nodes, still, v, root / steps_per_root_chord, 1.0);
+    const double cl = d.loads.total_force.dot(lift) / (0.5 * d.area.sum());
+    if (k >= first) {
+      r.least = n == 0 ? cl : std::min(r.least, cl);
+      r.largest = n == 0 ? cl : std::max(r.largest, cl);
+      r.mean += cl;
+      ++n;
+    }
+    if (k < steps) advance(m, d);
+  }
+  r.mean /= n;
+  return r;
 }
 
 }  // namespace
@@ -85,20 +144,71 @@ TEST(VortexLift, DeltaWingLiftAgreesWithMeasurements) {
   // The measured lift of a flat sharp-edged AR 1 delta wing, the experimental points of
   // [Polhamus 1966] Fig. 12 (tests/data/delta_wing_ar1_polhamus1966_fig12.csv), 4°–25°:
   // the separated model (default steady wake along V∞) within 10 % of each point (issue 12).
-  std::ifstream in(std::string(FLAPSIM_SOURCE_DIR) + "/tests/data/delta_wing_ar1_polhamus1966_fig12.csv");
-  ASSERT_TRUE(in.good());
   const PlanformWing w = delta_wing();
-  int points = 0;
-  double alpha_deg = 0.0, measured = 0.0;
-  int set = 0;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#' || std::sscanf(line.c_str(), "%lf,%lf,%d", &alpha_deg, &measured, &set) != 3)
-      continue;
-    const double cl = steady_loads(w, alpha_deg * kDeg, LeadingEdge::Separated).cl_bernoulli;
-    std::printf("[ value ] %5.2f deg (set %d): CL %.4f, measured %.3f (%+.1f %%)\n", alpha_deg, set, cl, measured,
-                100 * (cl / measured - 1));
-    EXPECT_NEAR(cl / measured, 1.0, 0.10) << alpha_deg << " deg";
-    ++points;
+  const std::vector<MeasuredLift> points = polhamus_fig12();
+  for (const MeasuredLift& p : points) {
+    const double cl = steady_loads(w, p.alpha_deg * kDeg, LeadingEdge::Separated).cl_bernoulli;
+    std::printf("[ value ] %5.2f deg (set %d): CL %.4f, measured %.3f (%+.1f %%)\n", p.alpha_deg, p.set, cl, p.cl,
+                100 * (cl / p.cl - 1));
+    EXPECT_NEAR(cl / p.cl, 1.0, 0.10) << p.alpha_deg << " deg";
   }
-  EXPECT_EQ(points, 16);
+  EXPECT_EQ(points.size(), 16u);
+}
+
+TEST(VortexLift, ShedLeadingEdgeGivesTheDeltaWingLessThanHalfItsVortexLift) {
+  // U22 with LeadingEdge::Shed (issue 30: "Polhamus' delta wing (test U22) still within its
+  // present bounds with shed (or the reason)"). The steady lattice sheds nothing, so the
+  // wing is started impulsively and run until its lift settles. Chosen before any run of
+  // `shed` on this wing and not changed after: U22's 8 × 24 lattice; the free wake with a
+  // fixed Lamb–Oseen core of 0.02 root chords (the free-wake runs of U20, docs/uvlm.md; no
+  // core growth: the experiment's Reynolds number is high); U Δt = c_root/16 (the release
+  // row ½ U Δt = c_root/32 from the edge, a quarter of the root strip's first panel);
+  // 6 root chords of travel, the lift averaged over the steps from 4 to 6 root chords;
+  // LESP_crit 0.11 (the model's, not adjusted). Measured against the 16 points (docs/uvlm.md,
+  // "Polhamus' delta wing with shed"): 13 of them 13–25 % low, 4.07° −4.2 %, 5.07° −9.1 %;
+  // at 25.1° the lift does not settle (per-step CL 0.45 … 1.68 over the window), at
+  // 12.4°–18.5° (set 1) it has excursions of +8 … +20 % above its mean in the window.
+  // Run time: set 2's points below 25° only, 4.0°, 9.95°, 20.1° (15.0°, left out for time,
+  // gives −19.6 % and the fraction 0.42), 16 s on 2 cores.
+  // Asserted, for each:
+  //  - the per-step CL over the window within 3 % of its mean (settled; measured at most
+  //    1.0 %, at 20.1°);
+  //  - the error against the measured point within −30 … −10 % (measured −13.2, −16.2,
+  //    −25.0 %): NOT U22's 10 %. It fails if the model came within 10 % (then update this
+  //    test and docs/validation.md U22b) or lost its vortex lift (the attached model in the
+  //    same runs: −14.5, −25.5, −38.6 %);
+  //  - the fraction of Polhamus' vortex lift it gives, (CL − Kp sin α cos² α) /
+  //    (Kv sin² α cos α) with Kp, Kv of this lattice as in U20: measured 0.12, 0.39, 0.44
+  //    (in the same runs the attached model 0.03, 0.07, 0.14 and the separated model 1.01,
+  //    1.02, 1.05, −1.2, +2.0, +2.9 % of the measured points); bound 0–0.25 at 4° (no strip
+  //    sheds there: the attached lift with the end strips' suction analogy), 0.25–0.60 at
+  //    10° and 20°.
+  //    It fails if the shed sheet added no vortex lift or all of Polhamus'.
+  // Not converged in Δt (docs/uvlm.md): at 15.0° with 8, 16, 32, 64 steps per root chord
+  // the fraction is 0.95, 0.42, 0.39, 0.32 (CL +1.2, −19.6, −20.7, −23.3 % of the measured
+  // point); the 8-step agreement is the coarse step's.
+  const PlanformWing w = delta_wing();
+  const double a0 = 1.0 * kDeg;
+  const auto potential = steady_loads(w, a0, LeadingEdge::Attached, true);
+  const double kp = potential.normal / (std::sin(a0) * std::cos(a0));
+  const double kv = potential.suction / (std::sin(a0) * std::sin(a0));
+  int checked = 0;
+  for (const MeasuredLift& p : polhamus_fig12()) {
+    if (p.set != 2 || p.alpha_deg > 21.0 || std::abs(p.alpha_deg - 15.0) < 1.0) continue;
+    const double a = p.alpha_deg * kDeg;
+    const StartedLift r = impulsively_started_delta_wing(a, LeadingEdge::Shed, 16, 6.0, 4.0, 0.02 * 2.0);
+    const double vortex = kv * std::sin(a) * std::sin(a) * std::cos(a);
+    const double fraction = (r.mean - kp * std::sin(a) * std::cos(a) * std::cos(a)) / vortex;
+    std::printf("[ value ] %5.2f deg: shed CL %.4f (steps %.4f ... %.4f), measured %.3f (%+.1f %%), "
+                "fraction of the vortex lift %.2f\n",
+                p.alpha_deg, r.mean, r.least, r.largest, p.cl, 100 * (r.mean / p.cl - 1), fraction);
+    EXPECT_GT(r.least, 0.97 * r.mean) << p.alpha_deg << " deg";
+    EXPECT_LT(r.largest, 1.03 * r.mean) << p.alpha_deg << " deg";
+    EXPECT_GT(r.mean / p.cl - 1.0, -0.30) << p.alpha_deg << " deg";
+    EXPECT_LT(r.mean / p.cl - 1.0, -0.10) << p.alpha_deg << " deg";
+    EXPECT_GT(fraction, p.alpha_deg < 5.0 ? 0.0 : 0.25) << p.alpha_deg << " deg";
+    EXPECT_LT(fraction, p.alpha_deg < 5.0 ? 0.25 : 0.60) << p.alpha_deg << " deg";
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
 }
