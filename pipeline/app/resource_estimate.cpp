@@ -109,12 +109,12 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
   e.structure_flops = bodies > 1 ? steps * iterations * 3.0 * (2.0 / 3.0) * dofs * dofs * dofs : 0.0;
   if (fem_dofs > 0) {
     // The FEM: its sparse factor (about 30 n log₂ n entries of 8 B plus indices, the same
-    // nested-dissection count) and a few Newton iterations (~5: 4.8 a warm-started solve of
-    // the hawkmoth hover, docs/fem.md) per coupling iteration.
+    // nested-dissection count) and the measured CPU time of a step (resource_estimate.hpp).
     const double n_fem = fem_dofs;
+    e.fem_dofs = fem_dofs;
     memory += 30.0 * n_fem * std::log2(std::max(n_fem, 2.0)) * 12.0 + 40.0 * n_fem * 8.0;
-    const double solves_per_step = c.air.enabled ? iterations : 1.0;  // in vacuum nothing to couple
-    e.fem_seconds = steps * solves_per_step * 5.0 * kFemSecondsPerIteration1000 * std::pow(n_fem / 1000.0, 1.5);
+    const double step_factor = c.air.enabled ? kFemCoupledStepFactor : 1.0;  // in vacuum nothing to couple
+    e.fem_seconds = steps * step_factor * kFemSecondsPerStep1000 * std::pow(n_fem / 1000.0, kFemDofsExponent);
   }
   e.memory_bytes = memory;
   e.isa = uvlm::kernel_isa();
@@ -127,7 +127,7 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
 std::string describe(const RunEstimate& e) {
   char buf[400];
   const std::string isa(uvlm::kernel_isa_name(e.isa));
-  const std::string structure = e.fem_seconds > 0.0 ? "FEM solves ~" + seconds_text(e.fem_seconds)
+  const std::string structure = e.fem_dofs > 0 ? "FEM solves (" + std::to_string(e.fem_dofs) + " DOFs) ~" + seconds_text(e.fem_seconds)
                                                     : [&] {
                                                         char f[48];
                                                         std::snprintf(f, sizeof f, "%.2g chain flop", e.structure_flops);
