@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "pipeline/app/diverged_force.hpp"
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/interruption.hpp"
@@ -24,11 +25,21 @@ namespace {
 void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder, ProgressLine& progress,
                const std::function<void(long, long)>& on_step) {
   const fsi::FsiModel& model = setup.model;
+  // The force beyond which the lattice has diverged (diverged_force.hpp).
+  const double force_limit =
+      model.air && setup.grid
+          ? diverged_force_limit(model.density,
+                                 fastest_wing_point_speed(model.base(), setup.period, setup.grid->nodes, model.free_stream),
+                                 setup.reference.area)
+          : 0.0;
   fsi::initialize(model, data, 0.0);
   recorder.record_initial(data);
   for (long n = 0; n < setup.steps; ++n) {
     fsi::coupled_step(model, data, setup.dt);
     recorder.record(data);
+    // From the second step on: the first carries a start's impulse (diverged_force.hpp).
+    if (force_limit > 0.0 && n > 0)
+      throw_if_force_diverged(recorder.last().force, force_limit, data.step - 1, data.time());
     fsi::shed_wake(model, data);
     // Chain solves split in halves so far (step halving, mbd/generalized_alpha.hpp): shown once there are any.
     char split[48] = "";

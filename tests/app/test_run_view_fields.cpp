@@ -230,7 +230,7 @@ TEST(RunViewFields, TheFlexiblePlatesJointsTipPathAndDisplacementAgreeWithItsHis
 
 TEST(RunViewFields, TheFemPlatesDisplacementAndTipAreItsFramesNodes) {
   ScratchDir dir("run_view_fields_fem");
-  std::ofstream(dir / "wing.toml") << test::kStiffPlateWing;
+  std::ofstream(dir / "wing.toml") << flapsim::test::kStiffPlateWing;
   const fs::path rigid = run_case(dir, "rigid", plate_case("", "[structure]\nkind = \"rigid\"\n", "", "wing.toml"));
   const fs::path out =
       run_case(dir, "fem", plate_case("", "[structure]\nkind = \"fem\"\n", "rho_infinity = 0.0\n", "wing.toml"));

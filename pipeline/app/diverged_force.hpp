@@ -1,0 +1,40 @@
+#pragma once
+/// \file diverged_force.hpp
+/// \brief A run whose aerodynamic force leaves every physical range stops as diverged
+/// (NumericalFailure, exit status 3) instead of finishing with a number that means nothing.
+///
+/// The bound is a force coefficient on the fastest speed any point of the undeformed wing
+/// has through the air over a wingbeat, U_b = max over the cycle and the lattice's nodes of
+/// |U∞ − v_pivot − ω × (R_GW x_W)|: |F| ≤ kDivergedForceCoefficient · ½ ρ U_b² S. A
+/// revolving wing's force coefficient on its speed at r₂R peaks at about 3.5 (its drag at 90°
+/// incidence in the fit of [Dickinson et al. 1999]), and U_b exceeds that speed (the tip,
+/// the fastest instant: the hawkmoth hover's ½ρU_b²S is 9.7 times its ½ρU_ref²S, so its
+/// largest force, C_L ≈ 9 on U_ref at the reversals, is about 0.9 on U_b). 20 is several
+/// times any of these: no wing that the lattice still represents reaches it.
+/// A free-wake lattice that has come apart does (a leading-edge sheet that folds onto the
+/// wing, a wake vortex through a collocation point): its force grows without bound within
+/// tens of steps (docs/fsi.md, "Failures"). The check starts at the second step: the first
+/// carries the impulse of a wing started in moving air, ρ ∂Γ/∂t with Γ set up within one
+/// step, which grows as 1/Δt (a flat plate at 45° started in a free stream: at 16 steps a
+/// chord C_F = 19 at step 1, 3.4 at step 2; at 64 steps 72 and 3.0) [Katz & Plotkin 2001, ch. 13].
+
+#include <Eigen/Core>
+
+#include "mbd/base_motion.hpp"
+
+namespace flapsim::app {
+
+inline constexpr double kDivergedForceCoefficient = 20.0;
+
+/// U_b [m/s] of the file comment: `nodes` the lattice's nodes in the wing frame W [m], the
+/// base's motion sampled at `samples` instants of one period [s] (from t = 0).
+double fastest_wing_point_speed(const mbd::BaseMotion& base, double period, const Eigen::Matrix3Xd& nodes,
+                                const Eigen::Vector3d& free_stream, int samples = 400);
+
+/// The largest aerodynamic force [N] a run may carry: kDivergedForceCoefficient ½ ρ U_b² S.
+double diverged_force_limit(double rho, double fastest_speed, double area);
+
+/// Throws NumericalFailure (with the step and time) when |force| exceeds `limit` [N].
+void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time);
+
+}  // namespace flapsim::app
