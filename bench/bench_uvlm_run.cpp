@@ -89,6 +89,24 @@ void BM_CaseRun(benchmark::State& state, const char* case_name) {
   std::filesystem::remove_all(out);
 }
 
+// A shipped case's text, edited by replacing its first occurrence of a piece of text.
+struct CaseText {
+  std::string toml;
+  explicit CaseText(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    toml = text.str();
+  }
+  /// false if `from` is not in the text (the case changed: the benchmark's edits with it).
+  bool replace(const std::string& from, const std::string& to) {
+    const std::size_t at = toml.find(from);
+    if (at == std::string::npos) return false;
+    toml.replace(at, from.size(), to);
+    return true;
+  }
+};
+
 // BM_FlexibleHover: `flapsim run cases/hover_flexible.toml --chain
 // cases/chains/hawkmoth_10_bodies.toml` (the flexible hawkmoth hover of `make run` with the
 // shipped 10-body chain, 3 cycles of 100 steps, no ParaView output) at nc × ns panels
@@ -98,16 +116,9 @@ void BM_FlexibleHover(benchmark::State& state) {
   setenv("FLAPSIM_QUIET", "1", 1);
   const int nc = static_cast<int>(state.range(0)), ns = static_cast<int>(state.range(1));
   const std::string source = FLAPSIM_SOURCE_DIR;
-  std::ifstream in(source + "/cases/hover_flexible.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string toml = text.str();
-  auto replace = [&](const std::string& from, const std::string& to) {
-    const std::size_t at = toml.find(from);
-    if (at == std::string::npos) return false;
-    toml.replace(at, from.size(), to);
-    return true;
-  };
+  CaseText edited(source + "/cases/hover_flexible.toml");
+  std::string& toml = edited.toml;
+  auto replace = [&](const std::string& from, const std::string& to) { return edited.replace(from, to); };
   if (!replace("chordwise_panels = 6", "chordwise_panels = " + std::to_string(nc)) ||
       !replace("spanwise_panels = 10", "spanwise_panels = " + std::to_string(ns)) ||
       !replace("wing = \"../wings/hawkmoth.toml\"", "wing = \"" + source + "/wings/hawkmoth.toml\"") ||
@@ -142,16 +153,9 @@ void BM_FlexibleHover(benchmark::State& state) {
 void BM_HoverLeadingEdge(benchmark::State& state, const char* case_name, const char* leading_edge) {
   setenv("FLAPSIM_QUIET", "1", 1);
   const std::string source = FLAPSIM_SOURCE_DIR, name = case_name;
-  std::ifstream in(source + "/cases/" + name + ".toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string toml = text.str();
-  auto replace = [&](const std::string& from, const std::string& to) {
-    const std::size_t at = toml.find(from);
-    if (at == std::string::npos) return false;
-    toml.replace(at, from.size(), to);
-    return true;
-  };
+  CaseText edited(source + "/cases/" + name + ".toml");
+  std::string& toml = edited.toml;
+  auto replace = [&](const std::string& from, const std::string& to) { return edited.replace(from, to); };
   const bool flexible = name == "hover_flexible";
   if (toml.find("leading_edge") != std::string::npos ||
       !replace("[numerics]\n", "[numerics]\nleading_edge = \"" + std::string(leading_edge) + "\"\n") ||

@@ -14,6 +14,7 @@
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
+#include "flat_plate_glide.hpp"
 #include "history_csv.hpp"
 #include "pipeline/app/diverged_force.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
@@ -106,13 +107,7 @@ TEST(DivergedForce, AnImpulsiveStartInAFreeStreamRunsOn) {
   // its second 3.4; at 64 steps a chord (here) 72 and 3.0, the first beyond the limit's 20.
   // The check starts at the second step, so the run ends ok.
   flapsim::test::ScratchDir dir("impulsive_start_runs_on");
-  std::ofstream(dir / "case.toml")
-      << "name = \"start\"\nwing = \"" + kDivergedForceSource + "/wings/flat_plate.toml\"\n"
-         "[kinematics]\nfrequency_hz = 200.0\nsweep = 0.0\nrotation = 45.0\n"
-         "[air]\nfreestream = [-5.0, 0.0, 0.0]\n"
-         "[structure]\nkind = \"rigid\"\n"
-         "[numerics]\nsteps_per_cycle = 160\ncycles = 1\nchordwise_panels = 4\nspanwise_panels = 8\n"
-         "free_wake = false\n[output]\nvtk_every = 0\n";
+  std::ofstream(dir / "case.toml") << flapsim::test::flat_plate_glide_case("start", 200.0, 45.0, 160, 1);
   const auto outcome =
       flapsim::test::run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;

@@ -11,6 +11,7 @@
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
+#include "flat_plate_glide.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "uvlm/vortex_lattice.hpp"
 #include <Eigen/Geometry>
@@ -19,8 +20,6 @@ namespace {
 
 using flapsim::test::read_text;
 using flapsim::test::run_flapsim;
-
-const std::string kSource = FLAPSIM_SOURCE_DIR;
 
 double number_in(const std::string& json, const std::string& key) {
   const double x = flapsim::test::json_number(json, key);
@@ -38,13 +37,8 @@ TEST(FreeStreamCase, CoefficientsUseTheFreeStreamWhenTheWingDoesNotFlap) {
   // over the second period); and the lattice value for this wing, CL = 0.316 at 8 × 64
   // (docs/validation.md U4), within 10 % at this coarse lattice.
   flapsim::test::ScratchDir dir("free_stream_case");
-  std::ofstream(dir / "case.toml")
-      << "name = \"glide\"\nwing = \"" + kSource + "/wings/flat_plate.toml\"\n"
-         "[kinematics]\nfrequency_hz = 20.0\nsweep = 0.0\nrotation = 5.0\n"
-         "[air]\nfreestream = [-5.0, 0.0, 0.0]\n"
-         "[structure]\nkind = \"rigid\"\n"
-         "[numerics]\nsteps_per_cycle = 25\ncycles = 2\nchordwise_panels = 4\nspanwise_panels = 8\n"
-         "free_wake = false\nleading_edge = \"attached\"\n[output]\nvtk_every = 0\n";
+  std::ofstream(dir / "case.toml") << flapsim::test::flat_plate_glide_case("glide", 20.0, 5.0, 25, 2,
+                                                                            "leading_edge = \"attached\"\n");
   ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
   const std::string summary = read_text(dir / "out" / "summary.json");
   EXPECT_NE(summary.find("\"reference_kind\": \"free_stream\""), std::string::npos) << summary;
@@ -88,14 +82,8 @@ TEST(FreeStreamCase, SteadyLatticeDoesNotDependOnTheTimeStep) {
   flapsim::test::ScratchDir dir("free_stream_steady");
   auto run = [&](int steps, bool steady) {
     const std::string name = "glide_" + std::to_string(steps) + (steady ? "_steady" : "");
-    std::ofstream(dir / (name + ".toml"))
-        << "name = \"" + name + "\"\nwing = \"" + kSource + "/wings/flat_plate.toml\"\n"
-           "[kinematics]\nfrequency_hz = 20.0\nsweep = 0.0\nrotation = 5.0\n"
-           "[air]\nfreestream = [-5.0, 0.0, 0.0]\n"
-           "[structure]\nkind = \"rigid\"\n"
-           "[numerics]\nsteps_per_cycle = " + std::to_string(steps) + "\ncycles = 2\nchordwise_panels = 4\n"
-           "spanwise_panels = 8\nfree_wake = false\nleading_edge = \"attached\"\nsteady = " +
-               (steady ? "true" : "false") + "\n[output]\nvtk_every = 0\n";
+    std::ofstream(dir / (name + ".toml")) << flapsim::test::flat_plate_glide_case(
+        name, 20.0, 5.0, steps, 2, std::string("leading_edge = \"attached\"\nsteady = ") + (steady ? "true" : "false") + "\n");
     EXPECT_EQ(run_flapsim("run " + (dir / (name + ".toml")).string() + " -o " + (dir / name).string()), 0);
     const std::string summary = read_text(dir / name / "summary.json");
     return std::pair{number_in(summary, "mean_CL"), number_in(summary, "mean_CD")};
