@@ -34,6 +34,7 @@ def last_wingbeat(plan, key, columns):
 
 
 def save(fig, folder, name):
+    fig.tight_layout()
     os.makedirs(folder, exist_ok=True)
     for ext in ("pdf", "png"):
         path = os.path.join(folder, "%s.%s" % (name, ext))
@@ -73,7 +74,6 @@ def lift_cycle(plan, folder, name):
             if drawn:
                 ax.legend(fontsize=7)
     fig.suptitle("Lift over the last wingbeat (RP Figs. 12b, 13b); flexible studies have no δψ = −0.15", fontsize=10)
-    fig.tight_layout()
     save(fig, folder, name)
     return name, "Lift over the last wingbeat for δψ = −0.15 / −0.10 / +0.05, each leading-edge model (RP Figs. 12b, 13b)"
 
@@ -100,7 +100,6 @@ def euler_angles(plan, folder, name):
         for ax in (axes[0][j], axes[1][j]):
             ax.legend(fontsize=7)
     fig.suptitle("Base and tip Euler angles (RP Fig. 14)", fontsize=10)
-    fig.tight_layout()
     save(fig, folder, name)
     return name, "Base and tip Euler angles of the flexible wing at δψ = −0.05 and +0.05 (RP Fig. 14)"
 
@@ -128,7 +127,6 @@ def tip_phase(plan, folder, name):
     ax.set_ylabel("rotation phase at the tip [period]")
     ax.legend(fontsize=7)
     ax.set_title("Tip against base rotation phase (RP Fig. 15)", fontsize=10)
-    fig.tight_layout()
     save(fig, folder, name)
     return name, ("Rotation phase at the tip against the base (RP Fig. 15): RP def. = tip crossing minus the base's "
                   "reversal (same cycle), own reversal = summary.json's tip_rotation_phase")
@@ -146,7 +144,6 @@ def lua_cl(plan, folder, name):
     ax.set_ylabel("CL (U: cycle-mean speed at r2)")
     ax.set_title("Eq. 7 (Lua et al.'s kinematics), rigid wing", fontsize=10)
     ax.legend(fontsize=7)
-    fig.tight_layout()
     save(fig, folder, name)
     return name, "CL over the last wingbeat of eq. 7's rigid wing, each leading-edge model, with RP's and the measured means"
 
