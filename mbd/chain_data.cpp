@@ -20,7 +20,10 @@ ChainData::ChainData(const ChainModel& model) {
   rest = model.rest_angles();
   deflection = Eigen::VectorXd::Zero(n);
   inertia_times_jacobian = Eigen::MatrixXd::Zero(3, n);
+  load_damping.matrix = Eigen::MatrixXd::Zero(n, n);
+  load_damping.reference = Eigen::VectorXd::Zero(n);
   step.jacobian = Eigen::MatrixXd::Zero(n, n);
+  step.jacobian_damping = Eigen::MatrixXd::Zero(n, n);
   step.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
   for (Eigen::VectorXd* v : {&step.x, &step.dx, &step.r, &step.r_new, &step.dr, &step.jdx, &step.q,
                              &step.v, &step.a, &step.scratch, &step.scratch2})

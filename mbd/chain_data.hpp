@@ -49,6 +49,20 @@ struct StepWorkspace {
   int last_substeps = 1;                ///< pieces the last step was solved in (sub-steps and halves)
   long split_steps = 0;                 ///< steps that needed halving since construction
   int max_substeps = 1;                 ///< most pieces of one halved step since construction
+  /// The load damping D (ChainData::load_damping) the Jacobian holds (zero: none); the
+  /// Jacobian is corrected by the difference when the caller changes D.
+  Eigen::MatrixXd jacobian_damping;
+};
+
+/// A linear part of the external loads' dependence on Φ̇ that the caller knows (e.g. the
+/// air's added mass, pipeline/fsi/chain_structure.cpp): while active, the step solves with
+///     Q(Φ̇) = Q_given − D (Φ̇ − Φ̇_ref),
+/// Q_given the generalized force of the Loads (found at Φ̇_ref). At Φ̇ = Φ̇_ref the step is
+/// the same; the term only makes the step respond to its own velocity as the loads would.
+struct LoadDamping {
+  Eigen::MatrixXd matrix;     ///< D = −∂Q/∂Φ̇ [N m s/rad]
+  Eigen::VectorXd reference;  ///< Φ̇_ref [rad/s]
+  bool active = false;
 };
 
 struct ChainData {
@@ -64,6 +78,7 @@ struct ChainData {
   Eigen::VectorXd rest;                ///< the model's rest angles [rad]
   Eigen::VectorXd deflection;          ///< scratch Φ − Φ_rest [rad]
   Eigen::MatrixXd inertia_times_jacobian;    ///< 3 × n scratch for the mass matrix
+  LoadDamping load_damping;  ///< inactive unless the caller sets it (generalized_alpha.cpp)
   StepWorkspace step;
 };
 

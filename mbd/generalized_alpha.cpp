@@ -76,6 +76,10 @@ struct StepProblem {
     predict(x);
     StepWorkspace& ws = data.step;
     compute_all_terms(model, data, pose, ws.q, ws.v, loads);
+    if (data.load_damping.active) {  // Q −= D (Φ̇ − Φ̇_ref) (chain_data.hpp LoadDamping)
+      ws.scratch = ws.v - data.load_damping.reference;
+      data.generalized_load.noalias() -= data.load_damping.matrix * ws.scratch;
+    }
     ws.scratch.noalias() = data.mass_matrix * x;
     r = ws.scratch + data.inertial_bias + data.spring_force - data.generalized_load;
     // Force scale: the size of the terms that make up r, so that the tolerance is
@@ -91,6 +95,26 @@ struct StepProblem {
     return terms;
   }
 
+  // ∂Φ̇_{n+1}/∂Φ̈_{n+1} (predict) [s].
+  double velocity_factor() const { return h * c.gamma * (1.0 - c.alpha_f) / (1.0 - c.alpha_m); }
+
+  // The kept Jacobian corrected for a change of the load damping since it was made:
+  // ∂r/∂Φ̈ gains (D_now − D_then) ∂Φ̇/∂Φ̈.
+  void update_load_damping() {
+    StepWorkspace& ws = data.step;
+    const LoadDamping& d = data.load_damping;
+    if (!d.active && ws.jacobian_damping.isZero(0.0)) return;
+    if (d.active && ws.jacobian_damping == d.matrix) return;
+    if (d.active) {
+      ws.jacobian += velocity_factor() * (d.matrix - ws.jacobian_damping);
+      ws.jacobian_damping = d.matrix;
+    } else {
+      ws.jacobian -= velocity_factor() * ws.jacobian_damping;
+      ws.jacobian_damping.setZero();
+    }
+    ws.lu.compute(ws.jacobian);
+  }
+
   // Finite-difference Jacobian at x (r = residual at x), factorised.
   void rebuild_jacobian(Eigen::VectorXd& x, const Eigen::VectorXd& r) {
     StepWorkspace& ws = data.step;
@@ -103,6 +127,10 @@ struct StepProblem {
       x(j) = keep;
     }
     residual(x, ws.r_new);  // leave data at x again
+    if (data.load_damping.active)
+      ws.jacobian_damping = data.load_damping.matrix;
+    else
+      ws.jacobian_damping.setZero();
     ws.lu.compute(ws.jacobian);
     ws.jacobian_valid = true;
     ws.jacobian_dt = h;
@@ -130,7 +158,10 @@ void solve_step(const ChainModel& model, ChainData& data, const BaseMotion& base
   if (!std::isfinite(rnorm))
     throw ConvergenceFailure("residual is not finite at the first iterate", current.step, t1);
   // The Jacobian's h-dependent part changes with dt: rebuild when the step size changed.
-  if (!ws.jacobian_valid || std::abs(ws.jacobian_dt - dt) > 1e-12 * dt) p.rebuild_jacobian(ws.x, ws.r);
+  if (!ws.jacobian_valid || std::abs(ws.jacobian_dt - dt) > 1e-12 * dt)
+    p.rebuild_jacobian(ws.x, ws.r);
+  else
+    p.update_load_damping();
 
   bool converged = rnorm <= settings.tolerance * scale + p.roundoff;
   while (!converged) {

@@ -261,6 +261,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
                           : fsi::CouplingMethod::Aitken;
   m.coupling.max_iterations = c.numerics.max_coupling_iterations;
   m.coupling.tolerance = c.numerics.coupling_tolerance;
+  m.coupling.added_mass = c.numerics.added_mass;
   m.air = c.air.enabled;
   m.density = c.air.density;
   m.free_stream = c.air.freestream;

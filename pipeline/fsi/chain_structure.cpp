@@ -6,6 +6,7 @@
 #include "mbd/chain_kinematics.hpp"
 #include "mbd/convergence_failure.hpp"
 #include "pipeline/fsi/load_transfer.hpp"
+#include "pipeline/fsi/panel_load_response.hpp"
 #include "pipeline/fsi/phase_analysis.hpp"
 
 namespace flapsim::fsi {
@@ -15,7 +16,8 @@ std::unique_ptr<StructureData> ChainStructureModel::make_data() const {
 }
 
 ChainStructureData::ChainStructureData(const ChainStructureModel& model)
-    : chain(model.chain), loads(model.chain.num_bodies()), model_(model) {}
+    : chain(model.chain), loads(model.chain.num_bodies()), model_(model),
+      change_loads_(model.chain.num_bodies()) {}
 
 void ChainStructureData::initialize(double t0) {
   const int n = model_.chain.num_dofs();
@@ -48,11 +50,47 @@ void ChainStructureData::prescribe(double t) {
 }
 
 void ChainStructureData::solve(double dt) {
+  // The loads were found at the iterate: the added mass acts on the step's departure from it.
+  if (chain.load_damping.active) chain.load_damping.reference = relaxed.v;
   try {
     mbd::advance(model_.chain, chain, model_.base_motion, model_.integrator, state, dt, loads, trial);
   } catch (const mbd::ConvergenceFailure& e) {
     throw StructureFailure("multibody: " + e.reason());
   }
+}
+
+// D = −∂Q/∂Φ̇ of the lattice's added-mass response at the iterate's pose (the one the lattice
+// was solved on): column j from the node velocities of Φ̇ + e_j less those of Φ̇ (exactly
+// linear in Φ̇ at a pose), their force change, and its generalized force at the pose.
+void ChainStructureData::linearise_panel_loads(PanelLoadResponse& response) {
+  const int n = model_.chain.num_dofs();
+  if (!use_added_mass || n == 0 || model_.attachment.nodes.empty()) return;
+  const mbd::BasePose pose = model_.base_motion(relaxed.time);
+  const int nodes = model_.surface_nodes();
+  for (Eigen::Matrix3Xd* m : {&base_positions_, &base_velocities_, &unit_positions_, &unit_velocities_})
+    m->resize(3, nodes);
+  mbd::forward_kinematics(model_.chain, chain, pose, relaxed.q, relaxed.v);
+  deformed_nodes(model_.attachment, chain, base_positions_, base_velocities_);
+  change_loads_.clear();
+  mbd::compute_generalized_loads(model_.chain, chain, change_loads_);  // gravity alone
+  gravity_load_ = chain.generalized_load;
+  panel_change_.point = response.points();
+  mbd::LoadDamping& damping = chain.load_damping;
+  for (int j = 0; j < n; ++j) {
+    rates_ = relaxed.v;
+    rates_(j) += 1.0;
+    mbd::forward_kinematics(model_.chain, chain, pose, relaxed.q, rates_);
+    deformed_nodes(model_.attachment, chain, unit_positions_, unit_velocities_);
+    node_change_ = unit_velocities_ - base_velocities_;
+    response.force_change(node_change_, panel_change_.force);
+    change_loads_.clear();
+    fsi::add_panel_loads(model_.attachment, chain, panel_change_, change_loads_);
+    mbd::compute_generalized_loads(model_.chain, chain, change_loads_);
+    damping.matrix.col(j) = gravity_load_ - chain.generalized_load;
+  }
+  damping.reference = relaxed.v;
+  damping.active = true;
+  mbd::forward_kinematics(model_.chain, chain, pose, relaxed.q, relaxed.v);  // the iterate's pose again
 }
 
 void ChainStructureData::pose_iterate() {

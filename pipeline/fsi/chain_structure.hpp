@@ -57,6 +57,7 @@ class ChainStructureData : public StructureData {
   void add_panel_loads(const uvlm::PanelLoads& panels) override;
   void prescribe(double t) override;
   void solve(double dt) override;
+  void linearise_panel_loads(PanelLoadResponse& response) override;
   void start_iterate() override { relaxed = trial; }
   void pose_iterate() override;
   void surface(Eigen::Matrix3Xd& positions, Eigen::Matrix3Xd& velocities) const override;
@@ -65,7 +66,10 @@ class ChainStructureData : public StructureData {
   void trial_vector(Eigen::VectorXd& x) const override;
   void set_iterate(const Eigen::VectorXd& x) override;
   void relax(double omega) override;
-  void accept() override { state = trial; }
+  void accept() override {
+    state = trial;
+    chain.load_damping.active = false;
+  }
   int interface_size() const override { return model_.chain.num_dofs(); }
   long split_steps() const override { return chain.step.split_steps; }
   int max_step_pieces() const override { return chain.step.max_substeps; }
@@ -79,9 +83,17 @@ class ChainStructureData : public StructureData {
   mbd::ChainState trial;     ///< the chain's answer of the current sub-iteration
   mbd::ChainState relaxed;   ///< the iterate the lattice is solved on
   mbd::Loads loads;          ///< external + aerodynamic loads of the current solve
+  /// Linearise the air's added mass into each step (linearise_panel_loads); false: ignore
+  /// the response (the plain partitioned coupling).
+  bool use_added_mass = true;
 
  private:
   const ChainStructureModel& model_;  ///< not owned
+  // Scratch of linearise_panel_loads.
+  Eigen::Matrix3Xd base_positions_, base_velocities_, unit_positions_, unit_velocities_, node_change_;
+  uvlm::PanelLoads panel_change_;
+  mbd::Loads change_loads_;
+  Eigen::VectorXd gravity_load_, rates_;
 };
 
 /// \brief The chain parts of a run's structure, for outputs that show the chain (joint

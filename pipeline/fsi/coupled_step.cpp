@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pipeline/fsi/numerical_failure.hpp"
+#include "pipeline/fsi/panel_load_response.hpp"
 
 namespace flapsim::fsi {
 
@@ -15,6 +16,7 @@ FsiData::FsiData(const FsiModel& model)
       quasi_newton(model.structure->num_dofs()) {
   if (model.air) {
     lattice.emplace(model.lattice);
+    added_mass_scratch.emplace(model.lattice);
     nodes.setZero(3, model.lattice.nodes());
     node_velocities.setZero(3, model.lattice.nodes());
   }
@@ -65,6 +67,10 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
     // (first of the step: the structure's pose is already the predictor's = the iterate)
     solve_air(model, data, dt, step, t1);
     ++k;
+    if (k == 1 && model.coupling.added_mass) {  // the air's added mass, once a step
+      PanelLoadResponse response(model.lattice, *data.lattice, *data.added_mass_scratch);
+      s.linearise_panel_loads(response);
+    }
     // 2. the structure's step with these loads, to 1 % of the last change (file comment)
     assemble_loads(model, data, t1);
     accuracy = s.set_solve_accuracy(

@@ -37,6 +37,7 @@
 #include "pipeline/fsi/aitken_relaxation.hpp"
 #include "pipeline/fsi/interface_quasi_newton.hpp"
 #include "pipeline/fsi/structure.hpp"
+#include "uvlm/added_mass.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
 namespace flapsim::fsi {
@@ -56,6 +57,10 @@ struct CouplingSettings {
   /// Intermediate structure solves to 1 % of the coupling's current change (file comment);
   /// false: every solve at the structure's full accuracy.
   bool loose_intermediate_solves = true;
+  /// The lattice's added-mass response linearised into the structure's step once a step
+  /// (StructureData::linearise_panel_loads; docs/fsi.md, "Added mass in the coupling");
+  /// false: the plain partitioned step.
+  bool added_mass = true;
 };
 
 struct FsiModel {
@@ -79,6 +84,7 @@ struct FsiData {
 
   std::unique_ptr<StructureData> structure;        ///< the structure's state (model.structure)
   std::optional<uvlm::VortexLatticeData> lattice;  ///< present if model.air
+  std::optional<uvlm::AddedMassScratch> added_mass_scratch;  ///< present if model.air
   Eigen::Matrix3Xd nodes, node_velocities;  ///< deformed lattice of the last solve [m], [m/s]
   Eigen::VectorXd residual;  ///< interface residual of the last sub-iteration
   AitkenRelaxation aitken;

@@ -41,6 +41,7 @@ class StructureFailure : public std::runtime_error {
 };
 
 class StructureData;
+class PanelLoadResponse;
 
 /// What a run records of a structure at its accepted state (history.csv, summary.json),
 /// defined alike for every structure so that runs compare column by column (docs/fsi.md,
@@ -130,6 +131,12 @@ class StructureData {
     (void)factor;
     return 1.0;
   }
+  /// \brief Takes the lattice's linearised added-mass response at its last solve
+  /// (panel_load_response.hpp) into this step's following solves: the structure's step
+  /// then answers its own velocity as the air's added mass would, which the coupling
+  /// otherwise learns over sub-iterations; the coupling's fixed point is unchanged.
+  /// accept() drops it. A structure that cannot use it ignores it (the default).
+  virtual void linearise_panel_loads(PanelLoadResponse& response) { (void)response; }
   /// The iterate s̃ := ŝ (the predictor of a step).
   virtual void start_iterate() = 0;
   /// \brief Puts the structure's pose at the iterate s̃ (its time is the trial's).

@@ -144,7 +144,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
                   "wake_sum", "tree_tolerance", "wake_precision", "coupling", "max_coupling_iterations", "coupling_tolerance",
-                  "rho_infinity", "structure_substeps", "steady"});
+                  "added_mass", "rho_infinity", "structure_substeps", "steady"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
   // The product in 64 bits, against a documented maximum (an int would wrap).
@@ -184,6 +184,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
       t->get_int("max_coupling_iterations", n.max_coupling_iterations, Bounds::closed(1, 100000));
   n.coupling_tolerance =
       t->get_double("coupling_tolerance", n.coupling_tolerance, Bounds{0.0, 1.0, true, true});
+  n.added_mass = t->get_bool("added_mass", n.added_mass);
   n.rho_infinity = t->get_double("rho_infinity", n.rho_infinity, Bounds::closed(0.0, 1.0));
   n.structure_substeps = t->get_int("structure_substeps", n.structure_substeps, Bounds::closed(1, 10000));
   n.steady = t->get_bool("steady", n.steady);

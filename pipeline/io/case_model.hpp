@@ -134,6 +134,9 @@ struct Case {
     /// free stream, no ∂Γ/∂t, nothing shed; uvlm::VortexLatticeModel::steady_wake_length):
     /// results independent of Δt for a wing at rest in a free stream (docs/uvlm.md, "Steady lattice")
     bool steady = false;
+    /// The lattice's added mass linearised into the structure's step (docs/fsi.md, "Added
+    /// mass in the coupling"); false: the plain partitioned step. Same fixed point either way.
+    bool added_mass = true;
   } numerics;
 
   struct Output {

@@ -164,6 +164,7 @@ void case_fields(Canonical& out, const Case& c) {
   if (n.steady) out.line("numerics.steady", n.steady);  // only then: other fingerprints unchanged
   out.line("numerics.max_coupling_iterations", n.max_coupling_iterations);
   out.line("numerics.coupling_tolerance", n.coupling_tolerance);
+  if (!n.added_mass) out.line("numerics.added_mass", n.added_mass);  // only when off (as steady)
   out.line("numerics.rho_infinity", n.rho_infinity);
   // Only when set: the fingerprints of the cases written before the key existed stay as they were.
   if (n.structure_substeps != 1) out.line("numerics.structure_substeps", n.structure_substeps);

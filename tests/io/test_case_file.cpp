@@ -270,6 +270,16 @@ TEST(CaseFile, SteadyKey) {
   EXPECT_NE(std::string(e.what()).find("free stream"), std::string::npos) << e.what();
 }
 
+TEST(CaseFile, AddedMassKey) {
+  // docs/case_file.md: `added_mass` (default true) puts the lattice's added mass into the
+  // structure's step; not a boolean: bad input naming the key and its line.
+  EXPECT_TRUE(case_from_text(kHead).numerics.added_mass);
+  EXPECT_FALSE(case_from_text(kHead + "[numerics]\nadded_mass = false\n").numerics.added_mass);
+  const auto e = error_of(kHead + "[numerics]\nadded_mass = \"yes\"\n");  // line 9
+  EXPECT_EQ(e.key(), "numerics.added_mass");
+  EXPECT_EQ(e.line(), 9);
+}
+
 TEST(CaseFile, BaseTranslationSignals) {
   // docs/case_file.md: heave, surge and lateral move the pivot along z_G, x_G, y_G [m], as
   // signals of s = f t; pose() gives their position, velocity and acceleration.

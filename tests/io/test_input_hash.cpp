@@ -56,6 +56,9 @@ TEST(InputHash, FollowsTheInputsNotTheirPlace) {
   io::Case steady = c;
   steady.numerics.steady = true;
   EXPECT_NE(io::input_hash(steady, &w, "", 1.0), h);
+  io::Case plain = c;  // numerics.added_mass off: the same fixed point, other iterates
+  plain.numerics.added_mass = false;
+  EXPECT_NE(io::input_hash(plain, &w, "", 1.0), h);
   io::Case revolving = c;
   revolving.kinematics.revolution.rate = 1.0;
   EXPECT_NE(io::input_hash(revolving, &w, "", 1.0), h);

@@ -1,0 +1,35 @@
+#pragma once
+/// \file panel_load_response.hpp
+/// \brief The lattice's linearised added-mass response as a structure sees it: the change
+/// of the panel forces for a change of the lattice nodes' velocities (uvlm/added_mass.hpp),
+/// at the lattice's last solve. The coupled step hands it to the structure once a step
+/// (StructureData::linearise_panel_loads); the structure turns it into its own matrix
+/// (docs/fsi.md, "Added mass in the coupling").
+
+#include <Eigen/Core>
+
+#include "uvlm/added_mass.hpp"
+#include "uvlm/vortex_lattice.hpp"
+
+namespace flapsim::fsi {
+
+class PanelLoadResponse {
+ public:
+  /// Views of the lattice and of scratch made for it (nothing allocated).
+  PanelLoadResponse(const uvlm::VortexLatticeModel& model, const uvlm::VortexLatticeData& data,
+                    uvlm::AddedMassScratch& scratch)
+      : model_(model), data_(data), scratch_(scratch) {}
+  /// δF [N] at points() (3 × panels) for the node velocity change \p dv [m/s] (3 × nodes).
+  void force_change(const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) {
+    uvlm::added_mass_force_change(model_, data_, dv, scratch_, df);
+  }
+  /// The panels' points of action of the last solve [m] (ground frame).
+  const Eigen::Matrix3Xd& points() const { return data_.loads.point; }
+
+ private:
+  const uvlm::VortexLatticeModel& model_;
+  const uvlm::VortexLatticeData& data_;
+  uvlm::AddedMassScratch& scratch_;
+};
+
+}  // namespace flapsim::fsi

@@ -1,0 +1,106 @@
+// The lattice's linearised added-mass response (uvlm/added_mass.hpp) against the change of
+// the loads the lattice itself computes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "uvlm/added_mass.hpp"
+#include "uvlm/planform_grid.hpp"
+#include "uvlm/vortex_lattice.hpp"
+
+namespace {
+
+using namespace flapsim;
+
+// A rectangular plate, chord 10 mm, span 40 mm, 4 × 8 panels, tilted by 0.2 rad about the
+// span axis so that its normals are not a coordinate axis.
+Eigen::Matrix3Xd tilted_plate(const uvlm::VortexLatticeModel& m) {
+  uvlm::PlanformGridOptions o;
+  o.chordwise = m.chordwise;
+  o.spanwise = m.spanwise;
+  const uvlm::PlanformGrid g = uvlm::make_rectangular_grid(0.010, 0.040, o);
+  return Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()).toRotationMatrix() * g.nodes;
+}
+
+TEST(AddedMass, TheResponseIsTheDerivativeOfTheLoadsOfAPlateAtRestInStillAir) {
+  // At rest in still air every circulation is zero, so the loads' only first-order part in
+  // the node velocities is ρ A n ∂Γ/∂t (the V·∇Γ and suction terms are products of two
+  // small quantities): the response must equal the central difference of the loads the
+  // lattice computes, (F(+ε δv) − F(−ε δv)) / 2ε, whose error is O(ε²) — after one accepted
+  // step (BDF1 rate) and after two (BDF2, the factor 3/2), by both load routes.
+  for (const uvlm::LoadMethod method : {uvlm::LoadMethod::Bernoulli, uvlm::LoadMethod::KuttaJoukowski}) {
+    for (const int accepted : {1, 2}) {
+      uvlm::VortexLatticeModel m;
+      m.chordwise = 4;
+      m.spanwise = 8;
+      m.wake_capacity = 4;
+      m.load_method = method;
+      const Eigen::Matrix3Xd nodes = tilted_plate(m);
+      const Eigen::Matrix3Xd rest = Eigen::Matrix3Xd::Zero(3, m.nodes());
+      const Eigen::Vector3d still = Eigen::Vector3d::Zero();
+      const double dt = 1e-3, rho = 1.225;
+      uvlm::VortexLatticeData d(m);
+      for (int n = 0; n < accepted; ++n) {
+        uvlm::solve(m, d, nodes, rest, still, dt, rho);
+        uvlm::advance(m, d);
+      }
+      std::mt19937 rng(11);
+      std::uniform_real_distribution<double> u(-1.0, 1.0);
+      Eigen::Matrix3Xd dv(3, m.nodes());  // a random velocity pattern of the nodes [m/s]
+      for (Eigen::Index k = 0; k < dv.size(); ++k) dv.data()[k] = u(rng);
+      const double eps = 1e-4;
+      uvlm::solve(m, d, nodes, eps * dv, still, dt, rho);
+      const Eigen::Matrix3Xd plus = d.loads.force;
+      uvlm::solve(m, d, nodes, -eps * dv, still, dt, rho);
+      const Eigen::Matrix3Xd difference = (plus - d.loads.force) / (2.0 * eps);
+      uvlm::solve(m, d, nodes, rest, still, dt, rho);  // the response is taken at this solve
+      uvlm::AddedMassScratch scratch(m);
+      Eigen::Matrix3Xd response;
+      uvlm::added_mass_force_change(m, d, dv, scratch, response);
+      const double scale = difference.cwiseAbs().maxCoeff();
+      ASSERT_GT(scale, 0.0);
+      EXPECT_LT((response - difference).cwiseAbs().maxCoeff(), 1e-6 * scale)
+          << "load route " << static_cast<int>(method) << ", after " << accepted << " accepted steps";
+      // Linear in δv: twice the change, twice the response.
+      Eigen::Matrix3Xd doubled;
+      uvlm::added_mass_force_change(m, d, 2.0 * dv, scratch, doubled);
+      EXPECT_LT((doubled - 2.0 * response).cwiseAbs().maxCoeff(), 1e-12 * scale);
+    }
+  }
+}
+
+TEST(AddedMass, AHeavingPlateFeelsAForceAgainstItsAcceleration) {
+  // A uniform heave δv = n (every node moving along the plate's normal) must be met by a
+  // total force along −n (the air resists the acceleration), and the steady lattice
+  // (∂Γ/∂t = 0) has no added mass at all.
+  uvlm::VortexLatticeModel m;
+  m.chordwise = 4;
+  m.spanwise = 8;
+  m.wake_capacity = 4;
+  const Eigen::Matrix3Xd nodes = tilted_plate(m);
+  const Eigen::Vector3d normal = Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()).toRotationMatrix() *
+                                 Eigen::Vector3d::UnitZ();
+  uvlm::VortexLatticeData d(m);
+  uvlm::solve(m, d, nodes, Eigen::Matrix3Xd::Zero(3, m.nodes()), Eigen::Vector3d::Zero(), 1e-3, 1.225);
+  Eigen::Matrix3Xd heave(3, m.nodes());
+  heave.colwise() = normal;
+  uvlm::AddedMassScratch scratch(m);
+  Eigen::Matrix3Xd df;
+  uvlm::added_mass_force_change(m, d, heave, scratch, df);
+  const Eigen::Vector3d total = df.rowwise().sum();
+  EXPECT_LT(total.dot(normal), 0.0);
+  EXPECT_LT((total - total.dot(normal) * normal).norm(), 1e-12 * total.norm());  // along n only
+
+  uvlm::VortexLatticeModel steady = m;
+  steady.steady_wake_length = 1.0;
+  uvlm::VortexLatticeData ds(steady);
+  uvlm::solve(steady, ds, nodes, Eigen::Matrix3Xd::Zero(3, m.nodes()), Eigen::Vector3d(1.0, 0.0, 0.0), 1e-3, 1.225);
+  uvlm::AddedMassScratch steady_scratch(steady);
+  uvlm::added_mass_force_change(steady, ds, heave, steady_scratch, df);
+  EXPECT_EQ(df.cwiseAbs().maxCoeff(), 0.0);
+  // A velocity field of the wrong size is refused.
+  EXPECT_THROW(uvlm::added_mass_force_change(m, d, Eigen::Matrix3Xd::Zero(3, 5), scratch, df), std::invalid_argument);
+}
+
+}  // namespace

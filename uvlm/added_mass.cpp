@@ -1,0 +1,43 @@
+/// \file added_mass.cpp
+/// \brief The linearised added-mass response of the lattice's loads (added_mass.hpp).
+
+#include "uvlm/added_mass.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace flapsim::uvlm {
+
+void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeData& d,
+                             const Eigen::Matrix3Xd& dv, AddedMassScratch& s, Eigen::Matrix3Xd& df) {
+  const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
+  if (dv.cols() != m.nodes())
+    throw std::invalid_argument("added_mass_force_change: " + std::to_string(dv.cols()) +
+                                " node velocities for a lattice of " + std::to_string(m.nodes()) + " nodes");
+  if (s.rhs.size() != np) throw std::invalid_argument("added_mass_force_change: scratch of another lattice");
+  df.setZero(3, np);
+  if (m.steady()) return;  // ∂Γ/∂t = 0
+  if (!d.has_factorisation || !(d.dt > 0.0))
+    throw std::invalid_argument("added_mass_force_change: the lattice has not been solved yet");
+  // δrhs_k = n_k · δv at the collocation point (the interpolation of update_geometry).
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0; i < nc; ++i) {
+      const int k = m.panel(i, j);
+      const auto va = dv.col(m.node(i, j)), vb = dv.col(m.node(i + 1, j));
+      const auto vc = dv.col(m.node(i, j + 1)), ve = dv.col(m.node(i + 1, j + 1));
+      const Eigen::Vector3d v = 0.5 * ((va + 0.75 * (vb - va)) + (vc + 0.75 * (ve - vc)));
+      s.rhs(k) = v.dot(d.normal.col(k));
+    }
+  s.dgamma = d.lu.solve(s.rhs);  // exact when lu factorises the current matrix
+  if (!d.factorisation_current && s.gmres.size() == np) {
+    // The iterative path: GMRES on the current matrix from the earlier matrix's answer.
+    const PreconditionedGmres::Result r =
+        s.gmres.solve(d.influence, d.lu, s.rhs, s.dgamma, m.iterative_tolerance, m.iterative_max_iterations);
+    if (!r.converged) s.dgamma = d.lu.solve(s.rhs);  // the preconditioner's answer: approximate
+  }
+  // ∂Γ/∂t's factor on the current Γ (aero_loads.cpp gamma_rate: BDF2 from the second step).
+  const double rate = (d.accepted_steps >= 2 ? 1.5 : 1.0) / d.dt;
+  for (int k = 0; k < np; ++k) df.col(k) = (d.rho * d.area(k) * rate * s.dgamma(k)) * d.normal.col(k);
+}
+
+}  // namespace flapsim::uvlm

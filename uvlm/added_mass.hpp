@@ -1,0 +1,44 @@
+#pragma once
+/// \file added_mass.hpp
+/// \brief The added-mass part of the lattice's loads, linearised: how the panel forces of
+/// the last solve change when the surface nodes' velocities change, through the
+/// circulations' time derivative alone (docs/fsi.md, "Added mass in the coupling").
+///
+/// A change δv of the node velocities changes the boundary condition at the collocation
+/// points, δrhs_k = n_k · δv_k (δv_k bilinear at the three-quarter chord point, as the
+/// solve interpolates the surface velocity), hence the circulations, A δΓ = δrhs, and the
+/// unsteady term of the pressure jump, ρ ∂Γ_k/∂t, by ρ c δΓ_k / Δt (c = 1 for the first
+/// accepted step's BDF1 rate, 3/2 for BDF2; aero_loads.cpp gamma_rate):
+///     δF_k = ρ A_k n_k c δΓ_k / Δt     at the panel's point of action (loads.point).
+/// This is the term that scales as 1/Δt and makes a light wing's partitioned coupling
+/// slow or unstable (the air's added mass); the quasi-steady terms (ρ V·∇Γ, the
+/// leading-edge suction) are left out. For a wing at rest in still air it is the exact
+/// derivative of the loads (test uvlm.AddedMass.*). δΓ is solved as the circulations are:
+/// by the factorisation of the current influence matrix, or by GMRES on it preconditioned
+/// by an earlier one's (the iterative path, to the same tolerance), so that both paths
+/// give the coupling the same matrix. Zero for a steady lattice (∂Γ/∂t = 0).
+
+#include <Eigen/Core>
+
+#include "uvlm/vortex_lattice.hpp"
+
+namespace flapsim::uvlm {
+
+/// Scratch of added_mass_force_change, allocated once (a lattice's panel count).
+struct AddedMassScratch {
+  explicit AddedMassScratch(const VortexLatticeModel& model)
+      : rhs(Eigen::VectorXd::Zero(model.panels())), dgamma(Eigen::VectorXd::Zero(model.panels())) {
+    if (model.iterative(model.panels())) gmres.reserve(model.panels(), model.iterative_restart);
+  }
+  Eigen::VectorXd rhs, dgamma;
+  PreconditionedGmres gmres;  ///< the iterative path's solves (reserved when the model has it)
+};
+
+/// \brief δF [N] (3 × panels, at loads.point) of the last solve for the node velocity change
+/// \p node_velocity_change [m/s] (3 × nodes), by the formula of the file comment.
+/// \throws std::invalid_argument on wrong sizes or before any solve
+void added_mass_force_change(const VortexLatticeModel& model, const VortexLatticeData& data,
+                             const Eigen::Matrix3Xd& node_velocity_change, AddedMassScratch& scratch,
+                             Eigen::Matrix3Xd& force_change);
+
+}  // namespace flapsim::uvlm
