@@ -17,6 +17,7 @@ FsiData::FsiData(const FsiModel& model)
   if (model.air) {
     lattice.emplace(model.lattice);
     added_mass_scratch.emplace(model.lattice);
+    for (Eigen::Matrix3Xd& f : earlier_forces) f.setZero(3, model.lattice.panels());
     nodes.setZero(3, model.lattice.nodes());
     node_velocities.setZero(3, model.lattice.nodes());
   }
@@ -103,6 +104,22 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
   return false;
 }
 
+// The predictor's panel loads (CouplingSettings::predictor_order): the last accepted
+// step's forces F₀ extrapolated through the earlier ones, 2F₀ − F₁ or 3F₀ − 3F₁ + F₂, at
+// F₀'s points; then F₀ joins the earlier forces.
+const uvlm::PanelLoads& predicted_loads(const FsiModel& model, FsiData& data) {
+  const uvlm::PanelLoads& last = data.lattice->loads;
+  const int order = std::min(model.coupling.predictor_order, data.earlier_count);
+  data.predicted_loads = last;
+  Eigen::Matrix3Xd* f = data.earlier_forces;
+  if (order == 1) data.predicted_loads.force = 2.0 * last.force - f[0];
+  if (order >= 2) data.predicted_loads.force = 3.0 * last.force - 3.0 * f[0] + f[1];
+  f[1] = f[0];
+  f[0] = last.force;
+  data.earlier_count = std::min(data.earlier_count + 1, 2);
+  return data.predicted_loads;
+}
+
 }  // namespace
 
 void initialize(const FsiModel& model, FsiData& data, double t0) {
@@ -115,6 +132,7 @@ void initialize(const FsiModel& model, FsiData& data, double t0) {
   data.last_iterations = 0;
   data.total_iterations = 0;
   data.last_change = 0.0;
+  data.earlier_count = 0;
 }
 
 void coupled_step(const FsiModel& model, FsiData& data, double dt) {
@@ -142,10 +160,10 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
       data.last_iterations = 0;
       data.last_change = 0.0;
     } else {
-      // 0. predictor: the previous step's aerodynamic loads, transferred at the accepted
-      // pose of the last step (the structure's current pose).
+      // 0. predictor: the previous steps' aerodynamic loads extrapolated to this one,
+      // transferred at the accepted pose of the last step (the structure's current pose).
       s.set_external_loads(t1);
-      if (step > 0) s.add_panel_loads(data.lattice->loads);
+      if (step > 0) s.add_panel_loads(predicted_loads(model, data));
       s.set_solve_accuracy(model.coupling.loose_intermediate_solves
                                ? std::max(1.0, data.first_change / model.coupling.tolerance)
                                : 1.0);

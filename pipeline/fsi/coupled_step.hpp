@@ -61,6 +61,11 @@ struct CouplingSettings {
   /// (StructureData::linearise_panel_loads; docs/fsi.md, "Added mass in the coupling");
   /// false: the plain partitioned step.
   bool added_mass = true;
+  /// The predictor's loads: the last accepted step's panel forces extrapolated in time
+  /// through this many earlier steps' (0: held, 1: linear, 2: quadratic), each panel's
+  /// force vector at its current point (docs/fsi.md, "One coupled step"). Only where the
+  /// iteration starts; the answer is the fixed point's.
+  int predictor_order = 2;
 };
 
 struct FsiModel {
@@ -85,6 +90,11 @@ struct FsiData {
   std::unique_ptr<StructureData> structure;        ///< the structure's state (model.structure)
   std::optional<uvlm::VortexLatticeData> lattice;  ///< present if model.air
   std::optional<uvlm::AddedMassScratch> added_mass_scratch;  ///< present if model.air
+  /// Panel forces of the accepted steps before the last one [N] (newest first; the
+  /// predictor's extrapolation), how many are held, and the predictor's loads (scratch).
+  Eigen::Matrix3Xd earlier_forces[2];
+  int earlier_count = 0;
+  uvlm::PanelLoads predicted_loads;
   Eigen::Matrix3Xd nodes, node_velocities;  ///< deformed lattice of the last solve [m], [m/s]
   Eigen::VectorXd residual;  ///< interface residual of the last sub-iteration
   AitkenRelaxation aitken;
