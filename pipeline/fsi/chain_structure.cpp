@@ -90,6 +90,7 @@ void ChainStructureData::linearise_panel_loads(PanelLoadResponse& response) {
   }
   damping.reference = relaxed.v;
   damping.active = true;
+  has_added_mass_ = true;
   mbd::forward_kinematics(model_.chain, chain, pose, relaxed.q, relaxed.v);  // the iterate's pose again
 }
 

@@ -58,7 +58,10 @@ class ChainStructureData : public StructureData {
   void prescribe(double t) override;
   void solve(double dt) override;
   void linearise_panel_loads(PanelLoadResponse& response) override;
-  void start_iterate() override { relaxed = trial; }
+  void start_iterate() override {
+    relaxed = trial;
+    chain.load_damping.active = has_added_mass_;  // the sub-iterations' solves
+  }
   void pose_iterate() override;
   void surface(Eigen::Matrix3Xd& positions, Eigen::Matrix3Xd& velocities) const override;
   double change(double frequency) const override;
@@ -68,7 +71,7 @@ class ChainStructureData : public StructureData {
   void relax(double omega) override;
   void accept() override {
     state = trial;
-    chain.load_damping.active = false;
+    chain.load_damping.active = false;  // not in the next step's predictor
   }
   int interface_size() const override { return model_.chain.num_dofs(); }
   long split_steps() const override { return chain.step.split_steps; }
@@ -94,6 +97,7 @@ class ChainStructureData : public StructureData {
   uvlm::PanelLoads panel_change_;
   mbd::Loads change_loads_;
   Eigen::VectorXd gravity_load_, rates_;
+  bool has_added_mass_ = false;  ///< chain.load_damping.matrix holds a linearisation
 };
 
 /// \brief The chain parts of a run's structure, for outputs that show the chain (joint

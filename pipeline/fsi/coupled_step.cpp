@@ -68,7 +68,8 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
     // (first of the step: the structure's pose is already the predictor's = the iterate)
     solve_air(model, data, dt, step, t1);
     ++k;
-    if (k == 1 && model.coupling.added_mass) {  // the air's added mass, once a step
+    if (k == 1 && model.coupling.added_mass &&
+        (step < 3 || step % std::max(1, model.coupling.added_mass_every) == 0)) {  // the air's added mass
       PanelLoadResponse response(model.lattice, *data.lattice, *data.added_mass_scratch);
       s.linearise_panel_loads(response);
     }

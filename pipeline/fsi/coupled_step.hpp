@@ -61,6 +61,10 @@ struct CouplingSettings {
   /// (StructureData::linearise_panel_loads; docs/fsi.md, "Added mass in the coupling");
   /// false: the plain partitioned step.
   bool added_mass = true;
+  /// Steps between two linearisations of the added mass (the first three steps each get
+  /// one: the lattice's ∂Γ/∂t changes from BDF1 to BDF2). Held between them: in the
+  /// structure's own coordinates the added mass follows the wing's shape, not its pose.
+  int added_mass_every = 10;
   /// The predictor's loads: the last accepted step's panel forces extrapolated in time
   /// through this many earlier steps' (0: held, 1: linear, 2: quadratic), each panel's
   /// force vector at its current point (docs/fsi.md, "One coupled step"). Only where the

@@ -132,10 +132,11 @@ class StructureData {
     return 1.0;
   }
   /// \brief Takes the lattice's linearised added-mass response at its last solve
-  /// (panel_load_response.hpp) into this step's following solves: the structure's step
-  /// then answers its own velocity as the air's added mass would, which the coupling
-  /// otherwise learns over sub-iterations; the coupling's fixed point is unchanged.
-  /// accept() drops it. A structure that cannot use it ignores it (the default).
+  /// (panel_load_response.hpp) into the solves of the sub-iterations, of this step and of
+  /// the following ones until the coupling gives a new one (not the predictors): the
+  /// structure's step then answers its own velocity as the air's added mass would, which
+  /// the coupling otherwise learns over sub-iterations; the coupling's fixed point is
+  /// unchanged. A structure that cannot use it ignores it (the default).
   virtual void linearise_panel_loads(PanelLoadResponse& response) { (void)response; }
   /// The iterate s̃ := ŝ (the predictor of a step).
   virtual void start_iterate() = 0;

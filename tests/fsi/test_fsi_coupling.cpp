@@ -387,9 +387,12 @@ TEST(FsiAddedMass, TheChainsMatrixIsTheDerivativeOfItsGeneralizedLoadsAtRest) {
   EXPECT_LT((damping - difference).cwiseAbs().maxCoeff(), 1e-6 * scale);
   // The air resists every joint rate: D's diagonal is positive.
   for (int j = 0; j < n; ++j) EXPECT_GT(damping(j, j), 0.0) << "joint dof " << j;
-  // accept() ends the step's linearisation.
+  // accept() leaves it out of the next step's predictor; the next sub-iterations
+  // (start_iterate) use it again, until the coupling gives a new one.
   cs.accept();
   EXPECT_FALSE(cs.chain.load_damping.active);
+  cs.start_iterate();
+  EXPECT_TRUE(cs.chain.load_damping.active);
 }
 
 TEST(FsiPredictor, ExtrapolatedLoadsEndEveryStepAtTheSameLift) {
