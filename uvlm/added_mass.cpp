@@ -9,7 +9,8 @@
 namespace flapsim::uvlm {
 
 void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeData& d,
-                             const Eigen::Matrix3Xd& dv, AddedMassScratch& s, Eigen::Matrix3Xd& df) {
+                             const Eigen::Matrix3Xd& dv, AddedMassScratch& s, Eigen::Matrix3Xd& df,
+                             bool quasi_steady) {
   const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
   if (dv.cols() != m.nodes())
     throw std::invalid_argument("added_mass_force_change: " + std::to_string(dv.cols()) +
@@ -25,8 +26,8 @@ void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeDat
       const int k = m.panel(i, j);
       const auto va = dv.col(m.node(i, j)), vb = dv.col(m.node(i + 1, j));
       const auto vc = dv.col(m.node(i, j + 1)), ve = dv.col(m.node(i + 1, j + 1));
-      const Eigen::Vector3d v = 0.5 * ((va + 0.75 * (vb - va)) + (vc + 0.75 * (ve - vc)));
-      s.rhs(k) = v.dot(d.normal.col(k));
+      s.surface_velocity.col(k) = 0.5 * ((va + 0.75 * (vb - va)) + (vc + 0.75 * (ve - vc)));
+      s.rhs(k) = s.surface_velocity.col(k).dot(d.normal.col(k));
     }
   s.dgamma = d.lu.solve(s.rhs);  // exact when lu factorises the current matrix
   if (!d.factorisation_current && s.gmres.size() == np) {
@@ -37,7 +38,29 @@ void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeDat
   }
   // ∂Γ/∂t's factor on the current Γ (aero_loads.cpp gamma_rate: BDF2 from the second step).
   const double rate = (d.accepted_steps >= 2 ? 1.5 : 1.0) / d.dt;
-  for (int k = 0; k < np; ++k) df.col(k) = (d.rho * d.area(k) * rate * s.dgamma(k)) * d.normal.col(k);
+  const auto dgamma = [&](int i, int j) {
+    return (i < 0 || i >= nc || j < 0 || j >= ns) ? 0.0 : s.dgamma(m.panel(i, j));
+  };
+  const auto& R = d.ring_nodes;
+  const auto& P = d.nodes;
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0; i < nc; ++i) {
+      const int k = m.panel(i, j);
+      double dp = rate * s.dgamma(k);
+      if (quasi_steady) {
+        // δ(V · ∇Γ) = −δv_s · ∇Γ + V · ∇δΓ, ∇δΓ by the loads' own vortex-vector formula
+        // (aero_loads.cpp); zero where the loads did not keep V and ∇Γ (Kutta–Joukowski).
+        const Eigen::Vector3d lead = R.col(m.node(i, j + 1)) - R.col(m.node(i, j));
+        const Eigen::Vector3d root = P.col(m.node(i + 1, j)) - P.col(m.node(i, j));
+        const Eigen::Vector3d tip = P.col(m.node(i + 1, j + 1)) - P.col(m.node(i, j + 1));
+        const double g = s.dgamma(k);
+        const Eigen::Vector3d vortex = (dgamma(i - 1, j) - g) * lead + 0.5 * (g - dgamma(i, j - 1)) * root +
+                                       0.5 * (dgamma(i, j + 1) - g) * tip;
+        const Eigen::Vector3d grad = vortex.cross(d.normal.col(k)) / d.area(k);
+        dp += d.panel_air_velocity.col(k).dot(grad) - s.surface_velocity.col(k).dot(d.panel_gamma_gradient.col(k));
+      }
+      df.col(k) = (d.rho * d.area(k) * dp) * d.normal.col(k);
+    }
 }
 
 }  // namespace flapsim::uvlm

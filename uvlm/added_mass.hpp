@@ -11,9 +11,13 @@
 /// accepted step's BDF1 rate, 3/2 for BDF2; aero_loads.cpp gamma_rate):
 ///     δF_k = ρ A_k n_k c δΓ_k / Δt     at the panel's point of action (loads.point).
 /// This is the term that scales as 1/Δt and makes a light wing's partitioned coupling
-/// slow or unstable (the air's added mass); the quasi-steady terms (ρ V·∇Γ, the
-/// leading-edge suction) are left out. For a wing at rest in still air it is the exact
-/// derivative of the loads (test uvlm.AddedMass.*). δΓ is solved as the circulations are:
+/// slow or unstable (the air's added mass). With \p quasi_steady (the default) the
+/// Bernoulli route's ρ V·∇Γ term is linearised too, with V and ∇Γ of the last solve held:
+///     δΔp_k = ρ (c δΓ_k / Δt − δv_k · ∇Γ_k + V_k · ∇δΓ_k),
+/// ∇δΓ by the loads' vortex-vector formula (aero_loads.cpp); left out are the change of the
+/// bound vortices' own velocity at the panels, the trailing-edge vortex's placement (it
+/// follows the edge's velocity) and the leading-edge suction. For a wing at rest in still
+/// air the response is the exact derivative of the loads (test uvlm.AddedMass.*). δΓ is solved as the circulations are:
 /// by the factorisation of the current influence matrix, or by GMRES on it preconditioned
 /// by an earlier one's (the iterative path, to the same tolerance), so that both paths
 /// give the coupling the same matrix. Zero for a steady lattice (∂Γ/∂t = 0).
@@ -27,10 +31,12 @@ namespace flapsim::uvlm {
 /// Scratch of added_mass_force_change, allocated once (a lattice's panel count).
 struct AddedMassScratch {
   explicit AddedMassScratch(const VortexLatticeModel& model)
-      : rhs(Eigen::VectorXd::Zero(model.panels())), dgamma(Eigen::VectorXd::Zero(model.panels())) {
+      : rhs(Eigen::VectorXd::Zero(model.panels())), dgamma(Eigen::VectorXd::Zero(model.panels())),
+        surface_velocity(Eigen::Matrix3Xd::Zero(3, model.panels())) {
     if (model.iterative(model.panels())) gmres.reserve(model.panels(), model.iterative_restart);
   }
   Eigen::VectorXd rhs, dgamma;
+  Eigen::Matrix3Xd surface_velocity;  ///< δv at the collocation points
   PreconditionedGmres gmres;  ///< the iterative path's solves (reserved when the model has it)
 };
 
@@ -39,6 +45,6 @@ struct AddedMassScratch {
 /// \throws std::invalid_argument on wrong sizes or before any solve
 void added_mass_force_change(const VortexLatticeModel& model, const VortexLatticeData& data,
                              const Eigen::Matrix3Xd& node_velocity_change, AddedMassScratch& scratch,
-                             Eigen::Matrix3Xd& force_change);
+                             Eigen::Matrix3Xd& force_change, bool quasi_steady = true);
 
 }  // namespace flapsim::uvlm

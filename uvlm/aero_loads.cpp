@@ -140,6 +140,8 @@ void compute_bernoulli_loads(const VortexLatticeModel& m, VortexLatticeData& d) 
                                      0.5 * (ring_gamma(m, d, i, j + 1) - g) * tip;
       const Eigen::Vector3d n = d.normal.col(k);
       const Eigen::Vector3d grad = vortex.cross(n) / d.area(k);
+      d.panel_air_velocity.col(k) = vrel;
+      d.panel_gamma_gradient.col(k) = grad;
       const double dp = d.rho * (vrel.dot(grad) + detail::gamma_rate(d, k));
       d.loads.force.col(k) = dp * d.area(k) * n + d.loads.leading_edge_force.col(k);
     }

@@ -12,6 +12,8 @@ namespace flapsim::uvlm {
 void compute_kutta_joukowski_loads(const VortexLatticeModel& m, VortexLatticeData& d) {
   const int nc = m.chordwise, ns = m.spanwise;
   const auto& S = d.bound_segments;
+  d.panel_air_velocity.setZero();  // the Bernoulli route's terms (vortex_lattice.hpp)
+  d.panel_gamma_gradient.setZero();
   // Wake, trailing-edge and bound velocity at the midpoints, each segment's own left out
   // (lattice_internal.hpp: rounding puts the midpoint inside its tiny core, off its line).
   detail::induced_at_bound_midpoints(m, d, S.size());

@@ -48,6 +48,8 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   area.setZero(np);
   surface_velocity.setZero(3, np);
   wake_velocity.setZero(3, np);
+  panel_air_velocity.setZero(3, np);
+  panel_gamma_gradient.setZero(3, np);
   gamma.setZero(np);
   gamma_accepted.setZero(np);
   gamma_accepted_before.setZero(np);

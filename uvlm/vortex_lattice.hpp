@@ -230,6 +230,10 @@ struct VortexLatticeData {
   Eigen::VectorXd area;              ///< panel area [m²]
   Eigen::Matrix3Xd surface_velocity;  ///< surface velocity at the collocation points [m/s]
   Eigen::Matrix3Xd wake_velocity;     ///< wake-induced velocity at the collocation points [m/s]
+  /// Of the Bernoulli loads of the last solve, per panel: the air's velocity relative to the
+  /// panel at its collocation point [m/s] and the surface gradient of Γ [m/s] (zero after
+  /// the Kutta–Joukowski route); the added-mass response's quasi-steady part uses them.
+  Eigen::Matrix3Xd panel_air_velocity, panel_gamma_gradient;
 
   // Circulations [m²/s], panel index i + nc j.
   Eigen::VectorXd gamma;           ///< last solve
