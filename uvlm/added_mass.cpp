@@ -8,50 +8,6 @@
 
 namespace flapsim::uvlm {
 
-namespace {
-
-// δv of ring node (q, j): the blend of ring_node_velocity (aero_loads.cpp).
-Eigen::Vector3d ring_node_change(const VortexLatticeModel& m, const Eigen::Matrix3Xd& dv, int q, int j) {
-  if (q < m.chordwise) return dv.col(m.node(q, j)) + 0.25 * (dv.col(m.node(q + 1, j)) - dv.col(m.node(q, j)));
-  return dv.col(m.node(q, j)) + 0.25 * (dv.col(m.node(q, j)) - dv.col(m.node(q - 1, j)));
-}
-
-// The leading-edge force's change: the suction of strip j, S = Σ_q in-plane part of
-// ρ Γ_s (v_s × (b − a)) over its spanwise segments, changes by ρ δΓ_s (v_s × (b − a)) +
-// ρ Γ_s (−δv_s × (b − a)) (v_s held but for the surface's own velocity), and the force by
-// the model: attached δS; separated (Ŝ · δS) along ±n; none and shed nothing.
-void add_suction_change(const VortexLatticeModel& m, const VortexLatticeData& d, const Eigen::Matrix3Xd& dv,
-                        const AddedMassScratch& s, Eigen::Matrix3Xd& df) {
-  if (m.leading_edge != LeadingEdge::Attached && m.leading_edge != LeadingEdge::Separated) return;
-  const int nc = m.chordwise, ns = m.spanwise;
-  const auto& S = d.bound_segments;
-  if (S.size() < static_cast<std::size_t>(nc) * ns) return;
-  const auto dgamma = [&](int i, int j) { return (i < 0 || i >= nc) ? 0.0 : s.dgamma(m.panel(i, j)); };
-  for (int j = 0; j < ns; ++j) {
-    Eigen::Vector3d change = Eigen::Vector3d::Zero();
-    for (int q = 0; q < nc; ++q) {
-      const std::size_t i = static_cast<std::size_t>(q) * ns + j;
-      const Eigen::Vector3d a(S.ax()[i], S.ay()[i], S.az()[i]), b(S.bx()[i], S.by()[i], S.bz()[i]);
-      const Eigen::Vector3d surface = 0.5 * (ring_node_change(m, dv, q, j) + ring_node_change(m, dv, q, j + 1));
-      const double g = dgamma(q - 1, j) - dgamma(q, j);  // build_bound_segments' Γ_s
-      Eigen::Vector3d f = d.rho * (g * d.segment_air_velocity.col(static_cast<Eigen::Index>(i)) - S.gamma()[i] * surface)
-                                      .cross(b - a);
-      const auto n = d.normal.col(m.panel(q, j));
-      change += f - f.dot(n) * n;
-    }
-    const int k = m.panel(0, j);
-    if (m.leading_edge == LeadingEdge::Attached) {
-      df.col(k) += change;
-    } else {
-      const Eigen::Vector3d suction = d.loads.suction.col(j);
-      const double size = suction.norm();
-      if (size > 0.0) df.col(k) += (d.gamma(k) >= 0.0 ? 1.0 : -1.0) * (suction.dot(change) / size) * d.normal.col(k);
-    }
-  }
-}
-
-}  // namespace
-
 void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeData& d,
                              const Eigen::Matrix3Xd& dv, AddedMassScratch& s, Eigen::Matrix3Xd& df,
                              AddedMassTerms terms) {
@@ -105,7 +61,6 @@ void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeDat
       }
       df.col(k) = (d.rho * d.area(k) * dp) * d.normal.col(k);
     }
-  if (terms == AddedMassTerms::All) add_suction_change(m, d, dv, s, df);
 }
 
 }  // namespace flapsim::uvlm

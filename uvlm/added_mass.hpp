@@ -11,20 +11,16 @@
 /// accepted step's BDF1 rate, 3/2 for BDF2; aero_loads.cpp gamma_rate):
 ///     δF_k = ρ A_k n_k c δΓ_k / Δt     at the panel's point of action (loads.point).
 /// This is the term that scales as 1/Δt and makes a light wing's partitioned coupling
-/// slow or unstable (the air's added mass). AddedMassTerms::Pressure adds the Bernoulli
-/// route's quasi-steady term, linearised with V and ∇Γ of the last solve held:
+/// slow or unstable (the air's added mass). AddedMassTerms::Pressure (the default) adds
+/// the Bernoulli route's quasi-steady term, linearised with V and ∇Γ of the last solve held:
 ///     δΔp_k = ρ (c δΓ_k / Δt − δv_k · ∇Γ_k + V_k · ∇δΓ_k),
-/// ∇δΓ by the loads' vortex-vector formula (aero_loads.cpp); AddedMassTerms::All (the
-/// default) also the leading-edge force's change: the suction of strip j,
-/// S = Σ in-plane part of ρ Γ_s (v_s × (b − a)) over its spanwise segments, changes by
-/// ρ (δΓ_s v_s − Γ_s δv_s) × (b − a), δv_s the surface's own; attached: δS, separated:
-/// (Ŝ·δS) along ±n. Left out: the bound vortices' own velocity change (at the panels and at
-/// the segments), the trailing-edge vortex's placement (it follows the edge's velocity).
-/// For a wing at rest in still air the response is the exact derivative of the loads, for a
-/// flat plate in a free stream without leading-edge force too (test uvlm.AddedMass.*). δΓ is solved as the circulations are:
-/// by the factorisation of the current influence matrix, or by GMRES on it preconditioned
-/// by an earlier one's (the iterative path, to the same tolerance), so that both paths
-/// give the coupling the same matrix. Zero for a steady lattice (∂Γ/∂t = 0).
+/// ∇δΓ by the loads' vortex-vector formula (aero_loads.cpp). Left out: the bound vortices'
+/// own velocity change at the panels, the trailing-edge vortex's placement (it follows the
+/// edge's velocity) and the leading-edge force (its `separated` form turns with the sign of
+/// the leading-edge circulation: a linearisation held over steps can point the wrong way;
+/// docs/fsi.md, "Added mass in the coupling"). For a wing at rest in still air the response
+/// is the exact derivative of the loads, for a flat plate in a free stream without a
+/// leading-edge force too (test uvlm.AddedMass.*).
 
 #include <Eigen/Core>
 
@@ -35,8 +31,7 @@ namespace flapsim::uvlm {
 /// Which terms of the loads added_mass_force_change linearises (file comment).
 enum class AddedMassTerms {
   Unsteady,  ///< ρ A n ∂Γ/∂t alone
-  Pressure,  ///< and the Bernoulli route's ρ V·∇Γ
-  All        ///< and the leading-edge force (attached or separated)
+  Pressure   ///< and the Bernoulli route's ρ V·∇Γ
 };
 
 /// Scratch of added_mass_force_change, allocated once (a lattice's panel count).
@@ -56,6 +51,6 @@ struct AddedMassScratch {
 /// \throws std::invalid_argument on wrong sizes or before any solve
 void added_mass_force_change(const VortexLatticeModel& model, const VortexLatticeData& data,
                              const Eigen::Matrix3Xd& node_velocity_change, AddedMassScratch& scratch,
-                             Eigen::Matrix3Xd& force_change, AddedMassTerms terms = AddedMassTerms::All);
+                             Eigen::Matrix3Xd& force_change, AddedMassTerms terms = AddedMassTerms::Pressure);
 
 }  // namespace flapsim::uvlm

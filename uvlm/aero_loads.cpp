@@ -86,7 +86,6 @@ void add_leading_edge_forces(const VortexLatticeModel& m, VortexLatticeData& d) 
       const Eigen::Vector3d surface =
           0.5 * (detail::ring_node_velocity(m, d, q, j) + detail::ring_node_velocity(m, d, q, j + 1));
       const Eigen::Vector3d v = d.free_stream - surface + d.eval.velocity(s);
-      d.segment_air_velocity.col(static_cast<Eigen::Index>(s)) = v;
       suction += detail::in_plane(d, m.panel(q, j), d.rho * S.gamma()[s] * v.cross(b - a));
     }
     detail::leading_edge_force(m, d, j, suction);

@@ -50,7 +50,6 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   wake_velocity.setZero(3, np);
   panel_air_velocity.setZero(3, np);
   panel_gamma_gradient.setZero(3, np);
-  segment_air_velocity.setZero(3, np);
   gamma.setZero(np);
   gamma_accepted.setZero(np);
   gamma_accepted_before.setZero(np);

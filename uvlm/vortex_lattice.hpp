@@ -234,9 +234,6 @@ struct VortexLatticeData {
   /// panel at its collocation point [m/s] and the surface gradient of Γ [m/s] (zero after
   /// the Kutta–Joukowski route); the added-mass response's quasi-steady part uses them.
   Eigen::Matrix3Xd panel_air_velocity, panel_gamma_gradient;
-  /// The air's velocity relative to each spanwise bound segment at its midpoint (its own
-  /// induction left out), segment q ns + j for ring row q < nc [m/s]: the suction's.
-  Eigen::Matrix3Xd segment_air_velocity;
 
   // Circulations [m²/s], panel index i + nc j.
   Eigen::VectorXd gamma;           ///< last solve

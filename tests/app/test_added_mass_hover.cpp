@@ -40,12 +40,12 @@ HoverRun hover(const flapsim::test::ScratchDir& dir, bool added_mass) {
 
 TEST(AddedMassHover, TheHawkmothHoverConvergesInFewerLatticeSolvesToTheSameMeanLift) {
   // The fixed point is the coupled problem's whatever the iteration: the last-cycle mean lift
-  // with and without the added mass within 1e-4. Measured with this shipped chain 6.4e-6
-  // (3.4e-7 with the reduced chain of `make run`); the case itself moves by 2.2e-5 when its
+  // with and without the added mass within 1e-4. Measured with this shipped chain −5.1e-7
+  // (+4e-7 with the reduced chain of `make run`); the case itself moves by 2.2e-5 when its
   // springs move by 2e-9 (app.HoverFlexibleCase.ItsMeanLiftDoesNotHingeOnRoundOff), so a
   // tighter bound would test the run's sensitivity, not the fixed point. The lattice solves a
-  // step, measured 6.09 without and 4.00 with it (the extrapolated predictor on in both; 5.59
-  // and 3.46 with the reduced chain): at most three quarters.
+  // step, measured 6.09 without and 3.82 with it (the extrapolated predictor on in both; 4.61
+  // and 3.27 with the reduced chain): at most three quarters.
   flapsim::test::ScratchDir dir("added_mass_hover");
   const HoverRun without = hover(dir, false), with = hover(dir, true);
   std::printf("[ value ] hover_flexible: mean lift %.9g N without the added mass, %.9g N with it (%.2g); "

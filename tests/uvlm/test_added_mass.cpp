@@ -71,59 +71,48 @@ TEST(AddedMass, TheResponseIsTheDerivativeOfTheLoadsOfAPlateAtRestInStillAir) {
   }
 }
 
-TEST(AddedMass, TheQuasiSteadyTermsMakeTheResponseNearlyTheLoadsDerivativeInAFreeStream) {
+TEST(AddedMass, TheQuasiSteadyTermMakesTheResponseTheLoadsDerivativeInAFreeStream) {
   // The same plate at 0.2 rad in a free stream of 5 m/s (Γ ≠ 0; U Δt = half a chord),
-  // Bernoulli loads, after three accepted steps: the response against the central
-  // difference of the loads, relative to its size. Without a leading-edge force, what the
-  // response leaves out does not act on a flat plate (the bound vortices' velocity at its
-  // panels is normal to them, where ∇Γ has no part): measured 8.5e-11 with the pressure's
-  // quasi-steady term, bound 1e-6; 0.73 with ∂Γ/∂t alone. With the leading-edge force
-  // (attached, separated) the suction's term takes the error from 0.343 / 0.340 (pressure
-  // terms only) to 0.135 / 0.134 (the bound vortices' own velocity change at the segments,
-  // left out, is what remains): bound half of the pressure-only error.
-  for (const uvlm::LeadingEdge edge : {uvlm::LeadingEdge::None, uvlm::LeadingEdge::Attached, uvlm::LeadingEdge::Separated}) {
-    uvlm::VortexLatticeModel m;
-    m.chordwise = 4;
-    m.spanwise = 8;
-    m.wake_capacity = 5;
-    m.leading_edge = edge;
-    const Eigen::Matrix3Xd nodes = tilted_plate(m);
-    const Eigen::Matrix3Xd rest = Eigen::Matrix3Xd::Zero(3, m.nodes());
-    const Eigen::Vector3d stream(5.0, 0.0, 0.0);
-    const double dt = 1e-3, rho = 1.225;
-    uvlm::VortexLatticeData d(m);
-    for (int n = 0; n < 3; ++n) {
-      uvlm::solve(m, d, nodes, rest, stream, dt, rho);
-      uvlm::advance(m, d);
-    }
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Eigen::Matrix3Xd dv(3, m.nodes());
-    for (Eigen::Index k = 0; k < dv.size(); ++k) dv.data()[k] = u(rng);
-    const double eps = 1e-5;
-    uvlm::solve(m, d, nodes, eps * dv, stream, dt, rho);
-    const Eigen::Matrix3Xd plus = d.loads.force;
-    uvlm::solve(m, d, nodes, -eps * dv, stream, dt, rho);
-    const Eigen::Matrix3Xd difference = (plus - d.loads.force) / (2.0 * eps);
+  // Bernoulli loads without a leading-edge force, after three accepted steps: the response
+  // against the central difference of the loads, relative to its size. What the response
+  // leaves out does not act on a flat plate (the bound vortices' velocity at its panels is
+  // normal to them, where ∇Γ has no part): measured 8.5e-11 with the pressure's
+  // quasi-steady term, bound 1e-6; 0.73 with ∂Γ/∂t alone (bound: more than 0.1).
+  uvlm::VortexLatticeModel m;
+  m.chordwise = 4;
+  m.spanwise = 8;
+  m.wake_capacity = 5;
+  m.leading_edge = uvlm::LeadingEdge::None;
+  const Eigen::Matrix3Xd nodes = tilted_plate(m);
+  const Eigen::Matrix3Xd rest = Eigen::Matrix3Xd::Zero(3, m.nodes());
+  const Eigen::Vector3d stream(5.0, 0.0, 0.0);
+  const double dt = 1e-3, rho = 1.225;
+  uvlm::VortexLatticeData d(m);
+  for (int n = 0; n < 3; ++n) {
     uvlm::solve(m, d, nodes, rest, stream, dt, rho);
-    uvlm::AddedMassScratch scratch(m);
-    const auto error = [&](uvlm::AddedMassTerms terms) {
-      Eigen::Matrix3Xd response;
-      uvlm::added_mass_force_change(m, d, dv, scratch, response, terms);
-      return (response - difference).norm() / difference.norm();
-    };
-    const double unsteady = error(uvlm::AddedMassTerms::Unsteady), pressure = error(uvlm::AddedMassTerms::Pressure),
-                 all = error(uvlm::AddedMassTerms::All);
-    std::printf("[ value ] leading edge %d: the response off the loads' derivative by %.3g (∂Γ/∂t), %.3g (and "
-                "V·∇Γ), %.3g (and the suction)\n", static_cast<int>(edge), unsteady, pressure, all);
-    EXPECT_GT(unsteady, 0.1);
-    if (edge == uvlm::LeadingEdge::None) {
-      EXPECT_LT(pressure, 1e-6);
-      EXPECT_LT(all, 1e-6);
-    } else {
-      EXPECT_LT(all, 0.5 * pressure) << "leading edge " << static_cast<int>(edge);
-    }
+    uvlm::advance(m, d);
   }
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::Matrix3Xd dv(3, m.nodes());
+  for (Eigen::Index k = 0; k < dv.size(); ++k) dv.data()[k] = u(rng);
+  const double eps = 1e-5;
+  uvlm::solve(m, d, nodes, eps * dv, stream, dt, rho);
+  const Eigen::Matrix3Xd plus = d.loads.force;
+  uvlm::solve(m, d, nodes, -eps * dv, stream, dt, rho);
+  const Eigen::Matrix3Xd difference = (plus - d.loads.force) / (2.0 * eps);
+  uvlm::solve(m, d, nodes, rest, stream, dt, rho);
+  uvlm::AddedMassScratch scratch(m);
+  const auto error = [&](uvlm::AddedMassTerms terms) {
+    Eigen::Matrix3Xd response;
+    uvlm::added_mass_force_change(m, d, dv, scratch, response, terms);
+    return (response - difference).norm() / difference.norm();
+  };
+  const double unsteady = error(uvlm::AddedMassTerms::Unsteady), pressure = error(uvlm::AddedMassTerms::Pressure);
+  std::printf("[ value ] the response off the loads' derivative by %.3g (∂Γ/∂t), %.3g (and V·∇Γ)\n", unsteady,
+              pressure);
+  EXPECT_GT(unsteady, 0.1);
+  EXPECT_LT(pressure, 1e-6);
 }
 
 TEST(AddedMass, AHeavingPlateFeelsAForceAgainstItsAcceleration) {
