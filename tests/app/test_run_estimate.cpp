@@ -22,8 +22,8 @@ using namespace flapsim;
 // The count step by step (the closed form's second route): at step k the wake has
 // r = min(k, max_rows) rows; the newest min(r, F) of them (F = far or frozen cycles × steps
 // per cycle) and the shed row's nodes see every wake and bound segment; every collocation
-// point sees them once per lattice solve (1 per step for a rigid wing, else the cap on the
-// mean coupling iterations, 5).
+// point sees them once per lattice solve (1 per step for a rigid wing, else the typical
+// mean coupling iterations: 4 for a chain with the added mass, 5 without; docs/fsi.md).
 double interactions_step_by_step(const io::Case& c, int bodies) {
   const auto& n = c.numerics;
   const double nc = n.chordwise_panels, ns = n.spanwise_panels;
@@ -31,7 +31,7 @@ double interactions_step_by_step(const io::Case& c, int bodies) {
   const double max_rows = n.wake_max_rows > 0 ? n.wake_max_rows : static_cast<double>(steps);
   const double cycles_free = n.far_wake_cycles > 0 ? n.far_wake_cycles : n.frozen_wake_cycles;
   const double free_rows = cycles_free > 0 ? std::max(1.0, std::floor(cycles_free * n.steps_per_cycle)) : 1e300;
-  const double solves = bodies > 1 ? std::min(5, n.max_coupling_iterations) : 1;
+  const double solves = bodies > 1 ? std::min(n.added_mass ? 4 : 5, n.max_coupling_iterations) : 1;
   const double bound = (nc + 1) * ns + nc * (ns + 1);
   double sum = 0.0;
   for (long k = 1; k <= steps; ++k) {
