@@ -53,6 +53,16 @@ void assemble_loads(const FsiModel& model, FsiData& data, double t) {
   if (model.air) data.structure->add_panel_loads(data.lattice->loads);
 }
 
+// Whether the k-th lattice solve of the step linearises the air's added mass anew
+// (CouplingSettings::added_mass_every): at the first solve of the first three steps, of
+// every added_mass_every-th step and of a step after one that took more than
+// added_mass_stale solves (the held linearisation may no longer fit the wing's shape).
+bool added_mass_due(const FsiModel& model, const FsiData& data, long step, int k) {
+  const CouplingSettings& c = model.coupling;
+  if (k != 1) return false;
+  return step < 3 || step % std::max(1, c.added_mass_every) == 0 || data.last_iterations > c.added_mass_stale;
+}
+
 // Sub-iterations from the iterate (steps 1–3 of the file comment) until the structure stops
 // changing or k reaches k + limit; k counts the step's lattice solves, delta the last change.
 bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, double t1,
@@ -68,8 +78,7 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
     // (first of the step: the structure's pose is already the predictor's = the iterate)
     solve_air(model, data, dt, step, t1);
     ++k;
-    if (k == 1 && model.coupling.added_mass &&
-        (step < 3 || step % std::max(1, model.coupling.added_mass_every) == 0)) {  // the air's added mass
+    if (model.coupling.added_mass && added_mass_due(model, data, step, k)) {  // the air's added mass
       PanelLoadResponse response(model.lattice, *data.lattice, *data.added_mass_scratch);
       s.linearise_panel_loads(response);
     }

@@ -65,6 +65,9 @@ struct CouplingSettings {
   /// one: the lattice's ∂Γ/∂t changes from BDF1 to BDF2). Held between them: in the
   /// structure's own coordinates the added mass follows the wing's shape, not its pose.
   int added_mass_every = 10;
+  /// After a step that took more lattice solves than this the next step makes it anew
+  /// (coupled_step.cpp, added_mass_due).
+  int added_mass_stale = 5;
   /// The predictor's loads: the last accepted step's panel forces extrapolated in time
   /// through this many earlier steps' (0: held, 1: linear, 2: quadratic), each panel's
   /// force vector at its current point (docs/fsi.md, "One coupled step"). Only where the
