@@ -2,6 +2,7 @@
 /// \brief The linearised added-mass response of the lattice's loads (added_mass.hpp).
 
 #include "uvlm/added_mass.hpp"
+#include "uvlm/lattice_internal.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -24,9 +25,7 @@ void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeDat
   for (int j = 0; j < ns; ++j)
     for (int i = 0; i < nc; ++i) {
       const int k = m.panel(i, j);
-      const auto va = dv.col(m.node(i, j)), vb = dv.col(m.node(i + 1, j));
-      const auto vc = dv.col(m.node(i, j + 1)), ve = dv.col(m.node(i + 1, j + 1));
-      s.surface_velocity.col(k) = 0.5 * ((va + 0.75 * (vb - va)) + (vc + 0.75 * (ve - vc)));
+      s.surface_velocity.col(k) = detail::three_quarter_chord(m, dv, i, j);
       s.rhs(k) = s.surface_velocity.col(k).dot(d.normal.col(k));
     }
   s.dgamma = d.lu.solve(s.rhs);  // exact when lu factorises the current matrix

@@ -12,6 +12,15 @@
 
 namespace flapsim::uvlm::detail {
 
+/// The three-quarter-chord point of panel (i, j) of a field X on the surface nodes
+/// (positions or velocities, 3 × nodes): the mean of the points ¾ along the panel's two
+/// chordwise sides (the collocation point, the surface velocity there).
+inline Eigen::Vector3d three_quarter_chord(const VortexLatticeModel& m, const Eigen::Matrix3Xd& X, int i, int j) {
+  const auto a = X.col(m.node(i, j)), b = X.col(m.node(i + 1, j));
+  const auto c = X.col(m.node(i, j + 1)), e = X.col(m.node(i + 1, j + 1));
+  return 0.5 * ((a + 0.75 * (b - a)) + (c + 0.75 * (e - c)));
+}
+
 /// Point–segment interactions below which one thread does a step's sums alone.
 inline constexpr std::size_t kTargetChunkThreshold = 100000;
 

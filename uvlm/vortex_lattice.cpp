@@ -157,10 +157,8 @@ void update_geometry(const VortexLatticeModel& m, VortexLatticeData& d, const Ei
       const int k = m.panel(i, j);
       const auto a = P.col(m.node(i, j)), b = P.col(m.node(i + 1, j));
       const auto c = P.col(m.node(i, j + 1)), e = P.col(m.node(i + 1, j + 1));
-      d.collocation.col(k) = 0.5 * ((a + 0.75 * (b - a)) + (c + 0.75 * (e - c)));
-      const auto va = V.col(m.node(i, j)), vb = V.col(m.node(i + 1, j));
-      const auto vc = V.col(m.node(i, j + 1)), ve = V.col(m.node(i + 1, j + 1));
-      d.surface_velocity.col(k) = 0.5 * ((va + 0.75 * (vb - va)) + (vc + 0.75 * (ve - vc)));
+      d.collocation.col(k) = three_quarter_chord(m, P, i, j);
+      d.surface_velocity.col(k) = three_quarter_chord(m, V, i, j);
       const Eigen::Vector3d d1 = e - a;  // toward trailing edge and tip
       const Eigen::Vector3d d2 = c - b;  // toward tip and leading edge
       const Eigen::Vector3d n = d2.cross(d1);

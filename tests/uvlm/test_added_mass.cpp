@@ -24,6 +24,29 @@ Eigen::Matrix3Xd tilted_plate(const uvlm::VortexLatticeModel& m) {
   return Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()).toRotationMatrix() * g.nodes;
 }
 
+// A random velocity pattern of the lattice's nodes [m/s], components in [−1, 1].
+Eigen::Matrix3Xd random_node_velocities(const uvlm::VortexLatticeModel& m, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::Matrix3Xd dv(3, m.nodes());
+  for (Eigen::Index k = 0; k < dv.size(); ++k) dv.data()[k] = u(rng);
+  return dv;
+}
+
+// The central difference (F(+ε δv) − F(−ε δv)) / 2ε of the lattice's panel forces about the
+// nodes at rest, in the stream given; leaves the lattice solved at rest (where the
+// response is taken).
+Eigen::Matrix3Xd force_difference(const uvlm::VortexLatticeModel& m, uvlm::VortexLatticeData& d,
+                                  const Eigen::Matrix3Xd& nodes, const Eigen::Matrix3Xd& dv,
+                                  const Eigen::Vector3d& stream, double dt, double rho, double eps) {
+  uvlm::solve(m, d, nodes, eps * dv, stream, dt, rho);
+  const Eigen::Matrix3Xd plus = d.loads.force;
+  uvlm::solve(m, d, nodes, -eps * dv, stream, dt, rho);
+  const Eigen::Matrix3Xd difference = (plus - d.loads.force) / (2.0 * eps);
+  uvlm::solve(m, d, nodes, Eigen::Matrix3Xd::Zero(3, m.nodes()), stream, dt, rho);
+  return difference;
+}
+
 TEST(AddedMass, TheResponseIsTheDerivativeOfTheLoadsOfAPlateAtRestInStillAir) {
   // At rest in still air every circulation is zero, so the loads' only first-order part in
   // the node velocities is ρ A n ∂Γ/∂t (the V·∇Γ and suction terms are products of two
@@ -46,16 +69,8 @@ TEST(AddedMass, TheResponseIsTheDerivativeOfTheLoadsOfAPlateAtRestInStillAir) {
         uvlm::solve(m, d, nodes, rest, still, dt, rho);
         uvlm::advance(m, d);
       }
-      std::mt19937 rng(11);
-      std::uniform_real_distribution<double> u(-1.0, 1.0);
-      Eigen::Matrix3Xd dv(3, m.nodes());  // a random velocity pattern of the nodes [m/s]
-      for (Eigen::Index k = 0; k < dv.size(); ++k) dv.data()[k] = u(rng);
-      const double eps = 1e-4;
-      uvlm::solve(m, d, nodes, eps * dv, still, dt, rho);
-      const Eigen::Matrix3Xd plus = d.loads.force;
-      uvlm::solve(m, d, nodes, -eps * dv, still, dt, rho);
-      const Eigen::Matrix3Xd difference = (plus - d.loads.force) / (2.0 * eps);
-      uvlm::solve(m, d, nodes, rest, still, dt, rho);  // the response is taken at this solve
+      const Eigen::Matrix3Xd dv = random_node_velocities(m, 11);
+      const Eigen::Matrix3Xd difference = force_difference(m, d, nodes, dv, still, dt, rho, 1e-4);
       uvlm::AddedMassScratch scratch(m);
       Eigen::Matrix3Xd response;
       uvlm::added_mass_force_change(m, d, dv, scratch, response);
@@ -92,16 +107,8 @@ TEST(AddedMass, TheQuasiSteadyTermMakesTheResponseTheLoadsDerivativeInAFreeStrea
     uvlm::solve(m, d, nodes, rest, stream, dt, rho);
     uvlm::advance(m, d);
   }
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::Matrix3Xd dv(3, m.nodes());
-  for (Eigen::Index k = 0; k < dv.size(); ++k) dv.data()[k] = u(rng);
-  const double eps = 1e-5;
-  uvlm::solve(m, d, nodes, eps * dv, stream, dt, rho);
-  const Eigen::Matrix3Xd plus = d.loads.force;
-  uvlm::solve(m, d, nodes, -eps * dv, stream, dt, rho);
-  const Eigen::Matrix3Xd difference = (plus - d.loads.force) / (2.0 * eps);
-  uvlm::solve(m, d, nodes, rest, stream, dt, rho);
+  const Eigen::Matrix3Xd dv = random_node_velocities(m, 5);
+  const Eigen::Matrix3Xd difference = force_difference(m, d, nodes, dv, stream, dt, rho, 1e-5);
   uvlm::AddedMassScratch scratch(m);
   const auto error = [&](uvlm::AddedMassTerms terms) {
     Eigen::Matrix3Xd response;
