@@ -3,6 +3,7 @@
 
 #include "uvlm/added_mass.hpp"
 #include "uvlm/lattice_internal.hpp"
+#include "uvlm/load_terms.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -40,22 +41,14 @@ void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeDat
   const auto dgamma = [&](int i, int j) {
     return (i < 0 || i >= nc || j < 0 || j >= ns) ? 0.0 : s.dgamma(m.panel(i, j));
   };
-  const auto& R = d.ring_nodes;
-  const auto& P = d.nodes;
   for (int j = 0; j < ns; ++j)
     for (int i = 0; i < nc; ++i) {
       const int k = m.panel(i, j);
       double dp = rate * s.dgamma(k);
       if (terms != AddedMassTerms::Unsteady) {
-        // δ(V · ∇Γ) = −δv_s · ∇Γ + V · ∇δΓ, ∇δΓ by the loads' own vortex-vector formula
-        // (aero_loads.cpp); zero where the loads did not keep V and ∇Γ (Kutta–Joukowski).
-        const Eigen::Vector3d lead = R.col(m.node(i, j + 1)) - R.col(m.node(i, j));
-        const Eigen::Vector3d root = P.col(m.node(i + 1, j)) - P.col(m.node(i, j));
-        const Eigen::Vector3d tip = P.col(m.node(i + 1, j + 1)) - P.col(m.node(i, j + 1));
-        const double g = s.dgamma(k);
-        const Eigen::Vector3d vortex = (dgamma(i - 1, j) - g) * lead + 0.5 * (g - dgamma(i, j - 1)) * root +
-                                       0.5 * (dgamma(i, j + 1) - g) * tip;
-        const Eigen::Vector3d grad = vortex.cross(d.normal.col(k)) / d.area(k);
+        // δ(V · ∇Γ) = −δv_s · ∇Γ + V · ∇δΓ, ∇δΓ by the loads' own formula
+        // (load_terms.hpp); zero where the loads did not keep V and ∇Γ (Kutta–Joukowski).
+        const Eigen::Vector3d grad = detail::panel_gamma_gradient(m, d, i, j, dgamma);
         dp += d.panel_air_velocity.col(k).dot(grad) - s.surface_velocity.col(k).dot(d.panel_gamma_gradient.col(k));
       }
       df.col(k) = (d.rho * d.area(k) * dp) * d.normal.col(k);

@@ -114,32 +114,14 @@ void compute_bernoulli_loads(const VortexLatticeModel& m, VortexLatticeData& d) 
                               add_induced_velocity(d.bound_segments, x, y, z, c, u, v, w, m.bound_core());
                               add_induced_velocity(d.trailing_edge_segments, x, y, z, c, u, v, w, m.core);
                             });
-  const auto& R = d.ring_nodes;
   for (int j = 0; j < ns; ++j)
     for (int i = 0; i < nc; ++i) {
       const int k = m.panel(i, j);
       const Eigen::Vector3d vrel =
           d.free_stream - d.surface_velocity.col(k) + d.wake_velocity.col(k) + d.eval.velocity(k);
-      // Surface gradient of Γ averaged over the panel, by Green's theorem: A n × ∇Γ is the
-      // panel's vortex vector G, the jumps of Γ across its bound segments times their
-      // vectors — the ring's leading segment (on this panel's quarter chord) and half of each
-      // of the panel's chordwise sides (shared with the panel beside it; Γ = 0 beyond root
-      // and tip). So ∇Γ = G × n / A, right on any quadrilateral; on a parallelogram it is the
-      // dual-basis gradient g^ab (e_b · ∇Γ) e_a of the two edge-direction differences. The
-      // panel's sides, not the ring's: the last ring's sides reach the trailing-edge vortex,
-      // whose distance behind the edge follows the time step, while the spanwise jumps of Γ
-      // act over the panel's chord (Katz & Plotkin §13.8: Δp from ∂Γ/∂c over the
-      // panel's chord Δc and ∂Γ/∂s over its span Δb).
-      const auto& P = d.nodes;
-      const Eigen::Vector3d lead = R.col(m.node(i, j + 1)) - R.col(m.node(i, j));
-      const Eigen::Vector3d root = P.col(m.node(i + 1, j)) - P.col(m.node(i, j));
-      const Eigen::Vector3d tip = P.col(m.node(i + 1, j + 1)) - P.col(m.node(i, j + 1));
-      const double g = d.gamma(k);
-      const Eigen::Vector3d vortex = (ring_gamma(m, d, i - 1, j) - g) * lead +
-                                     0.5 * (g - ring_gamma(m, d, i, j - 1)) * root +
-                                     0.5 * (ring_gamma(m, d, i, j + 1) - g) * tip;
       const Eigen::Vector3d n = d.normal.col(k);
-      const Eigen::Vector3d grad = vortex.cross(n) / d.area(k);
+      const Eigen::Vector3d grad =
+          detail::panel_gamma_gradient(m, d, i, j, [&](int a, int b) { return ring_gamma(m, d, a, b); });
       d.panel_air_velocity.col(k) = vrel;
       d.panel_gamma_gradient.col(k) = grad;
       const double dp = d.rho * (vrel.dot(grad) + detail::gamma_rate(d, k));

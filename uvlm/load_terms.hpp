@@ -15,6 +15,32 @@ inline double ring_gamma(const VortexLatticeModel& m, const VortexLatticeData& d
   return (i < 0 || i >= m.chordwise || j < 0 || j >= m.spanwise) ? 0.0 : d.gamma(m.panel(i, j));
 }
 
+/// Surface gradient of a ring-circulation field G over panel (i, j), averaged over the panel
+/// [G's unit / m]; G(i, j) gives ring (i, j)'s value (ring_gamma for the solve's Γ).
+/// By Green's theorem A n × ∇Γ is the panel's vortex vector: the jumps of Γ across its bound
+/// segments times their vectors — the ring's leading segment (on this panel's quarter chord)
+/// and half of each of the panel's chordwise sides (shared with the panel beside it; Γ = 0
+/// beyond root and tip). So ∇Γ = (vortex vector) × n / A, right on any quadrilateral; on a
+/// parallelogram it is the dual-basis gradient g^ab (e_b · ∇Γ) e_a of the two edge-direction
+/// differences. The panel's sides, not the ring's: the last ring's sides reach the
+/// trailing-edge vortex, whose distance behind the edge follows the time step, while the
+/// spanwise jumps of Γ act over the panel's chord (Katz & Plotkin §13.8: Δp from ∂Γ/∂c over
+/// the panel's chord Δc and ∂Γ/∂s over its span Δb).
+template <class RingGamma>
+Eigen::Vector3d panel_gamma_gradient(const VortexLatticeModel& m, const VortexLatticeData& d, int i, int j,
+                                     const RingGamma& G) {
+  const auto& R = d.ring_nodes;
+  const auto& P = d.nodes;
+  const Eigen::Vector3d lead = R.col(m.node(i, j + 1)) - R.col(m.node(i, j));
+  const Eigen::Vector3d root = P.col(m.node(i + 1, j)) - P.col(m.node(i, j));
+  const Eigen::Vector3d tip = P.col(m.node(i + 1, j + 1)) - P.col(m.node(i, j + 1));
+  const double g = G(i, j);
+  const Eigen::Vector3d vortex =
+      (G(i - 1, j) - g) * lead + 0.5 * (g - G(i, j - 1)) * root + 0.5 * (G(i, j + 1) - g) * tip;
+  const int k = m.panel(i, j);
+  return vortex.cross(d.normal.col(k)) / d.area(k);
+}
+
 /// Velocity [m/s] of ring node (q, j): the same blend of surface-node velocities as its position.
 Eigen::Vector3d ring_node_velocity(const VortexLatticeModel& m, const VortexLatticeData& d, int q, int j);
 

@@ -64,7 +64,7 @@ void ChainStructureData::solve(double dt) {
 // linear in Φ̇ at a pose), their force change, and its generalized force at the pose.
 void ChainStructureData::linearise_panel_loads(PanelLoadResponse& response) {
   const int n = model_.chain.num_dofs();
-  if (!use_added_mass || n == 0 || model_.attachment.nodes.empty()) return;
+  if (n == 0 || model_.attachment.nodes.empty()) return;
   const mbd::BasePose pose = model_.base_motion(relaxed.time);
   const int nodes = model_.surface_nodes();
   for (Eigen::Matrix3Xd* m : {&base_positions_, &base_velocities_, &unit_positions_, &unit_velocities_})
@@ -88,8 +88,7 @@ void ChainStructureData::linearise_panel_loads(PanelLoadResponse& response) {
     mbd::compute_generalized_loads(model_.chain, chain, change_loads_);
     damping.matrix.col(j) = gravity_load_ - chain.generalized_load;
   }
-  damping.reference = relaxed.v;
-  damping.active = true;
+  damping.active = true;  // its reference rate: the iterate's at each solve()
   has_added_mass_ = true;
   mbd::forward_kinematics(model_.chain, chain, pose, relaxed.q, relaxed.v);  // the iterate's pose again
 }

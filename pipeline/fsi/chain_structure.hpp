@@ -86,9 +86,6 @@ class ChainStructureData : public StructureData {
   mbd::ChainState trial;     ///< the chain's answer of the current sub-iteration
   mbd::ChainState relaxed;   ///< the iterate the lattice is solved on
   mbd::Loads loads;          ///< external + aerodynamic loads of the current solve
-  /// Linearise the air's added mass into each step (linearise_panel_loads); false: ignore
-  /// the response (the plain partitioned coupling).
-  bool use_added_mass = true;
 
  private:
   const ChainStructureModel& model_;  ///< not owned

@@ -53,13 +53,12 @@ void assemble_loads(const FsiModel& model, FsiData& data, double t) {
   if (model.air) data.structure->add_panel_loads(data.lattice->loads);
 }
 
-// Whether the k-th lattice solve of the step linearises the air's added mass anew
-// (CouplingSettings::added_mass_every): at the first solve of the first three steps, of
-// every added_mass_every-th step and of a step after one that took more than
-// added_mass_stale solves (the held linearisation may no longer fit the wing's shape).
-bool added_mass_due(const FsiModel& model, const FsiData& data, long step, int k) {
+// Whether the step's first lattice solve linearises the air's added mass anew
+// (CouplingSettings::added_mass_every): at the first three steps, every
+// added_mass_every-th step and a step after one that took more than added_mass_stale
+// solves (the held linearisation may no longer fit the wing's shape).
+bool added_mass_due(const FsiModel& model, const FsiData& data, long step) {
   const CouplingSettings& c = model.coupling;
-  if (k != 1) return false;
   return step < 3 || step % std::max(1, c.added_mass_every) == 0 || data.last_iterations > c.added_mass_stale;
 }
 
@@ -78,7 +77,7 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
     // (first of the step: the structure's pose is already the predictor's = the iterate)
     solve_air(model, data, dt, step, t1);
     ++k;
-    if (model.coupling.added_mass && added_mass_due(model, data, step, k)) {  // the air's added mass
+    if (k == 1 && model.coupling.added_mass && added_mass_due(model, data, step)) {  // the air's added mass
       PanelLoadResponse response(model.lattice, *data.lattice, *data.added_mass_scratch);
       s.linearise_panel_loads(response);
     }

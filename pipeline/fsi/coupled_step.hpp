@@ -57,9 +57,9 @@ struct CouplingSettings {
   /// Intermediate structure solves to 1 % of the coupling's current change (file comment);
   /// false: every solve at the structure's full accuracy.
   bool loose_intermediate_solves = true;
-  /// The lattice's added-mass response linearised into the structure's step once a step
-  /// (StructureData::linearise_panel_loads; docs/fsi.md, "Added mass in the coupling");
-  /// false: the plain partitioned step.
+  /// The lattice's added-mass response linearised into the structure's step at the steps
+  /// below (StructureData::linearise_panel_loads; docs/fsi.md, "Added mass in the
+  /// coupling"); false: the plain partitioned step.
   bool added_mass = true;
   /// Steps between two linearisations of the added mass (the first three steps each get
   /// one: the lattice's ∂Γ/∂t changes from BDF1 to BDF2). Held between them: in the

@@ -91,6 +91,19 @@ StartedLift impulsively_started_delta_wing(double alpha, LeadingEdge leading_edg
   return r;
 }
 
+// Polhamus' constants of this lattice's delta wing [Polhamus 1966]: Kp, the potential
+// normal-force slope [/rad], and Kv, the leading-edge suction constant, of the attached
+// leading edge at α = 1° with the wake in the wing's plane (linear lifting-surface theory).
+struct PolhamusConstants {
+  double kp = 0.0, kv = 0.0;
+};
+
+PolhamusConstants polhamus_constants(const PlanformWing& w) {
+  const double a0 = 1.0 * kDeg;
+  const auto potential = steady_loads(w, a0, LeadingEdge::Attached, true);
+  return {potential.normal / (std::sin(a0) * std::cos(a0)), potential.suction / (std::sin(a0) * std::sin(a0))};
+}
+
 }  // namespace
 
 TEST(VortexLift, DeltaWingFollowsThePolhamusAnalogyOfItsOwnLattice) {
@@ -116,10 +129,7 @@ TEST(VortexLift, DeltaWingFollowsThePolhamusAnalogyOfItsOwnLattice) {
   //    the tip vortices 20–22°), and its CL
   //    lies between: +0.5, +1.3, +1.9, +2.8 % at 5, 15, 20, 25° (docs/uvlm.md).
   const PlanformWing w = delta_wing();
-  const double a0 = 1.0 * kDeg;
-  const auto potential = steady_loads(w, a0, LeadingEdge::Attached, true);
-  const double kp = potential.normal / (std::sin(a0) * std::cos(a0));
-  const double kv = potential.suction / (std::sin(a0) * std::sin(a0));
+  const auto [kp, kv] = polhamus_constants(w);
   std::printf("[ value ] AR 1 delta lattice: Kp %.4f /rad, Kv %.4f\n", kp, kv);
   for (double alpha_deg : {5.0, 10.0, 15.0, 20.0, 25.0}) {
     const double a = alpha_deg * kDeg;
@@ -187,11 +197,7 @@ TEST(VortexLift, ShedLeadingEdgeGivesTheDeltaWingLessThanHalfItsVortexLift) {
   // Not converged in Δt (docs/uvlm.md): at 15.0° with 8, 16, 32, 64 steps per root chord
   // the fraction is 0.95, 0.42, 0.39, 0.32 (CL +1.2, −19.6, −20.7, −23.3 % of the measured
   // point); the 8-step agreement is the coarse step's.
-  const PlanformWing w = delta_wing();
-  const double a0 = 1.0 * kDeg;
-  const auto potential = steady_loads(w, a0, LeadingEdge::Attached, true);
-  const double kp = potential.normal / (std::sin(a0) * std::cos(a0));
-  const double kv = potential.suction / (std::sin(a0) * std::sin(a0));
+  const auto [kp, kv] = polhamus_constants(delta_wing());
   int checked = 0;
   for (const MeasuredLift& p : polhamus_fig12()) {
     if (p.set != 2 || p.alpha_deg > 21.0 || std::abs(p.alpha_deg - 15.0) < 1.0) continue;
