@@ -76,6 +76,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   bound_segments.reserve(bound_n);
   trailing_edge_segments.reserve(ns);
   wake_segments.reserve((rows + 1) * ns + rows * (ns + 1));
+  wake_edge_segments.reserve(static_cast<std::size_t>(2 * ns + 1));
   wake_lattice.reserve(wake_nodes_n, static_cast<std::size_t>(ns) + 1);
   if (m.far_wake_by_tree()) {
     far_wake_segments.reserve(wake_segments.capacity());
@@ -207,7 +208,7 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
   const bool bound_with_wake = include_bound && !far;
   const SegmentSet& sheet = d.le_sheet.segments;  // empty unless a leading edge sheds
   auto direct = [&](bool wake, bool bound) {
-    const std::size_t segments = (wake ? d.wake_segments.size() + sheet.size() : 0) +
+    const std::size_t segments = (wake ? d.wake_segments.size() + d.wake_edge_segments.size() + sheet.size() : 0) +
                                  (bound ? d.bound_segments.size() + d.trailing_edge_segments.size() : 0);
     if (segments == 0) return;
     for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
@@ -217,6 +218,8 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
         add_induced_velocity_single(d.wake_segments, x, y, z, c, u, v, w, m.core);
       else if (wake)
         add_induced_velocity(d.wake_segments, x, y, z, c, u, v, w, m.core);
+      if (wake && d.wake_edge_segments.size() > 0)
+        add_induced_velocity(d.wake_edge_segments, x, y, z, c, u, v, w, m.core);
       if (wake && sheet.size() > 0) add_induced_velocity(sheet, x, y, z, c, u, v, w, m.core);
       if (bound) {
         add_induced_velocity(d.bound_segments, x, y, z, c, u, v, w, m.bound_core());

@@ -271,6 +271,10 @@ struct VortexLatticeData {
   SegmentSet bound_segments;          ///< bound segments except the trailing edge
   SegmentSet trailing_edge_segments;  ///< the last rings' trailing segments (wake core)
   SegmentSet wake_segments;
+  /// The wake's segments at its newest node row when the wing's points see the wake in
+  /// single precision (build_wake_segments, WakeView::Wing): summed in double, as they move
+  /// with the trailing edge within a step; empty otherwise (all in wake_segments).
+  SegmentSet wake_edge_segments;
   /// The same segments in lattice form (lattice_segments.hpp), for the wake's own direct
   /// sum in double precision (built with WakeView::Wake and !single_precision_wake only).
   LatticeSegments wake_lattice;

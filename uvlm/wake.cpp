@@ -86,8 +86,18 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
     }
     T = d.far_tree_rows;
   }
-  // The rest, by the direct sum.
-  push_rings(d.wake_segments, T, W + 1, std::max(T - 1, 0), W, ratio);
+  // The rest, by the direct sum. Seen from the wing in single precision, the segments at
+  // the newest node row (the trailing-edge vortex's, which follows the wing through a
+  // step's sub-iterations) go to wake_edge_segments, summed in double: rounded to single
+  // precision, their ends would move in steps of 4·10⁻⁹ m beside the last panels'
+  // collocation points (docs/uvlm.md, "Precision of the wake's sums").
+  d.wake_edge_segments.clear();
+  if (view == WakeView::Wing && m.single_precision_wake && T <= W) {
+    push_rings(d.wake_segments, T, W, std::max(T - 1, 0), W - 1, ratio);
+    push_rings(d.wake_edge_segments, W, W + 1, W - 1, W, ratio);
+  } else {
+    push_rings(d.wake_segments, T, W + 1, std::max(T - 1, 0), W, ratio);
+  }
   // The same segments as a lattice of node rows q0 … W (lattice_segments.hpp), which the
   // wake's own direct sum in double precision uses (advance; in single precision the
   // segment kernel is faster, docs/performance.md): node (q, j) is lattice node
