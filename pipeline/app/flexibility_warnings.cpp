@@ -113,8 +113,8 @@ std::string large_deflection_warning(const RunResults& results) {
   if (!(bend > kLargeTipDeflectionDeg) && !(twist > kLargeTipDeflectionDeg)) return "";
   char text[700];
   std::snprintf(text, sizeof text,
-                "the wing's tip bent up to %.1f deg and twisted up to %.1f deg against its base (sums of the "
-                "joint angles; summary.json peak_tip_bend_deg, peak_tip_twist_deg), beyond the %g deg up to "
+                "the wing's tip bent up to %.1f deg and twisted up to %.1f deg against its base (in the wing "
+                "frame; summary.json peak_tip_bend_deg, peak_tip_twist_deg), beyond the %g deg up to "
                 "which the joint springs, derived from the wing's small-rotation FEM, represent it: the "
                 "results are those of a wing far more flexible than its model was made for (often a wing "
                 "driven near a resonance; docs/case_file.md, \"Warnings\")",

@@ -56,7 +56,7 @@ constexpr HistoryColumn kColumns[] = {
      [](const StepSample& s) { return s.outer.deviation * kRadToDeg; }},
     {"alpha_outer_deg", "rotation angle of the outer body",
      [](const StepSample& s) { return s.outer.rotation * kRadToDeg; }},
-    {"tip_bend_deg", "the tip's bend relative to the base: the chain's Σ of joint bends, the FEM's tip section (docs/fsi.md, \"The FEM as the structure\")",
+    {"tip_bend_deg", "the tip's bend relative to the base: the chain's last body or the FEM's tip section, in the wing frame, Rx(bend) Ry(twist) (docs/fsi.md, \"The FEM as the structure\")",
      [](const StepSample& s) { return s.tip_bend * kRadToDeg; }},
     {"tip_twist_deg", "the tip's twist relative to the base (> 0 nose-down, the chain's joint convention)",
      [](const StepSample& s) { return s.tip_twist * kRadToDeg; }},

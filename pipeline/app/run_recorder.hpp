@@ -70,7 +70,7 @@ class RunRecorder {
   /// \throws io::OutputError
   RunResults finish(const fsi::FsiData& data, const std::string& status, const std::string& error = {});
 
-  /// The largest tip bend and twist against the base so far (sums of the joint angles of
+  /// The largest tip bend and twist against the base so far (fsi::StructureReadout of
   /// each recorded step; summary.json peak_tip_bend_deg, peak_tip_twist_deg) [deg].
   struct TipDeflection {
     double bend_deg = 0.0, twist_deg = 0.0;

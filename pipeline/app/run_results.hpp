@@ -137,11 +137,12 @@ inline constexpr auto kRunResults = [] {
                        "outer body's α = 90° crossings minus the base's"},
       // The flexible wing's deflection (chains with joints).
       ResultDefinition{"peak_tip_bend_deg", "deg", K::number, "%.1f", "",
-                       "largest |Σ (bend − rest bend)| over the joints during the run: the tip's bend "
-                       "relative to the base (flexible wing); the FEM's: the tip section's (fsi::StructureReadout)"},
+                       "largest |tip bend| during the run: the rotation of the chain's last body or the FEM's "
+                       "tip section from its rest orientation, in the wing frame, as Rx(bend) Ry(twist) "
+                       "(fsi::tip_deflection)"},
       ResultDefinition{"peak_tip_twist_deg", "deg", K::number, "%.1f", "",
-                       "largest |Σ (twist − rest twist)| over the joints during the run: the tip's twist "
-                       "relative to the base (flexible wing); the FEM's: the tip section's (fsi::StructureReadout)"},
+                       "largest |tip twist| during the run, as peak_tip_bend_deg: the twist about the "
+                       "wing frame's span axis y_W (fsi::tip_deflection)"},
       // The numerics.
       ResultDefinition{"mean_coupling_iterations", "", K::number, "%.2f", "iterations",
                        "lattice solves per step, mean over the run"},

@@ -8,6 +8,7 @@
 #include "pipeline/fsi/load_transfer.hpp"
 #include "pipeline/fsi/panel_load_response.hpp"
 #include "pipeline/fsi/phase_analysis.hpp"
+#include "pipeline/fsi/tip_deflection.hpp"
 
 namespace flapsim::fsi {
 
@@ -156,11 +157,18 @@ StructureReadout ChainStructureData::readout() const {
   r.tip_position = mbd::point_position(chain, c.num_bodies() - 1, c.bodies.back().outboard_joint);
   r.outer_rotation = relative(outer_body(c));
   if (state.q.size() > 0) {
-    const Eigen::VectorXd deflection = state.q - c.rest_angles();
-    for (Eigen::Index k = 0; k + 1 < deflection.size(); k += 2) {
-      r.tip_bend += deflection(k);
-      r.tip_twist += deflection(k + 1);
-    }
+    // The tip body's rotation relative to its rest orientation, in W: R_WR Π(Φ) Π(Φ_rest)ᵀ
+    // R_WRᵀ with Π(Φ) = Π_k Rx(θ_k) Ry(α_k) over the joints (welded bodies add nothing),
+    // read as the FEM's tip section is (tip_deflection.hpp).
+    const auto joints = [](const Eigen::VectorXd& q) {
+      Eigen::Matrix3d p = Eigen::Matrix3d::Identity();
+      for (Eigen::Index k = 0; k + 1 < q.size(); k += 2) p = p * mbd::joint_rotation(q(k), q(k + 1));
+      return p;
+    };
+    const TipDeflection tip = tip_deflection(c.root_rotation * joints(state.q) *
+                                             joints(c.rest_angles()).transpose() * c.root_rotation.transpose());
+    r.tip_bend = tip.bend;
+    r.tip_twist = tip.twist;
   }
   const mbd::BasePose pose = model_.base_motion(time());
   const mbd::BaseReaction reaction = mbd::base_reaction(c, chain, pose, loads);

@@ -27,6 +27,7 @@
 
 #include "fem/nodal_rotation.hpp"
 #include "pipeline/fsi/fem_structure.hpp"
+#include "pipeline/fsi/tip_deflection.hpp"
 
 namespace flapsim::fsi {
 
@@ -86,14 +87,10 @@ StructureReadout FemStructureData::readout() const {
   if (!X.empty()) r.tip_position = d.state.position[tip_node];
 
   const mbd::BasePose pose = model_.base_motion(d.time);
-  // Tip relative to the base, in W: Rx(bend) Ry(twist) (the chain's joint convention).
-  const Eigen::Matrix3d rel = pose.rotation.transpose() * r.tip_rotation;
-  r.tip_bend = std::atan2(rel(2, 1), rel(1, 1));
-  const double cb = std::cos(r.tip_bend), sb = std::sin(r.tip_bend);
-  Eigen::Matrix3d rx;
-  rx << 1.0, 0.0, 0.0, 0.0, cb, -sb, 0.0, sb, cb;
-  const Eigen::Matrix3d ry = rx.transpose() * rel;
-  r.tip_twist = std::atan2(ry(0, 2), ry(0, 0));
+  // Tip relative to the base, in W: Rx(bend) Ry(twist) (tip_deflection.hpp).
+  const TipDeflection deflection = tip_deflection(pose.rotation.transpose() * r.tip_rotation);
+  r.tip_bend = deflection.bend;
+  r.tip_twist = deflection.twist;
 
   const Eigen::VectorXd f = c.mass * d.acceleration - loads_;  // [N, N m]
   for (int n = 0; n < c.num_nodes(); ++n) {

@@ -54,9 +54,10 @@ struct StructureReadout {
   Eigen::Matrix3d tip_rotation = Eigen::Matrix3d::Identity();
   /// The same for the outer section [-].
   Eigen::Matrix3d outer_rotation = Eigen::Matrix3d::Identity();
-  /// The tip's bend and twist relative to the base [rad]: the chain's sums of the joints'
-  /// bend and twist deflections; the FEM's tip section rotation relative to the base,
-  /// R_Wᵀ R_tip = Rx(bend) Ry(twist) (the chain's joint convention, mbd/chain_model.hpp).
+  /// The tip's bend and twist relative to the base [rad]: the rotation of the chain's last
+  /// body, or of the FEM's tip section, from its rest orientation, in the wing frame W,
+  /// as Rx(bend) Ry(twist) (tip_deflection.hpp; the chain's joint convention,
+  /// mbd/chain_model.hpp), about x_W and y_W whatever axis a chain lies along.
   double tip_bend = 0.0, tip_twist = 0.0;
   /// Force [N] and moment about the pivot [N m] the base exerts on the wing, ground frame
   /// (inertial, aerodynamic, gravity and point loads together), and the power it supplies,
