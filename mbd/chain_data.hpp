@@ -59,10 +59,16 @@ struct StepWorkspace {
 ///     Q(Φ̇) = Q_given − D (Φ̇ − Φ̇_ref),
 /// Q_given the generalized force of the Loads (found at Φ̇_ref). At Φ̇ = Φ̇_ref the step is
 /// the same; the term only makes the step respond to its own velocity as the loads would.
+/// Φ̇_ref is the rate at the step's end, so the term acts in a step solved whole only: in
+/// the pieces of a step solved in sub-steps or halves (generalized_alpha.cpp) an earlier
+/// piece's rate differs from it at the fixed point too, and the term would move the
+/// coupled answer (with it in every piece a run found another fixed point; in the last
+/// piece alone it made runs fail that converge without it).
 struct LoadDamping {
   Eigen::MatrixXd matrix;     ///< D = −∂Q/∂Φ̇ [N m s/rad]
   Eigen::VectorXd reference;  ///< Φ̇_ref [rad/s]
   bool active = false;
+  double step_start = 0.0, step_end = 0.0;  ///< the step being solved [s] (set by advance)
 };
 
 struct ChainData {

@@ -62,6 +62,10 @@ struct StepProblem {
   GeneralizedAlphaCoefficients c;
   double h;
   double roundoff = 0.0;  // round-off floor of the last residual [N m]
+  // The load damping acts in this solve: it is active and the solve is the whole step
+  // (chain_data.hpp LoadDamping).
+  bool damping = data.load_damping.active && cur.time == data.load_damping.step_start &&
+                 std::abs(cur.time + h - data.load_damping.step_end) <= 1e-9 * std::max(h, 1e-300);
 
   // Φ, Φ̇, a at the end of the step for a trial Φ̈_{n+1} = x, into ws.q, ws.v, ws.a.
   void predict(const Eigen::VectorXd& x) {
@@ -76,7 +80,7 @@ struct StepProblem {
     predict(x);
     StepWorkspace& ws = data.step;
     compute_all_terms(model, data, pose, ws.q, ws.v, loads);
-    if (data.load_damping.active) {  // Q −= D (Φ̇ − Φ̇_ref) (chain_data.hpp LoadDamping)
+    if (damping) {  // Q −= D (Φ̇ − Φ̇_ref) (chain_data.hpp LoadDamping)
       ws.scratch = ws.v - data.load_damping.reference;
       data.generalized_load.noalias() -= data.load_damping.matrix * ws.scratch;
     }
@@ -103,9 +107,9 @@ struct StepProblem {
   void update_load_damping() {
     StepWorkspace& ws = data.step;
     const LoadDamping& d = data.load_damping;
-    if (!d.active && ws.jacobian_damping.isZero(0.0)) return;
-    if (d.active && ws.jacobian_damping == d.matrix) return;
-    if (d.active) {
+    if (!damping && ws.jacobian_damping.isZero(0.0)) return;
+    if (damping && ws.jacobian_damping == d.matrix) return;
+    if (damping) {
       ws.jacobian += velocity_factor() * (d.matrix - ws.jacobian_damping);
       ws.jacobian_damping = d.matrix;
     } else {
@@ -127,7 +131,7 @@ struct StepProblem {
       x(j) = keep;
     }
     residual(x, ws.r_new);  // leave data at x again
-    if (data.load_damping.active)
+    if (damping)
       ws.jacobian_damping = data.load_damping.matrix;
     else
       ws.jacobian_damping.setZero();
@@ -272,6 +276,8 @@ void advance(const ChainModel& model, ChainData& data, const BaseMotion& base,
     throw std::invalid_argument("generalized-alpha: substeps must be at least 1, got " +
                                 std::to_string(settings.substeps));
   StepWorkspace& ws = data.step;
+  data.load_damping.step_start = current.time;
+  data.load_damping.step_end = t1;
   int pieces = 0;
   if (settings.substeps == 1) {
     pieces = solve_with_halving(model, data, base, settings, current, dt, loads, next);

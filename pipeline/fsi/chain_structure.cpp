@@ -66,6 +66,8 @@ void ChainStructureData::solve(double dt) {
 void ChainStructureData::linearise_panel_loads(PanelLoadResponse& response) {
   const int n = model_.chain.num_dofs();
   if (n == 0 || model_.attachment.nodes.empty()) return;
+  // Sub-steps: the term would act in none of them (mbd::LoadDamping acts in a step solved whole).
+  if (model_.integrator.substeps > 1) return;
   const mbd::BasePose pose = model_.base_motion(relaxed.time);
   const int nodes = model_.surface_nodes();
   for (Eigen::Matrix3Xd* m : {&base_positions_, &base_velocities_, &unit_positions_, &unit_velocities_})

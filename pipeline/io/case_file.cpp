@@ -448,8 +448,15 @@ Case read_case(TomlTable root) {
   }
   for (const auto& t : loads) c.loads.push_back(read_load(t, c.structure.bodies));
   const auto markers = root.get_tables("markers");
-  for (std::size_t i = 0; i < markers.size(); ++i)
+  for (std::size_t i = 0; i < markers.size(); ++i) {
     c.markers.push_back(read_marker(markers[i], i, c.structure.bodies));
+    // Each name heads its own history.csv columns (<name>_x_m, ...): no two alike.
+    for (std::size_t k = 0; k < i; ++k)
+      if (c.markers[k].name == c.markers[i].name)
+        markers[i].fail("name", "'" + c.markers[i].name + "' is already the name of marker " + std::to_string(k + 1) +
+                                    " (each marker's name heads its own history.csv columns " + c.markers[i].name +
+                                    "_x_m, _y_m, _z_m)");
+  }
   warn_long_free_hover(root, c);
   warn_experimental_shedding(root, c);
   warn_far_wake_outside_measured_range(root, c);

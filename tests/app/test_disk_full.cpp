@@ -1,8 +1,9 @@
 // A full disk for every command that writes (issue: mesh exited 0 with a truncated
 // mesh.msh and an empty mesh.vtu; modes left a truncated fem.vtu; run and reduce left
-// truncated .vtp files under their final names). A file-size limit (ulimit -f) with
-// SIGXFSZ ignored makes every write past it fail with EFBIG, as a full disk fails with
-// ENOSPC. Limits in 512-byte blocks (dash's ulimit -f); for each command several limits
+// truncated .vtp files under their final names). A file-size limit (ulimit -f) makes
+// every write past it fail with EFBIG, as a full disk fails with ENOSPC: flapsim ignores
+// SIGXFSZ, whose default (a user's shell's) killed it mid-write with the temporary files
+// left (exit 153 from the shell, −1 here). Limits in 512-byte blocks (dash's ulimit -f); for each command several limits
 // (the smallest fail the first files, the largest fit everything): the exit status is 0 (everything fitted)
 // or 4 (output error), at least one limit gives 4, and no file under a final name is
 // truncated; the manifest does not say "running".

@@ -34,9 +34,10 @@ TEST(FemCommands, MeshAndModesWriteTheirFiles) {
   EXPECT_EQ(header, "mode,frequency_hz,kind,beam_share,shape_kind");
   EXPECT_EQ(first.substr(0, 2), "1,");
   EXPECT_TRUE(fs::exists(dir / "fem.vtu"));
-  // Bad input: exit status 2 and nothing written.
+  // Bad input: a numeric option out of its range is a usage error (exit status 1, README),
+  // a missing file bad input (2); nothing written.
   const fs::path bad = scratch / "bad";
-  EXPECT_EQ(run_flapsim("modes " + wing + " -o " + bad.string() + " --modes 0"), 2);
+  EXPECT_EQ(run_flapsim("modes " + wing + " -o " + bad.string() + " --modes 0"), 1);
   EXPECT_EQ(run_flapsim("mesh " + (scratch / "missing.toml").string() + " -o " + bad.string()), 2);
   EXPECT_FALSE(fs::exists(bad / "modes.csv"));
 }

@@ -128,10 +128,10 @@ TEST(FemModesState, AnimatesTheChosenModeAndNamesIt) {
   ASSERT_EQ(coloured.size(), 1u);
   EXPECT_EQ(bars, coloured);
 
-  // Bad input: a mode beyond --modes, nothing written.
+  // A mode beyond --modes: a usage error (exit status 1, README), nothing written.
   EXPECT_EQ(flapsim::test::run_flapsim("modes " + wing + " -o " + (scratch / "bad").string() +
                                        " --modes 3 --state-mode 4"),
-            2);
+            1);
   EXPECT_FALSE(fs::exists(scratch / "bad" / "fem_modes.pvsm"));
 }
 

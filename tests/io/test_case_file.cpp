@@ -130,6 +130,9 @@ TEST(CaseFileErrors, EachProblemNamesLineAndKey) {
       {"length_unit = \"furlong\"\n" + kHead, 1, "length_unit"},
       {"air = \"vacuum\"\n" + kHead, 1, "air"},
       {kHead + "[[markers]]\nbody = 2\npoint = [0, 0, 0]\n", 9, "markers[0].body"},
+      // two markers of one name would write the same history.csv columns twice
+      {kHead + "[[markers]]\nname = \"tip\"\nbody = 1\npoint = [0, 0, 0]\n[[markers]]\nname = \"tip\"\nbody = 1\npoint = [0, 0, 0]\n", 13,
+       "markers[1].name"},
       {"wing = \"no_such_wing.toml\"\n" + kHead.substr(kHead.find('\n') + 1), 1, "wing"},
       {kHead + "bodies = 2\n", 8, "structure.bodies"},  // rigid has one body
       {"[kinematics]\nfrequency_hz = 1.0\nsweep = 0.0\nrotation = 0.0\n[structure]\nkind = \"rigid\"\n",

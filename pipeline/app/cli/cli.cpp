@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -77,6 +78,10 @@ static std::string shortened(const std::string& text) {
 }
 
 int run(int argc, char** argv) {
+  // A write past the file-size limit (ulimit -f) fails with EFBIG, which the writers report
+  // as an output error (exit status 4, temporary files removed), instead of SIGXFSZ killing
+  // the program mid-write.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
       "flapsim: flexible flapping wings, from a wing drawing to lift.\n"
       "Stages: mesh -> modes (FEM) -> reduce (beam, bar chain) -> run (FSI) -> sweep, optimize."};

@@ -1,5 +1,6 @@
 // flapsim check FILE.toml: validate a wing or case file and print its summary.
 #include "pipeline/app/cli/commands.hpp"
+#include "pipeline/app/cli/option_checks.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -89,6 +90,7 @@ std::string check_file(const std::string& path, const std::string& chain_file) {
   }
   if (case_file) {
     const io::Case c = print_case_warnings(io::read_case(root));
+    warn_unused_structure_options(c, chain_file, 1.0);  // as run warns
     return io::describe_case(c) + check_case_like_run(c, chain_file);
   }
   if (root.has("bodies"))
@@ -122,7 +124,8 @@ void add_check_command(CLI::App& app) {
   auto file = std::make_shared<std::string>();
   auto chain = std::make_shared<std::string>();
   cmd->add_option("FILE", *file, "wing or case file (TOML)")->required();
-  cmd->add_option("--chain", *chain, "for a case: the chain file run --chain would use (overrides the case's 'chain')");
+  cmd->add_option("--chain", *chain, "for a case: the chain file run --chain would use (overrides the case's 'chain')")
+      ->check(non_empty_option());
   cmd->callback([file, chain] {
     check_chain_option(*chain);
     std::cout << check_file(*file, *chain) << std::flush;

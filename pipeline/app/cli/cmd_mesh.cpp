@@ -1,6 +1,7 @@
 // flapsim mesh WING.toml -o DIR: mesh a wing with gmsh (veins fragmented into
 // the membrane) and write DIR/mesh.msh and DIR/mesh.vtu.
 #include "pipeline/app/cli/commands.hpp"
+#include "pipeline/app/cli/option_checks.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -81,7 +82,7 @@ void add_mesh_command(CLI::App& app) {
       "SIGINT/SIGTERM (at once; flapsim_outputs.toml says \"interrupted\").");
   auto args = std::make_shared<MeshArgs>();
   cmd->add_option("WING", args->wing_file, "wing file (TOML)")->required();
-  cmd->add_option("-o,--output", args->out_dir, "output directory")->capture_default_str();
+  cmd->add_option("-o,--output", args->out_dir, "output directory")->check(non_empty_option())->capture_default_str();
   cmd->add_flag("--force", args->force, "replace another command's outputs in the folder that this command would overwrite");
   cmd->callback([args] { run_mesh(*args); });
 }

@@ -2,6 +2,7 @@
 // writes DIR/modes.csv (mode, frequency_hz, kind) and DIR/fem.vtu (mode shapes
 // and the static tip load cases as point data).
 #include "pipeline/app/cli/commands.hpp"
+#include "pipeline/app/cli/option_checks.hpp"
 #include "pipeline/app/cli/thread_options.hpp"
 
 #include <CLI/CLI.hpp>
@@ -39,12 +40,11 @@ struct ModesArgs {
 };
 
 void run_modes(const ModesArgs& args) {
-  if (args.modes < 1 || args.modes > 500)
-    throw InputError("<command line>", 0, "--modes", "must be between 1 and 500, got " + std::to_string(args.modes));
-  if (args.state_mode < 1 || args.state_mode > args.modes)
-    throw InputError("<command line>", 0, "--state-mode",
-                     "must be between 1 and --modes (" + std::to_string(args.modes) + "), got " +
-                         std::to_string(args.state_mode));
+  // Options out of their range are usage errors (exit status 1, README): --modes and
+  // --state-mode alone by their validators, --state-mode against --modes here.
+  if (args.state_mode > args.modes)
+    throw CLI::ValidationError("--state-mode", "must be between 1 and --modes (" + std::to_string(args.modes) +
+                                                   "), got " + std::to_string(args.state_mode));
   // 1. Wing; the output folder writable before any work (else exit 4 naming it).
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
   print_wing_warnings(wing);
@@ -121,12 +121,14 @@ void add_modes_command(CLI::App& app) {
       "flapsim_outputs.toml says \"interrupted\"). A stage over 2 s is shown on stderr.");
   auto args = std::make_shared<ModesArgs>();
   cmd->add_option("WING", args->wing_file, "wing file (TOML)")->required();
-  cmd->add_option("-o,--output", args->out_dir, "output directory")->capture_default_str();
-  cmd->add_option("--modes", args->modes, "number of modes")->capture_default_str();
+  cmd->add_option("-o,--output", args->out_dir, "output directory")->check(non_empty_option())->capture_default_str();
+  cmd->add_option("--modes", args->modes, "number of modes")->check(CLI::Range(1, 500))->capture_default_str();
   cmd->add_option("--bodies", args->bodies, "bodies of the chain whose stations name the modes (as flapsim reduce --bodies)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  cmd->add_option("--state-mode", args->state_mode, "the mode fem_modes.pvsm animates (1-based)")->capture_default_str();
+  cmd->add_option("--state-mode", args->state_mode, "the mode fem_modes.pvsm animates (1-based, at most --modes)")
+      ->check(CLI::Range(1, 500))
+      ->capture_default_str();
   cmd->add_flag("--force", args->force, "replace another command's outputs in the folder that this command would overwrite");
   cmd->callback([args] { run_modes(*args); });
 }

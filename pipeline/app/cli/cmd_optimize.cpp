@@ -106,7 +106,7 @@ void add_optimize_command(CLI::App& app) {
   cmd->add_option("--constraint", args->constraints, "RESULT>=X or RESULT<=X, e.g. mean_lift_N>=0.0125; repeat")
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  cmd->add_option("-o,--output", args->output_dir, "output folder")->required();
+  cmd->add_option("-o,--output", args->output_dir, "output folder")->required()->check(non_empty_option());
   cmd->add_option("--algorithm", args->algorithm, "bobyqa (bounds only) or cobyla (constraints); default: "
                                                   "bobyqa, cobyla with --constraint")
       ->check(CLI::IsMember({"bobyqa", "cobyla"}));
@@ -122,7 +122,7 @@ void add_optimize_command(CLI::App& app) {
   cmd->add_option("--initial-step", args->initial_step,
                   "first step, as a fraction of each key's range (default 0.25)")
       ->check(CLI::Range(1e-6, 0.5));
-  cmd->add_option("--chain", args->chain_file, "chain file for every run (as flapsim run --chain)");
+  cmd->add_option("--chain", args->chain_file, "chain file for every run (as flapsim run --chain)")->check(non_empty_option());
   cmd->add_option("--spring-scale", args->spring_scale, "joint-spring factor for every run (as flapsim run)")
       ->check(positive_number());
   cmd->add_option("--vtk-every", args->vtk_every, "ParaView series of each run every N steps (default 0: none)")

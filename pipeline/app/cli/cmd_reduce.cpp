@@ -3,6 +3,7 @@
 // (docs/reduction.md). The reduction library returns data; pipeline/io writes the
 // files, each atomically.
 #include "pipeline/app/cli/commands.hpp"
+#include "pipeline/app/cli/option_checks.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -131,9 +132,9 @@ void add_reduce_command(CLI::App& app) {
       "(at once; flapsim_outputs.toml says \"interrupted\").");
   auto o = std::make_shared<ReduceOptions>();
   cmd->add_option("WING", o->wing_file, "wing file (TOML)")->required();
-  cmd->add_option("-o,--output", o->out_dir, "output directory")->required();
-  cmd->add_option("--bodies", o->bodies, "number of bodies N_b (default 10)")
-      ->check(CLI::Range(1, 1000));
+  cmd->add_option("-o,--output", o->out_dir, "output directory")->required()->check(non_empty_option());
+  cmd->add_option("--bodies", o->bodies, "number of bodies N_b (default 10; at least 2, as a case's structure.bodies)")
+      ->check(CLI::Range(2, 1000));
   cmd->add_option("--stations", o->stations, "number of beam stations (default 40)")
       ->check(CLI::Range(2, 10000));
   cmd->add_option("--modes", o->modes, "FEM modes to compute (default 12)")->check(CLI::Range(2, 200));

@@ -119,9 +119,10 @@ void add_run_command(CLI::App& app) {
       "Exit status: 0 ok, 1 usage, 2 bad input, 3 numerical failure (outputs so far stay valid),\n"
       "4 output or system error, 130/143 interrupted by SIGINT/SIGTERM.");
   cmd->add_option("case", args->case_file, "case file (TOML, docs/case_file.md)")->required();
-  cmd->add_option("-o,--output", args->output_dir, "output folder (default out/<case name>)");
+  cmd->add_option("-o,--output", args->output_dir, "output folder (default out/<case name>)")->check(non_empty_option());
   cmd->add_option("--chain", args->chain_file,
-                  "chain file (chain.toml from 'flapsim reduce'), overrides the case's 'chain'");
+                  "chain file (chain.toml from 'flapsim reduce'), overrides the case's 'chain'")
+      ->check(non_empty_option());
   cmd->add_option("--vtk-every", args->vtk_every,
                   "write the ParaView series every N steps, 0 = none (default: the case's output.vtk_every)")
       ->check(whole_number(0, 100000000));

@@ -151,8 +151,8 @@ void add_sweep_command(CLI::App& app) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--cases", args->cases_table,
                   "CSV table, one case per row; the header names the keys (instead of --vary)");
-  cmd->add_option("-o,--output", args->output_dir, "output folder")->required();
-  cmd->add_option("--chain", args->chain_file, "chain file for every case (as flapsim run --chain)");
+  cmd->add_option("-o,--output", args->output_dir, "output folder")->required()->check(non_empty_option());
+  cmd->add_option("--chain", args->chain_file, "chain file for every case (as flapsim run --chain)")->check(non_empty_option());
   cmd->add_option(
          "-j,--jobs", args->jobs,
          "cases run at the same time per process/rank (default: --threads if given, else the cores, shared by the ranks on a machine)")

@@ -33,4 +33,10 @@ CLI::Validator positive_number() {
       "NUMBER > 0", "POSITIVE_NUMBER");
 }
 
+CLI::Validator non_empty_option() {
+  return CLI::Validator(
+      [](std::string& text) { return text.empty() ? std::string("must not be empty (an unset shell variable?)") : std::string(); },
+      "", "NONEMPTY");
+}
+
 }  // namespace flapsim::cli
