@@ -62,9 +62,10 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
   const double nc = n.chordwise_panels, ns = n.spanwise_panels;
   const double panels = nc * ns;
   // Mean coupling iterations per step: a few (docs/fsi.md, "Added mass in the coupling":
-  // a chain with the added mass 3.0–3.8 measured, 4 taken; without it and for the FEM,
-  // which does not use it, 5); the cap bounds it.
-  const double typical = bodies > 1 && fem_dofs == 0 && n.added_mass ? 4.0 : 5.0;
+  // a chain with the added mass 3.0–3.8 measured, 4 taken; without it, with sub-steps
+  // (which leave it out) and for the FEM, which does not use it, 5); the cap bounds it.
+  const bool added_mass = bodies > 1 && fem_dofs == 0 && n.added_mass && n.structure_substeps == 1;
+  const double typical = added_mass ? 4.0 : 5.0;
   const double iterations = std::min(typical, static_cast<double>(n.max_coupling_iterations));
 
   double memory = 64e6;  // the program, libraries, VTK and the wing: a fixed allowance [B]
