@@ -4,8 +4,7 @@
 
 namespace flapsim::app {
 
-std::string coupling_tolerance_warning(const io::Case& c, const FsiSetup& setup) {
-  (void)c;
+std::string coupling_tolerance_warning(const FsiSetup& setup) {
   const fsi::FsiModel& m = setup.model;
   if (!m.air || !m.structure || m.structure->num_dofs() == 0) return "";
   if (!m.lattice.single_precision_wake || !(m.coupling.tolerance < kSinglePrecisionCouplingFloor)) return "";

@@ -7,7 +7,6 @@
 #include <string>
 
 #include "pipeline/app/fsi_setup.hpp"
-#include "pipeline/io/case_model.hpp"
 
 namespace flapsim::app {
 
@@ -19,6 +18,6 @@ inline constexpr double kSinglePrecisionCouplingFloor = 1e-8;
 
 /// \brief "" or the warning for a coupled (flexible or FEM) case in air with
 /// `wake_precision = "single"` and `coupling_tolerance` below kSinglePrecisionCouplingFloor.
-std::string coupling_tolerance_warning(const io::Case& c, const FsiSetup& setup);
+std::string coupling_tolerance_warning(const FsiSetup& setup);
 
 }  // namespace flapsim::app

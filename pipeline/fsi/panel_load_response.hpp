@@ -3,8 +3,8 @@
 /// \brief The lattice's linearised added-mass response as a structure sees it: the change
 /// of the panel forces for a change of the lattice nodes' velocities (uvlm/added_mass.hpp),
 /// at the lattice's last solve. The coupled step hands it to the structure at the steps it
-/// chooses (StructureData::linearise_panel_loads, coupled_step.cpp added_mass_due); the structure turns it into its own matrix
-/// (docs/fsi.md, "Added mass in the coupling").
+/// chooses (StructureData::linearise_panel_loads, coupled_step.cpp added_mass_due); the
+/// structure turns it into its own matrix (docs/fsi.md, "Added mass in the coupling").
 
 #include <Eigen/Core>
 

@@ -1,8 +1,8 @@
 // Option values a user gets wrong (README, "Exit status": a usage error is status 1, with
 // nothing written): an empty -o or --chain (an unset shell variable: `--chain "$CHAIN"` ran the
-// wing reduced in process, `-o ""` wrote into out/<case name>), a one-body reduction (which
-// no case can run: a case's structure.bodies is at least 2), and check warns about a --chain
-// the case does not use, as run does.
+// wing reduced in process, `-o ""` wrote into out/<case name>), a one-body reduction or mode
+// naming (a chain no case can run: a case's structure.bodies is at least 2), and check warns
+// about a --chain the case does not use, as run does.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -26,6 +26,7 @@ TEST(OptionValues, EmptyPathsAndAOneBodyReductionAreUsageErrors) {
   EXPECT_EQ(run_flapsim("check " + flexible.string() + " --chain ''"), 1);
   EXPECT_EQ(run_flapsim("reduce " + kSourceDir + "/wings/flat_plate.toml -o ''"), 1);
   EXPECT_EQ(run_flapsim("reduce " + kSourceDir + "/wings/flat_plate.toml --bodies 1 -o " + out.string()), 1);
+  EXPECT_EQ(run_flapsim("modes " + kSourceDir + "/wings/flat_plate.toml --bodies 1 -o " + out.string()), 1);
   EXPECT_FALSE(fs::exists(out));
 }
 

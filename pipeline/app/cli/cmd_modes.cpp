@@ -23,7 +23,6 @@
 #include "pipeline/io/fem_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
-#include "wings/input_error.hpp"
 #include "wings/wing_file.hpp"
 
 namespace flapsim::cli {
@@ -124,7 +123,7 @@ void add_modes_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->out_dir, "output directory")->check(non_empty_option())->capture_default_str();
   cmd->add_option("--modes", args->modes, "number of modes")->check(CLI::Range(1, 500))->capture_default_str();
   cmd->add_option("--bodies", args->bodies, "bodies of the chain whose stations name the modes (as flapsim reduce --bodies)")
-      ->check(CLI::Range(1, 1000))
+      ->check(CLI::Range(2, 1000))
       ->capture_default_str();
   cmd->add_option("--state-mode", args->state_mode, "the mode fem_modes.pvsm animates (1-based, at most --modes)")
       ->check(CLI::Range(1, 500))
