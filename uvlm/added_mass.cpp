@@ -53,6 +53,10 @@ void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeDat
       }
       df.col(k) = (d.rho * d.area(k) * dp) * d.normal.col(k);
     }
+  if (terms == AddedMassTerms::All && leading_edge_responds(m)) {
+    hold_leading_edge_column(m, d, s.dgamma, dv, s.leading_edge, s.column);
+    add_leading_edge_force_change(m, d, s.column, df);
+  }
 }
 
 }  // namespace flapsim::uvlm

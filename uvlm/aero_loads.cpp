@@ -4,6 +4,7 @@
 /// leading-edge force; and the pieces both routes share (load_terms.hpp).
 
 #include "uvlm/lattice_internal.hpp"
+#include "uvlm/leading_edge_side.hpp"
 #include "uvlm/load_terms.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
@@ -48,8 +49,9 @@ Eigen::Vector3d leading_edge_force(const VortexLatticeModel& m, VortexLatticeDat
       break;
     case LeadingEdge::Separated:
       // Polhamus: the suction's magnitude acts normal to the surface, on the side the
-      // leading-edge bound vortex lifts toward (a positive ring circulation pushes along +n).
-      out = (d.gamma(k) >= 0.0 ? magnitude : -magnitude) * d.normal.col(k);
+      // leading-edge bound vortex lifts toward (a positive ring circulation pushes along +n;
+      // leading_edge_side.hpp).
+      out = (leading_edge_side(m, d, j) * magnitude) * d.normal.col(k);
       break;
   }
   d.loads.leading_edge_force.col(k) = out;
@@ -86,6 +88,7 @@ void add_leading_edge_forces(const VortexLatticeModel& m, VortexLatticeData& d) 
       const Eigen::Vector3d surface =
           0.5 * (detail::ring_node_velocity(m, d, q, j) + detail::ring_node_velocity(m, d, q, j + 1));
       const Eigen::Vector3d v = d.free_stream - surface + d.eval.velocity(s);
+      d.segment_air_velocity.col(static_cast<Eigen::Index>(s)) = v;
       suction += detail::in_plane(d, m.panel(q, j), d.rho * S.gamma()[s] * v.cross(b - a));
     }
     detail::leading_edge_force(m, d, j, suction);

@@ -40,6 +40,7 @@ void compute_kutta_joukowski_loads(const VortexLatticeModel& m, VortexLatticeDat
       const Eigen::Vector3d sv =
           0.5 * (detail::ring_node_velocity(m, d, q, j) + detail::ring_node_velocity(m, d, q, j + 1));
       const Eigen::Vector3d f = segment_force(s, sv);
+      d.segment_air_velocity.col(static_cast<Eigen::Index>(s)) = d.free_stream - sv + d.eval.velocity(s);
       const int k = m.panel(q, j);
       const Eigen::Vector3d tangential = detail::in_plane(d, k, f);
       d.loads.force.col(k) += f - tangential;

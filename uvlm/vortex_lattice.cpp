@@ -50,6 +50,8 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   wake_velocity.setZero(3, np);
   panel_air_velocity.setZero(3, np);
   panel_gamma_gradient.setZero(3, np);
+  segment_air_velocity.setZero(3, np);
+  held_edge_side.setZero(ns);
   gamma.setZero(np);
   gamma_accepted.setZero(np);
   gamma_accepted_before.setZero(np);

@@ -234,6 +234,13 @@ struct VortexLatticeData {
   /// panel at its collocation point [m/s] and the surface gradient of Γ [m/s] (zero after
   /// the Kutta–Joukowski route); the added-mass response's quasi-steady part uses them.
   Eigen::Matrix3Xd panel_air_velocity, panel_gamma_gradient;
+  /// Of the loads of the last solve (both routes): the air's velocity relative to the
+  /// surface at the midpoints of the spanwise bound segments of rows q < nc, segment
+  /// q ns + j [m/s]; the leading-edge force's response uses it (leading_edge_response.hpp).
+  Eigen::Matrix3Xd segment_air_velocity;
+  /// Per strip: the side (+1, −1) its separated leading-edge force is held to within the
+  /// current step, 0 where it follows Γ(0, j) (leading_edge_side.hpp).
+  Eigen::VectorXi held_edge_side;
 
   // Circulations [m²/s], panel index i + nc j.
   Eigen::VectorXd gamma;           ///< last solve

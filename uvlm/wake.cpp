@@ -4,6 +4,7 @@
 /// edge and truncation.
 
 #include "uvlm/lattice_internal.hpp"
+#include "uvlm/leading_edge_side.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
 #include <algorithm>
@@ -189,6 +190,7 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
   const std::size_t n1 = ns + 1;
   d.force_impulse += d.loads.total_force * d.dt;
   d.force_time += d.dt;
+  release_leading_edge_sides(d);  // held within a step at most (leading_edge_side.hpp)
   if (m.steady()) {  // the steady lattice's straight wake is rebuilt by every solve
     d.gamma_accepted_before = d.gamma;
     d.gamma_accepted = d.gamma;

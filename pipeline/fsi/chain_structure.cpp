@@ -78,22 +78,51 @@ void ChainStructureData::linearise_panel_loads(PanelLoadResponse& response) {
   mbd::compute_generalized_loads(model_.chain, chain, change_loads_);  // gravity alone
   gravity_load_ = chain.generalized_load;
   panel_change_.point = response.points();
-  mbd::LoadDamping& damping = chain.load_damping;
+  pressure_damping_.resize(n, n);
+  edge_columns_.resize(static_cast<std::size_t>(n));
+  edge_response_ = response.edge_responds();
   for (int j = 0; j < n; ++j) {
     rates_ = relaxed.v;
     rates_(j) += 1.0;
     mbd::forward_kinematics(model_.chain, chain, pose, relaxed.q, rates_);
     deformed_nodes(model_.attachment, chain, unit_positions_, unit_velocities_);
     node_change_ = unit_velocities_ - base_velocities_;
-    response.force_change(node_change_, panel_change_.force);
+    response.force_change(node_change_, panel_change_.force, edge_columns_[static_cast<std::size_t>(j)]);
     change_loads_.clear();
     fsi::add_panel_loads(model_.attachment, chain, panel_change_, change_loads_);
     mbd::compute_generalized_loads(model_.chain, chain, change_loads_);
-    damping.matrix.col(j) = gravity_load_ - chain.generalized_load;
+    pressure_damping_.col(j) = gravity_load_ - chain.generalized_load;
+  }
+  mbd::forward_kinematics(model_.chain, chain, pose, relaxed.q, relaxed.v);  // the iterate's pose again
+  has_added_mass_ = true;
+  set_damping(response);
+}
+
+void ChainStructureData::refresh_panel_load_response(PanelLoadResponse& response) {
+  if (!has_added_mass_ || !edge_response_) return;
+  mbd::forward_kinematics(model_.chain, chain, model_.base_motion(relaxed.time), relaxed.q, relaxed.v);
+  change_loads_.clear();
+  mbd::compute_generalized_loads(model_.chain, chain, change_loads_);  // gravity alone
+  gravity_load_ = chain.generalized_load;
+  set_damping(response);
+}
+
+// D = the held part + the leading-edge force's columns evaluated at the lattice's last
+// solve, transferred at the iterate's pose (the chain's kinematics; gravity_load_ of it).
+void ChainStructureData::set_damping(PanelLoadResponse& response) {
+  mbd::LoadDamping& damping = chain.load_damping;
+  damping.matrix = pressure_damping_;
+  if (edge_response_) {
+    panel_change_.point = response.points();
+    for (int j = 0; j < damping.matrix.cols(); ++j) {
+      response.edge_force_change(edge_columns_[static_cast<std::size_t>(j)], panel_change_.force);
+      change_loads_.clear();
+      fsi::add_panel_loads(model_.attachment, chain, panel_change_, change_loads_);
+      mbd::compute_generalized_loads(model_.chain, chain, change_loads_);
+      damping.matrix.col(j) += gravity_load_ - chain.generalized_load;
+    }
   }
   damping.active = true;  // its reference rate: the iterate's at each solve()
-  has_added_mass_ = true;
-  mbd::forward_kinematics(model_.chain, chain, pose, relaxed.q, relaxed.v);  // the iterate's pose again
 }
 
 void ChainStructureData::pose_iterate() {

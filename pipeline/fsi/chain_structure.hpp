@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "mbd/base_motion.hpp"
 #include "mbd/chain_data.hpp"
@@ -21,6 +22,7 @@
 #include "mbd/generalized_alpha.hpp"
 #include "pipeline/fsi/structure.hpp"
 #include "pipeline/fsi/wing_attachment.hpp"
+#include "uvlm/leading_edge_response.hpp"
 
 namespace flapsim::fsi {
 
@@ -58,6 +60,7 @@ class ChainStructureData : public StructureData {
   void prescribe(double t) override;
   void solve(double dt) override;
   void linearise_panel_loads(PanelLoadResponse& response) override;
+  void refresh_panel_load_response(PanelLoadResponse& response) override;
   void start_iterate() override {
     relaxed = trial;
     chain.load_damping.active = has_added_mass_;  // the sub-iterations' solves
@@ -95,6 +98,12 @@ class ChainStructureData : public StructureData {
   mbd::Loads change_loads_;
   Eigen::VectorXd gravity_load_, rates_;
   bool has_added_mass_ = false;  ///< chain.load_damping.matrix holds a linearisation
+  // The held linearisation: D's part without the leading-edge force, and per joint
+  // coordinate the leading-edge force's held column (panel_load_response.hpp).
+  Eigen::MatrixXd pressure_damping_;
+  std::vector<uvlm::LeadingEdgeColumn> edge_columns_;
+  bool edge_response_ = false;
+  void set_damping(PanelLoadResponse& response);
 };
 
 /// \brief The chain parts of a run's structure, for outputs that show the chain (joint

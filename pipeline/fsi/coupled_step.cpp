@@ -7,6 +7,7 @@
 
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/fsi/panel_load_response.hpp"
+#include "uvlm/leading_edge_side.hpp"
 
 namespace flapsim::fsi {
 
@@ -74,12 +75,16 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
   while (k < last) {
     // 1. lattice on the iterate
     if (!first) s.pose_iterate();
+    if (k == model.coupling.edge_side_hold_after) uvlm::hold_leading_edge_sides(model.lattice, *data.lattice);
     // (first of the step: the structure's pose is already the predictor's = the iterate)
     solve_air(model, data, dt, step, t1);
     ++k;
-    if (k == 1 && model.coupling.added_mass && added_mass_due(model, data, step)) {  // the air's added mass
+    if (k == 1 && model.coupling.added_mass) {  // the air's added mass
       PanelLoadResponse response(model.lattice, *data.lattice, *data.added_mass_scratch);
-      s.linearise_panel_loads(response);
+      if (added_mass_due(model, data, step))
+        s.linearise_panel_loads(response);
+      else
+        s.refresh_panel_load_response(response);
     }
     // 2. the structure's step with these loads, to 1 % of the last change (file comment)
     assemble_loads(model, data, t1);

@@ -68,6 +68,12 @@ struct CouplingSettings {
   /// After a step that took more lattice solves than this the next step makes it anew
   /// (coupled_step.cpp, added_mass_due).
   int added_mass_stale = 5;
+  /// After this many lattice solves of a step without convergence each strip's separated
+  /// leading-edge force keeps the side the last solve gave it for the rest of the step
+  /// (uvlm/leading_edge_side.hpp: where a strip's leading-edge circulation changes sign the
+  /// force jumps and the iterates may alternate between the two sides; docs/fsi.md,
+  /// "Coupling"). Steps that converge sooner are not touched.
+  int edge_side_hold_after = 10;
   /// The predictor's loads: the last accepted step's panel forces extrapolated in time
   /// through this many earlier steps' (0: held, 1: linear, 2: quadratic), each panel's
   /// force vector at its current point (docs/fsi.md, "One coupled step"). Only where the

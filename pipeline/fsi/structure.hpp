@@ -139,6 +139,10 @@ class StructureData {
   /// the coupling otherwise learns over sub-iterations; the coupling's fixed point is
   /// unchanged. A structure that cannot use it ignores it (the default).
   virtual void linearise_panel_loads(PanelLoadResponse& response) { (void)response; }
+  /// \brief At a step that takes no new linearisation: the parts of the held one that
+  /// follow the lattice's last solve (the leading-edge force's, which turns with the sign
+  /// of each strip's leading-edge circulation; panel_load_response.hpp) evaluated anew.
+  virtual void refresh_panel_load_response(PanelLoadResponse& response) { (void)response; }
   /// The iterate s̃ := ŝ (the predictor of a step).
   virtual void start_iterate() = 0;
   /// \brief Puts the structure's pose at the iterate s̃ (its time is the trial's).
