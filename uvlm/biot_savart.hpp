@@ -21,6 +21,8 @@ class SegmentSet {
   /// Allocate room for `capacity` segments.
   void reserve(std::size_t capacity);
   void clear() { size_ = 0; }
+  /// Keep the first n segments (n ≤ size()): drop those pushed after them.
+  void truncate(std::size_t n) { size_ = n < size_ ? n : size_; }
   /// Append A→B with circulation gamma [m²/s]. Throws std::length_error beyond capacity.
   /// \param core_ratio2  (r_c / r_c,k)²: this segment's core r_c,k relative to the core r_c
   ///                     the sum is called with (1: the same core; < 1: a larger core,

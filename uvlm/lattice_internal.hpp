@@ -99,6 +99,19 @@ enum class WakeView { Wing, Wake };
 /// d.wake_lattice (lattice_segments.hpp).
 void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, WakeView view);
 
+/// Whether the free vortices' direct sum at their own nodes uses the lattice form of the
+/// wake (d.wake_lattice; double precision, no leading-edge sheet in the set).
+inline bool wake_sum_by_lattice(const VortexLatticeModel& m) {
+  return !m.single_precision_wake && m.leading_edge != LeadingEdge::Shed;
+}
+
+/// Add the velocity of d.wake_segments (the wake, and the leading-edge sheet when it
+/// sheds) at n points (x, y, z) [m] to (u, v, w) [m/s] by the direct sum in the wake's
+/// precision: single (the copies of update_single_precision), or double (the lattice form
+/// when wake_sum_by_lattice).
+void add_free_vortex_velocity(const VortexLatticeModel& m, const VortexLatticeData& d, const double* x,
+                              const double* y, const double* z, std::size_t n, double* u, double* v, double* w);
+
 /// Number of wake node rows (a prefix, oldest first) older than the frozen or far-wake
 /// age: they do not move with their induced velocity.
 int far_wake_node_rows(const VortexLatticeModel& m, const VortexLatticeData& d);
@@ -126,9 +139,13 @@ void induced_at_bound_midpoints(const VortexLatticeModel& m, VortexLatticeData& 
 
 /// Leading-edge sheet (LeadingEdge::Shed; leading_edge_sheet.hpp, leading_edge_shedding.cpp).
 /// Place the release row from the edge's path through the air in half a step (the free
-/// stream, the edge's motion and the trailing-edge wake's velocity); clears the sheet's segments.
+/// stream, the edge's motion and the trailing-edge wake's velocity); drops the sheet's
+/// segments from d.wake_segments and d.wake_edge_segments.
 void place_release_row(const VortexLatticeModel& m, VortexLatticeData& d);
-/// The sheet's segments (the leading-edge rings with d.le_sheet.current), cores as seen from `view`.
+/// The sheet's segments (the leading-edge rings with d.le_sheet.current), cores as seen
+/// from `view`, after the trailing-edge wake's (build_wake_segments before; those of an
+/// earlier call replaced): in d.wake_segments, and those that move with the wing within a
+/// step in d.wake_edge_segments when the wing sees them in single precision.
 void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, WakeView view);
 /// The part of the boundary condition's right-hand side from the segments on the first
 /// bound vortices that the leading-edge rings carry at their accepted circulation.
@@ -140,10 +157,11 @@ bool shed_leading_edge_vorticity(const VortexLatticeModel& m, VortexLatticeData&
 /// the lattice gives it (leading_edge_loads.cpp).
 Eigen::Vector3d shed_edge_force(const VortexLatticeModel& m, const VortexLatticeData& d, int j,
                                 const Eigen::Vector3d& suction);
-/// Velocity of the sheet's nodes (into d.le_sheet.nodes u/v/w) from the wake (by its tree
-/// when wake_by_tree), the far wake, the bound and trailing-edge segments and the sheet;
-/// zero for the rows older than the far-wake age, which move with the far-wake velocity.
-void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bool wake_by_tree);
+/// Velocity of the sheet's nodes (into d.le_sheet.nodes u/v/w) from the wake and the sheet
+/// (d.wake_segments, built for WakeView::Wake: by the tree when by_tree, else
+/// add_free_vortex_velocity), the far wake, the bound and trailing-edge segments; zero for
+/// the rows older than the far-wake age, which move with the far-wake velocity.
+void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bool by_tree);
 /// Convect the sheet's free rows over d.dt (far_velocity for rows older than the far-wake
 /// age) and, when a strip shed, release the release row with the leading-edge rings.
 void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Vector3d& far_velocity);

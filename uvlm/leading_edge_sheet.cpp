@@ -34,8 +34,6 @@ void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
   resolved.assign(static_cast<std::size_t>(ns), 1);
   edge_speed.setZero(ns);
   strip_chord.setZero(ns);
-  // Rings 0 … rings (the last: the leading-edge ring): spanwise rows 0 … rings, legs of each ring.
-  segments.reserve(node_rows * static_cast<std::size_t>(ns) + node_rows * n1);
   columns.setZero(np, ns);
   response.setZero(np, ns);
   border.setZero(ns, ns);
@@ -51,7 +49,9 @@ namespace detail {
 void place_release_row(const VortexLatticeModel& m, VortexLatticeData& d) {
   LeadingEdgeSheet& s = d.le_sheet;
   const int ns = m.spanwise;
-  s.segments.clear();  // the edge's velocity below: the trailing-edge wake's only
+  // The edge's velocity below: the trailing-edge wake's only.
+  d.wake_segments.truncate(d.trailing_wake_segments);
+  d.wake_edge_segments.truncate(d.trailing_wake_edge_segments);
   for (int j = 0; j <= ns; ++j) d.eval.set(j, d.nodes.col(m.node(0, j)));
   induced_at_eval_points(m, d, ns + 1, false);
   const std::size_t base = static_cast<std::size_t>(s.rows) * (ns + 1);
@@ -67,7 +67,14 @@ void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wak
   LeadingEdgeSheet& s = d.le_sheet;
   const int ns = m.spanwise, L = s.rows;
   const std::size_t n1 = static_cast<std::size_t>(ns) + 1;
-  s.segments.clear();
+  // After the trailing-edge wake's segments, in its precision. Seen from the wing in single
+  // precision, those at the kSheetEdgeRows node rows nearest the edge go to the
+  // double-precision set (the spanwise ones along them, the legs to them and the
+  // leading-edge ring's legs ending on the first bound vortex).
+  d.wake_segments.truncate(d.trailing_wake_segments);
+  d.wake_edge_segments.truncate(d.trailing_wake_edge_segments);
+  SegmentSet& fixed = d.wake_segments;
+  SegmentSet& near_edge = view == WakeView::Wing && m.single_precision_wake ? d.wake_edge_segments : d.wake_segments;
   // Ring r ≤ L (ring L: the leading-edge ring, to the first bound vortex = node row L+1).
   auto G = [&](int r, int j) {
     if (r < 0 || r > L || j < 0 || j >= ns) return 0.0;
@@ -84,20 +91,23 @@ void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wak
     if (a > m.near_wing_min_age) rc2 = std::max(rc2, floor2);
     return rc0_2 / rc2;
   };
-  auto push = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, double g, double a_age) {
-    if (g != 0.0) s.segments.push(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), g, ratio(g, a_age));
+  auto push = [&](SegmentSet& to, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double g, double a_age) {
+    if (g != 0.0) to.push(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), g, ratio(g, a_age));
   };
   // Spanwise, node rows 0 … L, direction j → j+1: rear of ring q−1 minus front of ring q.
   // (Row L+1, on the first bound vortex, is part of the bound segment there.)
+  const int edge_row = L + 1 - kSheetEdgeRows;  // the first of the node rows near the edge
   for (int q = 0; q <= L; ++q)
-    for (int j = 0; j < ns; ++j) push(node(q, j), node(q, j + 1), G(q - 1, j) - G(q, j), age(q));
+    for (int j = 0; j < ns; ++j)
+      push(q >= edge_row ? near_edge : fixed, node(q, j), node(q, j + 1), G(q - 1, j) - G(q, j), age(q));
   // Legs of ring r, column j, from node row r to r+1: root side of (r, j) minus tip side of (r, j−1).
   for (int r = 0; r <= L; ++r)
     for (int j = 0; j <= ns; ++j)
-      push(node(r, j), node(r + 1, j), G(r, j) - G(r, j - 1), 0.5 * (age(r) + age(r + 1)));
+      push(r >= edge_row - 1 ? near_edge : fixed, node(r, j), node(r + 1, j), G(r, j) - G(r, j - 1),
+           0.5 * (age(r) + age(r + 1)));
 }
 
-void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bool wake_by_tree) {
+void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bool by_tree) {
   LeadingEdgeSheet& s = d.le_sheet;
   PointSet& P = s.nodes;
   P.zero_velocity();
@@ -117,17 +127,17 @@ void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bo
   double *x = P.x.data() + first, *y = P.y.data() + first, *z = P.z.data() + first, *u = P.u.data() + first,
          *v = P.v.data() + first, *w = P.w.data() + first;
   add_far_wake_velocity(d, x, y, z, n, u, v, w);
-  if (wake_by_tree) d.wake_tree.add_induced_velocity(x, y, z, n, u, v, w);
+  // The wake and the sheet, one set (advance built it, and the tree over it when by_tree).
+  if (by_tree) d.wake_tree.add_induced_velocity(x, y, z, n, u, v, w);
   const VortexCore bound_seen_from_wake{m.core.model, std::max(m.core.radius, m.near_wing_core)};
-  const std::size_t segments = (wake_by_tree ? 0 : d.wake_segments.size()) + d.bound_segments.size() +
-                               d.trailing_edge_segments.size() + s.segments.size();
+  const std::size_t segments =
+      (by_tree ? 0 : d.wake_segments.size()) + d.bound_segments.size() + d.trailing_edge_segments.size();
   for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
     const double *xi = x + i0, *yi = y + i0, *zi = z + i0;
     double *ui = u + i0, *vi = v + i0, *wi = w + i0;
-    if (!wake_by_tree) add_induced_velocity(d.wake_segments, xi, yi, zi, c, ui, vi, wi, m.core);
+    if (!by_tree) add_free_vortex_velocity(m, d, xi, yi, zi, c, ui, vi, wi);
     add_induced_velocity(d.bound_segments, xi, yi, zi, c, ui, vi, wi, bound_seen_from_wake);
     add_induced_velocity(d.trailing_edge_segments, xi, yi, zi, c, ui, vi, wi, m.core);
-    add_induced_velocity(s.segments, xi, yi, zi, c, ui, vi, wi, m.core);
   });
 }
 

@@ -46,7 +46,13 @@
 /// circulation ran away; docs/uvlm.md, "Leading-edge vortex shedding: measurements").
 /// The sheet's segments are free vortices: no force acts on them. They induce velocity on
 /// the wing (the boundary condition and the Bernoulli loads), on the trailing-edge wake
-/// and on themselves.
+/// and on themselves, summed with the trailing-edge wake's segments as one set
+/// (VortexLatticeData::wake_segments): in the precision asked for the wake, and by the
+/// tree code when the wake is. Seen from the wing in single precision, the segments near
+/// the edge stay in double (VortexLatticeData::wake_edge_segments, as the wake's newest
+/// row; docs/uvlm.md, "Precision of the wake's sums"): those at the release row, which
+/// moves with the wing within a step, and at the newest free row (kSheetEdgeRows), and the
+/// leading-edge ring's legs to the first bound vortex.
 
 #include "uvlm/biot_savart.hpp"
 
@@ -69,6 +75,23 @@ inline constexpr double kLespLatticeFactor = 1.13;
 /// (docs/uvlm.md, "Leading-edge vortex shedding: measurements"), not on a result.
 inline constexpr double kResolvedStripChordRatio = 0.5;
 
+/// Most segments the sheet of `rings` rings on ns strips holds (its rings and the
+/// leading-edge ring: node rows 0 … rings spanwise, the legs of rings 0 … rings).
+inline std::size_t sheet_segment_capacity(int ns, int rings) {
+  return (static_cast<std::size_t>(rings) + 1) * (2 * static_cast<std::size_t>(ns) + 1);
+}
+/// The sheet's node rows nearest the leading edge whose segments the wing sees in double
+/// precision when it sees the rest of the sheet (and the wake) in single: the release row,
+/// which moves with the wing within a step, and the newest free row, the release row of the
+/// last step (with the release row's alone, a delta wing's lift oscillated from step to
+/// step: docs/uvlm.md, "Precision of the wake's sums").
+inline constexpr int kSheetEdgeRows = 2;
+/// Most segments at those rows: the spanwise ones along them, the legs to them from the
+/// row before and the leading-edge ring's legs to the first bound vortex.
+inline std::size_t sheet_edge_segment_capacity(int ns) {
+  return kSheetEdgeRows * static_cast<std::size_t>(ns) + (kSheetEdgeRows + 1) * (static_cast<std::size_t>(ns) + 1);
+}
+
 struct LeadingEdgeSheet {
   int rows = 0;                      ///< stored rings; node rows 0 … rows (row `rows` = release row)
   int capacity = 0;                  ///< rings the storage holds
@@ -86,7 +109,6 @@ struct LeadingEdgeSheet {
   std::vector<char> resolved;        ///< per strip: the criterion applies (kResolvedStripChordRatio)
   Eigen::VectorXd edge_speed;        ///< U of each strip's LESP in the last solve [m/s]
   Eigen::VectorXd strip_chord;       ///< c of each strip's LESP in the last solve [m]
-  SegmentSet segments;               ///< the sheet's segments (without the one on the first bound vortex)
   // Scratch of the bordered solve (allocated once).
   Eigen::MatrixXd columns;           ///< np × ns: normal velocity of each unit leading-edge ring
   Eigen::MatrixXd response;          ///< np × ns: A⁻¹ columns

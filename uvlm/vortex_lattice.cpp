@@ -77,8 +77,12 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   const std::size_t bound_n = static_cast<std::size_t>((nc + 1) * ns + nc * (ns + 1));
   bound_segments.reserve(bound_n);
   trailing_edge_segments.reserve(ns);
-  wake_segments.reserve((rows + 1) * ns + rows * (ns + 1));
-  wake_edge_segments.reserve(static_cast<std::size_t>(2 * ns + 1));
+  // With a leading edge that sheds, the sheet's segments (of up to wake_capacity + 1
+  // rings, le_sheet.allocate below) join the wake's.
+  const bool sheds = m.leading_edge == LeadingEdge::Shed;
+  const int sheet_rings = wake_capacity + 1;
+  wake_segments.reserve((rows + 1) * ns + rows * (ns + 1) + (sheds ? sheet_segment_capacity(ns, sheet_rings) : 0));
+  wake_edge_segments.reserve(static_cast<std::size_t>(2 * ns + 1) + (sheds ? sheet_edge_segment_capacity(ns) : 0));
   wake_lattice.reserve(wake_nodes_n, static_cast<std::size_t>(ns) + 1);
   if (m.far_wake_by_tree()) {
     far_wake_segments.reserve(wake_segments.capacity());
@@ -90,7 +94,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   if (m.iterative_min_panels > 0 && np >= m.iterative_min_panels) gmres.reserve(np, m.iterative_restart);
   eval.reserve(std::max<std::size_t>(bound_n, np));
 
-  if (m.leading_edge == LeadingEdge::Shed) le_sheet.allocate(ns, np, wake_capacity + 1);
+  if (sheds) le_sheet.allocate(ns, np, sheet_rings);
 
   loads.force.setZero(3, np);
   loads.point.setZero(3, np);
@@ -203,14 +207,14 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
   d.eval.size = n;
   d.eval.zero_velocity();
   PointSet& e = d.eval;
-  // Wake, far wake (tree), then bound and trailing-edge segments: at each point the sums
+  // Wake (and leading-edge sheet: wake_segments holds both), far wake (tree), then bound
+  // and trailing-edge segments: at each point the sums
   // in this order, the direct ones in one parallel region unless the far wake's tree
   // comes between them (lattice_internal.hpp).
   const bool far = d.far_tree_rows > 0 && d.far_wake_segments.size() > 0;
   const bool bound_with_wake = include_bound && !far;
-  const SegmentSet& sheet = d.le_sheet.segments;  // empty unless a leading edge sheds
   auto direct = [&](bool wake, bool bound) {
-    const std::size_t segments = (wake ? d.wake_segments.size() + d.wake_edge_segments.size() + sheet.size() : 0) +
+    const std::size_t segments = (wake ? d.wake_segments.size() + d.wake_edge_segments.size() : 0) +
                                  (bound ? d.bound_segments.size() + d.trailing_edge_segments.size() : 0);
     if (segments == 0) return;
     for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
@@ -222,7 +226,6 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
         add_induced_velocity(d.wake_segments, x, y, z, c, u, v, w, m.core);
       if (wake && d.wake_edge_segments.size() > 0)
         add_induced_velocity(d.wake_edge_segments, x, y, z, c, u, v, w, m.core);
-      if (wake && sheet.size() > 0) add_induced_velocity(sheet, x, y, z, c, u, v, w, m.core);
       if (bound) {
         add_induced_velocity(d.bound_segments, x, y, z, c, u, v, w, m.bound_core());
         add_induced_velocity(d.trailing_edge_segments, x, y, z, c, u, v, w, m.core);

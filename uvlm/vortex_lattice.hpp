@@ -95,7 +95,8 @@ struct VortexLatticeModel {
   /// free-wake convection, the cost of a run) and its velocity at the wing's collocation
   /// and load points; about twice as fast, relative error ~1e-6 in these velocities (the
   /// loads' error: docs/uvlm.md, "Performance"). The bound segments' sums, the circulations and
-  /// the loads are computed in double precision; the tree code is double precision.
+  /// the loads are computed in double precision; the tree code is double precision. The
+  /// leading-edge sheet (LeadingEdge::Shed) is summed with the wake, in the same precision.
   bool single_precision_wake = true;
   int max_wake_rows = 0;   ///< keep at most this many wake rows (oldest dropped); 0 = keep all
   int wake_capacity = 0;   ///< wake rows the workspace holds (the run's step count, or max_wake_rows)
@@ -134,7 +135,9 @@ struct VortexLatticeModel {
   bool far_wake_by_tree() const { return far_wake_age > 0.0 && wake_sum == WakeSum::Tree; }
   /// The wake's self-induced velocity: direct sum or tree code (in double precision, to
   /// a relative error of tree_tolerance; the direct sum is used while the wake has fewer
-  /// than tree_min_segments segments, where the tree does not pay).
+  /// than tree_min_segments segments, where the tree does not pay). The leading-edge
+  /// sheet's segments are part of the same set: the tree holds both, and sums both at the
+  /// wake's and at the sheet's nodes.
   WakeSum wake_sum = WakeSum::Direct;
   double tree_tolerance = 1e-4;
   std::size_t tree_min_segments = 2000;
@@ -277,11 +280,18 @@ struct VortexLatticeData {
   // Segment sets (unique segments with net circulation) and evaluation points.
   SegmentSet bound_segments;          ///< bound segments except the trailing edge
   SegmentSet trailing_edge_segments;  ///< the last rings' trailing segments (wake core)
+  /// The free vortices' segments summed as one set (by the direct sum in the wake's
+  /// precision, or the tree code): the trailing-edge wake's (build_wake_segments), then,
+  /// with a leading edge that sheds, the leading-edge sheet's (build_sheet_segments).
   SegmentSet wake_segments;
-  /// The wake's segments at its newest node row when the wing's points see the wake in
-  /// single precision (build_wake_segments, WakeView::Wing): summed in double, as they move
-  /// with the trailing edge within a step; empty otherwise (all in wake_segments).
+  /// The segments that move with the wing within a step, when the wing's points see the
+  /// free vortices in single precision (WakeView::Wing): summed in double. The wake's at
+  /// its newest node row (it follows the trailing edge), then the sheet's at its release
+  /// row and its leading-edge ring; empty otherwise (all in wake_segments).
   SegmentSet wake_edge_segments;
+  /// How many of wake_segments and wake_edge_segments are the trailing-edge wake's (the
+  /// sheet's follow them).
+  std::size_t trailing_wake_segments = 0, trailing_wake_edge_segments = 0;
   /// The same segments in lattice form (lattice_segments.hpp), for the wake's own direct
   /// sum in double precision (built with WakeView::Wake and !single_precision_wake only).
   LatticeSegments wake_lattice;

@@ -60,6 +60,8 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
       }
   };
   d.wake_segments.clear();
+  d.wake_edge_segments.clear();
+  d.trailing_wake_segments = d.trailing_wake_edge_segments = 0;
   d.wake_lattice.assign_grid(0, n1);
   if (W == 0) return;
   // Convected far wake by the tree: the far wake moves as a whole (far_wake_velocity), so
@@ -92,19 +94,21 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
   // step's sub-iterations) go to wake_edge_segments, summed in double: rounded to single
   // precision, their ends would move in steps of 4·10⁻⁹ m beside the last panels'
   // collocation points (docs/uvlm.md, "Precision of the wake's sums").
-  d.wake_edge_segments.clear();
   if (view == WakeView::Wing && m.single_precision_wake && T <= W) {
     push_rings(d.wake_segments, T, W, std::max(T - 1, 0), W - 1, ratio);
     push_rings(d.wake_edge_segments, W, W + 1, W - 1, W, ratio);
   } else {
     push_rings(d.wake_segments, T, W + 1, std::max(T - 1, 0), W, ratio);
   }
+  d.trailing_wake_segments = d.wake_segments.size();
+  d.trailing_wake_edge_segments = d.wake_edge_segments.size();
   // The same segments as a lattice of node rows q0 … W (lattice_segments.hpp), which the
   // wake's own direct sum in double precision uses (advance; in single precision the
-  // segment kernel is faster, docs/performance.md): node (q, j) is lattice node
+  // segment kernel is faster, docs/performance.md; with a leading-edge sheet, whose
+  // segments join the set, the segment kernel sums both at once): node (q, j) is lattice node
   // (q − q0) n1 + j, a ring row's spanwise segment j → j+1 that node's spanwise segment,
   // the streamwise one from row r+1 to row r node (r − q0, j)'s streamwise segment.
-  if (view != WakeView::Wake || m.single_precision_wake) return;
+  if (view != WakeView::Wake || !wake_sum_by_lattice(m)) return;
   const int q0 = std::max(T - 1, 0);
   LatticeSegments& L = d.wake_lattice;
   L.assign_grid(static_cast<std::size_t>(W + 1 - q0), static_cast<std::size_t>(n1));
@@ -121,6 +125,17 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
       L.set_streamwise(static_cast<std::size_t>(r - q0) * n1 + j, g, ratio(g, 0.5 * (age[r] + age[r + 1])));
     }
   L.finish(false);
+}
+
+void add_free_vortex_velocity(const VortexLatticeModel& m, const VortexLatticeData& d, const double* x,
+                              const double* y, const double* z, std::size_t n, double* u, double* v, double* w) {
+  if (d.wake_segments.size() == 0) return;
+  if (m.single_precision_wake)
+    add_induced_velocity_single(d.wake_segments, x, y, z, n, u, v, w, m.core);
+  else if (wake_sum_by_lattice(m))  // the same segments as a lattice (lattice_segments.hpp)
+    add_induced_velocity(d.wake_lattice, x, y, z, n, u, v, w, m.core);
+  else
+    add_induced_velocity(d.wake_segments, x, y, z, n, u, v, w, m.core);
 }
 
 void add_far_wake_velocity(VortexLatticeData& d, const double* x, const double* y, const double* z,
@@ -207,15 +222,17 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
   // Velocity of every free wake node.
   auto& P = d.wake_nodes;
   P.zero_velocity();
-  bool wake_by_tree = false;  // the tree holds the whole wake (for the leading-edge sheet's nodes)
+  bool by_tree = false;  // the tree holds the wake and the sheet (for the sheet's nodes too)
   if (m.wake_model == WakeModel::Free && first < P.size) {
     const std::size_t n = P.size - first;
     double *x = P.x.data() + first, *y = P.y.data() + first, *z = P.z.data() + first;
     double *u = P.u.data() + first, *v = P.v.data() + first, *w = P.w.data() + first;
     detail::build_wake_segments(m, d, detail::WakeView::Wake);
+    // The leading-edge sheet's segments (LeadingEdge::Shed) join the wake's: one set of
+    // free vortices, summed at the wake's and at the sheet's nodes alike.
+    if (m.leading_edge == LeadingEdge::Shed) detail::build_sheet_segments(m, d, detail::WakeView::Wake);
     detail::add_far_wake_velocity(d, x, y, z, n, u, v, w);  // the far wake by the tree, if so
-    const bool by_tree = m.wake_sum == WakeSum::Tree && !m.far_wake_by_tree() &&
-                         d.wake_segments.size() >= m.tree_min_segments;
+    by_tree = m.wake_sum == WakeSum::Tree && !m.far_wake_by_tree() && d.wake_segments.size() >= m.tree_min_segments;
     if (by_tree) {
       d.wake_tree.build(d.wake_segments, m.core, tree_parameters(m.tree_tolerance));
       d.wake_tree.add_induced_velocity(x, y, z, n, u, v, w);
@@ -225,28 +242,18 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
     // Near-wing treatment, the other way round: the wake sees the bound vortices through
     // the near-wing core, so a wake node passing close to the lattice is not flung away.
     const VortexCore bound_seen_from_wake{m.core.model, std::max(m.core.radius, m.near_wing_core)};
-    // The leading-edge sheet (LeadingEdge::Shed), seen from the wake: empty otherwise.
-    if (m.leading_edge == LeadingEdge::Shed) detail::build_sheet_segments(m, d, detail::WakeView::Wake);
-    const SegmentSet& sheet = d.le_sheet.segments;
     const std::size_t segments = (by_tree ? 0 : d.wake_segments.size()) + d.bound_segments.size() +
-                                 d.trailing_edge_segments.size() + sheet.size();
+                                 d.trailing_edge_segments.size();
     // The direct sums at the wake nodes, one parallel region (lattice_internal.hpp).
     detail::for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
       const double *xi = x + i0, *yi = y + i0, *zi = z + i0;
       double *ui = u + i0, *vi = v + i0, *wi = w + i0;
-      if (!by_tree && d.wake_segments.size() > 0) {
-        if (m.single_precision_wake)
-          add_induced_velocity_single(d.wake_segments, xi, yi, zi, c, ui, vi, wi, m.core);
-        else  // the same segments as a lattice (lattice_segments.hpp)
-          add_induced_velocity(d.wake_lattice, xi, yi, zi, c, ui, vi, wi, m.core);
-      }
+      if (!by_tree) detail::add_free_vortex_velocity(m, d, xi, yi, zi, c, ui, vi, wi);
       add_induced_velocity(d.bound_segments, xi, yi, zi, c, ui, vi, wi, bound_seen_from_wake);
       add_induced_velocity(d.trailing_edge_segments, xi, yi, zi, c, ui, vi, wi, m.core);
-      if (sheet.size() > 0) add_induced_velocity(sheet, xi, yi, zi, c, ui, vi, wi, m.core);
     });
-    wake_by_tree = by_tree;
   }
-  if (m.leading_edge == LeadingEdge::Shed) detail::sheet_node_velocities(m, d, wake_by_tree);
+  if (m.leading_edge == LeadingEdge::Shed) detail::sheet_node_velocities(m, d, by_tree);
   const double dt = d.dt;
   const Eigen::Vector3d& V = d.free_stream;
   if (m.far_wake_age > 0.0 && first_free > 0) {
