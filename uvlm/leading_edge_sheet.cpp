@@ -70,7 +70,9 @@ void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wak
   // After the trailing-edge wake's segments, in its precision. Seen from the wing in single
   // precision, those at the kSheetEdgeRows node rows nearest the edge go to the
   // double-precision set (the spanwise ones along them, the legs to them and the
-  // leading-edge ring's legs ending on the first bound vortex).
+  // leading-edge ring's legs ending on the first bound vortex). The rows older than the
+  // far-wake age stay here too, not in the far wake's tree (model.far_wake_by_tree): the
+  // release row's placement sums that tree but none of the sheet (place_release_row).
   d.wake_segments.truncate(d.trailing_wake_segments);
   d.wake_edge_segments.truncate(d.trailing_wake_edge_segments);
   SegmentSet& fixed = d.wake_segments;

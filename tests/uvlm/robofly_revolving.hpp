@@ -26,9 +26,12 @@ struct Coefficients {
 /// is called after every solve with (step, data, lift coefficient, drag coefficient), the
 /// coefficients on the speed at r2 (the radius of gyration of the area); it returns false
 /// to stop the run. `viscosity` > 0 [m²/s]: the cores grow with age (laminar Lamb–Oseen,
-/// core_growth.hpp with a1 = 0); 0: fixed cores.
-template <class Each>
-void revolve_each(double alpha_deg, LeadingEdge leading_edge, int steps, Each each, double viscosity = 0.0) {
+/// core_growth.hpp with a1 = 0); 0: fixed cores. `adjust` may change the model's numerics
+/// last (its sums: precision, tree code, far wake).
+inline void keep_model(VortexLatticeModel&) {}
+template <class Each, class Adjust = void (*)(VortexLatticeModel&)>
+void revolve_each(double alpha_deg, LeadingEdge leading_edge, int steps, Each each, double viscosity = 0.0,
+                  Adjust adjust = keep_model) {
   const double R = 0.25, omega = 2.0 * M_PI, rho = 1.0;
   std::ifstream in(std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/robofly_dickinson_outline.csv");
   std::vector<Eigen::Vector2d> outline;
@@ -56,6 +59,7 @@ void revolve_each(double alpha_deg, LeadingEdge leading_edge, int steps, Each ea
     m.core_growth.kinematic_viscosity = viscosity;
     m.core_growth.squire_a1 = 0.0;
   }
+  adjust(m);
   VortexLatticeData d(m);
   Eigen::Matrix3Xd X(3, g.nodes.cols()), V(3, g.nodes.cols());
   const Eigen::Vector3d w(0.0, 0.0, -omega);  // the leading edge (+x_W) leads
