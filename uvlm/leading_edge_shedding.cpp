@@ -84,30 +84,37 @@ bool update_lesp(const VortexLatticeModel& m, VortexLatticeData& d, Eigen::Vecto
 /// release row R_(j+1) → R_j, legs R → first bound vortex (the wake's core, as the sheet's
 /// segments), and the segment on the first bound vortex (the bound core, as the bound segment).
 void unit_ring_column(const VortexLatticeModel& m, VortexLatticeData& d, int j) {
-  const LeadingEdgeSheet& s = d.le_sheet;
+  LeadingEdgeSheet& s = d.le_sheet;
   const std::size_t base = static_cast<std::size_t>(s.rows) * (m.spanwise + 1);
   const Eigen::Vector3d r0 = s.nodes.position(base + j), r1 = s.nodes.position(base + j + 1);
   const Eigen::Vector3d a0 = d.ring_nodes.col(m.node(0, j)), a1 = d.ring_nodes.col(m.node(0, j + 1));
   const VortexCore bound = m.bound_core();
+  SegmentSet& ring = s.unit_ring;  // each segment summed alone, as a set of one
+  ring.clear();
+  ring.push(r1, r0, 1.0);
+  ring.push(r0, a0, 1.0);
+  ring.push(a1, r1, 1.0);
+  ring.push(a0, a1, 1.0);
   for (int k = 0; k < m.panels(); ++k) {
     const Eigen::Vector3d p = d.collocation.col(k);
-    const Eigen::Vector3d v = segment_velocity(r1, r0, 1.0, p, m.core) + segment_velocity(r0, a0, 1.0, p, m.core) +
-                              segment_velocity(a1, r1, 1.0, p, m.core) + segment_velocity(a0, a1, 1.0, p, bound);
-    d.le_sheet.columns(k, j) = v.dot(d.normal.col(k));
+    const Eigen::Vector3d v = segment_velocity(ring, 0, p, m.core) + segment_velocity(ring, 1, p, m.core) +
+                              segment_velocity(ring, 2, p, m.core) + segment_velocity(ring, 3, p, bound);
+    s.columns(k, j) = v.dot(d.normal.col(k));
   }
 }
 
 }  // namespace
 
 void add_leading_edge_ring_to_rhs(const VortexLatticeModel& m, VortexLatticeData& d) {
-  const LeadingEdgeSheet& s = d.le_sheet;
+  LeadingEdgeSheet& s = d.le_sheet;
   const VortexCore bound = m.bound_core();
   for (int j = 0; j < m.spanwise; ++j) {
     const double g = s.accepted(j);
     if (g == 0.0) continue;
-    const Eigen::Vector3d a0 = d.ring_nodes.col(m.node(0, j)), a1 = d.ring_nodes.col(m.node(0, j + 1));
+    s.unit_ring.clear();
+    s.unit_ring.push(d.ring_nodes.col(m.node(0, j)), d.ring_nodes.col(m.node(0, j + 1)), g);
     for (int k = 0; k < m.panels(); ++k)
-      d.rhs(k) -= segment_velocity(a0, a1, g, d.collocation.col(k), bound).dot(d.normal.col(k));
+      d.rhs(k) -= segment_velocity(s.unit_ring, 0, d.collocation.col(k), bound).dot(d.normal.col(k));
   }
 }
 

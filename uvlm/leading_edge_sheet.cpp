@@ -42,6 +42,7 @@ void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
   target.setZero(ns);
   gamma0.setZero(np);
   border_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(ns);
+  unit_ring.reserve(4);
 }
 
 namespace detail {
