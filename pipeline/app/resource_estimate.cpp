@@ -78,7 +78,13 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     e.wake_panels = static_cast<std::int64_t>((rows - 1.0) * ns);
     const double wake_nodes = (rows + 1.0) * (ns + 1.0);
     const double wake_segments = (rows + 1.0) * ns + rows * (ns + 1.0);
-    memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
+    // A shed leading edge (numerics.leading_edge = "shed") adds its vortex sheet: up to a
+    // node row a step (it gains one at nearly every step of a flapping wing: 99 of the
+    // first 100 of the rigid hover, docs/performance.md), as the wake, and its segments are
+    // summed with the wake's, in the same precision (uvlm/leading_edge_sheet.hpp): counted
+    // as a second wake of the same size.
+    const double free_sets = n.leading_edge == uvlm::LeadingEdge::Shed ? 2.0 : 1.0;
+    memory += free_sets * (wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8);
     e.lattice_bytes = 2.0 * panels * panels * 8;  // influence matrix and its LU
     memory += e.lattice_bytes;
     // Interactions: at step k the wake has r = min(k, max_rows) rows; the wake's nodes move
@@ -94,8 +100,8 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     const double solves = bodies > 1 || fem_dofs > 0 ? iterations : 1.0;
     const double bound_segments = (nc + 1) * ns + nc * (ns + 1);
     auto step_cost = [&](double r) {
-      const double segs = (r + 1) * ns + r * (ns + 1);
-      const double moving_nodes = n.free_wake ? (std::min(r, free_rows) + 1) * (ns + 1) : 0.0;
+      const double segs = free_sets * ((r + 1) * ns + r * (ns + 1));
+      const double moving_nodes = n.free_wake ? free_sets * (std::min(r, free_rows) + 1) * (ns + 1) : 0.0;
       return (moving_nodes + solves * panels) * (segs + bound_segments);
     };
     // Sum over steps, in closed form per part: the wake growing with its nodes all moving
