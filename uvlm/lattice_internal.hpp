@@ -95,8 +95,8 @@ enum class WakeView { Wing, Wake };
 /// Unique wake segments with their net circulation and core (row wake_rows must sit on
 /// the trailing edge), as seen from `view`. With model.far_wake_by_tree() the far wake's
 /// segments go to d.far_wake_segments and the tree is built over them. For WakeView::Wake
-/// in double precision (!single_precision_wake) the direct-sum segments are also put in
-/// d.wake_lattice (lattice_segments.hpp).
+/// in double precision without a leading-edge sheet (wake_sum_by_lattice) the direct-sum
+/// segments are also put in d.wake_lattice (lattice_segments.hpp).
 void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, WakeView view);
 
 /// Whether the free vortices' direct sum at their own nodes uses the lattice form of the

@@ -48,7 +48,8 @@
 /// the wing (the boundary condition and the Bernoulli loads), on the trailing-edge wake
 /// and on themselves, summed with the trailing-edge wake's segments as one set
 /// (VortexLatticeData::wake_segments): in the precision asked for the wake, and by the
-/// tree code when the wake is. Seen from the wing in single precision, the segments near
+/// tree code when the wake is (not by the convected far wake's tree: the release row's
+/// placement sums it, but no part of the sheet). Seen from the wing in single precision, the segments near
 /// the edge stay in double (VortexLatticeData::wake_edge_segments, as the wake's newest
 /// row; docs/uvlm.md, "Precision of the wake's sums"): those at the release row, which
 /// moves with the wing within a step, and at the newest free row (kSheetEdgeRows), and the

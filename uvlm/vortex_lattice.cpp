@@ -208,9 +208,8 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
   d.eval.zero_velocity();
   PointSet& e = d.eval;
   // Wake (and leading-edge sheet: wake_segments holds both), far wake (tree), then bound
-  // and trailing-edge segments: at each point the sums
-  // in this order, the direct ones in one parallel region unless the far wake's tree
-  // comes between them (lattice_internal.hpp).
+  // and trailing-edge segments: at each point the sums in this order, the direct ones in
+  // one parallel region unless the far wake's tree comes between them (lattice_internal.hpp).
   const bool far = d.far_tree_rows > 0 && d.far_wake_segments.size() > 0;
   const bool bound_with_wake = include_bound && !far;
   auto direct = [&](bool wake, bool bound) {

@@ -286,14 +286,16 @@ struct VortexLatticeData {
   SegmentSet wake_segments;
   /// The segments that move with the wing within a step, when the wing's points see the
   /// free vortices in single precision (WakeView::Wing): summed in double. The wake's at
-  /// its newest node row (it follows the trailing edge), then the sheet's at its release
-  /// row and its leading-edge ring; empty otherwise (all in wake_segments).
+  /// its newest node row (it follows the trailing edge), then the sheet's at its
+  /// kSheetEdgeRows node rows nearest the edge (the release row, placed at every solve, and
+  /// the last step's) and its leading-edge ring's legs; empty otherwise (all in wake_segments).
   SegmentSet wake_edge_segments;
   /// How many of wake_segments and wake_edge_segments are the trailing-edge wake's (the
   /// sheet's follow them).
   std::size_t trailing_wake_segments = 0, trailing_wake_edge_segments = 0;
   /// The same segments in lattice form (lattice_segments.hpp), for the wake's own direct
-  /// sum in double precision (built with WakeView::Wake and !single_precision_wake only).
+  /// sum in double precision (built with WakeView::Wake and !single_precision_wake only,
+  /// without a leading-edge sheet: detail::wake_sum_by_lattice).
   LatticeSegments wake_lattice;
   /// The convected far wake's segments when it is summed by the tree code
   /// (far_wake_age > 0 and wake_sum = Tree); empty otherwise (all in wake_segments).
