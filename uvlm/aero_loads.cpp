@@ -59,7 +59,10 @@ Eigen::Vector3d leading_edge_force(const VortexLatticeModel& m, VortexLatticeDat
 }
 
 void finish_loads(VortexLatticeData& d) {
-  d.loads.total_force = d.loads.force.rowwise().sum();
+  // Summed panel by panel in index order: the same bits whatever the build's vectorisation
+  // of a reduction (Eigen's rowwise sum may split it by the data's alignment).
+  d.loads.total_force.setZero();
+  for (Eigen::Index k = 0; k < d.loads.force.cols(); ++k) d.loads.total_force += d.loads.force.col(k);
   d.loads.power = 0.0;
   for (Eigen::Index k = 0; k < d.loads.force.cols(); ++k) {
     d.loads.pressure_jump(k) = d.loads.force.col(k).dot(d.normal.col(k)) / d.area(k);

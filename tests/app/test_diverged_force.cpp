@@ -93,15 +93,19 @@ TEST(DivergedForce, TheRigidHoverWithAShedLeadingEdgeStopsWhereItsLiftRunsAway) 
   EXPECT_NE(outcome.err.find("the lattice has diverged"), std::string::npos) << outcome.err;
   EXPECT_NE(read_text(dir / "out" / "summary.json").find("\"status\": \"failed\""), std::string::npos);
   // history.csv holds every step up to the failing one (the step the message names), which
-  // is in the third wingbeat; its force is a runaway: over 10 times the largest of the first
-  // wingbeat (the hover's own forces, 32 mN at most; the sheet's lift already grows through
-  // the second), and above every step before it.
+  // is after the first wingbeat; its force is a runaway: over 10 times the largest of the
+  // first wingbeat (the hover's own forces, 32 mN at most; the sheet's lift already grows
+  // through the second), and above every step before it. Which step is a matter of
+  // round-off once the sheet comes apart: 202 with the sheet summed in double precision,
+  // 192 in the wake's single precision (28 Nov, night); the wingbeat frequency changed by
+  // 4e-12…4e-10 of itself gave 166–298 (every build gives the same bits on every x86-64
+  // CPU, so the test is not flaky, but the step is no physical quantity to assert).
   const flapsim::test::HistoryCsv h = flapsim::test::read_history_csv(dir / "out" / "history.csv");
   const std::size_t named = outcome.err.find("numerical failure: step ");
   ASSERT_NE(named, std::string::npos) << outcome.err;
   const std::size_t failed = std::stoul(outcome.err.substr(named + std::string("numerical failure: step ").size()));
   EXPECT_EQ(h.rows.size(), failed);
-  ASSERT_GT(h.rows.size(), 200u);
+  ASSERT_GT(h.rows.size(), 100u);
   EXPECT_LT(h.rows.size(), 300u);
   const auto fx = h.column("Fx_N"), fy = h.column("Fy_N"), fz = h.column("Fz_N");
   auto force = [&](std::size_t k) { return std::sqrt(fx[k] * fx[k] + fy[k] * fy[k] + fz[k] * fz[k]); };
