@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <random>
 
+#include "tilted_plate.hpp"
 #include "uvlm/added_mass.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "uvlm/vortex_lattice.hpp"
@@ -14,14 +15,29 @@ namespace {
 
 using namespace flapsim;
 
-// A rectangular plate, chord 10 mm, span 40 mm, 4 × 8 panels, tilted by 0.2 rad about the
-// span axis so that its normals are not a coordinate axis.
-Eigen::Matrix3Xd tilted_plate(const uvlm::VortexLatticeModel& m) {
-  uvlm::PlanformGridOptions o;
-  o.chordwise = m.chordwise;
-  o.spanwise = m.spanwise;
-  const uvlm::PlanformGrid g = uvlm::make_rectangular_grid(0.010, 0.040, o);
-  return Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()).toRotationMatrix() * g.nodes;
+// The plate of tilted_plate.hpp tilted by 0.2 rad, so that its normals are not a coordinate axis.
+Eigen::Matrix3Xd tilted_plate(const uvlm::VortexLatticeModel& m) { return test::tilted_plate(m, 0.2); }
+
+// A 4 × 8 plate model with the given leading edge (Bernoulli loads).
+uvlm::VortexLatticeModel plate_model(uvlm::LeadingEdge edge) {
+  uvlm::VortexLatticeModel m;
+  m.chordwise = 4;
+  m.spanwise = 8;
+  m.wake_capacity = 5;
+  m.leading_edge = edge;
+  return m;
+}
+
+// A free stream of 5 m/s with steps of 1 ms (U Δt = half a chord), air of 1.225 kg/m³.
+const Eigen::Vector3d kPlateStream(5.0, 0.0, 0.0);
+constexpr double kPlateStep = 1e-3, kPlateRho = 1.225;
+
+// Three accepted steps of the plate at rest in that stream (Γ ≠ 0, BDF2 rates).
+void fly_three_steps(const uvlm::VortexLatticeModel& m, uvlm::VortexLatticeData& d, const Eigen::Matrix3Xd& nodes) {
+  for (int n = 0; n < 3; ++n) {
+    uvlm::solve(m, d, nodes, Eigen::Matrix3Xd::Zero(3, m.nodes()), kPlateStream, kPlateStep, kPlateRho);
+    uvlm::advance(m, d);
+  }
 }
 
 // A random velocity pattern of the lattice's nodes [m/s], components in [−1, 1].
@@ -93,22 +109,13 @@ TEST(AddedMass, TheQuasiSteadyTermMakesTheResponseTheLoadsDerivativeInAFreeStrea
   // leaves out does not act on a flat plate (the bound vortices' velocity at its panels is
   // normal to them, where ∇Γ has no part): measured 8.5e-11 with the pressure's
   // quasi-steady term, bound 1e-6; 0.73 with ∂Γ/∂t alone (bound: more than 0.1).
-  uvlm::VortexLatticeModel m;
-  m.chordwise = 4;
-  m.spanwise = 8;
-  m.wake_capacity = 5;
-  m.leading_edge = uvlm::LeadingEdge::None;
+  const uvlm::VortexLatticeModel m = plate_model(uvlm::LeadingEdge::None);
   const Eigen::Matrix3Xd nodes = tilted_plate(m);
-  const Eigen::Matrix3Xd rest = Eigen::Matrix3Xd::Zero(3, m.nodes());
-  const Eigen::Vector3d stream(5.0, 0.0, 0.0);
-  const double dt = 1e-3, rho = 1.225;
   uvlm::VortexLatticeData d(m);
-  for (int n = 0; n < 3; ++n) {
-    uvlm::solve(m, d, nodes, rest, stream, dt, rho);
-    uvlm::advance(m, d);
-  }
+  fly_three_steps(m, d, nodes);
   const Eigen::Matrix3Xd dv = random_node_velocities(m, 5);
-  const Eigen::Matrix3Xd difference = force_difference(m, d, nodes, dv, stream, dt, rho, 1e-5);
+  const Eigen::Matrix3Xd difference =
+      force_difference(m, d, nodes, dv, kPlateStream, kPlateStep, kPlateRho, 1e-5);
   uvlm::AddedMassScratch scratch(m);
   const auto error = [&](uvlm::AddedMassTerms terms) {
     Eigen::Matrix3Xd response;
@@ -130,22 +137,13 @@ TEST(AddedMass, WithTheLeadingEdgeForceTheResponseIsTheLoadsDerivativeInAFreeStr
   // edge's part it is off by the suction's change (measured 0.27 and 0.26: bound more than
   // 0.01).
   for (const uvlm::LeadingEdge edge : {uvlm::LeadingEdge::Attached, uvlm::LeadingEdge::Separated}) {
-    uvlm::VortexLatticeModel m;
-    m.chordwise = 4;
-    m.spanwise = 8;
-    m.wake_capacity = 5;
-    m.leading_edge = edge;
+    const uvlm::VortexLatticeModel m = plate_model(edge);
     const Eigen::Matrix3Xd nodes = tilted_plate(m);
-    const Eigen::Matrix3Xd rest = Eigen::Matrix3Xd::Zero(3, m.nodes());
-    const Eigen::Vector3d stream(5.0, 0.0, 0.0);
-    const double dt = 1e-3, rho = 1.225;
     uvlm::VortexLatticeData d(m);
-    for (int n = 0; n < 3; ++n) {
-      uvlm::solve(m, d, nodes, rest, stream, dt, rho);
-      uvlm::advance(m, d);
-    }
+    fly_three_steps(m, d, nodes);
     const Eigen::Matrix3Xd dv = random_node_velocities(m, 7);
-    const Eigen::Matrix3Xd difference = force_difference(m, d, nodes, dv, stream, dt, rho, 1e-5);
+    const Eigen::Matrix3Xd difference =
+        force_difference(m, d, nodes, dv, kPlateStream, kPlateStep, kPlateRho, 1e-5);
     uvlm::AddedMassScratch scratch(m);
     Eigen::Matrix3Xd all, pressure;
     uvlm::added_mass_force_change(m, d, dv, scratch, all, uvlm::AddedMassTerms::All);

@@ -3,24 +3,13 @@
 // next accepted step (advance), and the force's size does not depend on the side.
 #include <gtest/gtest.h>
 
-#include <Eigen/Geometry>
-
+#include "tilted_plate.hpp"
 #include "uvlm/leading_edge_side.hpp"
-#include "uvlm/planform_grid.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
 namespace {
 
 using namespace flapsim;
-
-// A rectangular plate, chord 10 mm, span 40 mm, pitched by `angle` [rad] about the span axis.
-Eigen::Matrix3Xd pitched_plate(const uvlm::VortexLatticeModel& m, double angle) {
-  uvlm::PlanformGridOptions o;
-  o.chordwise = m.chordwise;
-  o.spanwise = m.spanwise;
-  const uvlm::PlanformGrid g = uvlm::make_rectangular_grid(0.010, 0.040, o);
-  return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitY()).toRotationMatrix() * g.nodes;
-}
 
 // Σ_j n_k · F_le,k over the leading-edge row [N].
 double normal_edge_force(const uvlm::VortexLatticeModel& m, const uvlm::VortexLatticeData& d) {
@@ -47,7 +36,7 @@ TEST(LeadingEdgeSide, AHeldSideKeepsTheSeparatedForceOnItUntilTheNextStep) {
   const Eigen::Vector3d stream(5.0, 0.0, 0.0);
   const double dt = 1e-3, rho = 1.225;
   uvlm::VortexLatticeData d(m), free(m);
-  const Eigen::Matrix3Xd up = pitched_plate(m, 0.2), down = pitched_plate(m, -0.2);
+  const Eigen::Matrix3Xd up = test::tilted_plate(m, 0.2), down = test::tilted_plate(m, -0.2);
   uvlm::solve(m, d, up, rest, stream, dt, rho);
   ASSERT_GT(d.gamma(m.panel(0, 0)), 0.0);
   EXPECT_GT(normal_edge_force(m, d), 0.0);
