@@ -62,7 +62,8 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
   const double nc = n.chordwise_panels, ns = n.spanwise_panels;
   const double panels = nc * ns;
   // Mean coupling iterations per step: a few (docs/fsi.md, "Added mass in the coupling":
-  // a chain with the added mass 3.0–3.8 measured, 4 taken; without it, with sub-steps
+  // a chain with the added mass 2.9–4.4 measured (the hawkmoth hover 2.9–3.3 at 100 steps a
+  // cycle, 4.4 at 40), 4 taken; without it, with sub-steps
   // (which leave it out) and for the FEM, which does not use it, 5); the cap bounds it.
   const bool added_mass = bodies > 1 && fem_dofs == 0 && n.added_mass && n.structure_substeps == 1;
   const double typical = added_mass ? 4.0 : 5.0;
