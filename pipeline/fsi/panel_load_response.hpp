@@ -28,8 +28,9 @@ class PanelLoadResponse {
     uvlm::added_mass_force_change(model_, data_, dv, scratch_, df, uvlm::AddedMassTerms::Pressure);
     if (edge_responds()) uvlm::hold_leading_edge_column(model_, data_, scratch_.dgamma, dv, scratch_.leading_edge, edge);
   }
-  /// Whether the leading-edge force has a response (uvlm/leading_edge_response.hpp).
-  bool edge_responds() const { return uvlm::leading_edge_responds(model_); }
+  /// Whether the leading-edge force has a response (uvlm/leading_edge_response.hpp; not in
+  /// the steady lattice, whose response is none: added_mass.hpp).
+  bool edge_responds() const { return !model_.steady() && uvlm::leading_edge_responds(model_); }
   /// The leading-edge forces' change [N] at points() (3 × panels) for a held column, at the
   /// lattice's last solve.
   void edge_force_change(const uvlm::LeadingEdgeColumn& edge, Eigen::Matrix3Xd& df) const {
