@@ -14,8 +14,7 @@ namespace flapsim::uvlm {
 
 namespace detail {
 
-Eigen::Vector3d ring_node_velocity(const VortexLatticeModel& m, const VortexLatticeData& d, int q, int j) {
-  const auto& V = d.node_velocities;
+Eigen::Vector3d ring_node_velocity(const VortexLatticeModel& m, const Eigen::Matrix3Xd& V, int q, int j) {
   if (q < m.chordwise) return V.col(m.node(q, j)) + 0.25 * (V.col(m.node(q + 1, j)) - V.col(m.node(q, j)));
   return V.col(m.node(q, j)) + 0.25 * (V.col(m.node(q, j)) - V.col(m.node(q - 1, j)));
 }

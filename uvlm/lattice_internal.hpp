@@ -88,6 +88,26 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d, bool las
 /// Unique bound segments with their net circulation from d.gamma.
 void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d);
 
+/// The lattice's unique segments on its ring nodes (3 × nodes) with the ring circulations
+/// G(i, j) [m²/s] (0 outside the lattice; row −1 may be a leading-edge ring), appended to
+/// `bound` (spanwise rows q < nc first, row-major, then the chordwise columns) and
+/// `trailing_edge` (row nc): what build_bound_segments makes of d.gamma, for any G.
+template <class Gamma>
+void push_ring_segments(const VortexLatticeModel& m, const Eigen::Matrix3Xd& ring_nodes, Gamma G, SegmentSet& bound,
+                        SegmentSet& trailing_edge) {
+  const int nc = m.chordwise, ns = m.spanwise;
+  // Spanwise segments, ring-node row q, direction j → j+1: rear of ring q−1 minus front of
+  // ring q; row nc is the trailing edge.
+  for (int q = 0; q <= nc; ++q)
+    for (int j = 0; j < ns; ++j)
+      (q < nc ? bound : trailing_edge)
+          .push(ring_nodes.col(m.node(q, j)), ring_nodes.col(m.node(q, j + 1)), G(q - 1, j) - G(q, j));
+  // Chordwise segments, column j, direction q → q+1: root side of ring (q, j) minus tip side of (q, j−1).
+  for (int j = 0; j <= ns; ++j)
+    for (int q = 0; q < nc; ++q)
+      bound.push(ring_nodes.col(m.node(q, j)), ring_nodes.col(m.node(q + 1, j)), G(q, j) - G(q, j - 1));
+}
+
 /// Who looks at the wake segments: the wing (cores at least model.near_wing_core) or the
 /// wake itself (each segment's own, possibly grown, core).
 enum class WakeView { Wing, Wake };

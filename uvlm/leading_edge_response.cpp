@@ -24,12 +24,6 @@ Eigen::Matrix3d panel_frame(const VortexLatticeData& d, int k) {
   return f;
 }
 
-/// The velocity of ring-node (q, j) for node velocities V (aero_loads.cpp ring_node_velocity).
-Eigen::Vector3d ring_node_velocity_of(const VortexLatticeModel& m, const Eigen::Matrix3Xd& V, int q, int j) {
-  if (q < m.chordwise) return V.col(m.node(q, j)) + 0.25 * (V.col(m.node(q + 1, j)) - V.col(m.node(q, j)));
-  return V.col(m.node(q, j)) + 0.25 * (V.col(m.node(q, j)) - V.col(m.node(q - 1, j)));
-}
-
 }  // namespace
 
 LeadingEdgeScratch::LeadingEdgeScratch(const VortexLatticeModel& m) {
@@ -55,16 +49,10 @@ void hold_leading_edge_column(const VortexLatticeModel& m, const VortexLatticeDa
   const auto G = [&](int i, int j) {
     return (i < 0 || i >= nc || j < 0 || j >= ns) ? 0.0 : dgamma(m.panel(i, j));
   };
-  // The lattice's segments with δΓ (vortex_lattice.cpp build_bound_segments, the same order).
+  // The lattice's segments with δΓ (as build_bound_segments, the same order).
   s.bound.clear();
   s.trailing_edge.clear();
-  for (int q = 0; q <= nc; ++q)
-    for (int j = 0; j < ns; ++j)
-      (q < nc ? s.bound : s.trailing_edge)
-          .push(d.ring_nodes.col(m.node(q, j)), d.ring_nodes.col(m.node(q, j + 1)), G(q - 1, j) - G(q, j));
-  for (int j = 0; j <= ns; ++j)
-    for (int q = 0; q < nc; ++q)
-      s.bound.push(d.ring_nodes.col(m.node(q, j)), d.ring_nodes.col(m.node(q + 1, j)), G(q, j) - G(q, j - 1));
+  detail::push_ring_segments(m, d.ring_nodes, G, s.bound, s.trailing_edge);
   // Their induced velocity at the spanwise segments' midpoints, each segment's own left out
   // (vortex_lattice.cpp induced_at_bound_midpoints).
   PointSet& p = s.midpoints;
@@ -83,8 +71,8 @@ void hold_leading_edge_column(const VortexLatticeModel& m, const VortexLatticeDa
     for (int j = 0; j < ns; ++j) {
       const std::size_t k = static_cast<std::size_t>(q) * ns + j;
       const Eigen::Vector3d induced = p.velocity(k) - segment_velocity(s.bound, k, p.position(k), m.bound_core());
-      const Eigen::Vector3d surface = 0.5 * (ring_node_velocity_of(m, dv, q, j) + ring_node_velocity_of(m, dv, q, j + 1));
-      column.segment_gamma_change(static_cast<Eigen::Index>(k)) = G(q - 1, j) - G(q, j);
+      const Eigen::Vector3d surface = 0.5 * (detail::ring_node_velocity(m, dv, q, j) + detail::ring_node_velocity(m, dv, q, j + 1));
+      column.segment_gamma_change(static_cast<Eigen::Index>(k)) = s.bound.gamma()[k];  // δγ_s
       column.velocity_change.col(static_cast<Eigen::Index>(k)) =
           panel_frame(d, m.panel(q, j)).transpose() * (induced - surface);
     }

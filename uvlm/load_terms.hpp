@@ -41,8 +41,13 @@ Eigen::Vector3d panel_gamma_gradient(const VortexLatticeModel& m, const VortexLa
   return vortex.cross(d.normal.col(k)) / d.area(k);
 }
 
-/// Velocity [m/s] of ring node (q, j): the same blend of surface-node velocities as its position.
-Eigen::Vector3d ring_node_velocity(const VortexLatticeModel& m, const VortexLatticeData& d, int q, int j);
+/// Velocity [m/s] of ring node (q, j) for the surface nodes' velocities V (3 × nodes): the
+/// same blend of them as its position.
+Eigen::Vector3d ring_node_velocity(const VortexLatticeModel& m, const Eigen::Matrix3Xd& V, int q, int j);
+/// The same for the last solve's node velocities.
+inline Eigen::Vector3d ring_node_velocity(const VortexLatticeModel& m, const VortexLatticeData& d, int q, int j) {
+  return ring_node_velocity(m, d.node_velocities, q, j);
+}
 
 /// ∂Γ/∂t of panel k following the panel [m²/s²]: BDF2 over the last two accepted steps,
 /// backward Euler after the first one, and Γ/Δt at the first step (impulsive start).

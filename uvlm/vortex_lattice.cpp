@@ -189,17 +189,7 @@ void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d) {
   };
   d.bound_segments.clear();
   d.trailing_edge_segments.clear();
-  // Spanwise segments, ring-node row q, direction j → j+1: rear of ring q−1 minus front of
-  // ring q; row nc is the trailing edge.
-  for (int q = 0; q <= nc; ++q)
-    for (int j = 0; j < ns; ++j)
-      (q < nc ? d.bound_segments : d.trailing_edge_segments).push(d.ring_nodes.col(m.node(q, j)), d.ring_nodes.col(m.node(q, j + 1)),
-                            G(q - 1, j) - G(q, j));
-  // Chordwise segments, column j, direction q → q+1: root side of ring (q, j) minus tip side of (q, j−1).
-  for (int j = 0; j <= ns; ++j)
-    for (int q = 0; q < nc; ++q)
-      d.bound_segments.push(d.ring_nodes.col(m.node(q, j)), d.ring_nodes.col(m.node(q + 1, j)),
-                            G(q, j) - G(q, j - 1));
+  push_ring_segments(m, d.ring_nodes, G, d.bound_segments, d.trailing_edge_segments);
 }
 
 void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,

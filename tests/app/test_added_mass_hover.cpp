@@ -40,12 +40,14 @@ HoverRun hover(const flapsim::test::ScratchDir& dir, bool added_mass) {
 
 TEST(AddedMassHover, TheHawkmothHoverConvergesInFewerLatticeSolvesToTheSameMeanLift) {
   // The fixed point is the coupled problem's whatever the iteration: the last-cycle mean lift
-  // with and without the added mass within 1e-4. Measured with this shipped chain −5.1e-7
-  // (+4e-7 with the reduced chain of `make run`); the case itself moves by 2.2e-5 when its
-  // springs move by 2e-9 (app.HoverFlexibleCase.ItsMeanLiftDoesNotHingeOnRoundOff), so a
-  // tighter bound would test the run's sensitivity, not the fixed point. The lattice solves a
-  // step, measured 6.09 without and 3.82 with it (the extrapolated predictor on in both; 4.61
-  // and 3.27 with the reduced chain): at most three quarters.
+  // with and without the added mass within 1e-4. Measured with this shipped chain 1.4e-5
+  // (−5.1e-7 before the leading-edge force's part; `separated` turns a strip's force where
+  // its circulation changes sign, and which side a step converges on depends on its
+  // iterates: docs/fsi.md, "Where a strip's force changes side"); the case itself moves by
+  // 2.2e-5 when its springs move by 2e-9 (app.HoverFlexibleCase.ItsMeanLiftDoesNotHingeOnRoundOff),
+  // so a tighter bound would test the run's sensitivity, not the fixed point. The lattice
+  // solves a step, measured 5.89 without and 3.27 with it (0.555; 3.73 = 0.63 without the
+  // leading-edge force's part, uvlm/leading_edge_response.hpp): under 0.6.
   flapsim::test::ScratchDir dir("added_mass_hover");
   const HoverRun without = hover(dir, false), with = hover(dir, true);
   std::printf("[ value ] hover_flexible: mean lift %.9g N without the added mass, %.9g N with it (%.2g); "
@@ -53,5 +55,5 @@ TEST(AddedMassHover, TheHawkmothHoverConvergesInFewerLatticeSolvesToTheSameMeanL
               without.mean_lift, with.mean_lift, with.mean_lift / without.mean_lift - 1.0, without.solves, with.solves);
   ASSERT_GT(without.mean_lift, 0.0);
   EXPECT_NEAR(with.mean_lift / without.mean_lift, 1.0, 1e-4);
-  EXPECT_LT(with.solves, 0.75 * without.solves);
+  EXPECT_LT(with.solves, 0.6 * without.solves);
 }
