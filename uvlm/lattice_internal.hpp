@@ -144,10 +144,17 @@ void add_far_wake_velocity(VortexLatticeData& d, const double* x, const double* 
 /// Put the wake's newest node row on the current trailing edge (ring nodes of row nc).
 void attach_wake_to_trailing_edge(const VortexLatticeModel& m, VortexLatticeData& d);
 
+/// Which of the wing's point sets d.eval holds, for the older wake's recorded or held sums
+/// (VortexLatticeData::old_wake_velocity): none, the collocation points, the bound
+/// segments' midpoints.
+enum class WingPoints { None = -1, Collocation = 0, Midpoints = 1 };
+
 /// Induced velocity of the wake (and of the bound segments if include_bound) at the first n
-/// points of d.eval, written to d.eval.u/v/w (zeroed first).
+/// points of d.eval, written to d.eval.u/v/w (zeroed first). With old_wake_kept_apart(m, d) and
+/// one of the wing's point sets, the older wake's part is recorded, or taken from the
+/// record while it is held.
 void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
-                            bool include_bound);
+                            bool include_bound, WingPoints points = WingPoints::None);
 
 /// Velocity at the midpoints of the first n bound segments (set here as d.eval's first n
 /// points, into its u/v/w): the wake's, the trailing edge's and every other bound segment's.

@@ -2,6 +2,7 @@
 
 #include "uvlm/biot_savart_kernel.hpp"
 #include "uvlm/lattice_internal.hpp"
+#include "uvlm/old_wake_hold.hpp"
 #include "uvlm/rigid_motion.hpp"
 
 #include <omp.h>
@@ -19,6 +20,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
     throw std::invalid_argument("vortex lattice: core radius and bound core fraction must be > 0");
   if (m.wake_capacity < 1) throw std::invalid_argument("vortex lattice: wake_capacity must be >= 1");
   if (m.max_wake_rows < 0) throw std::invalid_argument("vortex lattice: max_wake_rows must be >= 0");
+  if (m.young_wake_rows < 0) throw std::invalid_argument("vortex lattice: young_wake_rows must be >= 0");
   if (m.wake_sum == WakeSum::Tree && !(m.tree_tolerance > 0.0))
     throw std::invalid_argument("vortex lattice: tree tolerance must be > 0");
   if (!(m.near_wing_core >= 0.0) || !(m.frozen_wake_age >= 0.0) || !(m.near_wing_min_age >= 0.0))
@@ -84,6 +86,9 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   wake_segments.reserve((rows + 1) * ns + rows * (ns + 1) + (sheds ? sheet_segment_capacity(ns, sheet_rings) : 0));
   wake_edge_segments.reserve(static_cast<std::size_t>(2 * ns + 1) + (sheds ? sheet_edge_segment_capacity(ns) : 0));
   wake_lattice.reserve(wake_nodes_n, static_cast<std::size_t>(ns) + 1);
+  young_wake_segments.reserve(static_cast<std::size_t>(m.young_wake_rows + 1) * (2 * ns + 1));
+  old_wake[0].reserve(static_cast<std::size_t>(np));
+  old_wake[1].reserve(bound_n);
   if (m.far_wake_by_tree()) {
     far_wake_segments.reserve(wake_segments.capacity());
     far_targets.reserve(std::max(wake_nodes_n, std::max<std::size_t>(bound_n, np)));
@@ -193,7 +198,7 @@ void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d) {
 }
 
 void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
-                            bool include_bound) {
+                            bool include_bound, WingPoints points) {
   d.eval.size = n;
   d.eval.zero_velocity();
   PointSet& e = d.eval;
@@ -202,17 +207,30 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
   // one parallel region unless the far wake's tree comes between them (lattice_internal.hpp).
   const bool far = d.far_tree_rows > 0 && d.far_wake_segments.size() > 0;
   const bool bound_with_wake = include_bound && !far;
+  // The older wake's part (old_wake_hold.hpp): recorded, or taken from the record.
+  const int slot = static_cast<int>(points);
+  const bool apart = slot >= 0 && old_wake_kept_apart(m, d);
+  const bool held = apart && d.old_wake_held && d.old_wake[slot].size == n;
+  const bool record = apart && !held;
+  if (held && points == WingPoints::Collocation) ++d.solver_counts.held_old_wake;
   auto direct = [&](bool wake, bool bound) {
-    const std::size_t segments = (wake ? d.wake_segments.size() + d.wake_edge_segments.size() : 0) +
-                                 (bound ? d.bound_segments.size() + d.trailing_edge_segments.size() : 0);
+    const std::size_t segments =
+        (wake ? (held ? 0 : d.wake_segments.size()) + d.young_wake_segments.size() + d.wake_edge_segments.size() : 0) +
+        (bound ? d.bound_segments.size() + d.trailing_edge_segments.size() : 0);
     if (segments == 0) return;
     for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
       const double *x = e.x.data() + i0, *y = e.y.data() + i0, *z = e.z.data() + i0;
       double *u = e.u.data() + i0, *v = e.v.data() + i0, *w = e.w.data() + i0;
-      if (wake && m.single_precision_wake)
+      if (wake && held) {
+        d.old_wake[slot].held(i0, c, x, y, z, u, v, w);
+      } else if (wake && m.single_precision_wake) {
         add_induced_velocity_single(d.wake_segments, x, y, z, c, u, v, w, m.core);
-      else if (wake)
+      } else if (wake) {
         add_induced_velocity(d.wake_segments, x, y, z, c, u, v, w, m.core);
+      }
+      if (wake && record) d.old_wake[slot].record(i0, c, x, y, z, u, v, w);  // the older wake's part alone
+      if (wake && d.young_wake_segments.size() > 0)
+        add_induced_velocity_single(d.young_wake_segments, x, y, z, c, u, v, w, m.core);
       if (wake && d.wake_edge_segments.size() > 0)
         add_induced_velocity(d.wake_edge_segments, x, y, z, c, u, v, w, m.core);
       if (bound) {
@@ -220,8 +238,10 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
         add_induced_velocity(d.trailing_edge_segments, x, y, z, c, u, v, w, m.core);
       }
     });
+    if (wake && record) d.old_wake[slot].finish(n);
   };
-  if (m.single_precision_wake) d.wake_segments.update_single_precision();
+  if (m.single_precision_wake && !held) d.wake_segments.update_single_precision();
+  if (d.young_wake_segments.size() > 0) d.young_wake_segments.update_single_precision();
   direct(true, bound_with_wake);
   if (far) {
     add_far_wake_velocity(d, e.x.data(), e.y.data(), e.z.data(), n, e.u.data(), e.v.data(), e.w.data());
@@ -236,7 +256,7 @@ void induced_at_bound_midpoints(const VortexLatticeModel& m, VortexLatticeData& 
     d.eval.y[s] = 0.5 * (S.ay()[s] + S.by()[s]);
     d.eval.z[s] = 0.5 * (S.az()[s] + S.bz()[s]);
   }
-  induced_at_eval_points(m, d, n, true);
+  induced_at_eval_points(m, d, n, true, WingPoints::Midpoints);
   for (std::size_t s = 0; s < n; ++s) {
     const Eigen::Vector3d own = segment_velocity(S, s, d.eval.position(s), m.bound_core());
     d.eval.u[s] -= own.x();
@@ -270,7 +290,7 @@ void check_inputs(const VortexLatticeModel& m, const Eigen::Matrix3Xd& nodes,
 void wake_velocity_at_collocation(const VortexLatticeModel& m, VortexLatticeData& d) {
   const int np = m.panels();
   for (int k = 0; k < np; ++k) d.eval.set(k, d.collocation.col(k));
-  detail::induced_at_eval_points(m, d, np, false);
+  detail::induced_at_eval_points(m, d, np, false, detail::WingPoints::Collocation);
   for (int k = 0; k < np; ++k) d.wake_velocity.col(k) = d.eval.velocity(k);
 }
 
@@ -385,6 +405,10 @@ void solve_steady_lattice(const VortexLatticeModel& m, VortexLatticeData& d, con
 }
 
 }  // namespace
+
+void factorise_current_matrix(VortexLatticeData& d) {
+  if (d.has_matrix && !d.factorisation_current) factorise(d);
+}
 
 void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matrix3Xd& nodes,
            const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt,

@@ -31,6 +31,7 @@
 #include "uvlm/influence_matrix.hpp"
 #include "uvlm/lattice_segments.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
+#include "uvlm/old_wake_record.hpp"
 #include "uvlm/preconditioned_gmres.hpp"
 #include "uvlm/segment_tree.hpp"
 #include "uvlm/vortex_core.hpp"
@@ -112,6 +113,12 @@ struct VortexLatticeModel {
   /// bound segments (not the trailing edge) through this core too.
   double near_wing_core = 0.0;
   double near_wing_min_age = 0.0;  ///< [s]
+  /// With VortexLatticeData::old_wake_apart, the wake's node rows at most this many steps
+  /// old (besides its newest, wake_edge_segments) are summed at the wing's points apart
+  /// from the older ones, whose sums a coupled step may hold (old_wake_hold.hpp). A quarter
+  /// cycle in a case (fsi_setup.cpp); held sums of younger rows were measured to be off by
+  /// up to 4·10⁻⁵ of the velocity at 10 steps of 100 a cycle, 4·10⁻⁶ at 25.
+  int young_wake_rows = 25;
   /// Far wake: wake nodes older than this [s] no longer move (they still induce velocity,
   /// and their velocity is not computed any more); 0: the whole wake is free.
   double frozen_wake_age = 0.0;
@@ -206,6 +213,7 @@ struct LatticeSolverCounts {
   long factorisations = 0;    ///< LU factorisations of the influence matrix
   long iterative_solves = 0;  ///< solves by GMRES
   long iterations = 0;        ///< their GMRES iterations
+  long held_old_wake = 0;     ///< solves that took the older wake's sums from the records (old_wake_hold.hpp)
   double worst_residual = 0;  ///< largest relative residual a GMRES solve returned
 };
 
@@ -244,6 +252,15 @@ struct VortexLatticeData {
   /// Per strip: the side (+1, −1) its separated leading-edge force is held to within the
   /// current step, 0 where it follows Γ(0, j) (leading_edge_side.hpp).
   Eigen::VectorXi held_edge_side;
+  /// The wing's sums over the older wake, kept apart to be held within a step
+  /// (old_wake_hold.hpp; set by a caller that may hold them): the segments of the wake's
+  /// model.young_wake_rows newest rows before the newest are then young_wake_segments, and
+  /// each solve records what the older ones induce at the collocation points
+  /// (old_wake[0]) and at the bound segments' midpoints (old_wake[1]).
+  bool old_wake_apart = false;
+  SegmentSet young_wake_segments;
+  OldWakeRecord old_wake[2];
+  bool old_wake_held = false;  ///< the solves take the records (until the next advance)
 
   // Circulations [m²/s], panel index i + nc j.
   Eigen::VectorXd gamma;           ///< last solve
@@ -338,6 +355,12 @@ struct VortexLatticeData {
 void solve(const VortexLatticeModel& model, VortexLatticeData& data, const Eigen::Matrix3Xd& nodes,
            const Eigen::Matrix3Xd& node_velocities, const Eigen::Vector3d& free_stream, double dt,
            double rho);
+
+/// Factorise the influence matrix of the last solve unless its factorisation is current
+/// (the iterative path, model.iterative(), keeps an earlier matrix's): the right-hand
+/// sides of added_mass_force_change are then solved directly, and the next solves' GMRES
+/// is preconditioned by this matrix. The last solve's results are not changed.
+void factorise_current_matrix(VortexLatticeData& data);
 
 /// Accept the last solve: convect the wake over dt and shed one row from the trailing edge
 /// (with model.steady(): only accept the circulations and count the force impulse).

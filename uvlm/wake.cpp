@@ -5,6 +5,7 @@
 
 #include "uvlm/lattice_internal.hpp"
 #include "uvlm/leading_edge_side.hpp"
+#include "uvlm/old_wake_hold.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
 #include <algorithm>
@@ -61,6 +62,7 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
   };
   d.wake_segments.clear();
   d.wake_edge_segments.clear();
+  d.young_wake_segments.clear();
   d.trailing_wake_segments = d.trailing_wake_edge_segments = 0;
   d.wake_lattice.assign_grid(0, n1);
   if (W == 0) return;
@@ -94,8 +96,13 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
   // step's sub-iterations) go to wake_edge_segments, summed in double: rounded to single
   // precision, their ends would move in steps of 4·10⁻⁹ m beside the last panels'
   // collocation points (docs/uvlm.md, "Precision of the wake's sums").
+  // With the older wake kept apart (old_wake_hold.hpp), node rows from Y on (the
+  // model.young_wake_rows newest before the newest) go to young_wake_segments.
   if (view == WakeView::Wing && m.single_precision_wake && T <= W) {
-    push_rings(d.wake_segments, T, W, std::max(T - 1, 0), W - 1, ratio);
+    const int Y = old_wake_kept_apart(m, d) ? std::max(T, W - m.young_wake_rows) : W;
+    const int r0 = std::max(T - 1, 0), ry = std::max(Y - 1, r0);
+    push_rings(d.wake_segments, T, Y, r0, ry, ratio);
+    push_rings(d.young_wake_segments, Y, W, ry, W - 1, ratio);
     push_rings(d.wake_edge_segments, W, W + 1, W - 1, W, ratio);
   } else {
     push_rings(d.wake_segments, T, W + 1, std::max(T - 1, 0), W, ratio);
@@ -206,6 +213,7 @@ void advance(const VortexLatticeModel& m, VortexLatticeData& d) {
   d.force_impulse += d.loads.total_force * d.dt;
   d.force_time += d.dt;
   release_leading_edge_sides(d);  // held within a step at most (leading_edge_side.hpp)
+  release_old_wake_sums(d);       // the same (old_wake_hold.hpp)
   if (m.steady()) {  // the steady lattice's straight wake is rebuilt by every solve
     d.gamma_accepted_before = d.gamma;
     d.gamma_accepted = d.gamma;

@@ -93,6 +93,9 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   m.core_growth.squire_a1 = c.numerics.core_growth_a1;
   m.core_growth.kinematic_viscosity = c.numerics.kinematic_viscosity;
   m.near_wing_core = c.numerics.near_wing_core * mean_chord;
+  // The wake younger than a quarter cycle is summed anew at every solve of a step, the
+  // older one may be held within it (uvlm/old_wake_hold.hpp; docs/fsi.md, "One coupled step").
+  m.young_wake_rows = std::max(1, c.numerics.steps_per_cycle / 4);
   m.frozen_wake_age = c.numerics.frozen_wake_cycles / c.kinematics.frequency;
   m.far_wake_age = c.numerics.far_wake_cycles / c.kinematics.frequency;
   if (m.far_wake_age > 0.0) {

@@ -8,6 +8,7 @@
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/fsi/panel_load_response.hpp"
 #include "uvlm/leading_edge_side.hpp"
+#include "uvlm/old_wake_hold.hpp"
 
 namespace flapsim::fsi {
 
@@ -17,6 +18,8 @@ FsiData::FsiData(const FsiModel& model)
       quasi_newton(model.structure->num_dofs()) {
   if (model.air) {
     lattice.emplace(model.lattice);
+    // A structure that moves within a step may hold the older wake's sums (sub_iterate).
+    lattice->old_wake_apart = model.coupling.old_wake_hold_after > 0 && model.structure->num_dofs() > 0;
     added_mass_scratch.emplace(model.lattice);
     for (Eigen::Matrix3Xd& f : earlier_forces) f.setZero(3, model.lattice.panels());
     nodes.setZero(3, model.lattice.nodes());
@@ -76,15 +79,22 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
     // 1. lattice on the iterate
     if (!first) s.pose_iterate();
     if (k == model.coupling.edge_side_hold_after) uvlm::hold_leading_edge_sides(model.lattice, *data.lattice);
+    if (k >= model.coupling.old_wake_hold_after && model.coupling.old_wake_hold_after > 0 &&
+        delta <= model.coupling.old_wake_hold_change * tol)
+      uvlm::hold_old_wake_sums(model.lattice, *data.lattice);
     // (first of the step: the structure's pose is already the predictor's = the iterate)
     solve_air(model, data, dt, step, t1);
     ++k;
     if (k == 1 && model.coupling.added_mass) {  // the air's added mass
       PanelLoadResponse response(model.lattice, *data.lattice, *data.added_mass_scratch);
-      if (added_mass_due(model, data, step))
+      if (added_mass_due(model, data, step)) {
+        // Its right-hand sides by the factors of this solve's matrix (not GMRES from an
+        // earlier one's), which then precondition the next solves (uvlm/vortex_lattice.hpp).
+        uvlm::factorise_current_matrix(*data.lattice);
         s.linearise_panel_loads(response);
-      else
+      } else {
         s.refresh_panel_load_response(response);
+      }
     }
     // 2. the structure's step with these loads, to 1 % of the last change (file comment)
     assemble_loads(model, data, t1);

@@ -1,0 +1,50 @@
+#pragma once
+/// \file old_wake_hold.hpp
+/// \brief Holding the wing's sums over the older wake within a step.
+///
+/// Within a coupled step the wake stands still and the wing's points move only by what the
+/// sub-iterations change, a change that shrinks by a factor of 30–50 a solve. The older
+/// wake — its node rows more than model.young_wake_rows steps old — induces a smooth field
+/// at the wing, and summing it anew at every solve is most of a large lattice's work
+/// (docs/performance.md, "The older wake within a step"). A caller that may hold those sums
+/// sets VortexLatticeData::old_wake_apart before the first solve: every solve then sums the
+/// older rows apart from the younger ones (the newest in double precision as always) and
+/// records their velocity at the collocation points and at the bound segments' midpoints
+/// (old_wake_record.hpp). After hold_old_wake_sums the solves, until the next advance, take
+/// the older rows' velocity from the last two records: the last one, moved along their
+/// secant to the points' new places; the younger rows, the bound vortices and everything
+/// else are summed anew. At the last recorded points the held value is the record's bits,
+/// so a solve there gives the same answer held or not. The coupled step holds once two
+/// solves are made and the last change is small (pipeline/fsi/coupled_step.hpp,
+/// CouplingSettings::old_wake_hold_after, old_wake_hold_change; docs/fsi.md).
+///
+/// Only for the single-precision wake without a leading-edge sheet (whose release row moves
+/// with every solve): otherwise the wake is never kept apart and nothing is held
+/// (old_wake_kept_apart).
+
+#include "uvlm/vortex_lattice.hpp"
+
+namespace flapsim::uvlm {
+
+/// Whether the wing's sums over the wake keep the older rows apart: asked for by the caller
+/// (d.old_wake_apart), with young rows to keep, the wake in single precision and no
+/// leading-edge sheet among its segments.
+inline bool old_wake_kept_apart(const VortexLatticeModel& m, const VortexLatticeData& d) {
+  return d.old_wake_apart && m.young_wake_rows > 0 && m.single_precision_wake && m.leading_edge != LeadingEdge::Shed;
+}
+
+/// The solves until the next advance take the older wake's velocity at the wing's points
+/// from the records (file comment); nothing if the wake is not kept apart or nothing was
+/// recorded since the last advance.
+inline void hold_old_wake_sums(const VortexLatticeModel& m, VortexLatticeData& d) {
+  d.old_wake_held = old_wake_kept_apart(m, d) && d.old_wake[0].size > 0;
+}
+
+/// Frees the hold and forgets the records (advance: the wake has moved).
+inline void release_old_wake_sums(VortexLatticeData& d) {
+  d.old_wake_held = false;
+  d.old_wake[0].clear();
+  d.old_wake[1].clear();
+}
+
+}  // namespace flapsim::uvlm
