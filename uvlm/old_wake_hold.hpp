@@ -15,7 +15,7 @@
 /// secant to the points' new places; the younger rows, the bound vortices and everything
 /// else are summed anew. At the last recorded points the held value is the record's bits,
 /// so a solve there gives the same answer held or not. The coupled step holds once two
-/// solves are made and the last change is small (pipeline/fsi/coupled_step.hpp,
+/// solves are made and while the last change is small (pipeline/fsi/coupled_step.hpp,
 /// CouplingSettings::old_wake_hold_after, old_wake_hold_change; docs/fsi.md).
 ///
 /// Only for the single-precision wake without a leading-edge sheet (whose release row moves
@@ -39,6 +39,9 @@ inline bool old_wake_kept_apart(const VortexLatticeModel& m, const VortexLattice
 inline void hold_old_wake_sums(const VortexLatticeModel& m, VortexLatticeData& d) {
   d.old_wake_held = old_wake_kept_apart(m, d) && d.old_wake[0].size > 0;
 }
+
+/// The next solves sum the older wake anew (and record it); the records are kept.
+inline void sum_old_wake_anew(VortexLatticeData& d) { d.old_wake_held = false; }
 
 /// Frees the hold and forgets the records (advance: the wake has moved).
 inline void release_old_wake_sums(VortexLatticeData& d) {

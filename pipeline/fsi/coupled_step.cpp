@@ -79,9 +79,14 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
     // 1. lattice on the iterate
     if (!first) s.pose_iterate();
     if (k == model.coupling.edge_side_hold_after) uvlm::hold_leading_edge_sides(model.lattice, *data.lattice);
-    if (k >= model.coupling.old_wake_hold_after && model.coupling.old_wake_hold_after > 0 &&
-        delta <= model.coupling.old_wake_hold_change * tol)
+    // The older wake's sums held from the hold_after-th solve on if the change is small
+    // by then, and for good summed anew once it grows again (uvlm/old_wake_hold.hpp).
+    const int hold_after = model.coupling.old_wake_hold_after;
+    const bool small_change = delta <= model.coupling.old_wake_hold_change * tol;
+    if (hold_after > 0 && k == hold_after && small_change)
       uvlm::hold_old_wake_sums(model.lattice, *data.lattice);
+    else if (hold_after > 0 && k > hold_after && !small_change)
+      uvlm::sum_old_wake_anew(*data.lattice);
     // (first of the step: the structure's pose is already the predictor's = the iterate)
     solve_air(model, data, dt, step, t1);
     ++k;

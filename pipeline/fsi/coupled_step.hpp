@@ -74,14 +74,16 @@ struct CouplingSettings {
   /// force jumps and the iterates may alternate between the two sides; docs/fsi.md,
   /// "Coupling"). Steps that converge sooner are not touched.
   int edge_side_hold_after = 10;
-  /// From this many lattice solves of a step on, the solves take the wing's sums over the
-  /// older wake (rows more than the lattice's young_wake_rows steps old) from the last
-  /// solve instead of summing them anew (uvlm/old_wake_hold.hpp; docs/fsi.md, "One coupled
-  /// step"): by then the wing moves by about the coupling's last change between solves. 0:
-  /// never (the wake is then not kept apart either).
+  /// After this many lattice solves of a step, if the last change is at most
+  /// old_wake_hold_change tolerances, the step's further solves take the wing's sums over
+  /// the older wake (rows more than the lattice's young_wake_rows steps old) from the
+  /// records of its last two solves instead of summing them anew, until a change exceeds
+  /// that again (uvlm/old_wake_hold.hpp; docs/fsi.md, "One coupled step"): by then the wing
+  /// moves by about the coupling's last change between solves. 0: never (the wake is then
+  /// not kept apart either).
   int old_wake_hold_after = 2;
-  /// … once the last change is at most this many times the tolerance (the held sums are
-  /// then within about 3·10⁻⁶ of the velocity the older wake induces; docs/fsi.md).
+  /// (see old_wake_hold_after; docs/fsi.md: the held sums are then within the
+  /// single-precision sums' rounding)
   double old_wake_hold_change = 100.0;
   /// The predictor's loads: the last accepted step's panel forces extrapolated in time
   /// through this many earlier steps' (0: held, 1: linear, 2: quadratic), each panel's
