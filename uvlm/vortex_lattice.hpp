@@ -116,8 +116,9 @@ struct VortexLatticeModel {
   /// With VortexLatticeData::old_wake_apart, the wake's node rows at most this many steps
   /// old (besides its newest, wake_edge_segments) are summed at the wing's points apart
   /// from the older ones, whose sums a coupled step may hold (old_wake_hold.hpp). A quarter
-  /// cycle in a case (fsi_setup.cpp); held sums of younger rows were measured to be off by
-  /// up to 4·10⁻⁵ of the velocity at 10 steps of 100 a cycle, 4·10⁻⁶ at 25.
+  /// cycle in a case (fsi_setup.cpp). Measured on the 12 × 20 hover (held against summed
+  /// anew): off by up to 4·10⁻⁷ of the wake's velocity at 25 steps of 100 a cycle; by
+  /// 2·10⁻⁶ there, and 4·10⁻⁵ at 10 steps, holding the last record without its secant.
   int young_wake_rows = 25;
   /// Far wake: wake nodes older than this [s] no longer move (they still induce velocity,
   /// and their velocity is not computed any more); 0: the whole wake is free.
