@@ -15,8 +15,7 @@
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
-#include "pipeline/app/fsi_setup.hpp"
-#include "pipeline/fsi/coupled_step.hpp"
+#include "coupled_case_steps.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/case_file.hpp"
 
@@ -43,22 +42,15 @@ EdgeSideRun edge_side_run(const flapsim::test::ScratchDir& dir, const std::strin
   const auto file = dir / (name + ".toml");
   std::ofstream(file) << text;
   const flapsim::io::Case c = flapsim::io::load_case_file(file.string());
-  flapsim::app::SetupOptions options;
-  options.chain_file = chain;
-  flapsim::app::FsiSetup setup = flapsim::app::build_fsi_setup(c, options);
-  setup.model.coupling.old_wake_hold_after = 0;
-  flapsim::fsi::FsiData data(setup.model);
-  flapsim::fsi::initialize(setup.model, data, 0.0);
   const int per_cycle = c.numerics.steps_per_cycle, steps = c.numerics.cycles * per_cycle;
   EdgeSideRun r;
   try {
-    for (int k = 0; k < steps; ++k) {
-      flapsim::fsi::coupled_step(setup.model, data, setup.dt);
-      if (k >= steps - per_cycle)
-        r.mean_lift += data.lattice->loads.total_force.dot(setup.reference.lift_direction) / per_cycle;
-      r.max_iterations = std::max(r.max_iterations, data.last_iterations);
-      flapsim::fsi::shed_wake(setup.model, data);
-    }
+    flapsim::test::run_coupled_steps(
+        c, chain, steps, [](flapsim::fsi::FsiModel& m) { m.coupling.old_wake_hold_after = 0; },
+        [&](int k, const flapsim::app::FsiSetup& setup, const flapsim::fsi::FsiData& data) {
+          if (k >= steps - per_cycle) r.mean_lift += flapsim::test::lattice_lift(setup, data) / per_cycle;
+          r.max_iterations = std::max(r.max_iterations, data.last_iterations);
+        });
     r.completed = true;
   } catch (const flapsim::NumericalFailure& e) {
     ADD_FAILURE() << name << ": " << e.what();

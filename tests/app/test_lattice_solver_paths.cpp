@@ -9,8 +9,7 @@
 #include <cstdio>
 #include <string>
 
-#include "pipeline/app/fsi_setup.hpp"
-#include "pipeline/fsi/coupled_step.hpp"
+#include "coupled_case_steps.hpp"
 #include "pipeline/io/case_file.hpp"
 
 namespace {
@@ -27,21 +26,18 @@ ShortRun run_short_hover(bool iterative) {
   c.numerics.chordwise_panels = 12;
   c.numerics.spanwise_panels = 20;
   c.numerics.cycles = 1;
-  flapsim::app::SetupOptions options;
-  options.chain_file = source + "/cases/chains/hawkmoth_10_bodies.toml";
-  flapsim::app::FsiSetup setup = flapsim::app::build_fsi_setup(c, options);
-  if (!iterative) setup.model.lattice.iterative_min_panels = 0;
-  flapsim::fsi::FsiData data(setup.model);
-  flapsim::fsi::initialize(setup.model, data, 0.0);
-  const int steps = 25;
   ShortRun r;
-  for (int k = 0; k < steps; ++k) {
-    flapsim::fsi::coupled_step(setup.model, data, setup.dt);
-    r.mean_lift += data.lattice->loads.total_force.dot(setup.reference.lift_direction) / steps;
-    flapsim::fsi::shed_wake(setup.model, data);
-  }
-  r.counts = data.lattice->solver_counts;
-  r.sub_iterations = data.total_iterations;
+  const int steps = 25;
+  flapsim::test::run_coupled_steps(
+      c, source + "/cases/chains/hawkmoth_10_bodies.toml", steps,
+      [&](flapsim::fsi::FsiModel& m) {
+        if (!iterative) m.lattice.iterative_min_panels = 0;
+      },
+      [&](int, const flapsim::app::FsiSetup& setup, const flapsim::fsi::FsiData& data) {
+        r.mean_lift += flapsim::test::lattice_lift(setup, data) / steps;
+        r.counts = data.lattice->solver_counts;
+        r.sub_iterations = data.total_iterations;
+      });
   return r;
 }
 

@@ -12,8 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/app/fsi_setup.hpp"
-#include "pipeline/fsi/coupled_step.hpp"
+#include "coupled_case_steps.hpp"
 #include "pipeline/io/case_file.hpp"
 
 namespace {
@@ -30,22 +29,16 @@ HoldRun hold_run(int hold_after, double tolerance) {
   flapsim::io::Case c = flapsim::io::load_case_file(source + "/cases/hover_flexible.toml");
   c.numerics.cycles = 1;
   c.numerics.coupling_tolerance = tolerance;
-  flapsim::app::SetupOptions options;
-  options.chain_file = source + "/cases/chains/hawkmoth_10_bodies.toml";
-  flapsim::app::FsiSetup setup = flapsim::app::build_fsi_setup(c, options);
-  setup.model.coupling.old_wake_hold_after = hold_after;
-  flapsim::fsi::FsiData data(setup.model);
-  flapsim::fsi::initialize(setup.model, data, 0.0);
   HoldRun r;
-  const int steps = c.numerics.steps_per_cycle;
-  for (int k = 0; k < steps; ++k) {
-    flapsim::fsi::coupled_step(setup.model, data, setup.dt);
-    r.lift.push_back(data.lattice->loads.total_force.dot(setup.reference.lift_direction));
-    if (k > setup.model.lattice.young_wake_rows && data.last_iterations > 2) ++r.steps_past_two;
-    flapsim::fsi::shed_wake(setup.model, data);
-  }
-  r.counts = data.lattice->solver_counts;
-  r.solves = data.total_iterations;
+  flapsim::test::run_coupled_steps(
+      c, source + "/cases/chains/hawkmoth_10_bodies.toml", c.numerics.steps_per_cycle,
+      [&](flapsim::fsi::FsiModel& m) { m.coupling.old_wake_hold_after = hold_after; },
+      [&](int k, const flapsim::app::FsiSetup& setup, const flapsim::fsi::FsiData& data) {
+        r.lift.push_back(flapsim::test::lattice_lift(setup, data));
+        if (k > setup.model.lattice.young_wake_rows && data.last_iterations > 2) ++r.steps_past_two;
+        r.counts = data.lattice->solver_counts;
+        r.solves = data.total_iterations;
+      });
   return r;
 }
 
