@@ -74,19 +74,12 @@ template <CoreModel M, class T>
   }
 }
 
-/// Velocity induced at P by the straight segment A→B of circulation Γ, added to (u, v, w):
-///   v = Γ/(4π) · f(h²/r_c²) · (|r1|+|r2|)(|r1||r2| − r1·r2) / (|r1||r2| |r1×r2|²) · (r1×r2),
-/// r1 = P − A, r2 = P − B (algebraically the textbook r0·(r1/|r1| − r2/|r2|)/|r1×r2|² form
-/// [Katz & Plotkin eq. 2.68]); (|r1||r2| − r1·r2)/|r1×r2|² is evaluated as 1/(|r1||r2| + r1·r2)
-/// where r1·r2 ≥ 0 (no cancellation beyond the ends). h is the distance from P to the
-/// segment: to its line where P projects inside it, to the nearer end beyond the ends (a
-/// point far beyond a segment's end is not in its core, so far away every core model is
-/// the singular kernel, which the tree code's expansions assume).
-/// \param scale  1/(r_c² |B − A|²) [1/m⁴] (0 for a zero-length segment), so that
-///               h²/r_c² = |r1×r2|²·scale inside and |r_end|² |B − A|²·scale beyond an end
-template <CoreModel M, class T>
-[[gnu::always_inline]] inline void segment_velocity(T px, T py, T pz, T ax, T ay, T az, T bx, T by, T bz, T gamma, T scale,
-                             T& u, T& v, T& w) {
+/// segment_velocity's formula (below) with the core factor f = core_factor<M>(x), or with
+/// f = 1 exactly if `Unit` (the Lamb–Oseen factor's value wherever x ≥ kLambOseenUnity<T>,
+/// so there the same bits); returns x = h²/r_c².
+template <CoreModel M, bool Unit, class T>
+[[gnu::always_inline]] inline T segment_velocity_terms(T px, T py, T pz, T ax, T ay, T az, T bx, T by, T bz,
+                                                       T gamma, T scale, T& u, T& v, T& w) {
   using Real = T;  // the precision of this evaluation
   const Real r1x = px - ax, r1y = py - ay, r1z = pz - az;
   const Real r2x = px - bx, r2y = py - by, r2z = pz - bz;
@@ -104,7 +97,7 @@ template <CoreModel M, class T>
   const Real lx = bx - ax, ly = by - ay, lz = bz - az;
   const Real len2 = lx * lx + ly * ly + lz * lz;  // |B − A|² (not s1 + s2 − 2 r1·r2: cancellation far away)
   const Real x = dot12 > near2 ? near2 * len2 * scale : cross2 * scale;  // h²/r_c²
-  const Real f = core_factor<M>(x);
+  const Real f = Unit ? Real(1) : core_factor<M>(x);
   const Real p12 = n1 * n2;
   const bool between = dot12 < Real(0);
   const Real num = between ? p12 - dot12 : Real(1);
@@ -113,6 +106,23 @@ template <CoreModel M, class T>
   u += k * cx;
   v += k * cy;
   w += k * cz;
+  return x;
+}
+
+/// Velocity induced at P by the straight segment A→B of circulation Γ, added to (u, v, w):
+///   v = Γ/(4π) · f(h²/r_c²) · (|r1|+|r2|)(|r1||r2| − r1·r2) / (|r1||r2| |r1×r2|²) · (r1×r2),
+/// r1 = P − A, r2 = P − B (algebraically the textbook r0·(r1/|r1| − r2/|r2|)/|r1×r2|² form
+/// [Katz & Plotkin eq. 2.68]); (|r1||r2| − r1·r2)/|r1×r2|² is evaluated as 1/(|r1||r2| + r1·r2)
+/// where r1·r2 ≥ 0 (no cancellation beyond the ends). h is the distance from P to the
+/// segment: to its line where P projects inside it, to the nearer end beyond the ends (a
+/// point far beyond a segment's end is not in its core, so far away every core model is
+/// the singular kernel, which the tree code's expansions assume).
+/// \param scale  1/(r_c² |B − A|²) [1/m⁴] (0 for a zero-length segment), so that
+///               h²/r_c² = |r1×r2|²·scale inside and |r_end|² |B − A|²·scale beyond an end
+template <CoreModel M, class T>
+[[gnu::always_inline]] inline void segment_velocity(T px, T py, T pz, T ax, T ay, T az, T bx, T by, T bz, T gamma, T scale,
+                             T& u, T& v, T& w) {
+  segment_velocity_terms<M, false>(px, py, pz, ax, ay, az, bx, by, bz, gamma, scale, u, v, w);
 }
 
 /// 1/(r_c² |B − A|²) for segment_velocity; 0 for a zero-length segment (no velocity).
