@@ -28,7 +28,8 @@ struct InfluenceRowCall {
   CoreModel model;
   double px, py, pz;  ///< collocation point [m]
   double nx, ny, nz;  ///< its unit normal
-  double* out;        ///< n · v_s for each segment [1/m] (velocity per unit circulation)
+  double* out;        ///< n · v_s for each segment s at out[s · out_stride] [1/m] (velocity per unit circulation)
+  std::size_t out_stride = 1;
 };
 
 namespace {  // TU-local: one copy per instruction set
@@ -39,11 +40,12 @@ void influence_row(const InfluenceRowCall& c) {
   const double *__restrict bx = c.bx, *__restrict by = c.by, *__restrict bz = c.bz;
   const double* __restrict scale = c.scale;
   double* __restrict out = c.out;
+  const std::size_t os = c.out_stride;
   const double px = c.px, py = c.py, pz = c.pz, nx = c.nx, ny = c.ny, nz = c.nz;
   auto terms = [&](std::size_t s) {
     double u = 0.0, v = 0.0, w = 0.0;
     segment_velocity<M, double>(px, py, pz, ax[s], ay[s], az[s], bx[s], by[s], bz[s], 1.0, scale[s], u, v, w);
-    out[s] = u * nx + v * ny + w * nz;
+    out[s * os] = u * nx + v * ny + w * nz;
   };
   std::size_t full = 0;
   if constexpr (M == CoreModel::LambOseen) {
@@ -61,7 +63,7 @@ void influence_row(const InfluenceRowCall& c) {
         double u = 0.0, v = 0.0, w = 0.0;
         x[j] = segment_velocity_terms<M, true, double>(px, py, pz, ax[s], ay[s], az[s], bx[s], by[s], bz[s], 1.0,
                                                        scale[s], u, v, w);
-        out[s] = u * nx + v * ny + w * nz;
+        out[s * os] = u * nx + v * ny + w * nz;
       }
       if (any_below(x, kLambOseenUnity<double>)) {
 #pragma omp simd

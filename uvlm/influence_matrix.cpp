@@ -102,10 +102,10 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d, bool las
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     // kRowBlock collocation points at a time, so that each column's entries are written
-    // as one contiguous run of the column-major matrix.
+    // as one contiguous run of the column-major matrix, from the terms' segment-major block.
     double* t = g.scratch.data() + stride * B * static_cast<std::size_t>(omp_get_thread_num());
     InfluenceRowCall call{g.size, g.ax.data(), g.ay.data(), g.az.data(), g.bx.data(), g.by.data(), g.bz.data(),
-                          g.scale.data(), m.bound_core().model, 0, 0, 0, 0, 0, 0, nullptr};
+                          g.scale.data(), m.bound_core().model, 0, 0, 0, 0, 0, 0, nullptr, B};
 #pragma omp for schedule(static)
     for (int b = 0; b < blocks; ++b) {
       const int i0 = b * B, rows = std::min(B, np - i0);
@@ -113,18 +113,19 @@ void build_influence(const VortexLatticeModel& m, VortexLatticeData& d, bool las
         const int i = i0 + r;
         call.px = d.collocation(0, i); call.py = d.collocation(1, i); call.pz = d.collocation(2, i);
         call.nx = d.normal(0, i); call.ny = d.normal(1, i); call.nz = d.normal(2, i);
-        call.out = t + stride * r;
+        call.out = t + r;
         influence_row_dispatch(call);
       }
       for (int k = 0; k < g.columns; ++k) {
         double* column = &d.influence(i0, c[k]);
+        const double *f = t + B * static_cast<std::size_t>(s0[k]), *o = t + B * static_cast<std::size_t>(s1[k]);
+        const double *e = t + B * static_cast<std::size_t>(s2[k]), *p = t + B * static_cast<std::size_t>(s3[k]);
         for (int r = 0; r < rows; ++r) {
-          const double* row = t + stride * r;
           double a = 0.0;  // summed as the ring's four sides were before, from zero
-          a += -row[s0[k]];
-          a += row[s1[k]];
-          a += row[s2[k]];
-          a += -row[s3[k]];
+          a += -f[r];
+          a += o[r];
+          a += e[r];
+          a += -p[r];
           column[r] = a;
         }
       }

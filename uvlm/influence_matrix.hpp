@@ -35,7 +35,9 @@ struct InfluenceSegments {
   int columns = 0;
   /// Collocation points whose rows a thread computes together.
   static constexpr int kRowBlock = 8;
-  /// threads × kRowBlock rows of segment terms t_s, each row_stride() long.
+  /// Per thread, the segment terms t_s of kRowBlock rows, segment-major (the kRowBlock
+  /// rows' terms of one segment next to each other: entry s·kRowBlock + r), row_stride()
+  /// segments long: a column's kRowBlock entries are then read from one cache line per side.
   std::vector<double> scratch;
   std::size_t row_stride() const { return (capacity + 7) / 8 * 8; }
   std::size_t capacity = 0;

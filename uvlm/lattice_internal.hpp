@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <exception>
+#include <functional>
 
 namespace flapsim::uvlm::detail {
 
@@ -49,6 +51,41 @@ void for_target_chunks(std::size_t n, std::size_t interactions, Sum&& sum) {
     const std::size_t i1 = std::min(n, 2 * (pairs * (t + 1) / threads));
     if (i1 > i0) sum(i0, i1 - i0);
   }
+}
+
+/// solo() on one thread while the team sums chunks of the targets [0, n) (sum(i0, count)
+/// as for_target_chunks, chunks handed out one by one, so the thread of solo() joins in when
+/// it is done): work that does not depend on solo()'s result fills the time a serial
+/// solo() would leave the other threads idle. Each target's sum is the same whatever the
+/// chunking (for_target_chunks). One thread, or too little work: solo() then the sums.
+/// An exception of solo() is rethrown after the region.
+template <class Sum>
+void alongside_target_chunks(std::size_t n, std::size_t interactions, const std::function<void()>& solo, Sum&& sum) {
+  if (interactions < kTargetChunkThreshold || omp_in_parallel() || omp_get_max_threads() == 1) {
+    solo();
+    if (n > 0) sum(std::size_t{0}, n);
+    return;
+  }
+  constexpr std::size_t kChunk = 16;  // targets per chunk (even: the kernel takes two at a time)
+  const long chunks = static_cast<long>((n + kChunk - 1) / kChunk);
+  std::exception_ptr failure;
+#pragma omp parallel
+  {
+#pragma omp single nowait
+    {
+      try {
+        solo();
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    }
+#pragma omp for schedule(dynamic, 1) nowait
+    for (long k = 0; k < chunks; ++k) {
+      const std::size_t i0 = static_cast<std::size_t>(k) * kChunk;
+      sum(i0, std::min(kChunk, n - i0));
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
 }
 
 /// The trailing-edge vortex's least distance behind the edge, as a fraction of the last
@@ -163,6 +200,17 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
 /// (model.bound_core(), 1e-11 m for a core of 1e-6 of a 10 mm chord) the kernel's velocity
 /// grows as Γ 1.26 h/(2π r_c²), about 1 m/s there; so it is taken out, as the sum held it.
 void induced_at_bound_midpoints(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n);
+
+/// The midpoints of the first n bound segments as d.eval's first n points.
+void set_bound_midpoints(VortexLatticeData& d, std::size_t n);
+
+/// The wake's part of induced_at_eval_points at d.eval's first n points, summed by the team
+/// while one thread runs solo() (alongside_target_chunks); a later induced_at_eval_points
+/// at the same n points with include_bound then adds the bound segments' part only (the
+/// same sums in the same order at each point). False (nothing done, solo() not run) where
+/// the far wake's tree would come between the sums.
+bool wake_at_eval_points_alongside(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
+                                   WingPoints points, const std::function<void()>& solo);
 
 /// Leading-edge sheet (LeadingEdge::Shed; leading_edge_sheet.hpp, leading_edge_shedding.cpp).
 /// Place the release row from the edge's path through the air in half a step (the free

@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -197,65 +198,126 @@ void build_bound_segments(const VortexLatticeModel& m, VortexLatticeData& d) {
   push_ring_segments(m, d.ring_nodes, G, d.bound_segments, d.trailing_edge_segments);
 }
 
+namespace {
+
+/// The sums of induced_at_eval_points over chunks of d.eval's points (lattice_internal.hpp).
+struct EvalSums {
+  const VortexLatticeModel& m;
+  VortexLatticeData& d;
+  int slot;     ///< the wing's point set (WingPoints), −1 for none
+  bool held;    ///< the older wake's part from its record
+  bool record;  ///< the older wake's part recorded
+
+  EvalSums(const VortexLatticeModel& model, VortexLatticeData& data, std::size_t n, WingPoints points)
+      : m(model), d(data), slot(static_cast<int>(points)) {
+    const bool apart = slot >= 0 && old_wake_kept_apart(m, d);
+    held = apart && d.old_wake_held && d.old_wake[slot].size == n;
+    record = apart && !held;
+  }
+  bool far() const { return d.far_tree_rows > 0 && d.far_wake_segments.size() > 0; }
+  std::size_t wake_segments() const {
+    return (held ? 0 : d.wake_segments.size()) + d.young_wake_segments.size() + d.wake_edge_segments.size();
+  }
+  std::size_t bound_segments() const { return d.bound_segments.size() + d.trailing_edge_segments.size(); }
+  /// Before the wake's sums: the single-precision copies.
+  void prepare_wake() {
+    if (m.single_precision_wake && !held) d.wake_segments.update_single_precision();
+    if (d.young_wake_segments.size() > 0) d.young_wake_segments.update_single_precision();
+  }
+  /// The wake's direct sums (the whole or the older part held, then the younger rows and
+  /// the edge's segments) at points i0 … i0 + c − 1.
+  void wake(std::size_t i0, std::size_t c) {
+    PointSet& e = d.eval;
+    const double *x = e.x.data() + i0, *y = e.y.data() + i0, *z = e.z.data() + i0;
+    double *u = e.u.data() + i0, *v = e.v.data() + i0, *w = e.w.data() + i0;
+    if (held) {
+      d.old_wake[slot].held(i0, c, x, y, z, u, v, w);
+    } else if (m.single_precision_wake) {
+      add_induced_velocity_single(d.wake_segments, x, y, z, c, u, v, w, m.core);
+    } else {
+      add_induced_velocity(d.wake_segments, x, y, z, c, u, v, w, m.core);
+    }
+    if (record) d.old_wake[slot].record(i0, c, x, y, z, u, v, w);  // the older wake's part alone
+    if (d.young_wake_segments.size() > 0)
+      add_induced_velocity_single(d.young_wake_segments, x, y, z, c, u, v, w, m.core);
+    if (d.wake_edge_segments.size() > 0) add_induced_velocity(d.wake_edge_segments, x, y, z, c, u, v, w, m.core);
+  }
+  /// After the wake's sums at all n points.
+  void finish_wake(std::size_t n) {
+    if (record) d.old_wake[slot].finish(n);
+    if (slot == static_cast<int>(WingPoints::Collocation) && held) ++d.solver_counts.held_old_wake;
+  }
+  /// The bound and trailing-edge segments' sums at points i0 … i0 + c − 1.
+  void bound(std::size_t i0, std::size_t c) {
+    PointSet& e = d.eval;
+    const double *x = e.x.data() + i0, *y = e.y.data() + i0, *z = e.z.data() + i0;
+    double *u = e.u.data() + i0, *v = e.v.data() + i0, *w = e.w.data() + i0;
+    add_induced_velocity(d.bound_segments, x, y, z, c, u, v, w, m.bound_core());
+    add_induced_velocity(d.trailing_edge_segments, x, y, z, c, u, v, w, m.core);
+  }
+};
+
+}  // namespace
+
 void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
                             bool include_bound, WingPoints points) {
   d.eval.size = n;
+  if (include_bound && d.wake_summed_at_eval == n && n > 0) {
+    // The wake's part is there already (wake_at_eval_points_alongside): the bound's added.
+    d.wake_summed_at_eval = 0;
+    EvalSums sums(m, d, n, WingPoints::None);
+    for_target_chunks(n, n * sums.bound_segments(), [&](std::size_t i0, std::size_t c) { sums.bound(i0, c); });
+    return;
+  }
+  d.wake_summed_at_eval = 0;
   d.eval.zero_velocity();
   PointSet& e = d.eval;
   // Wake (and leading-edge sheet: wake_segments holds both), far wake (tree), then bound
   // and trailing-edge segments: at each point the sums in this order, the direct ones in
   // one parallel region unless the far wake's tree comes between them (lattice_internal.hpp).
-  const bool far = d.far_tree_rows > 0 && d.far_wake_segments.size() > 0;
+  EvalSums sums(m, d, n, points);
+  const bool far = sums.far();
   const bool bound_with_wake = include_bound && !far;
-  // The older wake's part (old_wake_hold.hpp): recorded, or taken from the record.
-  const int slot = static_cast<int>(points);
-  const bool apart = slot >= 0 && old_wake_kept_apart(m, d);
-  const bool held = apart && d.old_wake_held && d.old_wake[slot].size == n;
-  const bool record = apart && !held;
-  if (held && points == WingPoints::Collocation) ++d.solver_counts.held_old_wake;
-  auto direct = [&](bool wake, bool bound) {
-    const std::size_t segments =
-        (wake ? (held ? 0 : d.wake_segments.size()) + d.young_wake_segments.size() + d.wake_edge_segments.size() : 0) +
-        (bound ? d.bound_segments.size() + d.trailing_edge_segments.size() : 0);
-    if (segments == 0) return;
+  sums.prepare_wake();
+  const std::size_t segments = sums.wake_segments() + (bound_with_wake ? sums.bound_segments() : 0);
+  if (segments > 0)
     for_target_chunks(n, n * segments, [&](std::size_t i0, std::size_t c) {
-      const double *x = e.x.data() + i0, *y = e.y.data() + i0, *z = e.z.data() + i0;
-      double *u = e.u.data() + i0, *v = e.v.data() + i0, *w = e.w.data() + i0;
-      if (wake && held) {
-        d.old_wake[slot].held(i0, c, x, y, z, u, v, w);
-      } else if (wake && m.single_precision_wake) {
-        add_induced_velocity_single(d.wake_segments, x, y, z, c, u, v, w, m.core);
-      } else if (wake) {
-        add_induced_velocity(d.wake_segments, x, y, z, c, u, v, w, m.core);
-      }
-      if (wake && record) d.old_wake[slot].record(i0, c, x, y, z, u, v, w);  // the older wake's part alone
-      if (wake && d.young_wake_segments.size() > 0)
-        add_induced_velocity_single(d.young_wake_segments, x, y, z, c, u, v, w, m.core);
-      if (wake && d.wake_edge_segments.size() > 0)
-        add_induced_velocity(d.wake_edge_segments, x, y, z, c, u, v, w, m.core);
-      if (bound) {
-        add_induced_velocity(d.bound_segments, x, y, z, c, u, v, w, m.bound_core());
-        add_induced_velocity(d.trailing_edge_segments, x, y, z, c, u, v, w, m.core);
-      }
+      sums.wake(i0, c);
+      if (bound_with_wake) sums.bound(i0, c);
     });
-    if (wake && record) d.old_wake[slot].finish(n);
-  };
-  if (m.single_precision_wake && !held) d.wake_segments.update_single_precision();
-  if (d.young_wake_segments.size() > 0) d.young_wake_segments.update_single_precision();
-  direct(true, bound_with_wake);
+  sums.finish_wake(n);
   if (far) {
     add_far_wake_velocity(d, e.x.data(), e.y.data(), e.z.data(), n, e.u.data(), e.v.data(), e.w.data());
-    if (include_bound) direct(false, true);
+    if (include_bound)
+      for_target_chunks(n, n * sums.bound_segments(), [&](std::size_t i0, std::size_t c) { sums.bound(i0, c); });
   }
 }
 
-void induced_at_bound_midpoints(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n) {
+bool wake_at_eval_points_alongside(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
+                                   WingPoints points, const std::function<void()>& solo) {
+  EvalSums sums(m, d, n, points);
+  if (sums.far() || n == 0) return false;
+  d.eval.size = n;
+  d.eval.zero_velocity();
+  sums.prepare_wake();
+  alongside_target_chunks(n, n * sums.wake_segments(), solo, [&](std::size_t i0, std::size_t c) { sums.wake(i0, c); });
+  sums.finish_wake(n);
+  d.wake_summed_at_eval = n;
+  return true;
+}
+
+void set_bound_midpoints(VortexLatticeData& d, std::size_t n) {
   const auto& S = d.bound_segments;
   for (std::size_t s = 0; s < n; ++s) {
     d.eval.x[s] = 0.5 * (S.ax()[s] + S.bx()[s]);
     d.eval.y[s] = 0.5 * (S.ay()[s] + S.by()[s]);
     d.eval.z[s] = 0.5 * (S.az()[s] + S.bz()[s]);
   }
+}
+
+void induced_at_bound_midpoints(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n) {
+  const auto& S = d.bound_segments;
+  if (d.wake_summed_at_eval != n) set_bound_midpoints(d, n);  // else set, and the wake summed there
   induced_at_eval_points(m, d, n, true, WingPoints::Midpoints);
   for (std::size_t s = 0; s < n; ++s) {
     const Eigen::Vector3d own = segment_velocity(S, s, d.eval.position(s), m.bound_core());
@@ -437,7 +499,20 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   for (int k = 0; k < np; ++k)
     d.rhs(k) = -(free_stream - d.surface_velocity.col(k) + d.wake_velocity.col(k)).dot(d.normal.col(k));
   if (shed) detail::add_leading_edge_ring_to_rhs(m, d);
-  solve_circulations(m, d);  // the sheet's columns below need the factorisation of this matrix: direct
+  // The wake's velocity at the loads' bound midpoints does not depend on the circulations:
+  // the other threads sum it while one solves them (GMRES is serial). Not with a shed
+  // leading edge, whose sheet may change after the solve.
+  bool alongside = false;
+  if (!shed) {
+    detail::build_bound_segments(m, d);  // their places (the circulations: the last solve's)
+    const std::size_t mid = m.load_method == LoadMethod::Bernoulli
+                                ? static_cast<std::size_t>(m.chordwise) * m.spanwise  // aero_loads.cpp
+                                : d.bound_segments.size();                            // kutta_joukowski_loads.cpp
+    detail::set_bound_midpoints(d, mid);
+    alongside = detail::wake_at_eval_points_alongside(m, d, mid, detail::WingPoints::Midpoints,
+                                                      [&] { solve_circulations(m, d); });
+  }
+  if (!alongside) solve_circulations(m, d);  // the sheet's columns below need the factorisation of this matrix: direct
   if (shed && detail::shed_leading_edge_vorticity(m, d)) {  // strips beyond LESP_crit shed
     detail::build_sheet_segments(m, d, detail::WakeView::Wing);
     wake_velocity_at_collocation(m, d);

@@ -327,6 +327,9 @@ struct VortexLatticeData {
   LeadingEdgeSheet le_sheet;
   SegmentSet horseshoe;  ///< the steady solve's unit horseshoe (scratch)
   PointSet eval;
+  /// The first this many points of eval hold the bound segments' midpoints with the wake's
+  /// velocity summed there while the circulations were solved (solve; 0: none).
+  std::size_t wake_summed_at_eval = 0;
 
   PanelLoads loads;
 
