@@ -57,14 +57,14 @@ void for_target_chunks(std::size_t n, std::size_t interactions, Sum&& sum) {
 /// as for_target_chunks, chunks handed out one by one, so the thread of solo() joins in when
 /// it is done): work that does not depend on solo()'s result fills the time a serial
 /// solo() would leave the other threads idle. Each target's sum is the same whatever the
-/// chunking (for_target_chunks). One thread, or too little work: solo() then the sums.
-/// An exception of solo() is rethrown after the region.
+/// chunking (for_target_chunks). One thread, or too little work: the sums, then solo().
+/// An exception of solo() is rethrown after the region. Returns whether a team ran them.
 template <class Sum>
-void alongside_target_chunks(std::size_t n, std::size_t interactions, const std::function<void()>& solo, Sum&& sum) {
+bool alongside_target_chunks(std::size_t n, std::size_t interactions, const std::function<void()>& solo, Sum&& sum) {
   if (interactions < kTargetChunkThreshold || omp_in_parallel() || omp_get_max_threads() == 1) {
+    if (n > 0) sum(std::size_t{0}, n);  // then solo(): its exception after the sums, as in a team
     solo();
-    if (n > 0) sum(std::size_t{0}, n);
-    return;
+    return false;
   }
   constexpr std::size_t kChunk = 16;  // targets per chunk (even: the kernel takes two at a time)
   const long chunks = static_cast<long>((n + kChunk - 1) / kChunk);
@@ -86,6 +86,7 @@ void alongside_target_chunks(std::size_t n, std::size_t interactions, const std:
     }
   }
   if (failure) std::rethrow_exception(failure);
+  return true;
 }
 
 /// The trailing-edge vortex's least distance behind the edge, as a fraction of the last

@@ -300,7 +300,8 @@ bool wake_at_eval_points_alongside(const VortexLatticeModel& m, VortexLatticeDat
   d.eval.size = n;
   d.eval.zero_velocity();
   sums.prepare_wake();
-  alongside_target_chunks(n, n * sums.wake_segments(), solo, [&](std::size_t i0, std::size_t c) { sums.wake(i0, c); });
+  if (alongside_target_chunks(n, n * sums.wake_segments(), solo, [&](std::size_t i0, std::size_t c) { sums.wake(i0, c); }))
+    ++d.solver_counts.beside_wake_sums;
   sums.finish_wake(n);
   d.wake_summed_at_eval = n;
   return true;

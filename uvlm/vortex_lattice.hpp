@@ -215,6 +215,9 @@ struct LatticeSolverCounts {
   long iterative_solves = 0;  ///< solves by GMRES
   long iterations = 0;        ///< their GMRES iterations
   long held_old_wake = 0;     ///< solves that took the older wake's sums from the records (old_wake_hold.hpp)
+  /// solves whose circulations were solved while the other threads summed the wake at the
+  /// loads' points (detail::alongside_target_chunks)
+  long beside_wake_sums = 0;
   double worst_residual = 0;  ///< largest relative residual a GMRES solve returned
 };
 
