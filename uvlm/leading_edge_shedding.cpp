@@ -80,6 +80,30 @@ bool update_lesp(const VortexLatticeModel& m, VortexLatticeData& d, Eigen::Vecto
   return joined;
 }
 
+/// s.at_collocation's velocities: zeroed, then the velocity of each segment
+/// (a, b, gamma, core) of `segments` at every collocation point, one segment at a time, in
+/// their order: at each point the sum of the segments' velocities evaluated alone, each as a
+/// set of one (biot_savart.hpp segment_velocity), added in that order.
+struct OneSegment {
+  Eigen::Vector3d a, b;
+  double gamma;
+  VortexCore core;
+};
+template <std::size_t N>
+void segments_at_collocation(const VortexLatticeModel& m, VortexLatticeData& d, const OneSegment (&segments)[N]) {
+  LeadingEdgeSheet& s = d.le_sheet;
+  PointSet& p = s.at_collocation;
+  const int np = m.panels();
+  for (int k = 0; k < np; ++k) p.set(static_cast<std::size_t>(k), d.collocation.col(k));
+  p.size = static_cast<std::size_t>(np);
+  p.zero_velocity();
+  for (const OneSegment& g : segments) {
+    s.unit_ring.clear();
+    s.unit_ring.push(g.a, g.b, g.gamma);
+    add_induced_velocity(s.unit_ring, p, g.core);
+  }
+}
+
 /// Normal velocity at every collocation point of the unit leading-edge ring of strip j:
 /// release row R_(j+1) → R_j, legs R → first bound vortex (the wake's core, as the sheet's
 /// segments), and the segment on the first bound vortex (the bound core, as the bound segment).
@@ -88,33 +112,22 @@ void unit_ring_column(const VortexLatticeModel& m, VortexLatticeData& d, int j) 
   const std::size_t base = static_cast<std::size_t>(s.rows) * (m.spanwise + 1);
   const Eigen::Vector3d r0 = s.nodes.position(base + j), r1 = s.nodes.position(base + j + 1);
   const Eigen::Vector3d a0 = d.ring_nodes.col(m.node(0, j)), a1 = d.ring_nodes.col(m.node(0, j + 1));
-  const VortexCore bound = m.bound_core();
-  SegmentSet& ring = s.unit_ring;  // each segment summed alone, as a set of one
-  ring.clear();
-  ring.push(r1, r0, 1.0);
-  ring.push(r0, a0, 1.0);
-  ring.push(a1, r1, 1.0);
-  ring.push(a0, a1, 1.0);
-  for (int k = 0; k < m.panels(); ++k) {
-    const Eigen::Vector3d p = d.collocation.col(k);
-    const Eigen::Vector3d v = segment_velocity(ring, 0, p, m.core) + segment_velocity(ring, 1, p, m.core) +
-                              segment_velocity(ring, 2, p, m.core) + segment_velocity(ring, 3, p, bound);
-    s.columns(k, j) = v.dot(d.normal.col(k));
-  }
+  const OneSegment ring[4] = {{r1, r0, 1.0, m.core}, {r0, a0, 1.0, m.core}, {a1, r1, 1.0, m.core},
+                              {a0, a1, 1.0, m.bound_core()}};
+  segments_at_collocation(m, d, ring);
+  for (int k = 0; k < m.panels(); ++k) s.columns(k, j) = s.at_collocation.velocity(k).dot(d.normal.col(k));
 }
 
 }  // namespace
 
 void add_leading_edge_ring_to_rhs(const VortexLatticeModel& m, VortexLatticeData& d) {
   LeadingEdgeSheet& s = d.le_sheet;
-  const VortexCore bound = m.bound_core();
   for (int j = 0; j < m.spanwise; ++j) {
     const double g = s.accepted(j);
     if (g == 0.0) continue;
-    s.unit_ring.clear();
-    s.unit_ring.push(d.ring_nodes.col(m.node(0, j)), d.ring_nodes.col(m.node(0, j + 1)), g);
-    for (int k = 0; k < m.panels(); ++k)
-      d.rhs(k) -= segment_velocity(s.unit_ring, 0, d.collocation.col(k), bound).dot(d.normal.col(k));
+    const OneSegment edge[1] = {{d.ring_nodes.col(m.node(0, j)), d.ring_nodes.col(m.node(0, j + 1)), g, m.bound_core()}};
+    segments_at_collocation(m, d, edge);
+    for (int k = 0; k < m.panels(); ++k) d.rhs(k) -= s.at_collocation.velocity(k).dot(d.normal.col(k));
   }
 }
 

@@ -43,6 +43,7 @@ void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
   gamma0.setZero(np);
   border_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(ns);
   unit_ring.reserve(4);
+  at_collocation.reserve(static_cast<std::size_t>(np));
 }
 
 namespace detail {
