@@ -78,7 +78,7 @@ namespace {
 /// through detail::leading_edge_force into loads.leading_edge_force.
 void add_leading_edge_forces(const VortexLatticeModel& m, VortexLatticeData& d) {
   const int nc = m.chordwise, ns = m.spanwise;
-  const std::size_t n = static_cast<std::size_t>(nc) * ns;
+  const std::size_t n = detail::loads_midpoints(LoadMethod::Bernoulli, m, d);  // nc·ns
   const auto& S = d.bound_segments;
   detail::induced_at_bound_midpoints(m, d, n);  // each segment's own velocity left out
   d.loads.leading_edge_force.setZero();

@@ -16,7 +16,7 @@ void compute_kutta_joukowski_loads(const VortexLatticeModel& m, VortexLatticeDat
   d.panel_gamma_gradient.setZero();
   // Wake, trailing-edge and bound velocity at the midpoints, each segment's own left out
   // (lattice_internal.hpp: rounding puts the midpoint inside its tiny core, off its line).
-  detail::induced_at_bound_midpoints(m, d, S.size());
+  detail::induced_at_bound_midpoints(m, d, detail::loads_midpoints(LoadMethod::KuttaJoukowski, m, d));  // all of S
 
   for (int k = 0; k < m.panels(); ++k)
     d.loads.force.col(k) = d.rho * detail::gamma_rate(d, k) * d.area(k) * d.normal.col(k);

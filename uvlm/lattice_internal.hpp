@@ -202,6 +202,16 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
 /// grows as Γ 1.26 h/(2π r_c²), about 1 m/s there; so it is taken out, as the sum held it.
 void induced_at_bound_midpoints(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n);
 
+/// The bound segments whose midpoints the loads evaluate (induced_at_bound_midpoints): the
+/// spanwise ones of rows q < nc (the first nc·ns of build_bound_segments) for the Bernoulli
+/// route's leading-edge force (aero_loads.cpp), all of them for Kutta–Joukowski
+/// (kutta_joukowski_loads.cpp). By the route, not the model's load_method: a route may be
+/// called on its own.
+inline std::size_t loads_midpoints(LoadMethod route, const VortexLatticeModel& m, const VortexLatticeData& d) {
+  return route == LoadMethod::Bernoulli ? static_cast<std::size_t>(m.chordwise) * m.spanwise
+                                        : d.bound_segments.size();
+}
+
 /// The midpoints of the first n bound segments as d.eval's first n points.
 void set_bound_midpoints(VortexLatticeData& d, std::size_t n);
 

@@ -80,15 +80,17 @@ bool update_lesp(const VortexLatticeModel& m, VortexLatticeData& d, Eigen::Vecto
   return joined;
 }
 
-/// s.at_collocation's velocities: zeroed, then the velocity of each segment
-/// (a, b, gamma, core) of `segments` at every collocation point, one segment at a time, in
-/// their order: at each point the sum of the segments' velocities evaluated alone, each as a
-/// set of one (biot_savart.hpp segment_velocity), added in that order.
+/// A segment A→B of circulation Γ [m²/s] with its core.
 struct OneSegment {
   Eigen::Vector3d a, b;
   double gamma;
   VortexCore core;
 };
+
+/// s.at_collocation's velocities: zeroed, then the velocity of each of `segments` at every
+/// collocation point, one segment at a time, in their order: at each point the sum of the
+/// segments' velocities evaluated alone, each as a set of one (biot_savart.hpp
+/// segment_velocity), added in that order.
 template <std::size_t N>
 void segments_at_collocation(const VortexLatticeModel& m, VortexLatticeData& d, const OneSegment (&segments)[N]) {
   LeadingEdgeSheet& s = d.le_sheet;

@@ -506,9 +506,7 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   bool alongside = false;
   if (!shed) {
     detail::build_bound_segments(m, d);  // their places (the circulations: the last solve's)
-    const std::size_t mid = m.load_method == LoadMethod::Bernoulli
-                                ? static_cast<std::size_t>(m.chordwise) * m.spanwise  // aero_loads.cpp
-                                : d.bound_segments.size();                            // kutta_joukowski_loads.cpp
+    const std::size_t mid = detail::loads_midpoints(m.load_method, m, d);
     detail::set_bound_midpoints(d, mid);
     alongside = detail::wake_at_eval_points_alongside(m, d, mid, detail::WingPoints::Midpoints,
                                                       [&] { solve_circulations(m, d); });
