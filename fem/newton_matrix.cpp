@@ -20,20 +20,29 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
     llt_analysed_ = true;
     llt_.factorize(A);
     if (llt_.info() == Eigen::Success) {
-      using_lu_ = false;
+      solver_ = Solver::Llt;
       valid_ = true;
       return true;
     }
     // Not positive definite (the symmetrised tangent under large moments on nodes of
-    // small rotary inertia): the same matrix by LU.
+    // small rotary inertia; a thin film in compression): the same matrix by LDLᵀ, which
+    // takes an indefinite matrix as long as no pivot vanishes, else by LU.
     ++fallbacks_;
+    if (!ldlt_analysed_) ldlt_.analyzePattern(A);
+    ldlt_analysed_ = true;
+    ldlt_.factorize(A);
+    if (ldlt_.info() == Eigen::Success) {
+      solver_ = Solver::Ldlt;
+      valid_ = true;
+      return true;
+    }
     full_ = A.selfadjointView<Eigen::Lower>();
-    using_lu_ = true;
+    solver_ = Solver::Lu;
     if (!lu_analysed_) lu_.analyzePattern(full_);
     lu_analysed_ = true;
     lu_.factorize(full_);
   } else {
-    using_lu_ = true;
+    solver_ = Solver::Lu;
     if (!lu_analysed_) lu_.analyzePattern(A);
     lu_analysed_ = true;
     lu_.factorize(A);
@@ -51,10 +60,11 @@ void NewtonMatrix::solve(const Eigen::VectorXd& r, const Eigen::Matrix3d& frame,
   const bool turn = rotatable_ && !S.isIdentity(0.0);
   rhs_ = r;
   if (turn) rotate(rhs_, S.transpose());
-  if (using_lu_)
-    x = lu_.solve(rhs_);
-  else
-    x = llt_.solve(rhs_);
+  switch (solver_) {
+    case Solver::Llt: x = llt_.solve(rhs_); break;
+    case Solver::Ldlt: x = ldlt_.solve(rhs_); break;
+    case Solver::Lu: x = lu_.solve(rhs_); break;
+  }
   if (turn) rotate(x, S);
 }
 

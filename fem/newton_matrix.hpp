@@ -6,7 +6,11 @@
 ///
 /// Factorisation: CHOLMOD supernodal LLᵀ of the symmetrised tangent (TangentForm::
 /// SymmetricLower); if LLᵀ finds the matrix not positive definite, the same matrix is
-/// factorised by sparse LU instead (counted as a fallback). The consistent tangent
+/// factorised by CHOLMOD's simplicial LDLᵀ (no pivoting: any nonsingular matrix whose
+/// pivots do not vanish), and by sparse LU only if that fails too (either counted as a
+/// fallback): the 25 µm film wing's tangent is indefinite in many steps (docs/fsi.md,
+/// "Film wings"), and Eigen's sparse LU of it took about a third of that run's time (perf). The
+/// consistent tangent
 /// (TangentForm::Consistent) always goes to sparse LU.
 ///
 /// Frame rotation. A wing that is turned rigidly by S (every node x ← S x, R ← S R) has
@@ -54,10 +58,13 @@ class NewtonMatrix {
 
   TangentForm form_;
   bool rotatable_ = true;  ///< free DOFs come as whole nodes (six consecutive)
+  enum class Solver { Llt, Ldlt, Lu };
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt_;
+  Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt_;
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
   SparseMatrix full_;  ///< both triangles of a symmetric A, for the LU fallback
-  bool llt_analysed_ = false, lu_analysed_ = false, using_lu_ = false, valid_ = false;
+  bool llt_analysed_ = false, ldlt_analysed_ = false, lu_analysed_ = false, valid_ = false;
+  Solver solver_ = Solver::Llt;
   Eigen::Matrix3d frame_ = Eigen::Matrix3d::Identity();
   double h_ = 0.0;
   long fallbacks_ = 0;

@@ -247,7 +247,15 @@ inline constexpr std::array kRunReport = {
                "halves (up to {max_structural_pieces} pieces): the chain moves too fast for the time step "
                "there; check the results with more "
                "steps_per_cycle (docs/multibody.md, \"Step halving\")",
-               [](const RunResults& r) { return r.has("split_structural_steps"); }},
+               [](const RunResults& r) {
+                 return r.has("split_structural_steps") && r.text("structure_kind") != "fem";
+               }},
+    ReportLine{"structure: {split_structural_steps} FEM steps did not converge whole and were solved in "
+               "pieces (up to {max_structural_pieces}): motions of the mesh's scale faster than the time "
+               "step (a thin film's wrinkles) there (docs/fsi.md, \"Step halving of the FEM\")",
+               [](const RunResults& r) {
+                 return r.has("split_structural_steps") && r.text("structure_kind") == "fem";
+               }},
     // Only for a wing that reverses its stroke: a revolving wing or a plate held in a free
     // stream has no rotation phase ("base nan, tip nan" read as a failure).
     ReportLine{"rotation phase: base {base_rotation_phase}, tip {tip_rotation_phase}; "

@@ -69,6 +69,12 @@ void FemStructureData::initialize(double t0) {
     v0.segment<3>(fem::dof_index(n, fem::RX)) = p.angular_velocity;
   }
   set_external_loads(t0);
+  accepted_loads_ = loads_;
+  pieces_ = 1;
+  steps_without_failure_ = 0;
+  failed_this_step_ = false;
+  split_steps_ = 0;
+  max_pieces_ = 1;
   try {
     dynamics_ = std::make_unique<fem::DynamicsData>(model_.dynamics, state, v0, loads_);
   } catch (const std::exception& e) {
@@ -117,14 +123,41 @@ void FemStructureData::read_trial() {
   }
 }
 
+bool FemStructureData::solve_in_pieces(double dt, int pieces, std::string& failure) {
+  const double t0 = accepted_.time;
+  const double h = dt / pieces;
+  for (int k = 1; k <= pieces; ++k) {
+    const double t = k == pieces ? t0 + dt : t0 + k * h;
+    const fem::PrescribedMotion motion = clamp_motion(model_, t);
+    const Eigen::VectorXd* f = &loads_;
+    if (k < pieces) {  // loads linear in time over the step, from the accepted step's
+      const double s = static_cast<double>(k) / pieces;
+      piece_loads_ = accepted_loads_ + s * (loads_ - accepted_loads_);
+      f = &piece_loads_;
+    }
+    // A sub-iteration after the first starts Newton from the last answer of this step (of
+    // this piece): the answer to the given loads is the same to the solver's tolerance
+    // (fem_structure.hpp).
+    const fem::StepResult r =
+        fem::step(model_.dynamics, *dynamics_, h, *f, &motion, fem::StepStart::PreviousSolution, accuracy_);
+    if (!r.converged) {
+      failure = r.failure;
+      return false;
+    }
+  }
+  return true;
+}
+
 void FemStructureData::solve(double dt) {
-  restore_accepted();
-  const fem::PrescribedMotion motion = clamp_motion(model_, accepted_.time + dt);
-  // A sub-iteration after the first starts Newton from the last answer of this step: the
-  // answer to the given loads is the same to the solver's tolerance (fem_structure.hpp).
-  const fem::StepResult r =
-      fem::step(model_.dynamics, *dynamics_, dt, loads_, &motion, fem::StepStart::PreviousSolution, accuracy_);
-  if (!r.converged) throw StructureFailure("FEM: " + r.failure);
+  std::string failure;
+  for (;;) {
+    restore_accepted();
+    if (solve_in_pieces(dt, pieces_, failure)) break;
+    if (pieces_ >= kMaxFemStepPieces)
+      throw StructureFailure("FEM: " + failure + " (the step in " + std::to_string(pieces_) + " pieces)");
+    pieces_ *= 2;
+    failed_this_step_ = true;
+  }
   read_trial();
   pose_is_trial_ = true;
 }
@@ -172,6 +205,15 @@ void FemStructureData::relax(double omega) {
 void FemStructureData::accept() {
   accepted_ = Saved{dynamics_->state, dynamics_->velocity, dynamics_->acceleration, dynamics_->pseudo_acceleration,
                     dynamics_->time};
+  accepted_loads_ = loads_;
+  if (pieces_ > 1) ++split_steps_;
+  max_pieces_ = std::max(max_pieces_, pieces_);
+  steps_without_failure_ = failed_this_step_ ? 0 : steps_without_failure_ + 1;
+  failed_this_step_ = false;
+  if (pieces_ > 1 && steps_without_failure_ >= kFemStepsBeforeJoining) {
+    pieces_ /= 2;
+    steps_without_failure_ = 0;
+  }
 }
 
 }  // namespace flapsim::fsi

@@ -15,6 +15,16 @@
 /// coupled_dynamics_options puts at 1 % of the coupling's; the accepted state is ŝ, the
 /// FEM's own converged step. An intermediate solve may stop at a looser tolerance
 /// (set_solve_accuracy: the coupled step asks for 1 % of its current change; coupled_step.hpp).
+///
+/// Step halving: a step whose Newton fails is redone in 2, 4, … up to kMaxFemStepPieces equal
+/// pieces, the loads interpolated linearly in time from the accepted step's to the new ones
+/// (the clamp driven at each piece's end). A thin film wrinkles under compression faster than
+/// a coupled step (its tangent turns indefinite at the mesh's wavelength: docs/fsi.md, "Film
+/// wings"); in pieces of a few µs the step's inertia c_M ρt outweighs the negative geometric
+/// stiffness and Newton converges. The count of pieces is kept for the step's sub-iterations
+/// (the structure's answer to given loads then stays one function of them), carried into the
+/// next step, and halved again after kFemStepsBeforeJoining steps solved without a failure. A
+/// run that never fails is solved whole, unchanged to the bit.
 
 #include <Eigen/Core>
 
@@ -32,6 +42,12 @@ namespace flapsim::fsi {
 
 /// The FEM, which of its nodes the base drives, and the lattice on its shell. Built in
 /// place and never copied (the dynamics model points into the co-rotational model).
+/// Most pieces one coupled step of the FEM is split into (a 25 µm film at 80 steps a 20 Hz
+/// cycle needs pieces of ~10 µs: 64), and the steps solved without a failure after which the
+/// count of pieces is halved again.
+inline constexpr int kMaxFemStepPieces = 256;
+inline constexpr int kFemStepsBeforeJoining = 4;
+
 class FemStructureModel : public StructureModel {
  public:
   /// \param structural     mesh (in the wing frame W, origin at the pivot) and materials
@@ -98,8 +114,8 @@ class FemStructureData : public StructureData {
   void relax(double omega) override;
   void accept() override;
   int interface_size() const override { return 3 * model_.corotational.num_nodes(); }
-  long split_steps() const override { return 0; }
-  int max_step_pieces() const override { return 1; }
+  long split_steps() const override { return split_steps_; }
+  int max_step_pieces() const override { return max_pieces_; }
   StructureReadout readout() const override;  // fem_readout.cpp
   void joint_angles(Eigen::VectorXd& q) const override { q.resize(0); }
 
@@ -116,11 +132,21 @@ class FemStructureData : public StructureData {
   };
   void restore_accepted();
   void read_trial();
+  /// The step from the accepted state in `pieces` equal pieces; false (the state undefined,
+  /// the reason in `failure`) when a piece's Newton fails.
+  bool solve_in_pieces(double dt, int pieces, std::string& failure);
 
   const FemStructureModel& model_;  ///< not owned
   std::unique_ptr<fem::DynamicsData> dynamics_;
   Saved accepted_;
   Eigen::VectorXd loads_;                  ///< nodal loads of the next solve [N, N m]
+  Eigen::VectorXd accepted_loads_;         ///< the accepted step's loads [N, N m]
+  Eigen::VectorXd piece_loads_;            ///< one piece's loads (interpolated) [N, N m]
+  int pieces_ = 1;                         ///< pieces of the current step's solves
+  int steps_without_failure_ = 0;          ///< accepted steps since a solve last failed
+  bool failed_this_step_ = false;          ///< a solve of the current step needed more pieces
+  long split_steps_ = 0;                   ///< accepted steps solved in more than one piece
+  int max_pieces_ = 1;                     ///< most pieces of one accepted step
   Eigen::Matrix3Xd trial_x_, trial_v_;     ///< ŝ's node translations and velocities
   Eigen::Matrix3Xd iterate_x_, iterate_v_; ///< s̃'s
   bool pose_is_trial_ = true;              ///< the surface follows ŝ (else s̃)
