@@ -9,6 +9,9 @@ NewtonMatrix::NewtonMatrix(TangentForm form, const std::vector<int>& free_dofs) 
       if (free_dofs[i + static_cast<std::size_t>(d)] != free_dofs[i] + d || free_dofs[i] % kDofsPerNode != 0)
         rotatable_ = false;
   rhs_.resize(static_cast<Eigen::Index>(free_dofs.size()));
+  // An LLᵀ refused is an answer here (the LDLᵀ follows), not a warning for the user:
+  // CHOLMOD would print one line for each to stderr.
+  llt_.cholmod().print = 0;
 }
 
 bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame, double h) {

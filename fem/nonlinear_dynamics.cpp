@@ -72,14 +72,29 @@ struct DynamicsData::Work {
   NewtonMatrix matrix;
   CorotationalState trial;
   Eigen::VectorXd f_int, inertia, r, dx, increment, v1, vdot1, a1;
-  Eigen::VectorXd last_increment;  ///< the last converged step's increment (full)
+  /// The last converged answers (full increments) and the t_n, Δt each was made from: one
+  /// by default, one per piece for a caller that splits its steps (keep_warm_starts).
+  struct WarmStart {
+    Eigen::VectorXd increment;
+    double time = 0.0, h = 0.0;
+    bool valid = false;
+  };
+  std::vector<WarmStart> warm_starts;
+  std::size_t next_warm_start = 0;  ///< the slot a new answer goes to (round robin)
   Eigen::VectorXd du;              ///< a Newton correction (full)
   Eigen::VectorXd increment0, a10, v10, vdot10;  ///< the iterate a line search starts from
   std::vector<Eigen::Matrix3d> rotation0;        ///< its trial rotations
   std::vector<char> rotations_free;  ///< per node: its three rotations are free
-  double last_time = 0.0, last_h = 0.0;  ///< its t_n and Δt
-  bool has_last = false;
 };
+
+void DynamicsData::keep_warm_starts(int count) {
+  Work& w = *work_;
+  const std::size_t n = static_cast<std::size_t>(std::max(1, count));
+  if (n <= w.warm_starts.size()) return;
+  const Eigen::Index dofs = w.warm_starts.front().increment.size();
+  w.warm_starts.resize(n);
+  for (Work::WarmStart& k : w.warm_starts) k.increment.resize(dofs);
+}
 
 DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& s, const Eigen::VectorXd& v0,
                            const Eigen::VectorXd& f_ext0)
@@ -96,7 +111,8 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
   w.v1.resize(n);
   w.vdot1.resize(n);
   w.a1.resize(n);
-  w.last_increment.resize(n);
+  w.warm_starts.resize(1);
+  w.warm_starts.front().increment.resize(n);
   w.du.resize(n);
   w.rotations_free.assign(static_cast<std::size_t>(cm.num_nodes()), 0);
   w.rotation0.resize(static_cast<std::size_t>(cm.num_nodes()));
@@ -153,7 +169,7 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
   if (!(tolerance_scale >= 1.0)) throw std::invalid_argument("step: tolerance_scale must be at least 1");
   // One Newton solve of the step: from the warm start or the predictor, with the kept
   // matrix (reuse) or a fresh one every iteration.
-  auto newton_step = [&](bool warm, bool reuse) -> StepResult {
+  auto newton_step = [&](const DynamicsData::Work::WarmStart* warm, bool reuse) -> StepResult {
     SolverCounters& count = d.counters_;
     const double am = model.alpha_m, af = model.alpha_f, be = model.beta, ga = model.gamma;
     StepResult res;
@@ -165,8 +181,8 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
     //   base is kept, so a flapping wing starts where its base has taken it;
     // - else q_{n+1} = q_n. (Extrapolating with v̇_n put the stiff, unresolved modes, rotations
     //   of small rotary inertia with ωh ≫ 1, far off and Newton diverged.)
-    if (warm) {
-      w.increment = w.last_increment;
+    if (warm != nullptr) {
+      w.increment = warm->increment;
     } else if (model.options.rigid_predictor && pm != nullptr && !model.driven_nodes.empty()) {
       const auto p0 = static_cast<std::size_t>(model.driven_nodes.front());
       const Eigen::Matrix3d dQ = pm->rotation.front() * d.state.rotation[p0].transpose();
@@ -365,21 +381,29 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
     return res;
   };
 
-  const bool warm = start == StepStart::PreviousSolution && w.has_last && w.last_time == d.time && w.last_h == h;
+  DynamicsData::Work::WarmStart* same_step = nullptr;  // an earlier answer of this step (t_n and Δt)
+  for (DynamicsData::Work::WarmStart& k : w.warm_starts)
+    if (k.valid && k.time == d.time && k.h == h) same_step = &k;
+  const DynamicsData::Work::WarmStart* warm = start == StepStart::PreviousSolution ? same_step : nullptr;
   // With a kept Newton matrix first; if that fails, once more with a fresh matrix every
   // iteration (full Newton).
   StepResult res = newton_step(warm, model.options.reuse_factorization);
   if (!res.converged && model.options.reuse_factorization) {
     ++d.counters_.retries;
     const int before = res.iterations;
-    res = newton_step(false, false);
+    res = newton_step(nullptr, false);
     res.iterations += before;
   }
   if (!res.converged) return res;
-  w.last_increment = w.increment;
-  w.last_time = d.time;
-  w.last_h = h;
-  w.has_last = true;
+  DynamicsData::Work::WarmStart* slot = same_step;  // the same step's answer is replaced, else the oldest
+  if (slot == nullptr) {
+    slot = &w.warm_starts[w.next_warm_start];
+    w.next_warm_start = (w.next_warm_start + 1) % w.warm_starts.size();
+  }
+  slot->increment = w.increment;
+  slot->time = d.time;
+  slot->h = h;
+  slot->valid = true;
   std::swap(d.state, w.trial);
   w.trial = d.state;  // same sizes: no allocation
   std::swap(d.velocity, w.v1);

@@ -159,6 +159,11 @@ class DynamicsData {
   double strain_energy = 0.0;  ///< at q_n [J]
   double kinetic_energy() const;  ///< ½ vᵀ M v [J]
   const SolverCounters& counters() const { return counters_; }
+  /// \brief Keep the converged answers of the last `count` steps (at least one) as warm
+  /// starts (StepStart::PreviousSolution): a caller that solves a step in pieces, and each
+  /// piece again in the next sub-iteration, finds every piece's last answer. Only grows (it
+  /// allocates when it does).
+  void keep_warm_starts(int count);
 
  private:
   friend StepResult step(const DynamicsModel&, DynamicsData&, double, const Eigen::VectorXd&,

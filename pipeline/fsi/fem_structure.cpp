@@ -152,6 +152,7 @@ void FemStructureData::solve(double dt) {
   std::string failure;
   for (;;) {
     restore_accepted();
+    dynamics_->keep_warm_starts(pieces_);
     if (solve_in_pieces(dt, pieces_, failure)) break;
     if (pieces_ >= kMaxFemStepPieces)
       throw StructureFailure("FEM: " + failure + " (the step in " + std::to_string(pieces_) + " pieces)");
