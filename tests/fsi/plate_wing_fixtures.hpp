@@ -3,6 +3,8 @@
 /// \brief The flat-plate wing and the rotation-phase paper's kinematics (eq. 8) that the
 /// coupling tests of tests/fsi drive.
 
+#include "fem/structural_model.hpp"
+#include "fem/structured_mesh.hpp"
 #include "mbd/angle_units.hpp"
 #include "mbd/chain_model.hpp"
 #include "mbd/wing_kinematics.hpp"
@@ -19,6 +21,20 @@ inline uvlm::PlanformGrid plate_grid(int nc, int ns) {
   uvlm::PlanformGrid g = uvlm::make_rectangular_grid(0.010, 0.040, o);
   for (Eigen::Index k = 0; k < g.nodes.cols(); ++k) g.nodes(0, k) += 0.0025;
   return g;
+}
+
+// The same plate as shells (3 × 8 cells, each two triangles), root edge at y = 0: aluminium,
+// ν = 0.3, ρ = 2700 kg/m³, E = 70 GPa unless given; thickness [m].
+inline fem::StructuralModel plate_shells(double thickness, double youngs_modulus = 70e9) {
+  fem::StructuralModel sm;
+  sm.mesh = fem::rectangle_mesh(0.0025 - 0.010, 0.0, 0.010, 0.040, 3, 8);
+  fem::ShellProperties shell;
+  shell.thickness = thickness;
+  shell.youngs_modulus = youngs_modulus;
+  shell.poisson_ratio = 0.3;
+  shell.density = 2700.0;
+  sm.shell.assign(sm.mesh.triangles.size(), shell);
+  return sm;
 }
 
 inline mbd::WingKinematics eq8_kinematics(double rotation_phase) {

@@ -14,6 +14,7 @@
 #include "fem/constraints.hpp"
 #include "fem/static_solver.hpp"
 #include "fem/structured_mesh.hpp"
+#include "fsi/plate_wing_fixtures.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/fsi/fem_structure.hpp"
 
@@ -23,17 +24,7 @@ using namespace flapsim;
 
 // An aluminium plate, 10 mm × 40 mm × 0.1 mm, clamped along y = 0: first bending
 // f₁ = (1.875²/2π) √(EI/(m' L⁴)) = 51 Hz (EI = 5.8e-5 N m², m' = 2.7e-3 kg/m).
-fem::StructuralModel gravity_plate() {
-  fem::StructuralModel sm;
-  sm.mesh = fem::rectangle_mesh(-0.0075, 0.0, 0.010, 0.040, 3, 8);
-  fem::ShellProperties shell;
-  shell.thickness = 1e-4;
-  shell.youngs_modulus = 70e9;
-  shell.poisson_ratio = 0.3;
-  shell.density = 2700.0;
-  sm.shell.assign(sm.mesh.triangles.size(), shell);
-  return sm;
-}
+fem::StructuralModel gravity_plate() { return test::plate_shells(1e-4); }
 
 TEST(FsiFemGravity, APlateSettlesWhereTheStaticFemPutsItAndTheBaseCarriesItsWeight) {
   const Eigen::Vector3d g(0.0, 0.0, -9.81);

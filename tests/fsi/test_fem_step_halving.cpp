@@ -9,7 +9,6 @@
 #include <memory>
 #include <string>
 
-#include "fem/structured_mesh.hpp"
 #include "fsi/plate_wing_fixtures.hpp"
 #include "pipeline/fsi/fem_structure.hpp"
 #include "pipeline/fsi/structure.hpp"
@@ -24,14 +23,7 @@ constexpr double kHalvingFrequency = 26.1;   // [Hz], eq. 8
 // A 0.2 mm aluminium plate, 10 × 40 mm, root clamped and flapped by eq. 8, in vacuum: its
 // first bending is about 100 Hz, four times the wingbeat, so it bends visibly.
 std::unique_ptr<fsi::FemStructureModel> halving_plate(int max_iterations) {
-  fem::StructuralModel sm;
-  sm.mesh = fem::rectangle_mesh(0.0025 - 0.010, 0.0, 0.010, kHalvingSpan, 3, 8);
-  fem::ShellProperties shell;
-  shell.thickness = 2e-4;
-  shell.youngs_modulus = 70e9;
-  shell.poisson_ratio = 0.3;
-  shell.density = 2700.0;
-  sm.shell.assign(sm.mesh.triangles.size(), shell);
+  fem::StructuralModel sm = test::plate_shells(2e-4);
   std::vector<int> root;
   for (int n = 0; n < sm.mesh.num_nodes(); ++n)
     if (sm.mesh.nodes[static_cast<std::size_t>(n)].y() < 1e-12) root.push_back(n);

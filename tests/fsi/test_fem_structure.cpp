@@ -44,14 +44,7 @@ const fem::DynamicsOptions kOptions = [] {
 
 // The plate of plate_grid as shells: 10 mm × 40 mm, root edge (y = 0) clamped.
 std::shared_ptr<fsi::FemStructureModel> fem_plate(double thickness, double youngs_modulus, bool air) {
-  fem::StructuralModel sm;
-  sm.mesh = fem::rectangle_mesh(0.0025 - 0.010, 0.0, 0.010, 0.040, 3, 8);
-  fem::ShellProperties shell;
-  shell.thickness = thickness;
-  shell.youngs_modulus = youngs_modulus;
-  shell.poisson_ratio = 0.3;
-  shell.density = 2700.0;
-  sm.shell.assign(sm.mesh.triangles.size(), shell);
+  fem::StructuralModel sm = test::plate_shells(thickness, youngs_modulus);
   std::vector<int> root;
   for (int n = 0; n < sm.mesh.num_nodes(); ++n)
     if (sm.mesh.nodes[static_cast<std::size_t>(n)].y() < 1e-12) root.push_back(n);
