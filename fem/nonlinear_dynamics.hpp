@@ -83,7 +83,7 @@ struct DynamicsOptions {
   /// Carry the free nodes with the driven base's rigid increment (else start at q_n).
   bool rigid_predictor = true;
   /// Scale each Newton correction by a line search on the slope δxᵀ r along it
-  /// (regula falsi, at most 8 force evaluations; docs/fsi.md "Film wings (open)":
+  /// (regula falsi, at most 8 force evaluations; docs/fsi.md "Film wings":
   /// the 25 µm film converges with it and not without).
   bool line_search = false;
 };
