@@ -18,6 +18,16 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
   valid_ = false;
   frame_ = frame;
   h_ = h;
+  if (form_ == TangentForm::SymmetricLower && ldlt_first_ > 0) {
+    // The last matrices were indefinite (a wrinkling film): LDLᵀ directly, for a while.
+    --ldlt_first_;
+    ldlt_.factorize(A);
+    if (ldlt_.info() == Eigen::Success) {
+      solver_ = Solver::Ldlt;
+      valid_ = true;
+      return true;
+    }
+  }
   if (form_ == TangentForm::SymmetricLower) {
     if (!llt_analysed_) llt_.analyzePattern(A);
     llt_analysed_ = true;
@@ -35,6 +45,7 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
     ldlt_analysed_ = true;
     ldlt_.factorize(A);
     if (ldlt_.info() == Eigen::Success) {
+      ldlt_first_ = kLdltFirstAfterRefusal;
       solver_ = Solver::Ldlt;
       valid_ = true;
       return true;
