@@ -21,12 +21,7 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
   if (form_ == TangentForm::SymmetricLower && ldlt_first_ > 0) {
     // The last matrices were indefinite (a wrinkling film): LDLᵀ directly, for a while.
     --ldlt_first_;
-    ldlt_.factorize(A);
-    if (ldlt_.info() == Eigen::Success) {
-      solver_ = Solver::Ldlt;
-      valid_ = true;
-      return true;
-    }
+    if (factorize_ldlt(A)) return true;
   }
   if (form_ == TangentForm::SymmetricLower) {
     if (!llt_analysed_) llt_.analyzePattern(A);
@@ -41,13 +36,8 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
     // small rotary inertia; a thin film in compression): the same matrix by LDLᵀ, which
     // takes an indefinite matrix as long as no pivot vanishes, else by LU.
     ++fallbacks_;
-    if (!ldlt_analysed_) ldlt_.analyzePattern(A);
-    ldlt_analysed_ = true;
-    ldlt_.factorize(A);
-    if (ldlt_.info() == Eigen::Success) {
+    if (factorize_ldlt(A)) {
       ldlt_first_ = kLdltFirstAfterRefusal;
-      solver_ = Solver::Ldlt;
-      valid_ = true;
       return true;
     }
     full_ = A.selfadjointView<Eigen::Lower>();
@@ -63,6 +53,16 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
   }
   valid_ = lu_.info() == Eigen::Success;
   return valid_;
+}
+
+bool NewtonMatrix::factorize_ldlt(const SparseMatrix& A) {
+  if (!ldlt_analysed_) ldlt_.analyzePattern(A);
+  ldlt_analysed_ = true;
+  ldlt_.factorize(A);
+  if (ldlt_.info() != Eigen::Success) return false;
+  solver_ = Solver::Ldlt;
+  valid_ = true;
+  return true;
 }
 
 void NewtonMatrix::rotate(Eigen::VectorXd& v, const Eigen::Matrix3d& S) const {

@@ -51,10 +51,13 @@ class NewtonMatrix {
   bool valid() const { return valid_; }
   double step_size() const { return h_; }
   void invalidate() { valid_ = false; }
+  /// Matrices the LLᵀ refused (then factorised by LDLᵀ, or by LU if that failed too).
   long lu_fallbacks() const { return fallbacks_; }
 
  private:
   void rotate(Eigen::VectorXd& v, const Eigen::Matrix3d& S) const;
+  /// A by LDLᵀ (its pattern analysed once); false if a pivot vanished.
+  bool factorize_ldlt(const SparseMatrix& A);
 
   TangentForm form_;
   bool rotatable_ = true;  ///< free DOFs come as whole nodes (six consecutive)

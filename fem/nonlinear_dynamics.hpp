@@ -99,7 +99,7 @@ struct SolverCounters {
   long steps = 0;               ///< converged steps
   long iterations = 0;          ///< Newton iterations (linear solves)
   long factorizations = 0;      ///< Newton matrices factorised
-  long lu_fallbacks = 0;        ///< of which by LU because LLᵀ failed
+  long lu_fallbacks = 0;        ///< of which refused by LLᵀ (then LDLᵀ, or LU: newton_matrix.hpp)
   long retries = 0;             ///< steps redone with a fresh matrix every iteration
 };
 

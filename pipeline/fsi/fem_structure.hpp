@@ -20,8 +20,10 @@
 /// pieces, the loads interpolated linearly in time from the accepted step's to the new ones
 /// (the clamp driven at each piece's end). A thin film wrinkles under compression faster than
 /// a coupled step (its tangent turns indefinite at the mesh's wavelength: docs/fsi.md, "Film
-/// wings"); in pieces of a few µs the step's inertia c_M ρt outweighs the negative geometric
-/// stiffness and Newton converges. The count of pieces is kept for the step's sub-iterations
+/// wings"); in a shorter piece the step's inertia c_M ρt ∝ 1/h² weighs more against the
+/// negative geometric stiffness and Newton converges (with ρ∞ = 0, which damps the film's
+/// unresolved oscillations out, the 25 µm film wings needed up to 8 and 32 pieces). The
+/// count of pieces is kept for the step's sub-iterations
 /// (the structure's answer to given loads then stays one function of them), carried into the
 /// next step, and halved again after kFemStepsBeforeJoining steps solved without a failure. A
 /// run that never fails is solved whole, unchanged to the bit.
@@ -42,9 +44,10 @@ namespace flapsim::fsi {
 
 /// The FEM, which of its nodes the base drives, and the lattice on its shell. Built in
 /// place and never copied (the dynamics model points into the co-rotational model).
-/// Most pieces one coupled step of the FEM is split into (a 25 µm film at 80 steps a 20 Hz
-/// cycle needs pieces of ~10 µs: 64), and the steps solved without a failure after which the
-/// count of pieces is halved again.
+/// Most pieces one coupled step of the FEM is split into (measured at most 8 on the 75 mm and
+/// 32 on the MAV 25 µm film wing at 80 steps a wingbeat; the bound caps a hopeless step's
+/// work at 511 pieces' Newton solves), and the steps solved without a failure after which
+/// the count of pieces is halved again.
 inline constexpr int kMaxFemStepPieces = 256;
 inline constexpr int kFemStepsBeforeJoining = 4;
 
