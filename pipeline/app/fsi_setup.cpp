@@ -263,6 +263,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
                           ? fsi::CouplingMethod::InterfaceQuasiNewton
                           : fsi::CouplingMethod::Aitken;
   m.coupling.max_iterations = c.numerics.max_coupling_iterations;
+  m.coupling.reuse_steps = c.numerics.coupling_reuse_steps;
   m.coupling.tolerance = c.numerics.coupling_tolerance;
   m.coupling.added_mass = c.numerics.added_mass;
   m.air = c.air.enabled;

@@ -327,6 +327,7 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   r.set("coupling_tolerance_rad", setup_.model.coupling.tolerance);
   r.set("coupling_method", setup_.model.coupling.method == fsi::CouplingMethod::InterfaceQuasiNewton
                                ? std::string("iqn_ils") : std::string("aitken"));
+  if (setup_.model.coupling.reuse_steps > 0) r.set("coupling_reuse_steps", setup_.model.coupling.reuse_steps);
   if (data.structure->split_steps() > 0) {
     r.set("split_structural_steps", data.structure->split_steps());
     r.set("max_structural_pieces", data.structure->max_step_pieces());

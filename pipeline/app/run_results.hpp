@@ -152,6 +152,9 @@ inline constexpr auto kRunResults = [] {
                        "convergence tolerance of the coupling sub-iterations"},
       ResultDefinition{"coupling_method", "", K::text, "", "",
                        "how the sub-iterations update the chain: aitken or iqn_ils (numerics.coupling)"},
+      ResultDefinition{"coupling_reuse_steps", "", K::integer, "", "",
+                       "iqn_ils: earlier steps whose secant pairs the coupling kept "
+                       "(numerics.coupling_reuse_steps); set only when not 0"},
       ResultDefinition{"split_structural_steps", "", K::integer, "", "",
                        "chain solves of a step (in air one per coupling sub-iteration) that did not "
                        "converge whole and were solved in halves (docs/multibody.md, step halving); set "

@@ -15,7 +15,7 @@ namespace flapsim::fsi {
 FsiData::FsiData(const FsiModel& model)
     : structure(model.structure->make_data()),
       aitken(model.coupling.first_relaxation),
-      quasi_newton(model.structure->num_dofs()) {
+      quasi_newton(std::min(model.structure->num_dofs(), kMaxQuasiNewtonPairs), model.coupling.reuse_steps) {
   if (model.air) {
     lattice.emplace(model.lattice);
     // A structure that moves within a step may hold the older wake's sums (sub_iterate).

@@ -54,6 +54,9 @@ struct CouplingSettings {
   int max_iterations = 50;      ///< lattice solves per step before giving up
   double tolerance = 1e-6;      ///< see the file comment [rad]
   double first_relaxation = 0.5;  ///< ω of the very first sub-iteration
+  /// IQN-ILS only: earlier time steps whose secant pairs are kept (IQN-ILS(q),
+  /// interface_quasi_newton.hpp); 0: each step starts without any.
+  int reuse_steps = 0;
   /// Intermediate structure solves to 1 % of the coupling's current change (file comment);
   /// false: every solve at the structure's full accuracy.
   bool loose_intermediate_solves = true;
@@ -107,6 +110,11 @@ struct FsiModel {
   /// The prescribed motion of the wing base.
   const mbd::BaseMotion& base() const { return structure->base(); }
 };
+
+/// Most secant pairs IQN-ILS keeps (at most the structure's DOFs): a step's sub-iterations
+/// and the reused steps' pairs stay far below it, and the FEM's interface (every node's
+/// position and velocity) would otherwise size the store by its tens of thousands of DOFs.
+inline constexpr int kMaxQuasiNewtonPairs = 100;
 
 struct FsiData {
   explicit FsiData(const FsiModel& model);

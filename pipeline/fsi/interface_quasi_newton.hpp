@@ -15,8 +15,20 @@
 /// some modes of the fixed point diverge (factor < −1) and others converge slowly
 /// (factor near 1) converges in about as many sub-iterations as it has such modes
 /// (docs/fsi.md, "Coupling").
+///
+/// Reuse (IQN-ILS(q), Degroote et al. 2009): the pairs of the q previous time steps are
+/// kept beside the current step's (never a difference across two steps), so a step's first
+/// update is already a quasi-Newton one and the fixed point's slow and diverging modes,
+/// which change little from step to step, need not be found again in every step. Old pairs
+/// can make the least squares ill-conditioned, so with q > 0 the pairs pass a filter
+/// (QR2 of Haelterman et al. 2016): by Gram–Schmidt from the newest, a pair whose residual
+/// difference has less than kReuseFilterLimit of its length outside the newer ones is
+/// dropped for good. With q = 0 nothing is kept across steps and the least squares is the
+/// rank-revealing QR of the step's pairs, as before reuse existed.
 
 #include <Eigen/Core>
+
+#include <vector>
 
 namespace flapsim::fsi {
 
@@ -24,9 +36,11 @@ class InterfaceQuasiNewton {
  public:
   /// \param max_columns  secant pairs kept (the oldest dropped beyond; at most the size
   ///                     of the residual is useful)
-  explicit InterfaceQuasiNewton(int max_columns);
+  /// \param reuse_steps  earlier time steps whose pairs are kept (q; 0: none)
+  explicit InterfaceQuasiNewton(int max_columns, int reuse_steps = 0);
 
-  /// Starts a new time step: forgets the previous step's sub-iterations.
+  /// Starts a new time step: forgets the pairs of more than reuse_steps steps ago (all of
+  /// the earlier steps' with q = 0); the step's first residual pairs with nothing before it.
   void start_step();
 
   /// Records sub-iteration k: residual r (the part the least squares fit, size fixed
@@ -35,10 +49,24 @@ class InterfaceQuasiNewton {
   bool next(const Eigen::VectorXd& r, const Eigen::VectorXd& output, Eigen::VectorXd& next);
 
   int columns() const { return columns_; }  ///< secant pairs in use
+  long filtered() const { return filtered_; }  ///< pairs the filter has dropped so far
+
+  /// A pair whose residual difference keeps less than this fraction of its length after
+  /// the newer pairs' directions are taken out of it is dropped (reuse only).
+  static constexpr double kReuseFilterLimit = 1e-2;
 
  private:
+  void drop_column(int j);
+  bool filtered_update(const Eigen::VectorXd& r, Eigen::VectorXd& c);
+
   int max_columns_;
+  int reuse_steps_;
   int columns_ = 0;
+  long step_ = 0;
+  long filtered_ = 0;
+  std::vector<long> column_step_;  ///< the time step each pair came from, newest first
+  Eigen::MatrixXd q_, r_;          ///< the filter's Gram–Schmidt factors (reuse only)
+  Eigen::VectorXd qtr_;
   bool has_previous_ = false;
   Eigen::VectorXd previous_r_, previous_output_;
   Eigen::MatrixXd v_, w_;  ///< newest column first

@@ -143,7 +143,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
                   "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "lesp_critical", "core_model",
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
-                  "wake_sum", "tree_tolerance", "wake_precision", "coupling", "max_coupling_iterations", "coupling_tolerance",
+                  "wake_sum", "tree_tolerance", "wake_precision", "coupling", "max_coupling_iterations", "coupling_tolerance", "coupling_reuse_steps",
                   "added_mass", "rho_infinity", "structure_substeps", "steady"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
@@ -184,6 +184,9 @@ Case::Numerics read_numerics(const TomlTable& root) {
       t->get_int("max_coupling_iterations", n.max_coupling_iterations, Bounds::closed(1, 100000));
   n.coupling_tolerance =
       t->get_double("coupling_tolerance", n.coupling_tolerance, Bounds{0.0, 1.0, true, true});
+  n.coupling_reuse_steps = t->get_int("coupling_reuse_steps", n.coupling_reuse_steps, Bounds::closed(0, 50));
+  if (t->has("coupling_reuse_steps") && n.coupling != CouplingMethod::InterfaceQuasiNewton)
+    t->fail("coupling_reuse_steps", "reusing earlier steps' secant pairs needs coupling = \"iqn_ils\"");
   n.added_mass = t->get_bool("added_mass", n.added_mass);
   n.rho_infinity = t->get_double("rho_infinity", n.rho_infinity, Bounds::closed(0.0, 1.0));
   n.structure_substeps = t->get_int("structure_substeps", n.structure_substeps, Bounds::closed(1, 10000));

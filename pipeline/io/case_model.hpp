@@ -127,6 +127,7 @@ struct Case {
     double tree_tolerance = 1e-4;           ///< relative error of the tree code's velocities
     CouplingMethod coupling = CouplingMethod::Aitken;  ///< sub-iteration update: "aitken" | "iqn_ils"
     int max_coupling_iterations = 50;       ///< strong-coupling sub-iterations per step
+    int coupling_reuse_steps = 0;           ///< iqn_ils: earlier steps whose secant pairs are kept
     double coupling_tolerance = 1e-6;       ///< relative change that ends the sub-iterations
     double rho_infinity = 0.9;              ///< generalized-α spectral radius ρ∞ in [0, 1]
     int structure_substeps = 1;             ///< chain sub-steps per time step (docs/multibody.md, "Sub-steps")

@@ -103,6 +103,8 @@ std::string describe_case(const Case& c) {
   s += line("  coupling               %s, at most %d iterations, tolerance %.3g",
             std::string(wings::choice_name(kCouplingMethodNames, n.coupling)).c_str(), n.max_coupling_iterations,
             n.coupling_tolerance);
+  if (n.coupling_reuse_steps > 0)
+    s += line("  coupling reuse         the secant pairs of the last %d steps (IQN-ILS(q))", n.coupling_reuse_steps);
   if (!n.added_mass) s += line("  added mass             off (the plain partitioned step)");
   if (c.output.vtk_every > 0)
     s += line("  VTK output             every %d steps", c.output.vtk_every);

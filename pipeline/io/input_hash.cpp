@@ -14,7 +14,7 @@ namespace flapsim::io {
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages; they change no result.)
-static_assert(sizeof(Case) == 1432, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1440, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
@@ -165,6 +165,7 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.max_coupling_iterations", n.max_coupling_iterations);
   out.line("numerics.coupling_tolerance", n.coupling_tolerance);
   if (!n.added_mass) out.line("numerics.added_mass", n.added_mass);  // only when off (as steady)
+  if (n.coupling_reuse_steps != 0) out.line("numerics.coupling_reuse_steps", n.coupling_reuse_steps);  // only when set
   out.line("numerics.rho_infinity", n.rho_infinity);
   // Only when set: the fingerprints of the cases written before the key existed stay as they were.
   if (n.structure_substeps != 1) out.line("numerics.structure_substeps", n.structure_substeps);

@@ -8,6 +8,7 @@
 #include <memory>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include "mbd/angle_units.hpp"
 #include "mbd/chain_kinematics.hpp"
@@ -244,6 +245,72 @@ TEST(FsiInterfaceQuasiNewton, SolvesALinearFixedPointInAsManyUpdatesAsItHasDimen
   };
   EXPECT_LE(solve(true, 50), 3 + 2);  // n + 1 updates, the last evaluation finds r = 0
   EXPECT_GT(solve(false, 50), 50);    // Aitken alone: not in 50
+}
+
+// The same map with the constant b changed from one time step to the next (the coupled
+// steps of a run: the fixed point moves, the map's Jacobian does not). Without reuse each
+// step must find the three modes again; IQN-ILS(3) (Degroote et al. 2009) keeps the pairs of
+// the last three steps, whose least-squares model is then already exact: every later step
+// is solved by its first update, so its second evaluation finds r = 0 (and, converged at
+// once, adds no pair: the first step's pairs serve all three).
+TEST(FsiInterfaceQuasiNewton, ReusingTheLastStepsPairsSolvesTheNextStepInOneUpdate) {
+  Eigen::Matrix3d q;
+  q.col(0) = Eigen::Vector3d(1, 2, 2).normalized();
+  q.col(1) = (Eigen::Vector3d(0, 1, -1) - q.col(0).dot(Eigen::Vector3d(0, 1, -1)) * q.col(0)).normalized();
+  q.col(2) = q.col(0).cross(q.col(1));
+  const Eigen::Matrix3d a = q * Eigen::Vector3d(-3.0, 0.95, 0.5).asDiagonal() * q.transpose();
+  auto run = [&](int reuse, std::vector<int>& evaluations) {
+    fsi::AitkenRelaxation aitken(0.2);
+    fsi::InterfaceQuasiNewton iqn(10, reuse);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(3), next;
+    for (int step = 0; step < 4; ++step) {
+      const Eigen::Vector3d b(1.0 + step, -2.0 + 0.5 * step, 0.5 - 0.3 * step);
+      const Eigen::Vector3d exact = (Eigen::Matrix3d::Identity() - a).lu().solve(b);
+      aitken.start_step();
+      iqn.start_step();
+      int k = 1;
+      for (; k <= 50; ++k) {
+        const Eigen::VectorXd out = a * x + b, r = out - x;
+        if (r.norm() < 1e-10 * exact.norm()) break;
+        if (iqn.next(r, out, next)) x = next;
+        else x += aitken.next(r) * r;
+      }
+      evaluations.push_back(k);
+    }
+  };
+  std::vector<int> plain, reused;
+  run(0, plain);
+  run(3, reused);
+  ASSERT_EQ(reused.size(), 4u);
+  EXPECT_EQ(reused[0], plain[0]);  // the first step has nothing to reuse
+  for (std::size_t s = 1; s < 4; ++s) {
+    EXPECT_LE(reused[s], 2) << "step " << s;  // one update, then r = 0
+    EXPECT_GE(plain[s], 4) << "step " << s;   // without reuse: the modes found again
+  }
+}
+
+// The filter (QR2, Haelterman et al. 2016): a pair from an earlier step whose residual
+// difference lies within 1 % of the newer pairs' span is dropped, not given a huge weight.
+TEST(FsiInterfaceQuasiNewton, TheReuseFilterDropsAPairTheNewerOnesAlreadySpan) {
+  fsi::InterfaceQuasiNewton iqn(10, 3);
+  Eigen::VectorXd next;
+  // Step 1: outputs x̂ = 2 r (any map), residuals along e1 then e1 + e2.
+  iqn.start_step();
+  EXPECT_FALSE(iqn.next(Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(2.0, 0.0, 0.0), next));
+  ASSERT_TRUE(iqn.next(Eigen::Vector3d(2.0, 0.0, 0.0), Eigen::Vector3d(4.0, 0.0, 0.0), next));  // pair Δr = e1
+  EXPECT_EQ(iqn.columns(), 1);
+  // Step 2: a pair Δr = e1 + 1e-3 e2, within 1 % of the e1 the earlier pair spans.
+  iqn.start_step();
+  ASSERT_TRUE(iqn.next(Eigen::Vector3d(0.0, 1.0, 0.0), Eigen::Vector3d(0.0, 2.0, 0.0), next));  // the reused pair
+  EXPECT_EQ(iqn.columns(), 1);
+  ASSERT_TRUE(iqn.next(Eigen::Vector3d(1.0, 1.001, 0.0), Eigen::Vector3d(2.0, 2.002, 0.0), next));
+  EXPECT_EQ(iqn.columns(), 1);   // the older pair (step 1) dropped, the new one kept
+  EXPECT_EQ(iqn.filtered(), 1);
+  EXPECT_TRUE(next.allFinite());
+  // Least squares on the kept pair alone: c = −(Δr · r)/|Δr|², next = x̂ + c Δx̂.
+  const Eigen::Vector3d dr(1.0, 0.001, 0.0), r(1.0, 1.001, 0.0);
+  const double c = -dr.dot(r) / dr.squaredNorm();
+  EXPECT_NEAR((next - (Eigen::Vector3d(2.0, 2.002, 0.0) + c * 2.0 * dr)).norm(), 0.0, 1e-12);
 }
 
 // A light, soft chain (0.5 % of test_chain's mass and torsional inertia, 10 % of its

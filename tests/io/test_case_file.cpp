@@ -260,6 +260,21 @@ TEST(CaseFile, CouplingKey) {
   EXPECT_EQ(e.line(), 9);
 }
 
+TEST(CaseFile, CouplingReuseStepsKey) {
+  // docs/case_file.md: `coupling_reuse_steps` in [0, 50], default 0, only with coupling =
+  // "iqn_ils" (docs/fsi.md, "Coupling"); out of range or with Aitken it is bad input naming it.
+  EXPECT_EQ(case_from_text(kHead).numerics.coupling_reuse_steps, 0);
+  const p::Case c = case_from_text(kHead + "[numerics]\ncoupling = \"iqn_ils\"\ncoupling_reuse_steps = 4\n");
+  EXPECT_EQ(c.numerics.coupling_reuse_steps, 4);
+  for (const char* bad : {"coupling = \"iqn_ils\"\ncoupling_reuse_steps = -1\n",
+                          "coupling = \"iqn_ils\"\ncoupling_reuse_steps = 51\n",
+                          "coupling = \"aitken\"\ncoupling_reuse_steps = 2\n"}) {
+    const auto e = error_of(kHead + "[numerics]\n" + bad);  // the key on line 10
+    EXPECT_EQ(e.key(), "numerics.coupling_reuse_steps") << bad;
+    EXPECT_EQ(e.line(), 10) << bad;
+  }
+}
+
 TEST(CaseFile, SteadyKey) {
   // docs/case_file.md: `steady` (default false) selects the steady lattice, whose wake
   // leaves along the free stream: without one it is bad input naming the key and its line.
