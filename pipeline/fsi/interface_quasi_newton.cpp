@@ -81,8 +81,15 @@ bool InterfaceQuasiNewton::next(const Eigen::VectorXd& r, const Eigen::VectorXd&
     w_.col(0) = output - previous_output_;
     column_step_[0] = step_;
     columns_ = keep + 1;
-  } else if (columns_ > 0 && (v_.rows() != r.size() || w_.rows() != output.size())) {
-    columns_ = 0;  // the earlier steps' pairs are of another size
+  } else {
+    if (columns_ > 0 && (v_.rows() != r.size() || w_.rows() != output.size()))
+      columns_ = 0;  // the earlier steps' pairs are of another size
+    first_norm_ = r.norm();
+  }
+  if (r.norm() > first_norm_ && columns_ > 0 && column_step_[static_cast<std::size_t>(columns_ - 1)] < step_) {
+    // The step's residual grew: the earlier steps' pairs (the oldest ones, at the end) go.
+    while (columns_ > 0 && column_step_[static_cast<std::size_t>(columns_ - 1)] < step_) --columns_;
+    ++stale_drops_;
   }
   previous_r_ = r;
   previous_output_ = output;

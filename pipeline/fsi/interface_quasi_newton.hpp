@@ -23,7 +23,10 @@
 /// can make the least squares ill-conditioned, so with q > 0 the pairs pass a filter
 /// (QR2 of Haelterman et al. 2016): by Gram–Schmidt from the newest, a pair whose residual
 /// difference has less than kReuseFilterLimit of its length outside the newer ones is
-/// dropped for good. With q = 0 nothing is kept across steps and the least squares is the
+/// dropped for good. The earlier steps' pairs are also all dropped once the step's residual
+/// has grown beyond its first one: their Jacobian no longer fits (a film that snaps into
+/// another shape; docs/fsi.md, "Coupling"), and least squares would keep mixing them in.
+/// With q = 0 nothing is kept across steps and the least squares is the
 /// rank-revealing QR of the step's pairs, as before reuse existed.
 
 #include <Eigen/Core>
@@ -50,6 +53,7 @@ class InterfaceQuasiNewton {
 
   int columns() const { return columns_; }  ///< secant pairs in use
   long filtered() const { return filtered_; }  ///< pairs the filter has dropped so far
+  long stale_drops() const { return stale_drops_; }  ///< times the earlier steps' pairs were dropped as stale
 
   /// A pair whose residual difference keeps less than this fraction of its length after
   /// the newer pairs' directions are taken out of it is dropped (reuse only).
@@ -64,6 +68,8 @@ class InterfaceQuasiNewton {
   int columns_ = 0;
   long step_ = 0;
   long filtered_ = 0;
+  long stale_drops_ = 0;
+  double first_norm_ = 0.0;  ///< |r| of the step's first sub-iteration
   std::vector<long> column_step_;  ///< the time step each pair came from, newest first
   Eigen::MatrixXd q_, r_;          ///< the filter's Gram–Schmidt factors (reuse only)
   Eigen::VectorXd qtr_;
