@@ -96,9 +96,8 @@ bool InterfaceQuasiNewton::next(const Eigen::VectorXd& r, const Eigen::VectorXd&
   has_previous_ = true;
   if (columns_ == 0) return false;
   if (reuse_steps_ > 0) {
-    Eigen::VectorXd c;
-    if (!filtered_update(r, c)) return false;
-    next = output + w_.leftCols(columns_) * c;
+    if (!filtered_update(r, coefficients_)) return false;
+    next = output + w_.leftCols(columns_) * coefficients_;
     return true;
   }
   // Least squares by a rank-revealing QR: columns that add nothing (a sub-iteration that

@@ -72,7 +72,7 @@ class InterfaceQuasiNewton {
   double first_norm_ = 0.0;  ///< |r| of the step's first sub-iteration
   std::vector<long> column_step_;  ///< the time step each pair came from, newest first
   Eigen::MatrixXd q_, r_;          ///< the filter's Gram–Schmidt factors (reuse only)
-  Eigen::VectorXd qtr_;
+  Eigen::VectorXd qtr_, coefficients_;
   bool has_previous_ = false;
   Eigen::VectorXd previous_r_, previous_output_;
   Eigen::MatrixXd v_, w_;  ///< newest column first

@@ -215,6 +215,34 @@ TEST(FsiFlexibleWing, VeryStiffChainConvergesToTheRigidWing) {
 
 namespace {
 
+// A = Q diag(d) Qᵀ in a fixed orthonormal basis Q (Gram–Schmidt of fixed vectors): the
+// linear maps x ← A x + b whose fixed points the quasi-Newton tests solve.
+Eigen::Matrix3d in_rotated_basis(const Eigen::Vector3d& d) {
+  Eigen::Matrix3d q;
+  q.col(0) = Eigen::Vector3d(1, 2, 2).normalized();
+  q.col(1) = (Eigen::Vector3d(0, 1, -1) - q.col(0).dot(Eigen::Vector3d(0, 1, -1)) * q.col(0)).normalized();
+  q.col(2) = q.col(0).cross(q.col(1));
+  return q * d.asDiagonal() * q.transpose();
+}
+
+// One coupled step on x ← A x + b from x, as coupled_step.cpp iterates: the quasi-Newton
+// update where it has one (iqn null: never), Aitken's otherwise. Returns the evaluations
+// until |r| < tolerance |x*| (the last finds it), limit + 1 if not within limit.
+int linear_step(const Eigen::Matrix3d& a, const Eigen::Vector3d& b, fsi::AitkenRelaxation& aitken,
+                fsi::InterfaceQuasiNewton* iqn, Eigen::VectorXd& x, double tolerance, int limit = 50) {
+  const Eigen::Vector3d exact = (Eigen::Matrix3d::Identity() - a).lu().solve(b);
+  aitken.start_step();
+  if (iqn != nullptr) iqn->start_step();
+  Eigen::VectorXd next;
+  for (int k = 1; k <= limit; ++k) {
+    const Eigen::VectorXd out = a * x + b, r = out - x;
+    if (r.norm() < tolerance * exact.norm()) return k;
+    if (iqn != nullptr && iqn->next(r, out, next)) x = next;
+    else x += aitken.next(r) * r;
+  }
+  return limit + 1;
+}
+
 TEST(FsiInterfaceQuasiNewton, SolvesALinearFixedPointInAsManyUpdatesAsItHasDimensions) {
   // x ← g(x) = A x + b with A = diag(−3, 0.95, 0.5) in a rotated basis: one mode diverges
   // (factor −3), one converges slowly (0.95). A relaxation x ← x + ω r converges only for
@@ -222,26 +250,13 @@ TEST(FsiInterfaceQuasiNewton, SolvesALinearFixedPointInAsManyUpdatesAsItHasDimen
   // sub-iteration: Aitken's one ω needs hundreds. IQN-ILS on a linear map is a secant
   // method whose least-squares model is exact once it has n independent differences
   // (Degroote et al. 2009): the fixed point after at most n + 1 updates (n = 3).
-  Eigen::Matrix3d q;  // an orthonormal basis (Gram–Schmidt of fixed vectors)
-  q.col(0) = Eigen::Vector3d(1, 2, 2).normalized();
-  q.col(1) = (Eigen::Vector3d(0, 1, -1) - q.col(0).dot(Eigen::Vector3d(0, 1, -1)) * q.col(0)).normalized();
-  q.col(2) = q.col(0).cross(q.col(1));
-  const Eigen::Matrix3d a = q * Eigen::Vector3d(-3.0, 0.95, 0.5).asDiagonal() * q.transpose();
+  const Eigen::Matrix3d a = in_rotated_basis(Eigen::Vector3d(-3.0, 0.95, 0.5));
   const Eigen::Vector3d b(1.0, -2.0, 0.5);
-  const Eigen::Vector3d exact = (Eigen::Matrix3d::Identity() - a).lu().solve(b);
   auto solve = [&](bool quasi_newton, int limit) {
     fsi::AitkenRelaxation aitken(0.2);
     fsi::InterfaceQuasiNewton iqn(3);
-    aitken.start_step();
-    iqn.start_step();
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(3), next;
-    for (int k = 1; k <= limit; ++k) {
-      const Eigen::VectorXd out = a * x + b, r = out - x;
-      if (r.norm() < 1e-12 * exact.norm()) return k;
-      if (quasi_newton && iqn.next(r, out, next)) x = next;
-      else x += aitken.next(r) * r;
-    }
-    return limit + 1;
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(3);
+    return linear_step(a, b, aitken, quasi_newton ? &iqn : nullptr, x, 1e-12, limit);
   };
   EXPECT_LE(solve(true, 50), 3 + 2);  // n + 1 updates, the last evaluation finds r = 0
   EXPECT_GT(solve(false, 50), 50);    // Aitken alone: not in 50
@@ -254,28 +269,14 @@ TEST(FsiInterfaceQuasiNewton, SolvesALinearFixedPointInAsManyUpdatesAsItHasDimen
 // is solved by its first update, so its second evaluation finds r = 0 (and, converged at
 // once, adds no pair: the first step's pairs serve all three).
 TEST(FsiInterfaceQuasiNewton, ReusingTheLastStepsPairsSolvesTheNextStepInOneUpdate) {
-  Eigen::Matrix3d q;
-  q.col(0) = Eigen::Vector3d(1, 2, 2).normalized();
-  q.col(1) = (Eigen::Vector3d(0, 1, -1) - q.col(0).dot(Eigen::Vector3d(0, 1, -1)) * q.col(0)).normalized();
-  q.col(2) = q.col(0).cross(q.col(1));
-  const Eigen::Matrix3d a = q * Eigen::Vector3d(-3.0, 0.95, 0.5).asDiagonal() * q.transpose();
+  const Eigen::Matrix3d a = in_rotated_basis(Eigen::Vector3d(-3.0, 0.95, 0.5));
   auto run = [&](int reuse, std::vector<int>& evaluations) {
     fsi::AitkenRelaxation aitken(0.2);
     fsi::InterfaceQuasiNewton iqn(10, reuse);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(3), next;
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(3);
     for (int step = 0; step < 4; ++step) {
       const Eigen::Vector3d b(1.0 + step, -2.0 + 0.5 * step, 0.5 - 0.3 * step);
-      const Eigen::Vector3d exact = (Eigen::Matrix3d::Identity() - a).lu().solve(b);
-      aitken.start_step();
-      iqn.start_step();
-      int k = 1;
-      for (; k <= 50; ++k) {
-        const Eigen::VectorXd out = a * x + b, r = out - x;
-        if (r.norm() < 1e-10 * exact.norm()) break;
-        if (iqn.next(r, out, next)) x = next;
-        else x += aitken.next(r) * r;
-      }
-      evaluations.push_back(k);
+      evaluations.push_back(linear_step(a, b, aitken, &iqn, x, 1e-10));
     }
   };
   std::vector<int> plain, reused;
@@ -290,34 +291,23 @@ TEST(FsiInterfaceQuasiNewton, ReusingTheLastStepsPairsSolvesTheNextStepInOneUpda
 }
 
 // When the map's Jacobian changes between two steps (a film that snaps into another shape),
-// the earlier step's pairs make the step's first update worse than none: the residual grows.
-// Then they are dropped, and the step converges as one without reuse does.
+// the earlier step's pairs make the step's first update worse than none: the residual grows,
+// and then they are dropped, once. (On this 3-D map the filter would push them out within
+// the step anyway: the step takes 6 evaluations with or without the rule, measured; the
+// rule's effect shows on the MAV film wing, docs/fsi.md "Coupling". Asserted here: it acts
+// on growth, once, and costs at most one evaluation against no reuse.)
 TEST(FsiInterfaceQuasiNewton, StalePairsAreDroppedWhenTheStepsResidualGrows) {
-  Eigen::Matrix3d q;
-  q.col(0) = Eigen::Vector3d(1, 2, 2).normalized();
-  q.col(1) = (Eigen::Vector3d(0, 1, -1) - q.col(0).dot(Eigen::Vector3d(0, 1, -1)) * q.col(0)).normalized();
-  q.col(2) = q.col(0).cross(q.col(1));
-  const Eigen::Matrix3d a1 = q * Eigen::Vector3d(-3.0, 0.95, 0.5).asDiagonal() * q.transpose();
-  const Eigen::Matrix3d a2 = q * Eigen::Vector3d(0.9, -0.5, -3.0).asDiagonal() * q.transpose();
+  const Eigen::Matrix3d a1 = in_rotated_basis(Eigen::Vector3d(-3.0, 0.95, 0.5));
+  const Eigen::Matrix3d a2 = in_rotated_basis(Eigen::Vector3d(0.9, -0.5, -3.0));
   const Eigen::Vector3d b(1.0, -2.0, 0.5);
   auto run = [&](int reuse, long* drops) {
     fsi::AitkenRelaxation aitken(0.2);
     fsi::InterfaceQuasiNewton iqn(10, reuse);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(3), next;
-    int k = 1;
-    for (const Eigen::Matrix3d* a : {&a1, &a2}) {
-      const Eigen::Vector3d exact = (Eigen::Matrix3d::Identity() - *a).lu().solve(b);
-      aitken.start_step();
-      iqn.start_step();
-      for (k = 1; k <= 50; ++k) {
-        const Eigen::VectorXd out = *a * x + b, r = out - x;
-        if (r.norm() < 1e-10 * exact.norm()) break;
-        if (iqn.next(r, out, next)) x = next;
-        else x += aitken.next(r) * r;
-      }
-    }
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(3);
+    linear_step(a1, b, aitken, &iqn, x, 1e-10);
+    const int second = linear_step(a2, b, aitken, &iqn, x, 1e-10);
     if (drops != nullptr) *drops = iqn.stale_drops();
-    return k;  // evaluations of the second step
+    return second;  // evaluations of the second step
   };
   long drops = 0;
   const int plain = run(0, nullptr), reused = run(3, &drops);
@@ -330,7 +320,7 @@ TEST(FsiInterfaceQuasiNewton, StalePairsAreDroppedWhenTheStepsResidualGrows) {
 TEST(FsiInterfaceQuasiNewton, TheReuseFilterDropsAPairTheNewerOnesAlreadySpan) {
   fsi::InterfaceQuasiNewton iqn(10, 3);
   Eigen::VectorXd next;
-  // Step 1: outputs x̂ = 2 r (any map), residuals along e1 then e1 + e2.
+  // Step 1: outputs x̂ = 2 r (any map), residuals e1 then 2 e1: one pair, Δr = e1.
   iqn.start_step();
   EXPECT_FALSE(iqn.next(Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(2.0, 0.0, 0.0), next));
   ASSERT_TRUE(iqn.next(Eigen::Vector3d(2.0, 0.0, 0.0), Eigen::Vector3d(4.0, 0.0, 0.0), next));  // pair Δr = e1
