@@ -17,7 +17,8 @@ namespace {
 
 /// A flat plate of chord c = 1 m and aspect ratio 100 (nc × 5 panels, the middle strip
 /// 20 chords wide) in a stream U = 1 m/s along −x, leading edge at x = 0, pitching nose
-/// up about its leading edge by alpha(t) [rad]. Lift per unit span of the mid strip.
+/// up about its leading edge by alpha(t) [rad] and heaving by h(t) [m] (up). Lift per
+/// unit span of the mid strip.
 struct PitchingPlate {
   int chordwise = 16, spanwise = 5;
   double aspect_ratio = 100.0;
@@ -27,6 +28,7 @@ struct PitchingPlate {
   WakeModel wake = WakeModel::Free;
   double core = 0.05, near_wing_core = 0.0;
   LoadMethod loads = LoadMethod::Bernoulli;
+  std::vector<double> camber;  // z/c of the camber line at the nc + 1 node stations (empty: flat)
 };
 
 struct Sample {
@@ -34,13 +36,18 @@ struct Sample {
   bool shedding = false;
 };
 
-template <class Alpha, class AlphaRate>
-std::vector<Sample> run(const PitchingPlate& p, int steps, Alpha alpha, AlphaRate alpha_rate) {
+template <class Alpha, class AlphaRate, class Heave, class HeaveRate>
+std::vector<Sample> run(const PitchingPlate& p, int steps, Alpha alpha, AlphaRate alpha_rate, Heave heave,
+                        HeaveRate heave_rate) {
   const double c = 1.0, U = 1.0, rho = 1.0, span = p.aspect_ratio * c;
   PlanformGridOptions o;
   o.chordwise = p.chordwise;
   o.spanwise = p.spanwise;
-  const PlanformGrid g = make_rectangular_grid(c, span, o);
+  PlanformGrid g = make_rectangular_grid(c, span, o);
+  if (!p.camber.empty())
+    for (int j = 0; j <= p.spanwise; ++j)
+      for (int i = 0; i <= p.chordwise; ++i)
+        g.nodes(2, i + (p.chordwise + 1) * j) = p.camber[static_cast<std::size_t>(i)] * c;
   VortexLatticeModel m;
   m.chordwise = p.chordwise;
   m.spanwise = p.spanwise;
@@ -60,8 +67,9 @@ std::vector<Sample> run(const PitchingPlate& p, int steps, Alpha alpha, AlphaRat
     const double t = k * p.dt * c / U, a = alpha(t), adot = alpha_rate(t);
     const Eigen::Matrix3d R = Eigen::AngleAxisd(-a, Eigen::Vector3d::UnitY()).toRotationMatrix();
     X = R * g.nodes;
-    const Eigen::Vector3d omega(0.0, -adot, 0.0);
-    for (Eigen::Index i = 0; i < X.cols(); ++i) Xdot.col(i) = omega.cross(X.col(i));
+    const Eigen::Vector3d omega(0.0, -adot, 0.0), lift(0.0, 0.0, heave(t)), lift_rate(0.0, 0.0, heave_rate(t));
+    for (Eigen::Index i = 0; i < X.cols(); ++i) Xdot.col(i) = omega.cross(X.col(i)) + lift_rate;
+    X.colwise() += lift;
     solve(m, d, X, Xdot, V, p.dt * c / U, rho);
     Eigen::Vector3d f = Eigen::Vector3d::Zero();
     double strip_span = 0.0;
@@ -79,6 +87,12 @@ std::vector<Sample> run(const PitchingPlate& p, int steps, Alpha alpha, AlphaRat
     advance(m, d);
   }
   return out;
+}
+
+template <class Alpha, class AlphaRate>
+std::vector<Sample> run(const PitchingPlate& p, int steps, Alpha alpha, AlphaRate alpha_rate) {
+  auto none = [](double) { return 0.0; };
+  return run(p, steps, alpha, alpha_rate, none, none);
 }
 
 }  // namespace
@@ -229,41 +243,19 @@ TEST(LeadingEdgeShedding, PlungingSd7003StartsSheddingWhereRameshEtAlsMethodDoes
   // wake. The second cycle's onset must be the LDVM's within 0.005 T (one step is 0.0031 T;
   // measured 0.1384; the first cycle 0.1376 against 0.1318). docs/uvlm.md, "Ramesh et al.'s
   // plunging SD7003".
-  const double camber[17] = {-0.00064, 0.00703, 0.01062, 0.01272, 0.01393, 0.01448, 0.01453, 0.01420, 0.01357,
-                             0.01273, 0.01173, 0.01063, 0.00939, 0.00792, 0.00610, 0.00371, 0.0};
-  const double c = 1.0, U = 1.0, rho = 1.0, span = 100.0, k = 0.393, w = 2.0 * k * U / c, h0 = 0.5 * c;
-  const double T = 2.0 * M_PI / w, dt = 0.025 * c / U;
-  const int nc = 16, ns = 5, mid = ns / 2;
-  PlanformGridOptions o;
-  o.chordwise = nc;
-  o.spanwise = ns;
-  PlanformGrid g = make_rectangular_grid(c, span, o);
-  for (int j = 0; j <= ns; ++j)
-    for (int i = 0; i <= nc; ++i) g.nodes(2, i + (nc + 1) * j) = camber[i] * c;
-  const int steps = static_cast<int>(1.2 * T / dt);
-  VortexLatticeModel m;
-  m.chordwise = nc;
-  m.spanwise = ns;
-  m.wake_capacity = steps + 1;
-  m.wake_model = WakeModel::Free;
-  m.core = {CoreModel::LambOseen, 0.05 * c};
-  m.leading_edge = LeadingEdge::Shed;
-  m.lesp_critical = 0.21;
-  VortexLatticeData d(m);
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(-4.0 * kDeg, Eigen::Vector3d::UnitY()).toRotationMatrix();
-  const Eigen::Matrix3Xd pitched = R * g.nodes;
-  Eigen::Matrix3Xd X(3, g.nodes.cols()), Xdot(3, g.nodes.cols());
+  PitchingPlate p;
+  p.camber = {-0.00064, 0.00703, 0.01062, 0.01272, 0.01393, 0.01448, 0.01453, 0.01420, 0.01357,
+              0.01273, 0.01173, 0.01063, 0.00939, 0.00792, 0.00610, 0.00371, 0.0};
+  p.dt = 0.025;
+  p.lesp_critical = 0.21;
+  const double k = 0.393, w = 2.0 * k, h0 = 0.5, T = 2.0 * M_PI / w;  // c = U = 1
+  const auto r = run(
+      p, static_cast<int>(1.2 * T / p.dt), [](double) { return 4.0 * kDeg; }, [](double) { return 0.0; },
+      [&](double t) { return h0 * std::cos(w * t); }, [&](double t) { return -h0 * w * std::sin(w * t); });
   double onset[2] = {-1.0, -1.0};  // t/T of the first shedding step in cycles 1 and 2
-  for (int n = 1; n <= steps; ++n) {
-    const double t = n * dt;
-    X = pitched;
-    X.row(2).array() += h0 * std::cos(w * t);
-    Xdot.setZero();
-    Xdot.row(2).setConstant(-h0 * w * std::sin(w * t));
-    solve(m, d, X, Xdot, Eigen::Vector3d(-U, 0.0, 0.0), dt, rho);
-    const int cycle = static_cast<int>(t / T);
-    if (cycle < 2 && onset[cycle] < 0.0 && d.le_sheet.shedding[mid] != 0) onset[cycle] = t / T - cycle;
-    advance(m, d);
+  for (const Sample& s : r) {
+    const int cycle = static_cast<int>(s.t / T);
+    if (cycle < 2 && onset[cycle] < 0.0 && s.shedding) onset[cycle] = s.t / T - cycle;
   }
   std::printf("  onset t/T: cycle 1 %.4f (LDVM 0.1318), cycle 2 %.4f (LDVM 0.1364)\n", onset[0], onset[1]);
   ASSERT_GE(onset[1], 0.0);

@@ -38,6 +38,21 @@ Complex theodorsen(double k) {
   return {};
 }
 
+/// Theodorsen's complex lift coefficient of a plate pitching θ = θ0 e^(iωt) nose up about
+/// the pivot a (a b behind mid-chord), CL = θ0 (π (i k + a k²) + 2π C(k) (1 + i k (½ − a)))
+/// [Theodorsen 1935].
+Complex theodorsen_pitch_cl(double k, double a, double pitch) {
+  const Complex i(0, 1);
+  return pitch * (M_PI * (i * k + a * k * k) + 2.0 * M_PI * theodorsen(k) * (1.0 + i * k * (0.5 - a)));
+}
+
+/// Garrick's mean leading-edge suction coefficient of the same motion,
+/// C_S = π |θ0 (C(k) (1 + i k (½ − a)) − i k/2)|² [Garrick 1936].
+double garrick_pitch_suction(double k, double a, double pitch) {
+  const Complex i(0, 1);
+  return M_PI * std::norm(pitch * (theodorsen(k) * (1.0 + i * k * (0.5 - a)) - i * k / 2.0));
+}
+
 struct Oscillation {
   double k = 0.5;           // reduced frequency ω b / U, b = c/2
   double heave = 0.0;       // h0 / b, heave h = h0 sin ωt (up)
@@ -178,8 +193,7 @@ TEST(OscillatingPlate, PitchingPlateFollowsTheodorsen) {
     in.pitch = 1.0 * M_PI / 180.0;
     const Extrapolated e = run_extrapolated(in, 8);
     const Oscillation& o = e.limit;
-    const Complex C = theodorsen(k), i(0, 1);
-    const Complex ref = o.pitch * (M_PI * (i * k - 0.5 * k * k) + 2.0 * M_PI * C * (1.0 + i * k));
+    const Complex ref = theodorsen_pitch_cl(k, -0.5, o.pitch);
     std::printf("[ value ] pitch k %.1f: |CL| %.5f (Theodorsen %.5f, %+.2f %%), phase %.2f deg (%.2f), "
                 "mean thrust %.3g\n",
                 k, std::abs(o.cl), std::abs(ref), 100 * (std::abs(o.cl) / std::abs(ref) - 1), phase_deg(o.cl),
@@ -209,9 +223,7 @@ TEST(OscillatingPlate, LeadingEdgePivotAtHighFrequencyFollowsTheodorsen) {
   Oscillation f32 = in, f64 = in;
   run(f32, 32);
   run(f64, 64);
-  const Complex C = theodorsen(in.k), i(0, 1);
-  const Complex q = 1.0 + i * in.k * (0.5 - in.pivot);
-  const Complex ref = in.pitch * (M_PI * (i * in.k + in.pivot * in.k * in.k) + 2.0 * M_PI * C * q);
+  const Complex ref = theodorsen_pitch_cl(in.k, in.pivot, in.pitch);
   const Complex limit = 2.0 * f64.cl - f32.cl;
   std::printf("[ value ] pitch about the leading edge, k 4: |CL| nc 32 %+.2f %%, nc 64 %+.2f %%, extrapolated %+.2f %%; "
               "phase nc 64 %.2f deg (Theodorsen %.2f)\n",
@@ -263,10 +275,8 @@ TEST(OscillatingPlate, PitchingPlateThrustFollowsGarrick) {
     in.pivot = c.a;
     in.pitch = 1.0 * M_PI / 180.0;
     const Extrapolated e = run_extrapolated(in, 16);
-    const Complex C = theodorsen(c.k), i(0, 1);
-    const Complex q = 1.0 + i * c.k * (0.5 - c.a);  // per θ0
-    const double cs = M_PI * std::norm(in.pitch * (C * q - i * c.k / 2.0));
-    const Complex cl = in.pitch * (M_PI * (i * c.k + c.a * c.k * c.k) + 2.0 * M_PI * C * q);
+    const double cs = garrick_pitch_suction(c.k, c.a, in.pitch);
+    const Complex cl = theodorsen_pitch_cl(c.k, c.a, in.pitch);
     const double ct = cs - 0.5 * (cl * in.pitch).real();
     std::printf("[ value ] pitch about a = %.1f, k %.1f: Garrick suction %.4g, C_T %.4g\n", c.a, c.k, cs, ct);
     std::printf("[ value ]   suction nc 16 %+.2f %%, nc 32 %+.2f %%, 2 f(32) - f(16) %+.2f %%\n",
@@ -307,10 +317,8 @@ TEST(OscillatingPlate, QuarterChordPivotAtKOneConvergesToGarrick) {
   run(f64, 64);
   run(f128, 128);
   run(f256, 256);
-  const Complex C = theodorsen(in.k), i(0, 1);
-  const Complex q = 1.0 + i * in.k * (0.5 - in.pivot);
-  const double cs = M_PI * std::norm(in.pitch * (C * q - i * in.k / 2.0));
-  const Complex cl = in.pitch * (M_PI * (i * in.k + in.pivot * in.k * in.k) + 2.0 * M_PI * C * q);
+  const double cs = garrick_pitch_suction(in.k, in.pivot, in.pitch);
+  const Complex cl = theodorsen_pitch_cl(in.k, in.pivot, in.pitch);
   const double ct = cs - 0.5 * (cl * in.pitch).real();
   const double step1 = f128.mean_thrust - f64.mean_thrust, step2 = f256.mean_thrust - f128.mean_thrust;
   const double limit = 2.0 * f256.mean_thrust - f128.mean_thrust;
