@@ -59,6 +59,7 @@ std::unique_ptr<Setup> make_setup(const std::string& wing_file, const std::strin
   const uvlm::PlanformGrid grid = uvlm::make_planform_grid(s->wing.outline, g);
   fem::DynamicsOptions opt;
   opt.rho_infinity = c.numerics.rho_infinity;
+  opt.linearised_geometric_force = c.structure.fem_linearised_geometric_terms;
   opt.refactor_rate = refactor_rate;
   opt = fsi::coupled_dynamics_options(opt, c.numerics.coupling_tolerance, c.numerics.steps_per_cycle);
   if (legacy) {

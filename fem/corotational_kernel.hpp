@@ -65,12 +65,18 @@ struct EicrDamping {
 /// \param x, R    current node positions [m] and nodal rotations
 /// \param symmetric  symmetrise the geometric part (else the consistent,
 ///                   non-symmetric spin-variable tangent)
+/// \param geometric_force  if given, the local force f̄ the geometric terms (K_GR, K_GP,
+///                   K_GM) are formed from, instead of the law's (the linearised Newton
+///                   matrix, nonlinear_dynamics.hpp); f itself is always the law's
+/// \param deformation  if given, receives the local deformation d
 template <int N, class LocalLaw>
 double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d, N>& Xbar,
                            const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
                            const std::array<Eigen::Vector3d, N>& x, const std::array<Eigen::Matrix3d, N>& R,
                            Eigen::Matrix<double, 6 * N, 1>& f, Eigen::Matrix<double, 6 * N, 6 * N>* K,
-                           const EicrDamping<N>& damping = {}, bool symmetric = true) {
+                           const EicrDamping<N>& damping = {}, bool symmetric = true,
+                           const Eigen::Matrix<double, 6 * N, 1>* geometric_force = nullptr,
+                           Eigen::Matrix<double, 6 * N, 1>* deformation = nullptr) {
   constexpr int n = 6 * N;
   using Vec = Eigen::Matrix<double, n, 1>;
   using Mat = Eigen::Matrix<double, n, n>;
@@ -89,6 +95,7 @@ double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d
     d.template segment<3>(6 * a + 3) = th;
     H[a] = inverse_tangent(th);
   }
+  if (deformation != nullptr) *deformation = d;
   // P and B = H P are formed only for the tangent or damping: the force alone (every
   // iteration of a modified Newton, nonlinear_dynamics.hpp) applies Pᵀ in closed form.
   const bool damped = damping.velocity != nullptr && damping.coefficient != 0.0;
@@ -134,6 +141,12 @@ double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d
 
   if (K != nullptr) {
     Mat Kl = B.transpose() * k * B;
+    if (geometric_force != nullptr) {  // the geometric terms from a given local force
+      fl = *geometric_force;
+      fbar = fl;
+      for (int a = 0; a < N; ++a) fbar.template segment<3>(6 * a + 3) = H[a].transpose() * fl.template segment<3>(6 * a + 3);
+      p.noalias() = P.transpose() * fbar;
+    }
     if (damping.tangent_scale != 0.0) Kl *= 1.0 + damping.tangent_scale;
     Eigen::Matrix<double, 3, n> FnT = Eigen::Matrix<double, 3, n>::Zero();
     Mat Kg;
@@ -175,8 +188,11 @@ double eicr_force(const Eigen::Matrix<double, 6 * N, 6 * N>& k, const std::array
                   const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
                   const std::array<Eigen::Vector3d, N>& x, const std::array<Eigen::Matrix3d, N>& R,
                   Eigen::Matrix<double, 6 * N, 1>& f, Eigen::Matrix<double, 6 * N, 6 * N>* K,
-                  const EicrDamping<N>& damping = {}, bool symmetric = true) {
-  return eicr_force_with_law<N>(LinearLocalLaw<N>{k}, Xbar, T0, frame, x, R, f, K, damping, symmetric);
+                  const EicrDamping<N>& damping = {}, bool symmetric = true,
+                  const Eigen::Matrix<double, 6 * N, 1>* geometric_force = nullptr,
+                  Eigen::Matrix<double, 6 * N, 1>* deformation = nullptr) {
+  return eicr_force_with_law<N>(LinearLocalLaw<N>{k}, Xbar, T0, frame, x, R, f, K, damping, symmetric,
+                                geometric_force, deformation);
 }
 
 }  // namespace flapsim::fem

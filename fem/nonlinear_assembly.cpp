@@ -178,6 +178,18 @@ NonlinearAssembler::NonlinearAssembler(const CorotationalModel& model, Constrain
   frame_K_.resize(model.frames.size());
   frame_f_.resize(model.frames.size());
   energy_.resize(model.shells.size() + model.frames.size() + model.hinges.size());
+  for (int k = 0; k < 3; ++k) {
+    path_shell_d_[static_cast<size_t>(k)].resize(model.shells.size());
+    path_frame_d_[static_cast<size_t>(k)].resize(model.frames.size());
+  }
+  path_force_.resize(model.num_dofs());
+}
+
+void NonlinearAssembler::record_correction_path(const CorotationalState& state, int point) {
+  if (point < 0 || point > 2) throw std::invalid_argument("record_correction_path: point must be 0, 1 or 2");
+  record_point_ = point;
+  evaluate(state, path_force_, false);
+  record_point_ = -1;
 }
 
 void NonlinearAssembler::load_mass_into_tangent() {
@@ -221,8 +233,18 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
             ? eicr_force_with_law<3>(ShellTensionFieldLaw{el}, el.reference_local, el.reference_axes,
                                      shell_corotated_frame(x), x, R, shell_f_[static_cast<size_t>(e)], K, damp,
                                      symmetric)
-            : eicr_force<3>(el.local_stiffness, el.reference_local, el.reference_axes, shell_corotated_frame(x), x,
-                            R, shell_f_[static_cast<size_t>(e)], K, damp, symmetric);
+            : [&] {
+                const size_t i = static_cast<size_t>(e);
+                Vector18d g;  // the local force along the last correction, taken linearly
+                const bool linearised = ex.linearised_geometric_force && K != nullptr;
+                if (linearised)
+                  g = el.local_stiffness * (4.0 * path_shell_d_[1][i] - 2.0 * path_shell_d_[0][i] - path_shell_d_[2][i]);
+                return eicr_force<3>(el.local_stiffness, el.reference_local, el.reference_axes,
+                                     shell_corotated_frame(x), x, R, shell_f_[i], K, damp, symmetric,
+                                     linearised ? &g : nullptr,
+                                     record_point_ >= 0 ? &path_shell_d_[static_cast<size_t>(record_point_)][i]
+                                                        : nullptr);
+              }();
   }
 #pragma omp parallel for schedule(static) if (ns + nb > 512)
   for (int e = 0; e < nb; ++e) {
@@ -235,10 +257,16 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
       for (int a = 0; a < 2; ++a) v.segment<6>(6 * a) = ex.velocity->segment<6>(6 * el.nodes[a]);
       damp = {&v, ex.damping, ex.damping * ex.damping_tangent_scale};
     }
+    const size_t i = static_cast<size_t>(e);
+    Vector12d g;  // the local force along the last correction, taken linearly
+    const bool linearised = ex.linearised_geometric_force && tangent;
+    if (linearised)
+      g = el.local_stiffness * (4.0 * path_frame_d_[1][i] - 2.0 * path_frame_d_[0][i] - path_frame_d_[2][i]);
     energy_[static_cast<size_t>(ns + e)] =
         eicr_force<2>(el.local_stiffness, el.reference_local, el.reference_axes, frame_corotated_frame(el, x, R), x,
-                      R, frame_f_[static_cast<size_t>(e)], tangent ? &frame_K_[static_cast<size_t>(e)] : nullptr,
-                      damp, form_ == TangentForm::SymmetricLower);
+                      R, frame_f_[i], tangent ? &frame_K_[i] : nullptr, damp, form_ == TangentForm::SymmetricLower,
+                      linearised ? &g : nullptr,
+                      record_point_ >= 0 ? &path_frame_d_[static_cast<size_t>(record_point_)][i] : nullptr);
   }
   const int nh = static_cast<int>(model_.hinges.size());
 #pragma omp parallel for schedule(static) if (nh > 512)

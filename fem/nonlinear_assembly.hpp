@@ -92,6 +92,11 @@ struct TangentExtras {
   const Eigen::VectorXd* velocity = nullptr;   ///< full (ẋ, ω) for damping [m/s, rad/s]
   double damping = 0.0;                        ///< a₁ [s]: co-rotational stiffness-proportional damping
   double damping_tangent_scale = 0.0;          ///< ∂v/∂u [1/s] for the damping tangent
+  /// The geometric terms of the tangent from each element's local force at the end of the
+  /// last Newton correction taken linearly, k (d₀ + B₀ Δu), instead of k d(u) at the current
+  /// state (the mixed, "MIP" Newton of Magisano, Leonetti & Garcea 2017; linear shells and
+  /// frames): NonlinearAssembler::record_correction_path must have recorded the correction.
+  bool linearised_geometric_force = false;
 };
 
 /// How the tangent is stored.
@@ -116,6 +121,11 @@ class NonlinearAssembler {
   /// \brief Overwrite the tangent's values with the free–free mass M_ff.
   void load_mass_into_tangent();
 
+  /// \brief Record the elements' local deformations d at a point of a Newton correction Δu:
+  /// `point` 0 at its start, 1 at its middle, 2 at its end. From the three,
+  /// d₀ + B₀ Δu = 4 d(½) − 2 d(0) − d(1) + O(Δu³) (TangentExtras::linearised_geometric_force).
+  void record_correction_path(const CorotationalState& state, int point);
+
   const SparseMatrix& tangent() const { return tangent_; }  ///< free DOFs (see TangentForm)
   const Constraints& constraints() const { return constraints_; }
   const std::vector<int>& free_dofs() const { return free_dofs_; }
@@ -138,6 +148,10 @@ class NonlinearAssembler {
   std::vector<Matrix12d> frame_K_;
   std::vector<Eigen::Matrix<double, 12, 1>> frame_f_;
   std::vector<double> energy_;
+  int record_point_ = -1;  ///< record_correction_path's point during its evaluation
+  std::array<std::vector<Eigen::Matrix<double, 18, 1>>, 3> path_shell_d_;  ///< d along a correction
+  std::array<std::vector<Eigen::Matrix<double, 12, 1>>, 3> path_frame_d_;
+  Eigen::VectorXd path_force_;  ///< record_correction_path's unused forces
 };
 
 }  // namespace flapsim::fem

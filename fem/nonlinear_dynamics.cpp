@@ -85,6 +85,7 @@ struct DynamicsData::Work {
   Eigen::VectorXd increment0, a10, v10, vdot10;  ///< the iterate a line search starts from
   std::vector<Eigen::Matrix3d> rotation0;        ///< its trial rotations
   std::vector<char> rotations_free;  ///< per node: its three rotations are free
+  Eigen::VectorXd last_dx;  ///< the last Newton correction applied (free DOFs)
 };
 
 void DynamicsData::keep_warm_starts(int count) {
@@ -126,6 +127,7 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
         !model.eliminated.is_fixed(kDofsPerNode * node + 5);
   const auto& free = w.assembler.free_dofs();
   w.r.resize(static_cast<Eigen::Index>(free.size()));
+  w.last_dx.resize(static_cast<Eigen::Index>(free.size()));
   w.dx.resize(static_cast<Eigen::Index>(free.size()));
   acceleration = Eigen::VectorXd::Zero(n);
   strain_energy = w.assembler.evaluate(state, w.f_int, false);
@@ -246,12 +248,52 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
     ex.damping_tangent_scale = cV;
     double strain = 0.0, previous = 0.0;  // previous: the last correction's size
     bool refactor = false;
+    bool corrected = false;  // a correction of this solve has been applied (w.last_dx)
+    // The correction moves the trial: x ← x + δx and, on a node whose three rotations are
+    // free, R ← exp(δω̂) R, the update the tangent linearises (spatial spins); the step's
+    // rotation increment is then log(R R_nᵀ) (Arnold & Brüls 2007). Adding δω to the
+    // increment instead is off by ½ hΔ × δω, and Newton converged linearly at that rate.
+    // Apply α δx (δx = w.dx) from the iterate (increment0, rotation0, rates).
+    auto apply = [&](double alpha) {
+      w.du.setZero();
+      for (Eigen::Index i = 0; i < nf; ++i) w.du(free[static_cast<size_t>(i)]) = alpha * w.dx(i);
+      for (std::size_t node = 0; node < w.rotations_free.size(); ++node) {
+        if (!w.rotations_free[node]) continue;
+        const Eigen::Index o = static_cast<Eigen::Index>(kDofsPerNode * node + 3);
+        const Eigen::Matrix3d R = rotation_matrix(w.du.segment<3>(o)) * w.rotation0[node];
+        w.du.segment<3>(o) = rotation_vector(R * d.state.rotation[node].transpose()) - w.increment0.segment<3>(o);
+      }
+      for (int g : free) {
+        const double du = w.du(g);
+        w.increment(g) = w.increment0(g) + du;
+        w.a1(g) = w.a10(g) + du / (be * h * h);
+        w.v1(g) = w.v10(g) + cV * du;
+        w.vdot1(g) = w.vdot10(g) + cM * du;
+      }
+      place();
+    };
     for (int it = 0; it <= model.options.max_iterations; ++it) {
       // A new matrix: none kept, another Δt, full Newton, or the kept one contracted too
       // slowly in the last iteration.
       const bool new_matrix = !reuse || !w.matrix.valid() || w.matrix.step_size() != h || refactor;
       refactor = false;
+      // A new matrix after a correction: its geometric terms from the elements' forces at
+      // the correction's end taken linearly (DynamicsOptions::linearised_geometric_force). The
+      // correction's path is retraced from its start (increment0, rotation0) to record the
+      // elements' deformations; the trial ends where it was (a line search's α excepted:
+      // there the full correction's path is used).
+      ex.linearised_geometric_force =
+          new_matrix && corrected && model.options.linearised_geometric_force && !model.options.line_search;
+      if (ex.linearised_geometric_force) {
+        w.dx.swap(w.last_dx);
+        for (int point = 0; point < 3; ++point) {
+          apply(0.5 * point);
+          w.assembler.record_correction_path(w.trial, point);
+        }
+        w.dx.swap(w.last_dx);
+      }
       strain = w.assembler.evaluate(w.trial, w.f_int, new_matrix, ex);
+      ex.linearised_geometric_force = false;
       auto residual = [&](double& scale) {
         w.inertia.noalias() = cm.mass * w.vdot1;
         double fe = 0.0, fi = 0.0, fm = 0.0;
@@ -311,29 +353,8 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       // scaled down to it: far from the solution, the linearisation of the
       // rotations (exp(ω̂) ≈ I + ω̂) no longer holds and full corrections ran off.
       if (max_r > kMaxRotationCorrection) w.dx *= kMaxRotationCorrection / max_r;
-      // The correction moves the trial: x ← x + δx and, on a node whose three rotations are
-      // free, R ← exp(δω̂) R, the update the tangent linearises (spatial spins); the step's
-      // rotation increment is then log(R R_nᵀ) (Arnold & Brüls 2007). Adding δω to the
-      // increment instead is off by ½ hΔ × δω, and Newton converged linearly at that rate.
-      // Apply α δx from the iterate (increment0, rotation0, rates).
-      auto apply = [&](double alpha) {
-        w.du.setZero();
-        for (Eigen::Index i = 0; i < nf; ++i) w.du(free[static_cast<size_t>(i)]) = alpha * w.dx(i);
-        for (std::size_t node = 0; node < w.rotations_free.size(); ++node) {
-          if (!w.rotations_free[node]) continue;
-          const Eigen::Index o = static_cast<Eigen::Index>(kDofsPerNode * node + 3);
-          const Eigen::Matrix3d R = rotation_matrix(w.du.segment<3>(o)) * w.rotation0[node];
-          w.du.segment<3>(o) = rotation_vector(R * d.state.rotation[node].transpose()) - w.increment0.segment<3>(o);
-        }
-        for (int g : free) {
-          const double du = w.du(g);
-          w.increment(g) = w.increment0(g) + du;
-          w.a1(g) = w.a10(g) + du / (be * h * h);
-          w.v1(g) = w.v10(g) + cV * du;
-          w.vdot1(g) = w.vdot10(g) + cM * du;
-        }
-        place();
-      };
+      w.last_dx = w.dx;
+      corrected = true;
       w.increment0 = w.increment;
       w.a10 = w.a1;
       w.v10 = w.v1;

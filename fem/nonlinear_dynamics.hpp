@@ -33,7 +33,9 @@
 ///   anew from the current tangent when the residual falls by less than
 ///   DynamicsOptions::refactor_rate in an iteration, when h changes, or when a
 ///   step with the kept matrix fails (the step is then redone with a fresh
-///   matrix every iteration).
+///   matrix every iteration). A new matrix made after a correction takes its
+///   geometric terms from the elements' forces along that correction taken
+///   linearly (DynamicsOptions::linearised_geometric_force).
 /// - CHOLMOD LLᵀ of the symmetrised tangent by default, sparse LU when LLᵀ
 ///   finds it not positive definite (a frame released from a large deflection:
 ///   measured in docs/fem.md), or the consistent tangent by LU on request.
@@ -82,6 +84,13 @@ struct DynamicsOptions {
   double refactor_rate = 0.25;
   /// Carry the free nodes with the driven base's rigid increment (else start at q_n).
   bool rigid_predictor = true;
+  /// A Newton matrix made after a correction takes its geometric terms from the
+  /// elements' local forces at the correction's end taken linearly, k (d₀ + B₀ Δu),
+  /// instead of k d(u): the stretching a transverse correction puts into a thin membrane
+  /// (second order in Δu, a spurious membrane force) then stays out of the matrix
+  /// (Magisano, Leonetti & Garcea 2017; docs/fem.md, "Cost"). The converged answer is the
+  /// same (the residual is not changed). Linear shells and frames; not with line_search.
+  bool linearised_geometric_force = true;
   /// Scale each Newton correction by a line search on the slope δxᵀ r along it
   /// (regula falsi, at most 8 force evaluations; docs/fsi.md "Film wings":
   /// the 25 µm film converges with it and not without).

@@ -96,6 +96,11 @@ struct Case {
     /// kind = "fem": co-rotational stiffness-proportional (Rayleigh) damping a₁ [s]
     /// (`stiffness_damping_s`; 0: none).
     double fem_stiffness_damping = 0.0;
+    /// kind = "fem": a new Newton matrix's geometric terms from the elements' forces along
+    /// the last correction taken linearly (`newton_geometric_terms = "linearised"`, the
+    /// default) or from those at the current state ("current"; faster for thin films:
+    /// docs/fem.md, "The geometric terms from the corrections taken linearly").
+    bool fem_linearised_geometric_terms = true;
   } structure;
 
   struct Numerics {

@@ -14,7 +14,7 @@ namespace flapsim::io {
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages; they change no result.)
-static_assert(sizeof(Case) == 1440, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1448, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
@@ -134,6 +134,9 @@ void case_fields(Canonical& out, const Case& c) {
     out.line("structure.element_size", c.structure.fem_element_size);
     out.line("structure.vein_element_size", c.structure.fem_vein_element_size);
     out.line("structure.stiffness_damping", c.structure.fem_stiffness_damping);
+    // Only when not the default: earlier fingerprints stay (the answer is the same to
+    // Newton's tolerance either way, but not to the last digit).
+    if (!c.structure.fem_linearised_geometric_terms) out.line("structure.newton_geometric_terms", 1);
   }
   const Case::Numerics& n = c.numerics;
   out.line("numerics.steps_per_cycle", n.steps_per_cycle);

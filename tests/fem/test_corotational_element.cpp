@@ -177,6 +177,78 @@ TEST(CorotationalElement, ForceIsEnergyGradientAndTangentMatchesDifferences) {
   }
 }
 
+// The local deformation d of an element state (eicr_force's `deformation`).
+template <int N>
+Eigen::Matrix<double, 6 * N, 1> local_deformation(const Eigen::Matrix<double, 6 * N, 6 * N>& k,
+                                                  const std::array<Eigen::Vector3d, N>& Xbar,
+                                                  const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
+                                                  const Element<N>& s) {
+  Eigen::Matrix<double, 6 * N, 1> f, d;
+  eicr_force<N>(k, Xbar, T0, frame, s.x, s.R, f, nullptr, {}, true, nullptr, &d);
+  return d;
+}
+
+TEST(CorotationalElement, GeometricTermsFromTheElementsOwnLocalForceGiveItsTangent) {
+  // The tangent's geometric terms taken from a given local force (the linearised Newton
+  // matrix of fem/nonlinear_dynamics.hpp) are the usual ones when that force is the
+  // element's own, k d: to round-off, for the shell and the frame, symmetrised and not.
+  const CorotationalShell sh = make_corotational_shell({0, 1, 2}, kTri, testing::shell(7e10, 0.3, 0.01, 2700));
+  const Eigen::Vector3d a(0.0, 0.0, 0.0), b(0.3, 0.4, 0.1);
+  const CorotationalFrame fr = make_corotational_frame({0, 1}, a, b, tube());
+  const Element<3> s3 = deformed<3>(kTri, 3e-2, 5);
+  const Element<2> s2 = deformed<2>({a, b}, 3e-2, 6);
+  for (bool symmetric : {true, false}) {
+    const auto f3 = shell_corotated_frame(s3.x);
+    const Eigen::Matrix<double, 18, 1> g3 =
+        sh.local_stiffness * local_deformation<3>(sh.local_stiffness, sh.reference_local, sh.reference_axes, f3, s3);
+    Eigen::Matrix<double, 18, 1> f, fg;
+    Matrix18d K, Kg;
+    eicr_force<3>(sh.local_stiffness, sh.reference_local, sh.reference_axes, f3, s3.x, s3.R, f, &K, {}, symmetric);
+    eicr_force<3>(sh.local_stiffness, sh.reference_local, sh.reference_axes, f3, s3.x, s3.R, fg, &Kg, {}, symmetric,
+                  &g3);
+    const auto f2 = frame_corotated_frame(fr, s2.x, s2.R);
+    const Eigen::Matrix<double, 12, 1> g2 =
+        fr.local_stiffness * local_deformation<2>(fr.local_stiffness, fr.reference_local, fr.reference_axes, f2, s2);
+    Eigen::Matrix<double, 12, 1> h, hg;
+    Matrix12d J, Jg;
+    eicr_force<2>(fr.local_stiffness, fr.reference_local, fr.reference_axes, f2, s2.x, s2.R, h, &J, {}, symmetric);
+    eicr_force<2>(fr.local_stiffness, fr.reference_local, fr.reference_axes, f2, s2.x, s2.R, hg, &Jg, {}, symmetric,
+                  &g2);
+    EXPECT_EQ((fg - f).norm(), 0.0);  // the force itself is k d(u) either way
+    EXPECT_LT((Kg - K).norm(), 1e-12 * K.norm());
+    EXPECT_LT((Jg - J).norm(), 1e-12 * J.norm());
+  }
+}
+
+TEST(CorotationalElement, ThreePointsOfACorrectionGiveItsLinearisedDeformation) {
+  // NonlinearAssembler::record_correction_path: along a correction u(α) = u₀ ⊕ α Δu,
+  // 4 d(½) − 2 d(0) − d(1) = d(0) + d'(0) + O(Δu³) (Taylor), where d(1) itself is off by
+  // ½ d''(0), second order: a transverse correction's stretching of the membrane. d'(0)
+  // here by central differences at α = ±1e-6.
+  const CorotationalShell sh = make_corotational_shell({0, 1, 2}, kTri, testing::shell(7e10, 0.3, 0.01, 2700));
+  const Element<3> s0 = deformed<3>(kTri, 1e-2, 7);
+  std::srand(11);
+  const Eigen::Matrix<double, 18, 1> direction = Eigen::Matrix<double, 18, 1>::Random();
+  auto d_at = [&](const Eigen::Matrix<double, 18, 1>& du) {
+    const Element<3> s = perturbed<3>(s0, du);
+    return local_deformation<3>(sh.local_stiffness, sh.reference_local, sh.reference_axes, shell_corotated_frame(s.x),
+                                s);
+  };
+  double previous = 0.0;
+  for (double size : {4e-2, 2e-2, 1e-2}) {
+    const Eigen::Matrix<double, 18, 1> du = size * direction;
+    const double e = 1e-6;
+    const Eigen::Matrix<double, 18, 1> linear = d_at(0.0 * du) + (d_at(e * du) - d_at(-e * du)) / (2.0 * e);
+    const double three_points = (4.0 * d_at(0.5 * du) - 2.0 * d_at(0.0 * du) - d_at(du) - linear).norm();
+    const double end_point = (d_at(du) - linear).norm();
+    std::printf("  correction %.0e: three points %.2e, the end point %.2e off the linearised deformation\n", size,
+                three_points, end_point);
+    EXPECT_LT(three_points, 0.1 * end_point);
+    if (previous > 0.0) EXPECT_GT(previous / three_points, 6.0);  // third order: 8 per halving
+    previous = three_points;
+  }
+}
+
 TEST(CorotationalElement, SmallDeformationGivesLinearForce) {
   // No rigid motion, deformation 1e-7: f = K_linear u to O(u²).
   const ShellProperties p = testing::shell(7e10, 0.3, 0.01, 2700);

@@ -26,18 +26,21 @@ const std::string kFemHead =
 
 TEST(CaseFemStructure, KeysAreReadInSiUnits) {
   const p::Case c = case_from_text(kFemHead + "element_size_mm = 1.5\nvein_element_size_mm = 0.5\n"
-                                              "stiffness_damping_s = 2e-5\ngravity = [0.0, 0.0, -9.81]\n");
+                                              "stiffness_damping_s = 2e-5\ngravity = [0.0, 0.0, -9.81]\n"
+                                              "newton_geometric_terms = \"current\"\n");
   EXPECT_EQ(c.structure.kind, p::Case::Structure::Kind::Fem);
   EXPECT_EQ(c.structure.bodies, 1);
   EXPECT_DOUBLE_EQ(c.structure.fem_element_size, 1.5e-3);       // mm → m
   EXPECT_DOUBLE_EQ(c.structure.fem_vein_element_size, 0.5e-3);
   EXPECT_DOUBLE_EQ(c.structure.fem_stiffness_damping, 2e-5);    // s
   EXPECT_DOUBLE_EQ(c.structure.gravity.z(), -9.81);              // m/s², ground frame
+  EXPECT_FALSE(c.structure.fem_linearised_geometric_terms);      // "current"
   // Defaults: the wing file's mesh, no damping.
   const p::Case d = case_from_text(kFemHead);
   EXPECT_EQ(d.structure.fem_element_size, 0.0);
   EXPECT_EQ(d.structure.fem_vein_element_size, 0.0);
   EXPECT_EQ(d.structure.fem_stiffness_damping, 0.0);
+  EXPECT_TRUE(d.structure.fem_linearised_geometric_terms);  // "linearised"
 }
 
 TEST(CaseFemStructure, WhatBelongsToTheChainIsRefusedAtItsLineAndKey) {
@@ -51,6 +54,7 @@ TEST(CaseFemStructure, WhatBelongsToTheChainIsRefusedAtItsLineAndKey) {
       {kFemHead + "initial_angles_deg = [1.0, 2.0]\n", 8, "structure.initial_angles_deg"},
       {kFemHead + "element_size_mm = 0.0\n", 8, "structure.element_size_mm"},
       {kFemHead + "stiffness_damping_s = -1e-5\n", 8, "structure.stiffness_damping_s"},
+      {kFemHead + "newton_geometric_terms = \"mixed\"\n", 8, "structure.newton_geometric_terms"},
       {kFemHead + "[[loads]]\nbody = 1\npoint = [0, 0, 0]\nforce = [0, 0, 1]\n", 9, "loads[0].body"},
       {kFemHead + "[[markers]]\nname = \"tip\"\nbody = 1\npoint = [0, 0, 0]\n", 10, "markers[0].body"},
       // and the FEM's keys in a chain's case
