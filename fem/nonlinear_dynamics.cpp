@@ -86,6 +86,7 @@ struct DynamicsData::Work {
   std::vector<Eigen::Matrix3d> rotation0;        ///< its trial rotations
   std::vector<char> rotations_free;  ///< per node: its three rotations are free
   Eigen::VectorXd last_dx;  ///< the last Newton correction applied (free DOFs)
+  double matrix_start = 0.0;  ///< t_n of the step (or piece) the kept matrix was made in [s]
 };
 
 void DynamicsData::keep_warm_starts(int count) {
@@ -273,9 +274,11 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       place();
     };
     for (int it = 0; it <= model.options.max_iterations; ++it) {
-      // A new matrix: none kept, another Δt, full Newton, or the kept one contracted too
-      // slowly in the last iteration.
-      const bool new_matrix = !reuse || !w.matrix.valid() || w.matrix.step_size() != h || refactor;
+      // A new matrix: none kept, another Δt, full Newton, the kept one contracted too
+      // slowly in the last iteration, or it was made in another step and has given this
+      // solve its one correction (its next one grows: docs/fem.md, "Cost").
+      const bool new_matrix = !reuse || !w.matrix.valid() || w.matrix.step_size() != h || refactor ||
+                              (corrected && w.matrix_start != d.time);
       refactor = false;
       // A new matrix after a correction: its geometric terms from the elements' forces at
       // the correction's end taken linearly (DynamicsOptions::linearised_geometric_force). The
@@ -321,6 +324,7 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       if (it == model.options.max_iterations) break;
       if (new_matrix) {
         ++count.factorizations;
+        w.matrix_start = d.time;
         if (!w.matrix.factorize(w.assembler.tangent(), frame, h)) {
           res.failure = "t = " + std::to_string(d.time + h) + " s, iteration " + std::to_string(it) +
                         ": the Newton matrix is singular";

@@ -35,7 +35,8 @@
 ///   step with the kept matrix fails (the step is then redone with a fresh
 ///   matrix every iteration). A new matrix made after a correction takes its
 ///   geometric terms from the elements' forces along that correction taken
-///   linearly (DynamicsOptions::linearised_geometric_force).
+///   linearly (DynamicsOptions::linearised_geometric_force). A matrix made in
+///   another step (or piece) gives a solve one correction; then a new one is made.
 /// - CHOLMOD LLᵀ of the symmetrised tangent by default, sparse LU when LLᵀ
 ///   finds it not positive definite (a frame released from a large deflection:
 ///   measured in docs/fem.md), or the consistent tangent by LU on request.
