@@ -275,10 +275,11 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
     };
     for (int it = 0; it <= model.options.max_iterations; ++it) {
       // A new matrix: none kept, another Δt, full Newton, the kept one contracted too
-      // slowly in the last iteration, or it was made in another step and has given this
-      // solve its one correction (its next one grows: docs/fem.md, "Cost").
+      // slowly in the last iteration, or (with the linearised geometric terms) it was made
+      // in another step and has given this solve its one correction (its next one grows:
+      // docs/fem.md, "Cost").
       const bool new_matrix = !reuse || !w.matrix.valid() || w.matrix.step_size() != h || refactor ||
-                              (corrected && w.matrix_start != d.time);
+                              (model.options.linearised_geometric_force && corrected && w.matrix_start != d.time);
       refactor = false;
       // A new matrix after a correction: its geometric terms from the elements' forces at
       // the correction's end taken linearly (DynamicsOptions::linearised_geometric_force). The

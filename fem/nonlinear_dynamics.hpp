@@ -35,8 +35,9 @@
 ///   step with the kept matrix fails (the step is then redone with a fresh
 ///   matrix every iteration). A new matrix made after a correction takes its
 ///   geometric terms from the elements' forces along that correction taken
-///   linearly (DynamicsOptions::linearised_geometric_force). A matrix made in
-///   another step (or piece) gives a solve one correction; then a new one is made.
+///   linearly (DynamicsOptions::linearised_geometric_force); with them, a matrix
+///   made in another step (or piece) gives a solve one correction, then a new
+///   one is made.
 /// - CHOLMOD LLᵀ of the symmetrised tangent by default, sparse LU when LLᵀ
 ///   finds it not positive definite (a frame released from a large deflection:
 ///   measured in docs/fem.md), or the consistent tangent by LU on request.
@@ -91,6 +92,7 @@ struct DynamicsOptions {
   /// (second order in Δu, a spurious membrane force) then stays out of the matrix
   /// (Magisano, Leonetti & Garcea 2017; docs/fem.md, "Cost"). The converged answer is the
   /// same (the residual is not changed). Linear shells and frames; not with line_search.
+  /// With it, a matrix kept from another step (or piece) gives a solve one correction.
   bool linearised_geometric_force = true;
   /// Scale each Newton correction by a line search on the slope δxᵀ r along it
   /// (regula falsi, at most 8 force evaluations; docs/fsi.md "Film wings":
