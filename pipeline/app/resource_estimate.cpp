@@ -124,8 +124,10 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     const double n_fem = fem_dofs;
     e.fem_dofs = fem_dofs;
     memory += 30.0 * n_fem * std::log2(std::max(n_fem, 2.0)) * 12.0 + 40.0 * n_fem * 8.0;
-    const double step_factor = c.air.enabled ? kFemCoupledStepFactor : 1.0;  // in vacuum nothing to couple
-    e.fem_seconds = steps * step_factor * kFemSecondsPerStep1000 * std::pow(n_fem / 1000.0, kFemDofsExponent);
+    const double per_cycle = std::max(1.0, static_cast<double>(n.steps_per_cycle)) / 100.0;
+    const double newton = std::pow(per_cycle, -kFemStepsPerCycleExponent);
+    const double coupling = c.air.enabled ? kFemCouplingStepShare : 0.0;  // in vacuum nothing to couple
+    e.fem_seconds = steps * (newton + coupling) * kFemSecondsPerStep1000 * std::pow(n_fem / 1000.0, kFemDofsExponent);
   }
   e.memory_bytes = memory;
   e.isa = uvlm::kernel_isa();

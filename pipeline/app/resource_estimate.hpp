@@ -50,24 +50,32 @@ inline constexpr double kLongRunSeconds = 10.0;
 /// Runs estimated above this print their estimate even with run -q [s].
 inline constexpr double kVeryLongRunSeconds = 3600.0;
 
-/// One-thread CPU time of one time step of the FEM structure in vacuum at 1000 DOFs [s]: all
-/// its Newton iterations (assembly, the kept factorisation's renewals, the solves), scaled by
-/// (DOFs/1000)^kFemDofsExponent. Fitted (geometric mean of measured/model) to ten runs of the
-/// hawkmoth FEM at 4038–52 626 DOFs, in vacuum and in air (docs/fsi.md, "Cost estimate of a
-/// FEM run"; 2-core Intel Xeon with AVX-512, shared with other builds): every estimate within
-/// a factor 1.2 of the run's CPU time. Before: 1.5e-3 s a Newton iteration, 5 iterations per
-/// structure solve and 5 solves a step in air, i.e. 3.9–4.3 times the CPU time of a coupled
-/// run since the looser intermediate solves (1.2–1.6 times in vacuum).
-inline constexpr double kFemSecondsPerStep1000 = 5.6e-3;
+/// One-thread CPU time of one time step of the FEM structure in vacuum at 1000 DOFs and 100
+/// steps per cycle [s]: all its Newton iterations (assembly, the kept factorisation's renewals,
+/// the solves), scaled by (DOFs/1000)^kFemDofsExponent and
+/// (steps per cycle/100)^−kFemStepsPerCycleExponent. Fitted (geometric mean of measured/model)
+/// to ten runs of the hawkmoth FEM at 4038–52 626 DOFs, 100 and 400 steps a cycle, in vacuum
+/// and in air (docs/fsi.md, "Cost estimate of a FEM run", the runs of 29 Nov; 2-core Intel
+/// Xeon with AVX-512): every estimate within a factor 1.2 of the run's CPU time. Before (28
+/// Nov, a cost per step independent of the step size, 5.6e-3 s): 1.02–1.61 times the CPU time
+/// once the Newton matrix took its geometric terms from the corrections taken linearly.
+inline constexpr double kFemSecondsPerStep1000 = 5.2e-3;
 /// The factorisation of a 2-D mesh's matrix under a fill-reducing ordering grows as n^1.5
-/// (George & Liu 1981, nested dissection); the measured runs in vacuum give 1.41 (least
-/// squares in log DOFs, 4038–52 626 DOFs), inside the [1.2, 1.8] kept for the theory's 1.5.
+/// (George & Liu 1981, nested dissection); the measured runs in vacuum give 1.51 (least
+/// squares in log DOFs with the steps-per-cycle term, 4038–52 626 DOFs), inside the
+/// [1.2, 1.8] kept for the theory's 1.5.
 inline constexpr double kFemDofsExponent = 1.5;
-/// A step coupled with the lattice (air) against a step in vacuum at the same mesh: its
-/// sub-iterations' solves are warm-started and loose (docs/fsi.md, "One coupled step"), so a
-/// step of ~5 sub-iterations costs 1.44–1.76 times a vacuum step (measured, geometric mean
-/// 1.64, at 100 and 400 steps per cycle alike), not 5 times.
-inline constexpr double kFemCoupledStepFactor = 1.6;
+/// A smaller step turns the wing less, and its Newton solve needs fewer iterations and new
+/// matrices: in vacuum a step at 400 steps a cycle costs 0.68 and 0.71 times one at 100
+/// (4038 and 9030 DOFs, measured), 4^−0.28 and 4^−0.25 (geometric mean 0.27).
+inline constexpr double kFemStepsPerCycleExponent = 0.27;
+/// A step coupled with the lattice (air) adds its sub-iterations' solves, warm-started and
+/// loose (docs/fsi.md, "One coupled step"), and those do not shrink with the step: measured
+/// (air − vacuum) at the same mesh and step, in units of a vacuum step at 100 steps a cycle,
+/// 0.48, 0.47 (100 steps a cycle, 4038 and 9030 DOFs) and 0.67 (400 steps, 4038 DOFs),
+/// geometric mean 0.53. So an air step costs 1.53 vacuum steps at 100 steps a cycle, 1.77 at
+/// 400 (not the ~5 of its sub-iterations).
+inline constexpr double kFemCouplingStepShare = 0.53;
 
 /// \param bodies    bodies of the chain the run will use (the case's structure.bodies)
 /// \param fem_dofs  DOFs of the FEM structure (kind = "fem"; 0 for a chain)
