@@ -251,6 +251,9 @@ void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bo
 /// Convect the sheet's free rows over d.dt (far_velocity for rows older than the far-wake
 /// age) and, when a strip shed, release the release row with the leading-edge rings.
 void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Vector3d& far_velocity);
+/// Merge the sheet's older rings in pairs (model.sheet_merge_steps; leading_edge_sheet.hpp,
+/// "Merging the older rings"); returns the merges made.
+int merge_older_sheet_rings(const VortexLatticeModel& m, VortexLatticeData& d);
 
 /// Compute the loads selected by the model.
 void compute_loads(const VortexLatticeModel& m, VortexLatticeData& d);

@@ -25,6 +25,7 @@ void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
   prev_w.assign(node_rows * n1, 0.0);
   row_has_prev.assign(node_rows, 0);
   row_age.assign(node_rows, 0.0);
+  ring_rows.assign(static_cast<std::size_t>(rings), 1);
   current.setZero(ns);
   accepted.setZero(ns);
   lesp.setZero(ns);
@@ -217,6 +218,7 @@ void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, c
       throw std::length_error("vortex lattice: leading-edge sheet exceeds its capacity of " +
                               std::to_string(s.capacity) + " rows");
     for (int j = 0; j < ns; ++j) s.gamma[static_cast<std::size_t>(s.rows) * ns + j] = s.current(j);
+    s.ring_rows[static_cast<std::size_t>(s.rows)] = 1;
     ++s.rows;
     s.row_has_prev[s.rows] = 0;
     s.row_age[s.rows] = 0.0;
@@ -225,6 +227,62 @@ void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, c
     P.size = to + n1;
   }
   s.accepted = s.current;
+  if (release && m.sheet_merge_steps > 0) merge_older_sheet_rings(m, d);
+}
+
+int merge_older_sheet_rings(const VortexLatticeModel& m, VortexLatticeData& d) {
+  LeadingEdgeSheet& s = d.le_sheet;
+  const int ns = m.spanwise;
+  const std::size_t n1 = static_cast<std::size_t>(ns) + 1;
+  PointSet& P = s.nodes;
+  const double steps_age = m.sheet_merge_steps * d.dt;  // [s]
+  auto length = [&](int q0, int q1, int j) {  // ring's length along strip j, node rows q0 → q1 [m]
+    const std::size_t a = static_cast<std::size_t>(q0) * n1 + j, b = static_cast<std::size_t>(q1) * n1 + j;
+    return 0.5 * ((P.position(b) - P.position(a)).norm() + (P.position(b + 1) - P.position(a + 1)).norm());
+  };
+  int merges = 0;
+  // Rings 0 … rows−1, oldest first; ring r spans node rows r and r+1 (row `rows`: release).
+  // From the newest pair back, so a merge that makes a ring of 2w rows can merge again with
+  // an older one of 2w.
+  for (int r = s.rows - 2; r >= 0; --r) {
+    const int w = s.ring_rows[static_cast<std::size_t>(r)];
+    if (w != s.ring_rows[static_cast<std::size_t>(r) + 1] || 2 * w > kSheetMergeMaxRows) continue;
+    // The newer ring's age: that of its newer node row (r + 2).
+    if (s.row_age[static_cast<std::size_t>(r) + 2] < steps_age * w * (1.0 - 1e-9)) continue;
+    for (int j = 0; j < ns; ++j) {
+      const std::size_t a = static_cast<std::size_t>(r) * ns + j, b = a + ns;
+      const double la = length(r, r + 1, j), lb = length(r + 1, r + 2, j);
+      s.gamma[a] = la + lb > 0.0 ? (s.gamma[a] * la + s.gamma[b] * lb) / (la + lb) : 0.5 * (s.gamma[a] + s.gamma[b]);
+    }
+    s.ring_rows[static_cast<std::size_t>(r)] = 2 * w;
+    // Node row r+1 goes: rings r+2 … rows−1 and node rows r+2 … rows move down by one.
+    for (int q = r + 2; q < s.rows; ++q) {
+      s.ring_rows[static_cast<std::size_t>(q) - 1] = s.ring_rows[static_cast<std::size_t>(q)];
+      for (int j = 0; j < ns; ++j)
+        s.gamma[static_cast<std::size_t>(q - 1) * ns + j] = s.gamma[static_cast<std::size_t>(q) * ns + j];
+    }
+    for (int q = r + 2; q <= s.rows; ++q) {
+      const std::size_t from = static_cast<std::size_t>(q) * n1, to = from - n1;
+      for (std::size_t j = 0; j < n1; ++j) {
+        P.set(to + j, P.position(from + j));
+        P.u[to + j] = P.u[from + j];
+        P.v[to + j] = P.v[from + j];
+        P.w[to + j] = P.w[from + j];
+        s.prev_u[to + j] = s.prev_u[from + j];
+        s.prev_v[to + j] = s.prev_v[from + j];
+        s.prev_w[to + j] = s.prev_w[from + j];
+      }
+      s.row_has_prev[static_cast<std::size_t>(q) - 1] = s.row_has_prev[static_cast<std::size_t>(q)];
+      s.row_age[static_cast<std::size_t>(q) - 1] = s.row_age[static_cast<std::size_t>(q)];
+    }
+    --s.rows;
+    P.size -= n1;
+    ++merges;
+    // The merged ring may now pair with its older neighbour: look at (r − 1, r) next (the loop's
+    // --r), and at (r, r + 1) again if a newer ring of 2w rows sits there.
+    if (r + 1 <= s.rows - 1 && s.ring_rows[static_cast<std::size_t>(r) + 1] == 2 * w) ++r;
+  }
+  return merges;
 }
 
 }  // namespace detail

@@ -44,6 +44,17 @@
 /// back on its side, mirrored: a free vortex does not pass through a solid surface
 /// (without it the sheet of a plate pitched to 45° went under the plate and the shed
 /// circulation ran away; docs/uvlm.md, "Leading-edge vortex shedding: measurements").
+/// Merging the older rings (model.sheet_merge_steps = M > 0): the sheet gains a ring at
+/// nearly every step, and its sums grow with their square. After each release, two
+/// neighbouring rings of w rows each (w ≤ kSheetMergeMaxRows/2) merge into one of 2w rows
+/// once the newer of them is M·w steps old: the node row between them goes, and strip j's
+/// circulation becomes the length-weighted mean (Γ_a ℓ_a + Γ_b ℓ_b)/(ℓ_a + ℓ_b), ℓ the
+/// rings' lengths along the strip. That conserves the strip's circulation and the integral
+/// of its streamwise vorticity, and hands the removed spanwise vortex to its two neighbours
+/// in inverse proportion to their distances, which keeps its total and its centroid along
+/// the sheet (the linear redistribution of vortex-method remeshing, Cottet & Koumoutsakos
+/// 2000, "Vortex Methods", ch. 7). Rings younger than M steps are never merged; a ring of w
+/// rows is at least M·w/2 steps old, so the sheet holds about M (1 + log₂(age/M)) rings.
 /// The sheet's segments are free vortices: no force acts on them. They induce velocity on
 /// the wing (the boundary condition and the Bernoulli loads), on the trailing-edge wake
 /// and on themselves, summed with the trailing-edge wake's segments as one set
@@ -60,6 +71,8 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace flapsim::uvlm {
@@ -93,6 +106,22 @@ inline std::size_t sheet_edge_segment_capacity(int ns) {
   return kSheetEdgeRows * static_cast<std::size_t>(ns) + (kSheetEdgeRows + 1) * (static_cast<std::size_t>(ns) + 1);
 }
 
+/// Most original rows one merged ring of the sheet holds (model.sheet_merge_steps): a
+/// ring much longer than the sheet's spiral turns would cut across them.
+inline constexpr int kSheetMergeMaxRows = 16;
+
+/// Rings of a sheet that has released a ring at each of `released` steps, merged from M =
+/// merge_steps steps old (0: never, all of them): the youngest M rings apart, about M/2 of
+/// each merged size up to kSheetMergeMaxRows, then one ring of that size every
+/// kSheetMergeMaxRows steps: min(n, M (1 + ½ log₂ kSheetMergeMaxRows) + max(0, n − 16 M)/16).
+/// Exact for large n, above the count in between (a run of the rule at M = 4, 8, 16 and n
+/// up to 2000; test uvlm.LeadingEdgeSheetMerge.*); what the run's estimate counts.
+inline double merged_sheet_rings(int merge_steps, double released) {
+  if (merge_steps <= 0) return released;
+  const double m = merge_steps, w = kSheetMergeMaxRows;
+  return std::min(released, m * (1.0 + 0.5 * std::log2(w)) + std::max(0.0, released - w * m) / w);
+}
+
 struct LeadingEdgeSheet {
   int rows = 0;                      ///< stored rings; node rows 0 … rows (row `rows` = release row)
   int capacity = 0;                  ///< rings the storage holds
@@ -101,6 +130,7 @@ struct LeadingEdgeSheet {
   std::vector<double> prev_u, prev_v, prev_w;  ///< node velocities of the last step (AB2) [m/s]
   std::vector<char> row_has_prev;
   std::vector<double> row_age;       ///< time since each node row left the leading edge [s]
+  std::vector<int> ring_rows;        ///< rows released into each ring (1; more once merged)
   Eigen::VectorXd current;           ///< leading-edge ring circulation of the last solve, per strip [m²/s]
   Eigen::VectorXd accepted;          ///< the same at the last accepted step [m²/s]
   Eigen::VectorXd lesp;              ///< LESP of each strip in the last solve

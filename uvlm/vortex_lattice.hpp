@@ -92,6 +92,12 @@ struct VortexLatticeModel {
   /// stated so in the authors' code documentation, UnsteadyFlowSolvers.jl), the closest of
   /// their flat-plate values to insect Reynolds numbers (10²–10³); not fitted to any case.
   double lesp_critical = 0.11;
+  /// With LeadingEdge::Shed: merge the sheet's older rings in pairs, the first pairs once
+  /// their newer ring is this many steps old, a pair of merged rings of k rows each once it
+  /// is k times as old (at most kSheetMergeMaxRows rows a ring); 0 = never
+  /// (leading_edge_sheet.hpp, "Merging the older rings"). A discretisation parameter of
+  /// the sheet, as the time step is of the wake: results converge as it grows.
+  int sheet_merge_steps = 0;
   /// Evaluate the wake's direct sums in single precision: its self-induced velocity (the
   /// free-wake convection, the cost of a run) and its velocity at the wing's collocation
   /// and load points; about twice as fast, relative error ~1e-6 in these velocities (the

@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "pipeline/app/run_history.hpp"
+#include "uvlm/leading_edge_sheet.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::app {
@@ -82,10 +83,12 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     // A shed leading edge (numerics.leading_edge = "shed") adds its vortex sheet: up to a
     // node row a step (it gains one at nearly every step of a flapping wing: 99 of the
     // first 100 of the rigid hover, docs/performance.md), as the wake, and its segments are
-    // summed with the wake's, in the same precision (uvlm/leading_edge_sheet.hpp): counted
-    // as a second wake of the same size.
-    const double free_sets = n.leading_edge == uvlm::LeadingEdge::Shed ? 2.0 : 1.0;
-    memory += free_sets * (wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8);
+    // summed with the wake's, in the same precision (uvlm/leading_edge_sheet.hpp): its
+    // storage that of a second wake; in the sums, merged from sheet_merge_steps steps old,
+    // uvlm::merged_sheet_rings(r) rings where the wake has r rows (r without merging).
+    const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
+    const int merge = shed ? n.sheet_merge_steps : 0;
+    memory += (shed ? 2.0 : 1.0) * (wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8);
     e.lattice_bytes = 2.0 * panels * panels * 8;  // influence matrix and its LU
     memory += e.lattice_bytes;
     // Interactions: at step k the wake has r = min(k, max_rows) rows; the wake's nodes move
@@ -100,16 +103,31 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
                                  : std::numeric_limits<double>::infinity();
     const double solves = bodies > 1 || fem_dofs > 0 ? iterations : 1.0;
     const double bound_segments = (nc + 1) * ns + nc * (ns + 1);
+    auto ring_segments = [&](double rings) { return (rings + 1) * ns + rings * (ns + 1); };
     auto step_cost = [&](double r) {
-      const double segs = free_sets * ((r + 1) * ns + r * (ns + 1));
-      const double moving_nodes = n.free_wake ? free_sets * (std::min(r, free_rows) + 1) * (ns + 1) : 0.0;
+      const double young = std::min(r, free_rows);
+      double segs = ring_segments(r), moving_rows = young + 1;
+      if (shed) {
+        segs += ring_segments(uvlm::merged_sheet_rings(merge, r));
+        moving_rows += uvlm::merged_sheet_rings(merge, young) + 1;
+      }
+      const double moving_nodes = n.free_wake ? moving_rows * (ns + 1) : 0.0;
       return (moving_nodes + solves * panels) * (segs + bound_segments);
     };
-    // Sum over steps, in closed form per part: the wake growing with its nodes all moving
-    // (quadratic in r), growing beyond the moving rows (linear), then a wake of max_rows.
+    // Sum over steps, in closed form per part, where the count is quadratic in r: the wake
+    // growing with its nodes all moving, growing beyond the moving rows, and the merged
+    // sheet's parts (merged_sheet_rings: r up to 3M, constant to 16M, linear beyond); then a
+    // wake of max_rows.
     const double growing = std::min(steps, max_rows);
     const double moving = std::min(growing, free_rows);
-    double sum = sum_quadratic(step_cost, 1.0, moving) + sum_quadratic(step_cost, moving + 1.0, growing);
+    double ends[] = {moving, growing, 3.0 * merge, static_cast<double>(uvlm::kSheetMergeMaxRows) * merge};
+    std::sort(std::begin(ends), std::end(ends));
+    double sum = 0.0, from = 1.0;
+    for (double end : ends) {
+      if (end < from || end > growing) continue;
+      sum += sum_quadratic(step_cost, from, end);
+      from = end + 1.0;
+    }
     sum += std::max(0.0, steps - growing) * step_cost(max_rows);
     e.interactions = sum;
   }

@@ -142,7 +142,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
   const auto t = root.find_table("numerics");
   if (!t) return n;
   t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
-                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "lesp_critical", "core_model",
+                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "lesp_critical", "sheet_merge_steps", "core_model",
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
                   "wake_sum", "tree_tolerance", "wake_precision", "coupling", "max_coupling_iterations", "coupling_tolerance", "coupling_reuse_steps",
@@ -165,6 +165,9 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.lesp_critical = t->get_double("lesp_critical", n.lesp_critical, Bounds{0.0, 10.0, true, false});
   if (t->has("lesp_critical") && n.leading_edge != uvlm::LeadingEdge::Shed)
     t->fail("lesp_critical", "the critical leading-edge suction parameter acts only with leading_edge = \"shed\"");
+  n.sheet_merge_steps = t->get_int("sheet_merge_steps", n.sheet_merge_steps, Bounds::closed(0, 1000000));
+  if (t->has("sheet_merge_steps") && n.leading_edge != uvlm::LeadingEdge::Shed)
+    t->fail("sheet_merge_steps", "the leading-edge sheet's merging acts only with leading_edge = \"shed\"");
   n.core_model = t->get_choice("core_model", kCoreModelNames, std::optional(n.core_model));
   n.core_radius = t->get_double("core_radius", n.core_radius, Bounds{0.0, 1.0, true, false});
   n.wake_order = t->get_int("wake_order", n.wake_order, Bounds::closed(1, 2));

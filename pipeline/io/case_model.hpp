@@ -116,6 +116,9 @@ struct Case {
     uvlm::LeadingEdge leading_edge = uvlm::LeadingEdge::Separated;  ///< "none" | "attached" | "separated" | "shed"
     /// Critical leading-edge suction parameter of leading_edge = "shed" (uvlm/leading_edge_sheet.hpp)
     double lesp_critical = 0.11;
+    /// leading_edge = "shed": the sheet's rings merge in pairs from this many steps old, 0 =
+    /// never (uvlm/leading_edge_sheet.hpp, "Merging the older rings"; docs/uvlm.md)
+    int sheet_merge_steps = 8;
     uvlm::CoreModel core_model = uvlm::CoreModel::LambOseen;  ///< vortex core: "cutoff" | "lamb_oseen"
     double core_radius = 0.05;              ///< core radius as a fraction of the mean chord
     int wake_order = 1;                     ///< 1 | 2 (wake convection order)

@@ -148,6 +148,7 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.load_method", static_cast<int>(n.load_method));
   out.line("numerics.leading_edge", static_cast<int>(n.leading_edge));
   if (n.leading_edge == uvlm::LeadingEdge::Shed) out.line("numerics.lesp_critical", n.lesp_critical);
+  if (n.leading_edge == uvlm::LeadingEdge::Shed) out.line("numerics.sheet_merge_steps", n.sheet_merge_steps);
   out.line("numerics.core_model", static_cast<int>(n.core_model));
   out.line("numerics.core_radius", n.core_radius);
   out.line("numerics.wake_order", n.wake_order);

@@ -15,6 +15,7 @@
 
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/io/case_file.hpp"
+#include "uvlm/leading_edge_sheet.hpp"
 
 namespace {
 
@@ -26,7 +27,8 @@ using namespace flapsim;
 // point sees them once per lattice solve (1 per step for a rigid wing, else the typical
 // mean coupling iterations: 4 for a chain with the added mass, 5 without it or with
 // structure sub-steps, which leave it out; docs/fsi.md). A shed leading edge's sheet counts
-// as a second wake (a row a step), summed with it.
+// as a second wake (a row a step), summed with it; merged (sheet_merge_steps), with
+// uvlm::merged_sheet_rings of the wake's rows.
 double interactions_step_by_step(const io::Case& c, int bodies) {
   const auto& n = c.numerics;
   const double nc = n.chordwise_panels, ns = n.spanwise_panels;
@@ -40,9 +42,12 @@ double interactions_step_by_step(const io::Case& c, int bodies) {
   double sum = 0.0;
   for (long k = 1; k <= steps; ++k) {
     const double r = std::min(static_cast<double>(k), max_rows);
-    const double sets = n.leading_edge == uvlm::LeadingEdge::Shed ? 2.0 : 1.0;
-    const double segments = sets * ((r + 1) * ns + r * (ns + 1)) + bound;
-    const double moving = n.free_wake ? sets * (std::min(r, free_rows) + 1) * (ns + 1) : 0.0;
+    const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
+    const double s = shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, r) : 0.0;
+    const double s_young = shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, std::min(r, free_rows)) : 0.0;
+    const double segments = (r + 1) * ns + r * (ns + 1) + (shed ? (s + 1) * ns + s * (ns + 1) : 0.0) + bound;
+    const double moving =
+        n.free_wake ? ((std::min(r, free_rows) + 1) + (shed ? s_young + 1 : 0.0)) * (ns + 1) : 0.0;
     sum += (moving + solves * nc * ns) * segments;
   }
   return sum;
@@ -83,22 +88,31 @@ TEST(RunEstimate, TheInteractionsAreThoseOfTheWakeThatMoves) {
 
 TEST(RunEstimate, TheShedLeadingEdgesSheetCountsAsASecondWake) {
   // The sheet gains a node row at nearly every step and is summed with the wake, in its
-  // precision (uvlm/leading_edge_sheet.hpp): the rigid hover of bench_hover, whose whole
-  // wake is free, about four times the pairs of `separated` (twice the segments seen by
-  // twice the moving nodes; measured 3.4 times the CPU time, docs/performance.md), the
-  // flexible hover with its far wake about three times (measured 4.4 times: its coupling
-  // also takes 4.9 sub-iterations a step with `shed` against 3.7, counted as 4 for both).
+  // precision (uvlm/leading_edge_sheet.hpp). Unmerged (sheet_merge_steps = 0): the rigid hover
+  // of bench_hover, whose whole wake is free, about four times the pairs of `separated`
+  // (twice the segments seen by twice the moving nodes; measured 3.4 times the CPU time,
+  // docs/performance.md), the flexible hover with its far wake about three times (measured
+  // 4.4 times: its coupling also takes 4.9 sub-iterations a step with `shed` against 3.7,
+  // counted as 4 for both). Merged from 8 steps old (the default) the sheet holds
+  // uvlm::merged_sheet_rings rings: well under twice `separated`'s pairs.
   const std::string dir = std::string(FLAPSIM_SOURCE_DIR) + "/cases/";
   for (const char* name : {"bench_hover.toml", "hover_flexible.toml"}) {
     io::Case c = io::load_case_file(dir + name);
     const int bodies = c.structure.kind == io::Case::Structure::Kind::Rigid ? 1 : 10;
     const double separated = app::estimate_run(c, bodies).interactions;
     c.numerics.leading_edge = uvlm::LeadingEdge::Shed;
+    EXPECT_EQ(c.numerics.sheet_merge_steps, 8);
+    const app::RunEstimate merged = app::estimate_run(c, bodies);
+    EXPECT_NEAR(merged.interactions, interactions_step_by_step(c, bodies), 1e-9 * merged.interactions) << name;
+    c.numerics.sheet_merge_steps = 0;
     const app::RunEstimate shed = app::estimate_run(c, bodies);
     EXPECT_NEAR(shed.interactions, interactions_step_by_step(c, bodies), 1e-9 * shed.interactions) << name;
-    std::printf("[ value ] %s: shed / separated interactions %.2f\n", name, shed.interactions / separated);
+    std::printf("[ value ] %s: shed / separated interactions %.2f unmerged, %.2f merged from 8 steps\n", name,
+                shed.interactions / separated, merged.interactions / separated);
     EXPECT_GT(shed.interactions, 2.0 * separated) << name;
     EXPECT_LT(shed.interactions, 4.0 * separated) << name;
+    EXPECT_GT(merged.interactions, separated) << name;
+    EXPECT_LT(merged.interactions, 1.6 * separated) << name;
   }
 }
 

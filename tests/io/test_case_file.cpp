@@ -240,6 +240,20 @@ TEST(CaseFile, ShedLeadingEdgeAndItsCriticalLesp) {
   }
 }
 
+TEST(CaseFile, ShedLeadingEdgesSheetMergeSteps) {
+  // docs/case_file.md: sheet_merge_steps in [0, 10^6], default 8, 0 = never; with another
+  // leading-edge model bad input.
+  EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\n").numerics.sheet_merge_steps, 8);
+  EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\nsheet_merge_steps = 0\n").numerics.sheet_merge_steps, 0);
+  EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\nsheet_merge_steps = 16\n").numerics.sheet_merge_steps, 16);
+  for (const char* bad : {"leading_edge = \"shed\"\nsheet_merge_steps = -1\n", "leading_edge = \"shed\"\nsheet_merge_steps = 2.5\n",
+                          "leading_edge = \"separated\"\nsheet_merge_steps = 8\n"}) {
+    const auto e = error_of(kHead + "[numerics]\n" + bad);  // the key on line 10
+    EXPECT_EQ(e.key(), "numerics.sheet_merge_steps") << bad;
+    EXPECT_EQ(e.line(), 10) << bad;
+  }
+}
+
 TEST(CaseFile, WakePrecisionKey) {
   // docs/case_file.md: `wake_precision` = "single" (default) | "double" for the wake's direct sums.
   EXPECT_EQ(case_from_text(kHead).numerics.wake_precision, p::WakePrecision::Single);
