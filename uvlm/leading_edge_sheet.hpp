@@ -49,12 +49,13 @@
 /// neighbouring rings of w rows each (w ≤ kSheetMergeMaxRows/2) merge into one of 2w rows
 /// once the newer of them is M·w steps old: the node row between them goes, and strip j's
 /// circulation becomes the length-weighted mean (Γ_a ℓ_a + Γ_b ℓ_b)/(ℓ_a + ℓ_b), ℓ the
-/// rings' lengths along the strip. That conserves the strip's circulation and the integral
-/// of its streamwise vorticity, and hands the removed spanwise vortex to its two neighbours
-/// in inverse proportion to their distances, which keeps its total and its centroid along
-/// the sheet (the linear redistribution of vortex-method remeshing, Cottet & Koumoutsakos
-/// 2000, "Vortex Methods", ch. 7). Rings younger than M steps are never merged; a ring of w
-/// rows is at least M·w/2 steps old, so the sheet holds about M (1 + log₂(age/M)) rings.
+/// rings' lengths along the strip. That conserves the strip's ∫Γ dℓ (the integral of its
+/// streamwise vorticity) and hands the removed spanwise vortex to its two neighbours in
+/// inverse proportion to their distances, which keeps its total and its centroid along the
+/// sheet (the linear redistribution of vortex-method remeshing, Cottet & Koumoutsakos 2000,
+/// "Vortex Methods", on remeshing). Rings younger than M steps are never merged; a ring of
+/// w rows is at least M·w/2 steps old, so a merged ring is about 1/M of the distance it has
+/// travelled long, and the sheet holds about merged_sheet_rings(M, n) rings after n releases.
 /// The sheet's segments are free vortices: no force acts on them. They induce velocity on
 /// the wing (the boundary condition and the Bernoulli loads), on the trailing-edge wake
 /// and on themselves, summed with the trailing-edge wake's segments as one set
