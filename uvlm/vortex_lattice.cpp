@@ -83,7 +83,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   // With a leading edge that sheds, the sheet's segments (of up to wake_capacity + 1
   // rings, le_sheet.allocate below) join the wake's.
   const bool sheds = m.leading_edge == LeadingEdge::Shed;
-  const int sheet_rings = wake_capacity + 1;
+  const int sheet_rings = m.sheet_capacity > 0 ? m.sheet_capacity : wake_capacity + 1;
   wake_segments.reserve((rows + 1) * ns + rows * (ns + 1) + (sheds ? sheet_segment_capacity(ns, sheet_rings) : 0));
   wake_edge_segments.reserve(static_cast<std::size_t>(2 * ns + 1) + (sheds ? sheet_edge_segment_capacity(ns) : 0));
   wake_lattice.reserve(wake_nodes_n, static_cast<std::size_t>(ns) + 1);

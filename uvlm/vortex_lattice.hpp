@@ -107,6 +107,10 @@ struct VortexLatticeModel {
   bool single_precision_wake = true;
   int max_wake_rows = 0;   ///< keep at most this many wake rows (oldest dropped); 0 = keep all
   int wake_capacity = 0;   ///< wake rows the workspace holds (the run's step count, or max_wake_rows)
+  /// Rings the leading-edge sheet (LeadingEdge::Shed) holds; 0: wake_capacity + 1. Neither
+  /// max_wake_rows nor the far wake shortens the sheet: a run sets it from its steps
+  /// (merged_sheet_rings, leading_edge_sheet.hpp).
+  int sheet_capacity = 0;
   /// Viscous growth of the wake's cores with age (core_growth.hpp); off: every wake
   /// segment keeps `core`.
   CoreGrowth core_growth;

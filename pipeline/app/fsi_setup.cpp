@@ -13,6 +13,7 @@
 #include "pipeline/app/fem_structure_setup.hpp"
 #include "pipeline/app/structure_source.hpp"
 #include "reduction/linear_chain.hpp"
+#include "uvlm/leading_edge_sheet.hpp"
 #include "wings/input_error.hpp"
 #include "wings/planform_geometry.hpp"
 #include "wings/wing_file.hpp"
@@ -90,6 +91,13 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   m.single_precision_wake = c.numerics.wake_precision == io::WakePrecision::Single;
   m.max_wake_rows = c.numerics.wake_max_rows;
   m.wake_capacity = c.numerics.wake_max_rows > 0 ? c.numerics.wake_max_rows : static_cast<int>(steps);  // <= 1e8
+  // A shed leading edge's sheet is not shortened with the wake (wake_max_rows): at most a
+  // ring a step, merged_sheet_rings of them merged (within 3.1 rings of the count it gives,
+  // the rule run to 3000 steps at M = 1 … 32, 64, 100).
+  if (c.numerics.leading_edge == uvlm::LeadingEdge::Shed)
+    m.sheet_capacity = static_cast<int>(
+        std::min<double>(static_cast<double>(steps) + 1.0,
+                         std::ceil(uvlm::merged_sheet_rings(c.numerics.sheet_merge_steps, static_cast<double>(steps))) + 4.0));
   m.core_growth.enabled = c.numerics.core_growth;
   m.core_growth.squire_a1 = c.numerics.core_growth_a1;
   m.core_growth.kinematic_viscosity = c.numerics.kinematic_viscosity;

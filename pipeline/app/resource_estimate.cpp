@@ -83,12 +83,17 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     // A shed leading edge (numerics.leading_edge = "shed") adds its vortex sheet: up to a
     // node row a step (it gains one at nearly every step of a flapping wing: 99 of the
     // first 100 of the rigid hover, docs/performance.md), as the wake, and its segments are
-    // summed with the wake's, in the same precision (uvlm/leading_edge_sheet.hpp): its
-    // storage that of a second wake; in the sums, merged from sheet_merge_steps steps old,
+    // summed with the wake's, in the same precision (uvlm/leading_edge_sheet.hpp): stored for
+    // the rings the run can make (uvlm::merged_sheet_rings of its steps, fsi_setup.cpp; not
+    // shortened by wake_max_rows), and in the sums, merged from sheet_merge_steps steps old,
     // uvlm::merged_sheet_rings(r) rings where the wake has r rows (r without merging).
     const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
     const int merge = shed ? n.sheet_merge_steps : 0;
-    memory += (shed ? 2.0 : 1.0) * (wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8);
+    auto storage = [&](double ring_rows) {
+      return ((ring_rows + 2.0) * (ns + 1.0)) * 6 * 8 + ring_rows * ns * 8 + ((ring_rows + 1.0) * ns + ring_rows * (ns + 1.0)) * 8 * 8;
+    };
+    memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
+    if (shed) memory += storage(std::min(steps + 1.0, std::ceil(uvlm::merged_sheet_rings(merge, steps)) + 4.0));
     e.lattice_bytes = 2.0 * panels * panels * 8;  // influence matrix and its LU
     memory += e.lattice_bytes;
     // Interactions: at step k the wake has r = min(k, max_rows) rows; the wake's nodes move
