@@ -104,8 +104,8 @@ TEST(LeadingEdgeSheetMerge, AMergeKeepsTheStripsCirculationAndTheCentroidOfItsSp
     while (k < xs_before.size() && xs_before[k] != sheet.x(q)) ++k;
     EXPECT_LT(k, xs_before.size()) << "node row " << q << " is not a row of before";
   }
-  // The two youngest rings (newer row less than 2 steps old... the newest ring's newer row is
-  // the release row, 0 s; the next one's 1 s) are not merged.
+  // The two youngest rings are not merged: their newer node rows (the release row, 0 s, and
+  // the row before it, 1 s) are younger than the 2 steps asked.
   EXPECT_EQ(s.ring_rows[static_cast<std::size_t>(s.rows) - 1], 1);
   EXPECT_EQ(s.ring_rows[static_cast<std::size_t>(s.rows) - 2], 1);
   EXPECT_EQ(s.row_age[static_cast<std::size_t>(s.rows)], 0.0);
