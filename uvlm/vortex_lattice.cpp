@@ -80,8 +80,8 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   const std::size_t bound_n = static_cast<std::size_t>((nc + 1) * ns + nc * (ns + 1));
   bound_segments.reserve(bound_n);
   trailing_edge_segments.reserve(ns);
-  // With a leading edge that sheds, the sheet's segments (of up to wake_capacity + 1
-  // rings, le_sheet.allocate below) join the wake's.
+  // With a leading edge that sheds, the sheet's segments (of up to model.sheet_capacity
+  // rings, else wake_capacity + 1; le_sheet.allocate below) join the wake's.
   const bool sheds = m.leading_edge == LeadingEdge::Shed;
   const int sheet_rings = m.sheet_capacity > 0 ? m.sheet_capacity : wake_capacity + 1;
   wake_segments.reserve((rows + 1) * ns + rows * (ns + 1) + (sheds ? sheet_segment_capacity(ns, sheet_rings) : 0));

@@ -95,8 +95,9 @@ struct VortexLatticeModel {
   /// With LeadingEdge::Shed: merge the sheet's older rings in pairs, the first pairs once
   /// their newer ring is this many steps old, a pair of merged rings of k rows each once it
   /// is k times as old (at most kSheetMergeMaxRows rows a ring); 0 = never
-  /// (leading_edge_sheet.hpp, "Merging the older rings"). A discretisation parameter of
-  /// the sheet, as the time step is of the wake: results converge as it grows.
+  /// (leading_edge_sheet.hpp, "Merging the older rings"). A resolution of the sheet (a
+  /// merged ring is about 1/M of the distance it has travelled long), not a time; what it
+  /// moves was measured (docs/uvlm.md, "Merging the sheet's older rings").
   int sheet_merge_steps = 0;
   /// Evaluate the wake's direct sums in single precision: its self-induced velocity (the
   /// free-wake convection, the cost of a run) and its velocity at the wing's collocation

@@ -91,13 +91,9 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   m.single_precision_wake = c.numerics.wake_precision == io::WakePrecision::Single;
   m.max_wake_rows = c.numerics.wake_max_rows;
   m.wake_capacity = c.numerics.wake_max_rows > 0 ? c.numerics.wake_max_rows : static_cast<int>(steps);  // <= 1e8
-  // A shed leading edge's sheet is not shortened with the wake (wake_max_rows): at most a
-  // ring a step, merged_sheet_rings of them merged (within 3.1 rings of the count it gives,
-  // the rule run to 3000 steps at M = 1 … 32, 64, 100).
+  // A shed leading edge's sheet is not shortened with the wake (wake_max_rows).
   if (c.numerics.leading_edge == uvlm::LeadingEdge::Shed)
-    m.sheet_capacity = static_cast<int>(
-        std::min<double>(static_cast<double>(steps) + 1.0,
-                         std::ceil(uvlm::merged_sheet_rings(c.numerics.sheet_merge_steps, static_cast<double>(steps))) + 4.0));
+    m.sheet_capacity = uvlm::sheet_ring_capacity(c.numerics.sheet_merge_steps, static_cast<double>(steps));
   m.core_growth.enabled = c.numerics.core_growth;
   m.core_growth.squire_a1 = c.numerics.core_growth_a1;
   m.core_growth.kinematic_viscosity = c.numerics.kinematic_viscosity;

@@ -89,11 +89,11 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     // uvlm::merged_sheet_rings(r) rings where the wake has r rows (r without merging).
     const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
     const int merge = shed ? n.sheet_merge_steps : 0;
-    auto storage = [&](double ring_rows) {
-      return ((ring_rows + 2.0) * (ns + 1.0)) * 6 * 8 + ring_rows * ns * 8 + ((ring_rows + 1.0) * ns + ring_rows * (ns + 1.0)) * 8 * 8;
-    };
     memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
-    if (shed) memory += storage(std::min(steps + 1.0, std::ceil(uvlm::merged_sheet_rings(merge, steps)) + 4.0));
+    if (shed) {  // the same per ring, its rings' node rows and one more (the release row)
+      const double rings = uvlm::sheet_ring_capacity(merge, steps);
+      memory += (rings + 1.0) * (ns + 1.0) * 6 * 8 + rings * ns * 8 + ((rings + 1.0) * ns + rings * (ns + 1.0)) * 8 * 8;
+    }
     e.lattice_bytes = 2.0 * panels * panels * 8;  // influence matrix and its LU
     memory += e.lattice_bytes;
     // Interactions: at step k the wake has r = min(k, max_rows) rows; the wake's nodes move
