@@ -107,14 +107,15 @@ void segments_at_collocation(const VortexLatticeModel& m, VortexLatticeData& d, 
 }
 
 /// Normal velocity at every collocation point of the unit leading-edge ring of strip j:
-/// release row R_(j+1) → R_j, legs R → first bound vortex (the wake's core, as the sheet's
+/// release row R_(j+1) → R_j, legs R → first bound vortex (the sheet's core, as its
 /// segments), and the segment on the first bound vortex (the bound core, as the bound segment).
 void unit_ring_column(const VortexLatticeModel& m, VortexLatticeData& d, int j) {
   LeadingEdgeSheet& s = d.le_sheet;
   const std::size_t base = static_cast<std::size_t>(s.rows) * (m.spanwise + 1);
   const Eigen::Vector3d r0 = s.nodes.position(base + j), r1 = s.nodes.position(base + j + 1);
   const Eigen::Vector3d a0 = d.ring_nodes.col(m.node(0, j)), a1 = d.ring_nodes.col(m.node(0, j + 1));
-  const OneSegment ring[4] = {{r1, r0, 1.0, m.core}, {r0, a0, 1.0, m.core}, {a1, r1, 1.0, m.core},
+  const VortexCore sheet = m.sheet_core();
+  const OneSegment ring[4] = {{r1, r0, 1.0, sheet}, {r0, a0, 1.0, sheet}, {a1, r1, 1.0, sheet},
                               {a0, a1, 1.0, m.bound_core()}};
   segments_at_collocation(m, d, ring);
   for (int k = 0; k < m.panels(); ++k) s.columns(k, j) = s.at_collocation.velocity(k).dot(d.normal.col(k));

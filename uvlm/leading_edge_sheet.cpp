@@ -89,10 +89,12 @@ void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wak
     return q <= L ? s.nodes.position(static_cast<std::size_t>(q) * n1 + j) : Eigen::Vector3d(d.ring_nodes.col(m.node(0, j)));
   };
   auto age = [&](int q) { return q <= L ? s.row_age[q] : 0.0; };
-  const double rc0 = m.core.radius, rc0_2 = rc0 * rc0;
+  // Each segment's core relative to the wake's, which the sums' kernel takes (biot_savart.hpp):
+  // the sheet's own core (model.sheet_core()), grown with age.
+  const double rc0_2 = m.core.radius * m.core.radius, sheet_rc0 = m.sheet_core().radius;
   const double floor2 = view == WakeView::Wing ? m.near_wing_core * m.near_wing_core : 0.0;
   auto ratio = [&](double g, double a) {
-    double rc2 = grown_core_radius2(m.core_growth, rc0, a, g);
+    double rc2 = grown_core_radius2(m.core_growth, sheet_rc0, a, g);
     if (a > m.near_wing_min_age) rc2 = std::max(rc2, floor2);
     return rc0_2 / rc2;
   };

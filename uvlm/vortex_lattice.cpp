@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,8 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
     throw std::invalid_argument("vortex lattice: a convected far wake needs a disk area and speed factor > 0");
   if (m.leading_edge == LeadingEdge::Shed && !(m.lesp_critical > 0.0))
     throw std::invalid_argument("vortex lattice: the critical leading-edge suction parameter must be > 0");
+  if (!(m.sheet_core_radius >= 0.0) || !std::isfinite(m.sheet_core_radius))
+    throw std::invalid_argument("vortex lattice: the leading-edge sheet's core radius must be >= 0 (0: the wake's)");
   if (m.core_growth.enabled &&
       (!(m.core_growth.kinematic_viscosity > 0.0) || !(m.core_growth.squire_a1 >= 0.0)))
     throw std::invalid_argument("vortex lattice: core growth needs a viscosity > 0 and a1 >= 0");

@@ -99,6 +99,13 @@ struct VortexLatticeModel {
   /// merged ring is about 1/M of the distance it has travelled long), not a time; what it
   /// moves was measured (docs/uvlm.md, "Merging the sheet's older rings").
   int sheet_merge_steps = 0;
+  /// With LeadingEdge::Shed: the core radius of the leading-edge sheet's segments [m] (the
+  /// core model's), as `core` is the trailing-edge wake's: its free segments in every sum
+  /// and the legs of the leading-edge rings, grown with age like the wake's when core_growth
+  /// is on; 0 = core.radius. A larger core smooths the wing's circulation where the wing
+  /// sweeps back through its sheet (hover) and smears the vortex's suction over the wing
+  /// (revolving wings lift less): measured in docs/uvlm.md, "The sheet's core".
+  double sheet_core_radius = 0.0;
   /// Evaluate the wake's direct sums in single precision: its self-induced velocity (the
   /// free-wake convection, the cost of a run) and its velocity at the wing's collocation
   /// and load points; about twice as fast, relative error ~1e-6 in these velocities (the
@@ -193,6 +200,8 @@ struct VortexLatticeModel {
   bool steady() const { return steady_wake_length > 0.0; }
 
   VortexCore bound_core() const { return {core.model, core.radius * bound_core_fraction}; }
+  /// The leading-edge sheet's core (sheet_core_radius, or the wake's).
+  VortexCore sheet_core() const { return {core.model, sheet_core_radius > 0.0 ? sheet_core_radius : core.radius}; }
   int panels() const { return chordwise * spanwise; }
   int nodes() const { return (chordwise + 1) * (spanwise + 1); }
   int panel(int i, int j) const { return i + chordwise * j; }

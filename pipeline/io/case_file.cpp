@@ -142,7 +142,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
   const auto t = root.find_table("numerics");
   if (!t) return n;
   t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
-                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "lesp_critical", "sheet_merge_steps", "core_model",
+                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "lesp_critical", "sheet_merge_steps", "sheet_core_radius", "core_model",
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
                   "wake_sum", "tree_tolerance", "wake_precision", "coupling", "max_coupling_iterations", "coupling_tolerance", "coupling_reuse_steps",
@@ -168,6 +168,9 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.sheet_merge_steps = t->get_int("sheet_merge_steps", n.sheet_merge_steps, Bounds::closed(0, 1000000));
   if (t->has("sheet_merge_steps") && n.leading_edge != uvlm::LeadingEdge::Shed)
     t->fail("sheet_merge_steps", "the leading-edge sheet's merging acts only with leading_edge = \"shed\"");
+  n.sheet_core_radius = t->get_double("sheet_core_radius", n.sheet_core_radius, Bounds::closed(0.0, 2.0));
+  if (t->has("sheet_core_radius") && n.leading_edge != uvlm::LeadingEdge::Shed)
+    t->fail("sheet_core_radius", "the leading-edge sheet's core acts only with leading_edge = \"shed\"");
   n.core_model = t->get_choice("core_model", kCoreModelNames, std::optional(n.core_model));
   n.core_radius = t->get_double("core_radius", n.core_radius, Bounds{0.0, 1.0, true, false});
   n.wake_order = t->get_int("wake_order", n.wake_order, Bounds::closed(1, 2));

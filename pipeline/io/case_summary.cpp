@@ -79,7 +79,8 @@ std::string describe_case(const Case& c) {
             std::string(wings::choice_name(kLoadMethodNames, n.load_method)).c_str(),
             std::string(wings::choice_name(kLeadingEdgeNames, n.leading_edge)).c_str());
   if (n.leading_edge == uvlm::LeadingEdge::Shed)
-    s += line("  critical LESP          %.4g, sheet's rings merged from %s", n.lesp_critical,
+    s += line("  critical LESP          %.4g, sheet's core %.4g mean chords, its rings merged from %s", n.lesp_critical,
+              n.sheet_core_radius > 0.0 ? n.sheet_core_radius : n.core_radius,
               n.sheet_merge_steps > 0 ? (std::to_string(n.sheet_merge_steps) + " steps old").c_str() : "never");
   s += line("  vortex core            %s, radius %.4g mean chords",
             std::string(wings::choice_name(kCoreModelNames, n.core_model)).c_str(), n.core_radius);

@@ -14,7 +14,7 @@ namespace flapsim::io {
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages; they change no result.)
-static_assert(sizeof(Case) == 1448, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1464, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
@@ -149,6 +149,9 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.leading_edge", static_cast<int>(n.leading_edge));
   if (n.leading_edge == uvlm::LeadingEdge::Shed) out.line("numerics.lesp_critical", n.lesp_critical);
   if (n.leading_edge == uvlm::LeadingEdge::Shed) out.line("numerics.sheet_merge_steps", n.sheet_merge_steps);
+  // (only when set: the runs before the key keep their hash)
+  if (n.leading_edge == uvlm::LeadingEdge::Shed && n.sheet_core_radius > 0.0)
+    out.line("numerics.sheet_core_radius", n.sheet_core_radius);
   out.line("numerics.core_model", static_cast<int>(n.core_model));
   out.line("numerics.core_radius", n.core_radius);
   out.line("numerics.wake_order", n.wake_order);

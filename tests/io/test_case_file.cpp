@@ -254,6 +254,20 @@ TEST(CaseFile, ShedLeadingEdgesSheetMergeSteps) {
   }
 }
 
+TEST(CaseFile, ShedLeadingEdgesSheetCoreRadius) {
+  // docs/case_file.md: sheet_core_radius in [0, 2] mean chords, default 0 = core_radius;
+  // with another leading-edge model bad input.
+  EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\n").numerics.sheet_core_radius, 0.0);
+  EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\nsheet_core_radius = 0.5\n").numerics.sheet_core_radius,
+            0.5);
+  for (const char* bad : {"leading_edge = \"shed\"\nsheet_core_radius = -0.1\n", "leading_edge = \"shed\"\nsheet_core_radius = 2.5\n",
+                          "leading_edge = \"none\"\nsheet_core_radius = 0.5\n"}) {
+    const auto e = error_of(kHead + "[numerics]\n" + bad);  // the key on line 10
+    EXPECT_EQ(e.key(), "numerics.sheet_core_radius") << bad;
+    EXPECT_EQ(e.line(), 10) << bad;
+  }
+}
+
 TEST(CaseFile, WakePrecisionKey) {
   // docs/case_file.md: `wake_precision` = "single" (default) | "double" for the wake's direct sums.
   EXPECT_EQ(case_from_text(kHead).numerics.wake_precision, p::WakePrecision::Single);
