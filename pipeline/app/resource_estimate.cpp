@@ -84,8 +84,8 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     // node row a step (it gains one at nearly every step of a flapping wing: 99 of the
     // first 100 of the rigid hover, docs/performance.md), as the wake, and its segments are
     // summed with the wake's, in the same precision (uvlm/leading_edge_sheet.hpp): stored for
-    // the rings the run can make (uvlm::merged_sheet_rings of its steps, fsi_setup.cpp; not
-    // shortened by wake_max_rows), and in the sums, merged from sheet_merge_steps steps old,
+    // a ring a step (uvlm::sheet_ring_capacity, fsi_setup.cpp; not shortened by
+    // wake_max_rows), and in the sums, merged from sheet_merge_steps steps old,
     // uvlm::merged_sheet_rings(r) rings where the wake has r rows (r without merging).
     const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
     const int merge = shed ? n.sheet_merge_steps : 0;
