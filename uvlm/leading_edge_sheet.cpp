@@ -120,13 +120,15 @@ void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bo
   P.zero_velocity();
   if (m.wake_model != WakeModel::Free || P.size == 0) return;
   // Rows older than the far-wake age (the oldest rows, stored first) move with the far-wake
-  // velocity (move_and_release_sheet): their induced velocity is not summed, as the wake's
+  // velocity, those older than the frozen wake's age not at all (move_and_release_sheet):
+  // their induced velocity is not summed, as the wake's
   // (the same positions bit for bit; the flexible hover with the shipped chain 19.9 → 12.5
   // CPU s, docs/performance.md).
   std::size_t first = 0;
-  if (m.far_wake_age > 0.0) {
+  const double old_age = m.far_wake_age > 0.0 ? m.far_wake_age : m.frozen_wake_age;  // frozen: they do not move
+  if (old_age > 0.0) {
     int r = 0;
-    while (r < s.rows && s.row_age[r] > m.far_wake_age) ++r;
+    while (r < s.rows && s.row_age[r] > old_age) ++r;
     first = static_cast<std::size_t>(r) * (m.spanwise + 1);
   }
   if (first >= P.size) return;
@@ -183,6 +185,11 @@ void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, c
   PointSet& P = s.nodes;
   for (int r = 0; r < moving; ++r) {
     const bool far = far_age > 0.0 && s.row_age[r] > far_age;
+    // Rows older than the frozen wake's age stay where they are, as the wake's (wake.cpp).
+    if (m.frozen_wake_age > 0.0 && s.row_age[r] > m.frozen_wake_age) {
+      s.row_age[r] += dt;
+      continue;
+    }
     const bool ab2 = !far && m.wake_integrator == WakeIntegrator::AdamsBashforth2 && s.row_has_prev[r];
     for (std::size_t j = 0; j < n1; ++j) {
       const std::size_t k = static_cast<std::size_t>(r) * n1 + j;

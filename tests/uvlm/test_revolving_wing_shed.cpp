@@ -102,3 +102,35 @@ TEST(RevolvingWingShed, EndStripsKeepTheSuctionAnalogyAndSheddingStripsTheLdvmSu
   });
   EXPECT_GT(shedding, 8 * 11 / 2);
 }
+
+TEST(RevolvingWingShed, TheSheetsRowsOlderThanTheFrozenWakeAgeStayWhereTheyAre) {
+  // VortexLatticeModel::frozen_wake_age acts on the sheet as on the wake (wake.cpp): its rows
+  // older than the age neither move nor have their velocity summed; younger rows move.
+  // (Before 29 Nov, evening, the sheet's rows went on moving with their own velocity.)
+  // Robofly at 50°, 30 steps to 60° of revolution, frozen after 8 steps: the oldest sheet
+  // row's nodes between the step they froze and the last.
+  const int steps = 30, frozen_after = 8;
+  std::vector<double> at_freeze, at_end, at_start, before_freeze;
+  double frozen_age = 0.0;
+  revolve_each(
+      50.0, LeadingEdge::Shed, steps,
+      [&](int k, const VortexLatticeData& d, double, double) {
+        const LeadingEdgeSheet& s = d.le_sheet;
+        if (s.rows < 1) return true;
+        auto row0 = [&] { return std::vector<double>(s.nodes.x.begin(), s.nodes.x.begin() + (d.spanwise + 1)); };
+        frozen_age = frozen_after * d.dt;
+        if (at_start.empty()) at_start = row0();
+        if (s.row_age[0] <= frozen_age) before_freeze = row0();
+        if (at_freeze.empty() && s.row_age[0] > frozen_age) at_freeze = row0();
+        if (k == steps) at_end = row0();
+        return true;
+      },
+      0.0, [&](VortexLatticeModel& m) { m.frozen_wake_age = frozen_after * (M_PI / (2.0 * M_PI) / steps); });
+  ASSERT_FALSE(at_freeze.empty());
+  ASSERT_EQ(at_end.size(), at_freeze.size());
+  for (std::size_t j = 0; j < at_end.size(); ++j) EXPECT_EQ(at_end[j], at_freeze[j]) << "node " << j;
+  // It moved while younger (else the check above shows nothing).
+  double moved = 0.0;
+  for (std::size_t j = 0; j < at_start.size(); ++j) moved = std::max(moved, std::abs(before_freeze[j] - at_start[j]));
+  EXPECT_GT(moved, 1e-4);
+}
