@@ -9,7 +9,6 @@
 #include <fstream>
 #include <numbers>
 #include <regex>
-#include <sstream>
 #include <vector>
 #include <string>
 
@@ -17,6 +16,7 @@
 #include "common/scratch_dir.hpp"
 #include "flat_plate_glide.hpp"
 #include "history_csv.hpp"
+#include "shipped_case_text.hpp"
 #include "pipeline/app/diverged_force.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include <Eigen/Geometry>
@@ -24,8 +24,6 @@
 namespace {
 
 using flapsim::test::read_text;
-
-const std::string kDivergedForceSource = FLAPSIM_SOURCE_DIR;
 
 // The four corners of a 10 mm × 40 mm rectangle, leading edge at x = 2.5 mm, root on y = 0.
 Eigen::Matrix3Xd corners_of_a_flat_plate() {
@@ -80,10 +78,7 @@ TEST(DivergedForce, TheRigidHoverWithAShedLeadingEdgeStopsWhereItsLiftRunsAway) 
   // 498 mN (28 Nov). It must stop, exit status 3, at the first step whose force exceeds
   // 20 ½ρU_b²S (0.475 N for this wing and motion), with history.csv valid up to it.
   flapsim::test::ScratchDir dir("diverged_shed_hover");
-  std::ifstream in(kDivergedForceSource + "/cases/bench_hover.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string toml = std::regex_replace(text.str(), std::regex("wing = \"\\.\\./wings/"), "wing = \"" + kDivergedForceSource + "/wings/");
+  std::string toml = flapsim::test::shipped_case_text("bench_hover");
   // The sheet unmerged (sheet_merge_steps = 0, the default before 29 Nov): merged from 8
   // steps old (the default now) the same hover runs its 3 wingbeats through and comes apart
   // in the fourth (step 341 of 600, docs/uvlm.md, "Merging the sheet's older rings").

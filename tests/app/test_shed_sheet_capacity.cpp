@@ -8,13 +8,13 @@
 #include <cmath>
 #include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 #include "flat_plate_glide.hpp"
 #include "history_csv.hpp"
+#include "shipped_case_text.hpp"
 
 namespace {
 
@@ -55,10 +55,7 @@ TEST(ShedSheetCapacity, AHoverWhoseEdgePausesAtTheReversalsRunsThrough) {
   // step it flies its 3 wingbeats.
   const std::string source = FLAPSIM_SOURCE_DIR;
   flapsim::test::ScratchDir dir("shed_capacity_pauses");
-  std::ifstream in(source + "/cases/hover_flexible.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string toml = std::regex_replace(text.str(), std::regex("wing = \"\\.\\./wings/"), "wing = \"" + source + "/wings/");
+  std::string toml = flapsim::test::shipped_case_text("hover_flexible");
   toml = std::regex_replace(toml, std::regex("\\[numerics\\]\n"), "[numerics]\nleading_edge = \"shed\"\nsheet_core_radius = 0.5\n");
   toml = std::regex_replace(toml, std::regex("vtk_every = 2"), "vtk_every = 0");
   ASSERT_NE(toml.find("vtk_every = 0"), std::string::npos);

@@ -9,28 +9,22 @@
 #include <cstdio>
 #include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 #include "history_csv.hpp"
+#include "shipped_case_text.hpp"
 
 namespace {
-
-const std::string kSheetCoreSource = FLAPSIM_SOURCE_DIR;
 
 /// Lift [mN] of each step of cases/bench_hover.toml (the rigid hawkmoth hover, free wake,
 /// 100 steps a wingbeat) flown for 2 wingbeats with a shed leading edge, its sheet unmerged,
 /// and `numerics` added; `completes`: whether the run must end with exit status 0.
 std::vector<double> hover_lift_mn(const std::string& folder, const std::string& numerics, bool completes) {
   flapsim::test::ScratchDir dir(folder);
-  std::ifstream in(kSheetCoreSource + "/cases/bench_hover.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string toml =
-      std::regex_replace(text.str(), std::regex("wing = \"\\.\\./wings/"), "wing = \"" + kSheetCoreSource + "/wings/");
+  std::string toml = flapsim::test::shipped_case_text("bench_hover");
   toml = std::regex_replace(toml, std::regex("cycles = 3"), "cycles = 2");
   toml = std::regex_replace(toml, std::regex("\\[numerics\\]\n"),
                             "[numerics]\nleading_edge = \"shed\"\nsheet_merge_steps = 0\n" + numerics);

@@ -77,6 +77,23 @@ struct StraightSheet {
   }
 };
 
+/// One step's release on a StraightSheet: every node moves 1 m along x, the rows age 1 s, the
+/// release row becomes a free row of one released row (circulation 1 + j on strip j) and a
+/// new release row is placed at x = 0; then the merge rule runs.
+void release_a_ring(StraightSheet& sheet) {
+  LeadingEdgeSheet& s = sheet.d.le_sheet;
+  const std::size_t n1 = kMergeStrips + 1;
+  for (std::size_t i = 0; i < s.nodes.size; ++i) s.nodes.x[i] += 1.0;
+  for (int q = 0; q <= s.rows; ++q) s.row_age[static_cast<std::size_t>(q)] += 1.0;
+  for (int j = 0; j < kMergeStrips; ++j) s.gamma[static_cast<std::size_t>(s.rows) * kMergeStrips + j] = 1.0 + j;
+  s.ring_rows[static_cast<std::size_t>(s.rows)] = 1;
+  ++s.rows;
+  for (std::size_t j = 0; j < n1; ++j) s.nodes.set(static_cast<std::size_t>(s.rows) * n1 + j, Eigen::Vector3d(0.0, 0.01 * j, 0.0));
+  s.nodes.size += n1;
+  s.row_age[static_cast<std::size_t>(s.rows)] = 0.0;
+  detail::merge_older_sheet_rings(sheet.m, sheet.d);
+}
+
 }  // namespace
 
 TEST(LeadingEdgeSheetMerge, AMergeKeepsTheStripsCirculationAndTheCentroidOfItsSpanwiseVortices) {
@@ -119,17 +136,8 @@ TEST(LeadingEdgeSheetMerge, ARingOfWRowsMergesOnlyOnceItIsMTimesWStepsOld) {
   for (int steps : {20, 64}) {
     StraightSheet sheet(1, 4);
     LeadingEdgeSheet& s = sheet.d.le_sheet;
-    const std::size_t n1 = kMergeStrips + 1;
-    for (int k = 1; k < steps; ++k) {  // release: the release row becomes a free row, a new one at x = 0
-      for (std::size_t i = 0; i < s.nodes.size; ++i) s.nodes.x[i] += 1.0;
-      for (int q = 0; q <= s.rows; ++q) s.row_age[static_cast<std::size_t>(q)] += 1.0;
-      for (int j = 0; j < kMergeStrips; ++j) s.gamma[static_cast<std::size_t>(s.rows) * kMergeStrips + j] = 1.0 + j;
-      s.ring_rows[static_cast<std::size_t>(s.rows)] = 1;
-      ++s.rows;
-      for (std::size_t j = 0; j < n1; ++j) s.nodes.set(static_cast<std::size_t>(s.rows) * n1 + j, Eigen::Vector3d(0.0, 0.01 * j, 0.0));
-      s.nodes.size += n1;
-      s.row_age[static_cast<std::size_t>(s.rows)] = 0.0;
-      detail::merge_older_sheet_rings(sheet.m, sheet.d);
+    for (int k = 1; k < steps; ++k) {
+      release_a_ring(sheet);
       // What a run stores for k + 1 releases holds them (pipeline/app/fsi_setup.cpp).
       EXPECT_LE(s.rows, sheet_ring_capacity(4, k + 1.0)) << "step " << k;
       for (int r = 0; r < s.rows; ++r) {
@@ -167,20 +175,14 @@ TEST(LeadingEdgeSheetMerge, PausesInTheSheddingLeaveRingsNoPairTakesSoARunStores
   const int steps = 400;
   StraightSheet sheet(1, 8, steps + 1);
   LeadingEdgeSheet& s = sheet.d.le_sheet;
-  const std::size_t n1 = kMergeStrips + 1;
   int released = 1;
   for (int k = 1; k < steps; ++k) {
-    for (int q = 0; q <= s.rows; ++q) s.row_age[static_cast<std::size_t>(q)] += 1.0;
-    if (k % 50 >= 47) continue;  // no release: the ages grow, nothing else changes
-    for (std::size_t i = 0; i < s.nodes.size; ++i) s.nodes.x[i] += 1.0;
-    for (int j = 0; j < kMergeStrips; ++j) s.gamma[static_cast<std::size_t>(s.rows) * kMergeStrips + j] = 1.0 + j;
-    s.ring_rows[static_cast<std::size_t>(s.rows)] = 1;
-    ++s.rows;
-    for (std::size_t j = 0; j < n1; ++j) s.nodes.set(static_cast<std::size_t>(s.rows) * n1 + j, Eigen::Vector3d(0.0, 0.01 * j, 0.0));
-    s.nodes.size += n1;
-    s.row_age[static_cast<std::size_t>(s.rows)] = 0.0;
+    if (k % 50 >= 47) {  // no release: the rows age, nothing else changes
+      for (int q = 0; q <= s.rows; ++q) s.row_age[static_cast<std::size_t>(q)] += 1.0;
+      continue;
+    }
+    release_a_ring(sheet);
     ++released;
-    detail::merge_older_sheet_rings(sheet.m, sheet.d);
     ASSERT_LE(s.rows, sheet_ring_capacity(8, k + 1.0)) << "step " << k;
   }
   int total = 0;
