@@ -129,12 +129,8 @@ inline double merged_sheet_rings(int merge_steps, double released) {
 /// every step; each pause in the shedding (a hover's reversal) leaves rings that no pair of
 /// equal width takes (a ring of 4 and one of 1 between rings of 16), so the count may grow
 /// past it by a few rings a pause (test LeadingEdgeSheetMerge.PausesInTheShedding…). Neither
-/// wake_max_rows nor the far wake shortens the sheet. (merge_steps: kept for the callers'
-/// symmetry with merged_sheet_rings; the storage is the same.)
-inline int sheet_ring_capacity(int merge_steps, double steps) {
-  (void)merge_steps;
-  return static_cast<int>(steps + 1.0);
-}
+/// wake_max_rows nor the far wake shortens the sheet.
+inline int sheet_ring_capacity(double steps) { return static_cast<int>(steps + 1.0); }
 
 struct LeadingEdgeSheet {
   int rows = 0;                      ///< stored rings; node rows 0 … rows (row `rows` = release row)

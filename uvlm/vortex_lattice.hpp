@@ -104,7 +104,8 @@ struct VortexLatticeModel {
   /// and the legs of the leading-edge rings, grown with age like the wake's when core_growth
   /// is on; 0 = core.radius. A larger core smooths the wing's circulation where the wing
   /// sweeps back through its sheet (hover) and smears the vortex's suction over the wing
-  /// (revolving wings lift less): measured in docs/uvlm.md, "The sheet's core".
+  /// (revolving wings lift less): measured in docs/uvlm.md, "Why the shed hover's lift is
+  /// rough: the sheet's core".
   double sheet_core_radius = 0.0;
   /// Evaluate the wake's direct sums in single precision: its self-induced velocity (the
   /// free-wake convection, the cost of a run) and its velocity at the wing's collocation

@@ -94,7 +94,7 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   m.wake_capacity = c.numerics.wake_max_rows > 0 ? c.numerics.wake_max_rows : static_cast<int>(steps);  // <= 1e8
   // A shed leading edge's sheet is not shortened with the wake (wake_max_rows).
   if (c.numerics.leading_edge == uvlm::LeadingEdge::Shed)
-    m.sheet_capacity = uvlm::sheet_ring_capacity(c.numerics.sheet_merge_steps, static_cast<double>(steps));
+    m.sheet_capacity = uvlm::sheet_ring_capacity(static_cast<double>(steps));
   m.core_growth.enabled = c.numerics.core_growth;
   m.core_growth.squire_a1 = c.numerics.core_growth_a1;
   m.core_growth.kinematic_viscosity = c.numerics.kinematic_viscosity;

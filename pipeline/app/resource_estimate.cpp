@@ -91,7 +91,7 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     const int merge = shed ? n.sheet_merge_steps : 0;
     memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
     if (shed) {  // the same per ring, its rings' node rows and one more (the release row)
-      const double rings = uvlm::sheet_ring_capacity(merge, steps);
+      const double rings = uvlm::sheet_ring_capacity(steps);
       memory += (rings + 1.0) * (ns + 1.0) * 6 * 8 + rings * ns * 8 + ((rings + 1.0) * ns + rings * (ns + 1.0)) * 8 * 8;
     }
     e.lattice_bytes = 2.0 * panels * panels * 8;  // influence matrix and its LU

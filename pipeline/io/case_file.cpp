@@ -163,14 +163,12 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.load_method = t->get_choice("load_method", kLoadMethodNames, std::optional(n.load_method));
   n.leading_edge = t->get_choice("leading_edge", kLeadingEdgeNames, std::optional(n.leading_edge));
   n.lesp_critical = t->get_double("lesp_critical", n.lesp_critical, Bounds{0.0, 10.0, true, false});
-  if (t->has("lesp_critical") && n.leading_edge != uvlm::LeadingEdge::Shed)
-    t->fail("lesp_critical", "the critical leading-edge suction parameter acts only with leading_edge = \"shed\"");
   n.sheet_merge_steps = t->get_int("sheet_merge_steps", n.sheet_merge_steps, Bounds::closed(0, 1000000));
-  if (t->has("sheet_merge_steps") && n.leading_edge != uvlm::LeadingEdge::Shed)
-    t->fail("sheet_merge_steps", "the leading-edge sheet's merging acts only with leading_edge = \"shed\"");
   n.sheet_core_radius = t->get_double("sheet_core_radius", n.sheet_core_radius, Bounds::closed(0.0, 2.0));
-  if (t->has("sheet_core_radius") && n.leading_edge != uvlm::LeadingEdge::Shed)
-    t->fail("sheet_core_radius", "the leading-edge sheet's core acts only with leading_edge = \"shed\"");
+  // The keys of the shed leading edge's sheet act with it only.
+  for (const char* key : {"lesp_critical", "sheet_merge_steps", "sheet_core_radius"})
+    if (t->has(key) && n.leading_edge != uvlm::LeadingEdge::Shed)
+      t->fail(key, "acts only with leading_edge = \"shed\" (docs/uvlm.md, \"Leading-edge vortex shedding\")");
   n.core_model = t->get_choice("core_model", kCoreModelNames, std::optional(n.core_model));
   n.core_radius = t->get_double("core_radius", n.core_radius, Bounds{0.0, 1.0, true, false});
   n.wake_order = t->get_int("wake_order", n.wake_order, Bounds::closed(1, 2));

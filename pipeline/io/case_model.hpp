@@ -120,7 +120,7 @@ struct Case {
     /// never (uvlm/leading_edge_sheet.hpp, "Merging the older rings"; docs/uvlm.md)
     int sheet_merge_steps = 8;
     /// leading_edge = "shed": the sheet's core radius as a fraction of the mean chord, 0 =
-    /// core_radius (uvlm::VortexLatticeModel::sheet_core_radius; docs/uvlm.md, "The sheet's core")
+    /// core_radius (uvlm::VortexLatticeModel::sheet_core_radius; docs/uvlm.md, "Why the shed hover's lift is rough: the sheet's core")
     double sheet_core_radius = 0.0;
     uvlm::CoreModel core_model = uvlm::CoreModel::LambOseen;  ///< vortex core: "cutoff" | "lamb_oseen"
     double core_radius = 0.05;              ///< core radius as a fraction of the mean chord

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 #include <string>
 
@@ -30,6 +31,16 @@ const std::string kHead =
     "rotation = { mean_deg = 90.0, sin_deg = [-60.0] }\n"                 // 5
     "[structure]\n"                                                       // 6
     "kind = \"rigid\"\n";                                                 // 7
+
+/// Each of `bad` (two lines after kHead's and [numerics], the key on line 10) is bad input
+/// naming numerics.`key` on line 10.
+void expect_numerics_key_refused(const std::string& key, std::initializer_list<const char*> bad) {
+  for (const char* text : bad) {
+    const auto e = error_of(kHead + "[numerics]\n" + text);
+    EXPECT_EQ(e.key(), "numerics." + key) << text;
+    EXPECT_EQ(e.line(), 10) << text;
+  }
+}
 
 }  // namespace
 
@@ -232,12 +243,9 @@ TEST(CaseFile, ShedLeadingEdgeAndItsCriticalLesp) {
   EXPECT_EQ(c.numerics.leading_edge, flapsim::uvlm::LeadingEdge::Shed);
   EXPECT_EQ(c.numerics.lesp_critical, 0.2);
   EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\n").numerics.lesp_critical, 0.11);
-  for (const char* bad : {"leading_edge = \"shed\"\nlesp_critical = 0.0\n", "leading_edge = \"shed\"\nlesp_critical = 11\n",
-                          "leading_edge = \"separated\"\nlesp_critical = 0.2\n"}) {
-    const auto e = error_of(kHead + "[numerics]\n" + bad);  // the key on line 10
-    EXPECT_EQ(e.key(), "numerics.lesp_critical") << bad;
-    EXPECT_EQ(e.line(), 10) << bad;
-  }
+  expect_numerics_key_refused("lesp_critical", {"leading_edge = \"shed\"\nlesp_critical = 0.0\n",
+                                                "leading_edge = \"shed\"\nlesp_critical = 11\n",
+                                                "leading_edge = \"separated\"\nlesp_critical = 0.2\n"});
 }
 
 TEST(CaseFile, ShedLeadingEdgesSheetMergeSteps) {
@@ -246,12 +254,9 @@ TEST(CaseFile, ShedLeadingEdgesSheetMergeSteps) {
   EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\n").numerics.sheet_merge_steps, 8);
   EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\nsheet_merge_steps = 0\n").numerics.sheet_merge_steps, 0);
   EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\nsheet_merge_steps = 16\n").numerics.sheet_merge_steps, 16);
-  for (const char* bad : {"leading_edge = \"shed\"\nsheet_merge_steps = -1\n", "leading_edge = \"shed\"\nsheet_merge_steps = 2.5\n",
-                          "leading_edge = \"separated\"\nsheet_merge_steps = 8\n"}) {
-    const auto e = error_of(kHead + "[numerics]\n" + bad);  // the key on line 10
-    EXPECT_EQ(e.key(), "numerics.sheet_merge_steps") << bad;
-    EXPECT_EQ(e.line(), 10) << bad;
-  }
+  expect_numerics_key_refused("sheet_merge_steps", {"leading_edge = \"shed\"\nsheet_merge_steps = -1\n",
+                                                    "leading_edge = \"shed\"\nsheet_merge_steps = 2.5\n",
+                                                    "leading_edge = \"separated\"\nsheet_merge_steps = 8\n"});
 }
 
 TEST(CaseFile, ShedLeadingEdgesSheetCoreRadius) {
@@ -260,12 +265,9 @@ TEST(CaseFile, ShedLeadingEdgesSheetCoreRadius) {
   EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\n").numerics.sheet_core_radius, 0.0);
   EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\nsheet_core_radius = 0.5\n").numerics.sheet_core_radius,
             0.5);
-  for (const char* bad : {"leading_edge = \"shed\"\nsheet_core_radius = -0.1\n", "leading_edge = \"shed\"\nsheet_core_radius = 2.5\n",
-                          "leading_edge = \"none\"\nsheet_core_radius = 0.5\n"}) {
-    const auto e = error_of(kHead + "[numerics]\n" + bad);  // the key on line 10
-    EXPECT_EQ(e.key(), "numerics.sheet_core_radius") << bad;
-    EXPECT_EQ(e.line(), 10) << bad;
-  }
+  expect_numerics_key_refused("sheet_core_radius", {"leading_edge = \"shed\"\nsheet_core_radius = -0.1\n",
+                                                    "leading_edge = \"shed\"\nsheet_core_radius = 2.5\n",
+                                                    "leading_edge = \"none\"\nsheet_core_radius = 0.5\n"});
 }
 
 TEST(CaseFile, WakePrecisionKey) {

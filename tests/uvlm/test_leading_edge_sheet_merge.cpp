@@ -139,7 +139,7 @@ TEST(LeadingEdgeSheetMerge, ARingOfWRowsMergesOnlyOnceItIsMTimesWStepsOld) {
     for (int k = 1; k < steps; ++k) {
       release_a_ring(sheet);
       // What a run stores for k + 1 releases holds them (pipeline/app/fsi_setup.cpp).
-      EXPECT_LE(s.rows, sheet_ring_capacity(4, k + 1.0)) << "step " << k;
+      EXPECT_LE(s.rows, sheet_ring_capacity(k + 1.0)) << "step " << k;
       for (int r = 0; r < s.rows; ++r) {
         const int w = s.ring_rows[static_cast<std::size_t>(r)];
         EXPECT_LE(w, kSheetMergeMaxRows);
@@ -183,7 +183,7 @@ TEST(LeadingEdgeSheetMerge, PausesInTheSheddingLeaveRingsNoPairTakesSoARunStores
     }
     release_a_ring(sheet);
     ++released;
-    ASSERT_LE(s.rows, sheet_ring_capacity(8, k + 1.0)) << "step " << k;
+    ASSERT_LE(s.rows, sheet_ring_capacity(k + 1.0)) << "step " << k;
   }
   int total = 0;
   for (int r = 0; r < s.rows; ++r) total += s.ring_rows[static_cast<std::size_t>(r)];
