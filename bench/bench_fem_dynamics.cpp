@@ -19,6 +19,7 @@
 #include <string>
 
 #include "fem/constraints.hpp"
+#include "fem/dense_kernels.hpp"
 #include "fem/wing_fem.hpp"
 #include "mbd/wing_kinematics.hpp"
 #include "pipeline/app/fsi_setup.hpp"
@@ -165,7 +166,9 @@ void coupled_cycle(benchmark::State& state, const std::string& wing, const std::
 // The Newton matrix c_M M + K_T of the hawkmoth's default FEM (at rest in its reference
 // state, 100 steps per cycle): CHOLMOD's supernodal LLᵀ with the fill-reducing ordering
 // range(0) (0: CHOLMOD's default choice, 1: AMD, 2: METIS, 3: NESDIS); each iteration one
-// numeric factorisation and one solve. Counters: nonzeros of L and flops of a factorisation.
+// numeric factorisation and one solve. Counters: nonzeros of L and flops of a factorisation;
+// label: the variant of the dense kernels under it (fem/dense_kernels.hpp; FLAPSIM_KERNEL=
+// scalar measures SSE2 on an AVX2 machine).
 void BM_HawkmothNewtonMatrixFactorisation(benchmark::State& state) {
   const auto s = make_setup("wings/hawkmoth.toml", "cases/hover_flexible.toml", false);
   const fsi::FemStructureModel& m = *s->structure;
@@ -193,6 +196,7 @@ void BM_HawkmothNewtonMatrixFactorisation(benchmark::State& state) {
   state.counters["lnz"] = llt.cholmod().lnz;
   state.counters["flops"] = llt.cholmod().fl;
   state.counters["ordering"] = llt.cholmod().selected >= 0 ? llt.cholmod().method[llt.cholmod().selected].ordering : -1;
+  state.SetLabel(std::string(fem::dense::variant_name()));
 }
 
 void BM_HawkmothFemStructureStep(benchmark::State& state) {
