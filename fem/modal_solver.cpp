@@ -12,6 +12,7 @@
 #include <Spectra/MatOp/SparseSymMatProd.h>
 #include <Spectra/SymGEigsShiftSolver.h>
 
+#include "fem/serial_openmp_regions.hpp"
 #include "fem/static_solver.hpp"
 
 namespace flapsim::fem {
@@ -28,6 +29,7 @@ class CholmodShiftInvert {
   Eigen::Index cols() const { return K_.cols(); }
   void set_shift(double sigma) {
     const SparseMatrix A = K_ - sigma * M_;
+    const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
     llt_.compute(A);
     if (llt_.info() != Eigen::Success)
       throw SingularStiffness(
@@ -37,7 +39,10 @@ class CholmodShiftInvert {
   void perform_op(const double* x_in, double* y_out) const {
     Eigen::Map<const Eigen::VectorXd> x(x_in, K_.rows());
     Eigen::Map<Eigen::VectorXd> y(y_out, K_.rows());
-    y = llt_.solve(x);
+    {
+      const SerialOpenMpRegions cholmod_on_this_thread;
+      y = llt_.solve(x);
+    }
     if (deflate_.cols() > 0) y -= deflate_ * (deflate_.transpose() * (M_ * y));
   }
   /// Modes already found (M-orthonormal columns): removed from every result,

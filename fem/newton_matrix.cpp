@@ -1,5 +1,7 @@
 #include "fem/newton_matrix.hpp"
 
+#include "fem/serial_openmp_regions.hpp"
+
 namespace flapsim::fem {
 
 NewtonMatrix::NewtonMatrix(TangentForm form, const std::vector<int>& free_dofs) : form_(form) {
@@ -15,6 +17,7 @@ NewtonMatrix::NewtonMatrix(TangentForm form, const std::vector<int>& free_dofs) 
 }
 
 bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame, double h) {
+  const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
   valid_ = false;
   frame_ = frame;
   h_ = h;
@@ -74,6 +77,7 @@ void NewtonMatrix::solve(const Eigen::VectorXd& r, const Eigen::Matrix3d& frame,
   const bool turn = rotatable_ && !S.isIdentity(0.0);
   rhs_ = r;
   if (turn) rotate(rhs_, S.transpose());
+  const SerialOpenMpRegions cholmod_on_this_thread;
   switch (solver_) {
     case Solver::Llt: x = llt_.solve(rhs_); break;
     case Solver::Ldlt: x = ldlt_.solve(rhs_); break;

@@ -8,6 +8,7 @@
 
 #include "fem/newton_matrix.hpp"
 #include "fem/nodal_rotation.hpp"
+#include "fem/serial_openmp_regions.hpp"
 
 namespace flapsim::fem {
 
@@ -134,6 +135,7 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
   strain_energy = w.assembler.evaluate(state, w.f_int, false);
   if (!free.empty()) {
     w.mass_assembler.load_mass_into_tangent();
+    const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> mllt(w.mass_assembler.tangent());
     if (mllt.info() != Eigen::Success) throw std::runtime_error("DynamicsData: the free mass matrix is singular");
     for (size_t i = 0; i < free.size(); ++i) w.r(static_cast<Eigen::Index>(i)) = f_ext0(free[i]) - w.f_int(free[i]);

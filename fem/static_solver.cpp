@@ -2,6 +2,8 @@
 
 #include <Eigen/CholmodSupport>
 
+#include "fem/serial_openmp_regions.hpp"
+
 namespace flapsim::fem {
 
 struct StaticSolver::Factor {
@@ -12,6 +14,7 @@ StaticSolver::StaticSolver(const SparseMatrix& K, Constraints constraints)
     : constraints_(std::move(constraints)), factor_(std::make_unique<Factor>()) {
   if (constraints_.num_free() == 0) return;
   const SparseMatrix Kf = constraints_.reduce(K);
+  const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
   factor_->llt.compute(Kf);
   if (factor_->llt.info() != Eigen::Success)
     throw SingularStiffness(
@@ -25,6 +28,7 @@ Eigen::VectorXd StaticSolver::solve(const Eigen::VectorXd& F) const {
   if (F.size() != constraints_.num_dofs())
     throw std::invalid_argument("StaticSolver::solve: load vector size does not match the DOF count");
   if (constraints_.num_free() == 0) return Eigen::VectorXd::Zero(F.size());
+  const SerialOpenMpRegions cholmod_on_this_thread;
   const Eigen::VectorXd uf = factor_->llt.solve(constraints_.reduce(F));
   return constraints_.expand(uf);
 }
