@@ -241,6 +241,9 @@ TEST(DenseKernels, EachVariantTheCpuHasGivesTheReferenceLoopsBits) {
   reference_gemm(true, m, n, k, -1.0, a, lda, b, n, 1.0, c_ref, ldc);
   reference_syrk_lower(m, k, -1.0, a, lda, 1.0, s_ref, ldc);
   reference_trsm(m, n, l, n, t_ref, ldc);
+  const Matrix x = random_matrix(rng, m, 1), y0 = random_matrix(rng, k, 1);
+  Matrix y_ref = y0;
+  reference_gemv(true, m, k, -1.0, a, lda, x, 1.0, y_ref);
   for (const bool wide : {false, true}) {
     if (wide && !avx2) continue;  // a CPU without AVX2 runs the SSE2 variant only
     Matrix c = c0, s = s0, t = c0;
@@ -253,6 +256,10 @@ TEST(DenseKernels, EachVariantTheCpuHasGivesTheReferenceLoopsBits) {
     EXPECT_TRUE(same_bits(c_ref, c)) << (wide ? "avx2" : "sse2");
     EXPECT_TRUE(same_bits(s_ref, s)) << (wide ? "avx2" : "sse2");
     EXPECT_TRUE(same_bits(t_ref, t)) << (wide ? "avx2" : "sse2");
+    Matrix y = y0;
+    (wide ? d::gemv_transposed_avx2 : d::gemv_transposed_sse2)(m, k, -1.0, a.data(), lda, x.data(),
+                                                              1.0, y.data());
+    EXPECT_TRUE(same_bits(y_ref, y)) << (wide ? "avx2" : "sse2");
   }
 }
 
