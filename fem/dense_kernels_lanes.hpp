@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "fem/dense_kernels_variants.hpp"
+
 #ifndef FLAPSIM_DENSE_VECTOR_BYTES  // set by each variant file
 #error "define FLAPSIM_DENSE_VECTOR_BYTES (16 or 32) before including dense_kernels_lanes.hpp"
 #endif
@@ -265,6 +267,11 @@ void trsv_lower_transposed_body(int n, const double* a, int lda, double* x) {
     x[j] = t / aj[j];
   }
 }
+
+/// This width's routines (dense_kernels_variants.hpp).
+constexpr KernelTable kKernels{gemm_body,       syrk_lower_body, trsm_right_lower_transposed_body,
+                               gemv_body,       gemv_transposed_body,
+                               trsv_lower_body, trsv_lower_transposed_body};
 
 }  // namespace
 }  // namespace flapsim::fem::dense::detail

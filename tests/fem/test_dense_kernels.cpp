@@ -246,19 +246,16 @@ TEST(DenseKernels, EachVariantTheCpuHasGivesTheReferenceLoopsBits) {
   reference_gemv(true, m, k, -1.0, a, lda, x, 1.0, y_ref);
   for (const bool wide : {false, true}) {
     if (wide && !avx2) continue;  // a CPU without AVX2 runs the SSE2 variant only
+    const d::KernelTable& kernels = wide ? d::avx2_kernels() : d::sse2_kernels();
     Matrix c = c0, s = s0, t = c0;
-    (wide ? d::gemm_avx2 : d::gemm_sse2)(m, n, k, -1.0, a.data(), lda, b.data(), 1, n, 1.0,
-                                          c.data(), ldc);
-    (wide ? d::syrk_lower_avx2 : d::syrk_lower_sse2)(m, k, -1.0, a.data(), lda, 1.0, s.data(),
-                                                      ldc);
-    (wide ? d::trsm_right_lower_transposed_avx2 : d::trsm_right_lower_transposed_sse2)(
-        m, n, l.data(), n, t.data(), ldc);
+    kernels.gemm(m, n, k, -1.0, a.data(), lda, b.data(), 1, n, 1.0, c.data(), ldc);
+    kernels.syrk_lower(m, k, -1.0, a.data(), lda, 1.0, s.data(), ldc);
+    kernels.trsm_right_lower_transposed(m, n, l.data(), n, t.data(), ldc);
     EXPECT_TRUE(same_bits(c_ref, c)) << (wide ? "avx2" : "sse2");
     EXPECT_TRUE(same_bits(s_ref, s)) << (wide ? "avx2" : "sse2");
     EXPECT_TRUE(same_bits(t_ref, t)) << (wide ? "avx2" : "sse2");
     Matrix y = y0;
-    (wide ? d::gemv_transposed_avx2 : d::gemv_transposed_sse2)(m, k, -1.0, a.data(), lda, x.data(),
-                                                              1.0, y.data());
+    kernels.gemv_transposed(m, k, -1.0, a.data(), lda, x.data(), 1.0, y.data());
     EXPECT_TRUE(same_bits(y_ref, y)) << (wide ? "avx2" : "sse2");
   }
 }
