@@ -1,15 +1,17 @@
 #pragma once
 /// \file dense_kernels.hpp
 /// \brief The dense products and triangular solves under CHOLMOD's supernodal Cholesky
-/// factorisation, its solves and LAPACK's dpotrf (docs/fem.md, "The dense kernels under the factorisation"), computed
-/// element by element in the same order as the reference BLAS, so the factor is the same
-/// bits as with the reference BLAS on every x86-64 CPU, whichever variant runs.
+/// factorisation, its solves and LAPACK's dpotrf (docs/fem.md, "The dense kernels under
+/// the factorisation"), computed element by element in the same order as the reference
+/// BLAS, so the factor is the same bits as with the reference BLAS on every x86-64 CPU,
+/// whichever variant runs.
 ///
 /// The reference BLAS (Lawson et al. 1979; Dongarra et al. 1990) updates a column of C
 /// for one l at a time, streaming the whole column through memory for each l. Here a
 /// block of C (up to 4 columns × 2 vector registers of rows) stays in registers over
 /// the l loop; each element still receives c ← c + (α b_jl) a_il for l = 1, 2, … in
-/// turn, skipping l where b_jl = 0 as the reference does, with a multiply and an add
+/// turn, skipping l where b_jl = 0 where LAPACK 3.11's routines do (dsyrk, dtrsm, dtrsv;
+/// not dgemm and dgemv), with a multiply and an add
 /// (never a fused multiply–add). The vector width then changes how many elements move
 /// at once, never an element's arithmetic.
 ///
