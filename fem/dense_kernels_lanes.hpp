@@ -81,21 +81,17 @@ void accumulate(int m, int kl, const double* a, long lda, const Coefficients& co
     const double* ap = a + i;
     for (int l = 0; l < kl; ++l, ap += lda) {
       const Vec a0 = load(ap), a1 = load(ap + kLanes);
+      const auto add = [&](int j) {
+        const Vec t = splat(co.t[l][j]);
+        c0[j] = c0[j] + t * a0;
+        c1[j] = c1[j] + t * a1;
+      };
       const unsigned nz = co.nonzero[l];
-      if (nz == all) {
-        for (int j = 0; j < NC; ++j) {
-          const Vec t = splat(co.t[l][j]);
-          c0[j] = c0[j] + t * a0;
-          c1[j] = c1[j] + t * a1;
-        }
-      } else {
+      if (nz == all)  // the common case without a test per column
+        for (int j = 0; j < NC; ++j) add(j);
+      else
         for (int j = 0; j < NC; ++j)
-          if (nz >> j & 1u) {
-            const Vec t = splat(co.t[l][j]);
-            c0[j] = c0[j] + t * a0;
-            c1[j] = c1[j] + t * a1;
-          }
-      }
+          if (nz >> j & 1u) add(j);
     }
     for (int j = 0; j < NC; ++j) {
       store(c + i + j * ldc, c0[j]);

@@ -17,7 +17,6 @@ NewtonMatrix::NewtonMatrix(TangentForm form, const std::vector<int>& free_dofs) 
 }
 
 bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame, double h) {
-  const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
   valid_ = false;
   frame_ = frame;
   h_ = h;
@@ -27,9 +26,12 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
     if (factorize_ldlt(A)) return true;
   }
   if (form_ == TangentForm::SymmetricLower) {
-    if (!llt_analysed_) llt_.analyzePattern(A);
-    llt_analysed_ = true;
-    llt_.factorize(A);
+    {
+      const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
+      if (!llt_analysed_) llt_.analyzePattern(A);
+      llt_analysed_ = true;
+      llt_.factorize(A);
+    }
     if (llt_.info() == Eigen::Success) {
       solver_ = Solver::Llt;
       valid_ = true;
@@ -59,6 +61,7 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
 }
 
 bool NewtonMatrix::factorize_ldlt(const SparseMatrix& A) {
+  const SerialOpenMpRegions cholmod_on_this_thread;
   if (!ldlt_analysed_) ldlt_.analyzePattern(A);
   ldlt_analysed_ = true;
   ldlt_.factorize(A);
@@ -77,7 +80,7 @@ void NewtonMatrix::solve(const Eigen::VectorXd& r, const Eigen::Matrix3d& frame,
   const bool turn = rotatable_ && !S.isIdentity(0.0);
   rhs_ = r;
   if (turn) rotate(rhs_, S.transpose());
-  const SerialOpenMpRegions cholmod_on_this_thread;
+  const SerialOpenMpRegions cholmod_on_this_thread;  // (the LU's solve opens no regions)
   switch (solver_) {
     case Solver::Llt: x = llt_.solve(rhs_); break;
     case Solver::Ldlt: x = ldlt_.solve(rhs_); break;
