@@ -11,6 +11,7 @@ packages=(
   libgmsh-dev gmsh
   libvtk9-dev
   libsuitesparse-dev
+  libblas3 liblapack3  # the reference BLAS/LAPACK under CHOLMOD (docs/fem.md, "The dense kernels under the factorisation")
   libgtest-dev libgmock-dev libbenchmark-dev
   libtomlplusplus-dev libcli11-dev
   libsimbody-dev
