@@ -53,6 +53,24 @@ struct EicrDamping {
   double tangent_scale = 0.0;     ///< factor of a₁ Bᵀ k B added to the tangent (∂v/∂u)
 };
 
+/// \brief The deformational displacements d = (ū_a, θ̄_a) of an element in its co-rotated
+/// frame (the first lines of eicr_force_with_law, which calls it); x̄_a the current local node
+/// coordinates about the centroid [m].
+template <int N>
+void eicr_deformation(const std::array<Eigen::Vector3d, N>& Xbar, const Eigen::Matrix3d& T0,
+                      const Eigen::Matrix3d& Tr, const std::array<Eigen::Vector3d, N>& x,
+                      const std::array<Eigen::Matrix3d, N>& R, std::array<Eigen::Vector3d, N>& xbar,
+                      Eigen::Matrix<double, 6 * N, 1>& d) {
+  Eigen::Vector3d xc = Eigen::Vector3d::Zero();
+  for (int a = 0; a < N; ++a) xc += x[a];
+  xc /= N;
+  for (int a = 0; a < N; ++a) {
+    xbar[a] = Tr * (x[a] - xc);
+    d.template segment<3>(6 * a) = xbar[a] - Xbar[a];
+    d.template segment<3>(6 * a + 3) = rotation_vector(Tr * R[a] * T0.transpose());
+  }
+}
+
 /// \brief Internal force (global, conjugate to δx and spatial spins), optional
 /// tangent and strain energy of one element.
 /// \param law     the element's response in its co-rotated frame:
@@ -68,34 +86,23 @@ struct EicrDamping {
 /// \param geometric_force  if given, the local force f̄ the geometric terms (K_GR, K_GP,
 ///                   K_GM) are formed from, instead of the law's (the linearised Newton
 ///                   matrix, nonlinear_dynamics.hpp); f itself is always the law's
-/// \param deformation  if given, receives the local deformation d
 template <int N, class LocalLaw>
 double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d, N>& Xbar,
                            const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
                            const std::array<Eigen::Vector3d, N>& x, const std::array<Eigen::Matrix3d, N>& R,
                            Eigen::Matrix<double, 6 * N, 1>& f, Eigen::Matrix<double, 6 * N, 6 * N>* K,
                            const EicrDamping<N>& damping = {}, bool symmetric = true,
-                           const Eigen::Matrix<double, 6 * N, 1>* geometric_force = nullptr,
-                           Eigen::Matrix<double, 6 * N, 1>* deformation = nullptr) {
+                           const Eigen::Matrix<double, 6 * N, 1>* geometric_force = nullptr) {
   constexpr int n = 6 * N;
   using Vec = Eigen::Matrix<double, n, 1>;
   using Mat = Eigen::Matrix<double, n, n>;
   const Eigen::Matrix3d& Tr = frame.axes;
   const auto& G = frame.spin_map;
-  Eigen::Vector3d xc = Eigen::Vector3d::Zero();
-  for (int a = 0; a < N; ++a) xc += x[a];
-  xc /= N;
   std::array<Eigen::Vector3d, N> xbar;
   std::array<Eigen::Matrix3d, N> H;
   Vec d;
-  for (int a = 0; a < N; ++a) {
-    xbar[a] = Tr * (x[a] - xc);
-    d.template segment<3>(6 * a) = xbar[a] - Xbar[a];
-    const Eigen::Vector3d th = rotation_vector(Tr * R[a] * T0.transpose());
-    d.template segment<3>(6 * a + 3) = th;
-    H[a] = inverse_tangent(th);
-  }
-  if (deformation != nullptr) *deformation = d;
+  eicr_deformation<N>(Xbar, T0, Tr, x, R, xbar, d);
+  for (int a = 0; a < N; ++a) H[a] = inverse_tangent(d.template segment<3>(6 * a + 3));
   // P and B = H P are formed only for the tangent or damping: the force alone (every
   // iteration of a modified Newton, nonlinear_dynamics.hpp) applies Pᵀ in closed form.
   const bool damped = damping.velocity != nullptr && damping.coefficient != 0.0;
@@ -191,10 +198,9 @@ double eicr_force(const Eigen::Matrix<double, 6 * N, 6 * N>& k, const std::array
                   const std::array<Eigen::Vector3d, N>& x, const std::array<Eigen::Matrix3d, N>& R,
                   Eigen::Matrix<double, 6 * N, 1>& f, Eigen::Matrix<double, 6 * N, 6 * N>* K,
                   const EicrDamping<N>& damping = {}, bool symmetric = true,
-                  const Eigen::Matrix<double, 6 * N, 1>* geometric_force = nullptr,
-                  Eigen::Matrix<double, 6 * N, 1>* deformation = nullptr) {
+                  const Eigen::Matrix<double, 6 * N, 1>* geometric_force = nullptr) {
   return eicr_force_with_law<N>(LinearLocalLaw<N>{k}, Xbar, T0, frame, x, R, f, K, damping, symmetric,
-                                geometric_force, deformation);
+                                geometric_force);
 }
 
 }  // namespace flapsim::fem

@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "fem/block_rotation.hpp"
 #include "fem/tension_field_membrane.hpp"
 
 namespace flapsim::fem {
@@ -13,10 +12,17 @@ CorotationalShell make_corotational_shell(const std::array<int, 3>& nodes,
   CorotationalShell e;
   e.nodes = nodes;
   e.reference_axes = shell_axes(p);
-  // shell_element returns Tᵀ k T with T = diag(T₀, …): undo the rotation.
-  const Matrix18d T = block_rotation<18>(e.reference_axes);
-  e.local_stiffness = T * shell_element(p, s).stiffness * T.transpose();
+  e.local_stiffness = shell_local_stiffness(p, s);
   e.local_stiffness = 0.5 * (e.local_stiffness + e.local_stiffness.transpose()).eval();
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          e.membrane_stiffness(3 * a + i, 3 * b + j) =
+              e.local_stiffness(6 * a + kShellMembraneDofs[i], 6 * b + kShellMembraneDofs[j]);
+          e.bending_stiffness(3 * a + i, 3 * b + j) =
+              e.local_stiffness(6 * a + kShellBendingDofs[i], 6 * b + kShellBendingDofs[j]);
+        }
   std::array<double, 3> lx{}, ly{};
   for (int a = 0; a < 3; ++a) {
     const Eigen::Vector3d d = e.reference_axes * (p[a] - p[0]);
@@ -24,10 +30,9 @@ CorotationalShell make_corotational_shell(const std::array<int, 3>& nodes,
     ly[a] = d.y();
   }
   const Eigen::Matrix<double, 9, 3> L9 = opt_basic_lumping(lx, ly, s.thickness);
-  constexpr int kMembraneDof[3] = {0, 1, 5};  // u, v, θz of each node
   e.membrane_lumping.setZero();
   for (int a = 0; a < 3; ++a)
-    for (int i = 0; i < 3; ++i) e.membrane_lumping.row(6 * a + kMembraneDof[i]) = L9.row(3 * a + i);
+    for (int i = 0; i < 3; ++i) e.membrane_lumping.row(6 * a + kShellMembraneDofs[i]) = L9.row(3 * a + i);
   e.volume = 0.5 * std::abs(lx[1] * ly[2] - lx[2] * ly[1]) * s.thickness;
   e.youngs_modulus = s.youngs_modulus;
   e.poisson_ratio = s.poisson_ratio;
@@ -37,6 +42,25 @@ CorotationalShell make_corotational_shell(const std::array<int, 3>& nodes,
   const Eigen::Vector3d c = (p[0] + p[1] + p[2]) / 3.0;
   for (int a = 0; a < 3; ++a) e.reference_local[a] = e.reference_axes * (p[a] - c);
   return e;
+}
+
+double ShellLinearLaw::operator()(const Eigen::Matrix<double, 18, 1>& d, Eigen::Matrix<double, 18, 1>& f_local,
+                                  Matrix18d* k_local) const {
+  Eigen::Matrix<double, 9, 1> dm, db;
+  for (int a = 0; a < 3; ++a)
+    for (int i = 0; i < 3; ++i) {
+      dm(3 * a + i) = d(6 * a + kShellMembraneDofs[i]);
+      db(3 * a + i) = d(6 * a + kShellBendingDofs[i]);
+    }
+  const Eigen::Matrix<double, 9, 1> fm = shell.membrane_stiffness.lazyProduct(dm);
+  const Eigen::Matrix<double, 9, 1> fb = shell.bending_stiffness.lazyProduct(db);
+  for (int a = 0; a < 3; ++a)
+    for (int i = 0; i < 3; ++i) {
+      f_local(6 * a + kShellMembraneDofs[i]) = fm(3 * a + i);
+      f_local(6 * a + kShellBendingDofs[i]) = fb(3 * a + i);
+    }
+  if (k_local != nullptr) *k_local = shell.local_stiffness;
+  return 0.5 * d.dot(f_local);
 }
 
 CorotatedFrame<3> shell_corotated_frame(const std::array<Eigen::Vector3d, 3>& x) {

@@ -25,6 +25,9 @@ namespace flapsim::fem {
 struct CorotationalShell {
   std::array<int, 3> nodes{};
   Matrix18d local_stiffness;             ///< k in reference local axes
+  /// k's uncoupled parts (shell_element.hpp): the membrane on (u, v, θz) and the plate on
+  /// (w, θx, θy), three DOFs a node, the nodes in order (ShellLinearLaw's k d).
+  Matrix9d membrane_stiffness, bending_stiffness;
   Eigen::Matrix3d reference_axes;        ///< T₀ (rows)
   std::array<Eigen::Vector3d, 3> reference_local;  ///< X̄_a about the centroid [m]
   /// The split k = k_rest + L C Lᵀ / V of the membrane's constant-strain part (for the
@@ -35,6 +38,15 @@ struct CorotationalShell {
   double volume = 0.0;                   ///< V [m³]
   double youngs_modulus = 0.0;           ///< E [Pa]
   double poisson_ratio = 0.0;            ///< ν [-]
+};
+
+/// The linear local response W = ½ dᵀ k d of a shell: k d as the membrane's and the
+/// plate's 9 × 9 products (a quarter of the 18 × 18 product's work and half its memory,
+/// which the element force streams at every Newton iteration: docs/fem.md, "Cost").
+struct ShellLinearLaw {
+  const CorotationalShell& shell;
+  double operator()(const Eigen::Matrix<double, 18, 1>& d, Eigen::Matrix<double, 18, 1>& f_local,
+                    Matrix18d* k_local) const;
 };
 
 /// The local response of a shell whose membrane cannot carry compression: the

@@ -182,14 +182,36 @@ NonlinearAssembler::NonlinearAssembler(const CorotationalModel& model, Constrain
     path_shell_d_[static_cast<size_t>(k)].resize(model.shells.size());
     path_frame_d_[static_cast<size_t>(k)].resize(model.frames.size());
   }
-  path_force_.resize(model.num_dofs());
 }
 
 void NonlinearAssembler::record_correction_path(const CorotationalState& state, int point) {
   if (point < 0 || point > 2) throw std::invalid_argument("record_correction_path: point must be 0, 1 or 2");
-  record_point_ = point;
-  evaluate(state, path_force_, false);
-  record_point_ = -1;
+  // The deformations alone (the forces at the path's points are not needed): the elements
+  // that take a linearised geometric force, linear shells and frames.
+  auto& shell_d = path_shell_d_[static_cast<size_t>(point)];
+  auto& frame_d = path_frame_d_[static_cast<size_t>(point)];
+  const int ns = model_.membrane_law == MembraneLaw::Elastic ? static_cast<int>(model_.shells.size()) : 0;
+  const int nb = static_cast<int>(model_.frames.size());
+  const auto& p = state.position;
+  const auto& r = state.rotation;
+#pragma omp parallel for schedule(static) if (ns + nb > 512)
+  for (int e = 0; e < ns; ++e) {
+    const CorotationalShell& el = model_.shells[static_cast<size_t>(e)];
+    const std::array<Eigen::Vector3d, 3> x{p[el.nodes[0]], p[el.nodes[1]], p[el.nodes[2]]};
+    const std::array<Eigen::Matrix3d, 3> R{r[el.nodes[0]], r[el.nodes[1]], r[el.nodes[2]]};
+    std::array<Eigen::Vector3d, 3> xbar;
+    eicr_deformation<3>(el.reference_local, el.reference_axes, shell_corotated_frame(x).axes, x, R, xbar,
+                        shell_d[static_cast<size_t>(e)]);
+  }
+#pragma omp parallel for schedule(static) if (ns + nb > 512)
+  for (int e = 0; e < nb; ++e) {
+    const CorotationalFrame& el = model_.frames[static_cast<size_t>(e)];
+    const std::array<Eigen::Vector3d, 2> x{p[el.nodes[0]], p[el.nodes[1]]};
+    const std::array<Eigen::Matrix3d, 2> R{r[el.nodes[0]], r[el.nodes[1]]};
+    std::array<Eigen::Vector3d, 2> xbar;
+    eicr_deformation<2>(el.reference_local, el.reference_axes, frame_corotated_frame(el, x, R).axes, x, R, xbar,
+                        frame_d[static_cast<size_t>(e)]);
+  }
 }
 
 void NonlinearAssembler::load_mass_into_tangent() {
@@ -239,11 +261,9 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
                 const bool linearised = ex.linearised_geometric_force && K != nullptr;
                 if (linearised)
                   g = el.local_stiffness * (4.0 * path_shell_d_[1][i] - 2.0 * path_shell_d_[0][i] - path_shell_d_[2][i]);
-                return eicr_force<3>(el.local_stiffness, el.reference_local, el.reference_axes,
-                                     shell_corotated_frame(x), x, R, shell_f_[i], K, damp, symmetric,
-                                     linearised ? &g : nullptr,
-                                     record_point_ >= 0 ? &path_shell_d_[static_cast<size_t>(record_point_)][i]
-                                                        : nullptr);
+                return eicr_force_with_law<3>(ShellLinearLaw{el}, el.reference_local, el.reference_axes,
+                                              shell_corotated_frame(x), x, R, shell_f_[i], K, damp, symmetric,
+                                              linearised ? &g : nullptr);
               }();
   }
 #pragma omp parallel for schedule(static) if (ns + nb > 512)
@@ -265,8 +285,7 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
     energy_[static_cast<size_t>(ns + e)] =
         eicr_force<2>(el.local_stiffness, el.reference_local, el.reference_axes, frame_corotated_frame(el, x, R), x,
                       R, frame_f_[i], tangent ? &frame_K_[i] : nullptr, damp, form_ == TangentForm::SymmetricLower,
-                      linearised ? &g : nullptr,
-                      record_point_ >= 0 ? &path_frame_d_[static_cast<size_t>(record_point_)][i] : nullptr);
+                      linearised ? &g : nullptr);
   }
   const int nh = static_cast<int>(model_.hinges.size());
 #pragma omp parallel for schedule(static) if (nh > 512)

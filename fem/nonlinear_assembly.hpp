@@ -148,10 +148,8 @@ class NonlinearAssembler {
   std::vector<Matrix12d> frame_K_;
   std::vector<Eigen::Matrix<double, 12, 1>> frame_f_;
   std::vector<double> energy_;
-  int record_point_ = -1;  ///< record_correction_path's point during its evaluation
   std::array<std::vector<Eigen::Matrix<double, 18, 1>>, 3> path_shell_d_;  ///< d along a correction
   std::array<std::vector<Eigen::Matrix<double, 12, 1>>, 3> path_frame_d_;
-  Eigen::VectorXd path_force_;  ///< record_correction_path's unused forces
 };
 
 }  // namespace flapsim::fem

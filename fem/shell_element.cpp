@@ -187,31 +187,47 @@ Matrix9d opt_membrane_stiffness(const std::array<double, 3>& x, const std::array
   return 0.5 * (K + K.transpose());
 }
 
-ShellElementMatrices shell_element(const std::array<Eigen::Vector3d, 3>& p,
-                                   const ShellProperties& s) {
-  const Eigen::Matrix3d R = shell_axes(p);
-  std::array<double, 3> x{}, y{};
+namespace {
+
+// Corner coordinates in the element's own axes R (origin at corner 0) [m].
+void local_corners(const std::array<Eigen::Vector3d, 3>& p, const Eigen::Matrix3d& R, std::array<double, 3>& x,
+                   std::array<double, 3>& y) {
   for (int a = 0; a < 3; ++a) {
     const Eigen::Vector3d d = R * (p[a] - p[0]);
     x[a] = d.x();
     y[a] = d.y();
   }
-  const double A = 0.5 * (x[1] * y[2] - x[2] * y[1]);
+}
+
+}  // namespace
+
+Matrix18d shell_local_stiffness(const std::array<Eigen::Vector3d, 3>& p, const ShellProperties& s) {
+  std::array<double, 3> x{}, y{};
+  local_corners(p, shell_axes(p), x, y);
   const double h = s.thickness, E = s.youngs_modulus, nu = s.poisson_ratio;
   const double D = E * h * h * h / (12.0 * (1.0 - nu * nu));
-
   const Matrix9d Km = opt_membrane_stiffness(x, y, E, nu, h);
   const Matrix9d Kb = dkt_stiffness(x, y, D, nu);
-  const int mem[3] = {0, 1, 5};   // u, v, θz
-  const int bend[3] = {2, 3, 4};  // w, θx, θy
-  Matrix18d k = Matrix18d::Zero(), m = Matrix18d::Zero();
+  Matrix18d k = Matrix18d::Zero();
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b)
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-          k(6 * a + mem[i], 6 * b + mem[j]) += Km(3 * a + i, 3 * b + j);
-          k(6 * a + bend[i], 6 * b + bend[j]) += Kb(3 * a + i, 3 * b + j);
+          k(6 * a + kShellMembraneDofs[i], 6 * b + kShellMembraneDofs[j]) += Km(3 * a + i, 3 * b + j);
+          k(6 * a + kShellBendingDofs[i], 6 * b + kShellBendingDofs[j]) += Kb(3 * a + i, 3 * b + j);
         }
+  return k;
+}
+
+ShellElementMatrices shell_element(const std::array<Eigen::Vector3d, 3>& p,
+                                   const ShellProperties& s) {
+  const Eigen::Matrix3d R = shell_axes(p);
+  std::array<double, 3> x{}, y{};
+  local_corners(p, R, x, y);
+  const double A = 0.5 * (x[1] * y[2] - x[2] * y[1]);
+  const double h = s.thickness;
+  const Matrix18d k = shell_local_stiffness(p, s);
+  Matrix18d m = Matrix18d::Zero();
   const double mu = s.density * h + s.nonstructural_mass_per_area;  // [kg/m²]
   const double rot = s.density * h * h * h / 12.0 * A / 3.0;         // [kg·m²]
   for (int a = 0; a < 3; ++a) {

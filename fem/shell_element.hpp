@@ -67,6 +67,16 @@ Eigen::Matrix<double, 9, 3> opt_basic_lumping(const std::array<double, 3>& x, co
 Matrix9d opt_membrane_stiffness(const std::array<double, 3>& x, const std::array<double, 3>& y,
                                 double E, double nu, double h);
 
+/// The DOFs of the OPT membrane (u, v, θz) and of the DKT plate (w, θx, θy) among a node's
+/// six local ones (u, v, w, θx, θy, θz).
+inline constexpr int kShellMembraneDofs[3] = {0, 1, 5};
+inline constexpr int kShellBendingDofs[3] = {2, 3, 4};
+
+/// \brief Stiffness in the element's own axes (shell_axes), DOF order per node (u, v, w,
+/// θx, θy, θz): the OPT membrane on (u, v, θz) and the DKT plate on (w, θx, θy), uncoupled
+/// (a flat element), every coupling entry an exact zero.
+Matrix18d shell_local_stiffness(const std::array<Eigen::Vector3d, 3>& p, const ShellProperties& props);
+
 /// \brief Stiffness and consistent mass in global axes.
 ///
 /// Mass: consistent linear-triangle translational mass of (ρh + μ) in all three

@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <utility>
 
@@ -180,14 +182,14 @@ TEST(CorotationalElement, ForceIsEnergyGradientAndTangentMatchesDifferences) {
   }
 }
 
-// The local deformation d of an element state (eicr_force's `deformation`).
+// The local deformation d of an element state (eicr_deformation).
 template <int N>
-Eigen::Matrix<double, 6 * N, 1> local_deformation(const Eigen::Matrix<double, 6 * N, 6 * N>& k,
-                                                  const std::array<Eigen::Vector3d, N>& Xbar,
+Eigen::Matrix<double, 6 * N, 1> local_deformation(const std::array<Eigen::Vector3d, N>& Xbar,
                                                   const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
                                                   const Element<N>& s) {
-  Eigen::Matrix<double, 6 * N, 1> f, d;
-  eicr_force<N>(k, Xbar, T0, frame, s.x, s.R, f, nullptr, {}, true, nullptr, &d);
+  Eigen::Matrix<double, 6 * N, 1> d;
+  std::array<Eigen::Vector3d, N> xbar;
+  eicr_deformation<N>(Xbar, T0, frame.axes, s.x, s.R, xbar, d);
   return d;
 }
 
@@ -199,7 +201,7 @@ std::pair<double, double> own_force_geometric_terms_gap(const Eigen::Matrix<doub
                                                        const std::array<Eigen::Vector3d, N>& Xbar,
                                                        const Eigen::Matrix3d& T0, const CorotatedFrame<N>& frame,
                                                        const Element<N>& s, bool symmetric) {
-  const Eigen::Matrix<double, 6 * N, 1> g = k * local_deformation<N>(k, Xbar, T0, frame, s);
+  const Eigen::Matrix<double, 6 * N, 1> g = k * local_deformation<N>(Xbar, T0, frame, s);
   Eigen::Matrix<double, 6 * N, 1> f, fg;
   Eigen::Matrix<double, 6 * N, 6 * N> K, Kg;
   eicr_force<N>(k, Xbar, T0, frame, s.x, s.R, f, &K, {}, symmetric);
@@ -240,7 +242,7 @@ TEST(CorotationalElement, ThreePointsOfACorrectionGiveItsLinearisedDeformation) 
   const Eigen::Matrix<double, 18, 1> direction = Eigen::Matrix<double, 18, 1>::Random();
   auto d_at = [&](const Eigen::Matrix<double, 18, 1>& du) {
     const Element<3> s = perturbed<3>(s0, du);
-    return local_deformation<3>(sh.local_stiffness, sh.reference_local, sh.reference_axes, shell_corotated_frame(s.x),
+    return local_deformation<3>(sh.reference_local, sh.reference_axes, shell_corotated_frame(s.x),
                                 s);
   };
   double previous = 0.0;
@@ -271,6 +273,37 @@ TEST(CorotationalElement, SmallDeformationGivesLinearForce) {
   const double err = (f - Klin * u).norm() / (Klin * u).norm();
   std::printf("  |f − K u| / |K u| = %.2e\n", err);
   EXPECT_LT(err, 1e-5);
+}
+
+TEST(CorotationalElement, ShellMembraneAndPlateProductsEqualTheWholeLocalStiffness) {
+  // The shell's local k (OPT membrane on u, v, θz; DKT plate on w, θx, θy: shell_element.hpp)
+  // has exactly zero coupling, so ShellLinearLaw's two 9 × 9 products equal k d up to the
+  // order of the sums (a few ulps); and k is the global element stiffness in the element's
+  // own axes, T K Tᵀ, to round-off.
+  const ShellProperties p = testing::shell(7e10, 0.3, 0.01, 2700);
+  const CorotationalShell sh = make_corotational_shell({0, 1, 2}, kTri, p);
+  const Matrix18d& k = sh.local_stiffness;
+  double coupling = 0.0;
+  for (int r = 0; r < 18; ++r)
+    for (int c = 0; c < 18; ++c) {
+      const bool r_membrane = r % 6 == 0 || r % 6 == 1 || r % 6 == 5;
+      const bool c_membrane = c % 6 == 0 || c % 6 == 1 || c % 6 == 5;
+      if (r_membrane != c_membrane) coupling = std::max(coupling, std::abs(k(r, c)));
+    }
+  EXPECT_EQ(coupling, 0.0);
+  const Matrix18d T = block_rotation<18>(sh.reference_axes);
+  EXPECT_LT((T * shell_element(kTri, p).stiffness * T.transpose() - k).norm(), 1e-13 * k.norm());
+  std::srand(3);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::Matrix<double, 18, 1> d = Eigen::Matrix<double, 18, 1>::Random();
+    Eigen::Matrix<double, 18, 1> f;
+    Matrix18d kt;
+    const double energy = ShellLinearLaw{sh}(d, f, &kt);
+    const Eigen::Matrix<double, 18, 1> whole = k * d;
+    EXPECT_LT((f - whole).norm(), 1e-14 * k.norm() * d.norm());
+    EXPECT_NEAR(energy, 0.5 * d.dot(whole), 1e-14 * k.norm() * d.squaredNorm());
+    EXPECT_EQ(kt, k);
+  }
 }
 
 }  // namespace
