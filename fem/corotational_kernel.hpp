@@ -147,7 +147,10 @@ double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d
   for (int i = 0; i < 2 * N; ++i) f.template segment<3>(3 * i) = Tr.transpose() * p.template segment<3>(3 * i);
 
   if (K != nullptr) {
-    Mat Kl = B.transpose() * k * B;
+    // Products of fixed 18 × 18 matrices coefficient by coefficient: Eigen's blocked
+    // matrix–matrix kernel packs its operands for sizes this small (docs/fem.md, "Cost").
+    const Mat kB = k.lazyProduct(B);
+    Mat Kl = B.transpose().lazyProduct(kB);
     if (geometric_force != nullptr) {  // the geometric terms from a given local force
       fl = *geometric_force;
       fbar = fl;
@@ -159,13 +162,14 @@ double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d
     Mat Kg;
     for (int i = 0; i < 2 * N; ++i) Kg.template block<3, n>(3 * i, 0) = -skew(p.template segment<3>(3 * i)) * G;
     for (int a = 0; a < N; ++a) FnT.template block<3, 3>(0, 6 * a) = skew(fbar.template segment<3>(6 * a));
-    Kg += G.transpose() * FnT * P;
+    const Eigen::Matrix<double, 3, n> FnTP = FnT.lazyProduct(P);
+    Kg += G.transpose().lazyProduct(FnTP);
     Mat Kgm = Mat::Zero();  // K_GM = Pᵀ [Λ_a H_a P_a] (rotation rows)
     for (int a = 0; a < N; ++a)
       Kgm.template block<3, n>(6 * a + 3, 0) =
           inverse_tangent_derivative(d.template segment<3>(6 * a + 3), fl.template segment<3>(6 * a + 3)) *
           B.template block<3, n>(6 * a + 3, 0);
-    Kg += P.transpose() * Kgm;
+    Kg += P.transpose().lazyProduct(Kgm);
     if (symmetric)
       Kl += 0.5 * (Kg + Kg.transpose());
     else
