@@ -164,12 +164,18 @@ double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d
     for (int a = 0; a < N; ++a) FnT.template block<3, 3>(0, 6 * a) = skew(fbar.template segment<3>(6 * a));
     const Eigen::Matrix<double, 3, n> FnTP = FnT.lazyProduct(P);
     Kg += G.transpose().lazyProduct(FnTP);
-    Mat Kgm = Mat::Zero();  // K_GM = Pᵀ [Λ_a H_a P_a] (rotation rows)
-    for (int a = 0; a < N; ++a)
-      Kgm.template block<3, n>(6 * a + 3, 0) =
-          inverse_tangent_derivative(d.template segment<3>(6 * a + 3), fl.template segment<3>(6 * a + 3)) *
-          B.template block<3, n>(6 * a + 3, 0);
-    Kg += P.transpose().lazyProduct(Kgm);
+    // K_GM = Pᵀ [Λ_a H_a P_a]: the bracket has rotation rows only, M_a = Λ_a B_a (3 × n), and
+    // P's rotation rows are E_a − G (E_a: the identity at node a's rotations), so
+    // K_GM = Σ_a E_aᵀ M_a − Gᵀ Σ_a M_a.
+    Eigen::Matrix<double, 3, n> Msum = Eigen::Matrix<double, 3, n>::Zero();
+    for (int a = 0; a < N; ++a) {
+      const Eigen::Matrix<double, 3, n> Ma =
+          inverse_tangent_derivative(d.template segment<3>(6 * a + 3), fl.template segment<3>(6 * a + 3))
+              .lazyProduct(B.template block<3, n>(6 * a + 3, 0));
+      Kg.template block<3, n>(6 * a + 3, 0) += Ma;
+      Msum += Ma;
+    }
+    Kg -= G.transpose().lazyProduct(Msum);
     if (symmetric)
       Kl += 0.5 * (Kg + Kg.transpose());
     else
