@@ -20,6 +20,7 @@
 
 #include "fem/constraints.hpp"
 #include "fem/dense_kernels.hpp"
+#include "fem/serial_openmp_regions.hpp"
 #include "fem/wing_fem.hpp"
 #include "mbd/wing_kinematics.hpp"
 #include "pipeline/app/fsi_setup.hpp"
@@ -189,6 +190,7 @@ void BM_HawkmothNewtonMatrixFactorisation(benchmark::State& state) {
   const Eigen::VectorXd r = Eigen::VectorXd::Ones(assembler.tangent().rows());
   Eigen::VectorXd x;
   for (auto _ : state) {
+    const fem::SerialOpenMpRegions serial;  // as fem/newton_matrix.cpp calls CHOLMOD
     llt.factorize(assembler.tangent());
     x = llt.solve(r);
     benchmark::DoNotOptimize(x.data());
