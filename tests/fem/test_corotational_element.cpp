@@ -255,7 +255,9 @@ TEST(CorotationalElement, ThreePointsOfACorrectionGiveItsLinearisedDeformation) 
     std::printf("  correction %.0e: three points %.2e, the end point %.2e off the linearised deformation\n", size,
                 three_points, end_point);
     EXPECT_LT(three_points, 0.1 * end_point);
-    if (previous > 0.0) EXPECT_GT(previous / three_points, 6.0);  // third order: 8 per halving
+    if (previous > 0.0) {
+      EXPECT_GT(previous / three_points, 6.0);  // third order: 8 per halving
+    }
     previous = three_points;
   }
 }
