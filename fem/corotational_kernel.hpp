@@ -148,7 +148,8 @@ double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d
 
   if (K != nullptr) {
     // Products of fixed 18 × 18 matrices coefficient by coefficient: Eigen's blocked
-    // matrix–matrix kernel packs its operands for sizes this small (docs/fem.md, "Cost").
+    // matrix–matrix kernel packs its operands for sizes this small (docs/fem.md, "The
+    // elements' forces and tangents").
     const Mat kB = k.lazyProduct(B);
     Mat Kl = B.transpose().lazyProduct(kB);
     if (geometric_force != nullptr) {  // the geometric terms from a given local force

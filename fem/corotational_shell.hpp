@@ -42,7 +42,8 @@ struct CorotationalShell {
 
 /// The linear local response W = ½ dᵀ k d of a shell: k d as the membrane's and the
 /// plate's 9 × 9 products (a quarter of the 18 × 18 product's work and half its memory,
-/// which the element force streams at every Newton iteration: docs/fem.md, "Cost").
+/// which the element force streams at every Newton iteration: docs/fem.md, "The elements'
+/// forces and tangents").
 struct ShellLinearLaw {
   const CorotationalShell& shell;
   double operator()(const Eigen::Matrix<double, 18, 1>& d, Eigen::Matrix<double, 18, 1>& f_local,
