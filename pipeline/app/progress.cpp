@@ -50,7 +50,7 @@ void ProgressLine::update(long step, double time, std::string_view extra) {
     const auto now = std::chrono::steady_clock::now();
     if (now - last_draw_ >= log_interval_) {
       last_draw_ = now;
-      draw(format(step_, total_, time_, extra_) + wall_note(), true);
+      draw(format(step_, total_, time_, extra_) + wall_note(true), true);
     }
     return;
   }
@@ -65,7 +65,11 @@ void ProgressLine::update(long step, double time, std::string_view extra) {
   }
   extra_.assign(extra);
   last_draw_ = now;
-  draw(format(step_, total_, time_, extra_), false);
+  std::string line = format(step_, total_, time_, extra_);
+  // The time left appears once the run has shown its pace (a second of wall time).
+  if (const double wall = wall_seconds(); wall >= 1.0)
+    if (const std::string left = time_left(wall, step_, total_); !left.empty()) line += "  " + left;
+  draw(line, false);
 }
 
 void ProgressLine::finish(std::string_view extra) {
@@ -73,14 +77,34 @@ void ProgressLine::finish(std::string_view extra) {
   finished_ = true;
   if (mode_ == Mode::quiet) return;
   if (!extra.empty()) extra_.assign(extra);
-  draw(format(step_, total_, time_, extra_) + wall_note(), true);
+  draw(format(step_, total_, time_, extra_) + wall_note(false), true);
 }
 
-std::string ProgressLine::wall_note() const {
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  char buf[48];
-  std::snprintf(buf, sizeof(buf), "  (%.1f s wall)", wall);
+std::string ProgressLine::time_left(double wall, long step, long total) {
+  if (step <= 0 || step >= total || !(wall > 0.0)) return {};
+  const double left = wall * static_cast<double>(total - step) / static_cast<double>(step);  // [s]
+  char buf[32];
+  if (left < 90.0)
+    std::snprintf(buf, sizeof(buf), "~%.0f s left", left);
+  else if (left < 5400.0)
+    std::snprintf(buf, sizeof(buf), "~%.1f min left", left / 60.0);
+  else
+    std::snprintf(buf, sizeof(buf), "~%.1f h left", left / 3600.0);
   return buf;
+}
+
+double ProgressLine::wall_seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+std::string ProgressLine::wall_note(bool with_time_left) const {
+  const double wall = wall_seconds();
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), "  (%.1f s wall", wall);
+  std::string note = buf;
+  if (const std::string left = with_time_left ? time_left(wall, step_, total_) : std::string(); !left.empty())
+    note += ", " + left;
+  return note + ")";
 }
 
 void ProgressLine::draw(const std::string& line, bool final_line) {

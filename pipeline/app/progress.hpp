@@ -1,10 +1,13 @@
 #pragma once
 /// \file progress.hpp
 /// \brief A one-line progress display on stderr for long runs:
-/// "step 120/300  t=0.0460 s  <extra>", redrawn in place (carriage return) at most
-/// about five times a second. When the stream is not a terminal (a log file, a batch
-/// job's output) a whole line is printed every 30 s of wall time and at the end;
-/// FLAPSIM_QUIET=1 in the environment silences it entirely.
+/// "step 120/300  t=0.0460 s  <extra>  ~2.5 min left", redrawn in place (carriage return)
+/// at most about five times a second. When the stream is not a terminal (a log file, a
+/// batch job's output) a whole line is printed every 30 s of wall time, "… (30.1 s wall,
+/// ~2.5 min left)", and at the end, "… (95.2 s wall)"; FLAPSIM_QUIET=1 in the environment
+/// silences it entirely. The time left is the wall time so far scaled by the steps left
+/// over the steps done (a run whose steps slow down, e.g. a film wing whose FEM steps
+/// start to split, takes longer than it says).
 
 #include <chrono>
 #include <cstdio>
@@ -49,9 +52,14 @@ class ProgressLine {
   /// \brief The text of a line (no carriage return or newline): "step 120/300  t=0.0460 s  extra".
   static std::string format(long step, long total, double time, std::string_view extra);
 
+  /// \brief "~40 s left", "~2.5 min left", "~1.3 h left": \p wall seconds for \p step of
+  /// \p total steps, scaled to the steps left; empty before the first step and after the last.
+  static std::string time_left(double wall, long step, long total);
+
  private:
   void draw(const std::string& line, bool final_line);
-  std::string wall_note() const;  ///< "  (12.3 s wall)"
+  double wall_seconds() const;  ///< since the line was made [s]
+  std::string wall_note(bool with_time_left) const;  ///< "  (12.3 s wall)" or "  (12.3 s wall, ~40 s left)"
   long total_;
   std::FILE* stream_;
   Mode mode_;

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -49,6 +52,25 @@ TEST(OutputProgress, LiveModeRedrawsInPlaceThrottled) {
   EXPECT_LT(redraws, 50);  // throttled: not one per step
   EXPECT_NE(out.find("step 1000/1000"), std::string::npos);
   EXPECT_EQ(out.back(), '\n');
+}
+
+TEST(OutputProgress, LiveLineShowsTheTimeLeftOnceTheRunHasAPace) {
+  // Within its first second the live line shows no time left; after it, "~… left" (here
+  // one step of four in ~1.1 s: about 3.3 s left).
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  {
+    ProgressLine p(4, f, ProgressLine::Mode::live);
+    p.update(1, 0.001);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    p.update(1, 0.001);
+  }
+  const std::string out = file_contents(f);
+  std::fclose(f);
+  const std::size_t second = out.find('\r', 1);
+  ASSERT_NE(second, std::string::npos) << out;
+  EXPECT_EQ(out.substr(0, second).find("left"), std::string::npos) << out;
+  EXPECT_NE(out.find(" s left", second), std::string::npos) << out;
 }
 
 TEST(OutputProgress, QuietEnvironmentSilencesIt) {
