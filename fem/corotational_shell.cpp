@@ -14,15 +14,11 @@ CorotationalShell make_corotational_shell(const std::array<int, 3>& nodes,
   e.reference_axes = shell_axes(p);
   e.local_stiffness = shell_local_stiffness(p, s);
   e.local_stiffness = 0.5 * (e.local_stiffness + e.local_stiffness.transpose()).eval();
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b)
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          e.membrane_stiffness(3 * a + i, 3 * b + j) =
-              e.local_stiffness(6 * a + kShellMembraneDofs[i], 6 * b + kShellMembraneDofs[j]);
-          e.bending_stiffness(3 * a + i, 3 * b + j) =
-              e.local_stiffness(6 * a + kShellBendingDofs[i], 6 * b + kShellBendingDofs[j]);
-        }
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) {
+      e.membrane_stiffness(i, j) = e.local_stiffness(kShellMembraneDofs[i], kShellMembraneDofs[j]);
+      e.bending_stiffness(i, j) = e.local_stiffness(kShellBendingDofs[i], kShellBendingDofs[j]);
+    }
   std::array<double, 3> lx{}, ly{};
   for (int a = 0; a < 3; ++a) {
     const Eigen::Vector3d d = e.reference_axes * (p[a] - p[0]);
@@ -31,8 +27,7 @@ CorotationalShell make_corotational_shell(const std::array<int, 3>& nodes,
   }
   const Eigen::Matrix<double, 9, 3> L9 = opt_basic_lumping(lx, ly, s.thickness);
   e.membrane_lumping.setZero();
-  for (int a = 0; a < 3; ++a)
-    for (int i = 0; i < 3; ++i) e.membrane_lumping.row(6 * a + kShellMembraneDofs[i]) = L9.row(3 * a + i);
+  for (int i = 0; i < 9; ++i) e.membrane_lumping.row(kShellMembraneDofs[i]) = L9.row(i);
   e.volume = 0.5 * std::abs(lx[1] * ly[2] - lx[2] * ly[1]) * s.thickness;
   e.youngs_modulus = s.youngs_modulus;
   e.poisson_ratio = s.poisson_ratio;
@@ -47,18 +42,16 @@ CorotationalShell make_corotational_shell(const std::array<int, 3>& nodes,
 double ShellLinearLaw::operator()(const Eigen::Matrix<double, 18, 1>& d, Eigen::Matrix<double, 18, 1>& f_local,
                                   Matrix18d* k_local) const {
   Eigen::Matrix<double, 9, 1> dm, db;
-  for (int a = 0; a < 3; ++a)
-    for (int i = 0; i < 3; ++i) {
-      dm(3 * a + i) = d(6 * a + kShellMembraneDofs[i]);
-      db(3 * a + i) = d(6 * a + kShellBendingDofs[i]);
-    }
+  for (int i = 0; i < 9; ++i) {
+    dm(i) = d(kShellMembraneDofs[i]);
+    db(i) = d(kShellBendingDofs[i]);
+  }
   const Eigen::Matrix<double, 9, 1> fm = shell.membrane_stiffness.lazyProduct(dm);
   const Eigen::Matrix<double, 9, 1> fb = shell.bending_stiffness.lazyProduct(db);
-  for (int a = 0; a < 3; ++a)
-    for (int i = 0; i < 3; ++i) {
-      f_local(6 * a + kShellMembraneDofs[i]) = fm(3 * a + i);
-      f_local(6 * a + kShellBendingDofs[i]) = fb(3 * a + i);
-    }
+  for (int i = 0; i < 9; ++i) {
+    f_local(kShellMembraneDofs[i]) = fm(i);
+    f_local(kShellBendingDofs[i]) = fb(i);
+  }
   if (k_local != nullptr) *k_local = shell.local_stiffness;
   return 0.5 * d.dot(f_local);
 }

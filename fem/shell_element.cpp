@@ -209,13 +209,11 @@ Matrix18d shell_local_stiffness(const std::array<Eigen::Vector3d, 3>& p, const S
   const Matrix9d Km = opt_membrane_stiffness(x, y, E, nu, h);
   const Matrix9d Kb = dkt_stiffness(x, y, D, nu);
   Matrix18d k = Matrix18d::Zero();
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b)
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          k(6 * a + kShellMembraneDofs[i], 6 * b + kShellMembraneDofs[j]) += Km(3 * a + i, 3 * b + j);
-          k(6 * a + kShellBendingDofs[i], 6 * b + kShellBendingDofs[j]) += Kb(3 * a + i, 3 * b + j);
-        }
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) {
+      k(kShellMembraneDofs[i], kShellMembraneDofs[j]) = Km(i, j);
+      k(kShellBendingDofs[i], kShellBendingDofs[j]) = Kb(i, j);
+    }
   return k;
 }
 

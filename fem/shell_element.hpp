@@ -67,10 +67,10 @@ Eigen::Matrix<double, 9, 3> opt_basic_lumping(const std::array<double, 3>& x, co
 Matrix9d opt_membrane_stiffness(const std::array<double, 3>& x, const std::array<double, 3>& y,
                                 double E, double nu, double h);
 
-/// The DOFs of the OPT membrane (u, v, θz) and of the DKT plate (w, θx, θy) among a node's
-/// six local ones (u, v, w, θx, θy, θz).
-inline constexpr int kShellMembraneDofs[3] = {0, 1, 5};
-inline constexpr int kShellBendingDofs[3] = {2, 3, 4};
+/// Where the OPT membrane's 9 DOFs (u, v, θz of nodes 0, 1, 2) and the DKT plate's 9 (w, θx,
+/// θy of nodes 0, 1, 2) sit among the element's 18 local ones (u, v, w, θx, θy, θz a node).
+inline constexpr int kShellMembraneDofs[9] = {0, 1, 5, 6, 7, 11, 12, 13, 17};
+inline constexpr int kShellBendingDofs[9] = {2, 3, 4, 8, 9, 10, 14, 15, 16};
 
 /// \brief Stiffness in the element's own axes (shell_axes), DOF order per node (u, v, w,
 /// θx, θy, θz): the OPT membrane on (u, v, θz) and the DKT plate on (w, θx, θy), uncoupled
