@@ -132,7 +132,7 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
   w.last_dx.resize(static_cast<Eigen::Index>(free.size()));
   w.dx.resize(static_cast<Eigen::Index>(free.size()));
   acceleration = Eigen::VectorXd::Zero(n);
-  strain_energy = w.assembler.evaluate(state, w.f_int, false);
+  w.assembler.evaluate(state, w.f_int, false);
   if (!free.empty()) {
     w.mass_assembler.load_mass_into_tangent();
     const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
@@ -146,6 +146,8 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
 }
 
 DynamicsData::~DynamicsData() = default;
+
+double DynamicsData::strain_energy() const { return work_->assembler.evaluate(state, work_->f_int, false); }
 
 double DynamicsData::kinetic_energy() const {
   const SparseMatrix& M = work_->assembler.model().mass;
@@ -249,7 +251,7 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
     ex.velocity = &w.v1;
     ex.damping = model.options.stiffness_damping;
     ex.damping_tangent_scale = cV;
-    double strain = 0.0, previous = 0.0;  // previous: the last correction's size
+    double previous = 0.0;  // the last correction's size
     bool refactor = false;
     bool corrected = false;  // a correction of this solve has been applied (w.last_dx)
     // The correction moves the trial: x ← x + δx and, on a node whose three rotations are
@@ -298,7 +300,7 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
         }
         w.dx.swap(w.last_dx);
       }
-      strain = w.assembler.evaluate(w.trial, w.f_int, new_matrix, ex);
+      w.assembler.evaluate(w.trial, w.f_int, new_matrix, ex);
       ex.linearised_geometric_force = false;
       auto residual = [&](double& scale) {
         w.inertia.noalias() = cm.mass * w.vdot1;
@@ -393,7 +395,6 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
         }
       }
       if (small_increment) {
-        strain = w.assembler.evaluate(w.trial, w.f_int, false, ex);
         res.iterations = it + 1;
         res.converged = true;
         break;
@@ -405,7 +406,6 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
                     std::to_string(res.residual) + ")";
       return res;
     }
-    d.strain_energy = strain;
     return res;
   };
 

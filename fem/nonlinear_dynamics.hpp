@@ -168,7 +168,9 @@ class DynamicsData {
   Eigen::VectorXd acceleration;  ///< v̇_n (full)
   Eigen::VectorXd pseudo_acceleration;  ///< a_n (full)
   double time = 0.0;           ///< t_n [s]
-  double strain_energy = 0.0;  ///< at q_n [J]
+  /// Elastic energy at q_n [J]: the elements evaluated at q_n when asked (one force
+  /// evaluation, about 2 ms on the hawkmoth's default mesh; a step does not spend it).
+  double strain_energy() const;
   double kinetic_energy() const;  ///< ½ vᵀ M v [J]
   const SolverCounters& counters() const { return counters_; }
   /// \brief Keep the converged answers of the last `count` steps (at least one) as warm

@@ -165,7 +165,7 @@ TEST_F(HawkmothCorotational, RigidRotationAtConstantAngularAccelerationIsStressF
     const Eigen::VectorXd u = displacement_vector(cm, data.state);
     linear_force = std::max(linear_force, (fem_->system.stiffness * u).cwiseAbs().maxCoeff());
     worst_force = std::max(worst_force, f_int.cwiseAbs().maxCoeff());
-    worst_energy = std::max({worst_energy, energy, data.strain_energy});
+    worst_energy = std::max({worst_energy, energy, data.strain_energy()});
     // 2. Inertial loads.
     const Eigen::VectorXd drive = cm.mass * data.acceleration + f_int;
     Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();

@@ -56,7 +56,7 @@ Drift energy_drift(int per_period, int periods) {
   const DynamicsModel dm = make_dynamics_model(cm, {0}, opt);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(cm.num_dofs());
   DynamicsData data(dm, reference_state(cm), v0, zero);
-  const double e0 = data.kinetic_energy() + data.strain_energy;
+  const double e0 = data.kinetic_energy() + data.strain_energy();
   const double h = 1.0 / (f1 * per_period);
   Drift out;
   long iterations = 0;
@@ -68,7 +68,7 @@ Drift energy_drift(int per_period, int periods) {
       return out;
     }
     iterations += r.iterations;
-    const double e = data.kinetic_energy() + data.strain_energy;
+    const double e = data.kinetic_energy() + data.strain_energy();
     out.worst = std::max(out.worst, std::abs(e - e0) / e0);
     out.tip_amplitude = std::max(out.tip_amplitude, std::hypot(data.state.position[10].y(), data.state.position[10].z()));
   }
@@ -129,7 +129,7 @@ TEST(NonlinearEnergy, ReleaseFromALargeStaticDeflectionRunsThrough100PeriodsWith
   const DynamicsModel dm = make_dynamics_model(cm, {0}, opt);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(cm.num_dofs());
   DynamicsData data(dm, s0, zero, zero);
-  const double e0 = data.strain_energy;
+  const double e0 = data.strain_energy();
   const int per_period = 200;
   double gain = 0.0, loss = 0.0;
   long iterations = 0;
@@ -137,7 +137,7 @@ TEST(NonlinearEnergy, ReleaseFromALargeStaticDeflectionRunsThrough100PeriodsWith
     const StepResult r = step(dm, data, 1.0 / (f1 * per_period), zero, nullptr);
     ASSERT_TRUE(r.converged) << "step " << k << " (period " << k / per_period << "): " << r.failure;
     iterations += r.iterations;
-    const double e = (data.kinetic_energy() + data.strain_energy - e0) / e0;
+    const double e = (data.kinetic_energy() + data.strain_energy() - e0) / e0;
     gain = std::max(gain, e);
     loss = std::max(loss, -e);
   }
