@@ -4,7 +4,8 @@
 /// the order `check`, `run` and `sweep` report them: a tip beyond Mach 0.3, a chain file
 /// that does not match the wing, a chain file that misses its wing's FEM modes (as reduce
 /// found), a chain driven above or near its resonance, a chain the flapping's inertia alone
-/// bends beyond 30°, a coupling tolerance below the single-precision wake sums' floor.
+/// bends beyond 30°, a coupling tolerance below the single-precision wake sums' floor, an
+/// FEM membrane that wrinkles at its mesh's scale (a thin film).
 
 #include <string>
 #include <vector>

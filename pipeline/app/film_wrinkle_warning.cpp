@@ -1,0 +1,51 @@
+#include "pipeline/app/film_wrinkle_warning.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+namespace flapsim::app {
+
+double mesh_wrinkle_strain(double thickness, double poisson_ratio, double wavelength) {
+  const double tk = 2.0 * std::numbers::pi * thickness / wavelength;
+  return tk * tk / (12.0 * (1.0 - poisson_ratio * poisson_ratio));
+}
+
+std::optional<MembraneWrinkle> typical_membrane_wrinkle(const fem::StructuralModel& model) {
+  const fem::Mesh& mesh = model.mesh;
+  std::vector<MembraneWrinkle> elements;
+  elements.reserve(mesh.triangles.size());
+  for (std::size_t e = 0; e < mesh.triangles.size() && e < model.shell.size(); ++e) {
+    const auto& t = mesh.triangles[e];
+    const double size = ((mesh.nodes[t[1]] - mesh.nodes[t[0]]).norm() + (mesh.nodes[t[2]] - mesh.nodes[t[1]]).norm() +
+                         (mesh.nodes[t[0]] - mesh.nodes[t[2]]).norm()) / 3.0;
+    const fem::ShellProperties& p = model.shell[e];
+    if (!(size > 0.0) || !(p.thickness > 0.0)) continue;
+    elements.push_back({mesh_wrinkle_strain(p.thickness, p.poisson_ratio, size), p.thickness, size});
+  }
+  if (elements.empty()) return std::nullopt;
+  auto median = elements.begin() + static_cast<std::ptrdiff_t>(elements.size() / 2);
+  std::nth_element(elements.begin(), median, elements.end(),
+                   [](const MembraneWrinkle& a, const MembraneWrinkle& b) { return a.strain < b.strain; });
+  return *median;
+}
+
+std::string film_wrinkle_warning(const FsiSetup& setup) {
+  if (!setup.fem_structure) return "";
+  const std::optional<MembraneWrinkle> median = typical_membrane_wrinkle(setup.fem_structure->structural);
+  if (!median) return "";
+  if (!(median->strain < kFilmWrinkleStrain)) return "";
+  char text[900];
+  std::snprintf(text, sizeof text,
+                "the FEM's membrane (%.3g um on elements of %.3g mm) buckles into wrinkles of the mesh's own "
+                "wavelength under %.2g %% of compression, a thin film: where the flapping compresses it (a bending "
+                "rod: ~0.06 %%) the FEM splits its steps (docs/fsi.md, \"Step halving of the FEM\"), and such runs "
+                "took 15x (the 75 mm film wing) and 80x (the MAV film wing) the time estimated here (docs/fsi.md, "
+                "\"Film wings\")",
+                median->thickness * 1e6, median->size * 1e3, 100.0 * median->strain);
+  return text;
+}
+
+}  // namespace flapsim::app

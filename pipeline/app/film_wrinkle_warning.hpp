@@ -1,0 +1,43 @@
+#pragma once
+/// \file film_wrinkle_warning.hpp
+/// \brief A warning for a `kind = "fem"` case whose membrane is a thin film against its
+/// mesh: a compression of a fraction of a per mille buckles it into wrinkles of the mesh's
+/// own wavelength, the FEM then splits its steps where they form (docs/fsi.md, "Step halving
+/// of the FEM"), and the run takes many times what `check` estimates (docs/fsi.md, "Film
+/// wings").
+
+#include <optional>
+#include <string>
+
+#include "fem/structural_model.hpp"
+#include "pipeline/app/fsi_setup.hpp"
+
+namespace flapsim::app {
+
+/// \brief The membrane strain (compression, > 0) at which a flat plate of thickness t [m]
+/// and Poisson's ratio ν buckles into a wrinkle of wavelength λ [m]: where the membrane
+/// force's geometric stiffness N k² equals the bending stiffness D k⁴ (N = E t ε,
+/// D = E t³/(12 (1 − ν²)), k = 2π/λ): ε = (2π t/λ)² / (12 (1 − ν²)).
+double mesh_wrinkle_strain(double thickness, double poisson_ratio, double wavelength);
+
+/// The strain below which a membrane is warned about (typical_membrane_wrinkle): the 75 mm
+/// film wing (elements of 2.17 mm) at 25 µm (5.1e-4) split 45 % of its steps, at 50 µm
+/// (2.1e-3) 3 %, at 100 µm (8.2e-3) none (docs/fsi.md, "Film wings"); the MAV film wing is
+/// at 3.8e-4, the hawkmoth's membrane (120 µm, 0.49 mm) at 0.22. A convention from these measurements.
+inline constexpr double kFilmWrinkleStrain = 1e-3;
+
+/// The membrane's typical element: the shell triangle at the median of mesh_wrinkle_strain
+/// over all of them, each with its mean edge as the wavelength.
+struct MembraneWrinkle {
+  double strain = 0.0;     ///< mesh_wrinkle_strain
+  double thickness = 0.0;  ///< [m]
+  double size = 0.0;       ///< mean edge [m]
+};
+/// std::nullopt for a model without shells.
+std::optional<MembraneWrinkle> typical_membrane_wrinkle(const fem::StructuralModel& model);
+
+/// \brief "" or the warning for a `kind = "fem"` case whose typical membrane element
+/// wrinkles below kFilmWrinkleStrain.
+std::string film_wrinkle_warning(const FsiSetup& setup);
+
+}  // namespace flapsim::app

@@ -1,0 +1,70 @@
+// A `kind = "fem"` case whose membrane is a thin film against its mesh is warned about by
+// check and run (pipeline/app/film_wrinkle_warning.hpp; docs/fsi.md, "Film wings"): its
+// FEM splits the steps where the film wrinkles, and the shipped film cases took 15× and 80×
+// the time `check` estimates.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "common/run_flapsim.hpp"
+#include "common/scratch_dir.hpp"
+#include "fem/wing_fem.hpp"
+#include "pipeline/app/film_wrinkle_warning.hpp"
+#include "wings/wing_file.hpp"
+
+namespace {
+
+const std::string kWrinkleSource = FLAPSIM_SOURCE_DIR;
+const std::string kWrinkleWarning = "wrinkles of the mesh's own wavelength";
+
+// `flapsim check` of a shipped case with its wing path made absolute; its stderr.
+std::string check_case(const flapsim::test::ScratchDir& dir, const std::string& case_name, const std::string& wing) {
+  std::string text = flapsim::test::read_text(kWrinkleSource + "/cases/" + case_name + ".toml");
+  const std::string relative = "\"../wings/" + wing + ".toml\"";
+  text.replace(text.find(relative), relative.size(), "\"" + kWrinkleSource + "/wings/" + wing + ".toml\"");
+  const auto file = dir / (case_name + ".toml");
+  std::ofstream(file) << text;
+  const flapsim::test::FlapsimOutcome out =
+      flapsim::test::run_flapsim_capturing_stderr(dir.path(), "check " + file.string());
+  EXPECT_EQ(out.status, 0) << out.err;
+  return out.err;
+}
+
+}  // namespace
+
+TEST(FilmWrinkleWarning, TheWrinkleStrainIsWhereTheMembraneForceMeetsTheBendingStiffness) {
+  // 25 µm Mylar (ν = 0.38) at a wavelength of 2.5 mm, by hand: (2π · 0.01)² = 3.9478e-3,
+  // / 12 / (1 − 0.1444) = 3.845e-4 (docs/fsi.md: a film in compression wrinkles at the
+  // mesh's wavelength, N k² against D k⁴).
+  EXPECT_NEAR(flapsim::app::mesh_wrinkle_strain(25e-6, 0.38, 2.5e-3), 3.845e-4, 1e-7);
+  // t² scaling: twice as thick wrinkles at four times the strain.
+  EXPECT_NEAR(flapsim::app::mesh_wrinkle_strain(50e-6, 0.38, 2.5e-3) / flapsim::app::mesh_wrinkle_strain(25e-6, 0.38, 2.5e-3),
+              4.0, 1e-12);
+}
+
+TEST(FilmWrinkleWarning, TheFilmWingsAreBelowTheThresholdAndTheHawkmothFarAbove) {
+  using flapsim::app::typical_membrane_wrinkle;
+  const auto film = typical_membrane_wrinkle(
+      flapsim::fem::build_wing_fem(flapsim::wings::load_wing_file(kWrinkleSource + "/wings/film_wing_75mm_25um.toml")).model);
+  const auto mav = typical_membrane_wrinkle(
+      flapsim::fem::build_wing_fem(flapsim::wings::load_wing_file(kWrinkleSource + "/wings/mav_film_wing_25um.toml")).model);
+  const auto hawkmoth = typical_membrane_wrinkle(
+      flapsim::fem::build_wing_fem(flapsim::wings::load_wing_file(kWrinkleSource + "/wings/hawkmoth.toml")).model);
+  ASSERT_TRUE(film && mav && hawkmoth);
+  std::printf("  typical wrinkle strain: 75 mm film wing %.3g (%.3g mm), MAV film wing %.3g (%.3g mm), hawkmoth %.3g "
+              "(%.3g mm)\n",
+              film->strain, 1e3 * film->size, mav->strain, 1e3 * mav->size, hawkmoth->strain, 1e3 * hawkmoth->size);
+  // Measured: 5.13e-4 (2.17 mm), 3.85e-4 (2.5 mm), 0.221 (0.485 mm).
+  EXPECT_NEAR(film->strain, 5.1e-4, 0.3e-4);
+  EXPECT_NEAR(mav->strain, 3.8e-4, 0.3e-4);
+  EXPECT_LT(film->strain, flapsim::app::kFilmWrinkleStrain);
+  EXPECT_LT(mav->strain, flapsim::app::kFilmWrinkleStrain);
+  EXPECT_GT(hawkmoth->strain, 100.0 * flapsim::app::kFilmWrinkleStrain);
+}
+
+TEST(FilmWrinkleWarning, CheckWarnsForTheFilmWingsFemAndNotForTheHawkmoths) {
+  flapsim::test::ScratchDir dir("film_wrinkle_warning");
+  EXPECT_NE(check_case(dir, "film_wing_fem", "film_wing_75mm_25um").find(kWrinkleWarning), std::string::npos);
+  EXPECT_EQ(check_case(dir, "hover_flexible_fem", "hawkmoth").find(kWrinkleWarning), std::string::npos);
+}
