@@ -28,7 +28,10 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
   if (form_ == TangentForm::SymmetricLower) {
     {
       const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
-      if (!llt_analysed_) llt_.analyzePattern(A);
+      if (!llt_analysed_) {
+        llt_.analyzePattern(A);
+        factor_nonzeros_ = llt_.cholmod().lnz;
+      }
       llt_analysed_ = true;
       llt_.factorize(A);
     }

@@ -53,6 +53,9 @@ class NewtonMatrix {
   void invalidate() { valid_ = false; }
   /// Matrices the LLᵀ refused (then factorised by LDLᵀ, or by LU if that failed too).
   long lu_fallbacks() const { return fallbacks_; }
+  /// Memory its factors take, about [bytes]: 24 bytes a nonzero of L (the LLᵀ's and an
+  /// LDLᵀ's values and indices); 0 before the first factorisation, or for the LU.
+  double factor_bytes() const { return 24.0 * factor_nonzeros_; }
 
  private:
   void rotate(Eigen::VectorXd& v, const Eigen::Matrix3d& S) const;
@@ -76,6 +79,7 @@ class NewtonMatrix {
   /// steps, and each refused LLᵀ cost a factorisation.
   static constexpr int kLdltFirstAfterRefusal = 8;
   int ldlt_first_ = 0;
+  double factor_nonzeros_ = 0.0;  ///< nonzeros of L (CHOLMOD's analysis)
   Eigen::VectorXd rhs_;
 };
 

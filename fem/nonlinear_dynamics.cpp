@@ -67,10 +67,22 @@ PrescribedMotion rigid_prescribed_motion(const DynamicsModel& model, const Eigen
 
 struct DynamicsData::Work {
   Work(const CorotationalModel& m, const Constraints& c, TangentForm form)
-      : assembler(m, c, form), mass_assembler(m, c, TangentForm::SymmetricLower), matrix(form, assembler.free_dofs()) {}
+      : assembler(m, c, form), mass_assembler(m, c, TangentForm::SymmetricLower), form(form) {
+    matrices.push_back(KeptMatrix{std::make_unique<NewtonMatrix>(form, assembler.free_dofs())});
+  }
   NonlinearAssembler assembler;
   NonlinearAssembler mass_assembler;  ///< only for M_ff at the start
-  NewtonMatrix matrix;
+  TangentForm form;
+  /// The kept Newton matrices: one by default; for a caller that splits its steps, one per
+  /// piece (keep_warm_starts, within kKeptMatricesBytes), so that a piece solved again (the
+  /// next coupling sub-iteration) finds the matrix made for it, not the last piece's.
+  struct KeptMatrix {
+    std::unique_ptr<NewtonMatrix> matrix;
+    double start = 0.0;  ///< t_n of the step (or piece) it was made in [s]
+    long made = -1;      ///< the factorisation count when it was made (-1: never)
+  };
+  std::vector<KeptMatrix> matrices;
+  std::size_t last_made = 0;  ///< the matrix factorised last
   CorotationalState trial;
   Eigen::VectorXd f_int, inertia, r, dx, increment, v1, vdot1, a1;
   /// The last converged answers (full increments) and the t_n, Δt each was made from: one
@@ -87,7 +99,6 @@ struct DynamicsData::Work {
   std::vector<Eigen::Matrix3d> rotation0;        ///< its trial rotations
   std::vector<char> rotations_free;  ///< per node: its three rotations are free
   Eigen::VectorXd last_dx;  ///< the last Newton correction applied (free DOFs)
-  double matrix_start = 0.0;  ///< t_n of the step (or piece) the kept matrix was made in [s]
 };
 
 void DynamicsData::keep_warm_starts(int count) {
@@ -97,6 +108,12 @@ void DynamicsData::keep_warm_starts(int count) {
   const Eigen::Index dofs = w.warm_starts.front().increment.size();
   w.warm_starts.resize(n);
   for (Work::WarmStart& k : w.warm_starts) k.increment.resize(dofs);
+  // As many kept matrices as pieces, within kKeptMatricesBytes (the first one's factor
+  // size, once it has been made; before, one).
+  const double bytes = w.matrices.front().matrix->factor_bytes();
+  const std::size_t fit = bytes > 0.0 ? static_cast<std::size_t>(std::max(1.0, kKeptMatricesBytes / bytes)) : 1;
+  while (w.matrices.size() < std::min(n, fit))
+    w.matrices.push_back(Work::KeptMatrix{std::make_unique<NewtonMatrix>(w.form, w.assembler.free_dofs())});
 }
 
 DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& s, const Eigen::VectorXd& v0,
@@ -174,6 +191,19 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
   if (pm != nullptr && pm->position.size() != model.driven_nodes.size())
     throw std::invalid_argument("step: one prescribed motion per driven node is required");
   if (!(tolerance_scale >= 1.0)) throw std::invalid_argument("step: tolerance_scale must be at least 1");
+  // The kept matrix to start with: the one made for this step (or piece: the same t_n and
+  // Δt) if there is one, else the last one made; a new one goes to the former, else to the
+  // matrix made longest ago.
+  std::size_t own = w.matrices.size(), use = w.last_made;
+  for (std::size_t i = 0; i < w.matrices.size(); ++i)
+    if (w.matrices[i].made >= 0 && w.matrices[i].start == d.time && w.matrices[i].matrix->step_size() == h) own = i;
+  if (own < w.matrices.size()) {
+    use = own;
+  } else {
+    own = 0;
+    for (std::size_t i = 1; i < w.matrices.size(); ++i)
+      if (w.matrices[i].made < w.matrices[own].made) own = i;
+  }
   // One Newton solve of the step: from the warm start or the predictor, with the kept
   // matrix (reuse) or a fresh one every iteration.
   auto newton_step = [&](const DynamicsData::Work::WarmStart* warm, bool reuse) -> StepResult {
@@ -282,8 +312,9 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       // slowly in the last iteration, or (with the linearised geometric terms) it was made
       // in another step and has given this solve its one correction (its next one grows:
       // docs/fem.md, "Cost").
-      const bool new_matrix = !reuse || !w.matrix.valid() || w.matrix.step_size() != h || refactor ||
-                              (model.options.linearised_geometric_force && corrected && w.matrix_start != d.time);
+      DynamicsData::Work::KeptMatrix& kept = w.matrices[use];
+      const bool new_matrix = !reuse || !kept.matrix->valid() || kept.matrix->step_size() != h || refactor ||
+                              (model.options.linearised_geometric_force && corrected && kept.start != d.time);
       refactor = false;
       // A new matrix after a correction: its geometric terms from the elements' forces at
       // the correction's end taken linearly (DynamicsOptions::linearised_geometric_force). The
@@ -328,17 +359,22 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       }
       if (it == model.options.max_iterations) break;
       if (new_matrix) {
+        use = own;
+        DynamicsData::Work::KeptMatrix& made = w.matrices[own];
         ++count.factorizations;
-        w.matrix_start = d.time;
-        if (!w.matrix.factorize(w.assembler.tangent(), frame, h)) {
+        made.start = d.time;
+        made.made = count.factorizations;
+        w.last_made = own;
+        const long fallbacks = made.matrix->lu_fallbacks();
+        const bool factorised = made.matrix->factorize(w.assembler.tangent(), frame, h);
+        count.lu_fallbacks += made.matrix->lu_fallbacks() - fallbacks;
+        if (!factorised) {
           res.failure = "t = " + std::to_string(d.time + h) + " s, iteration " + std::to_string(it) +
                         ": the Newton matrix is singular";
-          count.lu_fallbacks = w.matrix.lu_fallbacks();
           return res;
         }
-        count.lu_fallbacks = w.matrix.lu_fallbacks();
       }
-      w.matrix.solve(w.r, frame, w.dx);
+      w.matrices[use].matrix->solve(w.r, frame, w.dx);
       ++count.iterations;
       double max_t = 0.0, max_r = 0.0;
       for (Eigen::Index i = 0; i < nf; ++i) {

@@ -115,6 +115,10 @@ struct SolverCounters {
   long retries = 0;             ///< steps redone with a fresh matrix every iteration
 };
 
+/// Memory the kept Newton matrices of a step solved in pieces may take together [bytes]
+/// (DynamicsData::keep_warm_starts): the 25 µm MAV film wing's (4860 DOFs) up to 32 pieces fit.
+inline constexpr double kKeptMatricesBytes = 256.0e6;
+
 /// The constant part: model, which nodes are driven, which DOFs are fixed.
 struct DynamicsModel {
   const CorotationalModel* structure = nullptr;  ///< must outlive the model and its data
@@ -175,8 +179,9 @@ class DynamicsData {
   const SolverCounters& counters() const { return counters_; }
   /// \brief Keep the converged answers of the last `count` steps (at least one) as warm
   /// starts (StepStart::PreviousSolution): a caller that solves a step in pieces, and each
-  /// piece again in the next sub-iteration, finds every piece's last answer. Only grows (it
-  /// allocates when it does).
+  /// piece again in the next sub-iteration, finds every piece's last answer; and as many
+  /// kept Newton matrices, as far as kKeptMatricesBytes allows, so that each piece finds the
+  /// matrix made for it in the last sub-iteration. Only grows (it allocates when it does).
   void keep_warm_starts(int count);
 
  private:
