@@ -73,9 +73,10 @@ struct DynamicsData::Work {
   NonlinearAssembler assembler;
   NonlinearAssembler mass_assembler;  ///< only for M_ff at the start
   TangentForm form;
-  /// The kept Newton matrices: one by default; for a caller that splits its steps, one per
-  /// piece (keep_warm_starts, within kKeptMatricesBytes), so that a piece solved again (the
-  /// next coupling sub-iteration) finds the matrix made for it, not the last piece's.
+  bool matrix_per_piece = false;  ///< DynamicsOptions::matrix_per_piece
+  /// The kept Newton matrices: one; with matrix_per_piece, for a caller that splits its
+  /// steps, one per piece (keep_warm_starts, within kKeptMatricesBytes), so that a piece
+  /// solved again (the next coupling sub-iteration) finds the matrix made for it.
   struct KeptMatrix {
     std::unique_ptr<NewtonMatrix> matrix;
     double start = 0.0;  ///< t_n of the step (or piece) it was made in [s]
@@ -108,8 +109,9 @@ void DynamicsData::keep_warm_starts(int count) {
   const Eigen::Index dofs = w.warm_starts.front().increment.size();
   w.warm_starts.resize(n);
   for (Work::WarmStart& k : w.warm_starts) k.increment.resize(dofs);
-  // As many kept matrices as pieces, within kKeptMatricesBytes (the first one's factor
-  // size, once it has been made; before, one).
+  // With matrix_per_piece as many kept matrices as pieces, within kKeptMatricesBytes (the
+  // first one's factor size, once it has been made; before, one).
+  if (!w.matrix_per_piece) return;
   const double bytes = w.matrices.front().matrix->factor_bytes();
   const std::size_t fit = bytes > 0.0 ? static_cast<std::size_t>(std::max(1.0, kKeptMatricesBytes / bytes)) : 1;
   while (w.matrices.size() < std::min(n, fit))
@@ -125,6 +127,7 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
     throw std::invalid_argument("DynamicsData: velocity or load size does not match the DOF count");
   Work& w = *work_;
   w.trial = s;
+  w.matrix_per_piece = model.options.matrix_per_piece;
   w.f_int.resize(n);
   w.inertia.resize(n);
   w.increment.resize(n);

@@ -94,6 +94,13 @@ struct DynamicsOptions {
   /// same (the residual is not changed). Linear shells and frames; not with line_search.
   /// With it, a matrix kept from another step (or piece) gives a solve one correction.
   bool linearised_geometric_force = true;
+  /// Keep a Newton matrix for each piece of a step its caller solves in pieces
+  /// (DynamicsData::keep_warm_starts), so that a piece solved again (the coupling's next
+  /// sub-iteration) starts with the matrix made for it; false: one kept matrix, the last one
+  /// made. Measured (docs/fem.md, "A kept matrix for each piece"): the film wings' runs
+  /// 28–52 % faster, but the MAV film wing's coupling then stalled at step 238 of its 400
+  /// (the stalls of a wrinkling film follow the sub-iterates' path), so not the default.
+  bool matrix_per_piece = false;
   /// Scale each Newton correction by a line search on the slope δxᵀ r along it
   /// (regula falsi, at most 8 force evaluations; docs/fsi.md "Film wings":
   /// the 25 µm film converges with it and not without).
@@ -116,7 +123,8 @@ struct SolverCounters {
 };
 
 /// Memory the kept Newton matrices of a step solved in pieces may take together [bytes]
-/// (DynamicsData::keep_warm_starts): the 25 µm MAV film wing's (4860 DOFs) up to 32 pieces fit.
+/// (DynamicsData::keep_warm_starts; as NewtonMatrix::factor_bytes counts them). The 25 µm
+/// MAV film wing (4860 DOFs, steps in up to 16 pieces) ran with 143 MB more than before.
 inline constexpr double kKeptMatricesBytes = 256.0e6;
 
 /// The constant part: model, which nodes are driven, which DOFs are fixed.
@@ -173,15 +181,17 @@ class DynamicsData {
   Eigen::VectorXd pseudo_acceleration;  ///< a_n (full)
   double time = 0.0;           ///< t_n [s]
   /// Elastic energy at q_n [J]: the elements evaluated at q_n when asked (one force
-  /// evaluation, about 2 ms on the hawkmoth's default mesh; a step does not spend it).
+  /// evaluation, about 2 ms on the hawkmoth's default mesh, in the solver's scratch space;
+  /// a step does not spend it).
   double strain_energy() const;
   double kinetic_energy() const;  ///< ½ vᵀ M v [J]
   const SolverCounters& counters() const { return counters_; }
   /// \brief Keep the converged answers of the last `count` steps (at least one) as warm
   /// starts (StepStart::PreviousSolution): a caller that solves a step in pieces, and each
-  /// piece again in the next sub-iteration, finds every piece's last answer; and as many
-  /// kept Newton matrices, as far as kKeptMatricesBytes allows, so that each piece finds the
-  /// matrix made for it in the last sub-iteration. Only grows (it allocates when it does).
+  /// piece again in the next sub-iteration, finds every piece's last answer; with
+  /// DynamicsOptions::matrix_per_piece as many kept Newton matrices, as far as
+  /// kKeptMatricesBytes allows, so that each piece finds the matrix made for it in the last
+  /// sub-iteration. Only grows (it allocates when it does).
   void keep_warm_starts(int count);
 
  private:

@@ -20,6 +20,7 @@ std::shared_ptr<const fsi::FemStructureModel> make_fem_structure(const io::Case&
   options.rho_infinity = c.numerics.rho_infinity;
   options.stiffness_damping = c.structure.fem_stiffness_damping;
   options.linearised_geometric_force = c.structure.fem_linearised_geometric_terms;
+  options.matrix_per_piece = c.structure.fem_matrix_per_piece;
   // Newton's stopping rule from the coupling's tolerance (fem_structure.hpp).
   options = fsi::coupled_dynamics_options(options, c.numerics.coupling_tolerance, c.numerics.steps_per_cycle);
   const int nc = c.numerics.chordwise_panels, ns = c.numerics.spanwise_panels;

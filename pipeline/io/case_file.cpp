@@ -90,7 +90,7 @@ Case::Structure read_structure(const TomlTable& root) {
   Case::Structure s;
   const TomlTable t = root.get_table("structure");
   t.expect_only({"kind", "bodies", "gravity", "initial_angles_deg", "initial_rates_deg_per_s", "element_size_mm",
-                 "vein_element_size_mm", "stiffness_damping_s", "newton_geometric_terms"});
+                 "vein_element_size_mm", "stiffness_damping_s", "newton_geometric_terms", "newton_matrix_per_piece"});
   s.kind = t.get_choice("kind", kStructureKindNames);
   if (s.kind == Kind::Rigid) {
     s.bodies = t.get_int("bodies", 1, Bounds::closed(1, 1000));
@@ -110,9 +110,11 @@ Case::Structure read_structure(const TomlTable& root) {
     s.fem_stiffness_damping = t.get_double("stiffness_damping_s", 0.0, Bounds::closed(0.0, 1.0));
     s.fem_linearised_geometric_terms =
         t.get_choice("newton_geometric_terms", {"linearised", "current"}, "linearised") == "linearised";
+    s.fem_matrix_per_piece = t.get_bool("newton_matrix_per_piece", false);
   }
   if (s.kind != Kind::Fem)
-    for (const char* key : {"element_size_mm", "vein_element_size_mm", "stiffness_damping_s", "newton_geometric_terms"})
+    for (const char* key : {"element_size_mm", "vein_element_size_mm", "stiffness_damping_s", "newton_geometric_terms",
+                            "newton_matrix_per_piece"})
       if (t.has(key)) t.fail(key, "a key of the FEM structure (kind = \"fem\"); this case's kind has no FEM");
   if (t.has("bodies")) s.bodies_line = t.line_of("bodies");
   if (t.has("gravity")) {

@@ -101,6 +101,9 @@ struct Case {
     /// default) or from those at the current state ("current"; faster for thin films:
     /// docs/fem.md, "The geometric terms from the corrections taken linearly").
     bool fem_linearised_geometric_terms = true;
+    /// A kept Newton matrix for each piece of a split FEM step (`newton_matrix_per_piece`;
+    /// fem::DynamicsOptions::matrix_per_piece): faster for film wings, off by default.
+    bool fem_matrix_per_piece = false;
   } structure;
 
   struct Numerics {

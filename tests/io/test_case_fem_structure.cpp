@@ -27,7 +27,7 @@ const std::string kFemHead =
 TEST(CaseFemStructure, KeysAreReadInSiUnits) {
   const p::Case c = case_from_text(kFemHead + "element_size_mm = 1.5\nvein_element_size_mm = 0.5\n"
                                               "stiffness_damping_s = 2e-5\ngravity = [0.0, 0.0, -9.81]\n"
-                                              "newton_geometric_terms = \"current\"\n");
+                                              "newton_geometric_terms = \"current\"\nnewton_matrix_per_piece = true\n");
   EXPECT_EQ(c.structure.kind, p::Case::Structure::Kind::Fem);
   EXPECT_EQ(c.structure.bodies, 1);
   EXPECT_DOUBLE_EQ(c.structure.fem_element_size, 1.5e-3);       // mm → m
@@ -35,12 +35,14 @@ TEST(CaseFemStructure, KeysAreReadInSiUnits) {
   EXPECT_DOUBLE_EQ(c.structure.fem_stiffness_damping, 2e-5);    // s
   EXPECT_DOUBLE_EQ(c.structure.gravity.z(), -9.81);              // m/s², ground frame
   EXPECT_FALSE(c.structure.fem_linearised_geometric_terms);      // "current"
+  EXPECT_TRUE(c.structure.fem_matrix_per_piece);
   // Defaults: the wing file's mesh, no damping.
   const p::Case d = case_from_text(kFemHead);
   EXPECT_EQ(d.structure.fem_element_size, 0.0);
   EXPECT_EQ(d.structure.fem_vein_element_size, 0.0);
   EXPECT_EQ(d.structure.fem_stiffness_damping, 0.0);
   EXPECT_TRUE(d.structure.fem_linearised_geometric_terms);  // "linearised"
+  EXPECT_FALSE(d.structure.fem_matrix_per_piece);           // one kept matrix
 }
 
 TEST(CaseFemStructure, WhatBelongsToTheChainIsRefusedAtItsLineAndKey) {
@@ -55,11 +57,14 @@ TEST(CaseFemStructure, WhatBelongsToTheChainIsRefusedAtItsLineAndKey) {
       {kFemHead + "element_size_mm = 0.0\n", 8, "structure.element_size_mm"},
       {kFemHead + "stiffness_damping_s = -1e-5\n", 8, "structure.stiffness_damping_s"},
       {kFemHead + "newton_geometric_terms = \"mixed\"\n", 8, "structure.newton_geometric_terms"},
+      {kFemHead + "newton_matrix_per_piece = 1\n", 8, "structure.newton_matrix_per_piece"},
       {kFemHead + "[[loads]]\nbody = 1\npoint = [0, 0, 0]\nforce = [0, 0, 1]\n", 9, "loads[0].body"},
       {kFemHead + "[[markers]]\nname = \"tip\"\nbody = 1\npoint = [0, 0, 0]\n", 10, "markers[0].body"},
       // and the FEM's keys in a chain's case
       {kFemHead.substr(0, kFemHead.find("kind")) + "kind = \"flexible\"\nbodies = 3\nelement_size_mm = 1.0\n", 9,
        "structure.element_size_mm"},
+      {kFemHead.substr(0, kFemHead.find("kind")) + "kind = \"flexible\"\nbodies = 3\nnewton_matrix_per_piece = true\n", 9,
+       "structure.newton_matrix_per_piece"},
   };
   for (const auto& b : cases) {
     const flapsim::InputError e = error_of(b.text);
