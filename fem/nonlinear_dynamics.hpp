@@ -124,7 +124,7 @@ struct SolverCounters {
 
 /// Memory the kept Newton matrices of a step solved in pieces may take together [bytes]
 /// (DynamicsData::keep_warm_starts; as NewtonMatrix::factor_bytes counts them). The 25 µm
-/// MAV film wing (4860 DOFs, steps in up to 16 pieces) ran with 143 MB more than before.
+/// MAV film wing (4860 DOFs, steps in up to 16 pieces) ran with 143 MB more with them.
 inline constexpr double kKeptMatricesBytes = 256.0e6;
 
 /// The constant part: model, which nodes are driven, which DOFs are fixed.
