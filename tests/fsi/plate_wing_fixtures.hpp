@@ -9,6 +9,9 @@
 #include "mbd/chain_model.hpp"
 #include "mbd/wing_kinematics.hpp"
 #include "uvlm/planform_grid.hpp"
+#include "uvlm/vortex_lattice.hpp"
+
+#include <vector>
 
 namespace flapsim::test {
 
@@ -35,6 +38,23 @@ inline fem::StructuralModel plate_shells(double thickness, double youngs_modulus
   shell.density = 2700.0;
   sm.shell.assign(sm.mesh.triangles.size(), shell);
   return sm;
+}
+
+// The nodes of a plate_shells mesh on its root edge (y = 0): the clamped ones.
+inline std::vector<int> plate_root_nodes(const fem::Mesh& mesh) {
+  std::vector<int> root;
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    if (mesh.nodes[static_cast<std::size_t>(n)].y() < 1e-12) root.push_back(n);
+  return root;
+}
+
+// The same upward force [N] on each of `panels` lattice panels (applied at the origin).
+inline uvlm::PanelLoads uniform_panel_lift(int panels, double newtons) {
+  uvlm::PanelLoads load;
+  load.force = Eigen::Matrix3Xd::Zero(3, panels);
+  load.force.row(2).setConstant(newtons);
+  load.point = Eigen::Matrix3Xd::Zero(3, panels);
+  return load;
 }
 
 inline mbd::WingKinematics eq8_kinematics(double rotation_phase) {

@@ -25,9 +25,7 @@ constexpr double kPieceSpan = 0.040;  // [m]
 // the plate's lattice, to take panel loads.
 std::unique_ptr<fsi::FemStructureModel> split_plate(bool matrix_per_piece) {
   fem::StructuralModel sm = test::plate_shells(2e-4);
-  std::vector<int> root;
-  for (int n = 0; n < sm.mesh.num_nodes(); ++n)
-    if (sm.mesh.nodes[static_cast<std::size_t>(n)].y() < 1e-12) root.push_back(n);
+  const std::vector<int> root = test::plate_root_nodes(sm.mesh);
   fem::DynamicsOptions o;
   o.rho_infinity = 0.5;
   o.max_iterations = 4;
@@ -38,18 +36,9 @@ std::unique_ptr<fsi::FemStructureModel> split_plate(bool matrix_per_piece) {
       test::plate_grid(kPieceChordwise, kPieceSpanwise).nodes, kPieceChordwise, kPieceSpanwise, kPieceSpan);
 }
 
-// The same upward force [N] on every panel.
-uvlm::PanelLoads panel_lift(double newtons) {
-  uvlm::PanelLoads load;
-  load.force = Eigen::Matrix3Xd::Zero(3, kPieceChordwise * kPieceSpanwise);
-  load.force.row(2).setConstant(newtons);
-  load.point = Eigen::Matrix3Xd::Zero(3, kPieceChordwise * kPieceSpanwise);
-  return load;
-}
-
 void solve_with(fsi::FemStructureData& s, double t, double dt, double newtons) {
   s.set_external_loads(t);
-  s.add_panel_loads(panel_lift(newtons));
+  s.add_panel_loads(test::uniform_panel_lift(kPieceChordwise * kPieceSpanwise, newtons));
   s.set_solve_accuracy(1.0);
   s.solve(dt);
 }

@@ -24,9 +24,7 @@ constexpr double kHalvingFrequency = 26.1;   // [Hz], eq. 8
 // first bending is about 100 Hz, four times the wingbeat, so it bends visibly.
 std::unique_ptr<fsi::FemStructureModel> halving_plate(int max_iterations) {
   fem::StructuralModel sm = test::plate_shells(2e-4);
-  std::vector<int> root;
-  for (int n = 0; n < sm.mesh.num_nodes(); ++n)
-    if (sm.mesh.nodes[static_cast<std::size_t>(n)].y() < 1e-12) root.push_back(n);
+  const std::vector<int> root = test::plate_root_nodes(sm.mesh);
   fem::DynamicsOptions o;
   o.rho_infinity = 0.5;
   o.max_iterations = max_iterations;

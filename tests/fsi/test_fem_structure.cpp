@@ -27,11 +27,7 @@ constexpr int kChordwise = 3, kSpanwise = 6, kSteps = 160;
 
 // The same upward force [N] on every panel of the plate's lattice.
 uvlm::PanelLoads lift_on_every_panel(double newtons) {
-  uvlm::PanelLoads load;
-  load.force = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
-  load.force.row(2).setConstant(newtons);
-  load.point = Eigen::Matrix3Xd::Zero(3, kChordwise * kSpanwise);
-  return load;
+  return test::uniform_panel_lift(kChordwise * kSpanwise, newtons);
 }
 
 // ρ∞ = 0.5: the plate starts at rest relative to its clamp, which the base accelerates: the
