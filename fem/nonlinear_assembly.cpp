@@ -168,6 +168,15 @@ NonlinearAssembler::NonlinearAssembler(const CorotationalModel& model, Constrain
   hinge_f_.resize(model.hinges.size());
   hinge_K_.resize(model.hinges.size());
   mass_values_.assign(static_cast<size_t>(tangent_.nonZeros()), 0.0);
+  translation_slots_.resize(static_cast<size_t>(model.num_nodes()));
+  for (int n = 0; n < model.num_nodes(); ++n)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        translation_slots_[static_cast<size_t>(n)][static_cast<size_t>(3 * i + j)] = [&] {
+          const int s = slot(dof_index(n, i), dof_index(n, j));  // -1, or where the entry would be
+          const int r = fi[dof_index(n, i)];
+          return s >= 0 && s < tangent_.nonZeros() && tangent_.innerIndexPtr()[s] == r ? s : -1;
+        }();
   for (int c = 0; c < model.mass.outerSize(); ++c)
     for (SparseMatrix::InnerIterator it(model.mass, c); it; ++it) {
       const int s = slot(static_cast<int>(it.row()), c);
@@ -211,6 +220,19 @@ void NonlinearAssembler::record_correction_path(const CorotationalState& state, 
     std::array<Eigen::Vector3d, 2> xbar;
     eicr_deformation<2>(el.reference_local, el.reference_axes, frame_corotated_frame(el, x, R).axes, x, R, xbar,
                         frame_d[static_cast<size_t>(e)]);
+  }
+}
+
+void NonlinearAssembler::add_translation_blocks(const std::vector<int>& nodes,
+                                                const std::vector<Eigen::Matrix3d>& blocks, double factor) {
+  if (nodes.size() != blocks.size())
+    throw std::invalid_argument("add_translation_blocks: one block per node is required");
+  double* val = tangent_.valuePtr();
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const auto& sl = translation_slots_.at(static_cast<size_t>(nodes[k]));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (const int s = sl[static_cast<size_t>(3 * i + j)]; s >= 0) val[s] += factor * blocks[k](i, j);
   }
 }
 

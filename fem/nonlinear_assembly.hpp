@@ -126,6 +126,11 @@ class NonlinearAssembler {
   /// d₀ + B₀ Δu = 4 d(½) − 2 d(0) − d(1) + O(Δu³) (TangentExtras::linearised_geometric_force).
   void record_correction_path(const CorotationalState& state, int point);
 
+  /// \brief Adds factor · D_k to the tangent's translation block of each node k (free
+  /// DOFs only; the lower triangle for SymmetricLower), after evaluate made it.
+  void add_translation_blocks(const std::vector<int>& nodes, const std::vector<Eigen::Matrix3d>& blocks,
+                              double factor);
+
   const SparseMatrix& tangent() const { return tangent_; }  ///< free DOFs (see TangentForm)
   const Constraints& constraints() const { return constraints_; }
   const std::vector<int>& free_dofs() const { return free_dofs_; }
@@ -138,6 +143,7 @@ class NonlinearAssembler {
   std::vector<int> free_dofs_;
   SparseMatrix tangent_;
   std::vector<double> mass_values_;  ///< M_ff aligned with tangent_'s values
+  std::vector<std::array<int, 9>> translation_slots_;  ///< per node, its 3 × 3 block's (-1: not stored)
   std::vector<std::array<int, 18 * 18>> shell_slots_;
   std::vector<std::array<int, 12 * 12>> frame_slots_;
   std::vector<std::array<int, 24 * 24>> hinge_slots_;

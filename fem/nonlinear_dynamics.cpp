@@ -86,6 +86,8 @@ struct DynamicsData::Work {
   std::size_t last_made = 0;  ///< the matrix factorised last
   CorotationalState trial;
   Eigen::VectorXd f_int, inertia, r, dx, increment, v1, vdot1, a1;
+  Eigen::VectorXd damping_force;  ///< the NodalLoadDamping's load, full numbering [N]
+  bool damping_written = false;   ///< damping_force has nonzero entries
   /// The last converged answers (full increments) and the t_n, Δt each was made from: one
   /// by default, one per piece for a caller that splits its steps (keep_warm_starts).
   struct WarmStart {
@@ -130,6 +132,7 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
   w.matrix_per_piece = model.options.matrix_per_piece;
   w.f_int.resize(n);
   w.inertia.resize(n);
+  w.damping_force.setZero(n);
   w.increment.resize(n);
   w.v1.resize(n);
   w.vdot1.resize(n);
@@ -185,7 +188,8 @@ Eigen::Matrix3d base_frame(const DynamicsModel& model, const CorotationalState& 
 }  // namespace
 
 StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eigen::VectorXd& f_ext,
-                const PrescribedMotion* pm, StepStart start, double tolerance_scale) {
+                const PrescribedMotion* pm, StepStart start, double tolerance_scale,
+                const NodalLoadDamping* damping) {
   const CorotationalModel& cm = *model.structure;
   DynamicsData::Work& w = *d.work_;
   const std::vector<int>& free = w.assembler.free_dofs();
@@ -194,6 +198,12 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
   if (pm != nullptr && pm->position.size() != model.driven_nodes.size())
     throw std::invalid_argument("step: one prescribed motion per driven node is required");
   if (!(tolerance_scale >= 1.0)) throw std::invalid_argument("step: tolerance_scale must be at least 1");
+  if (damping != nullptr && (damping->nodes.size() != damping->blocks.size() ||
+                             damping->reference_velocity == nullptr ||
+                             damping->reference_velocity->cols() != cm.num_nodes()))
+    throw std::invalid_argument("step: the load damping needs a block per node and a velocity per model node");
+  if (w.damping_written) w.damping_force.setZero();
+  w.damping_written = damping != nullptr;
   // The kept matrix to start with: the one made for this step (or piece: the same t_n and
   // Δt) if there is one, else the last one made; a new one goes to the former, else to the
   // matrix made longest ago.
@@ -336,12 +346,22 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       }
       w.assembler.evaluate(w.trial, w.f_int, new_matrix, ex);
       ex.linearised_geometric_force = false;
+      if (new_matrix && damping != nullptr)
+        w.assembler.add_translation_blocks(damping->nodes, damping->blocks, damping->scale * cV);
       auto residual = [&](double& scale) {
         w.inertia.noalias() = cm.mass * w.vdot1;
+        if (damping != nullptr) {  // s D (v − v_ref), taken from the loads below
+          for (std::size_t k = 0; k < damping->nodes.size(); ++k) {
+            const int node = damping->nodes[k];
+            w.damping_force.segment<3>(dof_index(node, UX)) =
+                damping->scale * damping->blocks[k] *
+                (w.v1.segment<3>(dof_index(node, UX)) - damping->reference_velocity->col(node));
+          }
+        }
         double fe = 0.0, fi = 0.0, fm = 0.0;
         for (Eigen::Index i = 0; i < nf; ++i) {
           const int g = free[static_cast<size_t>(i)];
-          w.r(i) = f_ext(g) - w.f_int(g) - w.inertia(g);
+          w.r(i) = f_ext(g) - w.f_int(g) - w.inertia(g) - w.damping_force(g);
           fe += f_ext(g) * f_ext(g);
           fi += w.f_int(g) * w.f_int(g);
           fm += w.inertia(g) * w.inertia(g);

@@ -61,6 +61,7 @@
 #include <Eigen/Core>
 
 #include "fem/constraints.hpp"
+#include "fem/load_damping.hpp"
 #include "fem/nonlinear_assembly.hpp"
 
 namespace flapsim::fem {
@@ -196,7 +197,7 @@ class DynamicsData {
 
  private:
   friend StepResult step(const DynamicsModel&, DynamicsData&, double, const Eigen::VectorXd&,
-                         const PrescribedMotion*, StepStart, double);
+                         const PrescribedMotion*, StepStart, double, const NodalLoadDamping*);
   struct Work;
   std::unique_ptr<Work> work_;
   SolverCounters counters_;
@@ -211,8 +212,10 @@ class DynamicsData {
 /// \param tolerance_scale  ≥ 1: Newton stops at this multiple of DynamicsOptions::tolerance
 ///                    and increment_tolerance (an intermediate answer, e.g. a coupling
 ///                    sub-iteration far from its fixed point; docs/fsi.md); 1: full accuracy
+/// \param damping     a load −s D (v_{n+1} − v_ref) added to f_ext, and s (γ/(βh)) D to the
+///                    Newton matrices the step makes (load_damping.hpp); nullptr: none
 StepResult step(const DynamicsModel& model, DynamicsData& data, double dt, const Eigen::VectorXd& f_ext,
                 const PrescribedMotion* prescribed, StepStart start = StepStart::Predictor,
-                double tolerance_scale = 1.0);
+                double tolerance_scale = 1.0, const NodalLoadDamping* damping = nullptr);
 
 }  // namespace flapsim::fem

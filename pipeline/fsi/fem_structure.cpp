@@ -86,6 +86,11 @@ void FemStructureData::initialize(double t0) {
   read_trial();
   iterate_x_ = trial_x_;
   iterate_v_ = trial_v_;
+  accepted_v_ = earlier_v_ = earliest_v_ = trial_v_;
+  added_mass_ = LumpedAddedMass{};
+  added_mass_dropped_ = false;
+  iterating_ = false;
+  accepted_steps_ = 0;
   pose_is_trial_ = true;
 }
 
@@ -97,6 +102,7 @@ void FemStructureData::set_external_loads(double) {
 }
 
 void FemStructureData::add_panel_loads(const uvlm::PanelLoads& panels) {
+  loads_velocity_ = pose_is_trial_ ? trial_v_ : iterate_v_;
   add_panel_loads_to_fem(model_.attachment, model_.structural.mesh, pose_is_trial_ ? trial_x_ : iterate_x_, panels,
                          loads_);
 }
@@ -126,6 +132,21 @@ void FemStructureData::read_trial() {
 bool FemStructureData::solve_in_pieces(double dt, int pieces, std::string& failure) {
   const double t0 = accepted_.time;
   const double h = dt / pieces;
+  // The air's added mass, in steps solved whole (see fem_structure.hpp): the sub-iterations'
+  // measured from the velocities the lattice was solved with, the predictor's from those
+  // extrapolated from the last three steps (as the predictor's loads are).
+  if (pieces > 1 && !added_mass_.nodes.empty()) {
+    added_mass_ = LumpedAddedMass{};
+    added_mass_dropped_ = true;
+  }
+  const fem::NodalLoadDamping* damping = nullptr;
+  if (!added_mass_.nodes.empty()) {
+    if (!iterating_ && accepted_steps_ >= 2)
+      predicted_velocity_ = 3.0 * accepted_v_ - 3.0 * earlier_v_ + earliest_v_;
+    else if (!iterating_)
+      predicted_velocity_ = 2.0 * accepted_v_ - earlier_v_;
+    damping = added_mass_load(t0 + dt, iterating_ ? loads_velocity_ : predicted_velocity_);
+  }
   for (int k = 1; k <= pieces; ++k) {
     const double t = k == pieces ? t0 + dt : t0 + k * h;
     const fem::PrescribedMotion motion = clamp_motion(model_, t);
@@ -138,14 +159,31 @@ bool FemStructureData::solve_in_pieces(double dt, int pieces, std::string& failu
     // A sub-iteration after the first starts Newton from the last answer of this step (of
     // this piece): the answer to the given loads is the same to the solver's tolerance
     // (fem_structure.hpp).
-    const fem::StepResult r =
-        fem::step(model_.dynamics, *dynamics_, h, *f, &motion, fem::StepStart::PreviousSolution, accuracy_);
+    const fem::StepResult r = fem::step(model_.dynamics, *dynamics_, h, *f, &motion,
+                                        fem::StepStart::PreviousSolution, accuracy_, damping);
     if (!r.converged) {
       failure = r.failure;
       return false;
     }
   }
   return true;
+}
+
+const fem::NodalLoadDamping* FemStructureData::added_mass_load(double t, const Eigen::Matrix3Xd& reference) {
+  const Eigen::Matrix3d R = model_.base_motion(t).rotation;
+  damping_.nodes = added_mass_.nodes;
+  damping_.blocks.resize(added_mass_.blocks.size());
+  for (std::size_t i = 0; i < added_mass_.blocks.size(); ++i)
+    damping_.blocks[i] = R * added_mass_.blocks[i] * R.transpose();
+  damping_.reference_velocity = &reference;
+  damping_.scale = 1.0;
+  return &damping_;
+}
+
+void FemStructureData::linearise_panel_loads(PanelLoadResponse& response) {
+  if (model_.attachment.nodes.empty() || added_mass_dropped_) return;
+  added_mass_ = lump_added_mass(model_.attachment, model_.structural.mesh, response,
+                                model_.base_motion(dynamics_->time).rotation, model_.surface_nodes());
 }
 
 void FemStructureData::solve(double dt) {
@@ -164,6 +202,7 @@ void FemStructureData::solve(double dt) {
 }
 
 void FemStructureData::start_iterate() {
+  iterating_ = true;
   iterate_x_ = trial_x_;
   iterate_v_ = trial_v_;
 }
@@ -204,6 +243,11 @@ void FemStructureData::relax(double omega) {
 }
 
 void FemStructureData::accept() {
+  iterating_ = false;
+  earliest_v_ = earlier_v_;
+  earlier_v_ = accepted_v_;
+  accepted_v_ = trial_v_;
+  ++accepted_steps_;
   accepted_ = Saved{dynamics_->state, dynamics_->velocity, dynamics_->acceleration, dynamics_->pseudo_acceleration,
                     dynamics_->time};
   accepted_loads_ = loads_;

@@ -27,6 +27,15 @@
 /// (the structure's answer to given loads then stays one function of them), carried into the
 /// next step, and halved again after kFemStepsBeforeJoining steps solved without a failure. A
 /// run that never fails is solved whole, unchanged to the bit.
+///
+/// The air's added mass (linearise_panel_loads, `numerics.added_mass`): the lattice's
+/// response lumped to the nodes (fem_added_mass.hpp) acts in every solve of a step solved
+/// whole as a load −D (v_{n+1} − ṽ) (fem/load_damping.hpp): in the sub-iterations ṽ is the
+/// velocity the lattice was solved with (the load vanishes at the coupling's fixed point),
+/// in the predictor the velocity extrapolated from the last steps, as its loads are (and
+/// the Newton matrix it keeps for the sub-iterations has D). A run whose step is split drops
+/// it for good: in pieces it made the film wings' coupling slower (docs/fsi.md, "Added mass
+/// in the coupling").
 
 #include <Eigen/Core>
 
@@ -37,6 +46,7 @@
 #include "fem/nonlinear_dynamics.hpp"
 #include "fem/structural_model.hpp"
 #include "mbd/base_motion.hpp"
+#include "pipeline/fsi/fem_added_mass.hpp"
 #include "pipeline/fsi/fem_attachment.hpp"
 #include "pipeline/fsi/structure.hpp"
 
@@ -107,6 +117,7 @@ class FemStructureData : public StructureData {
   void prescribe(double t) override;
   void solve(double dt) override;
   double set_solve_accuracy(double factor) override { return accuracy_ = factor > 1.0 ? factor : 1.0; }
+  void linearise_panel_loads(PanelLoadResponse& response) override;
   void start_iterate() override;
   void pose_iterate() override { pose_is_trial_ = false; }
   void surface(Eigen::Matrix3Xd& positions, Eigen::Matrix3Xd& velocities) const override;
@@ -126,6 +137,9 @@ class FemStructureData : public StructureData {
   const fem::DynamicsData& dynamics() const { return *dynamics_; }
   /// Node translations [m] and velocities [m/s] of the trial ŝ.
   const Eigen::Matrix3Xd& trial_positions() const { return trial_x_; }
+  /// The lattice's added mass lumped to the nodes (fem_added_mass.hpp), base frame; empty
+  /// before the coupling has linearised it.
+  const LumpedAddedMass& added_mass() const { return added_mass_; }
 
  private:
   struct Saved {  // the accepted state, to restart each solve from
@@ -138,6 +152,9 @@ class FemStructureData : public StructureData {
   /// The step from the accepted state in `pieces` equal pieces; false (the state undefined,
   /// the reason in `failure`) when a piece's Newton fails.
   bool solve_in_pieces(double dt, int pieces, std::string& failure);
+
+  /// The lumped added mass in ground axes at t [s], measured from `reference` [m/s].
+  const fem::NodalLoadDamping* added_mass_load(double t, const Eigen::Matrix3Xd& reference);
 
   const FemStructureModel& model_;  ///< not owned
   std::unique_ptr<fem::DynamicsData> dynamics_;
@@ -154,6 +171,15 @@ class FemStructureData : public StructureData {
   Eigen::Matrix3Xd iterate_x_, iterate_v_; ///< s̃'s
   bool pose_is_trial_ = true;              ///< the surface follows ŝ (else s̃)
   double accuracy_ = 1.0;                  ///< the next solve's tolerance, in multiples of the FEM's
+  // The air's added mass (linearise_panel_loads; solve_in_pieces).
+  LumpedAddedMass added_mass_;             ///< base frame; empty: none
+  bool added_mass_dropped_ = false;        ///< a step was split: none for the rest of the run
+  fem::NodalLoadDamping damping_;          ///< added_mass_ in ground axes, for a solve
+  bool iterating_ = false;                 ///< between start_iterate() and accept()
+  Eigen::Matrix3Xd loads_velocity_;        ///< node velocities the loads were found at [m/s]
+  Eigen::Matrix3Xd accepted_v_, earlier_v_, earliest_v_;  ///< node velocities of s_n, s_{n−1}, s_{n−2} [m/s]
+  Eigen::Matrix3Xd predicted_velocity_;    ///< 3 v_n − 3 v_{n−1} + v_{n−2} (2 v_n − v_{n−1}): the predictor's reference [m/s]
+  long accepted_steps_ = 0;                ///< steps accepted since initialize()
 };
 
 }  // namespace flapsim::fsi
