@@ -2,6 +2,7 @@
 
 #include "fem/constraints.hpp"
 #include "fem/wing_fem.hpp"
+#include "pipeline/app/film_wrinkle_warning.hpp"
 
 namespace flapsim::app {
 
@@ -24,8 +25,14 @@ std::shared_ptr<const fsi::FemStructureModel> make_fem_structure(const io::Case&
   // Newton's stopping rule from the coupling's tolerance (fem_structure.hpp).
   options = fsi::coupled_dynamics_options(options, c.numerics.coupling_tolerance, c.numerics.steps_per_cycle);
   const int nc = c.numerics.chordwise_panels, ns = c.numerics.spanwise_panels;
-  return std::make_shared<const fsi::FemStructureModel>(std::move(f.model), std::move(clamped), base, options,
+  auto model = std::make_shared<fsi::FemStructureModel>(std::move(f.model), std::move(clamped), base, options,
                                                         lattice_nodes, nc, ns, span, c.structure.gravity);
+  // A thin film (its membrane wrinkles at the mesh's wavelength: film_wrinkle_warning.hpp)
+  // splits its steps, and the lumped added mass there slowed or stopped its coupling
+  // (docs/fsi.md, "Added mass in the coupling"): it goes without.
+  const std::optional<MembraneWrinkle> wrinkle = typical_membrane_wrinkle(model->structural);
+  model->lumped_added_mass = !(wrinkle && wrinkle->strain < kFilmWrinkleStrain);
+  return model;
 }
 
 }  // namespace flapsim::app

@@ -181,7 +181,7 @@ const fem::NodalLoadDamping* FemStructureData::added_mass_load(double t, const E
 }
 
 void FemStructureData::linearise_panel_loads(PanelLoadResponse& response) {
-  if (model_.attachment.nodes.empty() || added_mass_dropped_) return;
+  if (model_.attachment.nodes.empty() || !model_.lumped_added_mass || added_mass_dropped_) return;
   added_mass_ = lump_added_mass(model_.attachment, model_.structural.mesh, response,
                                 model_.base_motion(dynamics_->time).rotation, model_.surface_nodes());
 }

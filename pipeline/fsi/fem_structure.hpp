@@ -34,8 +34,9 @@
 /// velocity the lattice was solved with (the load vanishes at the coupling's fixed point),
 /// in the predictor the velocity extrapolated from the last steps, as its loads are (and
 /// the Newton matrix it keeps for the sub-iterations has D). A run whose step is split drops
-/// it for good: in pieces it made the film wings' coupling slower (docs/fsi.md, "Added mass
-/// in the coupling").
+/// it for good: in pieces it made the film wings' coupling slower; a thin film goes without it
+/// from the start (FemStructureModel::lumped_added_mass; docs/fsi.md, "Added mass in the
+/// coupling").
 
 #include <Eigen/Core>
 
@@ -86,6 +87,9 @@ class FemStructureModel : public StructureModel {
   const mbd::BaseMotion base_motion;
   const FemAttachment attachment;
   const double length_scale;  ///< [m]
+  /// Whether the sub-iterations take the lattice's added mass (linearise_panel_loads): the
+  /// case setup leaves it out for a thin film's FEM (docs/fsi.md, "Added mass in the coupling").
+  bool lumped_added_mass = true;
   /// The weight M g of every node (g at each translational DOF, through the FEM's mass
   /// matrix: its resultant is the FEM's mass times g, its moment that of the mass
   /// distribution) [N]; empty without gravity.
