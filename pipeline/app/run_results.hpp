@@ -161,6 +161,9 @@ inline constexpr auto kRunResults = [] {
                        "only when one was"},
       ResultDefinition{"max_structural_pieces", "", K::integer, "", "",
                        "most pieces one such solve took (2 … 64); set only with split_structural_steps"},
+      ResultDefinition{"stalled_steps_retried", "", K::integer, "", "",
+                       "steps whose coupling stalled and was tried again with the structure solved more "
+                       "finely (docs/fsi.md, \"Failures\"); set only when one was"},
       ResultDefinition{"wake_panels", "", K::integer, "", "", "wake panels at the end of the run (in air)"},
       ResultDefinition{"wall_time_s", "s", K::number, "%.1f", "wall time", "wall-clock time of the run"},
   };
@@ -253,6 +256,9 @@ inline constexpr std::array kRunReport = {
                [](const RunResults& r) {
                  return r.has("split_structural_steps") && r.text("structure_kind") != "fem";
                }},
+    ReportLine{"coupling: {stalled_steps_retried} steps stalled and were tried again with the structure "
+               "solved more finely (docs/fsi.md, \"Failures\")",
+               [](const RunResults& r) { return r.has("stalled_steps_retried"); }},
     ReportLine{"structure: {split_structural_steps} FEM steps did not converge whole and were solved in "
                "pieces (up to {max_structural_pieces}): motions of the mesh's scale faster than the time "
                "step (a thin film's wrinkles) there (docs/fsi.md, \"Step halving of the FEM\")",

@@ -202,14 +202,36 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
       data.quasi_newton.start_step();
       int k = 0;
       double delta = 0.0;
-      const bool converged = sub_iterate(model, data, dt, step, t1, model.coupling.method,
-                                         model.coupling.max_iterations, k, delta);
+      bool converged = sub_iterate(model, data, dt, step, t1, model.coupling.method,
+                                   model.coupling.max_iterations, k, delta);
+      // A stalled coupling, once more from the predictor with a finer structure
+      // (StructureData::refine_after_stall; docs/fsi.md, "Failures").
+      int retry = 0;
+      for (; !converged && retry < kStallRetries && s.refine_after_stall(); ++retry) {
+        ++data.stall_retries;
+        uvlm::release_leading_edge_sides(*data.lattice);  // the stalled iterates' sides and sums
+        uvlm::sum_old_wake_anew(*data.lattice);
+        s.set_external_loads(t1);
+        if (step > 0) s.add_panel_loads(data.predicted_loads);
+        s.set_solve_accuracy(1.0);
+        s.solve(dt);
+        s.start_iterate();
+        data.aitken.start_step();
+        data.quasi_newton.start_step();
+        int again = 0;  // the retry's lattice solves (the step's count goes on below)
+        converged = sub_iterate(model, data, dt, step, t1, model.coupling.method, model.coupling.max_iterations,
+                                again, delta);
+        k += again;
+      }
       data.last_iterations = k;
       data.last_change = delta;
       if (!converged)
         throw NumericalFailure("strong coupling did not converge in " + std::to_string(k) +
                                    " sub-iterations (structure change " + significant(delta) +
                                    " rad, tolerance " + significant(model.coupling.tolerance) + ")" +
+                                   (retry > 0 ? "; tried " + std::to_string(retry + 1) +
+                                                    " times, the structure finer each time"
+                                              : std::string()) +
                                    (model.coupling.method == CouplingMethod::Aitken
                                         ? std::string("; a light wing may converge with numerics.coupling = "
                                                       "\"iqn_ils\" (docs/fsi.md, \"Coupling\")")

@@ -115,6 +115,9 @@ struct FsiModel {
 /// and the reused steps' pairs stay far below it, and the FEM's interface (every node's
 /// position and velocity) would otherwise size the store by its tens of thousands of DOFs.
 inline constexpr int kMaxQuasiNewtonPairs = 100;
+/// How often a step whose coupling stalled is tried again with a finer structure
+/// (StructureData::refine_after_stall: the FEM's step in twice as many pieces each time).
+inline constexpr int kStallRetries = 2;
 
 struct FsiData {
   explicit FsiData(const FsiModel& model);
@@ -137,6 +140,7 @@ struct FsiData {
   double last_change = 0.0;  ///< convergence measure at the end of the last step [rad]
   double first_change = 0.0;  ///< the last step's change after its first sub-iteration [rad]
   long accuracy_solves = 0;   ///< structure solves repeated at full accuracy (see above)
+  long stall_retries = 0;     ///< steps whose coupling was tried again after a stall (coupled_step)
   long total_iterations = 0;
 
   /// Time of the accepted state [s].

@@ -242,6 +242,13 @@ void FemStructureData::relax(double omega) {
   iterate_v_ += omega * (trial_v_ - iterate_v_);
 }
 
+bool FemStructureData::refine_after_stall() {
+  if (pieces_ >= kMaxFemStepPieces) return false;
+  pieces_ *= 2;
+  failed_this_step_ = true;  // kept for kFemStepsBeforeJoining steps, as after a failed solve
+  return true;
+}
+
 void FemStructureData::accept() {
   iterating_ = false;
   earliest_v_ = earlier_v_;

@@ -131,6 +131,7 @@ class FemStructureData : public StructureData {
   void set_iterate(const Eigen::VectorXd& x) override;
   void relax(double omega) override;
   void accept() override;
+  bool refine_after_stall() override;
   int interface_size() const override { return 3 * model_.corotational.num_nodes(); }
   long split_steps() const override { return split_steps_; }
   int max_step_pieces() const override { return max_pieces_; }

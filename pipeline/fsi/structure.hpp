@@ -168,6 +168,12 @@ class StructureData {
   /// Length of residual() (the size of the relaxation's secant vectors).
   virtual int interface_size() const = 0;
 
+  /// \brief A step whose coupling did not converge: the structure may solve its steps more
+  /// finely from now on (a different, closer answer to the same loads), and the coupled step
+  /// then tries the step's coupling once more. Returns whether it did; false (the default):
+  /// nothing finer to offer, the step fails.
+  virtual bool refine_after_stall() { return false; }
+
   /// Steps whose structural solve had to be split into smaller pieces since the start
   /// (step halving), and the most pieces one step needed (1: none split).
   virtual long split_steps() const = 0;

@@ -12,6 +12,7 @@
 
 #include "fsi/plate_wing_fixtures.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
+#include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/fsi/structure.hpp"
 
 namespace {
@@ -29,6 +30,7 @@ class HeavePlateModel : public fsi::StructureModel {
   double mass = 0.0;       // [kg]
   double stiffness = 0.0;  // [N/m]
   double length = 0.040;   // scale of the change measure [m]
+  int stall_refinements = -1;  // ≥ 0: a StallingHeavePlateData that may refine this often
   int num_dofs() const override { return 1; }
   int surface_nodes() const override { return static_cast<int>(nodes_wing.cols()); }
   const mbd::BaseMotion& base() const override { return motion; }
@@ -89,7 +91,32 @@ class HeavePlateData : public fsi::StructureData {
   const HeavePlateModel& m_;
 };
 
+// The heave plate whose answer jumps by ±10 µm from one solve to the next (a structure
+// with two shapes for the same loads, as a wrinkling film's FEM), so no relaxation converges
+// its coupling, until refine_after_stall() (allowed `left` times) takes the jumps away.
+class StallingHeavePlateData : public HeavePlateData {
+ public:
+  StallingHeavePlateData(const HeavePlateModel& m, int left) : HeavePlateData(m), left_(left) {}
+  void solve(double dt) override {
+    HeavePlateData::solve(dt);
+    if (!refined) trial.h += (++solves % 2 == 0 ? 1e-5 : -1e-5);
+    pose = trial;
+  }
+  bool refine_after_stall() override {
+    if (left_ == 0) return false;
+    --left_;
+    refined = true;
+    return true;
+  }
+  bool refined = false;
+  long solves = 0;
+
+ private:
+  int left_;
+};
+
 std::unique_ptr<fsi::StructureData> HeavePlateModel::make_data() const {
+  if (stall_refinements >= 0) return std::make_unique<StallingHeavePlateData>(*this, stall_refinements);
   return std::make_unique<HeavePlateData>(*this);
 }
 
@@ -100,7 +127,8 @@ struct HeaveRun {
 };
 
 // One cycle of the eq. 8 plate on the spring (in the second the plate meets its own wake); mass in kg, stiffness in N/m.
-HeaveRun heave_run(double mass, double stiffness, fsi::CouplingMethod method, double tolerance) {
+HeaveRun heave_run(double mass, double stiffness, fsi::CouplingMethod method, double tolerance,
+                   int stall_refinements = -1, long* stall_retries = nullptr) {
   const int nc = 3, ns = 6, steps = 40;
   const auto grid = test::plate_grid(nc, ns);
   auto structure = std::make_shared<HeavePlateModel>();
@@ -109,6 +137,7 @@ HeaveRun heave_run(double mass, double stiffness, fsi::CouplingMethod method, do
   structure->motion = mbd::make_base_motion(kin);
   structure->mass = mass;
   structure->stiffness = stiffness;
+  structure->stall_refinements = stall_refinements;
   fsi::FsiModel m;
   m.structure = structure;
   m.frequency = kin.frequency;
@@ -137,6 +166,7 @@ HeaveRun heave_run(double mass, double stiffness, fsi::CouplingMethod method, do
     fsi::shed_wake(m, d);
   }
   r.iterations = static_cast<double>(d.total_iterations) / steps;
+  if (stall_retries) *stall_retries = d.stall_retries;
   return r;
 }
 
@@ -159,6 +189,30 @@ TEST(FsiStructureInterface, AStructureOutsideMbdIsCoupledToItsFixedPoint) {
   const HeaveRun iqn = heave_run(mass, stiffness, fsi::CouplingMethod::InterfaceQuasiNewton, tolerance);
   EXPECT_LE(iqn.worst_surface_gap, tolerance * 0.040 * (1.0 + 1e-9));
   for (std::size_t n = 0; n < aitken.h.size(); ++n) EXPECT_NEAR(iqn.h[n], aitken.h[n], 1e-4 * peak) << "step " << n;
+}
+
+TEST(FsiStructureInterface, AStalledCouplingIsTriedAgainWithAFinerStructure) {
+  // A structure whose answer jumps between two shapes (±10 µm, 2.5e-4 spans against the
+  // tolerance of 1e-7) stalls the coupling of the first step: with a refinement to offer
+  // (StructureData::refine_after_stall, the FEM's step in twice as many pieces) the step is
+  // tried once more from its predictor and the run goes on, its states those of the structure
+  // without jumps (within the tolerance's reach, as in the test above); with none the step
+  // fails naming the stall.
+  const double mass = 1e-5, stiffness = mass * std::pow(2.0 * std::numbers::pi * 200.0, 2);
+  const double tolerance = 1e-7;
+  const HeaveRun plain = heave_run(mass, stiffness, fsi::CouplingMethod::Aitken, tolerance);
+  long retries = 0;
+  const HeaveRun refined = heave_run(mass, stiffness, fsi::CouplingMethod::Aitken, tolerance, 1, &retries);
+  EXPECT_EQ(retries, 1);
+  double peak = 0.0;
+  for (double h : plain.h) peak = std::max(peak, std::abs(h));
+  for (std::size_t n = 0; n < plain.h.size(); ++n) EXPECT_NEAR(refined.h[n], plain.h[n], 1e-4 * peak) << "step " << n;
+  try {
+    heave_run(mass, stiffness, fsi::CouplingMethod::Aitken, tolerance, 0);
+    ADD_FAILURE() << "a stall with nothing finer to offer must fail";
+  } catch (const NumericalFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("strong coupling did not converge"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
