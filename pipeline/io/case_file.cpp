@@ -110,7 +110,7 @@ Case::Structure read_structure(const TomlTable& root) {
     s.fem_stiffness_damping = t.get_double("stiffness_damping_s", 0.0, Bounds::closed(0.0, 1.0));
     s.fem_linearised_geometric_terms =
         t.get_choice("newton_geometric_terms", {"linearised", "current"}, "linearised") == "linearised";
-    s.fem_matrix_per_piece = t.get_bool("newton_matrix_per_piece", false);
+    s.fem_matrix_per_piece = t.get_bool("newton_matrix_per_piece", true);
   }
   if (s.kind != Kind::Fem)
     for (const char* key : {"element_size_mm", "vein_element_size_mm", "stiffness_damping_s", "newton_geometric_terms",

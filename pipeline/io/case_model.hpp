@@ -102,8 +102,8 @@ struct Case {
     /// docs/fem.md, "The geometric terms from the corrections taken linearly").
     bool fem_linearised_geometric_terms = true;
     /// A kept Newton matrix for each piece of a split FEM step (`newton_matrix_per_piece`;
-    /// fem::DynamicsOptions::matrix_per_piece): faster for film wings, off by default.
-    bool fem_matrix_per_piece = false;
+    /// fem::DynamicsOptions::matrix_per_piece): faster for film wings, on by default.
+    bool fem_matrix_per_piece = true;
   } structure;
 
   struct Numerics {

@@ -137,7 +137,9 @@ void case_fields(Canonical& out, const Case& c) {
     // Only when not the default: earlier fingerprints stay (the answer is the same to
     // Newton's tolerance either way, but not to the last digit).
     if (!c.structure.fem_linearised_geometric_terms) out.line("structure.newton_geometric_terms", 1);
-    if (c.structure.fem_matrix_per_piece) out.line("structure.newton_matrix_per_piece", 1);
+    // newton_matrix_per_piece: in the hash when on until 30 Nov (then not the default), when
+    // off since (the default).
+    if (!c.structure.fem_matrix_per_piece) out.line("structure.newton_matrix_per_piece", 0);
   }
   const Case::Numerics& n = c.numerics;
   out.line("numerics.steps_per_cycle", n.steps_per_cycle);

@@ -9,6 +9,7 @@
 #include "mbd/chain_model.hpp"
 #include "mbd/wing_kinematics.hpp"
 #include "uvlm/planform_grid.hpp"
+#include "pipeline/fsi/coupled_step.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
 #include <vector>
@@ -80,6 +81,21 @@ inline mbd::ChainModel rigid_plate_chain() {
   c.bodies = {b};
   c.joints = {mbd::ChainJoint{}};
   return c;
+}
+
+// The plate's coupled model at eq. 8's 26.1 Hz: its nc × ns lattice (cores of 0.2 chord),
+// a wake for `steps` steps, the coupling to τ = 1e-8.
+inline fsi::FsiModel plate_fsi_model(std::shared_ptr<const fsi::StructureModel> structure, int nc, int ns,
+                                     int steps) {
+  fsi::FsiModel m;
+  m.structure = std::move(structure);
+  m.frequency = 26.1;
+  m.lattice.chordwise = nc;
+  m.lattice.spanwise = ns;
+  m.lattice.core.radius = 0.2 * 0.010;
+  m.lattice.wake_capacity = steps;
+  m.coupling.tolerance = 1e-8;
+  return m;
 }
 
 }  // namespace flapsim::test

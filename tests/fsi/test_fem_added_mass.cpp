@@ -37,14 +37,7 @@ std::shared_ptr<fsi::FemStructureModel> am_plate(double thickness, double densit
 }
 
 fsi::FsiModel am_fsi_model(std::shared_ptr<const fsi::StructureModel> structure, bool added_mass) {
-  fsi::FsiModel m;
-  m.structure = std::move(structure);
-  m.frequency = 26.1;
-  m.lattice.chordwise = kAmChordwise;
-  m.lattice.spanwise = kAmSpanwise;
-  m.lattice.core.radius = 0.2 * 0.010;
-  m.lattice.wake_capacity = kAmSteps;
-  m.coupling.tolerance = 1e-8;
+  fsi::FsiModel m = test::plate_fsi_model(std::move(structure), kAmChordwise, kAmSpanwise, kAmSteps);
   m.coupling.added_mass = added_mass;
   return m;
 }

@@ -51,15 +51,7 @@ std::shared_ptr<fsi::FemStructureModel> fem_plate(double thickness, double young
 }
 
 fsi::FsiModel fsi_model(std::shared_ptr<const fsi::StructureModel> structure) {
-  fsi::FsiModel m;
-  m.structure = std::move(structure);
-  m.frequency = 26.1;
-  m.lattice.chordwise = kChordwise;
-  m.lattice.spanwise = kSpanwise;
-  m.lattice.core.radius = 0.2 * 0.010;
-  m.lattice.wake_capacity = kSteps;
-  m.coupling.tolerance = 1e-8;
-  return m;
+  return test::plate_fsi_model(std::move(structure), kChordwise, kSpanwise, kSteps);
 }
 
 std::vector<double> lift_history(const fsi::FsiModel& m, double* iterations = nullptr) {

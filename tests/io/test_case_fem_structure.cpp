@@ -42,7 +42,7 @@ TEST(CaseFemStructure, KeysAreReadInSiUnits) {
   EXPECT_EQ(d.structure.fem_vein_element_size, 0.0);
   EXPECT_EQ(d.structure.fem_stiffness_damping, 0.0);
   EXPECT_TRUE(d.structure.fem_linearised_geometric_terms);  // "linearised"
-  EXPECT_FALSE(d.structure.fem_matrix_per_piece);           // one kept matrix
+  EXPECT_TRUE(d.structure.fem_matrix_per_piece);            // a kept matrix for each piece
 }
 
 TEST(CaseFemStructure, WhatBelongsToTheChainIsRefusedAtItsLineAndKey) {
