@@ -10,8 +10,10 @@
 #include "mbd/wing_kinematics.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
+#include "pipeline/fsi/fem_structure.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace flapsim::test {
@@ -96,6 +98,25 @@ inline fsi::FsiModel plate_fsi_model(std::shared_ptr<const fsi::StructureModel> 
   m.lattice.wake_capacity = steps;
   m.coupling.tolerance = 1e-8;
   return m;
+}
+
+// `steps` coupled steps of dt [s] of an FEM run from d's state: each step's lift [N] appended
+// to `lift`, the FEM's node positions [m] to `x` (3 × nodes columns a step). Returns the
+// largest coupling change of the steps.
+inline double fly_fem_plate(const fsi::FsiModel& m, fsi::FsiData& d, int steps, double dt, std::vector<double>& lift,
+                            Eigen::Matrix3Xd& x) {
+  double worst = 0.0;
+  for (int n = 0; n < steps; ++n) {
+    fsi::coupled_step(m, d, dt);
+    lift.push_back(d.lattice->loads.total_force.z());
+    fsi::shed_wake(m, d);
+    const auto& s = static_cast<const fsi::FemStructureData&>(*d.structure);
+    const Eigen::Index nodes = s.trial_positions().cols();
+    x.conservativeResize(3, x.cols() + nodes);
+    x.rightCols(nodes) = s.trial_positions();
+    worst = std::max(worst, d.last_change);
+  }
+  return worst;
 }
 
 }  // namespace flapsim::test

@@ -100,15 +100,7 @@ TEST(FemAddedMass, TheAddedMassKeepsTheCoupledAnswerInFewerSubIterations) {
     const fsi::FsiModel m = am_fsi_model(am_plate(2e-4, 100.0), added_mass);
     fsi::FsiData d(m);
     fsi::initialize(m, d, 0.0);
-    for (int n = 0; n < kRun; ++n) {
-      fsi::coupled_step(m, d, dt);
-      lift.push_back(d.lattice->loads.total_force.z());
-      fsi::shed_wake(m, d);
-      const auto& s = static_cast<const fsi::FemStructureData&>(*d.structure);
-      x.conservativeResize(3, s.trial_positions().cols() * (n + 1));
-      x.rightCols(s.trial_positions().cols()) = s.trial_positions();
-      EXPECT_LE(d.last_change, m.coupling.tolerance);
-    }
+    EXPECT_LE(test::fly_fem_plate(m, d, kRun, dt, lift, x), m.coupling.tolerance);
     const auto& s = static_cast<const fsi::FemStructureData&>(*d.structure);
     EXPECT_EQ(s.max_step_pieces(), 1);
     EXPECT_EQ(s.added_mass().nodes.empty(), !added_mass);

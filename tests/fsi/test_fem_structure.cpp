@@ -192,16 +192,7 @@ TEST(FsiFemStructure, LooseIntermediateSolvesKeepTheCoupledAnswer) {
     m.coupling.loose_intermediate_solves = loose;
     fsi::FsiData d(m);
     fsi::initialize(m, d, 0.0);
-    double worst = 0.0;
-    for (int n = 0; n < kRun; ++n) {
-      fsi::coupled_step(m, d, dt);
-      lift.push_back(d.lattice->loads.total_force.z());
-      fsi::shed_wake(m, d);
-      const auto& s = static_cast<const fsi::FemStructureData&>(*d.structure);
-      x.conservativeResize(3, s.trial_positions().cols() * (n + 1));
-      x.rightCols(s.trial_positions().cols()) = s.trial_positions();
-      worst = std::max(worst, d.last_change);
-    }
+    const double worst = test::fly_fem_plate(m, d, kRun, dt, lift, x);
     newton = static_cast<const fsi::FemStructureData&>(*d.structure).dynamics().counters().iterations;
     EXPECT_LE(worst, m.coupling.tolerance);
     return d.accuracy_solves;
