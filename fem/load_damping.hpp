@@ -15,7 +15,7 @@
 namespace flapsim::fem {
 
 struct NodalLoadDamping {
-  std::vector<int> nodes;               ///< the nodes it acts on
+  std::vector<int> nodes;               ///< the nodes it acts on, each once
   std::vector<Eigen::Matrix3d> blocks;  ///< D of each node, ground axes [N s/m]
   /// Velocities the load is measured from, 3 × the model's nodes [m/s] (not owned).
   const Eigen::Matrix3Xd* reference_velocity = nullptr;

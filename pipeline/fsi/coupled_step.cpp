@@ -205,7 +205,7 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
       bool converged = sub_iterate(model, data, dt, step, t1, model.coupling.method,
                                    model.coupling.max_iterations, k, delta);
       // A stalled coupling, once more from the predictor with a finer structure
-      // (StructureData::refine_after_stall; docs/fsi.md, "Failures").
+      // (StructureData::refine_after_stall; docs/fsi.md, "A stalled coupling, tried again").
       int retry = 0;
       for (; !converged && retry < kStallRetries && s.refine_after_stall(); ++retry) {
         ++data.stall_retries;
