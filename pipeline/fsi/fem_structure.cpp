@@ -170,9 +170,7 @@ bool FemStructureData::solve_in_pieces(double dt, int pieces, std::string& failu
 }
 
 const fem::NodalLoadDamping* FemStructureData::added_mass_load(double t, const Eigen::Matrix3Xd& reference) {
-  const Eigen::Matrix3d R = model_.base_motion(t).rotation;
-  damping_.nodes = added_mass_.nodes;
-  damping_.blocks.resize(added_mass_.blocks.size());
+  const Eigen::Matrix3d R = model_.base_motion(t).rotation;  // the nodes set by linearise_panel_loads
   for (std::size_t i = 0; i < added_mass_.blocks.size(); ++i)
     damping_.blocks[i] = R * added_mass_.blocks[i] * R.transpose();
   damping_.reference_velocity = &reference;
@@ -184,6 +182,8 @@ void FemStructureData::linearise_panel_loads(PanelLoadResponse& response) {
   if (model_.attachment.nodes.empty() || !model_.lumped_added_mass || added_mass_dropped_) return;
   added_mass_ = lump_added_mass(model_.attachment, model_.structural.mesh, response,
                                 model_.base_motion(dynamics_->time).rotation, model_.surface_nodes());
+  damping_.nodes = added_mass_.nodes;
+  damping_.blocks.resize(added_mass_.blocks.size());
 }
 
 void FemStructureData::solve(double dt) {

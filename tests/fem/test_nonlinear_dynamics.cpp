@@ -236,7 +236,7 @@ TEST(NonlinearDynamics, ALoadDampingIsTheLoadItStandsFor) {
   const double h = 1.0 / (f1 * 50);
   Eigen::VectorXd load = zero;
   double apart = 0.0, motion = 0.0;
-  int damped_iterations = 0;
+  int damped_iterations = 0, loaded_iterations = 0;
   for (int k = 0; k < 10; ++k) {
     const StepResult r = step(dm, damped, h, zero, nullptr, StepStart::Predictor, 1.0, &damping);
     ASSERT_TRUE(r.converged) << r.failure;
@@ -247,7 +247,9 @@ TEST(NonlinearDynamics, ALoadDampingIsTheLoadItStandsFor) {
       load.segment<3>(dof_index(n, UX)) =
           -damping.scale * damping.blocks[i] * (damped.velocity.segment<3>(dof_index(n, UX)) - v_ref.col(n));
     }
-    ASSERT_TRUE(step(dm, loaded, h, load, nullptr).converged);
+    const StepResult l = step(dm, loaded, h, load, nullptr);
+    ASSERT_TRUE(l.converged) << l.failure;
+    loaded_iterations += l.iterations;
     for (int n = 0; n < cm.num_nodes(); ++n) {
       apart = std::max(apart, (damped.state.position[static_cast<std::size_t>(n)] -
                                loaded.state.position[static_cast<std::size_t>(n)]).norm());
@@ -255,10 +257,13 @@ TEST(NonlinearDynamics, ALoadDampingIsTheLoadItStandsFor) {
                                  cm.reference_positions[static_cast<std::size_t>(n)]).norm());
     }
   }
-  std::printf("  positions %.2e of the motion apart; %d Newton iterations in 10 damped steps\n", apart / motion,
-              damped_iterations);
+  std::printf("  positions %.2e of the motion apart; Newton iterations in 10 steps: %d damped, %d loaded\n",
+              apart / motion, damped_iterations, loaded_iterations);
   EXPECT_LT(apart, 1e-9 * motion);
-  EXPECT_LE(damped_iterations, 40);
+  // The damping's γ/(βh) D (here about 18 times c_M M) in the Newton matrix: at most one iteration
+  // a step more than the same steps with the load given (without it the kept matrix's
+  // corrections diverge: the test failed at the damped step's convergence).
+  EXPECT_LE(damped_iterations, loaded_iterations + 10);
 }
 
 }  // namespace

@@ -104,4 +104,37 @@ TEST(FemStepHalving, AStepThatFailsInTheMostPiecesStopsNamingThem) {
   }
 }
 
+TEST(FemStepHalving, AStalledStepIsSolvedInTwiceThePiecesUpToTheMost) {
+  // StructureData::refine_after_stall (docs/fsi.md, "A stalled coupling, tried again"): the
+  // FEM solves the step in twice as many pieces each time it is asked, up to kMaxFemStepPieces
+  // (1 → 256: 8 times), then has nothing finer. The step then taken in 256 pieces gives the
+  // plate of a wingbeat of 20 × 256 steps: here its first step against 256 whole steps of
+  // Δt/256, to Newton's tolerance (1e-9 of the span).
+  const auto model = halving_plate(25);
+  auto data = model->make_data();
+  data->initialize(0.0);
+  int refinements = 0;
+  while (data->refine_after_stall()) ++refinements;
+  EXPECT_EQ(refinements, 8);
+  const double dt = 1.0 / (kHalvingFrequency * 20);
+  data->set_external_loads(dt);
+  data->set_solve_accuracy(1.0);
+  data->solve(dt);
+  data->accept();
+  EXPECT_EQ(data->max_step_pieces(), fsi::kMaxFemStepPieces);
+  EXPECT_EQ(data->split_steps(), 1);
+  auto fine = model->make_data();
+  fine->initialize(0.0);
+  for (int k = 0; k < fsi::kMaxFemStepPieces; ++k) {
+    fine->set_external_loads(fine->time() + dt / fsi::kMaxFemStepPieces);
+    fine->set_solve_accuracy(1.0);
+    fine->solve(dt / fsi::kMaxFemStepPieces);
+    fine->accept();
+  }
+  const double apart = (static_cast<const fsi::FemStructureData&>(*data).trial_positions() -
+                        static_cast<const fsi::FemStructureData&>(*fine).trial_positions())
+                           .lpNorm<Eigen::Infinity>();
+  EXPECT_LT(apart, 1e-9 * kHalvingSpan) << apart;
+}
+
 }  // namespace
