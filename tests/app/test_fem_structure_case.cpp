@@ -88,4 +88,45 @@ TEST(FemStructureCase, AStiffFemPlateFliesAndIsDrivenAsTheRigidPlate) {
   EXPECT_NE(test::read_text(dir / "fem" / "run.pvsm").find("fem.pvd"), std::string::npos);
 }
 
+// The case's element sizes meet the wing file's rules (wings/mesh_budget.hpp, wing_file.cpp):
+// a typo of 0.001 for 1 mm asked gmsh for ~10⁹ triangles (minutes and 14 GB before this
+// check) and is refused at the case's line and key, exit status 2, before any meshing.
+TEST(FemStructureCase, AMeshSizeTheWingFileWouldRefuseIsRefusedAtTheCasesLineAndKey) {
+  test::ScratchDir dir("fem_structure_mesh_sizes");
+  // The stiff plate with a vein along its leading edge (the veins' size counts along veins).
+  std::ofstream(dir / "wing.toml") << test::kStiffPlateWing
+                                   << "[[veins]]\nname = \"edge\"\nshape = \"solid_circle\"\n"
+                                      "points = [[2.0, 0.0], [2.0, 40.0]]\ndiameter = 0.5\nmaterial = \"stiff\"\n";
+  struct Bad {
+    std::string keys;  // after kind = "fem" (line 9 of plate_case)
+    int line;
+    std::string key, says;
+  };
+  const Bad cases[] = {
+      {"element_size_mm = 0.001\n", 10, "structure.element_size_mm", "more than the budget"},
+      {"element_size_mm = 2.0\nvein_element_size_mm = 0.001\n", 11, "structure.vein_element_size_mm",
+       "more than the budget"},
+      {"element_size_mm = 1.0\nvein_element_size_mm = 2.0\n", 11, "structure.vein_element_size_mm",
+       "must not exceed the membrane's"},
+      {"vein_element_size_mm = 3.0\n", 10, "structure.vein_element_size_mm", "must not exceed the membrane's"},
+      {"element_size_mm = 30.0\n", 10, "structure.element_size_mm", "half the span"},
+  };
+  for (const Bad& b : cases) {
+    std::string text = plate_case("fem");
+    text.insert(text.find("kind = \"fem\"\n") + 13, b.keys);
+    std::ofstream(dir / "case.toml") << text;
+    const test::FlapsimOutcome out = test::run_flapsim_capturing_stderr(dir.path(), "check " + (dir / "case.toml").string());
+    EXPECT_EQ(out.status, 2) << b.keys << out.err;
+    const std::string where = "case.toml:" + std::to_string(b.line) + ": key '" + b.key + "'";
+    EXPECT_NE(out.err.find(where), std::string::npos) << b.keys << out.err;
+    EXPECT_NE(out.err.find(b.says), std::string::npos) << b.keys << out.err;
+  }
+  // A size within the rules runs (the plate's 2.5 mm halved).
+  std::string fine = plate_case("fem");
+  fine.insert(fine.find("kind = \"fem\"\n") + 13, "element_size_mm = 1.25\n");
+  std::ofstream(dir / "case.toml") << fine;
+  EXPECT_EQ(test::run_flapsim_capturing_stderr(dir.path(), "check " + (dir / "case.toml").string()).status, 0);
+}
+
+
 }  // namespace
