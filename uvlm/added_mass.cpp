@@ -36,8 +36,8 @@ void added_mass_force_change(const VortexLatticeModel& m, const VortexLatticeDat
         s.gmres.solve(d.influence, d.lu, s.rhs, s.dgamma, m.iterative_tolerance, m.iterative_max_iterations);
     if (!r.converged) s.dgamma = d.lu.solve(s.rhs);  // the preconditioner's answer: approximate
   }
-  // ∂Γ/∂t's factor on the current Γ (aero_loads.cpp gamma_rate: BDF2 from the second step).
-  const double rate = (d.accepted_steps >= 2 ? 1.5 : 1.0) / d.dt;
+  // ∂Γ/∂t's factor on the current Γ (load_terms.hpp gamma_rate).
+  const double rate = detail::gamma_rate_factor(m, d);
   const auto dgamma = [&](int i, int j) {
     return (i < 0 || i >= nc || j < 0 || j >= ns) ? 0.0 : s.dgamma(m.panel(i, j));
   };

@@ -19,10 +19,14 @@ Eigen::Vector3d ring_node_velocity(const VortexLatticeModel& m, const Eigen::Mat
   return V.col(m.node(q, j)) + 0.25 * (V.col(m.node(q, j)) - V.col(m.node(q - 1, j)));
 }
 
-double gamma_rate(const VortexLatticeData& d, int k) {
-  if (d.accepted_steps >= 2)
+double gamma_rate(const VortexLatticeModel& m, const VortexLatticeData& d, int k) {
+  if (d.accepted_steps >= 2 && !m.first_order_circulation_rate)
     return (3.0 * d.gamma(k) - 4.0 * d.gamma_accepted(k) + d.gamma_accepted_before(k)) / (2.0 * d.dt);
   return (d.gamma(k) - d.gamma_accepted(k)) / d.dt;
+}
+
+double gamma_rate_factor(const VortexLatticeModel& m, const VortexLatticeData& d) {
+  return (d.accepted_steps >= 2 && !m.first_order_circulation_rate ? 1.5 : 1.0) / d.dt;
 }
 
 void set_points_of_action(const VortexLatticeModel& m, VortexLatticeData& d) {
@@ -129,7 +133,7 @@ void compute_bernoulli_loads(const VortexLatticeModel& m, VortexLatticeData& d) 
           detail::panel_gamma_gradient(m, d, i, j, [&](int a, int b) { return ring_gamma(m, d, a, b); });
       d.panel_air_velocity.col(k) = vrel;
       d.panel_gamma_gradient.col(k) = grad;
-      const double dp = d.rho * (vrel.dot(grad) + detail::gamma_rate(d, k));
+      const double dp = d.rho * (vrel.dot(grad) + detail::gamma_rate(m, d, k));
       d.loads.force.col(k) = dp * d.area(k) * n + d.loads.leading_edge_force.col(k);
     }
   detail::set_points_of_action(m, d);

@@ -50,8 +50,11 @@ inline Eigen::Vector3d ring_node_velocity(const VortexLatticeModel& m, const Vor
 }
 
 /// ∂Γ/∂t of panel k following the panel [m²/s²]: BDF2 over the last two accepted steps,
-/// backward Euler after the first one, and Γ/Δt at the first step (impulsive start).
-double gamma_rate(const VortexLatticeData& d, int k);
+/// backward Euler after the first one (and always with m.first_order_circulation_rate), and
+/// Γ/Δt at the first step (impulsive start).
+double gamma_rate(const VortexLatticeModel& m, const VortexLatticeData& d, int k);
+/// The factor of the current Γ in gamma_rate [1/s] (3/2Δt for BDF2, 1/Δt for backward Euler).
+double gamma_rate_factor(const VortexLatticeModel& m, const VortexLatticeData& d);
 
 /// Sets loads.point (the panel's quarter-chord point, the midpoint of its ring's leading
 /// segment) and loads.point_velocity for every panel.

@@ -114,6 +114,11 @@ struct VortexLatticeModel {
   /// the loads are computed in double precision; the tree code is double precision. The
   /// leading-edge sheet (LeadingEdge::Shed) is summed with the wake, in the same precision.
   bool single_precision_wake = true;
+  /// ∂Γ/∂t of the pressure by backward Euler at every step (first order) instead of BDF2
+  /// from the third step on: the MAV film wing (25 µm, areal mass about the air's added
+  /// mass) at 160 steps a wingbeat grew a sawtooth of period 2Δt in its lift with BDF2 and
+  /// flew smoothly with it (docs/fsi.md, "Film wings").
+  bool first_order_circulation_rate = false;
   int max_wake_rows = 0;   ///< keep at most this many wake rows (oldest dropped); 0 = keep all
   int wake_capacity = 0;   ///< wake rows the workspace holds (the run's step count, or max_wake_rows)
   /// Rings the leading-edge sheet (LeadingEdge::Shed) holds; 0: wake_capacity + 1. Neither

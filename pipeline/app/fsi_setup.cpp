@@ -90,6 +90,7 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   m.sheet_merge_steps = c.numerics.sheet_merge_steps;
   if (c.numerics.leading_edge == uvlm::LeadingEdge::Shed) m.sheet_core_radius = c.numerics.sheet_core_radius * mean_chord;
   m.single_precision_wake = c.numerics.wake_precision == io::WakePrecision::Single;
+  m.first_order_circulation_rate = c.numerics.circulation_rate == io::CirculationRate::Bdf1;
   m.max_wake_rows = c.numerics.wake_max_rows;
   m.wake_capacity = c.numerics.wake_max_rows > 0 ? c.numerics.wake_max_rows : static_cast<int>(steps);  // <= 1e8
   // A shed leading edge's sheet is not shortened with the wake (wake_max_rows).

@@ -27,6 +27,7 @@ namespace flapsim::io {
 
 /// Precision of the wake's direct sums (uvlm::VortexLatticeModel::single_precision_wake).
 enum class WakePrecision { Single, Double };
+enum class CirculationRate { Bdf2, Bdf1 };
 
 /// How a flexible wing's coupling sub-iterations update the chain (fsi::CouplingMethod).
 enum class CouplingMethod { Aitken, InterfaceQuasiNewton };
@@ -138,6 +139,9 @@ struct Case {
     double far_wake_cycles = 0.0;           ///< wake older than this many cycles moves with momentum theory's velocity; 0 = never
     uvlm::WakeSum wake_sum = uvlm::WakeSum::Direct;  ///< wake velocity sum: "direct" | "tree"
     WakePrecision wake_precision = WakePrecision::Single;  ///< the wake's direct sums: "single" | "double"
+    /// ∂Γ/∂t of the pressure: "bdf2" (second order) | "bdf1" (backward Euler;
+    /// uvlm::VortexLatticeModel::first_order_circulation_rate)
+    CirculationRate circulation_rate = CirculationRate::Bdf2;
     double tree_tolerance = 1e-4;           ///< relative error of the tree code's velocities
     CouplingMethod coupling = CouplingMethod::Aitken;  ///< sub-iteration update: "aitken" | "iqn_ils"
     int max_coupling_iterations = 50;       ///< strong-coupling sub-iterations per step
@@ -198,6 +202,8 @@ inline constexpr std::array<std::pair<std::string_view, uvlm::WakeSum>, 2> kWake
     {{"direct", uvlm::WakeSum::Direct}, {"tree", uvlm::WakeSum::Tree}}};
 inline constexpr std::array<std::pair<std::string_view, WakePrecision>, 2> kWakePrecisionNames{
     {{"single", WakePrecision::Single}, {"double", WakePrecision::Double}}};
+inline constexpr std::array<std::pair<std::string_view, CirculationRate>, 2> kCirculationRateNames{
+    {{"bdf2", CirculationRate::Bdf2}, {"bdf1", CirculationRate::Bdf1}}};
 inline constexpr std::array<std::pair<std::string_view, CouplingMethod>, 2> kCouplingMethodNames{
     {{"aitken", CouplingMethod::Aitken}, {"iqn_ils", CouplingMethod::InterfaceQuasiNewton}}};
 inline constexpr std::array<std::pair<std::string_view, mbd::LoadFrame>, 2> kLoadFrameNames{

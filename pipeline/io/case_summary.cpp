@@ -75,9 +75,10 @@ std::string describe_case(const Case& c) {
   s += line("  panels                 %d chordwise x %d spanwise (%s x %s spacing)", n.chordwise_panels,
             n.spanwise_panels, std::string(wings::choice_name(kSpacingNames, n.chordwise_spacing)).c_str(),
             std::string(wings::choice_name(kSpacingNames, n.spanwise_spacing)).c_str());
-  s += line("  loads                  %s, leading edge %s",
+  s += line("  loads                  %s, leading edge %s%s",
             std::string(wings::choice_name(kLoadMethodNames, n.load_method)).c_str(),
-            std::string(wings::choice_name(kLeadingEdgeNames, n.leading_edge)).c_str());
+            std::string(wings::choice_name(kLeadingEdgeNames, n.leading_edge)).c_str(),
+            n.circulation_rate == CirculationRate::Bdf1 ? ", dGamma/dt first order (bdf1)" : "");
   if (n.leading_edge == uvlm::LeadingEdge::Shed)
     s += line("  critical LESP          %.4g, sheet's core %.4g mean chords, its rings merged from %s", n.lesp_critical,
               n.sheet_core_radius > 0.0 ? n.sheet_core_radius : n.core_radius,

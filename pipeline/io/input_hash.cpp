@@ -14,7 +14,7 @@ namespace flapsim::io {
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages; they change no result.)
-static_assert(sizeof(Case) == 1464, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1472, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
@@ -162,6 +162,8 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.free_wake", n.free_wake);
   out.line("numerics.core_growth", n.core_growth);
   out.line("numerics.wake_precision", static_cast<int>(n.wake_precision));
+  if (n.circulation_rate != CirculationRate::Bdf2)  // (only when set: the runs before the key keep their hash)
+    out.line("numerics.circulation_rate", static_cast<int>(n.circulation_rate));
   out.line("numerics.core_growth_a1", n.core_growth_a1);
   out.line("numerics.kinematic_viscosity", n.kinematic_viscosity);
   out.line("numerics.near_wing_core", n.near_wing_core);

@@ -280,6 +280,16 @@ TEST(CaseFile, WakePrecisionKey) {
   EXPECT_EQ(e.line(), 9);
 }
 
+TEST(CaseFile, CirculationRateKey) {
+  // docs/case_file.md: `circulation_rate` = "bdf2" (default) | "bdf1", the pressure's ∂Γ/∂t.
+  EXPECT_EQ(case_from_text(kHead).numerics.circulation_rate, p::CirculationRate::Bdf2);
+  const p::Case c = case_from_text(kHead + "[numerics]\ncirculation_rate = \"bdf1\"\n");
+  EXPECT_EQ(c.numerics.circulation_rate, p::CirculationRate::Bdf1);
+  const auto e = error_of(kHead + "[numerics]\ncirculation_rate = \"bdf3\"\n");  // line 9
+  EXPECT_EQ(e.key(), "numerics.circulation_rate");
+  EXPECT_EQ(e.line(), 9);
+}
+
 TEST(CaseFile, CouplingKey) {
   // docs/case_file.md: `coupling` = "aitken" (default) | "iqn_ils" (docs/fsi.md, "Coupling").
   EXPECT_EQ(case_from_text(kHead).numerics.coupling, p::CouplingMethod::Aitken);

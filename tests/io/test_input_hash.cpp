@@ -56,6 +56,9 @@ TEST(InputHash, FollowsTheInputsNotTheirPlace) {
   io::Case steady = c;
   steady.numerics.steady = true;
   EXPECT_NE(io::input_hash(steady, &w, "", 1.0), h);
+  io::Case first_order = c;  // numerics.circulation_rate = "bdf1": other loads
+  first_order.numerics.circulation_rate = io::CirculationRate::Bdf1;
+  EXPECT_NE(io::input_hash(first_order, &w, "", 1.0), h);
   io::Case plain = c;  // numerics.added_mass off: the same fixed point, other iterates
   plain.numerics.added_mass = false;
   EXPECT_NE(io::input_hash(plain, &w, "", 1.0), h);
