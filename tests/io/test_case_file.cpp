@@ -42,6 +42,18 @@ void expect_numerics_key_refused(const std::string& key, std::initializer_list<c
   }
 }
 
+/// A [numerics] choice key: `fallback` without it, `value` read from `name`, and an unknown
+/// name bad input naming numerics.`key` on line 9.
+template <class T>
+void expect_numerics_choice(const std::string& key, T p::Case::Numerics::*member, T fallback, const std::string& name,
+                            T value) {
+  EXPECT_EQ(case_from_text(kHead).numerics.*member, fallback) << key;
+  EXPECT_EQ(case_from_text(kHead + "[numerics]\n" + key + " = \"" + name + "\"\n").numerics.*member, value) << key;
+  const auto e = error_of(kHead + "[numerics]\n" + key + " = \"no_such_" + name + "\"\n");  // line 9
+  EXPECT_EQ(e.key(), "numerics." + key);
+  EXPECT_EQ(e.line(), 9);
+}
+
 }  // namespace
 
 TEST(CaseFile, HoverCaseIsEquation8) {
@@ -272,32 +284,20 @@ TEST(CaseFile, ShedLeadingEdgesSheetCoreRadius) {
 
 TEST(CaseFile, WakePrecisionKey) {
   // docs/case_file.md: `wake_precision` = "single" (default) | "double" for the wake's direct sums.
-  EXPECT_EQ(case_from_text(kHead).numerics.wake_precision, p::WakePrecision::Single);
-  const p::Case c = case_from_text(kHead + "[numerics]\nwake_precision = \"double\"\n");
-  EXPECT_EQ(c.numerics.wake_precision, p::WakePrecision::Double);
-  const auto e = error_of(kHead + "[numerics]\nwake_precision = \"half\"\n");  // line 9
-  EXPECT_EQ(e.key(), "numerics.wake_precision");
-  EXPECT_EQ(e.line(), 9);
+  expect_numerics_choice("wake_precision", &p::Case::Numerics::wake_precision, p::WakePrecision::Single, "double",
+                         p::WakePrecision::Double);
 }
 
 TEST(CaseFile, CirculationRateKey) {
   // docs/case_file.md: `circulation_rate` = "bdf2" (default) | "bdf1", the pressure's ∂Γ/∂t.
-  EXPECT_EQ(case_from_text(kHead).numerics.circulation_rate, p::CirculationRate::Bdf2);
-  const p::Case c = case_from_text(kHead + "[numerics]\ncirculation_rate = \"bdf1\"\n");
-  EXPECT_EQ(c.numerics.circulation_rate, p::CirculationRate::Bdf1);
-  const auto e = error_of(kHead + "[numerics]\ncirculation_rate = \"bdf3\"\n");  // line 9
-  EXPECT_EQ(e.key(), "numerics.circulation_rate");
-  EXPECT_EQ(e.line(), 9);
+  expect_numerics_choice("circulation_rate", &p::Case::Numerics::circulation_rate, p::CirculationRate::Bdf2, "bdf1",
+                         p::CirculationRate::Bdf1);
 }
 
 TEST(CaseFile, CouplingKey) {
   // docs/case_file.md: `coupling` = "aitken" (default) | "iqn_ils" (docs/fsi.md, "Coupling").
-  EXPECT_EQ(case_from_text(kHead).numerics.coupling, p::CouplingMethod::Aitken);
-  const p::Case c = case_from_text(kHead + "[numerics]\ncoupling = \"iqn_ils\"\n");
-  EXPECT_EQ(c.numerics.coupling, p::CouplingMethod::InterfaceQuasiNewton);
-  const auto e = error_of(kHead + "[numerics]\ncoupling = \"iqn\"\n");  // line 9
-  EXPECT_EQ(e.key(), "numerics.coupling");
-  EXPECT_EQ(e.line(), 9);
+  expect_numerics_choice("coupling", &p::Case::Numerics::coupling, p::CouplingMethod::Aitken, "iqn_ils",
+                         p::CouplingMethod::InterfaceQuasiNewton);
 }
 
 TEST(CaseFile, CouplingReuseStepsKey) {
