@@ -35,8 +35,9 @@ void check_case_mesh_sizes(const io::Case& c, const wings::Wing& wing, const fem
     throw InputError(c.file, c.line_of(k), k, what);
   };
   if (sized.mesh.vein_element_size > sized.mesh.element_size * (1 + 1e-12))
-    fail(vein_given ? "structure.vein_element_size_mm" : "structure.element_size_mm", "the veins' element size (" + millimetres(sized.mesh.vein_element_size) +
-                  ") must not exceed the membrane's (" + millimetres(sized.mesh.element_size) + ")");
+    fail(vein_given ? "structure.vein_element_size_mm" : "structure.element_size_mm",
+         "the veins' element size (" + millimetres(sized.mesh.vein_element_size) + ") must not exceed the membrane's (" +
+             millimetres(sized.mesh.element_size) + ")");
   if (mesh.element_size > 0.5 * wing.span)
     fail("structure.element_size_mm", "must not exceed half the span (" + millimetres(mesh.element_size) +
                                           " against a span of " + millimetres(wing.span) + ")");
