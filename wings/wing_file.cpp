@@ -595,25 +595,18 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
     wing.mesh.element_size = mesh->get_length("element_size", wing.mesh.element_size, Bounds::positive());
     wing.mesh.vein_element_size =
         mesh->get_length("vein_element_size", wing.mesh.element_size, Bounds::positive());
-    if (wing.mesh.vein_element_size > wing.mesh.element_size * (1 + 1e-12))
-      mesh->fail("vein_element_size", "must not exceed element_size");
-    if (wing.mesh.element_size > 0.5 * wing.span)
-      mesh->fail("element_size", "must not exceed half the span (element_size " + fmt(wing.mesh.element_size / root.length_scale()) +
-                                     " " + root.length_unit() + ", span " + fmt(wing.span / root.length_scale()) + " " +
-                                     root.length_unit() + ")");
   }
   if (const auto surface = root.find_table("surface")) wing.surface = read_surface_shape(*surface);
-  // The mesh-size budget (mesh_budget.hpp): refused here, before gmsh runs out of memory.
-  if (const double n = estimated_mesh_elements(wing); n > kMaxMeshElements) {
-    const auto mesh = root.find_table("mesh");
-    const std::string key = mesh && mesh->has("vein_element_size") &&
-                                    wing.mesh.vein_element_size < wing.mesh.element_size
-                                ? "vein_element_size"
-                                : "element_size";
-    const std::string what = "the mesh would have about " + fmt(n) + " elements, more than the budget of " +
-                             fmt(kMaxMeshElements) + "; use a larger mesh." + key;
-    if (mesh) mesh->fail(key, what);
-    root.fail("mesh", what);
+  // The mesh-size rules (mesh_budget.hpp): refused here, before gmsh runs out of memory.
+  const auto mesh = root.find_table("mesh");
+  MeshSizeKeys keys;
+  keys.element_given = mesh && mesh->has("element_size");
+  keys.vein_given = mesh && mesh->has("vein_element_size");
+  keys.length_scale = root.length_scale();
+  keys.unit = root.length_unit();
+  if (const auto problem = mesh_size_problem(wing, keys)) {
+    if (mesh) mesh->fail(problem->key, problem->what);
+    root.fail("mesh", problem->what);
   }
 }
 

@@ -6,50 +6,22 @@
 #include "wings/input_error.hpp"
 #include "wings/mesh_budget.hpp"
 
-#include <cstdio>
-#include <string>
-
 namespace flapsim::app {
-
-namespace {
-
-std::string millimetres(double metres) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g mm", metres * 1e3);
-  return text;
-}
-
-}  // namespace
 
 void check_case_mesh_sizes(const io::Case& c, const wings::Wing& wing, const fem::MeshOptions& mesh) {
   if (mesh.element_size <= 0.0 && mesh.vein_element_size <= 0.0) return;  // the wing file's, checked there
   wings::Wing sized = wing;
   if (mesh.element_size > 0.0) sized.mesh.element_size = mesh.element_size;
   if (mesh.vein_element_size > 0.0) sized.mesh.vein_element_size = mesh.vein_element_size;
-  // The key to blame: the veins' where they are the finer one given (as the wing file does).
-  const bool element_given = c.structure.fem_element_size > 0.0, vein_given = c.structure.fem_vein_element_size > 0.0;
-  const bool blame_vein =
-      !element_given || (vein_given && sized.mesh.vein_element_size < sized.mesh.element_size);
-  const std::string key = blame_vein ? "structure.vein_element_size_mm" : "structure.element_size_mm";
-  const auto fail = [&](const std::string& k, const std::string& what) {
-    throw InputError(c.file, c.line_of(k), k, what);
-  };
-  if (sized.mesh.vein_element_size > sized.mesh.element_size * (1 + 1e-12))
-    fail(vein_given ? "structure.vein_element_size_mm" : "structure.element_size_mm",
-         "the veins' element size (" + millimetres(sized.mesh.vein_element_size) + ") must not exceed the membrane's (" +
-             millimetres(sized.mesh.element_size) + ")");
-  if (mesh.element_size > 0.5 * wing.span)
-    fail("structure.element_size_mm", "must not exceed half the span (" + millimetres(mesh.element_size) +
-                                          " against a span of " + millimetres(wing.span) + ")");
-  // The wing file's budget (wings/mesh_budget.hpp), before gmsh runs out of memory.
-  if (const double n = wings::estimated_mesh_elements(sized); n > wings::kMaxMeshElements) {
-    char what[200];
-    std::snprintf(what, sizeof what,
-                  "the FEM's mesh would have about %.3g elements, more than the budget of %.3g (docs/wing_file.md, "
-                  "\"[mesh]\"); use a larger size",
-                  n, wings::kMaxMeshElements);
-    fail(key, what);
-  }
+  wings::MeshSizeKeys keys;  // the wing file's rules (wings/mesh_budget.hpp), in the case's keys
+  keys.element = "structure.element_size_mm";
+  keys.vein = "structure.vein_element_size_mm";
+  keys.element_given = c.structure.fem_element_size > 0.0;
+  keys.vein_given = c.structure.fem_vein_element_size > 0.0;
+  keys.length_scale = 1e-3;
+  keys.unit = "mm";
+  if (const auto problem = wings::mesh_size_problem(sized, keys))
+    throw InputError(c.file, c.line_of(problem->key), problem->key, problem->what);
 }
 
 std::shared_ptr<const fsi::FemStructureModel> make_fem_structure(const io::Case& c, const wings::Wing& wing,

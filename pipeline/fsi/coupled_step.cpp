@@ -191,15 +191,18 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
     } else {
       // 0. predictor: the previous steps' aerodynamic loads extrapolated to this one,
       // transferred at the accepted pose of the last step (the structure's current pose).
-      s.set_external_loads(t1);
-      if (step > 0) s.add_panel_loads(predicted_loads(model, data));
-      s.set_solve_accuracy(model.coupling.loose_intermediate_solves
-                               ? std::max(1.0, data.first_change / model.coupling.tolerance)
-                               : 1.0);
-      s.solve(dt);
-      s.start_iterate();
-      data.aitken.start_step();
-      data.quasi_newton.start_step();
+      const auto predict = [&](const uvlm::PanelLoads* loads, double accuracy) {
+        s.set_external_loads(t1);
+        if (loads != nullptr) s.add_panel_loads(*loads);
+        s.set_solve_accuracy(accuracy);
+        s.solve(dt);
+        s.start_iterate();
+        data.aitken.start_step();
+        data.quasi_newton.start_step();
+      };
+      predict(step > 0 ? &predicted_loads(model, data) : nullptr,
+              model.coupling.loose_intermediate_solves ? std::max(1.0, data.first_change / model.coupling.tolerance)
+                                                       : 1.0);
       int k = 0;
       double delta = 0.0;
       bool converged = sub_iterate(model, data, dt, step, t1, model.coupling.method,
@@ -211,13 +214,7 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
         ++data.stall_retries;
         uvlm::release_leading_edge_sides(*data.lattice);  // the stalled iterates' sides and sums
         uvlm::sum_old_wake_anew(*data.lattice);
-        s.set_external_loads(t1);
-        if (step > 0) s.add_panel_loads(data.predicted_loads);
-        s.set_solve_accuracy(1.0);
-        s.solve(dt);
-        s.start_iterate();
-        data.aitken.start_step();
-        data.quasi_newton.start_step();
+        predict(step > 0 ? &data.predicted_loads : nullptr, 1.0);
         int again = 0;  // the retry's lattice solves (the step's count goes on below)
         converged = sub_iterate(model, data, dt, step, t1, model.coupling.method, model.coupling.max_iterations,
                                 again, delta);

@@ -107,8 +107,9 @@ TEST(FemStructureCase, AMeshSizeTheWingFileWouldRefuseIsRefusedAtTheCasesLineAnd
       {"element_size_mm = 2.0\nvein_element_size_mm = 0.001\n", 11, "structure.vein_element_size_mm",
        "more than the budget"},
       {"element_size_mm = 1.0\nvein_element_size_mm = 2.0\n", 11, "structure.vein_element_size_mm",
-       "must not exceed the membrane's"},
-      {"vein_element_size_mm = 3.0\n", 10, "structure.vein_element_size_mm", "must not exceed the membrane's"},
+       "must not exceed structure.element_size_mm (2 mm against 1 mm)"},
+      {"vein_element_size_mm = 3.0\n", 10, "structure.vein_element_size_mm",
+       "must not exceed structure.element_size_mm (3 mm against 2.5 mm)"},
       {"element_size_mm = 30.0\n", 10, "structure.element_size_mm", "half the span"},
   };
   for (const Bad& b : cases) {
