@@ -14,12 +14,14 @@
 
 #include <Eigen/CholmodSupport>
 
+#include <chrono>
 #include <exception>
 #include <memory>
 #include <string>
 
 #include "fem/constraints.hpp"
 #include "fem/dense_kernels.hpp"
+#include "fem/separated_cholesky.hpp"
 #include "fem/serial_openmp_regions.hpp"
 #include "fem/wing_fem.hpp"
 #include "mbd/wing_kinematics.hpp"
@@ -201,6 +203,59 @@ void BM_HawkmothNewtonMatrixFactorisation(benchmark::State& state) {
   state.SetLabel(std::string(fem::dense::variant_name()));
 }
 
+// The same Newton matrix factorised in two parts and their separator, one part a thread
+// (fem/separated_cholesky.hpp): factorisation and one solve, then one solve alone.
+void BM_HawkmothSeparatedNewtonMatrix(benchmark::State& state) {
+  const auto s = make_setup("wings/hawkmoth.toml", "cases/hover_flexible.toml", false);
+  const fsi::FemStructureModel& m = *s->structure;
+  fem::NonlinearAssembler assembler(m.corotational, m.dynamics.eliminated);
+  Eigen::VectorXd f(m.corotational.num_dofs());
+  const double h = 1.0 / (s->flight.kinematics.frequency * s->flight.numerics.steps_per_cycle);
+  fem::TangentExtras ex;
+  ex.mass_scale = (1.0 - m.dynamics.alpha_m) / ((1.0 - m.dynamics.alpha_f) * m.dynamics.beta * h * h);
+  assembler.evaluate(fem::reference_state(m.corotational), f, true, ex);
+  fem::SeparatedCholesky split;
+  const auto analysis_start = std::chrono::steady_clock::now();
+  const bool analysed = split.analyse(assembler.tangent());
+  state.counters["analysis_ms"] = 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - analysis_start).count();
+  if (!analysed) {
+    state.SkipWithError("no separator");
+    return;
+  }
+  const Eigen::VectorXd r = Eigen::VectorXd::Ones(assembler.tangent().rows());
+  Eigen::VectorXd x;
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const bool solve_alone = state.range(1) == 1;
+  if (solve_alone && !split.factorize(assembler.tangent())) {
+    state.SkipWithError("not positive definite");
+    return;
+  }
+  for (auto _ : state) {
+    if (!solve_alone && !split.factorize(assembler.tangent())) {
+      state.SkipWithError("not positive definite");
+      return;
+    }
+    split.solve(r, x);
+    benchmark::DoNotOptimize(x.data());
+  }
+  const fem::SparseMatrix& a = assembler.tangent();
+  const Eigen::VectorXd ax = a.selfadjointView<Eigen::Lower>() * x;
+  state.counters["residual"] = (ax - r).norm() / r.norm();
+  {
+    const fem::SerialOpenMpRegions serial;
+    Eigen::CholmodSupernodalLLT<fem::SparseMatrix, Eigen::Lower> llt(a);
+    const Eigen::VectorXd xw = llt.solve(r);
+    state.counters["whole_residual"] = (a.selfadjointView<Eigen::Lower>() * xw - r).norm() / r.norm();
+    state.counters["difference"] = (x - xw).norm() / xw.norm();
+  }
+  state.counters["separator"] = split.separator_rows();
+  state.counters["part0"] = split.part_rows(0);
+  state.counters["part1"] = split.part_rows(1);
+  state.counters["flops0"] = split.part_flops(0);
+  state.counters["flops1"] = split.part_flops(1);
+  state.counters["lnz"] = split.factor_nonzeros();
+}
+
 void BM_HawkmothFemStructureStep(benchmark::State& state) {
   structure_step(state, "wings/hawkmoth.toml", "cases/hover_flexible.toml");
 }
@@ -230,6 +285,8 @@ void BM_FilmWing75mmFemCoupledCycle(benchmark::State& state) {
 }
 
 BENCHMARK(BM_HawkmothNewtonMatrixFactorisation)->DenseRange(0, 3)->Iterations(3)->Unit(benchmark::kMillisecond);
+// Arguments: threads; 0 factorisation and solve, 1 solve alone.
+BENCHMARK(BM_HawkmothSeparatedNewtonMatrix)->Args({1, 0})->Args({2, 0})->Args({1, 1})->Args({2, 1})->Iterations(5)->Unit(benchmark::kMillisecond)->UseRealTime();
 // 100 (hawkmoth) and 80 (film wing) structure steps: one cycle each.
 // Argument: DynamicsOptions::refactor_rate in percent.
 BENCHMARK(BM_HawkmothFemStructureStep)->Arg(25)->Arg(60)->Iterations(100)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -26,7 +26,17 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
     if (factorize_ldlt(A)) return true;
   }
   if (form_ == TangentForm::SymmetricLower) {
-    {
+    if (!split_tried_) {
+      // Two parts on two threads if the matrix's graph has a small separator (the same
+      // factor on one thread: the choice depends on the pattern alone).
+      split_tried_ = true;
+      if (A.rows() >= kMinSplitRows && split_.analyse(A)) factor_nonzeros_ = split_.factor_nonzeros();
+    }
+    bool positive_definite = false;
+    if (split_.analysed()) {
+      positive_definite = split_.factorize(A);
+      solver_ = Solver::Split;
+    } else {
       const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
       if (!llt_analysed_) {
         llt_.analyzePattern(A);
@@ -34,9 +44,10 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
       }
       llt_analysed_ = true;
       llt_.factorize(A);
-    }
-    if (llt_.info() == Eigen::Success) {
+      positive_definite = llt_.info() == Eigen::Success;
       solver_ = Solver::Llt;
+    }
+    if (positive_definite) {
       valid_ = true;
       return true;
     }
@@ -85,6 +96,7 @@ void NewtonMatrix::solve(const Eigen::VectorXd& r, const Eigen::Matrix3d& frame,
   if (turn) rotate(rhs_, S.transpose());
   const SerialOpenMpRegions cholmod_on_this_thread;  // (the LU's solve opens no regions)
   switch (solver_) {
+    case Solver::Split: split_.solve(rhs_, x); break;
     case Solver::Llt: x = llt_.solve(rhs_); break;
     case Solver::Ldlt: x = ldlt_.solve(rhs_); break;
     case Solver::Lu: x = lu_.solve(rhs_); break;
