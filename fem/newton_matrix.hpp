@@ -50,6 +50,8 @@ class NewtonMatrix {
   void solve(const Eigen::VectorXd& r, const Eigen::Matrix3d& frame, Eigen::VectorXd& x);
 
   bool valid() const { return valid_; }
+  /// The last matrix was factorised in two parts and their separator (separated_cholesky.hpp).
+  bool separated() const { return valid_ && solver_ == Solver::Split; }
   double step_size() const { return h_; }
   void invalidate() { valid_ = false; }
   /// Matrices the LLᵀ refused (then factorised by LDLᵀ, or by LU if that failed too).

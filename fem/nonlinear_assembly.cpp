@@ -1,6 +1,7 @@
 #include "fem/nonlinear_assembly.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -163,6 +164,16 @@ NonlinearAssembler::NonlinearAssembler(const CorotationalModel& model, Constrain
   frame_slots_.resize(model.frames.size());
   for (size_t e = 0; e < model.shells.size(); ++e) fill(shell_slots_[e], model.shells[e].nodes.data(), 3);
   for (size_t e = 0; e < model.frames.size(); ++e) fill(frame_slots_[e], model.frames[e].nodes.data(), 2);
+  auto range_of = [](const auto& slots) {
+    std::array<int, 2> range{std::numeric_limits<int>::max(), -1};
+    for (int q : slots)
+      if (q >= 0) range = {std::min(range[0], q), std::max(range[1], q)};
+    return range;
+  };
+  shell_slot_range_.resize(model.shells.size());
+  frame_slot_range_.resize(model.frames.size());
+  for (size_t e = 0; e < model.shells.size(); ++e) shell_slot_range_[e] = range_of(shell_slots_[e]);
+  for (size_t e = 0; e < model.frames.size(); ++e) frame_slot_range_[e] = range_of(frame_slots_[e]);
   hinge_slots_.resize(model.hinges.size());
   for (size_t e = 0; e < model.hinges.size(); ++e) fill(hinge_slots_[e], model.hinges[e].nodes.data(), 4);
   hinge_f_.resize(model.hinges.size());
@@ -328,33 +339,43 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
   for (int e = 0; e < nh; ++e)
     for (int a = 0; a < 4; ++a) f_int.segment<3>(6 * model_.hinges[e].nodes[a]) += hinge_f_[e].segment<3>(3 * a);
   if (tangent) {
+    // The tangent's values in kScatterParts ranges, one a thread: each range takes the mass
+    // term and then the elements' entries that fall in it, element by element in order, so
+    // every entry's sum runs in element order whatever the thread count (the same bits).
     double* val = tangent_.valuePtr();
-    const Eigen::Index nnz = tangent_.nonZeros();
-    for (Eigen::Index i = 0; i < nnz; ++i) val[i] = ex.mass_scale * mass_values_[static_cast<size_t>(i)];
-    for (int e = 0; e < ns; ++e) {
-      const double* k = shell_K_[e].data();  // column-major: k[col * 18 + row]
-      const auto& sl = shell_slots_[e];
-      for (int r = 0; r < 18; ++r)
-        for (int c = 0; c < 18; ++c)
-          if (sl[r * 18 + c] >= 0) val[sl[r * 18 + c]] += k[c * 18 + r];
-    }
-    for (int e = 0; e < nb; ++e) {
-      const double* k = frame_K_[e].data();
-      const auto& sl = frame_slots_[e];
-      for (int r = 0; r < 12; ++r)
-        for (int c = 0; c < 12; ++c)
-          if (sl[r * 12 + c] >= 0) val[sl[r * 12 + c]] += k[c * 12 + r];
-    }
-    for (int e = 0; e < nh; ++e) {  // translations only: row 3a+i of K is DOF 6a+i
-      const auto& K = hinge_K_[e];
-      const auto& sl = hinge_slots_[e];
-      for (int a = 0; a < 4; ++a)
-        for (int i = 0; i < 3; ++i)
-          for (int b = 0; b < 4; ++b)
-            for (int j = 0; j < 3; ++j) {
-              const int slot = sl[(6 * a + i) * 24 + 6 * b + j];
-              if (slot >= 0) val[slot] += K(3 * a + i, 3 * b + j);
-            }
+    const long nnz = tangent_.nonZeros();
+#pragma omp parallel for schedule(static, 1) if (ns + nb > 512)
+    for (int part = 0; part < kScatterParts; ++part) {
+      const int lo = static_cast<int>(nnz * part / kScatterParts), hi = static_cast<int>(nnz * (part + 1) / kScatterParts);
+      for (int i = lo; i < hi; ++i) val[i] = ex.mass_scale * mass_values_[static_cast<size_t>(i)];
+      auto inside = [&](const std::array<int, 2>& range) { return range[1] >= lo && range[0] < hi; };
+      for (int e = 0; e < ns; ++e) {
+        if (!inside(shell_slot_range_[static_cast<size_t>(e)])) continue;
+        const double* k = shell_K_[e].data();  // column-major: k[col * 18 + row]
+        const auto& sl = shell_slots_[e];
+        for (int r = 0; r < 18; ++r)
+          for (int c = 0; c < 18; ++c)
+            if (const int q = sl[r * 18 + c]; q >= lo && q < hi) val[q] += k[c * 18 + r];
+      }
+      for (int e = 0; e < nb; ++e) {
+        if (!inside(frame_slot_range_[static_cast<size_t>(e)])) continue;
+        const double* k = frame_K_[e].data();
+        const auto& sl = frame_slots_[e];
+        for (int r = 0; r < 12; ++r)
+          for (int c = 0; c < 12; ++c)
+            if (const int q = sl[r * 12 + c]; q >= lo && q < hi) val[q] += k[c * 12 + r];
+      }
+      for (int e = 0; e < nh; ++e) {  // translations only: row 3a+i of K is DOF 6a+i
+        const auto& K = hinge_K_[e];
+        const auto& sl = hinge_slots_[e];
+        for (int a = 0; a < 4; ++a)
+          for (int i = 0; i < 3; ++i)
+            for (int b = 0; b < 4; ++b)
+              for (int j = 0; j < 3; ++j) {
+                const int q = sl[(6 * a + i) * 24 + 6 * b + j];
+                if (q >= lo && q < hi) val[q] += K(3 * a + i, 3 * b + j);
+              }
+      }
     }
   }
   return energy;

@@ -147,6 +147,10 @@ class NonlinearAssembler {
   std::vector<std::array<int, 18 * 18>> shell_slots_;
   std::vector<std::array<int, 12 * 12>> frame_slots_;
   std::vector<std::array<int, 24 * 24>> hinge_slots_;
+  /// The smallest and largest slot an element's tangent fills (none: max, -1).
+  std::vector<std::array<int, 2>> shell_slot_range_, frame_slot_range_;
+  /// The tangent's values are filled in this many ranges, one a thread (evaluate).
+  static constexpr int kScatterParts = 2;
   std::vector<Eigen::Matrix<double, 12, 1>> hinge_f_;
   std::vector<Eigen::Matrix<double, 12, 12>> hinge_K_;
   std::vector<Matrix18d> shell_K_;

@@ -14,6 +14,7 @@ namespace flapsim::fem {
 
 namespace {
 constexpr double kMaxRotationCorrection = 0.3;  ///< largest nodal rotation per Newton correction [rad]
+constexpr int kParallelNodes = 512;  ///< node loops of a Newton iteration on all threads from this many nodes
 }  // namespace
 
 DynamicsModel make_dynamics_model(const CorotationalModel& structure, std::vector<int> driven_nodes,
@@ -251,8 +252,12 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
     w.v1 = d.velocity + h * (1.0 - ga) * d.pseudo_acceleration + h * ga * w.a1;
     w.vdot1 = ((1.0 - am) * w.a1 + am * d.pseudo_acceleration - af * d.acceleration) / (1.0 - af);
     // Driven nodes: their motion at t_{n+1} as given (or at rest where they are).
+    // (Node by node: the same bits on any number of threads.)
+    const int nodes = static_cast<int>(d.state.position.size());
     auto place = [&]() {
-      for (size_t i = 0; i < d.state.position.size(); ++i) {
+#pragma omp parallel for schedule(static) if (nodes > kParallelNodes)
+      for (int n = 0; n < nodes; ++n) {
+        const auto i = static_cast<size_t>(n);
         w.trial.position[i] = d.state.position[i] + w.increment.segment<3>(static_cast<Eigen::Index>(6 * i));
         w.trial.rotation[i] =
             rotation_matrix(w.increment.segment<3>(static_cast<Eigen::Index>(6 * i + 3))) * d.state.rotation[i];
@@ -305,7 +310,9 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
     auto apply = [&](double alpha) {
       w.du.setZero();
       for (Eigen::Index i = 0; i < nf; ++i) w.du(free[static_cast<size_t>(i)]) = alpha * w.dx(i);
-      for (std::size_t node = 0; node < w.rotations_free.size(); ++node) {
+#pragma omp parallel for schedule(static) if (nodes > kParallelNodes)
+      for (int n = 0; n < nodes; ++n) {
+        const auto node = static_cast<std::size_t>(n);
         if (!w.rotations_free[node]) continue;
         const Eigen::Index o = static_cast<Eigen::Index>(kDofsPerNode * node + 3);
         const Eigen::Matrix3d R = rotation_matrix(w.du.segment<3>(o)) * w.rotation0[node];

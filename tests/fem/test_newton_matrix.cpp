@@ -71,4 +71,23 @@ TEST(NewtonMatrixFactorisation, AnIndefiniteMatrixIsFactorisedAfterLltRefusesIt)
   EXPECT_LT(residual_of_solve(m, chain_matrix(n, 3.0), n), 1e-14);
 }
 
+TEST(NewtonMatrixFactorisation, ALargeMatrixWithASmallSeparatorIsFactorisedInTwoParts) {
+  // A chain of 3000 DOFs (≥ NewtonMatrix's 2000 rows): METIS splits it at one or a few
+  // rows, each half is factorised on its own (separated_cholesky.hpp). Positive definite:
+  // the two parts and the separator solve it to round-off (condition number < 5).
+  const int n = 3000;
+  fem::NewtonMatrix m(fem::TangentForm::SymmetricLower, first_dofs(n));
+  ASSERT_TRUE(m.factorize(chain_matrix(n, 3.0), Eigen::Matrix3d::Identity(), 1e-3));
+  EXPECT_TRUE(m.separated());
+  EXPECT_EQ(m.lu_fallbacks(), 0);
+  EXPECT_LT(residual_of_solve(m, chain_matrix(n, 3.0), n), 1e-14);
+  // Indefinite (d = 1.5: eigenvalues 1.5 − 2 cos(kπ/3001), about a third below zero, the
+  // smallest in size above 1e-4): the parts refuse it, LDLᵀ takes it.
+  fem::NewtonMatrix indefinite(fem::TangentForm::SymmetricLower, first_dofs(n));
+  ASSERT_TRUE(indefinite.factorize(chain_matrix(n, 1.5), Eigen::Matrix3d::Identity(), 1e-3));
+  EXPECT_FALSE(indefinite.separated());
+  EXPECT_EQ(indefinite.lu_fallbacks(), 1);
+  EXPECT_LT(residual_of_solve(indefinite, chain_matrix(n, 1.5), n), 1e-9);
+}
+
 }  // namespace
