@@ -114,14 +114,15 @@ struct SeparatedCholesky::Part {
   ~Part() {
     if (factor != nullptr) cholmod_free_factor(&factor, &common);
     if (matrix != nullptr) cholmod_free_sparse(&matrix, &common);
-    for (cholmod_dense** d : {&rhs, &work_x, &work_y, &work_e, &result})
+    for (cholmod_dense** d : {&rhs, &work_y, &work_e, &result})
       if (*d != nullptr) cholmod_free_dense(d, &common);
     cholmod_finish(&common);
   }
   cholmod_common common{};
-  cholmod_sparse* matrix = nullptr;   ///< Bᵢ, lower triangle
+  cholmod_sparse* matrix = nullptr;   ///< Bᵢ in the factor's order, upper triangle
   cholmod_factor* factor = nullptr;
   std::vector<int> rows;              ///< global row of each local row (part, then separator)
+  std::vector<int> row_at;            ///< global row at each of the first nᵢ positions of the factor's order
   std::vector<int> value_from;        ///< A's value index of each of Bᵢ's values
   int part_rows = 0;                  ///< nᵢ
   /// Separator row (0 … |S| − 1) at each of the last |S| positions of the factor's order.
@@ -130,11 +131,10 @@ struct SeparatedCholesky::Part {
   Eigen::MatrixXd lss_square;         ///< Lᵢ,SS Lᵢ,SSᵀ in the factor's order (lower)
   Eigen::MatrixXd lss_product;        ///< Lᵢ,SS Lᵢ,SSᵀ in separator order
   Eigen::VectorXd w, v;               ///< |S| vectors in the factor's order
-  cholmod_dense *rhs = nullptr, *work_x = nullptr, *work_y = nullptr, *work_e = nullptr,
-                *result = nullptr;
+  cholmod_dense *rhs = nullptr, *work_y = nullptr, *work_e = nullptr, *result = nullptr;
   bool factorised = false;
 
-  // x := op(L) x through CHOLMOD's solve with reused workspace (sys: CHOLMOD_P, _L, _Lt, _Pt).
+  // x := op(L) x through CHOLMOD's solve with reused workspace (sys: CHOLMOD_L or CHOLMOD_Lt).
   void apply(int sys, cholmod_dense*& from, cholmod_dense*& to) {
     cholmod_solve2(sys, factor, from, nullptr, &to, nullptr, &work_y, &work_e, &common);
   }
@@ -249,38 +249,56 @@ bool SeparatedCholesky::build_parts(const SparseMatrix& a, const std::vector<int
         if (part == 0 && si == 2 && sj == 2)
           separator_entries_.push_back(SeparatorEntry{local[static_cast<size_t>(i)], local[static_cast<size_t>(j)], q});
       }
-    std::sort(entries.begin(), entries.end(),
-              [](const Entry& x, const Entry& y) { return x.col != y.col ? x.col < y.col : x.row < y.row; });
-    p.matrix = cholmod_allocate_sparse(static_cast<size_t>(nb), static_cast<size_t>(nb), entries.size(), 1, 1, -1,
-                                       CHOLMOD_REAL, &p.common);
-    if (p.matrix == nullptr) return false;
-    int* cp = static_cast<int*>(p.matrix->p);
-    int* ri = static_cast<int*>(p.matrix->i);
-    std::fill(cp, cp + nb + 1, 0);
-    p.value_from.resize(entries.size());
-    for (std::size_t e = 0; e < entries.size(); ++e) {
-      ++cp[entries[e].col + 1];
-      ri[e] = entries[e].row;
-      p.value_from[e] = entries[e].value;
-    }
-    for (int j = 0; j < nb; ++j) cp[j + 1] += cp[j];
-    // 3. The order: CAMD with the separator last, taken as given (no postorder, which
-    //    could move separator columns before part columns).
+    // 3. The order: CAMD with the separator last. Bᵢ is then stored in that order, as the
+    //    upper triangle CHOLMOD's supernodal factorisation reads in place (no permuted copy
+    //    at each factorisation), and analysed in its natural order without postordering
+    //    (which could move separator columns before part columns).
+    auto compressed = [&](cholmod_sparse*& m, int stype) {
+      std::sort(entries.begin(), entries.end(),
+                [](const Entry& x, const Entry& y) { return x.col != y.col ? x.col < y.col : x.row < y.row; });
+      m = cholmod_allocate_sparse(static_cast<size_t>(nb), static_cast<size_t>(nb), entries.size(), 1, 1, stype,
+                                  CHOLMOD_REAL, &p.common);
+      if (m == nullptr) return false;
+      int* cp = static_cast<int*>(m->p);
+      int* ri = static_cast<int*>(m->i);
+      std::fill(cp, cp + nb + 1, 0);
+      p.value_from.resize(entries.size());
+      for (std::size_t e = 0; e < entries.size(); ++e) {
+        ++cp[entries[e].col + 1];
+        ri[e] = entries[e].row;
+        p.value_from[e] = entries[e].value;
+      }
+      for (int j = 0; j < nb; ++j) cp[j + 1] += cp[j];
+      return true;
+    };
+    if (!compressed(p.matrix, -1)) return false;
     std::vector<int> member(static_cast<size_t>(nb), 0), order(static_cast<size_t>(nb));
     for (int l = count[part]; l < nb; ++l) member[static_cast<size_t>(l)] = 1;
     if (!cholmod_camd(p.matrix, nullptr, 0, member.data(), order.data(), &p.common)) return false;
+    cholmod_free_sparse(&p.matrix, &p.common);
+    std::vector<int> position(static_cast<size_t>(nb));
+    for (int k = 0; k < nb; ++k) position[static_cast<size_t>(order[static_cast<size_t>(k)])] = k;
+    for (Entry& e : entries) {
+      const int pr = position[static_cast<size_t>(e.row)], pc = position[static_cast<size_t>(e.col)];
+      e = Entry{std::max(pr, pc), std::min(pr, pc), e.value};  // upper: row ≤ column
+    }
+    if (!compressed(p.matrix, 1)) return false;
     p.common.nmethods = 1;
-    p.common.method[0].ordering = CHOLMOD_GIVEN;
+    p.common.method[0].ordering = CHOLMOD_NATURAL;
     p.common.postorder = 0;
-    p.factor = cholmod_analyze_p(p.matrix, order.data(), nullptr, 0, &p.common);
+    p.factor = cholmod_analyze(p.matrix, &p.common);
     if (p.factor == nullptr || p.common.status != CHOLMOD_OK) return false;
     const int* perm = static_cast<const int*>(p.factor->Perm);
-    p.separator_at.assign(static_cast<size_t>(ns), 0);
-    for (int k = 0; k < ns; ++k) {
-      const int l = perm[count[part] + k];
-      if (l < count[part]) return false;  // the separator is not last
-      p.separator_at[static_cast<size_t>(k)] = l - count[part];
+    for (int k = 0; k < nb; ++k)
+      if (perm[k] != k) return false;  // the order is not the one given
+    p.row_at.resize(static_cast<size_t>(count[part]));
+    for (int k = 0; k < count[part]; ++k) {
+      const int l = order[static_cast<size_t>(k)];
+      if (l >= count[part]) return false;  // the separator is not last
+      p.row_at[static_cast<size_t>(k)] = p.rows[static_cast<size_t>(l)];
     }
+    p.separator_at.assign(static_cast<size_t>(ns), 0);
+    for (int k = 0; k < ns; ++k) p.separator_at[static_cast<size_t>(k)] = order[static_cast<size_t>(count[part] + k)] - count[part];
     p.lss.setZero(ns, ns);
     p.lss_square.setZero(ns, ns);
     p.lss_product.setZero(ns, ns);
@@ -350,10 +368,9 @@ void SeparatedCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
   for_each_part([&](int part) {
     Part& p = *parts_[part];
     double* b = static_cast<double*>(p.rhs->x);
-    for (int l = 0; l < p.part_rows; ++l) b[l] = r(p.rows[static_cast<size_t>(l)]);
+    for (int k = 0; k < p.part_rows; ++k) b[k] = r(p.row_at[static_cast<size_t>(k)]);
     std::fill(b + p.part_rows, b + p.part_rows + ns, 0.0);
-    p.apply(CHOLMOD_P, p.rhs, p.work_x);
-    p.apply(CHOLMOD_L, p.work_x, p.result);
+    p.apply(CHOLMOD_L, p.rhs, p.result);
     const double* y = static_cast<const double*>(p.result->x);
     for (int k = 0; k < ns; ++k) p.w(k) = y[p.part_rows + k];
     lower_times(p.lss, p.w, p.v);
@@ -370,10 +387,9 @@ void SeparatedCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
     lower_transposed_times(p.lss, p.w, p.v);
     double* y = static_cast<double*>(p.result->x);
     for (int k = 0; k < ns; ++k) y[p.part_rows + k] = p.v(k);
-    p.apply(CHOLMOD_Lt, p.result, p.work_x);
-    p.apply(CHOLMOD_Pt, p.work_x, p.rhs);
+    p.apply(CHOLMOD_Lt, p.result, p.rhs);
     const double* b = static_cast<const double*>(p.rhs->x);
-    for (int l = 0; l < p.part_rows; ++l) x(p.rows[static_cast<size_t>(l)]) = b[l];
+    for (int k = 0; k < p.part_rows; ++k) x(p.row_at[static_cast<size_t>(k)]) = b[k];
   });
 }
 
