@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <vector>
 
 #include <cholmod.h>
@@ -214,8 +213,8 @@ bool SeparatedCholesky::build_parts(const SparseMatrix& a, const std::vector<int
   if (count[0] == 0 || count[1] == 0 || ns > kMaxSeparatorRows ||
       ns > kMaxSeparatorShare * static_cast<double>(n))
     return false;
-  // 2. Each part's Bᵢ (lower triangle in local numbering), with the map from A's values.
-  //    An entry between the two parts means S is no separator: no split.
+  // Each part's Bᵢ (lower triangle in local numbering), with the map from A's values.
+  // An entry between the two parts means S is no separator: no split.
   separator_entries_.clear();
   for (int part = 0; part < 2; ++part) {
     Part& p = *parts_[part];
@@ -249,10 +248,10 @@ bool SeparatedCholesky::build_parts(const SparseMatrix& a, const std::vector<int
         if (part == 0 && si == 2 && sj == 2)
           separator_entries_.push_back(SeparatorEntry{local[static_cast<size_t>(i)], local[static_cast<size_t>(j)], q});
       }
-    // 3. The order: CAMD with the separator last. Bᵢ is then stored in that order, as the
-    //    upper triangle CHOLMOD's supernodal factorisation reads in place (no permuted copy
-    //    at each factorisation), and analysed in its natural order without postordering
-    //    (which could move separator columns before part columns).
+    // The order: CAMD with the separator last. Bᵢ is then stored in that order, as the
+    // upper triangle CHOLMOD's supernodal factorisation reads in place (no permuted copy at
+    // each factorisation), and analysed in its natural order without postordering (which
+    // could move separator columns before part columns).
     auto compressed = [&](cholmod_sparse*& m, int stype) {
       std::sort(entries.begin(), entries.end(),
                 [](const Entry& x, const Entry& y) { return x.col != y.col ? x.col < y.col : x.row < y.row; });

@@ -4,22 +4,23 @@
 /// separator between them, each part on its own thread (docs/fem.md, "Two parts on two
 /// threads").
 ///
-/// A vertex separator S splits the matrix's graph into parts 0 and 1 that share no entry:
+/// One level of nested dissection [George & Liu 1981]: a vertex separator S splits the
+/// matrix's graph into parts 0 and 1 that share no entry:
 ///   A = [A₀₀ 0 A₀S; 0 A₁₁ A₁S; AS₀ AS₁ ASS].
 /// Each part's principal submatrix with the separator, Bᵢ = [Aᵢᵢ AᵢS; ASᵢ ASS], is
 /// factorised by CHOLMOD's supernodal LLᵀ with the separator ordered last (CAMD), so that
 /// its last block Lᵢ,SS Lᵢ,SSᵀ = ASS − ASᵢ Aᵢᵢ⁻¹ AᵢS; the separator's Schur complement is
 ///   C = ASS − Σᵢ ASᵢ Aᵢᵢ⁻¹ AᵢS = L₀,SS L₀,SSᵀ + L₁,SS L₁,SSᵀ − ASS
-/// (dense; its Cholesky factor computed here in a fixed order). A solve is block elimination (Golub & Van Loan 2013,
-/// §4.2 and §11.1): each part's forward solve Lᵢ [zᵢ; wᵢ] = [rᵢ; 0] gives
+/// (dense; its Cholesky factor computed here in a fixed order). A solve is block elimination
+/// ([Golub & Van Loan 2013], §4.2): each part's forward solve Lᵢ [zᵢ; wᵢ] = [rᵢ; 0] gives
 /// ASᵢ Aᵢᵢ⁻¹ rᵢ = −Lᵢ,SS wᵢ; then C x_S = r_S + Σᵢ Lᵢ,SS wᵢ; then each part's backward
 /// solve Lᵢᵀ [xᵢ; x_S] = [zᵢ; Lᵢ,SSᵀ x_S].
 ///
 /// The parts' work is independent and done the same way on one thread or two (the
 /// sums over the parts in a fixed order), so the answer is the same bits whatever the
 /// thread count. The separator comes from METIS's vertex bisection of the matrix's graph
-/// (cholmod_metis_bisector), weighted to balance the parts' operation counts: a
-/// deterministic function of the pattern.
+/// (cholmod_metis_bisector, [Karypis & Kumar 1998]), weighted to balance the parts'
+/// operation counts: a deterministic function of the pattern. References: docs/references.md.
 
 #include <Eigen/Core>
 
