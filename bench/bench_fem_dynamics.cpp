@@ -174,21 +174,30 @@ void coupled_cycle(benchmark::State& state, const std::string& wing, const std::
       benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-// The Newton matrix c_M M + K_T of the hawkmoth's default FEM (at rest in its reference
-// state, 100 steps per cycle): CHOLMOD's supernodal LLᵀ with the fill-reducing ordering
+// The Newton matrix c_M M + K_T of the hawkmoth's default FEM at rest in its reference state
+// (100 steps per cycle), with the model it was assembled from.
+struct HawkmothNewtonMatrix {
+  std::unique_ptr<Setup> setup = make_setup("wings/hawkmoth.toml", "cases/hover_flexible.toml", false);
+  fem::NonlinearAssembler assembler{setup->structure->corotational, setup->structure->dynamics.eliminated};
+  HawkmothNewtonMatrix() {
+    const fsi::FemStructureModel& m = *setup->structure;
+    Eigen::VectorXd f(m.corotational.num_dofs());
+    const double h = 1.0 / (setup->flight.kinematics.frequency * setup->flight.numerics.steps_per_cycle);
+    fem::TangentExtras ex;
+    ex.mass_scale = (1.0 - m.dynamics.alpha_m) / ((1.0 - m.dynamics.alpha_f) * m.dynamics.beta * h * h);
+    assembler.evaluate(fem::reference_state(m.corotational), f, true, ex);
+  }
+  const fem::SparseMatrix& matrix() const { return assembler.tangent(); }
+};
+
+// The Newton matrix of the hawkmoth's default FEM (HawkmothNewtonMatrix): CHOLMOD's supernodal LLᵀ with the fill-reducing ordering
 // range(0) (0: CHOLMOD's default choice, 1: AMD, 2: METIS, 3: NESDIS); each iteration one
 // numeric factorisation and one solve. Counters: nonzeros of L and flops of a factorisation;
 // label: the variant of the dense kernels under it (fem/dense_kernels.hpp; FLAPSIM_KERNEL=
 // scalar measures SSE2 on an AVX2 machine).
 void BM_HawkmothNewtonMatrixFactorisation(benchmark::State& state) {
-  const auto s = make_setup("wings/hawkmoth.toml", "cases/hover_flexible.toml", false);
-  const fsi::FemStructureModel& m = *s->structure;
-  fem::NonlinearAssembler assembler(m.corotational, m.dynamics.eliminated);
-  Eigen::VectorXd f(m.corotational.num_dofs());
-  const double h = 1.0 / (s->flight.kinematics.frequency * s->flight.numerics.steps_per_cycle);
-  fem::TangentExtras ex;
-  ex.mass_scale = (1.0 - m.dynamics.alpha_m) / ((1.0 - m.dynamics.alpha_f) * m.dynamics.beta * h * h);
-  assembler.evaluate(fem::reference_state(m.corotational), f, true, ex);
+  HawkmothNewtonMatrix newton;
+  const fem::NonlinearAssembler& assembler = newton.assembler;
   Eigen::CholmodSupernodalLLT<fem::SparseMatrix, Eigen::Lower> llt;
   const int ordering[] = {0, CHOLMOD_AMD, CHOLMOD_METIS, CHOLMOD_NESDIS};
   if (state.range(0) > 0) {
@@ -214,14 +223,8 @@ void BM_HawkmothNewtonMatrixFactorisation(benchmark::State& state) {
 // The same Newton matrix factorised in two parts and their separator, one part a thread
 // (fem/separated_cholesky.hpp): factorisation and one solve, then one solve alone.
 void BM_HawkmothSeparatedNewtonMatrix(benchmark::State& state) {
-  const auto s = make_setup("wings/hawkmoth.toml", "cases/hover_flexible.toml", false);
-  const fsi::FemStructureModel& m = *s->structure;
-  fem::NonlinearAssembler assembler(m.corotational, m.dynamics.eliminated);
-  Eigen::VectorXd f(m.corotational.num_dofs());
-  const double h = 1.0 / (s->flight.kinematics.frequency * s->flight.numerics.steps_per_cycle);
-  fem::TangentExtras ex;
-  ex.mass_scale = (1.0 - m.dynamics.alpha_m) / ((1.0 - m.dynamics.alpha_f) * m.dynamics.beta * h * h);
-  assembler.evaluate(fem::reference_state(m.corotational), f, true, ex);
+  HawkmothNewtonMatrix newton;
+  const fem::NonlinearAssembler& assembler = newton.assembler;
   fem::SeparatedCholesky split;
   const auto analysis_start = std::chrono::steady_clock::now();
   const bool analysed = split.analyse(assembler.tangent());
