@@ -75,6 +75,19 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
 }
 
 bool NewtonMatrix::factorize_ldlt(const SparseMatrix& A) {
+  if (split_.analysed()) {
+    // The pattern has a separator: LDLᵀ in two parts as well (else, or if a pivot vanishes
+    // there, the whole matrix's LDLᵀ, whose order differs).
+    if (!split_ldlt_tried_) {
+      split_ldlt_tried_ = true;
+      split_ldlt_.analyse(A);
+    }
+    if (split_ldlt_.analysed() && split_ldlt_.factorize(A)) {
+      solver_ = Solver::SplitLdlt;
+      valid_ = true;
+      return true;
+    }
+  }
   const SerialOpenMpRegions cholmod_on_this_thread;
   if (!ldlt_analysed_) ldlt_.analyzePattern(A);
   ldlt_analysed_ = true;
@@ -97,6 +110,7 @@ void NewtonMatrix::solve(const Eigen::VectorXd& r, const Eigen::Matrix3d& frame,
   const SerialOpenMpRegions cholmod_on_this_thread;  // (the LU's solve opens no regions)
   switch (solver_) {
     case Solver::Split: split_.solve(rhs_, x); break;
+    case Solver::SplitLdlt: split_ldlt_.solve(rhs_, x); break;
     case Solver::Llt: x = llt_.solve(rhs_); break;
     case Solver::Ldlt: x = ldlt_.solve(rhs_); break;
     case Solver::Lu: x = lu_.solve(rhs_); break;

@@ -8,7 +8,8 @@
 /// SymmetricLower); if LLᵀ finds the matrix not positive definite, the same matrix is
 /// factorised by CHOLMOD's simplicial LDLᵀ (no pivoting: any nonsingular matrix whose
 /// pivots do not vanish), and by sparse LU only if that fails too (either counted as a
-/// fallback): the 25 µm film wing's tangent is indefinite in many steps (docs/fsi.md,
+/// fallback). From kMinSplitRows rows, where the matrix's graph has a small separator, the
+/// LLᵀ and the LDLᵀ are each done in two parts on two threads (separated_cholesky.hpp): the 25 µm film wing's tangent is indefinite in many steps (docs/fsi.md,
 /// "Film wings"), and Eigen's sparse LU of it took about a third of that run's time (perf). The
 /// consistent tangent
 /// (TangentForm::Consistent) always goes to sparse LU.
@@ -50,8 +51,9 @@ class NewtonMatrix {
   void solve(const Eigen::VectorXd& r, const Eigen::Matrix3d& frame, Eigen::VectorXd& x);
 
   bool valid() const { return valid_; }
-  /// The last matrix was factorised in two parts and their separator (separated_cholesky.hpp).
-  bool separated() const { return valid_ && solver_ == Solver::Split; }
+  /// The last matrix was factorised in two parts and their separator (separated_cholesky.hpp),
+  /// by LLᵀ or (indefinite) LDLᵀ.
+  bool separated() const { return valid_ && (solver_ == Solver::Split || solver_ == Solver::SplitLdlt); }
   double step_size() const { return h_; }
   void invalidate() { valid_ = false; }
   /// Matrices the LLᵀ refused (then factorised by LDLᵀ, or by LU if that failed too).
@@ -67,13 +69,15 @@ class NewtonMatrix {
 
   TangentForm form_;
   bool rotatable_ = true;  ///< free DOFs come as whole nodes (six consecutive)
-  enum class Solver { Split, Llt, Ldlt, Lu };
+  enum class Solver { Split, SplitLdlt, Llt, Ldlt, Lu };
   /// Matrices with at least this many rows are factorised in two parts and their separator
   /// when their graph has one (separated_cholesky.hpp): the hawkmoth's default mesh, 27 618
   /// rows, 113 → 67 ms a factorisation on two threads.
   static constexpr int kMinSplitRows = 2000;
   SeparatedCholesky split_;
   bool split_tried_ = false;
+  SeparatedCholesky split_ldlt_{true};  ///< the LDLᵀ in two parts, for indefinite matrices
+  bool split_ldlt_tried_ = false;
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt_;
   Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt_;
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;

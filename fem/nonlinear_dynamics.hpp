@@ -124,8 +124,10 @@ struct SolverCounters {
 };
 
 /// Memory the kept Newton matrices of a step solved in pieces may take together [bytes]
-/// (DynamicsData::keep_warm_starts; as NewtonMatrix::factor_bytes counts them). The 25 µm
-/// MAV film wing (4860 DOFs, steps in up to 16 pieces) ran with 143 MB more with them.
+/// (DynamicsData::keep_warm_starts; as NewtonMatrix::factor_bytes counts them: the LLᵀ, so
+/// with the LDLᵀ an indefinite matrix also gets, up to twice this). The 25 µm MAV film wing
+/// (4860 DOFs, steps in up to 16 pieces) ran with 143 MB more with them (486 MB in all since
+/// the LDLᵀ too is kept in two parts).
 inline constexpr double kKeptMatricesBytes = 256.0e6;
 
 /// The constant part: model, which nodes are driven, which DOFs are fixed.

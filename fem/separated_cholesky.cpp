@@ -70,6 +70,41 @@ bool dense_cholesky(Eigen::MatrixXd& c) {
   return true;
 }
 
+// Dense LDLᵀ without pivoting in place: L (unit, below the diagonal) and D (pivots), in the
+// order of dense_cholesky. false: a pivot vanished (or is not finite).
+bool dense_ldlt(Eigen::MatrixXd& c, Eigen::VectorXd& d) {
+  const Eigen::Index n = c.rows();
+  d.resize(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    double* cj = c.col(j).data();
+    for (Eigen::Index k = 0; k < j; ++k) {
+      const double* ck = c.col(k).data();
+      const double t = ck[j] * d(k);
+      for (Eigen::Index i = j; i < n; ++i) cj[i] -= ck[i] * t;
+    }
+    if (!std::isfinite(cj[j]) || cj[j] == 0.0) return false;
+    d(j) = cj[j];
+    cj[j] = 1.0;
+    for (Eigen::Index i = j + 1; i < n; ++i) cj[i] /= d(j);
+  }
+  return true;
+}
+
+// x = (L D Lᵀ)⁻¹ b with L the unit lower triangle of l.
+void dense_ldlt_solve(const Eigen::MatrixXd& l, const Eigen::VectorXd& d, const Eigen::VectorXd& b,
+                      Eigen::VectorXd& x) {
+  const Eigen::Index n = l.rows();
+  x = b;
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = j + 1; i < n; ++i) x(i) -= l(i, j) * x(j);
+  for (Eigen::Index j = 0; j < n; ++j) x(j) /= d(j);
+  for (Eigen::Index j = n - 1; j >= 0; --j) {
+    double s = x(j);
+    for (Eigen::Index i = j + 1; i < n; ++i) s -= l(i, j) * x(i);
+    x(j) = s;
+  }
+}
+
 // x = (L Lᵀ)⁻¹ b with L the lower triangle of l.
 void dense_cholesky_solve(const Eigen::MatrixXd& l, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   const Eigen::Index n = l.rows();
@@ -104,10 +139,11 @@ void lower_transposed_times(const Eigen::MatrixXd& l, const Eigen::VectorXd& w, 
 /// One part with the separator: Bᵢ = [Aᵢᵢ AᵢS; ASᵢ ASS], rows numbered locally (the part's
 /// rows ascending, then the separator's), its factor and solve workspace.
 struct SeparatedCholesky::Part {
-  Part() {
+  explicit Part(bool indefinite) {
     cholmod_start(&common);
     common.print = 0;
-    common.supernodal = CHOLMOD_SUPERNODAL;
+    // LLᵀ supernodal; LDLᵀ simplicial (CHOLMOD's only LDLᵀ), its factor kept as computed.
+    common.supernodal = indefinite ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
     common.final_asis = 1;
   }
   ~Part() {
@@ -130,6 +166,9 @@ struct SeparatedCholesky::Part {
   Eigen::MatrixXd lss_square;         ///< Lᵢ,SS Lᵢ,SSᵀ in the factor's order (lower)
   Eigen::MatrixXd lss_product;        ///< Lᵢ,SS Lᵢ,SSᵀ in separator order
   Eigen::VectorXd w, v;               ///< |S| vectors in the factor's order
+  Eigen::VectorXd ds;                 ///< LDLᵀ: Dᵢ,S in the factor's order
+  Eigen::VectorXd part_pivot_inverse; ///< LDLᵀ: 1 / Dᵢ at the first nᵢ positions
+  Eigen::MatrixXd scaled;             ///< LDLᵀ: Lᵢ,SS Dᵢ,S
   cholmod_dense *rhs = nullptr, *work_y = nullptr, *work_e = nullptr, *result = nullptr;
   bool factorised = false;
 
@@ -139,7 +178,7 @@ struct SeparatedCholesky::Part {
   }
 };
 
-SeparatedCholesky::SeparatedCholesky() = default;
+SeparatedCholesky::SeparatedCholesky(bool indefinite) : indefinite_(indefinite) {}
 SeparatedCholesky::~SeparatedCholesky() = default;
 
 int SeparatedCholesky::separator_rows() const { return static_cast<int>(separator_.size()); }
@@ -200,7 +239,7 @@ bool SeparatedCholesky::analyse(const SparseMatrix& a) {
 
 bool SeparatedCholesky::build_parts(const SparseMatrix& a, const std::vector<int>& side) {
   const int n = static_cast<int>(a.rows());
-  for (auto& p : parts_) p = std::make_unique<Part>();
+  for (auto& p : parts_) p = std::make_unique<Part>(indefinite_);
   separator_.clear();
   std::vector<int> local(static_cast<size_t>(n), -1);  // local index within its part (or S)
   int count[3] = {0, 0, 0};
@@ -303,6 +342,11 @@ bool SeparatedCholesky::build_parts(const SparseMatrix& a, const std::vector<int
     p.lss_product.setZero(ns, ns);
     p.w.setZero(ns);
     p.v.setZero(ns);
+    if (indefinite_) {
+      p.ds.setZero(ns);
+      p.scaled.setZero(ns, ns);
+      p.part_pivot_inverse.setZero(count[part]);
+    }
     p.rhs = cholmod_zeros(static_cast<size_t>(nb), 1, CHOLMOD_REAL, &p.common);
     if (p.rhs == nullptr) return false;
   }
@@ -323,8 +367,39 @@ bool SeparatedCholesky::factorize(const SparseMatrix& a) {
     p.factorised = cholmod_factorize(p.matrix, p.factor, &p.common) && p.common.status == CHOLMOD_OK &&
                    p.factor->minor == p.factor->n;
     if (!p.factorised) return;
-    // Lᵢ,SS from the supernodes holding the last |S| columns (rows in the factor's order).
     const int first = p.part_rows;
+    if (indefinite_) {
+      // Simplicial LDLᵀ: column j holds D(j) first, then L's entries below the unit diagonal.
+      const int* lp = static_cast<const int*>(p.factor->p);
+      const int* li = static_cast<const int*>(p.factor->i);
+      const int* lnz = static_cast<const int*>(p.factor->nz);
+      const double* lx = static_cast<const double*>(p.factor->x);
+      p.lss.setZero();
+      for (int j = 0; j < first + ns; ++j) {
+        const double d = lx[lp[j]];
+        if (!std::isfinite(d) || d == 0.0) {
+          p.factorised = false;
+          return;
+        }
+        if (j < first) {
+          p.part_pivot_inverse(j) = 1.0 / d;
+          continue;
+        }
+        p.ds(j - first) = d;
+        p.lss(j - first, j - first) = 1.0;
+        for (int q = lp[j] + 1; q < lp[j] + lnz[j]; ++q) p.lss(li[q] - first, j - first) = lx[q];
+      }
+      // Lᵢ,SS Dᵢ,S Lᵢ,SSᵀ (the factorisation's dense kernel), in separator order.
+      for (int l = 0; l < ns; ++l) p.scaled.col(l) = p.lss.col(l) * p.ds(l);
+      dense::gemm(ns, ns, ns, 1.0, p.scaled.data(), ns, p.lss.data(), 1, ns, 0.0, p.lss_square.data(), ns);
+      for (int c = 0; c < ns; ++c)
+        for (int b = c; b < ns; ++b) {
+          const int sb = p.separator_at[static_cast<size_t>(b)], sc = p.separator_at[static_cast<size_t>(c)];
+          p.lss_product(sb, sc) = p.lss_product(sc, sb) = p.lss_square(b, c);
+        }
+      return;
+    }
+    // Lᵢ,SS from the supernodes holding the last |S| columns (rows in the factor's order).
     const int* super = static_cast<const int*>(p.factor->super);
     const int* pi = static_cast<const int*>(p.factor->pi);
     const int* px = static_cast<const int*>(p.factor->px);
@@ -357,7 +432,7 @@ bool SeparatedCholesky::factorize(const SparseMatrix& a) {
     schur_(e.row, e.col) -= values[e.value];
     if (e.row != e.col) schur_(e.col, e.row) -= values[e.value];
   }
-  return dense_cholesky(schur_);
+  return indefinite_ ? dense_ldlt(schur_, schur_pivots_) : dense_cholesky(schur_);
 }
 
 void SeparatedCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
@@ -377,7 +452,10 @@ void SeparatedCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
   for (int k = 0; k < ns; ++k) separator_rhs_(k) = r(separator_[static_cast<size_t>(k)]);
   for (const auto& p : parts_)
     for (int k = 0; k < ns; ++k) separator_rhs_(p->separator_at[static_cast<size_t>(k)]) += p->v(k);
-  dense_cholesky_solve(schur_, separator_rhs_, separator_x_);
+  if (indefinite_)
+    dense_ldlt_solve(schur_, schur_pivots_, separator_rhs_, separator_x_);
+  else
+    dense_cholesky_solve(schur_, separator_rhs_, separator_x_);
   for (int k = 0; k < ns; ++k) x(separator_[static_cast<size_t>(k)]) = separator_x_(k);
   // Backward: Lᵢᵀ [xᵢ; x_S] = [zᵢ; Lᵢ,SSᵀ x_S], then Pᵢᵀ.
   for_each_part([&](int part) {
@@ -385,6 +463,8 @@ void SeparatedCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
     for (int k = 0; k < ns; ++k) p.w(k) = separator_x_(p.separator_at[static_cast<size_t>(k)]);
     lower_transposed_times(p.lss, p.w, p.v);
     double* y = static_cast<double*>(p.result->x);
+    if (indefinite_)  // Lᵢᵀ [xᵢ; x_S] = [Dᵢ⁻¹ zᵢ; Lᵢ,SSᵀ x_S]
+      for (int k = 0; k < p.part_rows; ++k) y[k] *= p.part_pivot_inverse(k);
     for (int k = 0; k < ns; ++k) y[p.part_rows + k] = p.v(k);
     p.apply(CHOLMOD_Lt, p.result, p.rhs);
     const double* b = static_cast<const double*>(p.rhs->x);

@@ -1,8 +1,8 @@
 #pragma once
 /// \file separated_cholesky.hpp
-/// \brief A sparse symmetric positive definite matrix factorised in two parts and the
-/// separator between them, each part on its own thread (docs/fem.md, "Two parts on two
-/// threads").
+/// \brief A sparse symmetric matrix (positive definite; or any, by LDLᵀ) factorised in two
+/// parts and the separator between them, each part on its own thread (docs/fem.md, "Two
+/// parts on two threads").
 ///
 /// One level of nested dissection [George & Liu 1981]: a vertex separator S splits the
 /// matrix's graph into parts 0 and 1 that share no entry:
@@ -15,6 +15,11 @@
 /// ([Golub & Van Loan 2013], §4.2): each part's forward solve Lᵢ [zᵢ; wᵢ] = [rᵢ; 0] gives
 /// ASᵢ Aᵢᵢ⁻¹ rᵢ = −Lᵢ,SS wᵢ; then C x_S = r_S + Σᵢ Lᵢ,SS wᵢ; then each part's backward
 /// solve Lᵢᵀ [xᵢ; x_S] = [zᵢ; Lᵢ,SSᵀ x_S].
+///
+/// For an indefinite matrix (a wrinkling film's tangent) the same with LDLᵀ and no pivoting
+/// (SeparatedCholesky(true)): CHOLMOD's simplicial LDLᵀ of each Bᵢ gives Lᵢ,SS Dᵢ,S Lᵢ,SSᵀ,
+/// C = Σᵢ Lᵢ,SS Dᵢ,S Lᵢ,SSᵀ − ASS is factorised as L D Lᵀ, and the backward solve takes
+/// Lᵢᵀ [xᵢ; x_S] = [Dᵢ⁻¹ zᵢ; Lᵢ,SSᵀ x_S]. It fails only where a pivot vanishes.
 ///
 /// The parts' work is independent and done the same way on one thread or two (the
 /// sums over the parts in a fixed order), so the answer is the same bits whatever the
@@ -33,7 +38,9 @@ namespace flapsim::fem {
 
 class SeparatedCholesky {
  public:
-  SeparatedCholesky();
+  /// \param indefinite  LDLᵀ (CHOLMOD's simplicial LDLᵀ in the parts, dense LDLᵀ of C, no
+  ///                    pivoting: any matrix whose pivots do not vanish) instead of LLᵀ
+  explicit SeparatedCholesky(bool indefinite = false);
   ~SeparatedCholesky();
   SeparatedCholesky(const SeparatedCholesky&) = delete;
   SeparatedCholesky& operator=(const SeparatedCholesky&) = delete;
@@ -44,7 +51,8 @@ class SeparatedCholesky {
   /// more than kMaxSeparatorShare of the rows or kMaxSeparatorRows): use one factor.
   bool analyse(const SparseMatrix& a);
   /// \brief Factorises A (the analysed pattern). \return false if a part or the
-  /// separator's Schur complement is not positive definite (the matrix is not).
+  /// separator's Schur complement is not positive definite (the matrix is not); for the
+  /// LDLᵀ, if a pivot vanishes.
   bool factorize(const SparseMatrix& a);
   /// x = A⁻¹ r (after a successful factorize).
   void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x);
@@ -79,6 +87,8 @@ class SeparatedCholesky {
   std::vector<SeparatorEntry> separator_entries_;  ///< ASS's entries in A's lower triangle
   Eigen::MatrixXd schur_;               ///< C, then its Cholesky factor (lower triangle)
   Eigen::VectorXd separator_rhs_, separator_x_;
+  Eigen::VectorXd schur_pivots_;  ///< LDLᵀ: C's D
+  bool indefinite_ = false;
   bool analysed_ = false;
 };
 

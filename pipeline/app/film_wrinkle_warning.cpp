@@ -47,7 +47,8 @@ std::string film_wrinkle_warning(const FsiSetup& setup) {
                 "took 8x (the 75 mm film wing), 28x (the MAV film wing) and 70x (a 55 mm swept 15 um film) the time "
                 "estimated here, and up to "
                 "%.0f MB more memory for a Newton matrix kept for each piece (docs/fsi.md, \"Film wings\")",
-                median->thickness * 1e6, median->size * 1e3, 100.0 * median->strain, fem::kKeptMatricesBytes / 1e6);
+                median->thickness * 1e6, median->size * 1e3, 100.0 * median->strain,
+                2.0 * fem::kKeptMatricesBytes / 1e6);  // each may hold an LDLᵀ beside its LLᵀ
   return text;
 }
 
