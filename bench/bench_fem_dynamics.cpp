@@ -235,7 +235,11 @@ void BM_HawkmothSeparatedNewtonMatrix(benchmark::State& state) {
   }
   const Eigen::VectorXd r = Eigen::VectorXd::Ones(assembler.tangent().rows());
   Eigen::VectorXd x;
-  omp_set_num_threads(static_cast<int>(state.range(0)));
+  struct Threads {  // range(0) threads while it lives; then the next benchmarks' as configured
+    int saved = omp_get_max_threads();
+    explicit Threads(int n) { omp_set_num_threads(n); }
+    ~Threads() { omp_set_num_threads(saved); }
+  } threads(static_cast<int>(state.range(0)));
   const bool solve_alone = state.range(1) == 1;
   if (solve_alone && !split.factorize(assembler.tangent())) {
     state.SkipWithError("not positive definite");

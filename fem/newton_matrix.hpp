@@ -8,11 +8,11 @@
 /// SymmetricLower); if LLᵀ finds the matrix not positive definite, the same matrix is
 /// factorised by CHOLMOD's simplicial LDLᵀ (no pivoting: any nonsingular matrix whose
 /// pivots do not vanish), and by sparse LU only if that fails too (either counted as a
-/// fallback). From kMinSplitRows rows, where the matrix's graph has a small separator, the
-/// LLᵀ and the LDLᵀ are each done in two parts on two threads (separated_cholesky.hpp): the 25 µm film wing's tangent is indefinite in many steps (docs/fsi.md,
-/// "Film wings"), and Eigen's sparse LU of it took about a third of that run's time (perf). The
-/// consistent tangent
-/// (TangentForm::Consistent) always goes to sparse LU.
+/// fallback): the 25 µm film wing's tangent is indefinite in many steps (docs/fsi.md,
+/// "Film wings"), and Eigen's sparse LU of it took about a third of that run's time (perf).
+/// From kMinSplitRows rows, where the matrix's graph has a small separator, the LLᵀ and the
+/// LDLᵀ are each done in two parts on two threads (separated_cholesky.hpp). The consistent
+/// tangent (TangentForm::Consistent) always goes to sparse LU.
 ///
 /// Frame rotation. A wing that is turned rigidly by S (every node x ← S x, R ← S R) has
 /// the tangent S_b K_T S_bᵀ, S_b = diag(S, S, …) on each node's translations and spins,
@@ -72,7 +72,7 @@ class NewtonMatrix {
   enum class Solver { Split, SplitLdlt, Llt, Ldlt, Lu };
   /// Matrices with at least this many rows are factorised in two parts and their separator
   /// when their graph has one (separated_cholesky.hpp): the hawkmoth's default mesh, 27 618
-  /// rows, 113 → 67 ms a factorisation on two threads.
+  /// rows, 113–116 → 59–65 ms a factorisation and solve on two threads (docs/fem.md).
   static constexpr int kMinSplitRows = 2000;
   SeparatedCholesky split_;
   bool split_tried_ = false;

@@ -251,8 +251,8 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
     w.a1 = (w.increment / h - d.velocity - h * (0.5 - be) * d.pseudo_acceleration) / (h * be);
     w.v1 = d.velocity + h * (1.0 - ga) * d.pseudo_acceleration + h * ga * w.a1;
     w.vdot1 = ((1.0 - am) * w.a1 + am * d.pseudo_acceleration - af * d.acceleration) / (1.0 - af);
-    // Driven nodes: their motion at t_{n+1} as given (or at rest where they are).
-    // (Node by node: the same bits on any number of threads.)
+    // Driven nodes: their motion at t_{n+1} as given (or at rest where they are). The node
+    // loops here and in apply are shared between the threads node by node (the same bits).
     const int nodes = static_cast<int>(d.state.position.size());
     auto place = [&]() {
 #pragma omp parallel for schedule(static) if (nodes > kParallelNodes)
