@@ -20,11 +20,6 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
   valid_ = false;
   frame_ = frame;
   h_ = h;
-  if (form_ == TangentForm::SymmetricLower && ldlt_first_ > 0) {
-    // The last matrices were indefinite (a wrinkling film): LDLᵀ directly, for a while.
-    --ldlt_first_;
-    if (factorize_ldlt(A)) return true;
-  }
   if (form_ == TangentForm::SymmetricLower) {
     if (!split_tried_) {
       // Two parts on two threads if the matrix's graph has a small separator (the same
@@ -55,10 +50,7 @@ bool NewtonMatrix::factorize(const SparseMatrix& A, const Eigen::Matrix3d& frame
     // small rotary inertia; a thin film in compression): the same matrix by LDLᵀ, which
     // takes an indefinite matrix as long as no pivot vanishes, else by LU.
     ++fallbacks_;
-    if (factorize_ldlt(A)) {
-      ldlt_first_ = kLdltFirstAfterRefusal;
-      return true;
-    }
+    if (factorize_ldlt(A)) return true;
     full_ = A.selfadjointView<Eigen::Lower>();
     solver_ = Solver::Lu;
     if (!lu_analysed_) lu_.analyzePattern(full_);

@@ -87,11 +87,6 @@ class NewtonMatrix {
   Eigen::Matrix3d frame_ = Eigen::Matrix3d::Identity();
   double h_ = 0.0;
   long fallbacks_ = 0;
-  /// After an LLᵀ refusal the next kLdltFirstAfterRefusal matrices go to LDLᵀ directly
-  /// (which takes positive definite ones too): a film's tangent stays indefinite for many
-  /// steps, and each refused LLᵀ cost a factorisation.
-  static constexpr int kLdltFirstAfterRefusal = 8;
-  int ldlt_first_ = 0;
   double factor_nonzeros_ = 0.0;  ///< nonzeros of L (CHOLMOD's analysis)
   Eigen::VectorXd rhs_;
 };

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/CholmodSupport>
 
@@ -14,6 +16,10 @@ namespace flapsim::fem {
 
 namespace {
 constexpr double kMaxRotationCorrection = 0.3;  ///< largest nodal rotation per Newton correction [rad]
+/// A correction asking to turn a node by more than π (or to move it by more than π times the
+/// structure's size) linearises nothing: Newton has diverged and the step fails at once,
+/// instead of after max_iterations (docs/fem.md, "A Newton that diverges stops").
+constexpr double kDivergedCorrection = std::numbers::pi;
 constexpr int kParallelNodes = 512;  ///< node loops of a Newton iteration on all threads from this many nodes
 }  // namespace
 
@@ -422,6 +428,11 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       if (!new_matrix && it > 0 && !small_increment && size > model.options.refactor_rate * previous) {
         refactor = true;
         if (size > previous) continue;
+      }
+      if (size > kDivergedCorrection) {
+        res.failure = "t = " + std::to_string(d.time + h) + " s, iteration " + std::to_string(it) +
+                      ": Newton diverges (a correction of " + std::to_string(size) + " rad)";
+        return res;
       }
       previous = size;
       // A correction that turns a node by more than kMaxRotationCorrection is

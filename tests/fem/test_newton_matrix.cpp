@@ -64,8 +64,8 @@ TEST(NewtonMatrixFactorisation, AnIndefiniteMatrixIsFactorisedAfterLltRefusesIt)
   // Accurate enough for a Newton correction: the system to 1e-12 (condition number
   // 3.44 / 0.0030 ≈ 1200).
   EXPECT_LT(residual_of_solve(m, chain_matrix(n, 1.5), n), 1e-12);
-  // The same object then takes a positive definite matrix (by LDLᵀ still, for the next
-  // kLdltFirstAfterRefusal matrices: no new refusal counted) and solves it as well.
+  // The same object then takes a positive definite matrix (by LLᵀ again: no new refusal
+  // counted) and solves it as well.
   ASSERT_TRUE(m.factorize(chain_matrix(n, 3.0), Eigen::Matrix3d::Identity(), 1e-3));
   EXPECT_EQ(m.lu_fallbacks(), 1);
   EXPECT_LT(residual_of_solve(m, chain_matrix(n, 3.0), n), 1e-14);

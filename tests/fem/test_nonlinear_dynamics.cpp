@@ -1,7 +1,7 @@
 // Nonlinear dynamics (fem/nonlinear_dynamics.hpp): free vibration of a clamped
 // plate at the modal solver's first frequency, second order in Δt, a clamped
-// plate driven in a rigid rotation about its root, and a flapped plate's end
-// state the same bits on 1, 2 and 3 threads. (Energy over 100
+// plate driven in a rigid rotation about its root, a Newton that diverges stopped at
+// its first correction, and a flapped plate's end state the same bits on 1, 2 and 3 threads. (Energy over 100
 // periods of a large-amplitude free vibration: measured, not asserted; see
 // docs/fem.md.)
 
@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include <omp.h>
@@ -280,6 +281,44 @@ namespace {
 // The end state of a 0.1 m square aluminium plate (0.5 mm, 24 × 24 mesh: 625 nodes, 1152
 // shells, 3600 free DOFs) flapped about its clamped root edge (θ = 0.3 sin 2πft, f = 25 Hz,
 // 8 steps of 1 ms) under a transverse tip load, on `threads` threads.
+// The plate of ClampedSquarePlate under end moments about y, statically in one long step
+// (h = 1 s: the plate's inertia c_M M is 1e-9 of its stiffness here); returns the step's
+// result and the Newton iterations it took.
+StepResult plate_under_end_moment(double linear_tip_rotation, long& iterations) {
+  const ClampedSquarePlate p;
+  const DynamicsModel dm = make_dynamics_model(p.cm, p.root);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.cm.num_dofs());
+  // Pure bending of the plate: θ = M L / (D b), D = E t³ / (12 (1 − ν²)) [N m], b = L = a.
+  const double D = 70e9 * 1e-9 / (12.0 * (1.0 - 0.3 * 0.3));
+  const double moment = linear_tip_rotation * D;  // M = θ D b / L with b = L [N m]
+  const std::vector<int> tip = nodes_at_x(p.sm.mesh, ClampedSquarePlate::a);
+  Eigen::VectorXd load = zero;
+  for (std::size_t k = 0; k < tip.size(); ++k) {  // the edge's nodes by their tributary width
+    const bool corner = k == 0 || k + 1 == tip.size();
+    load(6 * tip[k] + 4) = -moment / static_cast<double>(tip.size() - 1) * (corner ? 0.5 : 1.0);
+  }
+  DynamicsData data(dm, reference_state(p.cm), zero, zero);
+  const StepResult r = step(dm, data, 1.0, load, nullptr);
+  iterations = data.counters().iterations;
+  return r;
+}
+
+TEST(NonlinearDynamics, ANewtonThatDivergesStopsAtOnce) {
+  // A correction that asks to turn a node by more than π rad linearises nothing
+  // (nonlinear_dynamics.cpp, kDivergedCorrection): a plate rolled up by end moments whose
+  // linear tip rotation is 20 rad fails at its first correction, in each of the step's two
+  // attempts (kept matrix, then a new matrix every iteration): 2 iterations, not the 2 × 25
+  // of max_iterations. The same plate at 1 rad (its first correction below π, scaled to
+  // 0.3 rad a correction) converges.
+  long iterations = 0;
+  const StepResult rolled = plate_under_end_moment(20.0, iterations);
+  EXPECT_FALSE(rolled.converged);
+  EXPECT_NE(rolled.failure.find("Newton diverges"), std::string::npos) << rolled.failure;
+  EXPECT_LE(iterations, 2);
+  const StepResult bent = plate_under_end_moment(1.0, iterations);
+  EXPECT_TRUE(bent.converged) << bent.failure;
+}
+
 std::vector<double> flapped_plate_end_state(int threads) {
   const StructuralModel sm =
       testing::uniform_shell_model(rectangle_mesh(0.0, 0.0, 0.1, 0.1, 24, 24), testing::shell(70e9, 0.3, 5e-4, 2700.0));
