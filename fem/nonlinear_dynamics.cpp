@@ -17,8 +17,11 @@ namespace flapsim::fem {
 namespace {
 constexpr double kMaxRotationCorrection = 0.3;  ///< largest nodal rotation per Newton correction [rad]
 /// A correction asking to turn a node by more than π (or to move it by more than π times the
-/// structure's size) linearises nothing: Newton has diverged and the step fails at once,
-/// instead of after max_iterations (docs/fem.md, "A Newton that diverges stops").
+/// structure's size) linearises nothing: an attempt with a kept matrix that makes one stops
+/// at once and the step goes on to full Newton, instead of after max_iterations. Full
+/// Newton itself goes on (its corrections scaled to kMaxRotationCorrection): a film's
+/// wrinkling step recovered after a single such correction (docs/fem.md, "A kept matrix's
+/// Newton that diverges stops").
 constexpr double kDivergedCorrection = std::numbers::pi;
 constexpr int kParallelNodes = 512;  ///< node loops of a Newton iteration on all threads from this many nodes
 }  // namespace
@@ -429,9 +432,9 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
         refactor = true;
         if (size > previous) continue;
       }
-      if (size > kDivergedCorrection) {
+      if (reuse && size > kDivergedCorrection) {
         res.failure = "t = " + std::to_string(d.time + h) + " s, iteration " + std::to_string(it) +
-                      ": Newton diverges (a correction of " + std::to_string(size) + " rad)";
+                      ": Newton with a kept matrix diverges (a correction of " + std::to_string(size) + " rad)";
         return res;
       }
       previous = size;

@@ -1,7 +1,7 @@
 // Nonlinear dynamics (fem/nonlinear_dynamics.hpp): free vibration of a clamped
 // plate at the modal solver's first frequency, second order in Δt, a clamped
-// plate driven in a rigid rotation about its root, a Newton that diverges stopped at
-// its first correction, and a flapped plate's end state the same bits on 1, 2 and 3 threads. (Energy over 100
+// plate driven in a rigid rotation about its root, a kept matrix's Newton that diverges stopped
+// at its first correction, and a flapped plate's end state the same bits on 1, 2 and 3 threads. (Energy over 100
 // periods of a large-amplitude free vibration: measured, not asserted; see
 // docs/fem.md.)
 
@@ -303,18 +303,17 @@ StepResult plate_under_end_moment(double linear_tip_rotation, long& iterations) 
   return r;
 }
 
-TEST(NonlinearDynamics, ANewtonThatDivergesStopsAtOnce) {
+TEST(NonlinearDynamics, ANewtonWithAKeptMatrixThatDivergesStopsAtOnce) {
   // A correction that asks to turn a node by more than π rad linearises nothing
   // (nonlinear_dynamics.cpp, kDivergedCorrection): a plate rolled up by end moments whose
-  // linear tip rotation is 20 rad fails at its first correction, in each of the step's two
-  // attempts (kept matrix, then a new matrix every iteration): 2 iterations, not the 2 × 25
-  // of max_iterations. The same plate at 1 rad (its first correction below π, scaled to
-  // 0.3 rad a correction) converges.
+  // linear tip rotation is 20 rad stops its attempt with the kept matrix at the first
+  // correction and goes on to full Newton, which fails after its max_iterations (25): 26
+  // iterations in all, not the 2 × 25 of both attempts run out. The same plate at 1 rad
+  // (its first correction below π, scaled to 0.3 rad a correction) converges.
   long iterations = 0;
   const StepResult rolled = plate_under_end_moment(20.0, iterations);
   EXPECT_FALSE(rolled.converged);
-  EXPECT_NE(rolled.failure.find("Newton diverges"), std::string::npos) << rolled.failure;
-  EXPECT_LE(iterations, 2);
+  EXPECT_LE(iterations, 1 + DynamicsOptions{}.max_iterations) << rolled.failure;
   const StepResult bent = plate_under_end_moment(1.0, iterations);
   EXPECT_TRUE(bent.converged) << bent.failure;
 }
