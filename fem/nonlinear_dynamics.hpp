@@ -69,7 +69,10 @@ namespace flapsim::fem {
 /// Integrator settings.
 struct DynamicsOptions {
   double rho_infinity = 1.0;     ///< spectral radius at h → ∞ (1: no numerical dissipation)
-  int max_iterations = 25;       ///< Newton iterations per step
+  /// Newton iterations per attempt: with the kept matrix, then (if that fails) a new matrix
+  /// every iteration. The kept matrix's attempt stops sooner at a correction beyond π rad
+  /// (nonlinear_dynamics.cpp, kDivergedCorrection).
+  int max_iterations = 25;
   double tolerance = 1e-10;      ///< ‖r_free‖ ≤ tolerance · force scale of the step
   double stiffness_damping = 0.0;  ///< a₁ [s], Rayleigh stiffness-proportional (co-rotational)
   /// Newton matrix: SymmetricLower (CHOLMOD LLᵀ, LU if not positive definite) or
