@@ -169,8 +169,12 @@ DynamicsData::DynamicsData(const DynamicsModel& model, const CorotationalState& 
   if (!free.empty()) {
     w.mass_assembler.load_mass_into_tangent();
     const SerialOpenMpRegions cholmod_on_this_thread;  // CHOLMOD's fixed 4-thread teams
-    Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> mllt(w.mass_assembler.tangent());
-    if (mllt.info() != Eigen::Success) throw std::runtime_error("DynamicsData: the free mass matrix is singular");
+    Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> mllt;
+    mllt.cholmod().print = 0;  // the reason below, not CHOLMOD's own warning on stderr
+    mllt.compute(w.mass_assembler.tangent());
+    if (mllt.info() != Eigen::Success)
+      throw std::runtime_error("DynamicsData: the free mass matrix is singular (a node or rotation without mass: "
+                               "the wing file's thicknesses, densities or vein sizes at or near zero)");
     for (size_t i = 0; i < free.size(); ++i) w.r(static_cast<Eigen::Index>(i)) = f_ext0(free[i]) - w.f_int(free[i]);
     w.dx = mllt.solve(w.r);
     for (size_t i = 0; i < free.size(); ++i) acceleration(free[i]) = w.dx(static_cast<Eigen::Index>(i));

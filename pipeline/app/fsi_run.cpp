@@ -12,6 +12,7 @@
 #include "pipeline/app/run_recorder.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
+#include "pipeline/fsi/stop_request.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/input_hash.hpp"
 
@@ -34,6 +35,16 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
           : 0.0;
   fsi::initialize(model, data, 0.0);
   recorder.record_initial(data);
+  // SIGINT/SIGTERM within a step (one of a film's FEM can take minutes): the step is left
+  // between two of its solves and the outputs end at the step before (stop_request.hpp).
+  // A step that lasts shows that it is under way on the progress line.
+  const fsi::ScopedStopCheck stop_within_step([&] {
+    if (pending_interrupt() != 0)
+      throw_if_interrupted("during step " + std::to_string(data.step + 1) + " of " + std::to_string(setup.steps) +
+                           (data.step > 0 ? " (the step dropped: the outputs end at step " + std::to_string(data.step) + ")"
+                                          : std::string(" (the step dropped: no step done)")));
+    progress.step_under_way();
+  });
   for (long n = 0; n < setup.steps; ++n) {
     fsi::coupled_step(model, data, setup.dt);
     recorder.record(data);

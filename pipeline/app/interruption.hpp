@@ -1,7 +1,8 @@
 #pragma once
 /// \file interruption.hpp
 /// \brief SIGINT and SIGTERM during a run: the handler only records the signal; the time
-/// loop looks at it after each step, finishes that step, flushes history.csv and the
+/// loop looks at it after each step, and the step itself between its solves
+/// (pipeline/fsi/stop_request.hpp: a step that is dropped), flushes history.csv and the
 /// series, writes summary.json with status "interrupted" and throws Interrupted, which the
 /// command line turns into exit status 128 + signal (130 for SIGINT, 143 for SIGTERM).
 
@@ -10,7 +11,7 @@
 
 namespace flapsim::app {
 
-/// A run stopped by a signal after a completed step.
+/// A run stopped by a signal, after a completed step or within one (the step dropped).
 class Interrupted : public std::runtime_error {
  public:
   Interrupted(int signal_number, const std::string& what)

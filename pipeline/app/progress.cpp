@@ -23,7 +23,7 @@ ProgressLine::Mode resolve(ProgressLine::Mode mode, std::FILE* stream) {
 
 ProgressLine::ProgressLine(long total, std::FILE* stream, Mode mode)
     : total_(total), stream_(stream), mode_(resolve(mode, stream)),
-      start_(std::chrono::steady_clock::now()), last_draw_(start_) {
+      start_(std::chrono::steady_clock::now()), last_draw_(start_), step_start_(start_) {
   if (!stream_) mode_ = Mode::quiet;
 }
 
@@ -43,12 +43,13 @@ std::string ProgressLine::format(long step, long total, double time, std::string
 void ProgressLine::update(long step, double time, std::string_view extra) {
   step_ = step;
   time_ = time;
+  step_start_ = std::chrono::steady_clock::now();
   if (mode_ == Mode::final_only) {
     // A log (a batch job's output) gets a whole line now and then: a run of hours
-    // otherwise showed nothing until its end.
+    // otherwise showed nothing until its end. Not at the last step: finish() prints it.
     extra_.assign(extra);
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_draw_ >= log_interval_) {
+    const auto now = step_start_;
+    if (now - last_draw_ >= log_interval_ && step_ < total_) {
       last_draw_ = now;
       draw(format(step_, total_, time_, extra_) + wall_note(true), true);
     }
@@ -70,6 +71,18 @@ void ProgressLine::update(long step, double time, std::string_view extra) {
   if (const double wall = wall_seconds(); wall >= 1.0)
     if (const std::string left = time_left(wall, step_, total_); !left.empty()) line += "  " + left;
   draw(line, false);
+}
+
+void ProgressLine::step_under_way() {
+  if (mode_ != Mode::final_only && mode_ != Mode::live) return;
+  const auto now = std::chrono::steady_clock::now();
+  const auto interval = mode_ == Mode::live ? std::chrono::milliseconds(1000) : log_interval_;
+  if (now - last_draw_ < interval || now - step_start_ < interval) return;
+  last_draw_ = now;
+  char note[64];
+  std::snprintf(note, sizeof note, "  step %ld under way for %.0f s", step_ + 1,
+                std::chrono::duration<double>(now - step_start_).count());
+  draw(format(step_, total_, time_, extra_) + note + wall_note(false), mode_ == Mode::final_only);
 }
 
 void ProgressLine::finish(std::string_view extra) {

@@ -39,6 +39,11 @@ class ProgressLine {
   /// \param extra  short text appended to the line (e.g. "CL=1.93  iters=4")
   void update(long step, double time, std::string_view extra = {});
 
+  /// \brief Reports that the next step is under way (called between its solves, often):
+  /// a step that lasts (a film's FEM step in many pieces: minutes) shows the line with
+  /// "step N under way for X s" — in a log once a log interval, live once a second.
+  void step_under_way();
+
   /// \brief Prints the final line with the last step, time and the wall-clock time,
   /// ending with a newline. Idempotent.
   void finish(std::string_view extra = {});
@@ -69,6 +74,7 @@ class ProgressLine {
   std::size_t last_width_ = 0;
   bool finished_ = false;
   std::chrono::steady_clock::time_point start_, last_draw_;
+  std::chrono::steady_clock::time_point step_start_;  ///< when the last step was reported done
   bool drawn_ = false;
   std::chrono::milliseconds log_interval_{std::chrono::seconds(30)};
 };

@@ -4,6 +4,7 @@
 #include "pipeline/app/chain_wing_match.hpp"
 #include "pipeline/app/compressibility_warning.hpp"
 #include "pipeline/app/coupling_tolerance_warning.hpp"
+#include "pipeline/app/fem_mesh_resolution_warning.hpp"
 #include "pipeline/app/film_wrinkle_warning.hpp"
 #include "pipeline/app/flexibility_warnings.hpp"
 
@@ -15,7 +16,7 @@ std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup
                         saved_chain_fem_warning(setup),
                         soft_chain_warning(c, setup), near_resonance_warning(c, setup),
                         inertial_deflection_warning(c, setup), coupling_tolerance_warning(setup),
-                        film_wrinkle_warning(setup)})
+                        film_wrinkle_warning(setup), fem_mesh_resolution_warning(setup)})
     if (!w.empty()) out.push_back(std::move(w));
   return out;
 }

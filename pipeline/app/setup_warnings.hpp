@@ -5,7 +5,8 @@
 /// that does not match the wing, a chain file that misses its wing's FEM modes (as reduce
 /// found), a chain driven above or near its resonance, a chain the flapping's inertia alone
 /// bends beyond 30°, a coupling tolerance below the single-precision wake sums' floor, an
-/// FEM membrane that wrinkles at its mesh's scale (a thin film).
+/// FEM membrane that wrinkles at its mesh's scale (a thin film), an FEM mesh with fewer than
+/// four elements across the chord.
 
 #include <string>
 #include <vector>

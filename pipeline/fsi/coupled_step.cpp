@@ -7,6 +7,7 @@
 
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/fsi/panel_load_response.hpp"
+#include "pipeline/fsi/stop_request.hpp"
 #include "uvlm/leading_edge_side.hpp"
 #include "uvlm/old_wake_hold.hpp"
 
@@ -76,6 +77,7 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
   const double tol = model.coupling.tolerance;
   double accuracy = 1.0;  // of the last solve, in multiples of the structure's tolerance
   while (k < last) {
+    check_stop();  // a program that wants to stop need not wait for the step's end (stop_request.hpp)
     // 1. lattice on the iterate
     if (!first) s.pose_iterate();
     if (k == model.coupling.edge_side_hold_after) uvlm::hold_leading_edge_sides(model.lattice, *data.lattice);

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "pipeline/fsi/stop_request.hpp"
+
 namespace flapsim::fsi {
 
 FemStructureModel::FemStructureModel(fem::StructuralModel structural_model, std::vector<int> clamped_nodes,
@@ -148,6 +150,7 @@ bool FemStructureData::solve_in_pieces(double dt, int pieces, std::string& failu
     damping = added_mass_load(t0 + dt, iterating_ ? loads_velocity_ : predicted_velocity_);
   }
   for (int k = 1; k <= pieces; ++k) {
+    check_stop();  // a step in many pieces can take minutes (stop_request.hpp)
     const double t = k == pieces ? t0 + dt : t0 + k * h;
     const fem::PrescribedMotion motion = clamp_motion(model_, t);
     const Eigen::VectorXd* f = &loads_;

@@ -440,6 +440,16 @@ Case read_case(TomlTable root) {
   c.air = read_air(root);
   c.structure = read_structure(root);
   c.numerics = read_numerics(root);
+  if (c.structure.kind == Case::Structure::Kind::Fem) {
+    // The FEM is built from the wing file; the chain's keys would be read and ignored.
+    if (root.has("chain"))
+      root.fail("chain", "kind = \"fem\" integrates the wing's own FEM, built from the wing file; a chain file is the "
+                         "bar chain's (kind = \"flexible\"): remove chain (and give wing), or set kind = \"flexible\"");
+    if (const auto n = root.find_table("numerics"); n && n->has("structure_substeps"))
+      n->fail("structure_substeps", "substeps of the bar chain's integrator; the FEM structure (kind = \"fem\") "
+                                    "splits its own steps where they fail (docs/fsi.md, \"Step halving of the FEM\"): "
+                                    "remove structure_substeps");
+  }
   // The steady lattice's wake leaves along the free stream (docs/uvlm.md, "Steady lattice").
   if (c.numerics.steady && !(c.air.enabled && c.air.freestream.norm() > 0.0))
     root.get_table("numerics").fail("steady", "the steady lattice needs air with a free stream "

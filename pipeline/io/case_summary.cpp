@@ -69,6 +69,9 @@ std::string describe_case(const Case& c) {
                   : "of the wing file");
   else
     s += line("  structure              flexible, %d bodies", c.structure.bodies);
+  if (!c.structure.gravity.isZero(0.0))
+    s += line("  gravity                (%.4g, %.4g, %.4g) m/s^2, ground frame", c.structure.gravity.x(),
+              c.structure.gravity.y(), c.structure.gravity.z());
   const auto& n = c.numerics;
   s += line("  time steps             %d per cycle x %d cycles = %lld (dt = %.4g ms)", n.steps_per_cycle,
             n.cycles, static_cast<long long>(n.total_steps()), 1e3 / (k.frequency * n.steps_per_cycle));

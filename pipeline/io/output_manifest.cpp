@@ -213,6 +213,16 @@ fs::path reserve_path(const fs::path& dir) { return temporary_path(dir / ".flaps
 // file system without fallocate) leave no reserve: the last record is then best effort.
 void make_reserve(const fs::path& dir) {
   const fs::path p = reserve_path(dir);
+  // A reserve of a killed command (SIGKILL leaves its own): under the folder's lock every
+  // other one is stale.
+  std::error_code listing;
+  for (const auto& f : fs::directory_iterator(dir, listing)) {
+    const std::string name = f.path().filename().string();
+    if (name.rfind(".flapsim_outputs_reserve.tmp.", 0) == 0 && f.path() != p) {
+      std::error_code ignored;
+      fs::remove(f.path(), ignored);
+    }
+  }
   const int fd = ::open(p.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   int err = fd < 0 ? errno : ::posix_fallocate(fd, 0, kReserveBytes);
   if (fd >= 0) ::close(fd);

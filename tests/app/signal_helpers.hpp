@@ -23,11 +23,13 @@ namespace flapsim::test {
 
 /// Starts `flapsim ARGS`, polls `ready()` every `poll` until it is true (at most `timeout`),
 /// waits `delay` more, sends `signal_number` and returns the exit status: -1 no normal exit,
-/// -2 could not start, -3 ended before the signal.
+/// -2 could not start, -3 ended before the signal, -4 still running `exit_within` after the
+/// signal (then killed; 0: waited for however long it takes).
 template <class Ready>
 int signal_flapsim_when(const std::vector<std::string>& args, Ready ready, int signal_number,
                         std::chrono::milliseconds poll, std::chrono::seconds timeout,
-                        std::chrono::milliseconds delay = std::chrono::milliseconds(0)) {
+                        std::chrono::milliseconds delay = std::chrono::milliseconds(0),
+                        std::chrono::seconds exit_within = std::chrono::seconds(0)) {
   const std::string binary = FLAPSIM_BINARY;
   std::vector<char*> argv{const_cast<char*>(binary.c_str())};
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -43,7 +45,19 @@ int signal_flapsim_when(const std::vector<std::string>& args, Ready ready, int s
   }
   std::this_thread::sleep_for(delay);
   ::kill(pid, signal_number);
-  ::waitpid(pid, &status, 0);
+  if (exit_within.count() > 0) {
+    const auto end = std::chrono::steady_clock::now() + exit_within;
+    while (::waitpid(pid, &status, WNOHANG) != pid) {
+      if (std::chrono::steady_clock::now() > end) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, &status, 0);
+        return -4;
+      }
+      std::this_thread::sleep_for(poll);
+    }
+  } else {
+    ::waitpid(pid, &status, 0);
+  }
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 

@@ -28,8 +28,9 @@ TEST(ProgressLogLines, ALongRunInALogPrintsALineEachIntervalAndTheFinalLine) {
   }
   const std::string out = file_contents(f);
   std::fclose(f);
-  // Three steps each past the interval: three lines, then the final one; no carriage returns.
-  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 4) << out;
+  // Three steps each past the interval: a line for each of the first two, then the final
+  // one (the last step's own line would repeat it); no carriage returns.
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 3) << out;
   EXPECT_EQ(out.find('\r'), std::string::npos);
   EXPECT_EQ(out.rfind("step 1/3  t=0.0100 s  CL=2  (", 0), 0u) << out;
   // The lines before the end say the time left (2 steps left after the first, 1 after the
@@ -52,4 +53,46 @@ TEST(ProgressLogLines, TheTimeLeftScalesTheWallTimeByTheStepsLeft) {
   EXPECT_EQ(ProgressLine::time_left(5.0, 0, 400), "");
   EXPECT_EQ(ProgressLine::time_left(5.0, 400, 400), "");
   EXPECT_EQ(ProgressLine::time_left(0.0, 10, 400), "");
+}
+
+// A step that lasts longer than the log interval (a film's FEM step in many pieces, minutes)
+// shows that it is under way, from the calls between its solves; a short step does not.
+TEST(ProgressLogLines, AStepThatLastsShowsThatItIsUnderWay) {
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  {
+    ProgressLine p(3, f, ProgressLine::Mode::final_only);
+    p.set_log_interval(std::chrono::milliseconds(50));  // 30 s in a real run
+    p.update(1, 0.01, "CL=2");  // the first step done at once: no line yet
+    p.step_under_way();         // step 2 has only begun: nothing
+    std::this_thread::sleep_for(std::chrono::milliseconds(80));
+    p.step_under_way();  // 80 ms into step 2: one line
+    p.step_under_way();  // again at once: nothing
+    p.finish();
+  }
+  const std::string out = file_contents(f);
+  std::fclose(f);
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 2) << out;
+  EXPECT_EQ(out.rfind("step 1/3  t=0.0100 s  CL=2  step 2 under way for 0 s  (", 0), 0u) << out;
+}
+
+// The last step's interval line and the final line were both printed when the last step
+// fell on an interval: the final line alone now.
+TEST(ProgressLogLines, TheLastStepIsPrintedOnce) {
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  {
+    ProgressLine p(2, f, ProgressLine::Mode::final_only);
+    p.set_log_interval(std::chrono::milliseconds(20));
+    std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    p.update(1, 0.01);
+    std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    p.update(2, 0.02);
+    p.finish("mean lift 1 N");
+  }
+  const std::string out = file_contents(f);
+  std::fclose(f);
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 2) << out;
+  EXPECT_EQ(out.find("step 2/2  t=0.0200 s  ("), std::string::npos) << out;
+  EXPECT_NE(out.find("step 2/2  t=0.0200 s  mean lift 1 N  ("), std::string::npos) << out;
 }

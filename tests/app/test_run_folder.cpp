@@ -37,6 +37,18 @@ TEST(RunFolder, AShorterRerunLeavesNoStaleSeriesFiles) {
   EXPECT_NE(read_text(dir / "out" / "flapsim_outputs.toml").find("complete"), std::string::npos);
 }
 
+TEST(RunFolder, ARerunRemovesTheDiskReserveAKilledRunLeft) {
+  // A run killed by SIGKILL leaves its 64 KiB reserve (pipeline/io/output_manifest.cpp); a
+  // rerun into the folder used to keep it for good.
+  ScratchDir dir("run_folder_killed_reserve");
+  std::ofstream(dir / "case.toml") << small_plate_case("rigid", 1, 0);
+  fs::create_directories(dir / "out");
+  std::ofstream(dir / "out" / ".flapsim_outputs_reserve.tmp.999999999") << std::string(1024, '\0');
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
+  EXPECT_EQ(count_files(dir / "out", ".flapsim_outputs_reserve"), 0);
+  EXPECT_TRUE(dir.temporaries().empty());
+}
+
 TEST(RunFolder, RunIntoAReduceFolderNeedsForce) {
   // run -o into a reduce folder replaced reduce's summary.json.
   ScratchDir dir("run_folder_clash");

@@ -11,6 +11,7 @@
 
 #include "fsi/plate_wing_fixtures.hpp"
 #include "pipeline/fsi/fem_structure.hpp"
+#include "pipeline/fsi/stop_request.hpp"
 #include "pipeline/fsi/structure.hpp"
 
 namespace {
@@ -84,6 +85,39 @@ TEST(FemStepHalving, AStepThatFailsWholeIsSolvedInPiecesAsAFinerStepWould) {
   EXPECT_LT(split_error, 1e-9 * kHalvingSpan);  // Newton's tolerance, not the time step's error
   EXPECT_GT(whole_error, 1e-5 * kHalvingSpan);  // the time step's error, for contrast
   EXPECT_GT(excursion, 10.0 * whole_error);
+}
+
+TEST(FemStepHalving, AProgramThatWantsToStopIsAskedBeforeEachPiece) {
+  // A step in many pieces can take minutes (a film's); `flapsim run` registers a check that
+  // throws after SIGINT/SIGTERM (pipeline/fsi/stop_request.hpp). The plate above, Newton
+  // limited to 4 iterations: its first step is tried whole, in 2, 4 and 8 pieces (each
+  // failing within them) and solved in 16, so it asks once for each piece it begins: at
+  // least 1 + 1 + 1 + 1 + 16 = 20 times, at most 1 + 2 + 4 + 8 + 16 = 31 (measured 23);
+  // asked to stop at the 10th question the solve ends there with the check's exception.
+  struct Stop {};
+  const auto model = halving_plate(4);
+  const double dt = 1.0 / (kHalvingFrequency * 20);
+  int asked = 0;
+  {
+    const fsi::ScopedStopCheck counting([&] { ++asked; });
+    auto data = model->make_data();
+    data->initialize(0.0);
+    data->set_external_loads(dt);
+    data->solve(dt);
+    data->accept();
+    EXPECT_EQ(data->max_step_pieces(), 16);
+  }
+  EXPECT_GE(asked, 20);
+  EXPECT_LE(asked, 31);
+  asked = 0;
+  const fsi::ScopedStopCheck stopping([&] {
+    if (++asked == 10) throw Stop{};
+  });
+  auto data = model->make_data();
+  data->initialize(0.0);
+  data->set_external_loads(dt);
+  EXPECT_THROW(data->solve(dt), Stop);
+  EXPECT_EQ(asked, 10);
 }
 
 TEST(FemStepHalving, AStepThatFailsInTheMostPiecesStopsNamingThem) {

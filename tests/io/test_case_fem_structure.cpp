@@ -1,12 +1,14 @@
 // `[structure] kind = "fem"` in a case file (docs/case_file.md, "[structure]"): its keys
 // are read in SI units (gravity as for any structure), and what belongs to the chain
-// (bodies, joint angles, point loads, markers) is refused at its file, line and key.
+// (bodies, joint angles, point loads, markers, a chain file, the chain integrator's
+// substeps) is refused at its file, line and key.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "inline_case.hpp"
 #include "pipeline/io/case_model.hpp"
+#include "pipeline/io/case_summary.hpp"
 #include "wings/input_error.hpp"
 
 namespace p = flapsim::io;
@@ -60,6 +62,9 @@ TEST(CaseFemStructure, WhatBelongsToTheChainIsRefusedAtItsLineAndKey) {
       {kFemHead + "newton_matrix_per_piece = 1\n", 8, "structure.newton_matrix_per_piece"},
       {kFemHead + "[[loads]]\nbody = 1\npoint = [0, 0, 0]\nforce = [0, 0, 1]\n", 9, "loads[0].body"},
       {kFemHead + "[[markers]]\nname = \"tip\"\nbody = 1\npoint = [0, 0, 0]\n", 10, "markers[0].body"},
+      // the chain's file and integrator substeps, which the FEM would read and ignore
+      {"chain = \"valid_tiny_wing.toml\"\n" + kFemHead, 1, "chain"},
+      {kFemHead + "[numerics]\nstructure_substeps = 2\n", 9, "numerics.structure_substeps"},
       // and the FEM's keys in a chain's case
       {kFemHead.substr(0, kFemHead.find("kind")) + "kind = \"flexible\"\nbodies = 3\nelement_size_mm = 1.0\n", 9,
        "structure.element_size_mm"},
@@ -72,4 +77,12 @@ TEST(CaseFemStructure, WhatBelongsToTheChainIsRefusedAtItsLineAndKey) {
     EXPECT_EQ(e.key(), b.key) << b.text << "\n" << e.what();
     EXPECT_EQ(e.file().find("inline_case.toml") != std::string::npos, true) << e.what();
   }
+}
+
+TEST(CaseFemStructure, CheckShowsTheGravityTheStructureCarries) {
+  // `flapsim check` named every [structure] key of a FEM case but gravity, which moves its
+  // drive moments; its summary now shows it (and nothing without it).
+  const std::string with = p::describe_case(case_from_text(kFemHead + "gravity = [0.0, 0.0, -9.81]\n"));
+  EXPECT_NE(with.find("gravity                (0, 0, -9.81) m/s^2, ground frame"), std::string::npos) << with;
+  EXPECT_EQ(p::describe_case(case_from_text(kFemHead)).find("gravity"), std::string::npos);
 }
