@@ -108,21 +108,27 @@ SyntaxErrorContext syntax_error_context(std::string_view text, int line) {
     const std::string t = trim(code);
     std::string value;
     const std::string key = depth == 0 ? key_of(code, &value) : "";
+    const bool header = depth == 0 && !t.empty() && t[0] == '[';  // [table] or [[array of tables]]
+    std::string header_name;
+    if (header) {
+      std::string name = t.substr(t.rfind('[') + 1);
+      name = name.substr(0, name.find(']'));
+      for (char c : name)
+        if (c != ' ' && c != '\t') header_name += c;
+    }
     if (n == line) {
       if (depth > 0) out.key = open_key;
+      else if (header) {
+        if (t.find(']') != std::string::npos) out.key = header_name;  // e.g. a table defined twice
+      }
       else if (!key.empty()) {
         out.key = table.empty() ? key : table + "." + key;
         out.hint = hint_for(value);
       }
       break;
     }
-    if (depth == 0 && !t.empty() && t[0] == '[') {  // a table header
-      std::string name = t.substr(t.rfind('[') + 1);
-      name = name.substr(0, name.find(']'));
-      std::string bare;
-      for (char c : name)
-        if (c != ' ' && c != '\t') bare += c;
-      table = bare;
+    if (header) {
+      table = header_name;
       continue;
     }
     if (!key.empty()) open_key = table.empty() ? key : table + "." + key;

@@ -54,3 +54,14 @@ TEST(TomlSyntaxErrors, ABrokenHeaderHasNoKey) {
   EXPECT_EQ(e.key(), "");
   EXPECT_NE(e.message().find("TOML syntax error"), std::string::npos) << e.what();
 }
+
+// A table defined twice names the table (toml++ says "cannot redefine existing table";
+// before, no key; found by a user's test of case files).
+TEST(TomlSyntaxErrors, ATableDefinedTwiceNamesTheTable) {
+  const auto e = error_of("[structure]\nkind = \"rigid\"\n[numerics]\ncycles = 1\n[structure]\nkind = \"fem\"\n");
+  EXPECT_EQ(e.line(), 5);
+  EXPECT_EQ(e.key(), "structure");
+  const auto v = error_of("[[veins]]\nname = \"a\"\n[ veins ]\n");
+  EXPECT_EQ(v.line(), 3);
+  EXPECT_EQ(v.key(), "veins");
+}
