@@ -295,7 +295,8 @@ bool is_case_document(const TomlTable& root) { return root.has("kinematics"); }
 // low at 10-40 deg); on flapping wings its lift is not converged in the step (the Lua hover:
 // spikes of 3-8 times the mean at reversal).
 void warn_experimental_shedding(const TomlTable& root, Case& c) {
-  if (c.numerics.leading_edge != uvlm::LeadingEdge::Shed) return;
+  // In vacuum (air = "none") there is no lattice and nothing is shed: no warning.
+  if (c.numerics.leading_edge != uvlm::LeadingEdge::Shed || !c.air.enabled) return;
   const auto t = root.find_table("numerics");
   c.warnings.push_back({c.file, t ? t->line_of("leading_edge") : 0, "numerics.leading_edge",
                         "\"shed\" is experimental: verified on a 2-D strip and on a revolving wing at 50-60 deg, "

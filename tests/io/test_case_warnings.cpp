@@ -11,6 +11,7 @@
 // none.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "hover_case_text.hpp"
@@ -56,3 +57,16 @@ TEST(CaseMessages, ARigidWingWithSeveralBodiesSaysWhatToDo) {
 }
 
 }  // namespace
+
+// leading_edge = "shed" is warned about as experimental at its key (pipeline/io/case_file.cpp,
+// warn_experimental_shedding); in vacuum there is no lattice and nothing is shed, so no
+// warning (a user's case with air = "none" was told "shed is experimental").
+TEST(CaseWarnings, TheShedLeadingEdgeIsWarnedAboutInAirOnly) {
+  const auto c = case_from_text(hover_case_text("leading_edge = \"shed\"\n"));
+  const auto shed = std::find_if(c.warnings.begin(), c.warnings.end(),
+                                 [](const auto& w) { return w.key == "numerics.leading_edge"; });
+  ASSERT_NE(shed, c.warnings.end());
+  EXPECT_EQ(shed->line, 10);
+  EXPECT_NE(shed->message.find("\"shed\" is experimental"), std::string::npos) << shed->message;
+  EXPECT_TRUE(case_from_text("air = \"none\"\n" + hover_case_text("leading_edge = \"shed\"\n")).warnings.empty());
+}
