@@ -187,7 +187,7 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
     wing_pvd_->append(t, dir_ / wf);
     io::PolyDataMesh wake = io::wake_mesh(model.lattice, *data.lattice, t);
     if (const Eigen::VectorXd* gamma = cell_scalar(wake, "circulation_m2_s"))
-      circulation_values_.insert(circulation_values_.end(), gamma->begin(), gamma->end());
+      circulation_values_.add(gamma->begin(), gamma->end());
     io::add_step_values(wake, values);
     const auto kf = io::PvdSeries::step_file_name("vtk/wake", step, "vtp");
     io::write_vtp(dir_ / kf, wake, io::Flush::deferred);
@@ -210,7 +210,7 @@ void RunRecorder::record_for_state(const io::PolyDataMesh& frame, long step) {
   const Eigen::VectorXd* values = cell_scalar(frame, "Cp");
   wing_field_ = values ? "Cp" : "pressure_jump_Pa";
   if (!values) values = cell_scalar(frame, wing_field_);
-  if (values) wing_values_.insert(wing_values_.end(), values->begin(), values->end());
+  if (values) wing_values_.add(values->begin(), values->end());
 }
 
 void RunRecorder::publish_series(bool now) {
@@ -232,7 +232,7 @@ void RunRecorder::write_state() const {
   if (length > 0.0) state.length_scale = length;
   // Robust colour ranges: a percentile of |value| over the frames (the extreme is one
   // frame's leading-edge peak; with it the rest of the wing looked grey).
-  std::vector<double> wing = wing_values_, gamma = circulation_values_;
+  std::vector<double> wing = wing_values_.values(), gamma = circulation_values_.values();
   const double wing_range = io::magnitude_percentile(wing, io::kStateColourPercentile);
   const double gamma_range = io::magnitude_percentile(gamma, io::kStateColourPercentile);
   state.wing_field = wing_field_;

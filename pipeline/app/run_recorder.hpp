@@ -17,6 +17,7 @@
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/run_history.hpp"
 #include "pipeline/app/run_results.hpp"
+#include "pipeline/app/thinned_sample.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/csv_writer.hpp"
@@ -111,7 +112,7 @@ class RunRecorder {
   /// it), the wake's |Γ| [m²/s], the field data names of a frame, the wing's (or
   /// chain's) frames for the cameras.
   std::string wing_field_ = "pressure_jump_Pa";
-  std::vector<double> wing_values_, circulation_values_;
+  ThinnedSample wing_values_, circulation_values_;  ///< at most 2²⁰ values each (thinned_sample.hpp)
   std::vector<std::string> frame_fields_;
   io::StateCameraChooser camera_;
   std::vector<StepSample> samples_;

@@ -229,7 +229,9 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
                                    " sub-iterations (structure change " + significant(delta) +
                                    " rad, tolerance " + significant(model.coupling.tolerance) + ")" +
                                    (retry > 0 ? "; tried " + std::to_string(retry + 1) +
-                                                    " times, the structure finer each time"
+                                                    " times, the structure finer each time, at most " +
+                                                    std::to_string(model.coupling.max_iterations) +
+                                                    " a try (numerics.max_coupling_iterations)"
                                               : std::string()) +
                                    (model.coupling.method == CouplingMethod::Aitken
                                         ? std::string("; a light wing may converge with numerics.coupling = "

@@ -143,6 +143,10 @@ std::vector<std::string> shared(const std::vector<std::string>& a, const std::ve
 
 }  // namespace
 
+void remove_command_outputs(const fs::path& dir, const std::string& command) {
+  remove_outputs(dir, command_outputs(command));
+}
+
 std::vector<std::string> command_outputs(const std::string& command) {
   if (command == "mesh") return {"mesh.msh", "mesh.vtu"};
   if (command == "modes") return {"modes.csv", "fem.vtu", "fem_modes.pvsm"};

@@ -29,6 +29,11 @@ inline constexpr const char* kManifestName = "flapsim_outputs.toml";
 /// in its file part ("vtk/wing_*.vtp") for a series.
 std::vector<std::string> command_outputs(const std::string& command);
 
+/// \brief Removes \p command's outputs from \p dir (command_outputs, with temporaries of
+/// them; a series' folder once empty): a folder with no manifest whose command runs again,
+/// as a sweep's case folder. \throws OutputError if one cannot be removed
+void remove_command_outputs(const std::filesystem::path& dir, const std::string& command);
+
 /// \brief Claims \p dir for \p command (see the file comment).
 /// \param command  "mesh", "modes", "reduce" or "run"
 /// \param force    replace another command's outputs that clash with this command's

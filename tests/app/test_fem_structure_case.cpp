@@ -131,3 +131,23 @@ TEST(FemStructureCase, AMeshSizeTheWingFileWouldRefuseIsRefusedAtTheCasesLineAnd
 
 
 }  // namespace
+
+// A coupling that stalls within numerics.max_coupling_iterations is tried again with the
+// structure finer (docs/fsi.md, "A stalled coupling, tried again"); the message counted the
+// sub-iterations of all tries ("did not converge in 3 sub-iterations" at a limit of 1) and
+// did not name the limit. The stiff FEM plate at 8 steps a wingbeat needs 2 a step.
+TEST(FemStructureCase, ACouplingStalledAtItsLimitNamesTheLimitAndTheTries) {
+  test::ScratchDir dir("fem_structure_coupling_limit");
+  std::ofstream(dir / "wing.toml") << test::kStiffPlateWing;
+  std::string text = plate_case("fem");
+  text.replace(text.find("steps_per_cycle = 80"), 20, "steps_per_cycle = 8\nmax_coupling_iterations = 1");
+  std::ofstream(dir / "case.toml") << text;
+  const auto out = test::run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " -q -o " +
+                                                                      (dir / "out").string());
+  EXPECT_EQ(out.status, 3) << out.err;
+  EXPECT_NE(out.err.find("strong coupling did not converge in 3 sub-iterations"), std::string::npos) << out.err;
+  EXPECT_NE(out.err.find("tried 3 times, the structure finer each time, at most 1 a try "
+                         "(numerics.max_coupling_iterations)"),
+            std::string::npos)
+      << out.err;
+}

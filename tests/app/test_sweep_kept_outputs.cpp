@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "app/stiff_plate_wing.hpp"
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 #include "sweep_test_helpers.hpp"
@@ -36,6 +37,45 @@ TEST(SweepKeptOutputs, ARerunAskingForParaViewSeriesRunsTheCasesThatHaveNone) {
   ASSERT_EQ(test::run_flapsim(base + " --vtk-every 4"), 0);
   for (const auto& row : test::read_sweep_table((dir / "out" / "sweep.csv").string()).rows)
     EXPECT_EQ(row.at("message"), "kept") << row.at("folder");
+}
+
+// A case run again (here --force, without --vtk-every) starts from an empty folder: the
+// earlier run's ParaView series stayed beside the new history.csv and summary.json.
+TEST(SweepKeptOutputs, ACaseRunAgainLeavesNoEarlierSeriesBesideItsNewResults) {
+  const test::ScratchDir dir("sweep_rerun_clears");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(8);
+  const std::string base = "sweep " + (dir / "case.toml").string() +
+                           " --vary kinematics.rotation_phase=0,0.1 -j 1 -q -o " + (dir / "out").string();
+  ASSERT_EQ(test::run_flapsim(base + " --vtk-every 4"), 0);
+  ASSERT_TRUE(fs::exists(dir / "out" / "00_0" / "chain.pvd"));
+  ASSERT_EQ(test::run_flapsim(base + " --force"), 0);
+  for (const char* folder : {"00_0", "01_0.1"}) {
+    EXPECT_TRUE(fs::exists(dir / "out" / folder / "summary.json")) << folder;
+    for (const char* stale : {"chain.pvd", "wing.pvd", "wake.pvd", "run.pvsm", "tip_path.vtp", "vtk"})
+      EXPECT_FALSE(fs::exists(dir / "out" / folder / stale)) << folder << " " << stale;
+  }
+}
+
+// The FEM's series is fem.pvd: a FEM sweep run again with --vtk-every looked for chain.pvd,
+// found none, and ran every finished case again (a resumed sweep of films redid them all).
+TEST(SweepKeptOutputs, AFemSweepWithItsSeriesIsKeptWhenRunAgain) {
+  const test::ScratchDir dir("sweep_kept_vtk_fem");
+  std::ofstream(dir / "wing.toml") << test::kStiffPlateWing;
+  std::ofstream(dir / "case.toml")
+      << "name = \"stiff_fem\"\nwing = \"wing.toml\"\n"
+         "[kinematics]\nfrequency_hz = 26.1\nsweep = { mean_deg = 10.0, cos_deg = [20.0] }\n"
+         "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n[structure]\nkind = \"fem\"\n"
+         "[numerics]\nsteps_per_cycle = 8\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 4\n"
+         "core_radius = 0.2\nrho_infinity = 0.0\n";
+  const std::string command = "sweep " + (dir / "case.toml").string() +
+                              " --vary kinematics.rotation_phase=0,0.1 -j 1 -q --vtk-every 4 -o " + (dir / "out").string();
+  ASSERT_EQ(test::run_flapsim(command), 0);
+  for (const auto& row : test::read_sweep_table((dir / "out" / "sweep.csv").string()).rows)
+    EXPECT_TRUE(fs::exists(dir / "out" / row.at("folder") / "fem.pvd")) << row.at("folder");
+  ASSERT_EQ(test::run_flapsim(command), 0);
+  const auto table = test::read_sweep_table((dir / "out" / "sweep.csv").string());
+  ASSERT_EQ(table.rows.size(), 2u);
+  for (const auto& row : table.rows) EXPECT_EQ(row.at("message"), "kept") << row.at("folder");
 }
 
 }  // namespace

@@ -27,6 +27,7 @@
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/folder_lock.hpp"
+#include "pipeline/io/output_manifest.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::sweep {
@@ -131,9 +132,11 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
         kept = kept_results(options.output_dir / rows[i].folder / "summary.json", resolved[i].inputs_hash);
         if (!kept) kept = earlier.adopt(resolved[i].inputs_hash, rows[i].folder);
         // A run asked for its ParaView series (--vtk-every) keeps a case only if the earlier
-        // run wrote them (every run with frames writes chain.pvd): a sweep run again with
-        // --vtk-every to get pictures kept every case and wrote none.
-        if (kept && options.vtk_every > 0 && !std::filesystem::exists(options.output_dir / rows[i].folder / "chain.pvd"))
+        // run wrote them (every run with frames writes its structure's series, chain.pvd, or
+        // fem.pvd for the FEM): a sweep run again with --vtk-every to get pictures kept every
+        // case and wrote none; a FEM sweep's, looked for under chain.pvd, kept none.
+        const char* series = resolved[i].c.structure.kind == io::Case::Structure::Kind::Fem ? "fem.pvd" : "chain.pvd";
+        if (kept && options.vtk_every > 0 && !std::filesystem::exists(options.output_dir / rows[i].folder / series))
           kept.reset();
       }
       if (kept) {
@@ -193,6 +196,9 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       io::ensure_directory(ro.output_dir);
       const io::FolderLock case_lock(ro.output_dir, "sweep");
       io::remove_stale_temporaries(ro.output_dir);  // of a killed run of this case
+      // An earlier run's files of this case (a sweep run again, --force, or a finished case
+      // run again for its series): its ParaView series would stay beside the new history.
+      io::remove_command_outputs(ro.output_dir, "run");
       ro.chain_file = options.chain_file;
       ro.spring_scale = r.spring_scale;
       ro.wing_overrides = r.wing_overrides;
