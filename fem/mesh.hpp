@@ -34,6 +34,12 @@ struct Mesh {
 
   int num_nodes() const { return static_cast<int>(nodes.size()); }
   int num_dofs() const { return kDofsPerNode * num_nodes(); }
+  /// The mean of triangle \p e's three edges [m]: its size, as the mesh's warnings take it.
+  double triangle_mean_edge(std::size_t e) const {
+    const auto& t = triangles[e];
+    return ((nodes[t[1]] - nodes[t[0]]).norm() + (nodes[t[2]] - nodes[t[1]]).norm() +
+            (nodes[t[0]] - nodes[t[2]]).norm()) / 3.0;
+  }
 };
 
 }  // namespace flapsim::fem

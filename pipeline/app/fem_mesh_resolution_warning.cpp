@@ -13,9 +13,7 @@ std::string fem_mesh_resolution_warning(const FsiSetup& setup) {
   const fem::Mesh& mesh = setup.fem_structure->structural.mesh;
   std::vector<double> sizes;  // [m]
   sizes.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    sizes.push_back(((mesh.nodes[t[1]] - mesh.nodes[t[0]]).norm() + (mesh.nodes[t[2]] - mesh.nodes[t[1]]).norm() +
-                     (mesh.nodes[t[0]] - mesh.nodes[t[2]]).norm()) / 3.0);
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) sizes.push_back(mesh.triangle_mean_edge(e));
   if (sizes.empty()) return "";
   const auto median = sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2);
   std::nth_element(sizes.begin(), median, sizes.end());

@@ -20,9 +20,7 @@ std::optional<MembraneWrinkle> typical_membrane_wrinkle(const fem::StructuralMod
   std::vector<MembraneWrinkle> elements;
   elements.reserve(mesh.triangles.size());
   for (std::size_t e = 0; e < mesh.triangles.size() && e < model.shell.size(); ++e) {
-    const auto& t = mesh.triangles[e];
-    const double size = ((mesh.nodes[t[1]] - mesh.nodes[t[0]]).norm() + (mesh.nodes[t[2]] - mesh.nodes[t[1]]).norm() +
-                         (mesh.nodes[t[0]] - mesh.nodes[t[2]]).norm()) / 3.0;
+    const double size = mesh.triangle_mean_edge(e);
     const fem::ShellProperties& p = model.shell[e];
     if (!(size > 0.0) || !(p.thickness > 0.0)) continue;
     elements.push_back({mesh_wrinkle_strain(p.thickness, p.poisson_ratio, size), p.thickness, size});
