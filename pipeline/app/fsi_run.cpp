@@ -84,6 +84,7 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
                        options.spring_scale, started);
   recorder.set_inputs_hash(
       io::input_hash(c, setup.wing ? &*setup.wing : nullptr, options.chain_file, options.spring_scale));
+  if (options.warnings) recorder.set_warnings(options.warnings(setup));
   fsi::FsiData data(setup.model);
   ProgressLine progress(setup.steps, stderr, options.progress);
   // 3. The time loop; a numerical failure still leaves a complete summary.json.

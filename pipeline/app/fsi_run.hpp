@@ -37,6 +37,9 @@ struct RunOptions {
   /// Called with the setup before the recorder creates any file (the resource estimate
   /// of flapsim run); may throw to refuse the run.
   std::function<void(const FsiSetup&)> before_start;
+  /// Called after before_start: the case's warnings in a few words, '; '-separated (a
+  /// sweep's message column), recorded in summary.json as "warnings" when not empty.
+  std::function<std::string(const FsiSetup&)> warnings;
 };
 
 /// \brief Runs a case and writes its outputs into options.output_dir.

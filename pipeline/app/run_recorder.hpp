@@ -56,6 +56,12 @@ class RunRecorder {
   /// \brief Sets the fingerprint of the run's inputs (io::input_hash), reported as inputs_hash.
   void set_inputs_hash(std::string hash) { results_.set("inputs_hash", std::move(hash)); }
 
+  /// \brief Sets the case's warnings in a few words (RunOptions::warnings), reported as
+  /// warnings; none (empty): not reported.
+  void set_warnings(std::string notes) {
+    if (!notes.empty()) results_.set("warnings", std::move(notes));
+  }
+
   /// \brief Records the state after a coupled step (before the wake is shed).
   void record(const fsi::FsiData& data);
 

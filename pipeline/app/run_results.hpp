@@ -82,6 +82,11 @@ inline constexpr auto kRunResults = [] {
                        "what stopped the run: the numerical failure, the output error or the signal (failed and interrupted runs)"},
       ResultDefinition{"status", "", K::text, "", "",
                        "\"ok\"; \"failed\" (exit status 3, or 4 for an output error); \"interrupted\" (SIGINT or SIGTERM, exit status 130 or 143)"},
+      ResultDefinition{"warnings", "", K::text, "", "",
+                       "the case's warnings known before its first step (its case and wing files', its "
+                       "setup's) in a few words, '; '-separated, as sweep.csv's message gives them (set by "
+                       "flapsim sweep when there are any; a sweep run again repeats them in the row of a "
+                       "case it keeps)"},
       ResultDefinition{"steps", "", K::integer, "", "", "time steps completed"},
       ResultDefinition{"time_s", "s", K::number, "%.6g", "", "simulated time reached"},
       // Loads: means over the last cycle (or what was run, if less), trapezoidal rule.
@@ -302,7 +307,8 @@ inline constexpr std::array kSweepColumns = {
                 "e.g. a wing the reduction refuses or a file that cannot be written)"},
     SweepColumn{"message",
                 "why the case failed; \"kept\" for a case whose summary.json from an earlier run matched "
-                "its inputs (not run again); else empty"},
+                "its inputs (not run again); then the case's warnings in a few words (its case and wing "
+                "files', its setup's, a large deflection; a kept case's as its run gave them); else empty"},
     SweepColumn{"rank", "MPI rank that ran the case (0 without mpirun)"},
     SweepColumn{"host", "name of the machine that ran the case"},
 };

@@ -65,7 +65,7 @@ void print_table(const sweep::SweepPlan& plan, const sweep::SweepReport& report)
       std::printf(" %*s", col.width, cell.c_str());
     }
     std::printf("  %s%s\n", r.done ? r.outcome.status.c_str() : "not run",
-                r.outcome.message == "kept" ? " (kept)" : "");
+                sweep::kept_from_earlier_run(r.outcome) ? " (kept)" : "");
   }
 }
 

@@ -36,6 +36,10 @@ struct ResolvedCase {
   std::vector<std::pair<std::string, std::string>> wing_overrides;  ///< (key in the wing file, TOML text)
   double spring_scale = 1.0;
   std::string inputs_hash;  ///< io::input_hash of the case, its wing, chain file and spring factor
+  /// The warnings of the case file and of its wing file with the point's values, in a few
+  /// words for sweep.csv's message: "numerics.far_wake_cycles: far_wake_cycles = 1 in hover is
+  /// outside the measured range 0.5 to 0.625" (a wing key with its "wing." prefix).
+  std::vector<std::string> file_warnings;
 };
 
 /// Where a point's values were written: a row of a `--cases` table (its file, the line of

@@ -21,6 +21,7 @@
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/sweep/earlier_cases.hpp"
+#include "pipeline/app/sweep/keys_that_change_nothing.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/app/sweep/sweep_progress.hpp"
@@ -109,6 +110,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
     try {
       resolved.reserve(n);
       for (std::size_t i = 0; i < n; ++i) resolved.push_back(resolve_case(inputs, plan.points[i], plan.source(i)));
+      refuse_keys_that_change_nothing(inputs, plan, resolved, options.vtk_every);
     } catch (...) {
       share_check(world, false);
       throw;
@@ -141,7 +143,8 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       }
       if (kept) {
         rows[i].done = true;
-        rows[i].outcome = CaseOutcome{"ok", "kept", world.rank(), host, std::move(*kept), 0.0};
+        std::string message = kept_message(*kept);
+        rows[i].outcome = CaseOutcome{"ok", std::move(message), world.rank(), host, std::move(*kept), 0.0};
         ++report.kept;
       } else {
         todo.push_back(i);
@@ -177,11 +180,9 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       std::size_t i;
       ~Ended() { p.ended(i); }
     } ended{progress, i};
-    std::vector<std::string> notes;  // the setup's warnings, in a few words (setup_warnings.hpp)
-    const auto with_notes = [&notes](std::string message) {
-      for (const std::string& n : notes) message += (message.empty() ? "" : "; ") + n;
-      return message;
-    };
+    // The case's warnings in a few words: its files' (with the point's values), its setup's
+    // (setup_warnings.hpp), then after the run a large deflection.
+    std::vector<std::string> notes;
     try {
       // Rank 0 resolved every case; the others resolve the ones they are given.
       std::optional<ResolvedCase> own;
@@ -205,21 +206,26 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       ro.vtk_every = options.vtk_every;
       ro.progress = app::ProgressLine::Mode::quiet;  // the sweep's own line shows the step
       ro.on_step = [&progress, i](long step, long total) { progress.step(i, step, total); };
-      ro.before_start = [&notes, &r](const app::FsiSetup& setup) {
-        for (const std::string& w : app::setup_warnings(r.c, setup)) notes.push_back(app::warning_headline(w));
+      notes = r.file_warnings;
+      // Recorded in summary.json too: a sweep run again gives them in the row of the case it keeps.
+      ro.warnings = [&notes, &r](const app::FsiSetup& setup) {
+        for (const std::string& w : app::setup_warnings(r.c, setup))
+          notes.push_back(app::warning_headline(w));
+        return with_notes("", notes);
       };
       o.overhead_s = std::chrono::duration<double>(Clock::now() - t0).count();  // resolving
       o.results = app::run_case(r.c, ro);
       o.status = "ok";
       if (const std::string deflection = app::large_deflection_note(o.results); !deflection.empty())
         notes.push_back(deflection);
-      o.message = with_notes("");
+      o.message = with_notes("", notes);
     } catch (const app::Interrupted& e) {
       o.status = "interrupted";
       o.message = e.what();  // its summary.json says how far it got; a rerun of the sweep runs it again
     } catch (const NumericalFailure& e) {
       o.status = "failed";
-      o.message = with_notes(e.what());  // no results in the table (nan): its summary.json tells how far it got
+      // No results in the table (nan): its summary.json tells how far it got.
+      o.message = with_notes(e.what(), notes);
     } catch (const io::OutputError& e) {
       o.status = "error";
       o.message = e.what();  // "cannot write '…'": stops the sweep once recorded (below)

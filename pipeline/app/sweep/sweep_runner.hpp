@@ -3,9 +3,11 @@
 /// \brief Runs the cases of a sweep and tabulates them in sweep.csv (docs/sweeps.md).
 ///
 /// 1. Every case is resolved and checked (case file, wing file, chain file) before the
-///    first one starts: a bad value stops the sweep with nothing run.
+///    first one starts: a bad value, or a varied key that changes nothing in the runs
+///    (keys_that_change_nothing.hpp), stops the sweep with nothing run.
 /// 2. Resuming: a case whose folder holds a summary.json with status "ok" and the hash
-///    of the case's inputs (io::input_hash) is kept, not run again (unless `force`).
+///    of the case's inputs (io::input_hash) is kept, not run again (unless `force`); its
+///    row repeats the warnings its run had (kept_message).
 /// 3. The other cases are scheduled dynamically (case_scheduler.hpp) over worker threads
 ///    — and over MPI ranks when launched by mpirun/srun — one case per thread at a time,
 ///    with OpenMP limited to one thread inside a case. Each case writes its own

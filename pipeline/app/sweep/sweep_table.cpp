@@ -5,10 +5,33 @@
 #include <charconv>
 #include <stdexcept>
 
+#include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/io/csv_writer.hpp"
 
 namespace flapsim::sweep {
+
+namespace {
+constexpr std::string_view kKept = "kept";
+}  // namespace
+
+std::string with_notes(std::string message, const std::vector<std::string>& notes) {
+  for (const std::string& note : notes) message += (message.empty() ? "" : "; ") + note;
+  return message;
+}
+
+std::string kept_message(const app::RunResults& earlier) {
+  std::vector<std::string> notes;
+  if (earlier.has("warnings")) notes.push_back(earlier.text("warnings"));
+  if (std::string deflection = app::large_deflection_note(earlier); !deflection.empty())
+    notes.push_back(std::move(deflection));
+  return with_notes(std::string(kKept), notes);
+}
+
+bool kept_from_earlier_run(const CaseOutcome& outcome) {
+  const std::string& m = outcome.message;
+  return m == kKept || m.rfind(std::string(kKept) + "; ", 0) == 0;
+}
 
 std::vector<std::string> sweep_table_header(const std::vector<std::string>& keys) {
   std::vector<std::string> header = keys;

@@ -18,7 +18,7 @@ namespace flapsim::sweep {
 /// How one case of a sweep ended, and where it ran.
 struct CaseOutcome {
   std::string status;       ///< "ok", "failed" (numerical failure), "error" (could not run)
-  std::string message;      ///< the error; "kept" for results kept from an earlier run
+  std::string message;      ///< the error, or "kept" (kept_message); then the case's warnings
   int rank = 0;             ///< MPI rank that ran it (0 without MPI)
   std::string host;         ///< machine that ran it
   app::RunResults results;  ///< the run's results (what summary.json holds)
@@ -31,6 +31,17 @@ struct SweepRow {
   bool done = false;   ///< finished (or kept): has an outcome
   CaseOutcome outcome;
 };
+
+/// \brief \p message followed by each note, "; "-separated: with_notes("", {"a", "b"}) is "a; b".
+std::string with_notes(std::string message, const std::vector<std::string>& notes);
+
+/// \brief The message of a case kept from an earlier run: "kept", then the warnings of that
+/// run as its row gave them (its summary.json's "warnings", a large deflection of its tip),
+/// e.g. "kept; numerics.far_wake_cycles: far_wake_cycles = 1 in hover is outside ...".
+std::string kept_message(const app::RunResults& earlier);
+
+/// \brief Whether the outcome is that of a case kept from an earlier run (kept_message).
+bool kept_from_earlier_run(const CaseOutcome& outcome);
 
 /// \brief The header of sweep.csv for the varied \p keys.
 std::vector<std::string> sweep_table_header(const std::vector<std::string>& keys);

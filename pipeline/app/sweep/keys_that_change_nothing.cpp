@@ -1,0 +1,136 @@
+#include "pipeline/app/sweep/keys_that_change_nothing.hpp"
+
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
+#include <string_view>
+
+#include "wings/input_error.hpp"
+
+namespace flapsim::sweep {
+
+namespace {
+
+// At most this many values are listed in a message.
+constexpr std::size_t kValuesListed = 8;
+
+// The distinct values of the plan's key k, in the order given: "0.3, 0.5".
+std::string values_of(const SweepPlan& plan, std::size_t k) {
+  std::set<double> seen;
+  std::string list;
+  for (const CasePoint& point : plan.points) {
+    if (!seen.insert(point[k].value).second) continue;
+    if (seen.size() > kValuesListed) return list + ", ...";
+    list += (list.empty() ? "" : ", ") + value_label(point[k].value);
+  }
+  return list;
+}
+
+// Refuses key k: "--vary KEY = VALUES: WHY, so the varied values change nothing; INSTEAD",
+// at the case file for --vary values, at the table's header for a column of a case table.
+[[noreturn]] void refuse(const SweepInputs& inputs, const SweepPlan& plan, std::size_t k,
+                         const std::string& why, const std::string& instead) {
+  const std::string& key = plan.keys[k];
+  const bool from_table = !plan.table_file.empty();
+  const std::string given =
+      from_table ? "the column's values " + values_of(plan, k) : "--vary " + key + " = " + values_of(plan, k);
+  const std::string message = given + ": " + why + ", so the varied values change nothing; " + instead;
+  if (from_table) throw InputError(plan.table_file, plan.header_line, key, message);
+  throw InputError(inputs.case_file, 0, key, message);
+}
+
+// A wing-file mesh size that a FEM case's own key replaces (fem_structure_setup.cpp).
+struct MeshSizeOverride {
+  std::string_view wing_key;          ///< the varied key
+  std::string_view case_key;          ///< the case's key that replaces it
+  double io::Case::Structure::*size;  ///< that key's value [m]; 0 when not given
+};
+
+constexpr std::array kMeshSizeOverrides = {
+    MeshSizeOverride{"wing.mesh.element_size", "structure.element_size_mm",
+                     &io::Case::Structure::fem_element_size},
+    MeshSizeOverride{"wing.mesh.vein_element_size", "structure.vein_element_size_mm",
+                     &io::Case::Structure::fem_vein_element_size},
+};
+
+// The override of key k that every case has, if any.
+std::optional<MeshSizeOverride> mesh_size_override(const SweepPlan& plan,
+                                                   const std::vector<ResolvedCase>& cases, std::size_t k) {
+  for (const MeshSizeOverride& o : kMeshSizeOverrides) {
+    if (plan.keys[k] != o.wing_key) continue;
+    for (const ResolvedCase& r : cases)
+      if (r.c.structure.kind != io::Case::Structure::Kind::Fem || !(r.c.structure.*o.size > 0.0))
+        return std::nullopt;
+    return o;
+  }
+  return std::nullopt;
+}
+
+void refuse_mesh_size_the_case_sets(const SweepInputs& inputs, const SweepPlan& plan,
+                                    const std::vector<ResolvedCase>& cases, std::size_t k) {
+  const std::optional<MeshSizeOverride> o = mesh_size_override(plan, cases, k);
+  if (!o || cases.empty()) return;
+  const std::string case_key(o->case_key);
+  const int line = cases.front().c.line_of(case_key);
+  const std::string where = line > 0 ? " (" + inputs.case_file + " line " + std::to_string(line) + ")" : "";
+  refuse(inputs, plan, k, "the case's " + case_key + where + " sets the FEM's mesh",
+         "vary " + case_key + " instead");
+}
+
+void refuse_interval_the_sweep_sets(const SweepInputs& inputs, const SweepPlan& plan, std::size_t k,
+                                    int vtk_every) {
+  if (plan.keys[k] != "output.vtk_every") return;
+  const std::string option = vtk_every > 0 ? "--vtk-every " + std::to_string(vtk_every)
+                                           : std::string("--vtk-every (0 when not given: no series)");
+  refuse(inputs, plan, k,
+         "the sweep's " + option + " sets every case's ParaView series in place of the case's",
+         "give the sweep --vtk-every N instead (one interval for every case)");
+}
+
+// Whether the points that differ only in key k's value all have the same inputs hash (and
+// there is at least one such pair): the key reaches no input of the run.
+bool inputs_never_change_with(const SweepPlan& plan, const std::vector<ResolvedCase>& cases, std::size_t k,
+                              std::string& common_hash) {
+  // The other keys' values -> the key's value -> the inputs hash.
+  std::map<std::vector<double>, std::map<double, const std::string*>> groups;
+  for (std::size_t i = 0; i < plan.points.size(); ++i) {
+    std::vector<double> others;
+    for (std::size_t j = 0; j < plan.points[i].size(); ++j)
+      if (j != k) others.push_back(plan.points[i][j].value);
+    groups[others].emplace(plan.points[i][k].value, &cases[i].inputs_hash);
+  }
+  bool compared = false;
+  for (const auto& [others, hash_of_value] : groups) {
+    if (hash_of_value.size() < 2) continue;
+    compared = true;
+    const std::string& first = *hash_of_value.begin()->second;
+    for (const auto& [value, hash] : hash_of_value)
+      if (*hash != first) return false;
+    common_hash = first;
+  }
+  return compared;
+}
+
+void refuse_key_that_reaches_no_input(const SweepInputs& inputs, const SweepPlan& plan,
+                                      const std::vector<ResolvedCase>& cases, std::size_t k) {
+  std::string hash;
+  if (!inputs_never_change_with(plan, cases, k, hash)) return;
+  refuse(inputs, plan, k,
+         "every value gives the same inputs (the resolved case and wing, inputs_hash " + hash +
+             "): the run does not use the key with the case's other settings",
+         "drop it from the sweep");
+}
+
+}  // namespace
+
+void refuse_keys_that_change_nothing(const SweepInputs& inputs, const SweepPlan& plan,
+                                     const std::vector<ResolvedCase>& cases, int vtk_every) {
+  for (std::size_t k = 0; k < plan.keys.size(); ++k) {
+    refuse_mesh_size_the_case_sets(inputs, plan, cases, k);
+    refuse_interval_the_sweep_sets(inputs, plan, k, vtk_every);
+    refuse_key_that_reaches_no_input(inputs, plan, cases, k);
+  }
+}
+
+}  // namespace flapsim::sweep
