@@ -133,7 +133,9 @@ void compute_bernoulli_loads(const VortexLatticeModel& m, VortexLatticeData& d) 
           detail::panel_gamma_gradient(m, d, i, j, [&](int a, int b) { return ring_gamma(m, d, a, b); });
       d.panel_air_velocity.col(k) = vrel;
       d.panel_gamma_gradient.col(k) = grad;
-      const double dp = d.rho * (vrel.dot(grad) + detail::gamma_rate(m, d, k));
+      const double rate = detail::gamma_rate(m, d, k);  // [m²/s²]
+      const double dp = d.rho * (vrel.dot(grad) + rate);
+      d.loads.unsteady_force.col(k) = d.rho * rate * d.area(k) * n;
       d.loads.force.col(k) = dp * d.area(k) * n + d.loads.leading_edge_force.col(k);
     }
   detail::set_points_of_action(m, d);

@@ -19,7 +19,8 @@ void compute_kutta_joukowski_loads(const VortexLatticeModel& m, VortexLatticeDat
   detail::induced_at_bound_midpoints(m, d, detail::loads_midpoints(LoadMethod::KuttaJoukowski, m, d));  // all of S
 
   for (int k = 0; k < m.panels(); ++k)
-    d.loads.force.col(k) = d.rho * detail::gamma_rate(m, d, k) * d.area(k) * d.normal.col(k);
+    d.loads.unsteady_force.col(k) = d.rho * detail::gamma_rate(m, d, k) * d.area(k) * d.normal.col(k);
+  d.loads.force = d.loads.unsteady_force;
   d.loads.leading_edge_force.setZero();
   auto segment_force = [&](std::size_t s, const Eigen::Vector3d& surface_vel) {
     const Eigen::Vector3d a(S.ax()[s], S.ay()[s], S.az()[s]), b(S.bx()[s], S.by()[s], S.bz()[s]);

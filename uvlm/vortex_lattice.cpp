@@ -109,6 +109,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   loads.point.setZero(3, np);
   loads.point_velocity.setZero(3, np);
   loads.leading_edge_force.setZero(3, np);
+  loads.unsteady_force.setZero(3, np);
   loads.suction.setZero(3, ns);
   loads.pressure_jump.setZero(np);
 }

@@ -222,6 +222,10 @@ struct PanelLoads {
   /// The leading-edge part of `force` (zero off the leading-edge row): the suction in the
   /// panel plane (attached), the same magnitude along the normal (separated), or zero [N].
   Eigen::Matrix3Xd leading_edge_force;
+  /// The ρ (∂Γ/∂t) A n part of `force` (the pressure's unsteady term; with the first-order
+  /// rate its impulse over the step is ρ (Γₙ₊₁ − Γₙ) A n): a structure that splits the step
+  /// holds it over the step rather than interpolating it (pipeline/fsi/fem_structure.hpp) [N]
+  Eigen::Matrix3Xd unsteady_force;
   /// Suction of each strip, 3 × ns: the in-plane Kutta–Joukowski forces on its spanwise
   /// bound segments summed, before the leading-edge model acts on it [N]
   Eigen::Matrix3Xd suction;

@@ -98,17 +98,23 @@ void fem_surface_nodes(const FemAttachment& attachment, const fem::Mesh& mesh,
 void add_panel_loads_to_fem(const FemAttachment& attachment, const fem::Mesh& mesh,
                             const Eigen::Matrix3Xd& fem_positions, const uvlm::PanelLoads& panels,
                             Eigen::VectorXd& nodal_loads) {
-  const Eigen::Index np = panels.force.cols();
-  if (static_cast<std::size_t>(np) != attachment.panels.size() ||
+  add_panel_forces_to_fem(attachment, mesh, fem_positions, panels.force, panels.point, nodal_loads);
+}
+
+void add_panel_forces_to_fem(const FemAttachment& attachment, const fem::Mesh& mesh,
+                             const Eigen::Matrix3Xd& fem_positions, const Eigen::Matrix3Xd& forces,
+                             const Eigen::Matrix3Xd& points, Eigen::VectorXd& nodal_loads) {
+  const Eigen::Index np = forces.cols();
+  if (static_cast<std::size_t>(np) != attachment.panels.size() || points.cols() != np ||
       nodal_loads.size() != fem::kDofsPerNode * attachment.num_fem_nodes)
     throw std::invalid_argument("add_panel_loads_to_fem: panel or node count does not match the attachment");
   for (Eigen::Index p = 0; p < np; ++p) {
     const ShellPoint& s = attachment.panels[static_cast<std::size_t>(p)];
     const auto& tri = mesh.triangles[static_cast<std::size_t>(s.triangle)];
-    const Eigen::Vector3d f = panels.force.col(p);
+    const Eigen::Vector3d f = forces.col(p);
     Eigen::Vector3d foot = Eigen::Vector3d::Zero();
     for (int k = 0; k < 3; ++k) foot += s.weights[static_cast<std::size_t>(k)] * node_of(fem_positions, tri[k]);
-    const Eigen::Vector3d offset_moment = (panels.point.col(p) - foot).cross(f) / 3.0;
+    const Eigen::Vector3d offset_moment = (points.col(p) - foot).cross(f) / 3.0;
     for (int k = 0; k < 3; ++k) {
       const int base = fem::dof_index(tri[k], fem::UX);
       nodal_loads.segment<3>(base) += s.weights[static_cast<std::size_t>(k)] * f;

@@ -72,4 +72,10 @@ void add_panel_loads_to_fem(const FemAttachment& attachment, const fem::Mesh& me
                             const Eigen::Matrix3Xd& fem_positions, const uvlm::PanelLoads& panels,
                             Eigen::VectorXd& nodal_loads);
 
+/// \brief The same for given panel forces [N] acting at given points [m] (3 × panels each),
+/// e.g. a part of the panels' loads (uvlm::PanelLoads::unsteady_force).
+void add_panel_forces_to_fem(const FemAttachment& attachment, const fem::Mesh& mesh,
+                             const Eigen::Matrix3Xd& fem_positions, const Eigen::Matrix3Xd& forces,
+                             const Eigen::Matrix3Xd& points, Eigen::VectorXd& nodal_loads);
+
 }  // namespace flapsim::fsi

@@ -72,6 +72,7 @@ void FemStructureData::initialize(double t0) {
   }
   set_external_loads(t0);
   accepted_loads_ = loads_;
+  accepted_unsteady_loads_ = unsteady_loads_;
   pieces_ = 1;
   steps_without_failure_ = 0;
   failed_this_step_ = false;
@@ -101,12 +102,16 @@ void FemStructureData::set_external_loads(double) {
     loads_ = model_.gravity_loads;
   else
     loads_.setZero();
+  unsteady_loads_.setZero(loads_.size());
 }
 
 void FemStructureData::add_panel_loads(const uvlm::PanelLoads& panels) {
   loads_velocity_ = pose_is_trial_ ? trial_v_ : iterate_v_;
-  add_panel_loads_to_fem(model_.attachment, model_.structural.mesh, pose_is_trial_ ? trial_x_ : iterate_x_, panels,
-                         loads_);
+  const Eigen::Matrix3Xd& x = pose_is_trial_ ? trial_x_ : iterate_x_;
+  add_panel_loads_to_fem(model_.attachment, model_.structural.mesh, x, panels, loads_);
+  if (panels.unsteady_force.cols() > 0)  // loads made without it (tests, a predictor) have none
+    add_panel_forces_to_fem(model_.attachment, model_.structural.mesh, x, panels.unsteady_force, panels.point,
+                            unsteady_loads_);
 }
 
 void FemStructureData::prescribe(double) {
@@ -154,9 +159,10 @@ bool FemStructureData::solve_in_pieces(double dt, int pieces, std::string& failu
     const double t = k == pieces ? t0 + dt : t0 + k * h;
     const fem::PrescribedMotion motion = clamp_motion(model_, t);
     const Eigen::VectorXd* f = &loads_;
-    if (k < pieces) {  // loads linear in time over the step, from the accepted step's
+    if (k < pieces) {  // see fem_structure.hpp, "Step halving"
       const double s = static_cast<double>(k) / pieces;
-      piece_loads_ = accepted_loads_ + s * (loads_ - accepted_loads_);
+      piece_loads_ = accepted_loads_ + s * (loads_ - accepted_loads_) +
+                     (1.0 - s) * (unsteady_loads_ - accepted_unsteady_loads_);
       f = &piece_loads_;
     }
     // A sub-iteration after the first starts Newton from the last answer of this step (of
@@ -261,6 +267,7 @@ void FemStructureData::accept() {
   accepted_ = Saved{dynamics_->state, dynamics_->velocity, dynamics_->acceleration, dynamics_->pseudo_acceleration,
                     dynamics_->time};
   accepted_loads_ = loads_;
+  accepted_unsteady_loads_ = unsteady_loads_;
   if (pieces_ > 1) ++split_steps_;
   max_pieces_ = std::max(max_pieces_, pieces_);
   steps_without_failure_ = failed_this_step_ ? 0 : steps_without_failure_ + 1;

@@ -18,7 +18,14 @@
 ///
 /// Step halving: a step whose Newton fails is redone in 2, 4, … up to kMaxFemStepPieces equal
 /// pieces, the loads interpolated linearly in time from the accepted step's to the new ones
-/// (the clamp driven at each piece's end). A thin film wrinkles under compression faster than
+/// (the clamp driven at each piece's end) except for their unsteady part, the pressure's
+/// ρ (∂Γ/∂t) A n (uvlm::PanelLoads::unsteady_force), which each piece takes as the new step's:
+/// it is the step's mean rate (Γₙ₊₁ − Γₙ)/Δt with the first-order rate, so held over the step
+/// its impulse is the air's added mass times the step's change of velocity, where interpolated
+/// from the last step's rate it lags half a step, and on a wing as light as its added mass
+/// (μ = m_a/m ≫ 1) the lag made a sawtooth of period 2Δt that decays by only μ/(2 + μ) a
+/// step (docs/fsi.md, "Split steps: the unsteady load held"). A step solved whole takes its
+/// loads at its end, as generalized-α does. A thin film wrinkles under compression faster than
 /// a coupled step (its tangent turns indefinite at the mesh's wavelength: docs/fsi.md, "Film
 /// wings"); in a shorter piece the step's inertia c_M ρt ∝ 1/h² weighs more against the
 /// negative geometric stiffness and Newton converges (with ρ∞ = 0, which damps the film's
@@ -167,6 +174,8 @@ class FemStructureData : public StructureData {
   Eigen::VectorXd loads_;                  ///< nodal loads of the next solve [N, N m]
   Eigen::VectorXd accepted_loads_;         ///< the accepted step's loads [N, N m]
   Eigen::VectorXd piece_loads_;            ///< one piece's loads (interpolated) [N, N m]
+  Eigen::VectorXd unsteady_loads_;         ///< the part of loads_ from the pressure's ρ ∂Γ/∂t [N, N m]
+  Eigen::VectorXd accepted_unsteady_loads_;  ///< the accepted step's [N, N m]
   int pieces_ = 1;                         ///< pieces of the current step's solves
   int steps_without_failure_ = 0;          ///< accepted steps since a solve last failed
   bool failed_this_step_ = false;          ///< a solve of the current step needed more pieces
