@@ -11,6 +11,19 @@
 
 namespace flapsim::app {
 
+ModeResonance strongest_resonance(const std::vector<double>& mode_hz, double f) {
+  ModeResonance out;
+  for (std::size_t i = 0; i < mode_hz.size(); ++i)
+    for (int n = 1; n <= 2; ++n) {
+      const double r = n * f / mode_hz[i];
+      const double a = 1.0 / std::abs(1.0 - r * r);
+      if (a > out.amplification) out = {static_cast<int>(i), n, mode_hz[i], a};
+    }
+  return out;
+}
+
+double highest_resonant_mode_hz(double f) { return 2.0 * f / std::sqrt(1.0 - 1.0 / kResonantAmplification); }
+
 std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
   const mbd::ChainModel& chain = setup.chain();
   if (c.structure.kind != io::Case::Structure::Kind::Flexible || chain.num_dofs() == 0) return "";
@@ -22,21 +35,12 @@ std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
   }
   const double f = c.kinematics.frequency;
   if (modes.empty() || modes.front().frequency_hz < f) return "";
-  // The mode and harmonic with the largest amplification.
-  double amplification = 0.0, mode_hz = 0.0;
-  int mode = -1, harmonic = 0;
-  for (std::size_t i = 0; i < modes.size(); ++i)
-    for (int n = 1; n <= 2; ++n) {
-      const double r = n * f / modes[i].frequency_hz;
-      const double a = 1.0 / std::abs(1.0 - r * r);
-      if (a > amplification) {
-        amplification = a;
-        mode = static_cast<int>(i);
-        harmonic = n;
-        mode_hz = modes[i].frequency_hz;
-      }
-    }
-  if (!(amplification >= kResonantAmplification)) return "";
+  std::vector<double> mode_hz;
+  for (const reduction::ChainMode& m : modes) mode_hz.push_back(m.frequency_hz);
+  const ModeResonance near = strongest_resonance(mode_hz, f);
+  if (!(near.amplification >= kResonantAmplification)) return "";
+  const int mode = near.mode, harmonic = near.harmonic;
+  const double mode_hz_near = near.mode_hz, amplification = near.amplification;
   char text[900];
   std::snprintf(text, sizeof text,
                 "the chain's mode %d (%s), %.3g Hz, lies near %s %.3g Hz (mode / drive = %.3g): an undamped "
@@ -45,9 +49,9 @@ std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
                 "plate, first bending 21.6 Hz, at a 20 Hz wingbeat: mean CL -0.16, rigid 3.0; at 0.2 mm, "
                 "43 Hz: 5.4). Look at the run's peak_tip_bend_deg and peak_tip_twist_deg (summary.json), "
                 "or move the frequency or the stiffness away from resonance (docs/case_file.md, \"Warnings\")",
-                mode + 1, modes[static_cast<std::size_t>(mode)].is_bending() ? "bending" : "torsion", mode_hz,
+                mode + 1, modes[static_cast<std::size_t>(mode)].is_bending() ? "bending" : "torsion", mode_hz_near,
                 harmonic == 1 ? "the wingbeat frequency" : "twice the wingbeat frequency", harmonic * f,
-                mode_hz / (harmonic * f), amplification, kResonantAmplification);
+                mode_hz_near / (harmonic * f), amplification, kResonantAmplification);
   return text;
 }
 

@@ -6,6 +6,7 @@
 /// (A chain whose first mode lies below the wingbeat: soft_chain_warning, fsi_setup.hpp.)
 
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -25,6 +26,25 @@ inline constexpr double kResonantAmplification = 2.0;
 /// the joint springs come from the linear (small-rotation) FEM of the wing; at 30°
 /// sin θ / θ = 0.955, the small-rotation assumption is off by about 5 %. A convention.
 inline constexpr double kLargeTipDeflectionDeg = 30.0;
+
+/// The mode and harmonic of the largest dynamic amplification (strongest_resonance).
+struct ModeResonance {
+  int mode = -1;               ///< 0-based index into the modes given; -1: none
+  int harmonic = 0;            ///< n: driven at n f (1 or 2)
+  double mode_hz = 0.0;        ///< the mode's frequency f_i [Hz]
+  double amplification = 0.0;  ///< 1 / |1 − (n f / f_i)²|
+};
+
+/// \brief Of the modes' frequencies \p mode_hz [Hz] and the harmonics n = 1, 2 of the
+/// wingbeat frequency \p f [Hz], the pair of largest amplification 1 / |1 − (n f / f_i)²|
+/// (the first such pair on a tie; mode −1 when there is no mode). Near resonance when
+/// amplification ≥ kResonantAmplification: f_i within 0.82…1.41 f or 1.63…2.83 f.
+ModeResonance strongest_resonance(const std::vector<double>& mode_hz, double f);
+
+/// \brief The highest mode frequency [Hz] that can lie near resonance at a wingbeat of \p f
+/// [Hz]: 2 f / √(1 − 1/kResonantAmplification) = 2.83 f (above it, the amplification at 2 f
+/// is below kResonantAmplification, and at f lower still).
+double highest_resonant_mode_hz(double f);
 
 /// \brief "" or the warning for a flexible chain with a mode whose dynamic amplification
 /// at the wingbeat frequency f or at 2 f (the lift's and the inertial loads' main

@@ -3,10 +3,10 @@
 /// \brief The warnings about a case that need its built setup (the chain, the wing), in
 /// the order `check`, `run` and `sweep` report them: a tip beyond Mach 0.3, a chain file
 /// that does not match the wing, a chain file that misses its wing's FEM modes (as reduce
-/// found), a chain driven above or near its resonance, a chain the flapping's inertia alone
-/// bends beyond 30°, a coupling tolerance below the single-precision wake sums' floor, an
-/// FEM membrane that wrinkles at its mesh's scale (a thin film), an FEM mesh with fewer than
-/// four elements across the chord.
+/// found), a chain driven above or near its resonance, an FEM near its resonance, a chain
+/// the flapping's inertia alone bends beyond 30°, a coupling tolerance below the
+/// single-precision wake sums' floor, an FEM membrane that wrinkles at its mesh's scale (a
+/// thin film), an FEM mesh with fewer than four elements across the chord.
 
 #include <string>
 #include <vector>
