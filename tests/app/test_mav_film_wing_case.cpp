@@ -84,8 +84,9 @@ TEST(MavFilmWingCase, TheFirstDesignWithA25MicrometreFilmIsWarnedNearResonance) 
 }
 
 // Its FEM case takes the first-order ∂Γ/∂t into its lattice (numerics.circulation_rate =
-// "bdf1": with BDF2 the 25 µm film's lift grew a sawtooth at 160 steps a wingbeat, docs/fsi.md
-// "Film wings"); the 75 mm film wing's case keeps the default BDF2.
+// "bdf1": chosen when BDF2 grew a sawtooth at 160 steps a wingbeat, and its convergence was
+// measured with it; docs/fsi.md "Film wings", "Split steps: the unsteady load held"); the 75
+// mm film wing's case keeps the default BDF2.
 TEST(MavFilmWingCase, TheFemCaseTakesTheFirstOrderCirculationRateIntoItsLattice) {
   const flapsim::io::Case mav = flapsim::io::load_case_file(kSource + "/cases/mav_film_wing_25um_fem.toml");
   EXPECT_EQ(mav.numerics.circulation_rate, flapsim::io::CirculationRate::Bdf1);
