@@ -85,8 +85,8 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"warnings", "", K::text, "", "",
                        "the case's warnings known before its first step (its case and wing files', its "
                        "setup's) in a few words, '; '-separated, as sweep.csv's message gives them (set by "
-                       "flapsim sweep when there are any; a sweep run again repeats them in the row of a "
-                       "case it keeps)"},
+                       "flapsim run and flapsim sweep when there are any; a sweep run again repeats them in "
+                       "the row of a case it keeps)"},
       ResultDefinition{"steps", "", K::integer, "", "", "time steps completed"},
       ResultDefinition{"time_s", "s", K::number, "%.6g", "", "simulated time reached"},
       // Loads: means over the last cycle (or what was run, if less), trapezoidal rule.

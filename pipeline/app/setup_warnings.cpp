@@ -25,4 +25,18 @@ std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup
 
 std::string warning_headline(const std::string& warning) { return warning.substr(0, warning.find(": ")); }
 
+std::vector<std::string> file_warning_notes(const io::Case& c, const wings::Wing* wing) {
+  std::vector<std::string> notes;
+  for (const InputWarning& w : c.warnings) notes.push_back(w.key + ": " + warning_headline(w.message));
+  if (wing != nullptr)
+    for (const InputWarning& w : wing->warnings) notes.push_back("wing." + w.key + ": " + warning_headline(w.message));
+  return notes;
+}
+
+std::string join_notes(const std::vector<std::string>& notes) {
+  std::string joined;
+  for (const std::string& note : notes) joined += (joined.empty() ? "" : "; ") + note;
+  return joined;
+}
+
 }  // namespace flapsim::app

@@ -24,4 +24,14 @@ std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup
 /// the wingbeat frequency 20 Hz (mode / drive = 1.08)".
 std::string warning_headline(const std::string& warning);
 
+/// \brief The case file's and the wing file's warnings in a few words, each named by its key
+/// as `flapsim sweep` names keys: "numerics.far_wake_cycles: far_wake_cycles = 1 in hover is
+/// outside …", "wing.materials.pet.density: 5 kg/m³ is below …" (the warning up to its
+/// first ": "); \p wing may be null.
+std::vector<std::string> file_warning_notes(const io::Case& c, const wings::Wing* wing);
+
+/// \brief Notes, "; "-separated: join_notes({"a", "b"}) is "a; b" (summary.json's
+/// "warnings", sweep.csv's message).
+std::string join_notes(const std::vector<std::string>& notes);
+
 }  // namespace flapsim::app

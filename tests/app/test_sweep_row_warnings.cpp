@@ -73,4 +73,23 @@ TEST(SweepRowWarnings, AKeptRowCarriesTheWarningsItsRunHad) {
   EXPECT_EQ(test::read_text(dir / "out" / "01_1" / "summary.json"), summary);  // not run again
 }
 
+TEST(RunSummaryWarnings, ARunRecordsItsWarningsInItsSummaryAsASweepRowGivesThem) {
+  // `flapsim run` of the tiny plate with far_wake_cycles = 1 in hover: its summary.json's
+  // "warnings" is the sweep row's note above (the same words for the same case); without a
+  // warning the entry is absent (run_recorder.hpp: set only when there are any).
+  const test::ScratchDir dir("run_summary_warnings");
+  std::string text = test::tiny_plate_case(12);
+  std::ofstream(dir / "plain.toml") << text;
+  const auto at = text.find("[numerics]");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + std::string("[numerics]").size(), "\nfar_wake_cycles = 1");
+  std::ofstream(dir / "warned.toml") << text;
+  for (const std::string name : {"plain", "warned"})
+    ASSERT_EQ(test::run_flapsim("run " + (dir / (name + ".toml")).string() + " -q -o " + (dir / name).string()), 0)
+        << name;
+  const std::string warned = test::read_text(dir / "warned" / "summary.json");
+  EXPECT_NE(warned.find("\"warnings\": \"" + kFarWakeNote + "\""), std::string::npos) << warned;
+  EXPECT_EQ(test::read_text(dir / "plain" / "summary.json").find("\"warnings\""), std::string::npos);
+}
+
 }  // namespace

@@ -58,6 +58,7 @@ void run_command(const RunArgs& a) {
   if (a.quiet) watch.display = app::StageMonitor::Options::Display::quiet;
   app::StageMonitor setup_watch(claim, 1, watch);
   setup_watch.stage(app::setup_stage_name(c, a.chain_file));
+  std::vector<std::string> setup_notes;  // the setup's warnings' headlines
   options.before_start = [&](const app::FsiSetup& setup) {
     app::record_interrupt(setup_watch.done());
     app::throw_if_interrupted("during the run's setup; nothing was written");
@@ -68,9 +69,17 @@ void run_command(const RunArgs& a) {
         estimate.seconds > app::kVeryLongRunSeconds)
       std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
     app::refuse_if_it_cannot_fit(estimate, c);
-    for (const std::string& w : app::setup_warnings(c, setup))
+    for (const std::string& w : app::setup_warnings(c, setup)) {
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
+      setup_notes.push_back(app::warning_headline(w));
+    }
     claim.claim(a.force);
+  };
+  // summary.json's "warnings": the files' and the setup's, as a sweep's row gives them.
+  options.warnings = [&](const app::FsiSetup& setup) {
+    std::vector<std::string> notes = app::file_warning_notes(c, setup.wing ? &*setup.wing : nullptr);
+    notes.insert(notes.end(), setup_notes.begin(), setup_notes.end());
+    return app::join_notes(notes);
   };
   app::RunResults results;
   try {

@@ -146,20 +146,6 @@ void check_like_run(const SweepInputs& inputs, const ResolvedCase& r) {
   app::refuse_if_it_cannot_fit(app::estimate_run(c, bodies), c);
 }
 
-// A file's warning in a few words, named by its key as the sweep names keys: "KEY: what it
-// found" (the warning up to its first ": ", as the setup's warnings are given).
-std::string warning_note(const InputWarning& w, std::string_view key_prefix) {
-  return std::string(key_prefix) + w.key + ": " + app::warning_headline(w.message);
-}
-
-std::vector<std::string> file_warning_notes(const io::Case& c, const std::optional<wings::Wing>& wing) {
-  std::vector<std::string> notes;
-  for (const InputWarning& w : c.warnings) notes.push_back(warning_note(w, ""));
-  if (wing)
-    for (const InputWarning& w : wing->warnings) notes.push_back(warning_note(w, kWingPrefix));
-  return notes;
-}
-
 }  // namespace
 
 KeyTarget key_target(const std::string& key) {
@@ -203,7 +189,7 @@ ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point, con
   try {
     const auto wing = app::load_case_wing(r.c, r.wing_overrides);
     r.inputs_hash = io::input_hash(r.c, wing ? &*wing : nullptr, inputs.chain_file, r.spring_scale);
-    r.file_warnings = file_warning_notes(r.c, wing);
+    r.file_warnings = app::file_warning_notes(r.c, wing ? &*wing : nullptr);
   } catch (const OverrideInputError& e) {
     if (const Assignment* a = column_of(point, e, false))
       fail_column(inputs, point, source, a->key, e.concerns_the_key(), e, e.detail());

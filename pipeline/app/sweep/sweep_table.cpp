@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "pipeline/app/flexibility_warnings.hpp"
+#include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/io/csv_writer.hpp"
 
@@ -16,8 +17,9 @@ constexpr std::string_view kKept = "kept";
 }  // namespace
 
 std::string with_notes(std::string message, const std::vector<std::string>& notes) {
-  for (const std::string& note : notes) message += (message.empty() ? "" : "; ") + note;
-  return message;
+  const std::string joined = app::join_notes(notes);
+  if (message.empty() || joined.empty()) return message + joined;
+  return message + "; " + joined;
 }
 
 std::string kept_message(const app::RunResults& earlier) {
