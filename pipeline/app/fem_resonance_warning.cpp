@@ -46,9 +46,6 @@ std::string fem_near_resonance_warning(const io::Case& c, const FsiSetup& setup)
   const ModeResonance near = strongest_resonance(modes.frequencies_hz, f);
   if (near.mode < 0 || !(near.amplification >= kResonantAmplification)) return "";
   const auto kind = [&](int mode) { return fem::to_string(modes.kinds[static_cast<std::size_t>(mode)]); };
-  const auto drive = [](int harmonic) {
-    return harmonic == 1 ? "the wingbeat frequency" : "twice the wingbeat frequency";
-  };
   // The FEM's other modes within the band (each lies near one harmonic at most: the bands
   // of f and 2 f do not overlap), lowest first, at most kListed of them.
   constexpr int kListed = 3;
@@ -66,7 +63,7 @@ std::string fem_near_resonance_warning(const io::Case& c, const FsiSetup& setup)
     char line[200];
     std::snprintf(line, sizeof line, "%s mode %d (%s shape), %.4g Hz, near %s (mode / drive = %.3g, %.2g times)",
                   others.empty() ? "" : ";", static_cast<int>(i) + 1, kind(static_cast<int>(i)).c_str(),
-                  other.mode_hz, drive(other.harmonic), other.mode_hz / (other.harmonic * f), other.amplification);
+                  other.mode_hz, other.drive(), other.mode_hz / (other.harmonic * f), other.amplification);
     others += line;
   }
   if (unlisted > 0) others += "; and " + std::to_string(unlisted) + " more";
@@ -80,7 +77,7 @@ std::string fem_near_resonance_warning(const io::Case& c, const FsiSetup& setup)
                 "150 Hz: its tip bent past 75 deg within a fifth of a wingbeat). Look at the run's "
                 "peak_tip_bend_deg and peak_tip_twist_deg (summary.json), or move the frequency or the "
                 "stiffness away from resonance (docs/case_file.md, \"Warnings\")",
-                near.mode + 1, kind(near.mode).c_str(), near.mode_hz, drive(near.harmonic), near.harmonic * f,
+                near.mode + 1, kind(near.mode).c_str(), near.mode_hz, near.drive(), near.harmonic * f,
                 near.mode_hz / (near.harmonic * f), near.amplification, kResonantAmplification,
                 others.empty() ? "" : " Also in the band:", others.empty() ? "" : (others + ".").c_str());
   return text;

@@ -6,7 +6,7 @@
 /// uses (the case's element sizes), by the modal solver of `flapsim modes`
 /// (fem/modal_solver.hpp). A 13 mm wing of a 4 µm membrane (tests/data/
 /// bumblebee_forewing_4um.toml), its first mode 186.5 Hz, flapped at 150 Hz on its FEM: its
-/// tip bent past 75° within a sixth of a wingbeat, and nothing warned; the chain of the same
+/// tip bent past 75° within a fifth of a wingbeat, and nothing warned; the chain of the same
 /// wing was warned.
 
 #include <string>

@@ -39,8 +39,6 @@ std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
   for (const reduction::ChainMode& m : modes) mode_hz.push_back(m.frequency_hz);
   const ModeResonance near = strongest_resonance(mode_hz, f);
   if (!(near.amplification >= kResonantAmplification)) return "";
-  const int mode = near.mode, harmonic = near.harmonic;
-  const double mode_hz_near = near.mode_hz, amplification = near.amplification;
   char text[900];
   std::snprintf(text, sizeof text,
                 "the chain's mode %d (%s), %.3g Hz, lies near %s %.3g Hz (mode / drive = %.3g): an undamped "
@@ -49,9 +47,9 @@ std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
                 "plate, first bending 21.6 Hz, at a 20 Hz wingbeat: mean CL -0.16, rigid 3.0; at 0.2 mm, "
                 "43 Hz: 5.4). Look at the run's peak_tip_bend_deg and peak_tip_twist_deg (summary.json), "
                 "or move the frequency or the stiffness away from resonance (docs/case_file.md, \"Warnings\")",
-                mode + 1, modes[static_cast<std::size_t>(mode)].is_bending() ? "bending" : "torsion", mode_hz_near,
-                harmonic == 1 ? "the wingbeat frequency" : "twice the wingbeat frequency", harmonic * f,
-                mode_hz_near / (harmonic * f), amplification, kResonantAmplification);
+                near.mode + 1, modes[static_cast<std::size_t>(near.mode)].is_bending() ? "bending" : "torsion",
+                near.mode_hz, near.drive(), near.harmonic * f, near.mode_hz / (near.harmonic * f),
+                near.amplification, kResonantAmplification);
   return text;
 }
 

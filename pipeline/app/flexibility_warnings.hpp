@@ -33,6 +33,8 @@ struct ModeResonance {
   int harmonic = 0;            ///< n: driven at n f (1 or 2)
   double mode_hz = 0.0;        ///< the mode's frequency f_i [Hz]
   double amplification = 0.0;  ///< 1 / |1 − (n f / f_i)²|
+  /// n f in words, for the warnings: "the wingbeat frequency" or "twice the wingbeat frequency".
+  const char* drive() const { return harmonic == 1 ? "the wingbeat frequency" : "twice the wingbeat frequency"; }
 };
 
 /// \brief Of the modes' frequencies \p mode_hz [Hz] and the harmonics n = 1, 2 of the

@@ -109,7 +109,7 @@ void FemStructureData::add_panel_loads(const uvlm::PanelLoads& panels) {
   loads_velocity_ = pose_is_trial_ ? trial_v_ : iterate_v_;
   const Eigen::Matrix3Xd& x = pose_is_trial_ ? trial_x_ : iterate_x_;
   add_panel_loads_to_fem(model_.attachment, model_.structural.mesh, x, panels, loads_);
-  if (panels.unsteady_force.cols() > 0)  // loads made without it (tests, a predictor) have none
+  if (panels.unsteady_force.cols() > 0)  // panel loads made by hand (tests) may have none
     add_panel_forces_to_fem(model_.attachment, model_.structural.mesh, x, panels.unsteady_force, panels.point,
                             unsteady_loads_);
 }
