@@ -14,16 +14,17 @@
 #include <thread>
 
 #include "pipeline/app/interruption.hpp"
+#include "pipeline/app/optimize/bounds_check.hpp"
 #include "pipeline/app/optimize/optimize_report.hpp"
+#include "pipeline/app/optimize/optimum_case.hpp"
+#include "pipeline/app/optimize/point_evaluator.hpp"
 #include "pipeline/app/optimize/start_points.hpp"
+#include "pipeline/app/run_results.hpp"
 #include "pipeline/app/sweep/case_scheduler.hpp"
 #include "pipeline/app/sweep/mpi_world.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/app/sweep/sweep_table.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
-#include "pipeline/app/optimize/optimum_case.hpp"
-#include "pipeline/app/optimize/point_evaluator.hpp"
-#include "pipeline/app/run_results.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "pipeline/io/folder_lock.hpp"
@@ -34,23 +35,6 @@ namespace flapsim::optimize {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-sweep::CasePoint point_of(const Problem& p, const std::vector<double>& x) {
-  sweep::CasePoint point;
-  for (std::size_t i = 0; i < p.bounds.size(); ++i) point.push_back({p.bounds[i].key, x[i]});
-  return point;
-}
-
-// A point that does not resolve is a bad --vary (a key the case does not have, a bound
-// that makes an invalid case): the message names the option and keeps the file's words.
-void check_resolves(const PointEvaluator& evaluator, const sweep::CasePoint& point) {
-  try {
-    (void)evaluator.resolve(point);
-  } catch (const InputError& e) {
-    throw InputError(e.file(), e.line(), "--vary",
-                     (e.key().empty() ? "" : "key '" + e.key() + "': ") + e.message());
-  }
-}
 
 // A constraint's violation scaled by its limit (order one for COBYLA's linear models).
 double scaled_violation(const Constraint& c, double value) {
@@ -155,16 +139,8 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
     lo.push_back(b.lo);
     hi.push_back(b.hi);
   }
-  check_resolves(evaluator, point_of(problem, report.start));
-  // Each key at either bound and at an inner point that is no whole number (1/π of the
-  // way): an integer key (numerics.steps_per_cycle), which NLopt's values would break
-  // mid-search, is refused here.
-  for (std::size_t i = 0; i < problem.bounds.size(); ++i)
-    for (const double value : {lo[i], hi[i], lo[i] + (hi[i] - lo[i]) * 0.31830988618379067}) {
-      std::vector<double> x = report.start;
-      x[i] = value;
-      check_resolves(evaluator, point_of(problem, x));
-    }
+  // Each key at either bound and at an inner value, and a key that changes nothing there.
+  check_start_and_bounds(evaluator, problem, report.start, options.vtk_every);
   const std::vector<std::vector<double>> starts =
       start_points(report.start, lo, hi, static_cast<std::size_t>(options.starts));
 
@@ -204,7 +180,7 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
     std::vector<Evaluation> evaluations;
     std::optional<std::size_t> best;
     const Evaluate evaluate = [&](const std::vector<double>& x) {
-      EvaluationOutcome eval = evaluator.evaluate(point_of(problem, x));
+      EvaluationOutcome eval = evaluator.evaluate(point_at(problem, x));
       evaluations.push_back(eval.evaluation);
       const Evaluation& e = evaluations.back();
       if (feasible(problem, e) && std::isfinite(result_value(e, problem.objective)) &&

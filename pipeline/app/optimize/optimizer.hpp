@@ -8,8 +8,9 @@
 /// 1. Before any run: the start (each key at the case's own value, clamped into its
 ///    bounds; the middle of the bounds when the files do not write the key) and each
 ///    key at either bound and at an inner value that is no whole number are resolved and
-///    checked, so a bad key, a bound that makes an invalid case or an integer key stops
-///    with exit status 2 and nothing run.
+///    checked, so a bad key, a bound that makes an invalid case, an integer key or a key
+///    that changes nothing at those points (bounds_check.hpp) stops with exit status 2 and
+///    nothing run.
 /// 2. The search: one NLopt search per start (--starts N; start_points.hpp), each on one
 ///    worker, the starts spread over MPI ranks under mpirun/srun by the sweep's scheduler
 ///    (sweep::schedule_cases); a run uses its rank's share of the cores. A progress line per

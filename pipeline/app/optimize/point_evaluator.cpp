@@ -19,6 +19,12 @@ namespace {
 constexpr int kLongestWaitS = 86400;
 }  // namespace
 
+sweep::CasePoint point_at(const Problem& problem, const std::vector<double>& x) {
+  sweep::CasePoint point;
+  for (std::size_t i = 0; i < problem.bounds.size(); ++i) point.push_back({problem.bounds[i].key, x[i]});
+  return point;
+}
+
 PointEvaluator::PointEvaluator(sweep::SweepInputs inputs, EvaluatorOptions options)
     : inputs_(std::move(inputs)), options_(std::move(options)), host_(sweep::host_name()) {}
 

@@ -10,11 +10,16 @@
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "pipeline/app/optimize/evaluation_table.hpp"
+#include "pipeline/app/optimize/optimize_problem.hpp"
 #include "pipeline/app/sweep/sweep_case.hpp"
 
 namespace flapsim::optimize {
+
+/// \brief The point of the varied keys at \p x (one value per bound, in the bounds' order).
+sweep::CasePoint point_at(const Problem& problem, const std::vector<double>& x);
 
 struct EvaluatorOptions {
   std::filesystem::path runs_dir;  ///< DIR/runs

@@ -15,11 +15,11 @@ namespace {
 // At most this many values are listed in a message.
 constexpr std::size_t kValuesListed = 8;
 
-// The distinct values of the plan's key k, in the order given: "0.3, 0.5".
-std::string values_of(const SweepPlan& plan, std::size_t k) {
+// The distinct values of key k over the points, in the order given: "0.3, 0.5".
+std::string values_of(const std::vector<CasePoint>& points, std::size_t k) {
   std::set<double> seen;
   std::string list;
-  for (const CasePoint& point : plan.points) {
+  for (const CasePoint& point : points) {
     if (!seen.insert(point[k].value).second) continue;
     if (seen.size() > kValuesListed) return list + ", ...";
     list += (list.empty() ? "" : ", ") + value_label(point[k].value);
@@ -27,17 +27,12 @@ std::string values_of(const SweepPlan& plan, std::size_t k) {
   return list;
 }
 
-// Refuses key k: "--vary KEY = VALUES: WHY, so the varied values change nothing; INSTEAD",
-// at the case file for --vary values, at the table's header for a column of a case table.
-[[noreturn]] void refuse(const SweepInputs& inputs, const SweepPlan& plan, std::size_t k,
-                         const std::string& why, const std::string& instead) {
-  const std::string& key = plan.keys[k];
-  const bool from_table = !plan.table_file.empty();
-  const std::string given =
-      from_table ? "the column's values " + values_of(plan, k) : "--vary " + key + " = " + values_of(plan, k);
-  const std::string message = given + ": " + why + ", so the varied values change nothing; " + instead;
-  if (from_table) throw InputError(plan.table_file, plan.header_line, key, message);
-  throw InputError(inputs.case_file, 0, key, message);
+// Refuses key k: "GIVEN: WHY, so the varied values change nothing; INSTEAD", where the keys
+// were given (the case file for --vary values, a case table's header for its columns).
+[[noreturn]] void refuse(const VariedKeys& varied, std::size_t k, const std::string& why,
+                         const std::string& instead) {
+  throw InputError(varied.file, varied.line, varied.keys[k],
+                   varied.given[k] + ": " + why + ", so the varied values change nothing; " + instead);
 }
 
 // A wing-file mesh size that a FEM case's own key replaces (fem_structure_setup.cpp).
@@ -55,10 +50,10 @@ constexpr std::array kMeshSizeOverrides = {
 };
 
 // The override of key k that every case has, if any.
-std::optional<MeshSizeOverride> mesh_size_override(const SweepPlan& plan,
+std::optional<MeshSizeOverride> mesh_size_override(const VariedKeys& varied,
                                                    const std::vector<ResolvedCase>& cases, std::size_t k) {
   for (const MeshSizeOverride& o : kMeshSizeOverrides) {
-    if (plan.keys[k] != o.wing_key) continue;
+    if (varied.keys[k] != o.wing_key) continue;
     for (const ResolvedCase& r : cases)
       if (r.c.structure.kind != io::Case::Structure::Kind::Fem || !(r.c.structure.*o.size > 0.0))
         return std::nullopt;
@@ -67,38 +62,28 @@ std::optional<MeshSizeOverride> mesh_size_override(const SweepPlan& plan,
   return std::nullopt;
 }
 
-void refuse_mesh_size_the_case_sets(const SweepInputs& inputs, const SweepPlan& plan,
+void refuse_mesh_size_the_case_sets(const VariedKeys& varied, const SweepInputs& inputs,
                                     const std::vector<ResolvedCase>& cases, std::size_t k) {
-  const std::optional<MeshSizeOverride> o = mesh_size_override(plan, cases, k);
+  const std::optional<MeshSizeOverride> o = mesh_size_override(varied, cases, k);
   if (!o || cases.empty()) return;
   const std::string case_key(o->case_key);
   const int line = cases.front().c.line_of(case_key);
   const std::string where = line > 0 ? " (" + inputs.case_file + " line " + std::to_string(line) + ")" : "";
-  refuse(inputs, plan, k, "the case's " + case_key + where + " sets the FEM's mesh",
+  refuse(varied, k, "the case's " + case_key + where + " sets the FEM's mesh",
          "vary " + case_key + " instead");
-}
-
-void refuse_interval_the_sweep_sets(const SweepInputs& inputs, const SweepPlan& plan, std::size_t k,
-                                    int vtk_every) {
-  if (plan.keys[k] != "output.vtk_every") return;
-  const std::string option = vtk_every > 0 ? "--vtk-every " + std::to_string(vtk_every)
-                                           : std::string("--vtk-every (0 when not given: no series)");
-  refuse(inputs, plan, k,
-         "the sweep's " + option + " sets every case's ParaView series in place of the case's",
-         "give the sweep --vtk-every N instead (one interval for every case)");
 }
 
 // Whether the points that differ only in key k's value all have the same inputs hash (and
 // there is at least one such pair): the key reaches no input of the run.
-bool inputs_never_change_with(const SweepPlan& plan, const std::vector<ResolvedCase>& cases, std::size_t k,
-                              std::string& common_hash) {
+bool inputs_never_change_with(const std::vector<CasePoint>& points, const std::vector<ResolvedCase>& cases,
+                              std::size_t k, std::string& common_hash) {
   // The other keys' values -> the key's value -> the inputs hash.
   std::map<std::vector<double>, std::map<double, const std::string*>> groups;
-  for (std::size_t i = 0; i < plan.points.size(); ++i) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
     std::vector<double> others;
-    for (std::size_t j = 0; j < plan.points[i].size(); ++j)
-      if (j != k) others.push_back(plan.points[i][j].value);
-    groups[others].emplace(plan.points[i][k].value, &cases[i].inputs_hash);
+    for (std::size_t j = 0; j < points[i].size(); ++j)
+      if (j != k) others.push_back(points[i][j].value);
+    groups[others].emplace(points[i][k].value, &cases[i].inputs_hash);
   }
   bool compared = false;
   for (const auto& [others, hash_of_value] : groups) {
@@ -112,25 +97,52 @@ bool inputs_never_change_with(const SweepPlan& plan, const std::vector<ResolvedC
   return compared;
 }
 
-void refuse_key_that_reaches_no_input(const SweepInputs& inputs, const SweepPlan& plan,
+void refuse_key_that_reaches_no_input(const VariedKeys& varied, const std::vector<CasePoint>& points,
                                       const std::vector<ResolvedCase>& cases, std::size_t k) {
   std::string hash;
-  if (!inputs_never_change_with(plan, cases, k, hash)) return;
-  refuse(inputs, plan, k,
+  if (!inputs_never_change_with(points, cases, k, hash)) return;
+  refuse(varied, k,
          "every value gives the same inputs (the resolved case and wing, inputs_hash " + hash +
              "): the run does not use the key with the case's other settings",
-         "drop it from the sweep");
+         "drop it from the " + varied.command);
 }
 
 }  // namespace
 
+void refuse_interval_the_command_sets(const VariedKeys& varied, int vtk_every) {
+  for (std::size_t k = 0; k < varied.keys.size(); ++k) {
+    if (varied.keys[k] != "output.vtk_every") continue;
+    const std::string option = vtk_every > 0 ? "--vtk-every " + std::to_string(vtk_every)
+                                             : std::string("--vtk-every (0 when not given: no series)");
+    refuse(varied, k,
+           "the " + varied.command + "'s " + option +
+               " sets every case's ParaView series in place of the case's",
+           "give the " + varied.command + " --vtk-every N instead (one interval for every case)");
+  }
+}
+
+void refuse_keys_that_change_nothing(const VariedKeys& varied, const SweepInputs& inputs,
+                                     const std::vector<CasePoint>& points,
+                                     const std::vector<ResolvedCase>& cases, int vtk_every) {
+  refuse_interval_the_command_sets(varied, vtk_every);
+  for (std::size_t k = 0; k < varied.keys.size(); ++k) {
+    refuse_mesh_size_the_case_sets(varied, inputs, cases, k);
+    refuse_key_that_reaches_no_input(varied, points, cases, k);
+  }
+}
+
 void refuse_keys_that_change_nothing(const SweepInputs& inputs, const SweepPlan& plan,
                                      const std::vector<ResolvedCase>& cases, int vtk_every) {
-  for (std::size_t k = 0; k < plan.keys.size(); ++k) {
-    refuse_mesh_size_the_case_sets(inputs, plan, cases, k);
-    refuse_interval_the_sweep_sets(inputs, plan, k, vtk_every);
-    refuse_key_that_reaches_no_input(inputs, plan, cases, k);
-  }
+  const bool from_table = !plan.table_file.empty();
+  VariedKeys varied{"sweep",
+                    plan.keys,
+                    {},
+                    from_table ? plan.table_file : inputs.case_file,
+                    from_table ? plan.header_line : 0};
+  for (std::size_t k = 0; k < plan.keys.size(); ++k)
+    varied.given.push_back(from_table ? "the column's values " + values_of(plan.points, k)
+                                      : "--vary " + plan.keys[k] + " = " + values_of(plan.points, k));
+  refuse_keys_that_change_nothing(varied, inputs, plan.points, cases, vtk_every);
 }
 
 }  // namespace flapsim::sweep
