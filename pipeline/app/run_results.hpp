@@ -60,8 +60,8 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"spring_scale", "", K::number, "%.6g", "",
                        "factor on every joint spring (flapsim run --spring-scale)"},
       ResultDefinition{"inputs_hash", "", K::text, "", "",
-                       "fingerprint of the resolved case, wing, chain file and spring factor "
-                       "(FNV-1a 64, io::input_hash); a sweep re-run keeps a case whose hash is unchanged"},
+                       "fingerprint of the resolved case (all but output.vtk_every), wing, chain file and spring "
+                       "factor (FNV-1a 64, io::input_hash); a sweep re-run keeps a case whose hash is unchanged"},
       ResultDefinition{"reference_area_m2", "m^2", K::number, "%.6g", "",
                        "S of CL: planform area of the outline (in air)"},
       ResultDefinition{"reference_speed_m_s", "m/s", K::number, "%.6g", "",

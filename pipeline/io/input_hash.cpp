@@ -13,6 +13,10 @@ namespace flapsim::io {
 // else two runs that differ in it would share a hash (and a sweep re-run would keep a
 // stale result). The sizes catch most additions (x86-64, libstdc++); when one fails,
 // serialise the new field below and update the size.
+// Case::output.vtk_every is left out: it decides only which files a run writes (its ParaView
+// series), not its numbers, so two runs that differ in it alone share a hash; a command that
+// keeps runs by their hash and wants series checks for them (docs/sweeps.md, "Resuming a
+// sweep").
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages; they change no result.)
 static_assert(sizeof(Case) == 1472, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
@@ -181,7 +185,6 @@ void case_fields(Canonical& out, const Case& c) {
   out.line("numerics.rho_infinity", n.rho_infinity);
   // Only when set: the fingerprints of the cases written before the key existed stay as they were.
   if (n.structure_substeps != 1) out.line("numerics.structure_substeps", n.structure_substeps);
-  out.line("output.vtk_every", c.output.vtk_every);
   out.line("loads.size", static_cast<int>(c.loads.size()));
   for (std::size_t i = 0; i < c.loads.size(); ++i) {
     const PointLoad& l = c.loads[i];

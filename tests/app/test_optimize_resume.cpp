@@ -73,4 +73,48 @@ TEST(OptimizeResume, AnInterruptedOptimisationRerunsNoEvaluatedPoint) {
   EXPECT_NE(test::read_text(dir / "whole" / "report.md").find("(0 run, "), std::string::npos);
 }
 
+// The inputs hash leaves out the ParaView interval (io::input_hash), so a point's run found
+// by its hash may have no series: an optimisation run again with --vtk-every (for pictures
+// of the points an earlier one evaluated without them) runs those points again, and they
+// write their series; it kept them all and wrote none. Run once more, they are kept; run
+// with --force and no series, they leave none of the earlier run's series behind.
+TEST(OptimizeResume, ARerunAskingForParaViewSeriesRunsThePointsThatHaveNone) {
+  const test::ScratchDir dir("optimize_resume_vtk");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(8);
+  const std::string command = "optimize " + (dir / "case.toml").string() +
+                              " --vary kinematics.rotation_phase=-0.25:0.15 --maximize mean_lift_N"
+                              " --max-evaluations 3 -q -o " +
+                              (dir / "opt").string();
+  const auto evaluations_line = [&dir] {
+    const std::string report = test::read_text(dir / "opt" / "report.md");
+    const auto at = report.find("- evaluations: ");
+    return at == std::string::npos ? std::string() : report.substr(at, report.find(" kept", at) - at);
+  };
+  ASSERT_EQ(test::run_flapsim(command), 0);
+  const std::vector<std::string> points = evaluated_hashes(dir / "opt");
+  ASSERT_EQ(points.size(), 3u);
+  EXPECT_EQ(evaluations_line(), "- evaluations: 3 (3 run, 0");
+  for (const std::string& h : points) EXPECT_FALSE(fs::exists(dir / "opt" / "runs" / h / "chain.pvd")) << h;
+
+  ASSERT_EQ(test::run_flapsim(command + " --vtk-every 4"), 0);
+  EXPECT_EQ(evaluated_hashes(dir / "opt"), points);  // the same search
+  EXPECT_EQ(evaluations_line(), "- evaluations: 3 (3 run, 0");
+  for (const std::string& h : points)
+    for (const char* series : {"chain.pvd", "wing.pvd", "wake.pvd"})
+      EXPECT_TRUE(fs::exists(dir / "opt" / "runs" / h / series)) << h << " " << series;
+
+  ASSERT_EQ(test::run_flapsim(command + " --vtk-every 4"), 0);
+  EXPECT_EQ(evaluations_line(), "- evaluations: 3 (0 run, 3");
+
+  // Run again without series (--force): each point's folder is cleared of the earlier run's
+  // files first, as a sweep's case is, so no series stays beside the new history.
+  ASSERT_EQ(test::run_flapsim(command + " --force"), 0);
+  EXPECT_EQ(evaluations_line(), "- evaluations: 3 (3 run, 0");
+  for (const std::string& h : points) {
+    EXPECT_TRUE(fs::exists(dir / "opt" / "runs" / h / "summary.json")) << h;
+    for (const char* stale : {"chain.pvd", "wing.pvd", "wake.pvd", "run.pvsm", "vtk"})
+      EXPECT_FALSE(fs::exists(dir / "opt" / "runs" / h / stale)) << h << " " << stale;
+  }
+}
+
 }  // namespace

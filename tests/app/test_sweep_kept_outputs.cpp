@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "app/stiff_plate_wing.hpp"
 #include "common/run_flapsim.hpp"
@@ -76,6 +77,46 @@ TEST(SweepKeptOutputs, AFemSweepWithItsSeriesIsKeptWhenRunAgain) {
   const auto table = test::read_sweep_table((dir / "out" / "sweep.csv").string());
   ASSERT_EQ(table.rows.size(), 2u);
   for (const auto& row : table.rows) EXPECT_EQ(row.at("message"), "kept") << row.at("folder");
+}
+
+// The case file's [output] vtk_every decides only which files a run writes, and a sweep's
+// own --vtk-every replaces it for every case: editing it keeps every finished case. It was
+// part of the inputs hash (io::input_hash), so the same sweep after the edit ran every case
+// again. The series the sweep asks for are still checked: a case kept by its hash but run
+// without them runs again when --vtk-every asks for them, and a case with series is kept
+// when none are asked for.
+TEST(SweepKeptOutputs, ACaseFileIntervalEditedKeepsEveryFinishedCase) {
+  const test::ScratchDir dir("sweep_kept_interval");
+  std::string text = test::tiny_plate_case(8);  // [output] vtk_every = 0
+  std::ofstream(dir / "case.toml") << text;
+  const std::string base = "sweep " + (dir / "case.toml").string() +
+                           " --vary kinematics.rotation_phase=0,0.1 -j 1 -q -o " + (dir / "out").string();
+  const auto messages_of_interval_sweep = [&dir] {
+    std::vector<std::string> messages;
+    for (const auto& row : test::read_sweep_table((dir / "out" / "sweep.csv").string()).rows)
+      messages.push_back(row.at("message"));
+    return messages;
+  };
+  ASSERT_EQ(test::run_flapsim(base), 0);
+  ASSERT_EQ(messages_of_interval_sweep(), (std::vector<std::string>{"", ""}));  // both ran
+
+  // The case's interval edited: the same inputs, every case kept.
+  text.replace(text.find("vtk_every = 0"), 13, "vtk_every = 5");
+  std::ofstream(dir / "case.toml") << text;
+  ASSERT_EQ(test::run_flapsim(base), 0);
+  EXPECT_EQ(messages_of_interval_sweep(), (std::vector<std::string>{"kept", "kept"}));
+
+  // Series asked for: the cases kept by their hash have none, so they run and write them.
+  ASSERT_EQ(test::run_flapsim(base + " --vtk-every 4"), 0);
+  EXPECT_EQ(messages_of_interval_sweep(), (std::vector<std::string>{"", ""}));
+  for (const char* folder : {"00_0", "01_0.1"})
+    EXPECT_TRUE(fs::exists(dir / "out" / folder / "chain.pvd")) << folder;
+
+  // No series asked for: the cases with series are kept (and keep their series).
+  ASSERT_EQ(test::run_flapsim(base), 0);
+  EXPECT_EQ(messages_of_interval_sweep(), (std::vector<std::string>{"kept", "kept"}));
+  for (const char* folder : {"00_0", "01_0.1"})
+    EXPECT_TRUE(fs::exists(dir / "out" / folder / "chain.pvd")) << folder;
 }
 
 }  // namespace

@@ -79,4 +79,17 @@ TEST(InputHash, FollowsTheInputsNotTheirPlace) {
             io::input_hash(c, &w, (dir / "b.toml").string(), 1.0));
 }
 
+// [output] vtk_every decides only which files a run writes (its ParaView series), not its
+// numbers: it is no input, so a sweep run again after the case's interval was edited keeps
+// its cases. It was in the hash.
+TEST(InputHash, TheParaViewIntervalIsNoInput) {
+  const fs::path data = fs::path(FLAPSIM_SOURCE_DIR) / "tests" / "data";
+  const io::Case c = io::load_case_file((data / "valid_tiny_case.toml").string());
+  const wings::Wing w = wings::load_wing_file((data / "valid_tiny_wing.toml").string());
+  io::Case no_series = c;
+  no_series.output.vtk_every = c.output.vtk_every + 7;
+  EXPECT_EQ(io::input_hash(no_series, &w, "", 1.0), io::input_hash(c, &w, "", 1.0));
+  EXPECT_EQ(io::canonical_inputs(c, &w, "", 1.0).find("vtk_every"), std::string::npos);
+}
+
 }  // namespace

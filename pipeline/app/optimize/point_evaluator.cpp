@@ -6,11 +6,13 @@
 
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
+#include "pipeline/app/sweep/kept_series.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/app/sweep/sweep_table.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/folder_lock.hpp"
+#include "pipeline/io/output_manifest.hpp"
 
 namespace flapsim::optimize {
 
@@ -43,6 +45,8 @@ EvaluationOutcome PointEvaluator::evaluate(const sweep::CasePoint& point) const 
   const std::filesystem::path dir = folder(r.inputs_hash);
   const auto kept = [&]() {
     if (options_.force) return false;
+    // Asked for its ParaView series, a run without them is run again (kept_series.hpp).
+    if (!sweep::has_the_series_asked_for(dir, r.c, options_.vtk_every)) return false;
     auto results = sweep::kept_results(dir / "summary.json", r.inputs_hash);
     if (!results) return false;
     e.results = std::move(*results);
@@ -68,7 +72,10 @@ EvaluationOutcome PointEvaluator::evaluate(const sweep::CasePoint& point) const 
     std::this_thread::sleep_for(std::chrono::seconds(1));
   }
   if (kept()) return out;
-  io::remove_stale_temporaries(dir);           // of a killed run of this point
+  io::remove_stale_temporaries(dir);  // of a killed run of this point
+  // An earlier run's files of this point (--force, or a finished point run again for its
+  // series): its ParaView series would stay beside the new history, as in a sweep's case.
+  io::remove_command_outputs(dir, "run");
   app::RunOptions ro;
   ro.output_dir = dir;
   ro.chain_file = inputs_.chain_file;

@@ -4,8 +4,10 @@
 /// resolved and checked as a sweep's case (sweep::resolve_case: the case and wing files
 /// with the values set, checked as `flapsim run` checks them), then either the results an
 /// earlier run left for the same inputs (the folder's summary.json has status "ok" and the
-/// inputs hash: sweep::kept_results) or a run of the case (app::run_case) in the folder
-/// DIR/runs/<inputs hash>/ (history.csv, summary.json). A run uses the local cores.
+/// inputs hash: sweep::kept_results; with --vtk-every, the folder holds the ParaView series:
+/// sweep/kept_series.hpp) or a run of the case (app::run_case) in the folder
+/// DIR/runs/<inputs hash>/ (history.csv, summary.json), cleared of an earlier run's files
+/// first. A run uses the local cores.
 
 #include <exception>
 #include <filesystem>

@@ -21,6 +21,7 @@
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/sweep/earlier_cases.hpp"
+#include "pipeline/app/sweep/kept_series.hpp"
 #include "pipeline/app/sweep/keys_that_change_nothing.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/app/sweep/sweep_case.hpp"
@@ -134,11 +135,11 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
         kept = kept_results(options.output_dir / rows[i].folder / "summary.json", resolved[i].inputs_hash);
         if (!kept) kept = earlier.adopt(resolved[i].inputs_hash, rows[i].folder);
         // A run asked for its ParaView series (--vtk-every) keeps a case only if the earlier
-        // run wrote them (every run with frames writes its structure's series, chain.pvd, or
-        // fem.pvd for the FEM): a sweep run again with --vtk-every to get pictures kept every
-        // case and wrote none; a FEM sweep's, looked for under chain.pvd, kept none.
-        const char* series = resolved[i].c.structure.kind == io::Case::Structure::Kind::Fem ? "fem.pvd" : "chain.pvd";
-        if (kept && options.vtk_every > 0 && !std::filesystem::exists(options.output_dir / rows[i].folder / series))
+        // run wrote them (kept_series.hpp): a sweep run again with --vtk-every to get
+        // pictures kept every case and wrote none; a FEM sweep's, looked for under
+        // chain.pvd, kept none.
+        if (kept &&
+            !has_the_series_asked_for(options.output_dir / rows[i].folder, resolved[i].c, options.vtk_every))
           kept.reset();
       }
       if (kept) {
