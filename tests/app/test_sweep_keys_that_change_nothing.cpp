@@ -24,18 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace flapsim;
 
-// The stiff FEM plate (stiff_plate_wing.hpp, wing.toml beside the case), one cycle of 8
-// steps; `structure_keys` follow kind = "fem" on line 9, so a first one is on line 10.
-std::string stiff_fem_plate_case(const std::string& structure_keys) {
-  return "name = \"stiff_fem\"\nwing = \"wing.toml\"\n"
-         "[kinematics]\nfrequency_hz = 26.1\nrotation_phase = -0.1\n"
-         "sweep = { mean_deg = 10.0, cos_deg = [20.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n"
-         "[structure]\nkind = \"fem\"\n" +
-         structure_keys +
-         "[numerics]\nsteps_per_cycle = 8\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 4\n"
-         "core_radius = 0.2\nrho_infinity = 0.0\n[output]\nvtk_every = 0\n";
-}
-
 // What refuse_keys_that_change_nothing says of the grid of `variations` on `case_file`, as
 // run_sweep resolves it ("" when the sweep is accepted).
 std::string refusal_of_grid(const std::string& case_file, const std::vector<sweep::Variation>& variations,
@@ -56,7 +44,7 @@ TEST(SweepKeysThatChangeNothing, AWingMeshSizeTheFemCaseSetsIsRefusedBeforeAnyCa
   const test::ScratchDir dir("sweep_unused_mesh_size");
   std::ofstream(dir / "wing.toml") << test::kStiffPlateWing;
   const std::string case_file = (dir / "case.toml").string();
-  std::ofstream(case_file) << stiff_fem_plate_case("element_size_mm = 2.5\n");
+  std::ofstream(case_file) << test::stiff_fem_plate_case("element_size_mm = 2.5\n");
   const test::FlapsimOutcome out = test::run_flapsim_capturing_stderr(
       dir.path(), "sweep " + case_file + " --vary wing.mesh.element_size=2.5,3 -o " + (dir / "out").string());
   EXPECT_EQ(out.status, 2) << out.err;  // bad input (pipeline/app/cli/exit_status.hpp)
@@ -71,7 +59,7 @@ TEST(SweepKeysThatChangeNothing, AWingMeshSizeTheFemCaseSetsIsRefusedBeforeAnyCa
   EXPECT_FALSE(fs::exists(dir / "out"));  // nothing run, nothing written
 
   // Without the case's own size the wing file's sizes the FEM's mesh: accepted.
-  std::ofstream(case_file) << stiff_fem_plate_case("");
+  std::ofstream(case_file) << test::stiff_fem_plate_case("");
   EXPECT_EQ(refusal_of_grid(case_file, {{"wing.mesh.element_size", {2.5, 3.0}}}), "");
 }
 
