@@ -91,6 +91,10 @@ struct DynamicsData::Work {
     std::unique_ptr<NewtonMatrix> matrix;
     double start = 0.0;  ///< t_n of the step (or piece) it was made in [s]
     long made = -1;      ///< the factorisation count when it was made (-1: never)
+    /// The last ratio of two successive corrections with it, θ (−1: none measured yet;
+    /// DynamicsOptions::contraction_stop).
+    double contraction = -1.0;
+    double contraction_start = -1.0;  ///< t_n of the step (or piece) it was measured in [s]
   };
   std::vector<KeptMatrix> matrices;
   std::size_t last_made = 0;  ///< the matrix factorised last
@@ -407,6 +411,7 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
         ++count.factorizations;
         made.start = d.time;
         made.made = count.factorizations;
+        made.contraction = -1.0;
         w.last_made = own;
         const long fallbacks = made.matrix->lu_fallbacks();
         const bool factorised = made.matrix->factorize(w.assembler.tangent(), frame, h);
@@ -426,12 +431,32 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
         m = std::max(m, std::abs(w.dx(i)));
       }
       const double tol_u = tolerance_scale * model.options.increment_tolerance;
-      const bool small_increment = max_t <= tol_u * model.size && max_r <= tol_u;
+      const double size = std::max(max_t / model.size, max_r);
+      // Converged when the error left after this correction is within the bound: the
+      // correction itself at most tol_u (the bound for the slowest contraction a kept matrix
+      // is allowed, ρ), or, for the first correction of a solve again of a step whose matrix
+      // contracted by θ there, η ‖δx‖ ≤ ρ/(1 − ρ) tol_u, η = (θ/(1 − θ))^0.8
+      // (DynamicsOptions::contraction_stop).
+      DynamicsData::Work::KeptMatrix& solving = w.matrices[use];
+      const double theta = !new_matrix && it > 0 && previous > 0.0 ? size / previous : -1.0;
+      const bool measured_here = solving.contraction >= 0.0 && solving.contraction < 1.0 &&
+                                 solving.contraction_start == d.time && solving.matrix->step_size() == h;
+      const double eta = model.options.contraction_stop && !model.options.line_search && !new_matrix && it == 0 &&
+                                 measured_here
+                             ? std::pow(solving.contraction / (1.0 - solving.contraction), 0.8)
+                             : -1.0;
+      if (theta >= 0.0) {
+        solving.contraction = theta;
+        solving.contraction_start = d.time;
+      }
+      const double rho = std::min(model.options.refactor_rate, 0.9);
+      const bool small_increment = (max_t <= tol_u * model.size && max_r <= tol_u) ||
+                                   (eta >= 0.0 && max_r <= kMaxRotationCorrection &&
+                                    eta * size <= rho / (1.0 - rho) * tol_u);
       // Contraction of a kept matrix: the ratio of successive corrections (the residual's
       // ratio is no measure: the first correction of a thin membrane stretches it and
       // raises the residual, by 20–200 on the hawkmoth, whatever the matrix). Too slow: a
       // new matrix at this iterate; growing: this correction is dropped as well.
-      const double size = std::max(max_t / model.size, max_r);
       if (!new_matrix && it > 0 && !small_increment && size > model.options.refactor_rate * previous) {
         refactor = true;
         if (size > previous) continue;

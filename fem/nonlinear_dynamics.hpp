@@ -88,6 +88,16 @@ struct DynamicsOptions {
   /// A kept matrix is made anew when an iteration reduces the residual by less
   /// than this factor (‖r_{k+1}‖ > refactor_rate ‖r_k‖).
   double refactor_rate = 0.25;
+  /// The first correction of a step solved again (a coupling's next sub-iteration, warm:
+  /// StepStart::PreviousSolution) also converges when the contraction θ its matrix showed in
+  /// this step (the ratio of its last two corrections) bounds the error it leaves as the rule
+  /// below does: η ‖δx‖ ≤ ρ/(1 − ρ) · increment_tolerance, η = (θ/(1 − θ))^0.8, ρ =
+  /// refactor_rate (the stopping rule of the simplified Newton iteration, Hairer & Wanner,
+  /// Solving Ordinary Differential Equations II, §IV.8; docs/fem.md, "Newton's stop from the
+  /// measured contraction"). The rule ‖δx‖ ≤ increment_tolerance bounds that error by the
+  /// same amount for the slowest contraction a kept matrix is allowed (ρ); a warm solve whose
+  /// one correction meets the bound then needs no second, checking one. Not with line_search.
+  bool contraction_stop = true;
   /// Carry the free nodes with the driven base's rigid increment (else start at q_n).
   bool rigid_predictor = true;
   /// A Newton matrix made after a correction takes its geometric terms from the
