@@ -85,8 +85,9 @@ struct DynamicsOptions {
   /// Keep the factorised Newton matrix across iterations and steps (modified
   /// Newton); false: a new tangent and factorisation every iteration.
   bool reuse_factorization = true;
-  /// A kept matrix is made anew when an iteration reduces the residual by less
-  /// than this factor (‖r_{k+1}‖ > refactor_rate ‖r_k‖).
+  /// A kept matrix is made anew when its correction shrinks by less than this factor in an
+  /// iteration (‖δx_{k+1}‖ > refactor_rate ‖δx_k‖: its contraction θ, the ratio of successive
+  /// corrections; the residual's ratio is no measure, nonlinear_dynamics.cpp).
   double refactor_rate = 0.25;
   /// The first correction of a step solved again (a coupling's next sub-iteration, warm:
   /// StepStart::PreviousSolution) also converges when the contraction θ its matrix showed in
