@@ -439,8 +439,9 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       // (DynamicsOptions::contraction_stop).
       DynamicsData::Work::KeptMatrix& solving = w.matrices[use];
       const double theta = !new_matrix && it > 0 && previous > 0.0 ? size / previous : -1.0;
-      const bool measured_here = solving.contraction >= 0.0 && solving.contraction < 1.0 &&
-                                 solving.contraction_start == d.time && solving.matrix->step_size() == h;
+      // (a kept matrix is of this Δt: another one's is made anew above)
+      const bool measured_here =
+          solving.contraction >= 0.0 && solving.contraction < 1.0 && solving.contraction_start == d.time;
       const double eta = model.options.contraction_stop && !model.options.line_search && !new_matrix && it == 0 &&
                                  measured_here
                              ? std::pow(solving.contraction / (1.0 - solving.contraction), 0.8)
