@@ -65,9 +65,12 @@ namespace flapsim::fsi {
 /// Most pieces one coupled step of the FEM is split into (measured at most 8 on the 75 mm and
 /// 32 on the MAV 25 µm film wing at 80 steps a wingbeat; the bound caps a hopeless step's
 /// work at 511 pieces' Newton solves), and the steps solved without a failure after which
-/// the count of pieces is halved again.
+/// the count of pieces is halved again: after each one (with 4, until 30 Nov, the MAV film
+/// wing's five wingbeats solved 360 of 400 steps in pieces, 91 piece solves a step in its
+/// first wingbeat; with 1, 230 and 48, and the run took 21 % less CPU time: docs/fsi.md, "Step
+/// halving of the FEM").
 inline constexpr int kMaxFemStepPieces = 256;
-inline constexpr int kFemStepsBeforeJoining = 4;
+inline constexpr int kFemStepsBeforeJoining = 1;
 
 class FemStructureModel : public StructureModel {
  public:
