@@ -57,7 +57,7 @@ std::vector<Eigen::Matrix3Xd> flapped_positions(fsi::StructureData& s, int steps
 TEST(FemStepHalving, AStepThatFailsWholeIsSolvedInPiecesAsAFinerStepWould) {
   // 20 steps a wingbeat, Newton limited to 4 iterations: a whole step of the turning plate,
   // and its halves, quarters and eighths, need more; sixteenths do not (measured: all 20
-  // steps in 16 pieces, the count tried lower at every step and raised again). In vacuum
+  // steps in 16 pieces, the count tried lower at every second step and raised again). In vacuum
   // the loads are the same in every piece, so the split run is the run of 320 steps a
   // wingbeat with Newton's usual 25 iterations, to Newton's tolerance (measured 6.2e-16 m
   // apart, the plate moving 64 mm); the same 20 steps solved whole are 3.6 mm off it.
