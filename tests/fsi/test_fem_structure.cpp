@@ -253,8 +253,8 @@ TEST(FsiFemStructure, AStepSolvedAgainStopsAtTheFirstCorrectionWhoseErrorItsCont
   // slowest contraction allowed, ρ = refactor_rate. Increment tolerance 1e-9 (a coupled run's
   // order, fem_structure.cpp), the 0.2 mm plate's first step; its loads then 0.1 % larger.
   // With the rule the solve again takes one Newton iteration, without it two (the second
-  // only checks); both answers within that bound (0.25/0.75 × 1e-9 × the plate's size,
-  // 41.2 mm) of the answer at a 1000 times tighter tolerance.
+  // only checks); both answers within that bound (ρ/(1 − ρ) × 1e-9 × the plate's size,
+  // 41.2 mm: 1.37e-11 m) of the answer at a 1000 times tighter tolerance.
   fem::DynamicsOptions with = kOptions, without = kOptions, tight = kOptions;
   with.increment_tolerance = without.increment_tolerance = 1e-9;
   without.contraction_stop = false;
@@ -264,7 +264,8 @@ TEST(FsiFemStructure, AStepSolvedAgainStopsAtTheFirstCorrectionWhoseErrorItsCont
   constexpr double kChange = 1.001;
   const SolvedAgain stopped = solve_again(with, kChange), checked = solve_again(without, kChange),
                     reference = solve_again(tight, kChange);
-  const double size = std::hypot(0.010, 0.040), bound = 0.25 / 0.75 * 1e-9 * size;
+  const double rho = with.refactor_rate;  // 0.25
+  const double size = std::hypot(0.010, 0.040), bound = rho / (1.0 - rho) * with.increment_tolerance * size;
   const double stopped_error = (stopped.positions - reference.positions).lpNorm<Eigen::Infinity>();
   const double checked_error = (checked.positions - reference.positions).lpNorm<Eigen::Infinity>();
   std::printf("  solved again: %ld Newton iterations with the rule, %ld without; errors %.2e and %.2e m (bound %.2e m)\n",
