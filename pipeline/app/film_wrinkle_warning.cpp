@@ -42,7 +42,7 @@ std::string film_wrinkle_warning(const FsiSetup& setup) {
                 "the FEM's membrane (%.3g um on elements of %.3g mm) buckles into wrinkles of the mesh's own "
                 "wavelength under %.2g %% of compression, a thin film: where the flapping compresses it (a bending "
                 "rod: ~0.06 %%) the FEM splits its steps (docs/fsi.md, \"Step halving of the FEM\"), and such runs "
-                "took 8x (the 75 mm film wing), 28x (the MAV film wing), 70x (a 55 mm swept 15 um film) and some "
+                "took 8x (the 75 mm film wing), 16x (the MAV film wing), 70x (a 55 mm swept 15 um film) and some "
                 "500x (a 13 mm wing of a 4 um membrane at 150 Hz) the time estimated here, and up to "
                 "%.0f MB more memory for a Newton matrix kept for each piece (docs/fsi.md, \"Film wings\")",
                 median->thickness * 1e6, median->size * 1e3, 100.0 * median->strain,

@@ -1,6 +1,6 @@
 // A `kind = "fem"` case whose membrane is a thin film against its mesh is warned about by
 // check and run (pipeline/app/film_wrinkle_warning.hpp; docs/fsi.md, "Film wings"): its
-// FEM splits the steps where the film wrinkles, and the shipped film cases took 8× and 28×
+// FEM splits the steps where the film wrinkles, and the shipped film cases took 8× and 16×
 // the time `check` estimates.
 #include <gtest/gtest.h>
 
