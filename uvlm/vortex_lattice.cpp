@@ -103,7 +103,10 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   if (m.iterative_min_panels > 0 && np >= m.iterative_min_panels) gmres.reserve(np, m.iterative_restart);
   eval.reserve(std::max<std::size_t>(bound_n, np));
 
-  if (sheds) le_sheet.allocate(ns, np, sheet_rings);
+  if (sheds) {
+    le_sheet.allocate(ns, np, sheet_rings);
+    collocation_older.reserve(static_cast<std::size_t>(np));
+  }
 
   loads.force.setZero(3, np);
   loads.point.setZero(3, np);
@@ -212,19 +215,29 @@ struct EvalSums {
   bool held;    ///< the older wake's part from its record
   bool record;  ///< the older wake's part recorded
 
+  bool keep_older = false;   ///< the part before the edge's segments kept (VortexLatticeData::collocation_older)
+  bool reuse_older = false;  ///< … and taken from there instead of summed
+
   EvalSums(const VortexLatticeModel& model, VortexLatticeData& data, std::size_t n, WingPoints points)
       : m(model), d(data), slot(static_cast<int>(points)) {
     const bool apart = slot >= 0 && old_wake_kept_apart(m, d);
     held = apart && d.old_wake_held && d.old_wake[slot].size == n;
     record = apart && !held;
+    using Older = VortexLatticeData::CollocationOlderPart;
+    const bool older = points == WingPoints::Collocation && !apart && m.single_precision_wake &&
+                       d.collocation_older.x.size() >= n;
+    keep_older = older && d.collocation_older_part == Older::Keep;
+    reuse_older = older && d.collocation_older_part == Older::Reuse && d.collocation_older_size == n;
   }
   bool far() const { return d.far_tree_rows > 0 && d.far_wake_segments.size() > 0; }
   std::size_t wake_segments() const {
+    if (reuse_older) return d.wake_edge_segments.size();
     return (held ? 0 : d.wake_segments.size()) + d.young_wake_segments.size() + d.wake_edge_segments.size();
   }
   std::size_t bound_segments() const { return d.bound_segments.size() + d.trailing_edge_segments.size(); }
   /// Before the wake's sums: the single-precision copies.
   void prepare_wake() {
+    if (reuse_older) return;
     if (m.single_precision_wake && !held) d.wake_segments.update_single_precision();
     if (d.young_wake_segments.size() > 0) d.young_wake_segments.update_single_precision();
   }
@@ -234,21 +247,35 @@ struct EvalSums {
     PointSet& e = d.eval;
     const double *x = e.x.data() + i0, *y = e.y.data() + i0, *z = e.z.data() + i0;
     double *u = e.u.data() + i0, *v = e.v.data() + i0, *w = e.w.data() + i0;
-    if (held) {
-      d.old_wake[slot].held(i0, c, x, y, z, u, v, w);
-    } else if (m.single_precision_wake) {
-      add_induced_velocity_single(d.wake_segments, x, y, z, c, u, v, w, m.core);
+    PointSet& older = d.collocation_older;
+    if (reuse_older) {  // the sums before the edge's segments, as the last Keep left them
+      std::copy_n(older.u.data() + i0, c, u);
+      std::copy_n(older.v.data() + i0, c, v);
+      std::copy_n(older.w.data() + i0, c, w);
     } else {
-      add_induced_velocity(d.wake_segments, x, y, z, c, u, v, w, m.core);
+      if (held) {
+        d.old_wake[slot].held(i0, c, x, y, z, u, v, w);
+      } else if (m.single_precision_wake) {
+        add_induced_velocity_single(d.wake_segments, x, y, z, c, u, v, w, m.core);
+      } else {
+        add_induced_velocity(d.wake_segments, x, y, z, c, u, v, w, m.core);
+      }
+      if (record) d.old_wake[slot].record(i0, c, x, y, z, u, v, w);  // the older wake's part alone
+      if (d.young_wake_segments.size() > 0)
+        add_induced_velocity_single(d.young_wake_segments, x, y, z, c, u, v, w, m.core);
+      if (keep_older) {
+        std::copy_n(u, c, older.u.data() + i0);
+        std::copy_n(v, c, older.v.data() + i0);
+        std::copy_n(w, c, older.w.data() + i0);
+      }
     }
-    if (record) d.old_wake[slot].record(i0, c, x, y, z, u, v, w);  // the older wake's part alone
-    if (d.young_wake_segments.size() > 0)
-      add_induced_velocity_single(d.young_wake_segments, x, y, z, c, u, v, w, m.core);
     if (d.wake_edge_segments.size() > 0) add_induced_velocity(d.wake_edge_segments, x, y, z, c, u, v, w, m.core);
   }
   /// After the wake's sums at all n points.
   void finish_wake(std::size_t n) {
     if (record) d.old_wake[slot].finish(n);
+    if (keep_older) d.collocation_older_size = n;
+    if (reuse_older) ++d.solver_counts.reused_collocation_sums;
     if (slot == static_cast<int>(WingPoints::Collocation) && held) ++d.solver_counts.held_old_wake;
   }
   /// The bound and trailing-edge segments' sums at points i0 … i0 + c − 1.
@@ -494,12 +521,15 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   detail::attach_wake_to_trailing_edge(m, d);
   detail::build_wake_segments(m, d, detail::WakeView::Wing);
   const bool shed = m.leading_edge == LeadingEdge::Shed;
+  using Older = VortexLatticeData::CollocationOlderPart;
   if (shed) {  // the leading-edge sheet with every strip's leading-edge ring as accepted
     detail::place_release_row(m, d);
     d.le_sheet.current = d.le_sheet.accepted;
     detail::build_sheet_segments(m, d, detail::WakeView::Wing);
+    d.collocation_older_part = Older::Keep;  // for the sum again after shedding (below)
   }
   wake_velocity_at_collocation(m, d);
+  d.collocation_older_part = Older::None;
   const int np = m.panels();
   for (int k = 0; k < np; ++k)
     d.rhs(k) = -(free_stream - d.surface_velocity.col(k) + d.wake_velocity.col(k)).dot(d.normal.col(k));
@@ -518,7 +548,10 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   if (!alongside) solve_circulations(m, d);  // the sheet's columns below need the factorisation of this matrix: direct
   if (shed && detail::shed_leading_edge_vorticity(m, d)) {  // strips beyond LESP_crit shed
     detail::build_sheet_segments(m, d, detail::WakeView::Wing);
+    // Only the leading-edge rings changed, all in the edge's segments: the rest is reused.
+    d.collocation_older_part = Older::Reuse;
     wake_velocity_at_collocation(m, d);
+    d.collocation_older_part = Older::None;
   }
   detail::build_bound_segments(m, d);
   detail::compute_loads(m, d);

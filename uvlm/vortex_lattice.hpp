@@ -248,6 +248,9 @@ struct LatticeSolverCounts {
   /// solves whose circulations were solved while the other threads summed the wake at the
   /// loads' points (detail::alongside_target_chunks)
   long beside_wake_sums = 0;
+  /// sums at the collocation points after shedding that took the part before the edge's
+  /// segments from the solve's first sum (VortexLatticeData::collocation_older)
+  long reused_collocation_sums = 0;
   double worst_residual = 0;  ///< largest relative residual a GMRES solve returned
 };
 
@@ -295,6 +298,16 @@ struct VortexLatticeData {
   SegmentSet young_wake_segments;
   OldWakeRecord old_wake[2];
   bool old_wake_held = false;  ///< the solves take the records (until the next advance)
+  /// With a shed leading edge a solve sums the wake and the sheet at the collocation points
+  /// twice when strips shed, and between the two only the leading-edge rings' strengths
+  /// change, whose segments are all in wake_edge_segments (leading_edge_sheet.hpp,
+  /// kSheetEdgeRows). The first sum (Keep) keeps each point's velocity of the segments summed
+  /// before those (the single-precision wake and sheet, the young rows); the second (Reuse)
+  /// starts from it instead of summing them again: the same bits, a shorter sum.
+  enum class CollocationOlderPart { None, Keep, Reuse };
+  CollocationOlderPart collocation_older_part = CollocationOlderPart::None;
+  PointSet collocation_older;          ///< its velocities [m/s] (u, v, w; positions unused)
+  std::size_t collocation_older_size = 0;  ///< points kept by the last Keep
 
   // Circulations [m²/s], panel index i + nc j.
   Eigen::VectorXd gamma;           ///< last solve
