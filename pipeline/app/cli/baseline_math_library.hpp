@@ -22,10 +22,10 @@ inline constexpr const char* kBaselineMathLibraryMark = "FLAPSIM_BASELINE_LIBM";
 /// order, so they agree to the bit with each other on every x86-64 CPU.
 inline constexpr const char* kBaselineMathTunable = "glibc.cpu.hwcaps=-FMA,-FMA4";
 
-/// Unless the process carries kBaselineMathLibraryMark, executes the program again
-/// (its own file, /proc/self/exe, with the same argv) with kBaselineMathTunable appended to GLIBC_TUNABLES
-/// (a user's own tunables are kept before it) and the mark set: the C library reads its
-/// tunables only when a program starts. If that fails, the program goes on as it is and
+/// Unless the process carries kBaselineMathLibraryMark, executes the program again (its
+/// own file, /proc/self/exe, with the same argv) with kBaselineMathTunable appended to
+/// GLIBC_TUNABLES (a user's own tunables are kept before it) and the mark set: the C
+/// library reads its tunables only when a program starts. If that fails, the program goes on as it is and
 /// says so on stderr (its results then may differ in their last bits between CPUs).
 /// Call first thing in main(); returns only in the re-executed process or on failure.
 void run_with_the_baseline_math_library(char** argv);
