@@ -9,6 +9,7 @@
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/numerical_stage.hpp"
+#include "pipeline/app/released_chain_failure.hpp"
 #include "pipeline/app/run_recorder.hpp"
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
@@ -96,7 +97,9 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
     const RunRecorder::TipDeflection tip = recorder.peak_tip_deflection();
     Eigen::VectorXd last_q;
     data.structure->joint_angles(last_q);
-    const std::string why = large_motion_at_failure(setup, last_q, tip.bend_deg, tip.twist_deg);
+    std::string why = large_motion_at_failure(setup, last_q, tip.bend_deg, tip.twist_deg);
+    const std::string released = released_chain_at_failure(c, e.step());
+    if (!released.empty()) why += (why.empty() ? "" : ". ") + released;
     if (why.empty()) {
       recorder.finish(data, "failed", e.what());
       throw;
