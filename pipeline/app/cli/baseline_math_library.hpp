@@ -6,9 +6,10 @@
 /// several builds of each function by the CPU's features: one compiled with fused
 /// multiply–adds where the CPU has FMA (and AVX2) or FMA4, others without. The FMA builds
 /// round differently in the last bit on some arguments, and through the coupling's
-/// convergence test such a bit changes a run's history (measured on `make run`: the
-/// history.csv of a machine whose libm takes the builds without FMA differs from line 15
-/// on, its mean lift by 3·10⁻⁵; docs/performance.md, "The C library's math functions").
+/// convergence test such a bit changes a run's history (measured on the flexible hover with
+/// the shipped chain: the history.csv of a machine whose libm takes the builds without FMA
+/// differs from line 15 on, its mean lift by 3·10⁻⁵; docs/performance.md, "The C library's
+/// math functions").
 /// flapsim's own kernels give the same bits on every CPU by construction; this makes the
 /// C library's functions do the same.
 
