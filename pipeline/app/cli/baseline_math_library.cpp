@@ -26,10 +26,9 @@ void run_with_the_baseline_math_library(char** argv) {
   const ssize_t length = readlink("/proc/self/exe", self, sizeof self - 1);
   if (length > 0) {
     self[length] = '\0';
-    execv(self, argv);
-  } else {
-    execv("/proc/self/exe", argv);
+    execv(self, argv);  // returns if the file is gone (replaced by a build since it started)
   }
+  execv("/proc/self/exe", argv);
   const int failure = errno;  // execv returns only when it failed
   if (earlier != nullptr) setenv("GLIBC_TUNABLES", earlier, 1); else unsetenv("GLIBC_TUNABLES");
   std::fprintf(stderr, "flapsim: warning: could not start again with the C library's baseline math functions "
