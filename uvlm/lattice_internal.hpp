@@ -187,12 +187,19 @@ void attach_wake_to_trailing_edge(const VortexLatticeModel& m, VortexLatticeData
 /// segments' midpoints.
 enum class WingPoints { None = -1, Collocation = 0, Midpoints = 1 };
 
+/// At the collocation points with a single-precision wake, what a sum does with its part
+/// before the edge's segments (VortexLatticeData::collocation_older): nothing, keep it, or
+/// start from the part kept at the same n points instead of summing it (solve() asks for
+/// Reuse only after shedding, when only the edge's segments changed since its Keep).
+enum class OlderPart { None, Keep, Reuse };
+
 /// Induced velocity of the wake (and of the bound segments if include_bound) at the first n
 /// points of d.eval, written to d.eval.u/v/w (zeroed first). With old_wake_kept_apart(m, d) and
 /// one of the wing's point sets, the older wake's part is recorded, or taken from the
-/// record while it is held.
+/// record while it is held; at the collocation points `older` as above.
 void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
-                            bool include_bound, WingPoints points = WingPoints::None);
+                            bool include_bound, WingPoints points = WingPoints::None,
+                            OlderPart older = OlderPart::None);
 
 /// Velocity at the midpoints of the first n bound segments (set here as d.eval's first n
 /// points, into its u/v/w): the wake's, the trailing edge's and every other bound segment's.

@@ -218,16 +218,16 @@ struct EvalSums {
   bool keep_older = false;   ///< the part before the edge's segments kept (VortexLatticeData::collocation_older)
   bool reuse_older = false;  ///< … and taken from there instead of summed
 
-  EvalSums(const VortexLatticeModel& model, VortexLatticeData& data, std::size_t n, WingPoints points)
+  EvalSums(const VortexLatticeModel& model, VortexLatticeData& data, std::size_t n, WingPoints points,
+           OlderPart older_part = OlderPart::None)
       : m(model), d(data), slot(static_cast<int>(points)) {
     const bool apart = slot >= 0 && old_wake_kept_apart(m, d);
     held = apart && d.old_wake_held && d.old_wake[slot].size == n;
     record = apart && !held;
-    using Older = VortexLatticeData::CollocationOlderPart;
     const bool older = points == WingPoints::Collocation && !apart && m.single_precision_wake &&
                        d.collocation_older.x.size() >= n;
-    keep_older = older && d.collocation_older_part == Older::Keep;
-    reuse_older = older && d.collocation_older_part == Older::Reuse && d.collocation_older_size == n;
+    keep_older = older && older_part == OlderPart::Keep;
+    reuse_older = older && older_part == OlderPart::Reuse && d.collocation_older_size == n;
   }
   bool far() const { return d.far_tree_rows > 0 && d.far_wake_segments.size() > 0; }
   std::size_t wake_segments() const {
@@ -291,7 +291,7 @@ struct EvalSums {
 }  // namespace
 
 void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, std::size_t n,
-                            bool include_bound, WingPoints points) {
+                            bool include_bound, WingPoints points, OlderPart older) {
   d.eval.size = n;
   if (include_bound && d.wake_summed_at_eval == n && n > 0) {
     // The wake's part is there already (wake_at_eval_points_alongside): the bound's added.
@@ -306,7 +306,7 @@ void induced_at_eval_points(const VortexLatticeModel& m, VortexLatticeData& d, s
   // Wake (and leading-edge sheet: wake_segments holds both), far wake (tree), then bound
   // and trailing-edge segments: at each point the sums in this order, the direct ones in
   // one parallel region unless the far wake's tree comes between them (lattice_internal.hpp).
-  EvalSums sums(m, d, n, points);
+  EvalSums sums(m, d, n, points, older);
   const bool far = sums.far();
   const bool bound_with_wake = include_bound && !far;
   sums.prepare_wake();
@@ -380,11 +380,13 @@ void check_inputs(const VortexLatticeModel& m, const Eigen::Matrix3Xd& nodes,
   if (!(rho > 0.0)) throw std::invalid_argument("vortex lattice: air density must be > 0");
 }
 
-/// Wake-induced velocity at the collocation points into d.wake_velocity.
-void wake_velocity_at_collocation(const VortexLatticeModel& m, VortexLatticeData& d) {
+/// Wake-induced velocity at the collocation points into d.wake_velocity (`older`:
+/// detail::OlderPart).
+void wake_velocity_at_collocation(const VortexLatticeModel& m, VortexLatticeData& d,
+                                  detail::OlderPart older = detail::OlderPart::None) {
   const int np = m.panels();
   for (int k = 0; k < np; ++k) d.eval.set(k, d.collocation.col(k));
-  detail::induced_at_eval_points(m, d, np, false, detail::WingPoints::Collocation);
+  detail::induced_at_eval_points(m, d, np, false, detail::WingPoints::Collocation, older);
   for (int k = 0; k < np; ++k) d.wake_velocity.col(k) = d.eval.velocity(k);
 }
 
@@ -521,15 +523,13 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   detail::attach_wake_to_trailing_edge(m, d);
   detail::build_wake_segments(m, d, detail::WakeView::Wing);
   const bool shed = m.leading_edge == LeadingEdge::Shed;
-  using Older = VortexLatticeData::CollocationOlderPart;
   if (shed) {  // the leading-edge sheet with every strip's leading-edge ring as accepted
     detail::place_release_row(m, d);
     d.le_sheet.current = d.le_sheet.accepted;
     detail::build_sheet_segments(m, d, detail::WakeView::Wing);
-    d.collocation_older_part = Older::Keep;  // for the sum again after shedding (below)
   }
-  wake_velocity_at_collocation(m, d);
-  d.collocation_older_part = Older::None;
+  // With a sheet, the part before the edge's segments kept for the sum again after shedding.
+  wake_velocity_at_collocation(m, d, shed ? detail::OlderPart::Keep : detail::OlderPart::None);
   const int np = m.panels();
   for (int k = 0; k < np; ++k)
     d.rhs(k) = -(free_stream - d.surface_velocity.col(k) + d.wake_velocity.col(k)).dot(d.normal.col(k));
@@ -549,9 +549,7 @@ void solve(const VortexLatticeModel& m, VortexLatticeData& d, const Eigen::Matri
   if (shed && detail::shed_leading_edge_vorticity(m, d)) {  // strips beyond LESP_crit shed
     detail::build_sheet_segments(m, d, detail::WakeView::Wing);
     // Only the leading-edge rings changed, all in the edge's segments: the rest is reused.
-    d.collocation_older_part = Older::Reuse;
-    wake_velocity_at_collocation(m, d);
-    d.collocation_older_part = Older::None;
+    wake_velocity_at_collocation(m, d, detail::OlderPart::Reuse);
   }
   detail::build_bound_segments(m, d);
   detail::compute_loads(m, d);

@@ -301,13 +301,11 @@ struct VortexLatticeData {
   /// With a shed leading edge a solve sums the wake and the sheet at the collocation points
   /// twice when strips shed, and between the two only the leading-edge rings' strengths
   /// change, whose segments are all in wake_edge_segments (leading_edge_sheet.hpp,
-  /// kSheetEdgeRows). The first sum (Keep) keeps each point's velocity of the segments summed
-  /// before those (the single-precision wake and sheet, the young rows); the second (Reuse)
-  /// starts from it instead of summing them again: the same bits, a shorter sum.
-  enum class CollocationOlderPart { None, Keep, Reuse };
-  CollocationOlderPart collocation_older_part = CollocationOlderPart::None;
+  /// kSheetEdgeRows). The first sum keeps here each point's velocity of the segments summed
+  /// before those (the single-precision wake and sheet, the young rows); the second starts
+  /// from it instead of summing them again: the same bits, a shorter sum (detail::OlderPart).
   PointSet collocation_older;          ///< its velocities [m/s] (u, v, w; positions unused)
-  std::size_t collocation_older_size = 0;  ///< points kept by the last Keep
+  std::size_t collocation_older_size = 0;  ///< points kept by the last sum that kept them
 
   // Circulations [m²/s], panel index i + nc j.
   Eigen::VectorXd gamma;           ///< last solve

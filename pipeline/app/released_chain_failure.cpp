@@ -18,7 +18,7 @@ std::string released_chain_at_failure(const io::Case& c, long failed_step) {
     return "";
   char text[700];
   std::snprintf(text, sizeof text,
-                "The chain was released from bent joints (%s, line %d): such a start rings in the chain's "
+                "The chain was released from bent or moving joints (%s, line %d): such a start rings in the chain's "
                 "stiffest modes, far faster than a step, and in air the coupling can diverge on them while "
                 "numerics.rho_infinity = %g leaves them undamped; with rho_infinity = %g such starts ran, and so "
                 "did the same chain from rest (docs/case_file.md, \"[structure]\")",

@@ -2,7 +2,7 @@
 // again after its strips shed; between the two sums only the leading-edge rings' strengths
 // change, whose segments are all among the edge's double-precision ones, so the second sum
 // starts from the first one's part before them (VortexLatticeData::collocation_older;
-// docs/performance.md, "The shed leading edge against `separated`"). That must give the
+// docs/performance.md, "The shed leading edge against `separated`"; detail::OlderPart). That must give the
 // bits of the whole sum: checked on the revolving Robofly wing at 50°, whose strips shed at
 // every step, against the whole sum over the solve's final segments.
 #include "robofly_revolving.hpp"
