@@ -402,6 +402,7 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       }
       if (rn <= tolerance_scale * model.options.tolerance * scale || rn == 0.0) {
         res.converged = true;
+        res.tolerance_met = rn == 0.0 ? 0.0 : rn / (model.options.tolerance * scale);
         break;
       }
       if (it == model.options.max_iterations) break;
@@ -507,6 +508,11 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
       if (small_increment) {
         res.iterations = it + 1;
         res.converged = true;
+        // The same two tests at the scale they pass with (1: the full accuracy).
+        const double tol_1 = model.options.increment_tolerance;
+        res.tolerance_met = std::max(max_t / (tol_1 * model.size), max_r / tol_1);
+        if (eta >= 0.0 && max_r <= kMaxRotationCorrection)
+          res.tolerance_met = std::min(res.tolerance_met, eta * size / (rho / (1.0 - rho) * tol_1));
         break;
       }
     }

@@ -178,6 +178,9 @@ struct StepResult {
   bool converged = false;
   int iterations = 0;
   double residual = 0.0;   ///< last ‖r_free‖ / force scale
+  /// The smallest tolerance_scale whose stopping test the answer passed (≤ the one asked):
+  /// an answer asked for loosely may meet the full accuracy all the same (≤ 1).
+  double tolerance_met = 0.0;
   std::string failure;     ///< why it stopped (empty when converged)
 };
 

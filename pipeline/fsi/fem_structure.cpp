@@ -174,6 +174,7 @@ bool FemStructureData::solve_in_pieces(double dt, int pieces, std::string& failu
       failure = r.failure;
       return false;
     }
+    solved_accuracy_ = std::max(solved_accuracy_, r.tolerance_met);
   }
   return true;
 }
@@ -200,6 +201,7 @@ void FemStructureData::solve(double dt) {
   for (;;) {
     restore_accepted();
     dynamics_->keep_warm_starts(pieces_);
+    solved_accuracy_ = 0.0;
     if (solve_in_pieces(dt, pieces_, failure)) break;
     if (pieces_ >= kMaxFemStepPieces)
       throw StructureFailure("FEM: " + failure + " (the step in " + std::to_string(pieces_) + " pieces)");

@@ -132,6 +132,10 @@ class StructureData {
     (void)factor;
     return 1.0;
   }
+  /// \brief The factor of the structure's own tolerance whose convergence test the last
+  /// solve's answer passed (≤ the factor asked; ≤ 1: an answer asked for loosely that meets
+  /// the full accuracy all the same, which the coupled step then need not solve again).
+  virtual double solved_accuracy() const { return 1.0; }
   /// \brief Takes the lattice's linearised added-mass response at its last solve
   /// (panel_load_response.hpp) into the solves of the sub-iterations, of this step and of
   /// the following ones until the coupling gives a new one (not the predictors): the
