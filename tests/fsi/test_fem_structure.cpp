@@ -177,86 +177,71 @@ TEST(FsiFemStructure, ALooseSolveFinishedAtFullAccuracyGivesTheColdSolvesAnswer)
   EXPECT_LT(loose_iterations, cold_iterations);
 }
 
+// The 0.2 mm aluminium plate (first bending near 100 Hz, 4 × the wingbeat: it bends) flown
+// coupled for the first 40 steps of the wingbeat, with the coupled step's loose intermediate
+// solves on or off and its FEM keeping loose answers that met the full accuracy or not.
+struct PlateFlight {
+  std::vector<double> lift;  ///< [N] a step
+  Eigen::Matrix3Xd x;        ///< accepted node positions of every step [m]
+  long newton = 0;           ///< Newton iterations of the run
+  long solves_again = 0;     ///< FsiData::accuracy_solves
+};
+constexpr int kFlightSteps = 40;
+PlateFlight fly_plate(bool loose, bool keep_met) {
+  auto plate = fem_plate(2e-4, 70e9, true);
+  plate->keep_met_loose_answers = keep_met;
+  fsi::FsiModel m = fsi_model(plate);
+  m.coupling.loose_intermediate_solves = loose;
+  fsi::FsiData d(m);
+  fsi::initialize(m, d, 0.0);
+  PlateFlight f;
+  const double worst = test::fly_fem_plate(m, d, kFlightSteps, 1.0 / (26.1 * kSteps), f.lift, f.x);
+  EXPECT_LE(worst, m.coupling.tolerance);
+  f.newton = static_cast<const fsi::FemStructureData&>(*d.structure).dynamics().counters().iterations;
+  f.solves_again = d.accuracy_solves;
+  return f;
+}
+// Two flights that both converge every step to the coupling tolerance τ = 1e-8 (fsi_model)
+// have the same answer within it: their states may differ by the coupling's own error, a
+// few τ (bound: 10 τ of the span), and their lifts by that error seen through the lattice's
+// ∂Γ/∂t, which divides a change over one step by Δt: τ/(2π f Δt) = τ N/2π of the peak at N
+// steps per wingbeat (bound 10 τ N/2π; the states alone move it by about τ).
+void expect_the_same_coupled_answer(const PlateFlight& a, const PlateFlight& reference) {
+  double peak = 0.0, lift_apart = 0.0;
+  for (int n = 0; n < kFlightSteps; ++n) {
+    peak = std::max(peak, std::abs(reference.lift[n]));
+    lift_apart = std::max(lift_apart, std::abs(a.lift[n] - reference.lift[n]));
+  }
+  const double span = 0.040, tau = 1e-8;
+  const double apart = (a.x - reference.x).lpNorm<Eigen::Infinity>() / span;
+  std::printf("  states %.2e of the span, lift %.2e of its peak apart; Newton iterations %ld against %ld, solves "
+              "again %ld against %ld\n",
+              apart, lift_apart / peak, a.newton, reference.newton, a.solves_again, reference.solves_again);
+  EXPECT_LT(apart, 10.0 * tau);
+  EXPECT_LT(lift_apart, 10.0 * tau * kSteps / (2.0 * std::numbers::pi) * peak);
+}
+
 TEST(FsiFemStructure, LooseIntermediateSolvesKeepTheCoupledAnswer) {
   // CouplingSettings::loose_intermediate_solves (coupled_step.hpp): the coupling's
   // intermediate structure solves to 1 % of its current change, the accepted one at full
-  // accuracy. Both runs converge every step to the coupling tolerance τ = 1e-8 (fsi_model),
-  // so their accepted states may differ by the coupling's own error, a few τ (bound: 10 τ of
-  // the span), and their lifts by that error seen through the lattice's ∂Γ/∂t, which divides
-  // a change over one step by Δt: τ/(2π f Δt) = τ N/2π of the peak at N steps per wingbeat
-  // (bound 10 τ N/2π; the states alone move it by about τ). A 0.2 mm aluminium plate
-  // (first bending near 100 Hz, 4 × the wingbeat: it bends), the first 40 steps of the
-  // wingbeat, with fewer Newton iterations in all.
-  constexpr int kRun = 40;
-  const double dt = 1.0 / (26.1 * kSteps);
-  auto run = [&](bool loose, std::vector<double>& lift, Eigen::Matrix3Xd& x, long& newton) {
-    fsi::FsiModel m = fsi_model(fem_plate(2e-4, 70e9, true));
-    m.coupling.loose_intermediate_solves = loose;
-    fsi::FsiData d(m);
-    fsi::initialize(m, d, 0.0);
-    const double worst = test::fly_fem_plate(m, d, kRun, dt, lift, x);
-    newton = static_cast<const fsi::FemStructureData&>(*d.structure).dynamics().counters().iterations;
-    EXPECT_LE(worst, m.coupling.tolerance);
-    return d.accuracy_solves;
-  };
-  std::vector<double> lift_full, lift_loose;
-  Eigen::Matrix3Xd x_full, x_loose;
-  long newton_full = 0, newton_loose = 0;
-  EXPECT_EQ(run(false, lift_full, x_full, newton_full), 0);
-  EXPECT_GT(run(true, lift_loose, x_loose, newton_loose), 0);
-  double peak = 0.0, lift_apart = 0.0;
-  for (int n = 0; n < kRun; ++n) {
-    peak = std::max(peak, std::abs(lift_full[n]));
-    lift_apart = std::max(lift_apart, std::abs(lift_loose[n] - lift_full[n]));
-  }
-  const double span = 0.040, tau = 1e-8;
-  const double apart = (x_loose - x_full).lpNorm<Eigen::Infinity>() / span;
-  std::printf("  states %.2e of the span, lift %.2e of its peak apart; Newton iterations %ld loose, %ld full\n", apart,
-              lift_apart / peak, newton_loose, newton_full);
-  EXPECT_LT(apart, 10.0 * tau);
-  EXPECT_LT(lift_apart, 10.0 * tau * kSteps / (2.0 * std::numbers::pi) * peak);
-  EXPECT_LT(newton_loose, newton_full);
+  // accuracy: the same coupled answer as every solve at full accuracy (bounds above), with
+  // fewer Newton iterations in all.
+  const PlateFlight full = fly_plate(false, true), loose = fly_plate(true, true);
+  EXPECT_EQ(full.solves_again, 0);
+  EXPECT_GT(loose.solves_again, 0);
+  expect_the_same_coupled_answer(loose, full);
+  EXPECT_LT(loose.newton, full.newton);
 }
 
 TEST(FsiFemStructure, ALooseAnswerThatMetTheFullAccuracyIsKeptAndKeepsTheCoupledAnswer) {
   // FemStructureModel::keep_met_loose_answers (fem_structure.hpp; coupled_step.cpp): a
   // sub-iteration's loose answer that passed the FEM's full test (solved_accuracy() <= 1)
-  // is accepted without the solve again at full accuracy. The run of the test above with
-  // and without it: fewer solves again and fewer Newton iterations, and the same coupled
-  // answer within the bounds above (10 τ of the span for the states, 10 τ N/2π of the peak
-  // for the lift: both runs converge every step to τ).
-  constexpr int kRun = 40;
-  const double dt = 1.0 / (26.1 * kSteps);
-  auto run = [&](bool keep, std::vector<double>& lift, Eigen::Matrix3Xd& x, long& newton) {
-    auto plate = fem_plate(2e-4, 70e9, true);
-    plate->keep_met_loose_answers = keep;
-    fsi::FsiModel m = fsi_model(plate);
-    fsi::FsiData d(m);
-    fsi::initialize(m, d, 0.0);
-    const double worst = test::fly_fem_plate(m, d, kRun, dt, lift, x);
-    newton = static_cast<const fsi::FemStructureData&>(*d.structure).dynamics().counters().iterations;
-    EXPECT_LE(worst, m.coupling.tolerance);
-    return d.accuracy_solves;
-  };
-  std::vector<double> lift_kept, lift_again;
-  Eigen::Matrix3Xd x_kept, x_again;
-  long newton_kept = 0, newton_again = 0;
-  const long kept = run(true, lift_kept, x_kept, newton_kept);
-  const long again = run(false, lift_again, x_again, newton_again);
-  double peak = 0.0, lift_apart = 0.0;
-  for (int n = 0; n < kRun; ++n) {
-    peak = std::max(peak, std::abs(lift_again[n]));
-    lift_apart = std::max(lift_apart, std::abs(lift_kept[n] - lift_again[n]));
-  }
-  const double span = 0.040, tau = 1e-8;
-  const double apart = (x_kept - x_again).lpNorm<Eigen::Infinity>() / span;
-  std::printf("  solves again %ld kept, %ld not; Newton iterations %ld, %ld; states %.2e of the span, lift %.2e of "
-              "its peak apart\n",
-              kept, again, newton_kept, newton_again, apart, lift_apart / peak);
-  EXPECT_LT(kept, again);
-  EXPECT_LT(newton_kept, newton_again);
-  EXPECT_LT(apart, 10.0 * tau);
-  EXPECT_LT(lift_apart, 10.0 * tau * kSteps / (2.0 * std::numbers::pi) * peak);
+  // is accepted without the solve again at full accuracy. The loose flight with and without
+  // it: fewer solves again and fewer Newton iterations, and the same coupled answer.
+  const PlateFlight kept = fly_plate(true, true), again = fly_plate(true, false);
+  EXPECT_LT(kept.solves_again, again.solves_again);
+  EXPECT_LT(kept.newton, again.newton);
+  expect_the_same_coupled_answer(kept, again);
 }
 
 }  // namespace
