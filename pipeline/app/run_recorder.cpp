@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "pipeline/fsi/fem_structure.hpp"
+#include "pipeline/fsi/cycle_statistics.hpp"
 #include "pipeline/fsi/phase_analysis.hpp"
 #include "pipeline/io/fem_run_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
@@ -277,6 +278,25 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     r.set("mean_CP", mean(series(samples_, [](const StepSample& s) { return s.cp; })));
     r.set("lift_per_power_N_W", power != 0.0 ? r.number("mean_lift_N") / power
                                              : std::numeric_limits<double>::quiet_NaN());
+    // Over the whole cycles from the second on (a flow that does not repeat: its result).
+    if (std::floor(t_end / period + 1e-6) >= 3.0) {
+      std::vector<double> tt = t;
+      tt.insert(tt.begin(), 0.0);
+      auto from_zero = [](std::vector<double> x) {
+        x.insert(x.begin(), x.empty() ? 0.0 : x.front());
+        return x;
+      };
+      const fsi::CycleStatistics cl = fsi::cycle_statistics(
+          tt, from_zero(series(samples_, [](const StepSample& s) { return s.cl; })), period, t_end, 2);
+      const fsi::CycleStatistics lift = fsi::cycle_statistics(
+          tt, from_zero(series(samples_, [](const StepSample& s) { return s.lift; })), period, t_end, 2);
+      r.set("settled_cycles", static_cast<int>(cl.cycle_means.size()));
+      r.set("settled_mean_lift_N", lift.mean);
+      r.set("settled_mean_CL", cl.mean);
+      r.set("settled_CL_standard_error", cl.standard_error);
+      r.set("cycle_CL_deviation", cl.deviation);
+      r.set("cycle_CL_lag_correlation", cl.lag_one_correlation);
+    }
   }
 
   r.set("mean_drive_power_W", mean(series(samples_, [](const StepSample& s) { return s.drive_power; })));

@@ -118,6 +118,23 @@ inline constexpr auto kRunResults = [] {
                        "mean power coefficient P / (½ ρ U_ref³ S), last cycle (in air)"},
       ResultDefinition{"lift_per_power_N_W", "N/W", K::number, "%.4g", "lift/power",
                        "mean lift / mean aerodynamic power, last cycle (in air)"},
+      // Over many cycles, for flows that do not repeat (fsi/cycle_statistics.hpp).
+      ResultDefinition{"settled_cycles", "", K::integer, "", "",
+                       "whole cycles from the second to the last, over which the settled_ results are taken "
+                       "(in air, at least 2)"},
+      ResultDefinition{"settled_mean_lift_N", "N", K::number, "%.6g", "",
+                       "mean lift over the settled cycles (from the second on; the result of a run whose "
+                       "cycles do not repeat) (in air)"},
+      ResultDefinition{"settled_mean_CL", "", K::number, "%.4f", "settled CL",
+                       "mean lift coefficient over the settled cycles (in air)"},
+      ResultDefinition{"settled_CL_standard_error", "", K::number, "%.4f", "",
+                       "standard error of settled_mean_CL: the standard deviation of the cycles' mean CL over "
+                       "√settled_cycles (how well the mean is known if the cycles are independent) (in air)"},
+      ResultDefinition{"cycle_CL_deviation", "", K::number, "%.4f", "",
+                       "standard deviation of the settled cycles' mean CL: ~0 for a periodic run (in air)"},
+      ResultDefinition{"cycle_CL_lag_correlation", "", K::number, "%.3f", "",
+                       "correlation of each settled cycle's mean CL with the next's: near 0 when the cycles are "
+                       "independent, and the standard error holds (in air)"},
       ResultDefinition{"mean_drive_power_W", "W", K::number, "%.6g", "drive power",
                        "cycle-mean power the base supplies to the wing, ω·M + v·F at the pivot (inertial "
                        "plus aerodynamic), last cycle"},
@@ -244,6 +261,10 @@ inline constexpr std::array kRunReport = {
     // mean CL 0.0000" read as a result.
     ReportLine{"mean lift (last cycle) {mean_lift_N}, mean CL {mean_CL}",
                [](const RunResults& r) { return r.has("mean_power_W"); }},
+    ReportLine{"over {settled_cycles} cycles from the second: mean lift {settled_mean_lift_N}, mean CL "
+               "{settled_mean_CL} ± {settled_CL_standard_error} (standard error; the cycles' mean CL scatter "
+               "by {cycle_CL_deviation})",
+               [](const RunResults& r) { return r.has("settled_mean_CL"); }},
     ReportLine{"in vacuum (air = \"none\"): no aerodynamic loads, no lift",
                [](const RunResults& r) { return !r.has("mean_power_W"); }},
     ReportLine{"mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W}, lift/power "

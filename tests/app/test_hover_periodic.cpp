@@ -69,4 +69,18 @@ TEST(HoverPeriodic, TwentyCyclesOfHoverStayPeriodic) {
   for (int c = 9; c < 20; ++c) average += mean[c] / 11;
   EXPECT_GT(average, 0.0);
   for (int c = 9; c < 20; ++c) EXPECT_NEAR(mean[c], average, 0.01 * average) << "cycle " << c + 1;
+  // summary.json's settled statistics (fsi/cycle_statistics.hpp) are those of cycles 2–20
+  // of the history: the mean of their means (the history's sample means against the
+  // summary's trapezoidal ones: within 0.1 %) and their sample standard deviation.
+  const std::string summary = flapsim::test::read_text(dir / "out" / "summary.json");
+  double settled = 0.0, squares = 0.0;
+  for (int c = 1; c < 20; ++c) settled += mean[c] / 19;
+  for (int c = 1; c < 20; ++c) squares += (mean[c] - settled) * (mean[c] - settled);
+  EXPECT_EQ(flapsim::test::json_number(summary, "settled_cycles"), 19.0);
+  EXPECT_NEAR(flapsim::test::json_number(summary, "settled_mean_lift_N"), settled, 1e-3 * settled);
+  const double cl = flapsim::test::json_number(summary, "settled_mean_CL");
+  const double deviation = std::sqrt(squares / 18) / settled * cl;  // of CL: lift and CL are proportional
+  EXPECT_NEAR(flapsim::test::json_number(summary, "cycle_CL_deviation"), deviation, 0.05 * deviation);
+  EXPECT_NEAR(flapsim::test::json_number(summary, "settled_CL_standard_error"), deviation / std::sqrt(19.0),
+              0.05 * deviation);
 }

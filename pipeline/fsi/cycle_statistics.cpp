@@ -1,0 +1,36 @@
+#include "pipeline/fsi/cycle_statistics.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "pipeline/fsi/phase_analysis.hpp"
+
+namespace flapsim::fsi {
+
+CycleStatistics cycle_statistics(const std::vector<double>& t, const std::vector<double>& x, double period,
+                                 double t_end, int first_cycle) {
+  // Whole cycles only: a cycle that ends within a millionth of a period of t_end counts
+  // (the step times are sums of Δt).
+  const int whole = static_cast<int>(std::floor(t_end / period + 1e-6));
+  const int n = whole - first_cycle + 1;
+  if (first_cycle < 1 || n < 2)
+    throw std::invalid_argument("cycle_statistics: " + std::to_string(whole) + " whole cycles, from cycle " +
+                                std::to_string(first_cycle) + " on fewer than two");
+  CycleStatistics s;
+  for (int k = first_cycle - 1; k < whole; ++k) s.cycle_means.push_back(window_mean(t, x, k * period, (k + 1) * period));
+  for (double m : s.cycle_means) s.mean += m;
+  s.mean /= n;
+  double squares = 0.0, products = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double d = s.cycle_means[i] - s.mean;
+    squares += d * d;
+    if (i + 1 < n) products += d * (s.cycle_means[i + 1] - s.mean);
+  }
+  s.deviation = std::sqrt(squares / (n - 1));
+  s.standard_error = s.deviation / std::sqrt(static_cast<double>(n));
+  s.lag_one_correlation = squares > 0.0 ? products / squares : 0.0;
+  return s;
+}
+
+}  // namespace flapsim::fsi

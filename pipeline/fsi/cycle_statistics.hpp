@@ -1,0 +1,35 @@
+#pragma once
+/// \file cycle_statistics.hpp
+/// \brief The mean of a run's series over many cycles and how well it is known, for flows
+/// that do not repeat from cycle to cycle.
+///
+/// A periodic run settles to one cycle that repeats, and its last cycle's mean is the
+/// result (summary.json's mean_ keys). A run whose flow does not repeat (the shed
+/// leading-edge sheet the wing meets again after each reversal: docs/uvlm.md, "Lua et
+/// al.'s hover over many cycles") has cycle means that scatter; its result is their mean
+/// over many cycles, known to within the standard error of that mean, as any statistic of
+/// a flow that is steady only in the mean.
+
+#include <vector>
+
+namespace flapsim::fsi {
+
+/// Means of a series over whole cycles and their statistics.
+struct CycleStatistics {
+  std::vector<double> cycle_means;  ///< mean over each whole cycle used, in order
+  double mean = 0.0;                ///< mean of cycle_means (= the mean over those cycles)
+  double deviation = 0.0;           ///< sample standard deviation of cycle_means
+  double standard_error = 0.0;      ///< deviation / √n: how well `mean` is known if the cycles are independent
+  double lag_one_correlation = 0.0; ///< correlation of each cycle's mean with the next's (0 for independent cycles)
+};
+
+/// \brief Statistics of x over the whole cycles [k T, (k+1) T] from cycle `first_cycle`
+/// (1-based: 2 leaves out the first cycle, the start from rest) to the last that ends by
+/// t_end; each cycle's mean by the trapezoidal rule on its samples (window_mean). t and x
+/// start at t = 0. Needs at least two such cycles.
+/// \param period  T [s]
+/// \throws std::invalid_argument with fewer than two whole cycles from first_cycle on
+CycleStatistics cycle_statistics(const std::vector<double>& t, const std::vector<double>& x, double period,
+                                 double t_end, int first_cycle);
+
+}  // namespace flapsim::fsi
