@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "pipeline/fsi/fem_structure.hpp"
 #include "pipeline/fsi/cycle_statistics.hpp"
@@ -253,12 +254,14 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   const double t_end = data.time();
   const double t_begin = std::max(0.0, t_end - period);
   const std::vector<double> t = series(samples_, [](const StepSample& s) { return s.time; });
-  const auto mean = [&](std::vector<double> x) {
-    std::vector<double> tt = t;
-    tt.insert(tt.begin(), 0.0);  // the series start at the first step; t = 0 has no loads
+  // The series start at the first step; t = 0 has no loads: its value is the first step's.
+  std::vector<double> t_from_zero = t;
+  t_from_zero.insert(t_from_zero.begin(), 0.0);
+  const auto from_zero = [](std::vector<double> x) {
     x.insert(x.begin(), x.empty() ? 0.0 : x.front());
-    return fsi::window_mean(tt, x, t_begin, t_end);
+    return x;
   };
+  const auto mean = [&](std::vector<double> x) { return fsi::window_mean(t_from_zero, from_zero(std::move(x)), t_begin, t_end); };
   r.set("steps", data.step);
   r.set("time_s", t_end);
   r.set("mean_lift_N", mean(series(samples_, [](const StepSample& s) { return s.lift; })));
@@ -279,17 +282,11 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     r.set("lift_per_power_N_W", power != 0.0 ? r.number("mean_lift_N") / power
                                              : std::numeric_limits<double>::quiet_NaN());
     // Over the whole cycles from the second on (a flow that does not repeat: its result).
-    if (std::floor(t_end / period + 1e-6) >= 3.0) {
-      std::vector<double> tt = t;
-      tt.insert(tt.begin(), 0.0);
-      auto from_zero = [](std::vector<double> x) {
-        x.insert(x.begin(), x.empty() ? 0.0 : x.front());
-        return x;
-      };
+    if (fsi::whole_cycles(period, t_end) >= 3) {
       const fsi::CycleStatistics cl = fsi::cycle_statistics(
-          tt, from_zero(series(samples_, [](const StepSample& s) { return s.cl; })), period, t_end, 2);
+          t_from_zero, from_zero(series(samples_, [](const StepSample& s) { return s.cl; })), period, t_end, 2);
       const fsi::CycleStatistics lift = fsi::cycle_statistics(
-          tt, from_zero(series(samples_, [](const StepSample& s) { return s.lift; })), period, t_end, 2);
+          t_from_zero, from_zero(series(samples_, [](const StepSample& s) { return s.lift; })), period, t_end, 2);
       r.set("settled_cycles", static_cast<int>(cl.cycle_means.size()));
       r.set("settled_mean_lift_N", lift.mean);
       r.set("settled_mean_CL", cl.mean);

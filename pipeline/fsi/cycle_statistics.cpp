@@ -8,11 +8,11 @@
 
 namespace flapsim::fsi {
 
+int whole_cycles(double period, double t_end) { return static_cast<int>(std::floor(t_end / period + 1e-6)); }
+
 CycleStatistics cycle_statistics(const std::vector<double>& t, const std::vector<double>& x, double period,
                                  double t_end, int first_cycle) {
-  // Whole cycles only: a cycle that ends within a millionth of a period of t_end counts
-  // (the step times are sums of Δt).
-  const int whole = static_cast<int>(std::floor(t_end / period + 1e-6));
+  const int whole = whole_cycles(period, t_end);
   const int n = whole - first_cycle + 1;
   if (first_cycle < 1 || n < 2)
     throw std::invalid_argument("cycle_statistics: " + std::to_string(whole) + " whole cycles, from cycle " +

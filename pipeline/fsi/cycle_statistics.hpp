@@ -23,6 +23,10 @@ struct CycleStatistics {
   double lag_one_correlation = 0.0; ///< correlation of each cycle's mean with the next's (0 for independent cycles)
 };
 
+/// \brief Whole cycles of period T [s] in [0, t_end]; a cycle that ends within a millionth of a
+/// period of t_end counts (the step times are sums of Δt).
+int whole_cycles(double period, double t_end);
+
 /// \brief Statistics of x over the whole cycles [k T, (k+1) T] from cycle `first_cycle`
 /// (1-based: 2 leaves out the first cycle, the start from rest) to the last that ends by
 /// t_end; each cycle's mean by the trapezoidal rule on its samples (window_mean). t and x
