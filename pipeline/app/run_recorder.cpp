@@ -281,8 +281,10 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     r.set("mean_CP", mean(series(samples_, [](const StepSample& s) { return s.cp; })));
     r.set("lift_per_power_N_W", power != 0.0 ? r.number("mean_lift_N") / power
                                              : std::numeric_limits<double>::quiet_NaN());
-    // Over the whole cycles from the second on (a flow that does not repeat: its result).
-    if (fsi::whole_cycles(period, t_end) >= 3) {
+    // Over the whole cycles from the second on (a flow that does not repeat: its result); at
+    // least three of them, for a standard deviation that means something (the 3-cycle hovers
+    // of `make run` report their last cycle alone).
+    if (fsi::whole_cycles(period, t_end) >= 4) {
       const fsi::CycleStatistics cl = fsi::cycle_statistics(
           t_from_zero, from_zero(series(samples_, [](const StepSample& s) { return s.cl; })), period, t_end, 2);
       const fsi::CycleStatistics lift = fsi::cycle_statistics(

@@ -121,7 +121,7 @@ inline constexpr auto kRunResults = [] {
       // Over many cycles, for flows that do not repeat (fsi/cycle_statistics.hpp).
       ResultDefinition{"settled_cycles", "", K::integer, "", "",
                        "whole cycles from the second to the last, over which the settled_ results are taken "
-                       "(in air, at least 2)"},
+                       "(in air, at least 3: runs of 4 cycles or more)"},
       ResultDefinition{"settled_mean_lift_N", "N", K::number, "%.6g", "",
                        "mean lift over the settled cycles (from the second on; the result of a run whose "
                        "cycles do not repeat) (in air)"},
