@@ -8,7 +8,10 @@
 
 namespace flapsim::fsi {
 
-int whole_cycles(double period, double t_end) { return static_cast<int>(std::floor(t_end / period + 1e-6)); }
+int whole_cycles(double period, double t_end) {
+  const double n = std::floor(t_end / period + 1e-6);
+  return n >= 0.0 && n < 1e9 ? static_cast<int>(n) : 0;  // no period (0, NaN) or no time: none
+}
 
 CycleStatistics cycle_statistics(const std::vector<double>& t, const std::vector<double>& x, double period,
                                  double t_end, int first_cycle) {

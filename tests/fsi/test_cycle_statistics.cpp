@@ -4,6 +4,7 @@
 // (to round-off), and x is continuous (0 at every cycle's start).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -62,4 +63,15 @@ TEST(CycleStatistics, AnUnfinishedLastCycleIsLeftOutAndTooFewCyclesAreRefused) {
   EXPECT_NEAR(cycle_statistics(s.t, s.x, period, s.t.back(), 4).mean, 5.5, 1e-12);
   // From the fifth: one cycle, no deviation to take.
   EXPECT_THROW(cycle_statistics(s.t, s.x, period, s.t.back(), 5), std::invalid_argument);
+}
+
+TEST(CycleStatistics, WholeCyclesCountsACycleThatEndsWithinRoundOffOfTheLastStep) {
+  // 10 steps of 0.1 s summed (t_end 0.9999999999999999, below 1) are one cycle of 1 s; 0.99 s is none.
+  double t = 0.0;
+  for (int i = 0; i < 10; ++i) t += 0.1;
+  EXPECT_LT(t, 1.0);
+  EXPECT_EQ(flapsim::fsi::whole_cycles(1.0, t), 1);
+  EXPECT_EQ(flapsim::fsi::whole_cycles(1.0, 0.99), 0);
+  EXPECT_EQ(flapsim::fsi::whole_cycles(0.04, 0.4 + 1e-12), 10);
+  EXPECT_EQ(flapsim::fsi::whole_cycles(0.0, 1.0), 0);  // no period: no cycles, not an overflow
 }
