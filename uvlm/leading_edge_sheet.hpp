@@ -24,8 +24,10 @@
 ///  - node rows 0 … rows−1 are free (convected with the local velocity, their cores grow
 ///    with age like the wake's); row `rows` is the release row R, placed at every solve at
 ///    R = x_LE + ½ Δt (V∞ − v_LE + v_wake), half of the step's path of the air past the
-///    leading edge (Ramesh et al. 2014 place a new leading-edge vortex there; v_wake is the
-///    trailing-edge wake's velocity at the edge);
+///    leading edge (Ramesh et al. 2014 place the first vortex of a shedding episode there,
+///    the following ones a third of the way to the last one shed, which diverged here:
+///    docs/uvlm.md, "What makes the hover's lift rough"; v_wake is the trailing-edge wake's
+///    velocity at the edge);
 ///  - ring r < rows spans node rows r and r+1 with circulation gamma[r ns + j];
 ///  - the leading-edge ring of strip j spans from the release row to the lattice's first
 ///    bound vortex (ring-node row 0, a quarter panel behind the edge) with circulation
