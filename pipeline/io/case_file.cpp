@@ -294,7 +294,7 @@ bool is_case_document(const TomlTable& root) { return root.has("kinematics"); }
 // within 10 % of the fit there, converged in the step from 120 steps per half revolution, 8-15 %
 // low at 10-40 deg); on flapping wings its per-step lift is not converged in the step (the Lua
 // hover: spikes of 3-8 times the mean at reversal), its cycles do not repeat, and its mean over
-// many cycles is the result (within 5 % of Lua et al.'s over 60 cycles); long runs may diverge.
+// many cycles is the result (3-5 % above Lua et al.'s over 150 cycles); long runs may diverge.
 void warn_experimental_shedding(const TomlTable& root, Case& c) {
   // In vacuum (air = "none") there is no lattice and nothing is shed: no warning.
   if (c.numerics.leading_edge != uvlm::LeadingEdge::Shed || !c.air.enabled) return;
@@ -302,7 +302,7 @@ void warn_experimental_shedding(const TomlTable& root, Case& c) {
   c.warnings.push_back({c.file, t ? t->line_of("leading_edge") : 0, "numerics.leading_edge",
                         "\"shed\" is experimental: verified on a 2-D strip and on a revolving wing at 50-60 deg; "
                         "on a flapping wing the cycles do not repeat and the per-step lift is rough, so read "
-                        "summary.json's settled_mean_CL over many cycles (Lua et al.'s wing: within 5 % over 60), "
+                        "summary.json's settled_mean_CL over many cycles (Lua et al.'s wing: 3-5 % above the measurement over 150), "
                         "and a long run may break down (docs/uvlm.md, \"Leading-edge vortex shedding: "
                         "measurements\"); \"separated\" and \"none\" bracket the measured lift"});
 }

@@ -74,7 +74,7 @@ TEST(AddedMass, TheResponseIsTheDerivativeOfTheLoadsOfAPlateAtRestInStillAir) {
   // load routes.
   for (const uvlm::LoadMethod method : {uvlm::LoadMethod::Bernoulli, uvlm::LoadMethod::KuttaJoukowski}) {
     Eigen::Matrix3Xd second_order_response;
-    for (const auto [accepted, first_order] : {std::pair{1, false}, std::pair{2, false}, std::pair{2, true}}) {
+    for (const auto& [accepted, first_order] : {std::pair{1, false}, std::pair{2, false}, std::pair{2, true}}) {
       uvlm::VortexLatticeModel m;
       m.chordwise = 4;
       m.spanwise = 8;
@@ -101,8 +101,9 @@ TEST(AddedMass, TheResponseIsTheDerivativeOfTheLoadsOfAPlateAtRestInStillAir) {
           << "load route " << static_cast<int>(method) << ", after " << accepted << " accepted steps"
           << (first_order ? ", first order" : "");
       if (accepted == 2 && !first_order) second_order_response = response;
-      if (first_order)  // the same δΓ, its rate 1/Δt against 3/(2Δt)
+      if (first_order) {  // the same δΓ, its rate 1/Δt against 3/(2Δt)
         EXPECT_LT((response - (2.0 / 3.0) * second_order_response).cwiseAbs().maxCoeff(), 1e-12 * scale);
+      }
       // Linear in δv: twice the change, twice the response.
       Eigen::Matrix3Xd doubled;
       uvlm::added_mass_force_change(m, d, 2.0 * dv, scratch, doubled);
