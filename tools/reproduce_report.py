@@ -248,7 +248,7 @@ def aero_rows(plan):
                  "flapping wing and its cycles do not repeat (the wing meets its sheet at every reversal): its cell is the "
                  "mean of the cycles from the second on ± its standard error (docs/uvlm.md, \"Lua et al.'s hover over "
                  "many cycles\"; against the measured 2.08: " + against_measured +
-                 "; over 150 cycles +3 … +5 % at 50–200 steps a cycle)",
+                 "; over 150 cycles +3.2 / +5.2 / +2.6 % at 50 / 100 / 200 steps a cycle)",
                  "flapsim run cases/lua_rigid.toml with numerics.leading_edge = each model"))
     cells = {}
     for m in MODELS:

@@ -2,9 +2,10 @@
 // 5 cycles), gives the same history.csv bit for bit with 1, 2 and 3 OpenMP threads, for
 // each of the three ways the wake is summed: the convected far wake by the tree code (the
 // case), the convected far wake by the direct sum, and the whole free wake by the tree
-// code, and the case with the shed leading edge (its far wake by the tree). Each wake-velocity sum runs in parallel over its target points (the direct sum once
-// points x segments > 1e5, the tree always) and adds every point's terms in a fixed order,
-// so the thread count may not change a single bit (docs/performance.md,
+// code, and the case with the shed leading edge (its far wake by the tree). Each
+// wake-velocity sum runs in parallel over its target points (the direct sum once points x
+// segments > 1e5, the tree always) and adds every point's terms in a fixed order, so the
+// thread count may not change a single bit (docs/performance.md,
 // "Portable build, runtime-dispatched kernels").
 // Adding one ulp to one wake node's velocity per step when more than one thread runs makes
 // the far-wake-by-tree variant fail (checked); multiplying one sheet node's velocity by

@@ -19,8 +19,9 @@ TEST(LuaShedManyCycles, TheMeanLiftOverThirtyCyclesIsWithinFivePercentOfTheMeasu
   // §2, Fig. 8); issue 30 asks `shed` for 5 %. Measured (1 Dec): at 50 steps a cycle and 30
   // cycles the mean of cycles 2–30 is 2.1448 (+3.1 %), its standard error 0.0300 (1.4 %), the
   // cycles' standard deviation 0.1615 (7.5 %); over 60 cycles 2.159, at 100 steps a cycle
-  // 2.179; over 150 cycles 2.146 (50 steps), 2.188 (100), 2.133 (200) (docs/uvlm.md). The standard error below 2 % of the mean makes the
-  // 5 % a statement about the model, not about the cycles that happened to be run.
+  // 2.179; over 150 cycles 2.146 (50 steps), 2.188 (100), 2.133 (200) (docs/uvlm.md). The
+  // standard error below 2 % of the mean makes the 5 % a statement about the model, not
+  // about the cycles that happened to be run.
   flapsim::test::ScratchDir dir("lua_shed_many_cycles");
   std::string toml = flapsim::test::shipped_case_text("lua_rigid");
   toml = std::regex_replace(toml, std::regex("\nsteps_per_cycle = 100"), "\nsteps_per_cycle = 50");
