@@ -15,7 +15,8 @@ Usage: reproduce.py [--build build] [--out out/reproduce] [--doc docs/reproducti
                     [--figures docs/figures] [--jobs 2] [--quick] [--no-sensitivity]
 Runs of `shed` stop at --shed-limit seconds of wall clock (default 900) and run more cycles
 (Lua et al.'s case 30, the phase studies 12): on a flapping wing their cycles do not repeat, and
-their result is the mean over the cycles from the second on (summary.json settled_mean_CL). --quick: 2 cycles of 40 steps on a 3 x 5 lattice, 1 vacuum cycle, fewer phases, shed
+their result is the mean over the cycles from the second on (summary.json settled_mean_CL).
+--quick: 2 cycles of 40 steps on a 3 x 5 lattice, 1 vacuum cycle, fewer phases, shed
 limited to 20 s a run: every row filled in a few tens of seconds, numbers not converged
 (the test tools.Reproduce.*). Exit 0 when the report is written (runs that stop are
 results); 2 when an input or the build is missing; the report is then not written.

@@ -261,7 +261,9 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     x.insert(x.begin(), x.empty() ? 0.0 : x.front());
     return x;
   };
-  const auto mean = [&](std::vector<double> x) { return fsi::window_mean(t_from_zero, from_zero(std::move(x)), t_begin, t_end); };
+  const auto mean = [&](std::vector<double> x) {
+    return fsi::window_mean(t_from_zero, from_zero(std::move(x)), t_begin, t_end);
+  };
   r.set("steps", data.step);
   r.set("time_s", t_end);
   r.set("mean_lift_N", mean(series(samples_, [](const StepSample& s) { return s.lift; })));

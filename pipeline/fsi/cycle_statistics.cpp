@@ -21,7 +21,8 @@ CycleStatistics cycle_statistics(const std::vector<double>& t, const std::vector
     throw std::invalid_argument("cycle_statistics: " + std::to_string(whole) + " whole cycles, from cycle " +
                                 std::to_string(first_cycle) + " on fewer than two");
   CycleStatistics s;
-  for (int k = first_cycle - 1; k < whole; ++k) s.cycle_means.push_back(window_mean(t, x, k * period, (k + 1) * period));
+  for (int k = first_cycle - 1; k < whole; ++k)
+    s.cycle_means.push_back(window_mean(t, x, k * period, (k + 1) * period));
   for (double m : s.cycle_means) s.mean += m;
   s.mean /= n;
   double squares = 0.0, products = 0.0;

@@ -302,9 +302,10 @@ void warn_experimental_shedding(const TomlTable& root, Case& c) {
   c.warnings.push_back({c.file, t ? t->line_of("leading_edge") : 0, "numerics.leading_edge",
                         "\"shed\" is experimental: verified on a 2-D strip and on a revolving wing at 50-60 deg; "
                         "on a flapping wing the cycles do not repeat and the per-step lift is rough, so read "
-                        "summary.json's settled_mean_CL over many cycles (Lua et al.'s wing: 3-5 % above the measurement over 150), "
-                        "and a long run may break down (docs/uvlm.md, \"Leading-edge vortex shedding: "
-                        "measurements\"); \"separated\" and \"none\" bracket the measured lift"});
+                        "summary.json's settled_mean_CL over many cycles (Lua et al.'s wing: 3-5 % above the "
+                        "measurement over 150 cycles), and a long run may break down (docs/uvlm.md, "
+                        "\"Leading-edge vortex shedding: measurements\"); \"separated\" and \"none\" bracket "
+                        "the measured lift"});
 }
 
 void warn_long_free_hover(const TomlTable& root, Case& c) {
