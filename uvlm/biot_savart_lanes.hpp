@@ -275,9 +275,14 @@ void sum_over_segments(const KernelCall<T>& c) {
     tail.g[l] = c.gamma[k]; tail.il[l] = c.inv_length2[k]; tail.cr[l] = c.core_ratio2[k];
   }
   const long passes = static_cast<long>(c.points / kPointsPerPass);
-#pragma omp parallel for schedule(static) if (c.points * c.segments > kParallelThreshold)
-  for (long q = 0; q < passes; ++q)
-    points_against_segments<M, kPointsPerPass>(c, tail, full, static_cast<std::size_t>(q) * kPointsPerPass);
+  if (c.points * c.segments > kParallelThreshold) {
+#pragma omp parallel for schedule(static)
+    for (long q = 0; q < passes; ++q)
+      points_against_segments<M, kPointsPerPass>(c, tail, full, static_cast<std::size_t>(q) * kPointsPerPass);
+  } else {  // (no parallel region of one thread: its entry costs more than a small sum)
+    for (long q = 0; q < passes; ++q)
+      points_against_segments<M, kPointsPerPass>(c, tail, full, static_cast<std::size_t>(q) * kPointsPerPass);
+  }
   for (std::size_t i = static_cast<std::size_t>(passes) * kPointsPerPass; i < c.points; ++i)
     points_against_segments<M, 1>(c, tail, full, i);
 }

@@ -80,30 +80,18 @@ bool update_lesp(const VortexLatticeModel& m, VortexLatticeData& d, Eigen::Vecto
   return joined;
 }
 
-/// A segment A→B of circulation Γ [m²/s] with its core.
-struct OneSegment {
-  Eigen::Vector3d a, b;
-  double gamma;
-  VortexCore core;
-};
-
-/// s.at_collocation's velocities: zeroed, then the velocity of each of `segments` at every
-/// collocation point, one segment at a time, in their order: at each point the sum of the
-/// segments' velocities evaluated alone, each as a set of one (biot_savart.hpp
-/// segment_velocity), added in that order.
-template <std::size_t N>
-void segments_at_collocation(const VortexLatticeModel& m, VortexLatticeData& d, const OneSegment (&segments)[N]) {
+/// s.at_collocation's velocities: zeroed, then the velocity of the segments in s.unit_ring
+/// (their cores relative to `core`) at every collocation point, summed as one set: a call a
+/// ring or a solve, not a segment (a call's setup, about 6 µs at 60 points, costs more than
+/// its pairs).
+void unit_ring_at_collocation(const VortexLatticeModel& m, VortexLatticeData& d, const VortexCore& core) {
   LeadingEdgeSheet& s = d.le_sheet;
   PointSet& p = s.at_collocation;
   const int np = m.panels();
   for (int k = 0; k < np; ++k) p.set(static_cast<std::size_t>(k), d.collocation.col(k));
   p.size = static_cast<std::size_t>(np);
   p.zero_velocity();
-  for (const OneSegment& g : segments) {
-    s.unit_ring.clear();
-    s.unit_ring.push(g.a, g.b, g.gamma);
-    add_induced_velocity(s.unit_ring, p, g.core);
-  }
+  add_induced_velocity(s.unit_ring, p, core);
 }
 
 /// Normal velocity at every collocation point of the unit leading-edge ring of strip j:
@@ -114,10 +102,16 @@ void unit_ring_column(const VortexLatticeModel& m, VortexLatticeData& d, int j) 
   const std::size_t base = static_cast<std::size_t>(s.rows) * (m.spanwise + 1);
   const Eigen::Vector3d r0 = s.nodes.position(base + j), r1 = s.nodes.position(base + j + 1);
   const Eigen::Vector3d a0 = d.ring_nodes.col(m.node(0, j)), a1 = d.ring_nodes.col(m.node(0, j + 1));
+  // The sheet's core for the sum; the bound segment's by its core ratio (biot_savart.hpp).
   const VortexCore sheet = m.sheet_core();
-  const OneSegment ring[4] = {{r1, r0, 1.0, sheet}, {r0, a0, 1.0, sheet}, {a1, r1, 1.0, sheet},
-                              {a0, a1, 1.0, m.bound_core()}};
-  segments_at_collocation(m, d, ring);
+  const double bound_ratio = sheet.radius / m.bound_core().radius;
+  SegmentSet& ring = s.unit_ring;
+  ring.clear();
+  ring.push(r1, r0, 1.0);
+  ring.push(r0, a0, 1.0);
+  ring.push(a1, r1, 1.0);
+  ring.push(a0.x(), a0.y(), a0.z(), a1.x(), a1.y(), a1.z(), 1.0, bound_ratio * bound_ratio);
+  unit_ring_at_collocation(m, d, sheet);
   for (int k = 0; k < m.panels(); ++k) s.columns(k, j) = s.at_collocation.velocity(k).dot(d.normal.col(k));
 }
 
@@ -125,11 +119,14 @@ void unit_ring_column(const VortexLatticeModel& m, VortexLatticeData& d, int j) 
 
 void add_leading_edge_ring_to_rhs(const VortexLatticeModel& m, VortexLatticeData& d) {
   LeadingEdgeSheet& s = d.le_sheet;
+  // A strip at a time (its ring's part subtracted before the next strip's): summed as one
+  // set the rounding differs, and Ramesh et al.'s plunging SD7003 then starts shedding one
+  // step later in its second cycle (test uvlm.LeadingEdgeShedding.PlungingSd7003*).
   for (int j = 0; j < m.spanwise; ++j) {
-    const double g = s.accepted(j);
-    if (g == 0.0) continue;
-    const OneSegment edge[1] = {{d.ring_nodes.col(m.node(0, j)), d.ring_nodes.col(m.node(0, j + 1)), g, m.bound_core()}};
-    segments_at_collocation(m, d, edge);
+    if (s.accepted(j) == 0.0) continue;
+    s.unit_ring.clear();
+    s.unit_ring.push(d.ring_nodes.col(m.node(0, j)), d.ring_nodes.col(m.node(0, j + 1)), s.accepted(j));
+    unit_ring_at_collocation(m, d, m.bound_core());
     for (int k = 0; k < m.panels(); ++k) d.rhs(k) -= s.at_collocation.velocity(k).dot(d.normal.col(k));
   }
 }

@@ -5,6 +5,7 @@
 #include "uvlm/leading_edge_sheet.hpp"
 
 #include "uvlm/lattice_internal.hpp"
+#include "uvlm/old_wake_hold.hpp"
 #include "uvlm/vortex_lattice.hpp"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
   target.setZero(ns);
   gamma0.setZero(np);
   border_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(ns);
-  unit_ring.reserve(4);
+  unit_ring.reserve(static_cast<std::size_t>(std::max(4, ns)));
   at_collocation.reserve(static_cast<std::size_t>(np));
 }
 
@@ -55,6 +56,7 @@ void place_release_row(const VortexLatticeModel& m, VortexLatticeData& d) {
   // The edge's velocity below: the trailing-edge wake's only.
   d.wake_segments.truncate(d.trailing_wake_segments);
   d.wake_edge_segments.truncate(d.trailing_wake_edge_segments);
+  d.young_wake_segments.truncate(d.trailing_young_wake_segments);
   for (int j = 0; j <= ns; ++j) d.eval.set(j, d.nodes.col(m.node(0, j)));
   induced_at_eval_points(m, d, ns + 1, false);
   const std::size_t base = static_cast<std::size_t>(s.rows) * (ns + 1);
@@ -78,8 +80,17 @@ void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wak
   // release row's placement sums that tree but none of the sheet (place_release_row).
   d.wake_segments.truncate(d.trailing_wake_segments);
   d.wake_edge_segments.truncate(d.trailing_wake_edge_segments);
-  SegmentSet& fixed = d.wake_segments;
-  SegmentSet& near_edge = view == WakeView::Wing && m.single_precision_wake ? d.wake_edge_segments : d.wake_segments;
+  d.young_wake_segments.truncate(d.trailing_young_wake_segments);
+  const bool wing_single = view == WakeView::Wing && m.single_precision_wake;
+  SegmentSet& near_edge = wing_single ? d.wake_edge_segments : d.wake_segments;
+  // The rest: with the older wake kept apart (old_wake_hold.hpp), a segment with a node at
+  // most model.young_wake_rows steps old goes to the young rows (summed at every solve),
+  // the others to the older wake's (held within a step), as the wake's own rows.
+  const bool apart = wing_single && old_wake_kept_apart(m, d);
+  const double young_age = (m.young_wake_rows + 0.5) * d.dt;  // [s]
+  auto fixed_set = [&](double youngest_age) -> SegmentSet& {
+    return apart && youngest_age <= young_age ? d.young_wake_segments : d.wake_segments;
+  };
   // Ring r ≤ L (ring L: the leading-edge ring, to the first bound vortex = node row L+1).
   auto G = [&](int r, int j) {
     if (r < 0 || r > L || j < 0 || j >= ns) return 0.0;
@@ -106,11 +117,11 @@ void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wak
   const int edge_row = L + 1 - kSheetEdgeRows;  // the first of the node rows near the edge
   for (int q = 0; q <= L; ++q)
     for (int j = 0; j < ns; ++j)
-      push(q >= edge_row ? near_edge : fixed, node(q, j), node(q, j + 1), G(q - 1, j) - G(q, j), age(q));
+      push(q >= edge_row ? near_edge : fixed_set(age(q)), node(q, j), node(q, j + 1), G(q - 1, j) - G(q, j), age(q));
   // Legs of ring r, column j, from node row r to r+1: root side of (r, j) minus tip side of (r, j−1).
   for (int r = 0; r <= L; ++r)
     for (int j = 0; j <= ns; ++j)
-      push(r >= edge_row - 1 ? near_edge : fixed, node(r, j), node(r + 1, j), G(r, j) - G(r, j - 1),
+      push(r >= edge_row - 1 ? near_edge : fixed_set(age(r + 1)), node(r, j), node(r + 1, j), G(r, j) - G(r, j - 1),
            0.5 * (age(r) + age(r + 1)));
 }
 

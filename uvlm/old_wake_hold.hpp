@@ -18,8 +18,11 @@
 /// solves are made and while the last change is small (pipeline/fsi/coupled_step.hpp,
 /// CouplingSettings::old_wake_hold_after, old_wake_hold_change; docs/fsi.md).
 ///
-/// Only for the single-precision wake without a leading-edge sheet (whose release row moves
-/// with every solve): otherwise the wake is never kept apart and nothing is held
+/// A shed leading edge's sheet (leading_edge_sheet.hpp) is kept apart by age as the wake
+/// is: its rows older than the young ones join the held sums, the younger ones are summed
+/// anew with the young wake, and those at the edge (its release row, placed at every solve,
+/// and the last step's) in double precision as always (build_sheet_segments). Only for the
+/// single-precision wake: otherwise the wake is never kept apart and nothing is held
 /// (old_wake_kept_apart).
 
 #include "uvlm/vortex_lattice.hpp"
@@ -27,10 +30,9 @@
 namespace flapsim::uvlm {
 
 /// Whether the wing's sums over the wake keep the older rows apart: asked for by the caller
-/// (d.old_wake_apart), with young rows to keep, the wake in single precision and no
-/// leading-edge sheet among its segments.
+/// (d.old_wake_apart), with young rows to keep and the wake in single precision.
 inline bool old_wake_kept_apart(const VortexLatticeModel& m, const VortexLatticeData& d) {
-  return d.old_wake_apart && m.young_wake_rows > 0 && m.single_precision_wake && m.leading_edge != LeadingEdge::Shed;
+  return d.old_wake_apart && m.young_wake_rows > 0 && m.single_precision_wake;
 }
 
 /// The solves until the next advance take the older wake's velocity at the wing's points

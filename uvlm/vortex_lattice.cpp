@@ -90,7 +90,8 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   wake_segments.reserve((rows + 1) * ns + rows * (ns + 1) + (sheds ? sheet_segment_capacity(ns, sheet_rings) : 0));
   wake_edge_segments.reserve(static_cast<std::size_t>(2 * ns + 1) + (sheds ? sheet_edge_segment_capacity(ns) : 0));
   wake_lattice.reserve(wake_nodes_n, static_cast<std::size_t>(ns) + 1);
-  young_wake_segments.reserve(static_cast<std::size_t>(m.young_wake_rows + 1) * (2 * ns + 1));
+  // (and as many of the sheet's, which gains a node row a step at most: old_wake_hold.hpp)
+  young_wake_segments.reserve(static_cast<std::size_t>(m.young_wake_rows + 1) * (2 * ns + 1) * (sheds ? 2 : 1));
   old_wake[0].reserve(static_cast<std::size_t>(np));
   old_wake[1].reserve(bound_n);
   if (m.far_wake_by_tree()) {
@@ -223,11 +224,11 @@ struct EvalSums {
       : m(model), d(data), slot(static_cast<int>(points)) {
     const bool apart = slot >= 0 && old_wake_kept_apart(m, d);
     held = apart && d.old_wake_held && d.old_wake[slot].size == n;
-    record = apart && !held;
-    const bool older = points == WingPoints::Collocation && !apart && m.single_precision_wake &&
+    const bool older = points == WingPoints::Collocation && m.single_precision_wake &&
                        d.collocation_older.x.size() >= n;
     keep_older = older && older_part == OlderPart::Keep;
     reuse_older = older && older_part == OlderPart::Reuse && d.collocation_older_size == n;
+    record = apart && !held && !reuse_older;
   }
   bool far() const { return d.far_tree_rows > 0 && d.far_wake_segments.size() > 0; }
   std::size_t wake_segments() const {

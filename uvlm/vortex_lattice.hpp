@@ -352,9 +352,9 @@ struct VortexLatticeData {
   /// kSheetEdgeRows node rows nearest the edge (the release row, placed at every solve, and
   /// the last step's) and its leading-edge ring's legs; empty otherwise (all in wake_segments).
   SegmentSet wake_edge_segments;
-  /// How many of wake_segments and wake_edge_segments are the trailing-edge wake's (the
-  /// sheet's follow them).
-  std::size_t trailing_wake_segments = 0, trailing_wake_edge_segments = 0;
+  /// How many of wake_segments, wake_edge_segments and young_wake_segments are the
+  /// trailing-edge wake's (the sheet's follow them).
+  std::size_t trailing_wake_segments = 0, trailing_wake_edge_segments = 0, trailing_young_wake_segments = 0;
   /// The same segments in lattice form (lattice_segments.hpp), for the wake's own direct
   /// sum in double precision (built with WakeView::Wake and !single_precision_wake only,
   /// without a leading-edge sheet: detail::wake_sum_by_lattice).

@@ -63,7 +63,7 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
   d.wake_segments.clear();
   d.wake_edge_segments.clear();
   d.young_wake_segments.clear();
-  d.trailing_wake_segments = d.trailing_wake_edge_segments = 0;
+  d.trailing_wake_segments = d.trailing_wake_edge_segments = d.trailing_young_wake_segments = 0;
   d.wake_lattice.assign_grid(0, n1);
   if (W == 0) return;
   // Convected far wake by the tree: the far wake moves as a whole (far_wake_velocity), so
@@ -109,6 +109,7 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
   }
   d.trailing_wake_segments = d.wake_segments.size();
   d.trailing_wake_edge_segments = d.wake_edge_segments.size();
+  d.trailing_young_wake_segments = d.young_wake_segments.size();
   // The same segments as a lattice of node rows q0 … W (lattice_segments.hpp), which the
   // wake's own direct sum in double precision uses (advance; in single precision the
   // segment kernel is faster, docs/performance.md; with a leading-edge sheet, whose

@@ -76,19 +76,23 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
   bool first = k == 0;
   const double tol = model.coupling.tolerance;
   double accuracy = 1.0;  // of the last solve, in multiples of the structure's tolerance
+  bool hold_released = false;
   while (k < last) {
     check_stop();  // a program that wants to stop need not wait for the step's end (stop_request.hpp)
     // 1. lattice on the iterate
     if (!first) s.pose_iterate();
     if (k == model.coupling.edge_side_hold_after) uvlm::hold_leading_edge_sides(model.lattice, *data.lattice);
-    // The older wake's sums held from the hold_after-th solve on if the change is small
-    // by then, and for good summed anew once it grows again (uvlm/old_wake_hold.hpp).
+    // The older wake's sums held from the first solve, the hold_after-th or a later one,
+    // after a small change, and for good summed anew once it grows again
+    // (uvlm/old_wake_hold.hpp).
     const int hold_after = model.coupling.old_wake_hold_after;
     const bool small_change = delta <= model.coupling.old_wake_hold_change * tol;
-    if (hold_after > 0 && k == hold_after && small_change)
+    if (hold_after > 0 && k >= hold_after && small_change && !hold_released && !data.lattice->old_wake_held)
       uvlm::hold_old_wake_sums(model.lattice, *data.lattice);
-    else if (hold_after > 0 && k > hold_after && !small_change)
+    else if (hold_after > 0 && k > hold_after && !small_change && data.lattice->old_wake_held) {
       uvlm::sum_old_wake_anew(*data.lattice);
+      hold_released = true;
+    }
     // (first of the step: the structure's pose is already the predictor's = the iterate)
     solve_air(model, data, dt, step, t1);
     ++k;

@@ -77,13 +77,13 @@ struct CouplingSettings {
   /// force jumps and the iterates may alternate between the two sides; docs/fsi.md,
   /// "Coupling"). Steps that converge sooner are not touched.
   int edge_side_hold_after = 10;
-  /// After this many lattice solves of a step, if the last change is at most
+  /// After this many lattice solves of a step or more, once the last change is at most
   /// old_wake_hold_change tolerances, the step's further solves take the wing's sums over
   /// the older wake (rows more than the lattice's young_wake_rows steps old) from the
   /// records of its last two solves instead of summing them anew, until a change exceeds
-  /// that again (uvlm/old_wake_hold.hpp; docs/fsi.md, "One coupled step"): by then the wing
-  /// moves by about the coupling's last change between solves. 0: never (the wake is then
-  /// not kept apart either).
+  /// that again, and then for the rest of the step (uvlm/old_wake_hold.hpp; docs/fsi.md,
+  /// "One coupled step"): by then the wing moves by about the coupling's last change
+  /// between solves. 0: never (the wake is then not kept apart either).
   int old_wake_hold_after = 2;
   /// (see old_wake_hold_after; docs/fsi.md: the held sums are then within the
   /// single-precision sums' rounding)
