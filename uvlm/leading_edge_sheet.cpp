@@ -117,12 +117,13 @@ void build_sheet_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wak
   const int edge_row = L + 1 - kSheetEdgeRows;  // the first of the node rows near the edge
   for (int q = 0; q <= L; ++q)
     for (int j = 0; j < ns; ++j)
-      push(q >= edge_row ? near_edge : fixed_set(age(q)), node(q, j), node(q, j + 1), G(q - 1, j) - G(q, j), age(q));
+      push(q >= edge_row ? near_edge : fixed_set(age(q)), node(q, j), node(q, j + 1), G(q - 1, j) - G(q, j),
+           age(q));
   // Legs of ring r, column j, from node row r to r+1: root side of (r, j) minus tip side of (r, j−1).
   for (int r = 0; r <= L; ++r)
     for (int j = 0; j <= ns; ++j)
-      push(r >= edge_row - 1 ? near_edge : fixed_set(age(r + 1)), node(r, j), node(r + 1, j), G(r, j) - G(r, j - 1),
-           0.5 * (age(r) + age(r + 1)));
+      push(r >= edge_row - 1 ? near_edge : fixed_set(age(r + 1)), node(r, j), node(r + 1, j),
+           G(r, j) - G(r, j - 1), 0.5 * (age(r) + age(r + 1)));
 }
 
 void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bool by_tree) {

@@ -91,7 +91,8 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   wake_edge_segments.reserve(static_cast<std::size_t>(2 * ns + 1) + (sheds ? sheet_edge_segment_capacity(ns) : 0));
   wake_lattice.reserve(wake_nodes_n, static_cast<std::size_t>(ns) + 1);
   // (and as many of the sheet's, which gains a node row a step at most: old_wake_hold.hpp)
-  young_wake_segments.reserve(static_cast<std::size_t>(m.young_wake_rows + 1) * (2 * ns + 1) * (sheds ? 2 : 1));
+  young_wake_segments.reserve(static_cast<std::size_t>(m.young_wake_rows + 1) * (2 * ns + 1) *
+                              (sheds ? 2 : 1));
   old_wake[0].reserve(static_cast<std::size_t>(np));
   old_wake[1].reserve(bound_n);
   if (m.far_wake_by_tree()) {
@@ -224,8 +225,8 @@ struct EvalSums {
       : m(model), d(data), slot(static_cast<int>(points)) {
     const bool apart = slot >= 0 && old_wake_kept_apart(m, d);
     held = apart && d.old_wake_held && d.old_wake[slot].size == n;
-    const bool older = points == WingPoints::Collocation && m.single_precision_wake &&
-                       d.collocation_older.x.size() >= n;
+    const bool older =
+        points == WingPoints::Collocation && m.single_precision_wake && d.collocation_older.x.size() >= n;
     keep_older = older && older_part == OlderPart::Keep;
     reuse_older = older && older_part == OlderPart::Reuse && d.collocation_older_size == n;
     record = apart && !held && !reuse_older;

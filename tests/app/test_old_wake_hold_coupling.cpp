@@ -88,7 +88,8 @@ TEST(OldWakeHoldCoupling, TheHoverHeldDiffersFromTheWholeSumLessThanTheCouplings
 // starts, over the first quarter cycle in which rows older than the young ones exist
 // (steps up to 2 young_wake_rows): measured 1.4e-7 of the peak against the tolerance's 1.0e-6.
 TEST(OldWakeHoldCoupling, TheShedHoverHeldDiffersFromTheWholeSumLessThanTheCouplingsOwnAccuracy) {
-  const HoldRun held = hold_run(2, 1e-6, true), whole = hold_run(0, 1e-6, true), tight = hold_run(0, 1e-7, true);
+  const HoldRun held = hold_run(2, 1e-6, true), whole = hold_run(0, 1e-6, true),
+                tight = hold_run(0, 1e-7, true);
   const std::size_t steps = 2 * static_cast<std::size_t>(held.young_wake_rows) + 1;
   ASSERT_GT(held.lift.size(), steps);
   const HoldRun first_held = first_steps(held, steps), first_whole = first_steps(whole, steps),
@@ -97,12 +98,13 @@ TEST(OldWakeHoldCoupling, TheShedHoverHeldDiffersFromTheWholeSumLessThanTheCoupl
   for (double l : whole.lift) peak = std::max(peak, std::abs(l));
   const double hold_difference = largest_difference(first_held, first_whole) / peak;
   const double tolerance_difference = largest_difference(first_tight, first_whole) / peak;
-  std::printf("[ value ] shed, steps 0-%zu: lift, held against the whole sum: %.3g of the peak; tolerance 1e-7 "
-              "against 1e-6: %.3g; over the wingbeat %.3g and %.3g; %ld held solves, %ld steps past two solves, "
-              "%ld / %ld solves\n",
-              steps - 1, hold_difference, tolerance_difference, largest_difference(held, whole) / peak,
-              largest_difference(tight, whole) / peak, held.counts.held_old_wake, held.steps_past_two, held.solves,
-              whole.solves);
+  std::printf(
+      "[ value ] shed, steps 0-%zu: lift, held against the whole sum: %.3g of the peak; tolerance 1e-7 "
+      "against 1e-6: %.3g; over the wingbeat %.3g and %.3g; %ld held solves, %ld steps past two solves, "
+      "%ld / %ld solves\n",
+      steps - 1, hold_difference, tolerance_difference, largest_difference(held, whole) / peak,
+      largest_difference(tight, whole) / peak, held.counts.held_old_wake, held.steps_past_two, held.solves,
+      whole.solves);
   EXPECT_EQ(whole.counts.held_old_wake, 0);
   EXPECT_GT(held.counts.held_old_wake, held.steps_past_two / 2);
   EXPECT_GT(largest_difference(first_held, first_whole), 0.0);  // the hold was taken within them

@@ -80,6 +80,19 @@ double held_error(int step, const std::vector<double>& recorded, double angle,
   return (lift_after_moves(step, recorded, angle, true, edge) - exact) / exact;
 }
 
+/// After a solve at pose x (velocities v): held, a solve there gives the same
+/// circulations and loads, bit for bit.
+void expect_the_held_solve_gives_the_same_bits(const VortexLatticeModel& m, VortexLatticeData& d,
+                                               const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v) {
+  const Eigen::VectorXd gamma = d.gamma;
+  const Eigen::Matrix3Xd force = d.loads.force;
+  hold_old_wake_sums(m, d);
+  ASSERT_TRUE(d.old_wake_held);
+  solve(m, d, x, v, Eigen::Vector3d::Zero(), kHover.dt(), 1.225);
+  EXPECT_EQ((d.gamma - gamma).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((d.loads.force - force).cwiseAbs().maxCoeff(), 0.0);
+}
+
 }  // namespace
 
 // The record is the bits of the sum: a solve at the recorded points gives the same
@@ -97,13 +110,7 @@ TEST(OldWakeHold, ASolveAtTheRecordedPointsGivesTheSameBits) {
   ASSERT_GT(d.young_wake_segments.size(), 0u);
   EXPECT_EQ(d.old_wake[0].size, static_cast<std::size_t>(m.panels()));
   EXPECT_EQ(d.old_wake[1].size, static_cast<std::size_t>(m.panels()));  // the separated edge's midpoints
-  const Eigen::VectorXd gamma = d.gamma;
-  const Eigen::Matrix3Xd force = d.loads.force;
-  hold_old_wake_sums(m, d);
-  ASSERT_TRUE(d.old_wake_held);
-  solve(m, d, x, v, Eigen::Vector3d::Zero(), kHover.dt(), 1.225);
-  EXPECT_EQ((d.gamma - gamma).cwiseAbs().maxCoeff(), 0.0);
-  EXPECT_EQ((d.loads.force - force).cwiseAbs().maxCoeff(), 0.0);
+  expect_the_held_solve_gives_the_same_bits(m, d, x, v);
   advance(m, d);  // the wake moved: the hold and the record are gone
   EXPECT_FALSE(d.old_wake_held);
   EXPECT_EQ(d.old_wake[0].size, 0u);
@@ -187,20 +194,15 @@ TEST(OldWakeHold, AShedSheetIsHeldByAgeAsTheWake) {
   const Eigen::Matrix3Xd x = moved_pose(step, 0.0, v);
   solve(m, d, x, v, Eigen::Vector3d::Zero(), kHover.dt(), 1.225);
   ASSERT_GT(d.le_sheet.rows, m.young_wake_rows + 2);  // the sheet has rows older than the young ones
-  EXPECT_GT(d.wake_segments.size(), d.trailing_wake_segments);                // its older rows: held
-  EXPECT_GT(d.young_wake_segments.size(), d.trailing_young_wake_segments);    // its younger rows: anew
-  EXPECT_GT(d.wake_edge_segments.size(), d.trailing_wake_edge_segments);      // its newest: in double
-  const Eigen::VectorXd gamma = d.gamma;
-  const Eigen::Matrix3Xd force = d.loads.force;
-  hold_old_wake_sums(m, d);
-  ASSERT_TRUE(d.old_wake_held);
-  solve(m, d, x, v, Eigen::Vector3d::Zero(), kHover.dt(), 1.225);
-  EXPECT_EQ((d.gamma - gamma).cwiseAbs().maxCoeff(), 0.0);
-  EXPECT_EQ((d.loads.force - force).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(d.wake_segments.size(), d.trailing_wake_segments);              // its older rows: held
+  EXPECT_GT(d.young_wake_segments.size(), d.trailing_young_wake_segments);  // its younger rows: anew
+  EXPECT_GT(d.wake_edge_segments.size(), d.trailing_wake_edge_segments);    // its newest: in double
+  expect_the_held_solve_gives_the_same_bits(m, d, x, v);
   const double a = 1e-5;  // [rad]
   const double one = held_error(step, {0.0}, a, LeadingEdge::Shed);
   const double two = held_error(step, {0.0, a / 2}, a, LeadingEdge::Shed);
-  std::printf("[ value ] shed sheet: held lift's error, one record: %.3g; along the secant: %.3g\n", one, two);
+  std::printf("[ value ] shed sheet: held lift's error, one record: %.3g; along the secant: %.3g\n", one,
+              two);
   EXPECT_NE(one, 0.0);
   EXPECT_LT(std::abs(one), 5e-6);
   EXPECT_LT(std::abs(two), 0.1 * std::abs(one));
