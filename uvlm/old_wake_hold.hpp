@@ -15,8 +15,9 @@
 /// secant to the points' new places; the younger rows, the bound vortices and everything
 /// else are summed anew. At the last recorded points the held value is the record's bits,
 /// so a solve there gives the same answer held or not. The coupled step holds once two
-/// solves are made and while the last change is small (pipeline/fsi/coupled_step.hpp,
-/// CouplingSettings::old_wake_hold_after, old_wake_hold_change; docs/fsi.md).
+/// solves are made and the last change is small, until a change grows, and then not again
+/// in the step (pipeline/fsi/coupled_step.hpp, CouplingSettings::old_wake_hold_after,
+/// old_wake_hold_change; docs/fsi.md).
 ///
 /// A shed leading edge's sheet (leading_edge_sheet.hpp) is kept apart by age as the wake
 /// is: its rows older than the young ones join the held sums, the younger ones are summed
