@@ -44,7 +44,7 @@ void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
   target.setZero(ns);
   gamma0.setZero(np);
   border_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(ns);
-  unit_ring.reserve(static_cast<std::size_t>(std::max(4, ns)));
+  unit_ring.reserve(4);
   at_collocation.reserve(static_cast<std::size_t>(np));
 }
 

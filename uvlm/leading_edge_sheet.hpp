@@ -158,8 +158,8 @@ struct LeadingEdgeSheet {
   Eigen::MatrixXd border;            ///< ns × ns
   Eigen::VectorXd border_rhs, increment, gamma0, target;
   Eigen::PartialPivLU<Eigen::MatrixXd> border_lu;
-  SegmentSet unit_ring;              ///< one leading-edge ring's segments, or every strip's first bound one
-  PointSet at_collocation;           ///< the collocation points, for one segment's velocity at all of them
+  SegmentSet unit_ring;              ///< one leading-edge ring's four segments, or one strip's first bound one
+  PointSet at_collocation;           ///< the collocation points, for unit_ring's velocity at all of them
   bool active() const { return capacity > 0; }
   /// Allocate for ns strips, np panels and `rings` sheet rings.
   void allocate(int ns, int np, int rings);
