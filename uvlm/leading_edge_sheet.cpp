@@ -27,6 +27,8 @@ void LeadingEdgeSheet::allocate(int ns, int np, int rings) {
   row_has_prev.assign(node_rows, 0);
   row_age.assign(node_rows, 0.0);
   ring_rows.assign(static_cast<std::size_t>(rings), 1);
+  merge_progress.assign(static_cast<std::size_t>(rings), 0);
+  merge_pair.assign(static_cast<std::size_t>(rings) + 1, 0);
   current.setZero(ns);
   accepted.setZero(ns);
   lesp.setZero(ns);
@@ -240,6 +242,7 @@ void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, c
                               std::to_string(s.capacity) + " rows");
     for (int j = 0; j < ns; ++j) s.gamma[static_cast<std::size_t>(s.rows) * ns + j] = s.current(j);
     s.ring_rows[static_cast<std::size_t>(s.rows)] = 1;
+    s.merge_progress[static_cast<std::size_t>(s.rows)] = 0;
     ++s.rows;
     s.row_has_prev[s.rows] = 0;
     s.row_age[s.rows] = 0.0;
@@ -251,57 +254,97 @@ void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, c
   if (release && m.sheet_merge_steps > 0) merge_older_sheet_rings(m, d);
 }
 
+namespace {
+
+/// Node row q of the sheet goes (q > 0, q < rows): the rings above it and node rows q+1 …
+/// rows move down by one; ring q−1 then spans node rows q−1 and q (the old q+1).
+void remove_sheet_node_row(LeadingEdgeSheet& s, int ns, int q) {
+  const std::size_t n1 = static_cast<std::size_t>(ns) + 1;
+  PointSet& P = s.nodes;
+  for (int r = q + 1; r < s.rows; ++r) {
+    s.ring_rows[static_cast<std::size_t>(r) - 1] = s.ring_rows[static_cast<std::size_t>(r)];
+    s.merge_progress[static_cast<std::size_t>(r) - 1] = s.merge_progress[static_cast<std::size_t>(r)];
+    for (int j = 0; j < ns; ++j)
+      s.gamma[static_cast<std::size_t>(r - 1) * ns + j] = s.gamma[static_cast<std::size_t>(r) * ns + j];
+  }
+  for (int r = q + 1; r <= s.rows; ++r) {
+    const std::size_t from = static_cast<std::size_t>(r) * n1, to = from - n1;
+    for (std::size_t j = 0; j < n1; ++j) {
+      P.set(to + j, P.position(from + j));
+      P.u[to + j] = P.u[from + j];
+      P.v[to + j] = P.v[from + j];
+      P.w[to + j] = P.w[from + j];
+      s.prev_u[to + j] = s.prev_u[from + j];
+      s.prev_v[to + j] = s.prev_v[from + j];
+      s.prev_w[to + j] = s.prev_w[from + j];
+    }
+    s.row_has_prev[static_cast<std::size_t>(r) - 1] = s.row_has_prev[static_cast<std::size_t>(r)];
+    s.row_age[static_cast<std::size_t>(r) - 1] = s.row_age[static_cast<std::size_t>(r)];
+  }
+  --s.rows;
+  P.size -= n1;
+}
+
+}  // namespace
+
 int merge_older_sheet_rings(const VortexLatticeModel& m, VortexLatticeData& d) {
   LeadingEdgeSheet& s = d.le_sheet;
   const int ns = m.spanwise;
   const std::size_t n1 = static_cast<std::size_t>(ns) + 1;
   PointSet& P = s.nodes;
   const double steps_age = m.sheet_merge_steps * d.dt;  // [s]
+  const int blend_steps = std::max(1, m.sheet_merge_spread_steps);
   auto length = [&](int q0, int q1, int j) {  // ring's length along strip j, node rows q0 → q1 [m]
     const std::size_t a = static_cast<std::size_t>(q0) * n1 + j, b = static_cast<std::size_t>(q1) * n1 + j;
     return 0.5 * ((P.position(b) - P.position(a)).norm() + (P.position(b + 1) - P.position(a + 1)).norm());
   };
-  int merges = 0;
   // Rings 0 … rows−1, oldest first; ring r spans node rows r and r+1 (row `rows`: release).
-  // From the newest pair back, so a merge that makes a ring of 2w rows can merge again with
-  // an older one of 2w.
+  // pair[r]: ring r merges with ring r + 1 in this call's pass. A pair under way goes on; a
+  // new pair is taken from the newest back among rings in no pair, of equal rows w (2w ≤
+  // kSheetMergeMaxRows), once the newer is M·w steps old (its newer node row's age).
+  std::vector<char>& pair = s.merge_pair;
+  std::fill(pair.begin(), pair.begin() + s.rows, 0);
+  auto taken = [&](int r) { return pair[r] || (r > 0 && pair[r - 1]); };
+  for (int r = 0; r + 1 < s.rows; ++r)
+    if (s.merge_progress[static_cast<std::size_t>(r)] > 0) pair[r] = 1;
   for (int r = s.rows - 2; r >= 0; --r) {
     const int w = s.ring_rows[static_cast<std::size_t>(r)];
-    if (w != s.ring_rows[static_cast<std::size_t>(r) + 1] || 2 * w > kSheetMergeMaxRows) continue;
-    // The newer ring's age: that of its newer node row (r + 2).
-    if (s.row_age[static_cast<std::size_t>(r) + 2] < steps_age * w * (1.0 - 1e-9)) continue;
+    if (taken(r) || taken(r + 1) || w != s.ring_rows[static_cast<std::size_t>(r) + 1] ||
+        2 * w > kSheetMergeMaxRows)
+      continue;
+    if (s.row_age[static_cast<std::size_t>(r) + 2] >= steps_age * w * (1.0 - 1e-9)) pair[r] = 1;
+  }
+  int merges = 0;
+  // From the newest pair back: a merge moves only the rings and rows above it.
+  for (int r = s.rows - 2; r >= 0; --r) {
+    if (!pair[r]) continue;
+    const int done = s.merge_progress[static_cast<std::size_t>(r)];
+    const double f = 1.0 / (blend_steps - done);  // of what is left of the way; 1 at the last step
     for (int j = 0; j < ns; ++j) {
       const std::size_t a = static_cast<std::size_t>(r) * ns + j, b = a + ns;
       const double la = length(r, r + 1, j), lb = length(r + 1, r + 2, j);
-      s.gamma[a] = la + lb > 0.0 ? (s.gamma[a] * la + s.gamma[b] * lb) / (la + lb) : 0.5 * (s.gamma[a] + s.gamma[b]);
+      const double merged =
+          la + lb > 0.0 ? (s.gamma[a] * la + s.gamma[b] * lb) / (la + lb) : 0.5 * (s.gamma[a] + s.gamma[b]);
+      s.gamma[a] += f * (merged - s.gamma[a]);
+      s.gamma[b] += f * (merged - s.gamma[b]);
     }
-    s.ring_rows[static_cast<std::size_t>(r)] = 2 * w;
-    // Node row r+1 goes: rings r+2 … rows−1 and node rows r+2 … rows move down by one.
-    for (int q = r + 2; q < s.rows; ++q) {
-      s.ring_rows[static_cast<std::size_t>(q) - 1] = s.ring_rows[static_cast<std::size_t>(q)];
-      for (int j = 0; j < ns; ++j)
-        s.gamma[static_cast<std::size_t>(q - 1) * ns + j] = s.gamma[static_cast<std::size_t>(q) * ns + j];
+    // The middle node row toward the chord between its neighbours, at its own fraction of the
+    // way along them: at f = 1 it lies on the merged ring's side.
+    for (std::size_t j = 0; j < n1; ++j) {
+      const std::size_t ia = static_cast<std::size_t>(r) * n1 + j, im = ia + n1, ic = im + n1;
+      const Eigen::Vector3d pa = P.position(ia), pm = P.position(im), pc = P.position(ic);
+      const double la = (pm - pa).norm(), lb = (pc - pm).norm();
+      const double t = la + lb > 0.0 ? la / (la + lb) : 0.5;
+      P.set(im, pm + f * (pa + t * (pc - pa) - pm));
     }
-    for (int q = r + 2; q <= s.rows; ++q) {
-      const std::size_t from = static_cast<std::size_t>(q) * n1, to = from - n1;
-      for (std::size_t j = 0; j < n1; ++j) {
-        P.set(to + j, P.position(from + j));
-        P.u[to + j] = P.u[from + j];
-        P.v[to + j] = P.v[from + j];
-        P.w[to + j] = P.w[from + j];
-        s.prev_u[to + j] = s.prev_u[from + j];
-        s.prev_v[to + j] = s.prev_v[from + j];
-        s.prev_w[to + j] = s.prev_w[from + j];
-      }
-      s.row_has_prev[static_cast<std::size_t>(q) - 1] = s.row_has_prev[static_cast<std::size_t>(q)];
-      s.row_age[static_cast<std::size_t>(q) - 1] = s.row_age[static_cast<std::size_t>(q)];
+    if (done + 1 < blend_steps) {
+      s.merge_progress[static_cast<std::size_t>(r)] = done + 1;
+      continue;
     }
-    --s.rows;
-    P.size -= n1;
+    s.merge_progress[static_cast<std::size_t>(r)] = 0;
+    s.ring_rows[static_cast<std::size_t>(r)] *= 2;
+    remove_sheet_node_row(s, ns, r + 1);
     ++merges;
-    // The merged ring may now pair with its older neighbour: look at (r − 1, r) next (the loop's
-    // --r), and at (r, r + 1) again if a newer ring of 2w rows sits there.
-    if (r + 1 <= s.rows - 1 && s.ring_rows[static_cast<std::size_t>(r) + 1] == 2 * w) ++r;
   }
   return merges;
 }

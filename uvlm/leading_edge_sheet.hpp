@@ -55,9 +55,18 @@
 /// streamwise vorticity) and hands the removed spanwise vortex to its two neighbours in
 /// inverse proportion to their distances, which keeps its total and its centroid along the
 /// sheet (the linear redistribution of vortex-method remeshing, Cottet & Koumoutsakos 2000,
-/// "Vortex Methods", on remeshing). Rings younger than M steps are never merged; a ring of
-/// w rows is at least M·w/2 steps old, so a merged ring is about 1/M of the distance it has
-/// travelled long, and the sheet holds about merged_sheet_rings(M, n) rings after n releases.
+/// "Vortex Methods", on remeshing). A merge may be spread over K releases
+/// (model.sheet_merge_spread_steps; 1, at once, by default): at each the two rings'
+/// circulations move toward that mean, and the node row between them toward the chord
+/// joining its neighbours (at its own fraction of their length), each by 1/(K − k) of what
+/// is left after k of them; at the K-th they are the mean and on the chord, and the row goes.
+/// Each partial step keeps ∫Γ dℓ as the whole merge does. Done at once, a merge changes the
+/// sheet's velocity at the wing within one step, and the wing's circulation answers with
+/// ρ ∂Γ/∂t ∝ 1/Δt in its lift: a hover, whose sheet stays within a chord of the wing, has a
+/// spike at merges (docs/uvlm.md, "Merging the sheet's older rings", with what spreading
+/// them changes). Rings younger than M steps are never merged; a ring of w rows is at least
+/// M·w/2 steps old, so a merged ring is about 1/M of the distance it has travelled long, and
+/// the sheet holds about merged_sheet_rings(M, n, K) rings after n releases.
 /// The sheet's segments are free vortices: no force acts on them. They induce velocity on
 /// the wing (the boundary condition and the Bernoulli loads), on the trailing-edge wake
 /// and on themselves, summed with the trailing-edge wake's segments as one set
@@ -114,16 +123,17 @@ inline std::size_t sheet_edge_segment_capacity(int ns) {
 inline constexpr int kSheetMergeMaxRows = 16;
 
 /// Rings of a sheet that has released a ring at each of `released` steps, merged from M =
-/// merge_steps steps old (0: never, all of them): the youngest M rings apart, about M/2 of
-/// each merged size up to kSheetMergeMaxRows, then one ring of that size every
-/// kSheetMergeMaxRows steps: min(n, M (1 + ½ log₂ kSheetMergeMaxRows) + max(0, n − 16 M)/16).
-/// Exact for large n; in between the rule's count lies up to 3.1 rings above it or a few
-/// below (the rule run to 3000 releases at M = 1 … 32, 64, 100; test
-/// uvlm.LeadingEdgeSheetMerge.*). What the run's estimate counts.
-inline double merged_sheet_rings(int merge_steps, double released) {
+/// merge_steps steps old (0: never, all of them), each merge spread over K = spread_steps
+/// releases: the youngest M + K − 1 rings apart, about M/2 of each merged size up to
+/// kSheetMergeMaxRows, then one ring of that size every kSheetMergeMaxRows steps:
+/// min(n, M (1 + ½ log₂ kSheetMergeMaxRows) + K − 1 + max(0, n − 16 M − K + 1)/16).
+/// For large n the rule's count lies up to 3.1 rings above it (4.5 at M = 1, K = 4); for n
+/// up to ~16 M it may lie well below (the rule run to 1500 releases at M = 1 … 64, K = 1,
+/// 4, M/2; test uvlm.LeadingEdgeSheetMerge.*). What the run's estimate counts.
+inline double merged_sheet_rings(int merge_steps, double released, int spread_steps = 1) {
   if (merge_steps <= 0) return released;
-  const double m = merge_steps, w = kSheetMergeMaxRows;
-  return std::min(released, m * (1.0 + 0.5 * std::log2(w)) + std::max(0.0, released - w * m) / w);
+  const double m = merge_steps, w = kSheetMergeMaxRows, k = std::max(1, spread_steps) - 1.0;
+  return std::min(released, m * (1.0 + 0.5 * std::log2(w)) + k + std::max(0.0, released - w * m - k) / w);
 }
 
 /// Rings to store for a run of `steps` steps: a ring a step, merged or not. Merged, the
@@ -143,6 +153,8 @@ struct LeadingEdgeSheet {
   std::vector<char> row_has_prev;
   std::vector<double> row_age;       ///< time since each node row left the leading edge [s]
   std::vector<int> ring_rows;        ///< rows released into each ring (1; more once merged)
+  std::vector<int> merge_progress;   ///< steps of its merge with ring r + 1 done (0: none under way)
+  std::vector<char> merge_pair;      ///< scratch of merge_older_sheet_rings: ring r pairs with r + 1
   Eigen::VectorXd current;           ///< leading-edge ring circulation of the last solve, per strip [m²/s]
   Eigen::VectorXd accepted;          ///< the same at the last accepted step [m²/s]
   Eigen::VectorXd lesp;              ///< LESP of each strip in the last solve

@@ -99,6 +99,11 @@ struct VortexLatticeModel {
   /// merged ring is about 1/M of the distance it has travelled long), not a time; what it
   /// moves was measured (docs/uvlm.md, "Merging the sheet's older rings").
   int sheet_merge_steps = 0;
+  /// With LeadingEdge::Shed and sheet_merge_steps > 0: the releases each merge is spread over
+  /// (its circulations and middle node row moved a part at each; leading_edge_sheet.hpp,
+  /// "Merging the older rings"); 1 = at once. Spread, a hover's per-step lift loses the
+  /// spikes of merges next to the wing (docs/uvlm.md, "Merging the sheet's older rings").
+  int sheet_merge_spread_steps = 1;
   /// With LeadingEdge::Shed: the core radius of the leading-edge sheet's segments [m] (the
   /// core model's), as `core` is the trailing-edge wake's: its free segments in every sum
   /// and the legs of the leading-edge rings, grown with age like the wake's when core_growth

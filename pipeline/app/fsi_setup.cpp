@@ -88,6 +88,7 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   m.leading_edge = c.numerics.leading_edge;
   m.lesp_critical = c.numerics.lesp_critical;
   m.sheet_merge_steps = c.numerics.sheet_merge_steps;
+  m.sheet_merge_spread_steps = c.numerics.sheet_merge_spread_steps;
   if (c.numerics.leading_edge == uvlm::LeadingEdge::Shed) m.sheet_core_radius = c.numerics.sheet_core_radius * mean_chord;
   m.single_precision_wake = c.numerics.wake_precision == io::WakePrecision::Single;
   m.first_order_circulation_rate = c.numerics.circulation_rate == io::CirculationRate::Bdf1;

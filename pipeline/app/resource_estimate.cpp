@@ -88,7 +88,7 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     // wake_max_rows), and in the sums, merged from sheet_merge_steps steps old,
     // uvlm::merged_sheet_rings(r) rings where the wake has r rows (r without merging).
     const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
-    const int merge = shed ? n.sheet_merge_steps : 0;
+    const int merge = shed ? n.sheet_merge_steps : 0, spread = n.sheet_merge_spread_steps;
     memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
     if (shed) {  // the same per ring, its rings' node rows and one more (the release row)
       const double rings = uvlm::sheet_ring_capacity(steps);
@@ -113,19 +113,21 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
       const double young = std::min(r, free_rows);
       double segs = ring_segments(r), moving_rows = young + 1;
       if (shed) {
-        segs += ring_segments(uvlm::merged_sheet_rings(merge, r));
-        moving_rows += uvlm::merged_sheet_rings(merge, young) + 1;
+        segs += ring_segments(uvlm::merged_sheet_rings(merge, r, spread));
+        moving_rows += uvlm::merged_sheet_rings(merge, young, spread) + 1;
       }
       const double moving_nodes = n.free_wake ? moving_rows * (ns + 1) : 0.0;
       return (moving_nodes + solves * panels) * (segs + bound_segments);
     };
     // Sum over steps, in closed form per part, where the count is quadratic in r: the wake
     // growing with its nodes all moving, growing beyond the moving rows, and the merged
-    // sheet's parts (merged_sheet_rings: r up to 3M, constant to 16M, linear beyond); then a
-    // wake of max_rows.
+    // sheet's parts (merged_sheet_rings: r up to 3M + K − 1, constant to 16M + K − 1, linear
+    // beyond; K the releases a merge is spread over); then a wake of max_rows.
     const double growing = std::min(steps, max_rows);
     const double moving = std::min(growing, free_rows);
-    double ends[] = {moving, growing, 3.0 * merge, static_cast<double>(uvlm::kSheetMergeMaxRows) * merge};
+    const double apart = merge > 0 ? spread - 1.0 : 0.0;
+    double ends[] = {moving, growing, 3.0 * merge + apart,
+                     static_cast<double>(uvlm::kSheetMergeMaxRows) * merge + apart};
     std::sort(std::begin(ends), std::end(ends));
     double sum = 0.0, from = 1.0;
     for (double end : ends) {

@@ -144,7 +144,8 @@ Case::Numerics read_numerics(const TomlTable& root) {
   const auto t = root.find_table("numerics");
   if (!t) return n;
   t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
-                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "lesp_critical", "sheet_merge_steps", "sheet_core_radius", "core_model",
+                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "lesp_critical", "sheet_merge_steps",
+                  "sheet_merge_spread_steps", "sheet_core_radius", "core_model",
                   "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
                   "wake_sum", "tree_tolerance", "wake_precision", "circulation_rate", "coupling", "max_coupling_iterations", "coupling_tolerance", "coupling_reuse_steps",
@@ -167,9 +168,12 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.leading_edge = t->get_choice("leading_edge", kLeadingEdgeNames, std::optional(n.leading_edge));
   n.lesp_critical = t->get_double("lesp_critical", n.lesp_critical, Bounds{0.0, 10.0, true, false});
   n.sheet_merge_steps = t->get_int("sheet_merge_steps", n.sheet_merge_steps, Bounds::closed(0, 1000000));
+  n.sheet_merge_spread_steps =
+      t->get_int("sheet_merge_spread_steps", n.sheet_merge_spread_steps, Bounds::closed(1, 1000000));
   n.sheet_core_radius = t->get_double("sheet_core_radius", n.sheet_core_radius, Bounds::closed(0.0, 2.0));
   // The keys of the shed leading edge's sheet act with it only.
-  for (const char* key : {"lesp_critical", "sheet_merge_steps", "sheet_core_radius"})
+  for (const char* key :
+       {"lesp_critical", "sheet_merge_steps", "sheet_merge_spread_steps", "sheet_core_radius"})
     if (t->has(key) && n.leading_edge != uvlm::LeadingEdge::Shed)
       t->fail(key, "acts only with leading_edge = \"shed\" (docs/uvlm.md, \"Leading-edge vortex shedding\")");
   n.core_model = t->get_choice("core_model", kCoreModelNames, std::optional(n.core_model));

@@ -123,6 +123,9 @@ struct Case {
     /// leading_edge = "shed": the sheet's rings merge in pairs from this many steps old, 0 =
     /// never (uvlm/leading_edge_sheet.hpp, "Merging the older rings"; docs/uvlm.md)
     int sheet_merge_steps = 8;
+    /// leading_edge = "shed": the releases each merge of the sheet's rings is spread over, 1 =
+    /// at once (uvlm::VortexLatticeModel::sheet_merge_spread_steps; docs/uvlm.md)
+    int sheet_merge_spread_steps = 1;
     /// leading_edge = "shed": the sheet's core radius as a fraction of the mean chord, 0 =
     /// core_radius (uvlm::VortexLatticeModel::sheet_core_radius; docs/uvlm.md, "Why the shed hover's lift is rough: the sheet's core")
     double sheet_core_radius = 0.0;

@@ -83,9 +83,13 @@ std::string describe_case(const Case& c) {
             std::string(wings::choice_name(kLeadingEdgeNames, n.leading_edge)).c_str(),
             n.circulation_rate == CirculationRate::Bdf1 ? ", dGamma/dt first order (bdf1)" : "");
   if (n.leading_edge == uvlm::LeadingEdge::Shed)
-    s += line("  critical LESP          %.4g, sheet's core %.4g mean chords, its rings merged from %s", n.lesp_critical,
-              n.sheet_core_radius > 0.0 ? n.sheet_core_radius : n.core_radius,
-              n.sheet_merge_steps > 0 ? (std::to_string(n.sheet_merge_steps) + " steps old").c_str() : "never");
+    s += line(
+        "  critical LESP          %.4g, sheet's core %.4g mean chords, its rings merged from %s%s",
+        n.lesp_critical, n.sheet_core_radius > 0.0 ? n.sheet_core_radius : n.core_radius,
+        n.sheet_merge_steps > 0 ? (std::to_string(n.sheet_merge_steps) + " steps old").c_str() : "never",
+        n.sheet_merge_steps > 0 && n.sheet_merge_spread_steps > 1
+            ? (", each merge spread over " + std::to_string(n.sheet_merge_spread_steps) + " releases").c_str()
+            : "");
   s += line("  vortex core            %s, radius %.4g mean chords",
             std::string(wings::choice_name(kCoreModelNames, n.core_model)).c_str(), n.core_radius);
   s += line("  wake                   %s, order %d, %s", n.free_wake ? "free" : "prescribed", n.wake_order,

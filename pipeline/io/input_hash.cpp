@@ -157,6 +157,8 @@ void case_fields(Canonical& out, const Case& c) {
   if (n.leading_edge == uvlm::LeadingEdge::Shed) out.line("numerics.lesp_critical", n.lesp_critical);
   if (n.leading_edge == uvlm::LeadingEdge::Shed) out.line("numerics.sheet_merge_steps", n.sheet_merge_steps);
   // (only when set: the runs before the key keep their hash)
+  if (n.leading_edge == uvlm::LeadingEdge::Shed && n.sheet_merge_spread_steps > 1)
+    out.line("numerics.sheet_merge_spread_steps", n.sheet_merge_spread_steps);
   if (n.leading_edge == uvlm::LeadingEdge::Shed && n.sheet_core_radius > 0.0)
     out.line("numerics.sheet_core_radius", n.sheet_core_radius);
   out.line("numerics.core_model", static_cast<int>(n.core_model));

@@ -43,8 +43,10 @@ double interactions_step_by_step(const io::Case& c, int bodies) {
   for (long k = 1; k <= steps; ++k) {
     const double r = std::min(static_cast<double>(k), max_rows);
     const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
-    const double s = shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, r) : 0.0;
-    const double s_young = shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, std::min(r, free_rows)) : 0.0;
+    const int spread = n.sheet_merge_spread_steps;
+    const double s = shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, r, spread) : 0.0;
+    const double s_young =
+        shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, std::min(r, free_rows), spread) : 0.0;
     const double segments = (r + 1) * ns + r * (ns + 1) + (shed ? (s + 1) * ns + s * (ns + 1) : 0.0) + bound;
     const double moving =
         n.free_wake ? ((std::min(r, free_rows) + 1) + (shed ? s_young + 1 : 0.0)) * (ns + 1) : 0.0;
@@ -104,11 +106,21 @@ TEST(RunEstimate, TheShedLeadingEdgesSheetCountsAsASecondWake) {
     EXPECT_EQ(c.numerics.sheet_merge_steps, 8);
     const app::RunEstimate merged = app::estimate_run(c, bodies);
     EXPECT_NEAR(merged.interactions, interactions_step_by_step(c, bodies), 1e-9 * merged.interactions) << name;
+    // Each merge spread over 4 releases: 3 rings more (merged_sheet_rings), the same closed form.
+    c.numerics.sheet_merge_spread_steps = 4;
+    const app::RunEstimate spread = app::estimate_run(c, bodies);
+    EXPECT_NEAR(spread.interactions, interactions_step_by_step(c, bodies), 1e-9 * spread.interactions)
+        << name;
+    EXPECT_GT(spread.interactions, merged.interactions) << name;
+    c.numerics.sheet_merge_spread_steps = 1;
     c.numerics.sheet_merge_steps = 0;
     const app::RunEstimate shed = app::estimate_run(c, bodies);
     EXPECT_NEAR(shed.interactions, interactions_step_by_step(c, bodies), 1e-9 * shed.interactions) << name;
-    std::printf("[ value ] %s: shed / separated interactions %.2f unmerged, %.2f merged from 8 steps\n", name,
-                shed.interactions / separated, merged.interactions / separated);
+    std::printf(
+        "[ value ] %s: shed / separated interactions %.2f unmerged, %.2f merged from 8 steps (%.2f spread "
+        "over 4)\n",
+        name, shed.interactions / separated, merged.interactions / separated,
+        spread.interactions / separated);
     EXPECT_GT(shed.interactions, 2.0 * separated) << name;
     EXPECT_LT(shed.interactions, 4.0 * separated) << name;
     EXPECT_GT(merged.interactions, separated) << name;

@@ -271,6 +271,20 @@ TEST(CaseFile, ShedLeadingEdgesSheetMergeSteps) {
                                                     "leading_edge = \"separated\"\nsheet_merge_steps = 8\n"});
 }
 
+TEST(CaseFile, ShedLeadingEdgesSheetMergeSpreadSteps) {
+  // docs/case_file.md: sheet_merge_spread_steps in [1, 10^6], default 1 (at once); with
+  // another leading-edge model bad input.
+  EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\n").numerics.sheet_merge_spread_steps,
+            1);
+  EXPECT_EQ(case_from_text(kHead + "[numerics]\nleading_edge = \"shed\"\nsheet_merge_spread_steps = 4\n")
+                .numerics.sheet_merge_spread_steps,
+            4);
+  expect_numerics_key_refused("sheet_merge_spread_steps",
+                              {"leading_edge = \"shed\"\nsheet_merge_spread_steps = 0\n",
+                               "leading_edge = \"shed\"\nsheet_merge_spread_steps = 1.5\n",
+                               "leading_edge = \"separated\"\nsheet_merge_spread_steps = 4\n"});
+}
+
 TEST(CaseFile, ShedLeadingEdgesSheetCoreRadius) {
   // docs/case_file.md: sheet_core_radius in [0, 2] mean chords, default 0 = core_radius;
   // with another leading-edge model bad input.
