@@ -16,22 +16,8 @@
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 #include "history_csv.hpp"
+#include "history_roughness.hpp"
 #include "shipped_case_text.hpp"
-
-namespace {
-
-/// Root mean square of CL's second difference CL[k+1] − 2 CL[k] + CL[k−1] over steps
-/// [first, last): small for a history that is smooth against its own step-to-step change.
-double cl_roughness(const std::vector<double>& cl, std::size_t first, std::size_t last) {
-  double sum = 0.0;
-  for (std::size_t k = first; k < last; ++k) {
-    const double d2 = cl[k + 1] - 2.0 * cl[k] + cl[k - 1];
-    sum += d2 * d2;
-  }
-  return std::sqrt(sum / static_cast<double>(last - first));
-}
-
-}  // namespace
 
 TEST(ShedMergeSpread, TheRigidHoversLiftStaysSmoothInEveryWingbeatWithItsMergesSpreadOverFourReleases) {
   // cases/rotation_phase_rigid.toml (the rigid hawkmoth hover, δψ = 0, 4 wingbeats of 100
@@ -55,7 +41,8 @@ TEST(ShedMergeSpread, TheRigidHoversLiftStaysSmoothInEveryWingbeatWithItsMergesS
   const std::vector<double> cl = flapsim::test::read_history_csv(dir / "out" / "history.csv").column("CL");
   ASSERT_EQ(cl.size(), 400u);
   for (std::size_t beat = 1; beat < 4; ++beat) {
-    const double r = cl_roughness(cl, 100 * beat, std::min<std::size_t>(100 * beat + 100, 399));
+    const double r =
+        flapsim::test::second_difference_rms(cl, 100 * beat, std::min<std::size_t>(100 * beat + 100, 399));
     std::printf("[ value ] wingbeat %zu: roughness of CL %.3f\n", beat + 1, r);
     EXPECT_LT(r, 1.4) << "wingbeat " << beat + 1;
   }

@@ -15,9 +15,13 @@
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 #include "history_csv.hpp"
+#include "history_roughness.hpp"
 #include "shipped_case_text.hpp"
 
 namespace {
+
+/// The roughness of a lift history [mN] over steps [first, last) (history_roughness.hpp).
+constexpr auto roughness = flapsim::test::second_difference_rms;
 
 /// Lift [mN] of each step of cases/bench_hover.toml (the rigid hawkmoth hover, free wake,
 /// 100 steps a wingbeat) flown for 2 wingbeats with a shed leading edge, its sheet unmerged,
@@ -38,17 +42,6 @@ std::vector<double> hover_lift_mn(const std::string& folder, const std::string& 
   std::vector<double> lift = flapsim::test::read_history_csv(dir / "out" / "history.csv").column("lift_N");
   for (double& l : lift) l *= 1e3;
   return lift;
-}
-
-/// Root mean square of the lift's second difference L[k+1] − 2 L[k] + L[k−1] over steps
-/// [first, last) [mN]: a smooth history's is small against its own step-to-step change.
-double roughness(const std::vector<double>& lift, std::size_t first, std::size_t last) {
-  double sum = 0.0;
-  for (std::size_t k = first; k < last; ++k) {
-    const double d2 = lift[k + 1] - 2.0 * lift[k] + lift[k - 1];
-    sum += d2 * d2;
-  }
-  return std::sqrt(sum / static_cast<double>(last - first));
 }
 
 }  // namespace
