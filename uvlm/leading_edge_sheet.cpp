@@ -328,16 +328,16 @@ int merge_older_sheet_rings(const VortexLatticeModel& m, VortexLatticeData& d) {
       s.gamma[a] += f * (merged - s.gamma[a]);
       s.gamma[b] += f * (merged - s.gamma[b]);
     }
-    // The middle node row toward the chord between its neighbours, at its own fraction of the
-    // way along them: at f = 1 it lies on the merged ring's side.
-    for (std::size_t j = 0; j < n1; ++j) {
-      const std::size_t ia = static_cast<std::size_t>(r) * n1 + j, im = ia + n1, ic = im + n1;
-      const Eigen::Vector3d pa = P.position(ia), pm = P.position(im), pc = P.position(ic);
-      const double la = (pm - pa).norm(), lb = (pc - pm).norm();
-      const double t = la + lb > 0.0 ? la / (la + lb) : 0.5;
-      P.set(im, pm + f * (pa + t * (pc - pa) - pm));
-    }
     if (done + 1 < blend_steps) {
+      // The middle node row toward the chord between its neighbours, at its own fraction of
+      // the way along them (at the last step it would lie on the merged ring's side: it goes).
+      for (std::size_t j = 0; j < n1; ++j) {
+        const std::size_t ia = static_cast<std::size_t>(r) * n1 + j, im = ia + n1, ic = im + n1;
+        const Eigen::Vector3d pa = P.position(ia), pm = P.position(im), pc = P.position(ic);
+        const double la = (pm - pa).norm(), lb = (pc - pm).norm();
+        const double t = la + lb > 0.0 ? la / (la + lb) : 0.5;
+        P.set(im, pm + f * (pa + t * (pc - pa) - pm));
+      }
       s.merge_progress[static_cast<std::size_t>(r)] = done + 1;
       continue;
     }
