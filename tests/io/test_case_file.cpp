@@ -340,6 +340,13 @@ TEST(CaseFile, SteadyKey) {
   EXPECT_EQ(e.key(), "numerics.steady");
   EXPECT_EQ(e.line(), 9);
   EXPECT_NE(std::string(e.what()).find("free stream"), std::string::npos) << e.what();
+  // The steady lattice sheds nothing: "shed" with it is bad input naming steady (it ran as
+  // "attached", bit for bit; pipeline/io/case_file.cpp).
+  const auto shed =
+      error_of(kHead + air + "[numerics]\nleading_edge = \"shed\"\nsteady = true\n");  // line 12
+  EXPECT_EQ(shed.key(), "numerics.steady");
+  EXPECT_EQ(shed.line(), 12);
+  EXPECT_NE(std::string(shed.what()).find("sheds nothing"), std::string::npos) << shed.what();
 }
 
 TEST(CaseFile, AddedMassKey) {
