@@ -97,3 +97,23 @@ TEST(CaseWarnings, APrescribedWakeInStillAirIsWarnedAndWithAShedLeadingEdgeRefus
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CaseWarnings, AFrozenFarWakeInStillAirIsWarned) {
+  // pipeline/io/case_file.cpp, warn_frozen_wake_in_still_air: frozen rows in hover stay where
+  // they were shed (the rigid hawkmoth hover: mean CL 2.30 against 2.77 with the far wake
+  // convected, test app.StillAirPrescribedWake.AFrozenFarWake…). Warned naming
+  // numerics.frozen_wake_cycles on its line; in a free stream not.
+  const flapsim::io::Case c = case_from_text(hover_case_text("cycles = 1\nfrozen_wake_cycles = 0.5\n"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(c.warnings[0].key, "numerics.frozen_wake_cycles");
+  EXPECT_EQ(c.warnings[0].line, 11);
+  EXPECT_NE(c.warnings[0].message.find("set far_wake_cycles = 0.5"), std::string::npos)
+      << c.warnings[0].message;
+  EXPECT_TRUE(case_from_text(hover_case_text("cycles = 1\nfrozen_wake_cycles = 0.5\n",
+                                             "[air]\nfreestream = [-3.0, 0.0, 0.0]\n"))
+                  .warnings.empty());
+}
+
+}  // namespace
