@@ -8,17 +8,18 @@
 #include "pipeline/app/fem_resonance_warning.hpp"
 #include "pipeline/app/film_wrinkle_warning.hpp"
 #include "pipeline/app/flexibility_warnings.hpp"
+#include "pipeline/app/lattice_coverage_warning.hpp"
 
 namespace flapsim::app {
 
 std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup) {
   std::vector<std::string> out;
-  for (std::string w : {compressibility_warning(c, setup), chain_wing_mismatch_warning(setup),
-                        saved_chain_fem_warning(setup),
-                        soft_chain_warning(c, setup), near_resonance_warning(c, setup),
-                        fem_near_resonance_warning(c, setup),
-                        inertial_deflection_warning(c, setup), coupling_tolerance_warning(setup),
-                        film_wrinkle_warning(setup), fem_mesh_resolution_warning(setup)})
+  for (std::string w :
+       {compressibility_warning(c, setup), lattice_coverage_warning(setup),
+        chain_wing_mismatch_warning(setup), saved_chain_fem_warning(setup), soft_chain_warning(c, setup),
+        near_resonance_warning(c, setup), fem_near_resonance_warning(c, setup),
+        inertial_deflection_warning(c, setup), coupling_tolerance_warning(setup), film_wrinkle_warning(setup),
+        fem_mesh_resolution_warning(setup)})
     if (!w.empty()) out.push_back(std::move(w));
   return out;
 }
