@@ -286,6 +286,16 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
 
 bool is_case_document(const TomlTable& root) { return root.has("kinematics"); }
 
+namespace {
+
+/// A warning at numerics.`key`, on its line of the [numerics] table (0 if the key is not written).
+void warn_at_numerics_key(const TomlTable& root, Case& c, const std::string& key, std::string message) {
+  const auto t = root.find_table("numerics");
+  c.warnings.push_back({c.file, t ? t->line_of(key) : 0, "numerics." + key, std::move(message)});
+}
+
+}  // namespace
+
 // A hover (no free stream) of more than one cycle with every wake row free: from the
 // second cycle on the wake the wing meets is chaotic, so the lift hinges on round-off (a
 // rigid hawkmoth hover, cases/rotation_phase_rigid.toml with the whole wake free: a change
@@ -302,14 +312,14 @@ bool is_case_document(const TomlTable& root) { return root.has("kinematics"); }
 void warn_experimental_shedding(const TomlTable& root, Case& c) {
   // In vacuum (air = "none") there is no lattice and nothing is shed: no warning.
   if (c.numerics.leading_edge != uvlm::LeadingEdge::Shed || !c.air.enabled) return;
-  const auto t = root.find_table("numerics");
-  c.warnings.push_back({c.file, t ? t->line_of("leading_edge") : 0, "numerics.leading_edge",
-                        "\"shed\" is experimental: verified on a 2-D strip and on a revolving wing at 50-60 deg; "
-                        "on a flapping wing the cycles do not repeat and the per-step lift is rough, so read "
-                        "summary.json's settled_mean_CL over many cycles (Lua et al.'s wing: 3-5 % above the "
-                        "measurement over 150 cycles), and a long run may break down (docs/uvlm.md, "
-                        "\"Leading-edge vortex shedding: measurements\"); \"separated\" and \"none\" bracket "
-                        "the measured lift"});
+  warn_at_numerics_key(
+      root, c, "leading_edge",
+      "\"shed\" is experimental: verified on a 2-D strip and on a revolving wing at 50-60 deg; "
+      "on a flapping wing the cycles do not repeat and the per-step lift is rough, so read "
+      "summary.json's settled_mean_CL over many cycles (Lua et al.'s wing: 3-5 % above the "
+      "measurement over 150 cycles), and a long run may break down (docs/uvlm.md, "
+      "\"Leading-edge vortex shedding: measurements\"); \"separated\" and \"none\" bracket "
+      "the measured lift");
 }
 
 // A prescribed wake (free_wake = false) moves with the free stream only (uvlm::WakeModel::
@@ -328,14 +338,13 @@ bool still_air_prescribed_wake(const Case& c) {
 
 void warn_still_air_prescribed_wake(const TomlTable& root, Case& c) {
   if (!still_air_prescribed_wake(c)) return;
-  const auto t = root.find_table("numerics");
-  c.warnings.push_back(
-      {c.file, t ? t->line_of("free_wake") : 0, "numerics.free_wake",
-       "free_wake = false in still air: a prescribed wake moves with the free stream only, so it "
-       "stays where the trailing edge shed it (until far_wake_cycles) and the wing sweeps back "
-       "through it (the rigid hawkmoth hover of cases/hover.toml: mean CL 2.45 with "
-       "\"separated\" and 1.86 with \"none\" against 2.77 and 2.05 with the free wake; 1.87 and "
-       "1.63 without far_wake_cycles); set free_wake = true (docs/case_file.md, free_wake)"});
+  warn_at_numerics_key(
+      root, c, "free_wake",
+      "free_wake = false in still air: a prescribed wake moves with the free stream only, so it "
+      "stays where the trailing edge shed it (until far_wake_cycles) and the wing sweeps back "
+      "through it (the rigid hawkmoth hover of cases/hover.toml: mean CL 2.45 with \"separated\" "
+      "and 1.86 with \"none\" against 2.77 and 2.05 with the free wake; 1.87 and 1.63 without "
+      "far_wake_cycles); set free_wake = true (docs/case_file.md, free_wake)");
 }
 
 // A frozen far wake (frozen_wake_cycles) in still air is the same: its rows stay where they
@@ -348,15 +357,12 @@ void warn_frozen_wake_in_still_air(const TomlTable& root, Case& c) {
   if (!c.air.enabled || c.air.freestream.norm() > 0.0 || !n.free_wake || n.steady ||
       !(n.frozen_wake_cycles > 0.0))
     return;
-  const auto t = root.find_table("numerics");
-  c.warnings.push_back(
-      {c.file, t ? t->line_of("frozen_wake_cycles") : 0, "numerics.frozen_wake_cycles",
-       "a frozen far wake in still air stays where it was shed and the wing sweeps back through it (the "
-       "rigid "
-       "hawkmoth hover of cases/hover.toml, 4 cycles, frozen after 0.5: mean CL 2.30, its cycles scattering "
-       "by "
-       "0.20, against 2.77 and periodic with far_wake_cycles = 0.5); set far_wake_cycles = 0.5 instead "
-       "(docs/uvlm.md, \"Hover over many cycles\")"});
+  warn_at_numerics_key(
+      root, c, "frozen_wake_cycles",
+      "a frozen far wake in still air stays where it was shed and the wing sweeps back through "
+      "it (the rigid hawkmoth hover of cases/hover.toml, 4 cycles, frozen after 0.5: mean CL "
+      "2.30, its cycles scattering by 0.20, against 2.77 and periodic with far_wake_cycles = "
+      "0.5); set far_wake_cycles = 0.5 instead (docs/uvlm.md, \"Hover over many cycles\")");
 }
 
 }  // namespace
@@ -366,13 +372,14 @@ void warn_long_free_hover(const TomlTable& root, Case& c) {
   if (!c.air.enabled || c.air.freestream.norm() > 0.0 || !n.free_wake || n.cycles <= kLongFreeHoverCycles ||
       n.far_wake_cycles > 0.0 || n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
     return;
-  const auto t = root.find_table("numerics");
-  c.warnings.push_back({c.file, t ? t->line_of("cycles") : 0, "numerics.cycles",
-                        std::to_string(n.cycles) + " cycles of hover with the whole wake free: from the second "
-                        "cycle on the lift hinges on round-off (a change of the frequency by 1e-9 moved a "
-                        "hawkmoth hover's cycle-3 mean lift by up to 39 %), and it grows erratic after 5-8 "
-                        "cycles (docs/uvlm.md, \"Hover over many cycles\"); set far_wake_cycles = 0.5 (as "
-                        "cases/hover_periodic.toml)"});
+  warn_at_numerics_key(
+      root, c, "cycles",
+      std::to_string(n.cycles) +
+          " cycles of hover with the whole wake free: from the second "
+          "cycle on the lift hinges on round-off (a change of the frequency by 1e-9 moved a "
+          "hawkmoth hover's cycle-3 mean lift by up to 39 %), and it grows erratic after 5-8 "
+          "cycles (docs/uvlm.md, \"Hover over many cycles\"); set far_wake_cycles = 0.5 (as "
+          "cases/hover_periodic.toml)");
 }
 
 // A hover (no free stream) whose convected far wake starts outside the measured range
@@ -384,7 +391,6 @@ void warn_far_wake_outside_measured_range(const TomlTable& root, Case& c) {
   if (!c.air.enabled || c.air.freestream.norm() > 0.0 || !c.numerics.free_wake || !(f > 0.0) ||
       (f >= kHoverFarWakeCyclesMin && f <= kHoverFarWakeCyclesMax))
     return;
-  const auto t = root.find_table("numerics");
   auto number = [](double x) {
     std::ostringstream o;
     o << x;  // 6 significant digits: 0.25, 0.625
@@ -396,10 +402,10 @@ void warn_far_wake_outside_measured_range(const TomlTable& root, Case& c) {
             "(hawkmoth hover: within a core radius at 0.25 and 0.375)"
           : "the longer free wake's instability makes the cycle means wander (hawkmoth hover, cycles "
             "10-20: 0.8 % at 0.75, 1.4 % at 1, 4.8 % at 2)";
-  c.warnings.push_back({c.file, t ? t->line_of("far_wake_cycles") : 0, "numerics.far_wake_cycles",
-                        "far_wake_cycles = " + number(f) + " in hover is outside the measured range " +
-                            number(kHoverFarWakeCyclesMin) + " to " + number(kHoverFarWakeCyclesMax) +
-                            ": " + why + " (docs/uvlm.md, \"Hover over many cycles\")"});
+  warn_at_numerics_key(root, c, "far_wake_cycles",
+                       "far_wake_cycles = " + number(f) + " in hover is outside the measured range " +
+                           number(kHoverFarWakeCyclesMin) + " to " + number(kHoverFarWakeCyclesMax) + ": " +
+                           why + " (docs/uvlm.md, \"Hover over many cycles\")");
 }
 
 // Angles in radians where degrees are expected (`cos_deg = [0.87]` for a 50° stroke): every
