@@ -75,9 +75,10 @@ std::string inertial_deflection_warning(const io::Case& c, const FsiSetup& setup
                 "represent: twice the chain's linear quasi-static deflection under the rigid wing's "
                 "inertial loads (%.1f and %.1f deg; twice, as a load applied at once moves an undamped "
                 "spring; the joint inboard of body %d %s by %.1f deg of it). Expect joints swinging far "
-                "past that, results that hinge on the time step, or a numerical failure. Stiffen the wing "
-                "(a thicker membrane, veins), lower frequency_hz or the amplitudes, or scale the springs "
-                "(--spring-scale) (docs/case_file.md, \"Warnings\")",
+                "past that, results that hinge on the time step, or a numerical failure. Run the wing's own "
+                "FEM, geometrically nonlinear (structure.kind = \"fem\"; slower: docs/fem.md), stiffen the "
+                "wing (a thicker membrane, veins), lower frequency_hz or the amplitudes, or scale the "
+                "springs (--spring-scale) (docs/case_file.md, \"Warnings\")",
                 bend, twist, kLargeTipDeflectionDeg, q.tip_bend * deg, q.tip_twist * deg, q.joint + 1,
                 q.twist ? "twisted" : "bent", q.joint_angle * deg);
   return text;
@@ -94,17 +95,18 @@ std::string large_motion_at_failure(const FsiSetup& setup, const Eigen::VectorXd
   if (!(angle > kLargeTipDeflectionDeg) && !(bend > kLargeTipDeflectionDeg) && !(twist > kLargeTipDeflectionDeg))
     return "";
   const int body = chain.first_jointed_body() + static_cast<int>(largest) / 2;
-  char text[900];
+  char text[1100];
   std::snprintf(text, sizeof text,
                 "By then the wing had moved beyond what its chain represents: the joint inboard of body %d "
                 "%s %.1f deg at the last completed step (history.csv %s_%d_rad), the tip bent up to %.1f "
                 "deg and twisted up to %.1f deg against its base (summary.json peak_tip_bend_deg, "
                 "peak_tip_twist_deg), beyond the %g deg up to which the joint springs, derived from the "
                 "wing's small-rotation FEM, represent it. A finer time step may go further, but through a "
-                "motion the model was not made for: stiffen the wing, lower frequency_hz or the amplitudes "
+                "motion the model was not made for: run the wing's own FEM, geometrically nonlinear "
+                "(structure.kind = \"fem\"), stiffen the wing, or lower frequency_hz or the amplitudes "
                 "(docs/case_file.md, \"Warnings\")",
-                body + 1, largest % 2 ? "twisted" : "bent", last_q(largest) * deg, largest % 2 ? "twist" : "bend",
-                body + 1, bend, twist, kLargeTipDeflectionDeg);
+                body + 1, largest % 2 ? "twisted" : "bent", last_q(largest) * deg,
+                largest % 2 ? "twist" : "bend", body + 1, bend, twist, kLargeTipDeflectionDeg);
   return text;
 }
 
@@ -113,13 +115,14 @@ std::string large_deflection_warning(const RunResults& results) {
   if (results.has("fem_nodes")) return "";
   const double bend = results.number("peak_tip_bend_deg"), twist = results.number("peak_tip_twist_deg");
   if (!(bend > kLargeTipDeflectionDeg) && !(twist > kLargeTipDeflectionDeg)) return "";
-  char text[700];
+  char text[900];
   std::snprintf(text, sizeof text,
                 "the wing's tip bent up to %.1f deg and twisted up to %.1f deg against its base (in the wing "
                 "frame; summary.json peak_tip_bend_deg, peak_tip_twist_deg), beyond the %g deg up to "
                 "which the joint springs, derived from the wing's small-rotation FEM, represent it: the "
                 "results are those of a wing far more flexible than its model was made for (often a wing "
-                "driven near a resonance; docs/case_file.md, \"Warnings\")",
+                "driven near a resonance); the wing's own FEM is geometrically nonlinear (structure.kind = "
+                "\"fem\"; docs/case_file.md, \"Warnings\")",
                 bend, twist, kLargeTipDeflectionDeg);
   return text;
 }

@@ -190,13 +190,14 @@ std::string soft_chain_warning(const Case& c, const FsiSetup& setup) {
   }
   const double f = c.kinematics.frequency;
   if (!(f1 < f)) return "";
-  char text[640];
+  char text[800];
   std::snprintf(text, sizeof text,
                 "the chain's first natural frequency, %.3g Hz (%s), is below the wingbeat frequency %.3g Hz: "
                 "the wing is driven above its first resonance and will bend further than its linear joint "
-                "springs represent; such runs usually stop with a numerical failure. Stiffen the wing "
-                "(a thicker membrane, veins), lower frequency_hz, or scale the springs (--spring-scale; "
-                "frequencies scale by its square root)",
+                "springs represent; such runs usually stop with a numerical failure. Run the wing's own "
+                "FEM, geometrically nonlinear (structure.kind = \"fem\"), stiffen the wing (a thicker "
+                "membrane, veins), lower frequency_hz, or scale the springs (--spring-scale; frequencies "
+                "scale by its square root)",
                 f1, bending ? "bending" : "torsion", f);
   return text;
 }
