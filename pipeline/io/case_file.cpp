@@ -288,6 +288,9 @@ bool is_case_document(const TomlTable& root) { return root.has("kinematics"); }
 
 namespace {
 
+/// A hover: air without a free stream (the wake moves only by what it induces).
+bool in_still_air(const Case& c) { return c.air.enabled && !(c.air.freestream.norm() > 0.0); }
+
 /// A warning at numerics.`key`, on its line of the [numerics] table (0 if the key is not written).
 void warn_at_numerics_key(const TomlTable& root, Case& c, const std::string& key, std::string message) {
   const auto t = root.find_table("numerics");
@@ -333,7 +336,7 @@ void warn_experimental_shedding(const TomlTable& root, Case& c) {
 namespace {
 
 bool still_air_prescribed_wake(const Case& c) {
-  return c.air.enabled && !(c.air.freestream.norm() > 0.0) && !c.numerics.free_wake && !c.numerics.steady;
+  return in_still_air(c) && !c.numerics.free_wake && !c.numerics.steady;
 }
 
 void warn_still_air_prescribed_wake(const TomlTable& root, Case& c) {
@@ -354,9 +357,7 @@ void warn_still_air_prescribed_wake(const TomlTable& root, Case& c) {
 // scattering by 0.20) against 2.77 ± 0.005 with far_wake_cycles = 0.5.
 void warn_frozen_wake_in_still_air(const TomlTable& root, Case& c) {
   const Case::Numerics& n = c.numerics;
-  if (!c.air.enabled || c.air.freestream.norm() > 0.0 || !n.free_wake || n.steady ||
-      !(n.frozen_wake_cycles > 0.0))
-    return;
+  if (!in_still_air(c) || !n.free_wake || n.steady || !(n.frozen_wake_cycles > 0.0)) return;
   warn_at_numerics_key(
       root, c, "frozen_wake_cycles",
       "a frozen far wake in still air stays where it was shed and the wing sweeps back through "
@@ -369,8 +370,8 @@ void warn_frozen_wake_in_still_air(const TomlTable& root, Case& c) {
 
 void warn_long_free_hover(const TomlTable& root, Case& c) {
   const Case::Numerics& n = c.numerics;
-  if (!c.air.enabled || c.air.freestream.norm() > 0.0 || !n.free_wake || n.cycles <= kLongFreeHoverCycles ||
-      n.far_wake_cycles > 0.0 || n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
+  if (!in_still_air(c) || !n.free_wake || n.cycles <= kLongFreeHoverCycles || n.far_wake_cycles > 0.0 ||
+      n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
     return;
   warn_at_numerics_key(
       root, c, "cycles",
@@ -388,7 +389,7 @@ void warn_long_free_hover(const TomlTable& root, Case& c) {
 // means wander (docs/uvlm.md, "Hover over many cycles").
 void warn_far_wake_outside_measured_range(const TomlTable& root, Case& c) {
   const double f = c.numerics.far_wake_cycles;
-  if (!c.air.enabled || c.air.freestream.norm() > 0.0 || !c.numerics.free_wake || !(f > 0.0) ||
+  if (!in_still_air(c) || !c.numerics.free_wake || !(f > 0.0) ||
       (f >= kHoverFarWakeCyclesMin && f <= kHoverFarWakeCyclesMax))
     return;
   auto number = [](double x) {

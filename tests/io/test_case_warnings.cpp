@@ -19,12 +19,18 @@
 
 namespace {
 
-TEST(CaseWarnings, ALongHoverWithTheWholeWakeFreeIsWarned) {
-  const flapsim::io::Case c = case_from_text(hover_case_text("cycles = 10\n"));
+/// `c` has exactly one warning, at `key` on `line`, whose message contains `text`.
+void expect_only_warning(const flapsim::io::Case& c, const std::string& key, int line,
+                         const std::string& text) {
   ASSERT_EQ(c.warnings.size(), 1u);
-  EXPECT_EQ(c.warnings[0].key, "numerics.cycles");
-  EXPECT_EQ(c.warnings[0].line, 10);
-  EXPECT_NE(c.warnings[0].message.find("far_wake_cycles = 0.5"), std::string::npos) << c.warnings[0].message;
+  EXPECT_EQ(c.warnings[0].key, key);
+  EXPECT_EQ(c.warnings[0].line, line);
+  EXPECT_NE(c.warnings[0].message.find(text), std::string::npos) << c.warnings[0].message;
+}
+
+TEST(CaseWarnings, ALongHoverWithTheWholeWakeFreeIsWarned) {
+  expect_only_warning(case_from_text(hover_case_text("cycles = 10\n")), "numerics.cycles", 10,
+                      "far_wake_cycles = 0.5");
 }
 
 TEST(CaseWarnings, AFarWakeATruncatedWakeAFreeStreamOrAShortRunIsNotWarned) {
@@ -80,11 +86,8 @@ TEST(CaseWarnings, APrescribedWakeInStillAirIsWarnedAndWithAShedLeadingEdgeRefus
   // its line; in a free stream (the flat wake of the verification cases) not; with
   // leading_edge = "shed" in still air bad input naming numerics.free_wake; in a free stream
   // accepted.
-  const flapsim::io::Case c = case_from_text(hover_case_text("cycles = 1\nfree_wake = false\n"));
-  ASSERT_EQ(c.warnings.size(), 1u);
-  EXPECT_EQ(c.warnings[0].key, "numerics.free_wake");
-  EXPECT_EQ(c.warnings[0].line, 11);
-  EXPECT_NE(c.warnings[0].message.find("set free_wake = true"), std::string::npos) << c.warnings[0].message;
+  expect_only_warning(case_from_text(hover_case_text("cycles = 1\nfree_wake = false\n")),
+                      "numerics.free_wake", 11, "set free_wake = true");
   const std::string stream = "[air]\nfreestream = [-3.0, 0.0, 0.0]\n";
   EXPECT_TRUE(case_from_text(hover_case_text("cycles = 1\nfree_wake = false\n", stream)).warnings.empty());
   const flapsim::InputError e =
@@ -97,21 +100,13 @@ TEST(CaseWarnings, APrescribedWakeInStillAirIsWarnedAndWithAShedLeadingEdgeRefus
   EXPECT_FALSE(glide.numerics.free_wake);
 }
 
-}  // namespace
-
-namespace {
-
 TEST(CaseWarnings, AFrozenFarWakeInStillAirIsWarned) {
   // pipeline/io/case_file.cpp, warn_frozen_wake_in_still_air: frozen rows in hover stay where
   // they were shed (the rigid hawkmoth hover: mean CL 2.30 against 2.77 with the far wake
   // convected, test app.StillAirPrescribedWake.AFrozenFarWake…). Warned naming
   // numerics.frozen_wake_cycles on its line; in a free stream not.
-  const flapsim::io::Case c = case_from_text(hover_case_text("cycles = 1\nfrozen_wake_cycles = 0.5\n"));
-  ASSERT_EQ(c.warnings.size(), 1u);
-  EXPECT_EQ(c.warnings[0].key, "numerics.frozen_wake_cycles");
-  EXPECT_EQ(c.warnings[0].line, 11);
-  EXPECT_NE(c.warnings[0].message.find("set far_wake_cycles = 0.5"), std::string::npos)
-      << c.warnings[0].message;
+  expect_only_warning(case_from_text(hover_case_text("cycles = 1\nfrozen_wake_cycles = 0.5\n")),
+                      "numerics.frozen_wake_cycles", 11, "set far_wake_cycles = 0.5");
   EXPECT_TRUE(case_from_text(hover_case_text("cycles = 1\nfrozen_wake_cycles = 0.5\n",
                                              "[air]\nfreestream = [-3.0, 0.0, 0.0]\n"))
                   .warnings.empty());
