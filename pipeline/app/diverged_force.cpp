@@ -27,7 +27,8 @@ double diverged_force_limit(double rho, double fastest_speed, double area) {
   return kDivergedForceCoefficient * 0.5 * rho * fastest_speed * fastest_speed * area;
 }
 
-void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time) {
+void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time,
+                             const std::string& advice) {
   const double f = force.norm();
   if (!(f > limit)) return;
   char text[320];
@@ -35,7 +36,21 @@ void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long st
                 "the aerodynamic force reached %.3g N, beyond %.3g N (%.0f times the dynamic pressure of the "
                 "wing's fastest point times its area): the lattice has diverged (docs/fsi.md, \"Failures\")",
                 f, limit, kDivergedForceCoefficient);
-  throw NumericalFailure(text, step, time);
+  throw NumericalFailure(advice.empty() ? std::string(text) : std::string(text) + "; " + advice, step, time);
+}
+
+std::string diverged_lattice_advice(const io::Case::Numerics& n) {
+  if (n.leading_edge != uvlm::LeadingEdge::Shed) return {};
+  const std::string default_model =
+      "or leading_edge = \"separated\", the default, which sheds no sheet (docs/uvlm.md, "
+      "\"Leading-edge vortex shedding: measurements\")";
+  const double sheet_core = n.sheet_core_radius > 0.0 ? n.sheet_core_radius : n.core_radius;  // [mean chords]
+  if (sheet_core >= 0.5)
+    return "with leading_edge = \"shed\" the leading-edge sheet has come apart: " + default_model;
+  return "with leading_edge = \"shed\" the leading-edge sheet has come apart: numerics.sheet_core_radius = "
+         "0.5 keeps "
+         "it together in more runs, " +
+         default_model;
 }
 
 }  // namespace flapsim::app

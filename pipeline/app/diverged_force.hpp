@@ -20,7 +20,10 @@
 
 #include <Eigen/Core>
 
+#include <string>
+
 #include "mbd/base_motion.hpp"
+#include "pipeline/io/case_model.hpp"
 
 namespace flapsim::app {
 
@@ -34,7 +37,18 @@ double fastest_wing_point_speed(const mbd::BaseMotion& base, double period, cons
 /// The largest aerodynamic force [N] a run may carry: kDivergedForceCoefficient ½ ρ U_b² S.
 double diverged_force_limit(double rho, double fastest_speed, double area);
 
-/// Throws NumericalFailure (with the step and time) when |force| exceeds `limit` [N].
-void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time);
+/// Throws NumericalFailure (with the step and time) when |force| exceeds `limit` [N]; its
+/// message ends with `advice` (diverged_lattice_advice) when that is not empty.
+void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time,
+                             const std::string& advice = {});
+
+/// What a user can change when a lattice with these numerics diverges: with leading_edge =
+/// "shed" the leading-edge sheet comes apart near the wing (a hover at an advanced rotation
+/// phase, docs/uvlm.md), and the sheet's own core at half a mean chord keeps it together in
+/// more runs (the rigid hawkmoth hover's rotation-phase study, 12 cycles: 6 of 7 phases run
+/// through against 4 of 7 with the wake's core; cases/bench_hover.toml with its sheet
+/// unmerged: 3 wingbeats through against a stop at step 192); "separated", the default,
+/// sheds nothing. Empty for the other leading-edge models.
+std::string diverged_lattice_advice(const io::Case::Numerics& numerics);
 
 }  // namespace flapsim::app

@@ -89,6 +89,9 @@ TEST(DivergedForce, TheRigidHoverWithAShedLeadingEdgeStopsWhereItsLiftRunsAway) 
       flapsim::test::run_flapsim_capturing_stderr(dir.path(), "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
   EXPECT_EQ(outcome.status, 3) << outcome.err;
   EXPECT_NE(outcome.err.find("the lattice has diverged"), std::string::npos) << outcome.err;
+  // and says what to change (diverged_lattice_advice; the next test shows the advice holds here)
+  EXPECT_NE(outcome.err.find("numerics.sheet_core_radius = 0.5 keeps it together"), std::string::npos)
+      << outcome.err;
   EXPECT_NE(read_text(dir / "out" / "summary.json").find("\"status\": \"failed\""), std::string::npos);
   // history.csv holds every step up to the failing one (the step the message names), which
   // is after the first wingbeat; its force is a runaway: over 10 times the largest of the
@@ -114,6 +117,60 @@ TEST(DivergedForce, TheRigidHoverWithAShedLeadingEdgeStopsWhereItsLiftRunsAway) 
   }
   EXPECT_GT(force(fx.size() - 1), 10.0 * first);
   EXPECT_GT(force(fx.size() - 1), before);
+}
+
+TEST(DivergedForce, TheSheetsCoreTheAdviceNamesRunsTheSameHoverThrough) {
+  // The hover of the test above with numerics.sheet_core_radius = 0.5, what the failure's
+  // advice names: its 3 wingbeats run through (1 Dec: last-wingbeat mean CL 2.500), and the
+  // lift lies between the same hover's with "none" and "separated" (2.077 and 2.791, the
+  // bracket of docs/uvlm.md, "Leading edge: validation and the default").
+  flapsim::test::ScratchDir dir("shed_hover_half_chord_sheet_core");
+  std::string toml = flapsim::test::shipped_case_text("bench_hover");
+  toml = std::regex_replace(
+      toml, std::regex("\\[numerics\\]\n"),
+      "[numerics]\nleading_edge = \"shed\"\nsheet_merge_steps = 0\nsheet_core_radius = 0.5\n");
+  ASSERT_NE(toml.find("sheet_core_radius = 0.5"), std::string::npos);
+  std::ofstream(dir / "case.toml") << toml;
+  const auto outcome = flapsim::test::run_flapsim_capturing_stderr(
+      dir.path(), "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const std::string summary = read_text(dir / "out" / "summary.json");
+  const std::smatch cl = [&] {
+    std::smatch m;
+    std::regex_search(summary, m, std::regex("\"mean_CL\": ([-0-9.e+]+)"));
+    return m;
+  }();
+  ASSERT_EQ(cl.size(), 2u) << summary;
+  EXPECT_GT(std::stod(cl[1]), 2.077);
+  EXPECT_LT(std::stod(cl[1]), 2.791);
+}
+
+TEST(DivergedForce, TheAdviceNamesTheSheetsCoreOnlyWhereItIsNarrow) {
+  // diverged_lattice_advice: nothing for the models that shed no sheet; with "shed", the
+  // sheet's core at half a mean chord while it is narrower (sheet_core_radius, or else
+  // core_radius, in mean chords), and "separated" in every case.
+  flapsim::io::Case::Numerics n;
+  for (auto model : {flapsim::uvlm::LeadingEdge::None, flapsim::uvlm::LeadingEdge::Attached,
+                     flapsim::uvlm::LeadingEdge::Separated}) {
+    n.leading_edge = model;
+    EXPECT_EQ(flapsim::app::diverged_lattice_advice(n), "");
+  }
+  n.leading_edge = flapsim::uvlm::LeadingEdge::Shed;
+  auto names_core = [&] {
+    const std::string a = flapsim::app::diverged_lattice_advice(n);
+    EXPECT_NE(a.find("leading_edge = \"separated\""), std::string::npos) << a;
+    return a.find("sheet_core_radius = 0.5") != std::string::npos;
+  };
+  n.core_radius = 0.2;
+  n.sheet_core_radius = 0.0;  // the wake's 0.2
+  EXPECT_TRUE(names_core());
+  n.sheet_core_radius = 0.3;
+  EXPECT_TRUE(names_core());
+  n.sheet_core_radius = 0.5;
+  EXPECT_FALSE(names_core());
+  n.sheet_core_radius = 0.0;
+  n.core_radius = 0.6;  // the wake's, wider already
+  EXPECT_FALSE(names_core());
 }
 
 TEST(DivergedForce, AnImpulsiveStartInAFreeStreamRunsOn) {
