@@ -47,9 +47,8 @@ std::string diverged_lattice_advice(const io::Case::Numerics& n) {
   const double sheet_core = n.sheet_core_radius > 0.0 ? n.sheet_core_radius : n.core_radius;  // [mean chords]
   if (sheet_core >= 0.5)
     return "with leading_edge = \"shed\" the leading-edge sheet has come apart: " + default_model;
-  return "with leading_edge = \"shed\" the leading-edge sheet has come apart: numerics.sheet_core_radius = "
-         "0.5 keeps "
-         "it together in more runs, " +
+  return "with leading_edge = \"shed\" the leading-edge sheet has come apart: "
+         "numerics.sheet_core_radius = 0.5 keeps it together in more runs, " +
          default_model;
 }
 
