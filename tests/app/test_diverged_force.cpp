@@ -119,11 +119,12 @@ TEST(DivergedForce, TheRigidHoverWithAShedLeadingEdgeStopsWhereItsLiftRunsAway) 
   EXPECT_GT(force(fx.size() - 1), before);
 }
 
-TEST(DivergedForce, TheSheetsCoreTheAdviceNamesRunsTheSameHoverThrough) {
+TEST(DivergedForce, WithTheSheetsCoreTheAdviceNamesTheSameHoverRunsThrough) {
   // The hover of the test above with numerics.sheet_core_radius = 0.5, what the failure's
   // advice names: its 3 wingbeats run through (1 Dec: last-wingbeat mean CL 2.500), and the
-  // lift lies between the same hover's with "none" and "separated" (2.077 and 2.791, the
-  // bracket of docs/uvlm.md, "Leading edge: validation and the default").
+  // lift lies between the same case's with "none" and "separated" (2.077 and 2.791, measured
+  // 1 Dec; the two models that bracket a leading-edge vortex's lift, docs/uvlm.md, "Leading
+  // edge: validation and the default").
   flapsim::test::ScratchDir dir("shed_hover_half_chord_sheet_core");
   std::string toml = flapsim::test::shipped_case_text("bench_hover");
   toml = std::regex_replace(
