@@ -27,8 +27,7 @@ double diverged_force_limit(double rho, double fastest_speed, double area) {
   return kDivergedForceCoefficient * 0.5 * rho * fastest_speed * fastest_speed * area;
 }
 
-void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time,
-                             const std::string& advice) {
+void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time) {
   const double f = force.norm();
   if (!(f > limit)) return;
   char text[320];
@@ -36,19 +35,24 @@ void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long st
                 "the aerodynamic force reached %.3g N, beyond %.3g N (%.0f times the dynamic pressure of the "
                 "wing's fastest point times its area): the lattice has diverged (docs/fsi.md, \"Failures\")",
                 f, limit, kDivergedForceCoefficient);
-  throw NumericalFailure(advice.empty() ? std::string(text) : std::string(text) + "; " + advice, step, time);
+  throw NumericalFailure(text, step, time);
 }
 
-std::string diverged_lattice_advice(const io::Case::Numerics& n) {
+std::string diverged_lattice_advice(const io::Case::Numerics& n, LiftJump jump) {
   if (n.leading_edge != uvlm::LeadingEdge::Shed) return {};
+  char evidence[200];
+  std::snprintf(
+      evidence, sizeof evidence,
+      "With leading_edge = \"shed\" the lift coefficient changed by up to %.3g from one step to the "
+      "next (into step %ld; history.csv CL), as it does where the leading-edge sheet comes apart near "
+      "the wing: ",
+      jump.size, jump.step);
   const std::string default_model =
-      "or leading_edge = \"separated\", the default, which sheds no sheet (docs/uvlm.md, "
+      "leading_edge = \"separated\", the default, sheds no sheet (docs/uvlm.md, "
       "\"Leading-edge vortex shedding: measurements\")";
   const double sheet_core = n.sheet_core_radius > 0.0 ? n.sheet_core_radius : n.core_radius;  // [mean chords]
-  if (sheet_core >= 0.5)
-    return "with leading_edge = \"shed\" the leading-edge sheet has come apart: " + default_model;
-  return "with leading_edge = \"shed\" the leading-edge sheet has come apart: "
-         "numerics.sheet_core_radius = 0.5 keeps it together in more runs, " +
+  if (sheet_core >= 0.5) return evidence + default_model;
+  return evidence + std::string("numerics.sheet_core_radius = 0.5 keeps it together in more runs, or ") +
          default_model;
 }
 

@@ -37,18 +37,26 @@ double fastest_wing_point_speed(const mbd::BaseMotion& base, double period, cons
 /// The largest aerodynamic force [N] a run may carry: kDivergedForceCoefficient ½ ρ U_b² S.
 double diverged_force_limit(double rho, double fastest_speed, double area);
 
-/// Throws NumericalFailure (with the step and time) when |force| exceeds `limit` [N]; its
-/// message ends with `advice` (diverged_lattice_advice) when that is not empty.
-void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time,
-                             const std::string& advice = {});
+/// Throws NumericalFailure (with the step and time) when |force| exceeds `limit` [N].
+void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time);
 
-/// What a user can change when a lattice with these numerics diverges: with leading_edge =
-/// "shed" the leading-edge sheet comes apart near the wing (a hover at an advanced rotation
-/// phase, docs/uvlm.md), and the sheet's own core at half a mean chord keeps it together in
-/// more runs (the rigid hawkmoth hover's rotation-phase study, 12 cycles: 6 of 7 phases run
-/// through against 4 of 7 with the wake's core; cases/bench_hover.toml with its sheet
-/// unmerged: 3 wingbeats through against a stop at step 192); "separated", the default,
-/// sheds nothing. Empty for the other leading-edge models.
-std::string diverged_lattice_advice(const io::Case::Numerics& numerics);
+/// The largest change of the lift coefficient between two consecutive recorded steps [-], and
+/// the later of the two (1-based step).
+struct LiftJump {
+  double size = 0.0;
+  long step = 0;
+};
+
+/// What a user can change when a run with these numerics fails in its time loop (the force
+/// bound above, its coupling, its structure): with leading_edge = "shed" the leading-edge
+/// sheet comes apart near the wing (a hover at an advanced rotation phase, a forward flight,
+/// docs/uvlm.md), its loads jumping from step to step (`jump`, the evidence the text quotes),
+/// and the sheet's own core at half a mean chord keeps it together in more runs (the rigid
+/// hawkmoth hover's rotation-phase study, 12 cycles: 6 of 7 phases run through against 4 of 7
+/// with the wake's core; cases/bench_hover.toml with its sheet unmerged: 3 wingbeats through
+/// against a stop at step 192; the flexible hover of cases/hover_flexible.toml in a 3 m/s
+/// forward flight: 6 wingbeats through against a stop at step 190); "separated", the
+/// default, sheds no sheet. Empty for the other leading-edge models.
+std::string diverged_lattice_advice(const io::Case::Numerics& numerics, LiftJump jump);
 
 }  // namespace flapsim::app

@@ -25,7 +25,7 @@ namespace {
 // (before the wake is shed, so the outputs show the wake the step's loads came from)
 // the recorder and the progress line.
 void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder, ProgressLine& progress,
-               const std::function<void(long, long)>& on_step, const std::string& diverged_advice) {
+               const std::function<void(long, long)>& on_step) {
   const fsi::FsiModel& model = setup.model;
   // The force beyond which the lattice has diverged (diverged_force.hpp).
   const double force_limit =
@@ -51,8 +51,7 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
     recorder.record(data);
     // From the second step on: the first carries a start's impulse (diverged_force.hpp).
     if (force_limit > 0.0 && n > 0)
-      throw_if_force_diverged(recorder.last().force, force_limit, data.step - 1, data.time(),
-                              diverged_advice);
+      throw_if_force_diverged(recorder.last().force, force_limit, data.step - 1, data.time());
     fsi::shed_wake(model, data);
     // Chain solves split in halves so far (step halving, mbd/generalized_alpha.hpp): shown once there are any.
     char split[48] = "";
@@ -91,7 +90,7 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
   ProgressLine progress(setup.steps, stderr, options.progress);
   // 3. The time loop; a numerical failure still leaves a complete summary.json.
   try {
-    time_loop(setup, data, recorder, progress, options.on_step, diverged_lattice_advice(c.numerics));
+    time_loop(setup, data, recorder, progress, options.on_step);
   } catch (const NumericalFailure& e) {
     // A chain that had swung beyond small rotations: say so with the failure (the joint,
     // the angles), as the failure is then the wing's motion rather than the solver's.
@@ -101,6 +100,9 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
     std::string why = large_motion_at_failure(setup, last_q, tip.bend_deg, tip.twist_deg);
     const std::string released = released_chain_at_failure(c, e.step());
     if (!released.empty()) why += (why.empty() ? "" : ". ") + released;
+    // A leading-edge sheet that came apart: the loads' jumps it leaves, and what to change.
+    const std::string lattice = diverged_lattice_advice(c.numerics, recorder.largest_lift_jump());
+    if (!lattice.empty()) why += (why.empty() ? "" : ". ") + lattice;
     if (why.empty()) {
       recorder.finish(data, "failed", e.what());
       throw;

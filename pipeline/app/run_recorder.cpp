@@ -357,6 +357,15 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   if (setup_.model.air) r.set("wake_panels", data.lattice->wake_panels());
 }
 
+LiftJump RunRecorder::largest_lift_jump() const {
+  LiftJump largest;
+  for (std::size_t k = 1; k < samples_.size(); ++k) {
+    const double change = std::abs(samples_[k].cl - samples_[k - 1].cl);
+    if (change > largest.size) largest = {change, static_cast<long>(k) + 1};
+  }
+  return largest;
+}
+
 RunRecorder::TipDeflection RunRecorder::peak_tip_deflection() const {
   double bend = 0.0, twist = 0.0;
   for (const StepSample& s : samples_) {

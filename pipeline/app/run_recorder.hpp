@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/app/diverged_force.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/run_history.hpp"
 #include "pipeline/app/run_results.hpp"
@@ -83,6 +84,10 @@ class RunRecorder {
     double bend_deg = 0.0, twist_deg = 0.0;
   };
   TipDeflection peak_tip_deflection() const;
+
+  /// The largest change of C_L between two consecutive recorded steps so far
+  /// (diverged_force.hpp; 0 before the second step).
+  LiftJump largest_lift_jump() const;
 
  private:
   void write_series(const fsi::FsiData& data, long step);
