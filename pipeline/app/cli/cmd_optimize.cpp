@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "pipeline/app/interruption.hpp"
+#include "pipeline/app/optimize/evaluation_table.hpp"
+#include "pipeline/app/optimize/optimize_report.hpp"
 #include "pipeline/app/optimize/optimizer.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/app/sweep/sweep_case.hpp"
@@ -68,6 +70,9 @@ void optimize_command(const OptimizeArgs& a) {
   const std::string objective(app::kRunResults[problem.objective].key);
   std::printf("optimum: %s  %s = %.6g\n", sweep::describe(best.point).c_str(), objective.c_str(),
               optimize::result_value(best, problem.objective));
+  if (const std::string notes = optimize::evaluation_notes(best); !notes.empty())
+    std::fprintf(stderr, "flapsim: warning: the optimum's run was warned: %s. %s\n", notes.c_str(),
+                 optimize::optimum_warning_advice(best).c_str());
   std::printf("%zu evaluations (%zu run, %zu kept), NLopt %s: %s; %d rank%s, %.1f s wall\n",
               report.evaluations.size(), report.runs, report.evaluations.size() - report.runs,
               optimize::algorithm_name(report.algorithm).c_str(), report.stop_reason.c_str(), report.ranks,

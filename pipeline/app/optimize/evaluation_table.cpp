@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <fstream>
 
+#include "pipeline/app/flexibility_warnings.hpp"
+#include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/io/csv_writer.hpp"
 
 namespace flapsim::optimize {
@@ -60,6 +62,14 @@ EvaluationTable::EvaluationTable(std::filesystem::path path, std::vector<std::st
     row_of_hash_.emplace(cells[hash_column_], rows_.size());
     rows_.push_back(std::move(cells));
   }
+}
+
+std::string evaluation_notes(const Evaluation& e) {
+  std::vector<std::string> notes;
+  if (e.results.has("warnings")) notes.push_back(e.results.text("warnings"));
+  if (std::string deflection = app::large_deflection_note(e.results); !deflection.empty())
+    notes.push_back(std::move(deflection));
+  return app::join_notes(notes);
 }
 
 std::size_t EvaluationTable::record(const Evaluation& e) {

@@ -30,6 +30,11 @@ struct Evaluation {
   std::string host;
 };
 
+/// \brief What the evaluation's run was warned of, in a few words: its case's warnings
+/// (summary.json's "warnings") and a tip deflection beyond the chain's range
+/// (app::large_deflection_note), '; '-separated; "" when none.
+std::string evaluation_notes(const Evaluation& e);
+
 class EvaluationTable {
  public:
   /// Reads the rows of an earlier run from \p path when its header is the one of \p keys

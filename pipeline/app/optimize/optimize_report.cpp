@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
@@ -21,6 +22,18 @@ std::string number(double v) {
 std::string key_of(std::size_t result) { return std::string(app::kRunResults[result].key); }
 
 }  // namespace
+
+std::string optimum_warning_advice(const Evaluation& best) {
+  if (app::large_deflection_note(best.results).empty())
+    return "The search maximised the result the model gives there, warnings and all.";
+  return "Its chain swung beyond the small rotations its joint springs represent, so the result it maximised "
+         "is "
+         "not the wing's: keep the search where the chain holds with `--constraint peak_tip_twist_deg<=30` "
+         "(and "
+         "`peak_tip_bend_deg<=30`), or run the wing's own FEM (`structure.kind = \"fem\"`).";
+}
+
+namespace {}  // namespace
 
 std::string optimize_report(const std::string& case_file, const Problem& problem, const OptimizeReport& report) {
   std::string md = "# flapsim optimize\n\n";
@@ -52,9 +65,15 @@ std::string optimize_report(const std::string& case_file, const Problem& problem
           " at evaluation " + std::to_string(report.numbers[*report.best]) + " (`runs/" + best.inputs_hash +
           "/`)";
     for (const Constraint& c : problem.constraints) md += "; `" + key_of(c.result) + "` = " + number(result_value(best, c.result));
-    md += ".\n\nRun it: `flapsim run " + report.optimum_case.filename().string() +
-          (report.optimum_spring_scale != 1.0 ? " --spring-scale " + io::format_number(report.optimum_spring_scale)
-                                              : std::string()) +
+    md += ".\n\n";
+    if (const std::string notes = evaluation_notes(best); !notes.empty())
+      md += "**The optimum's run was warned**: " + notes +
+            " (its `summary.json`; docs/case_file.md, \"Warnings\"). " + optimum_warning_advice(best) +
+            "\n\n";
+    md += "Run it: `flapsim run " + report.optimum_case.filename().string() +
+          (report.optimum_spring_scale != 1.0
+               ? " --spring-scale " + io::format_number(report.optimum_spring_scale)
+               : std::string()) +
           " -o DIR` (from this folder).\n\n";
   } else {
     md += "## No optimum\n\nNo evaluated point satisfies the constraints";
@@ -95,10 +114,14 @@ std::string optimize_report(const std::string& case_file, const Problem& problem
     for (const Constraint& c : problem.constraints) md.append(" ").append(number(result_value(e, c.result))).append(" |");
     md.append(" ").append(e.status);
     if (e.message == "kept") md.append(" (kept)");
+    if (!evaluation_notes(e).empty()) md.append(" (warned)");
     if (report.best && *report.best == i) md.append(" **optimum**");
     md.append(" |\n");
   }
-  md += "\nAll results of every evaluation: `evaluations.csv`; each run's files: `runs/<inputs hash>/`.\n";
+  md +=
+      "\nAll results of every evaluation: `evaluations.csv` (\"warned\": its `warnings` column, and the "
+      "`peak_tip_bend_deg`, `peak_tip_twist_deg` of a chain beyond 30°); each run's files: `runs/<inputs "
+      "hash>/`.\n";
   return md;
 }
 

@@ -13,6 +13,11 @@
 namespace flapsim::optimize {
 
 /// \brief The report's Markdown text.
+/// What a user can do about the warnings of the optimum's run (evaluation_notes): a chain
+/// beyond its range (app::large_deflection_note) names the constraints that keep the search
+/// where the chain holds, and the FEM; otherwise that the result maximised is the model's.
+std::string optimum_warning_advice(const Evaluation& best);
+
 std::string optimize_report(const std::string& case_file, const Problem& problem, const OptimizeReport& report);
 
 /// \brief Writes it atomically as DIR/report.md.

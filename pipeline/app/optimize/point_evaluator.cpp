@@ -83,6 +83,10 @@ EvaluationOutcome PointEvaluator::evaluate(const sweep::CasePoint& point) const 
   ro.wing_overrides = r.wing_overrides;
   ro.vtk_every = options_.vtk_every;
   ro.progress = app::ProgressLine::Mode::quiet;  // the optimisation prints a line per evaluation
+  // The case's warnings in summary.json, as a sweep's case records them (the report and
+  // evaluations.csv show them: evaluation_notes).
+  std::vector<std::string> notes;
+  ro.warnings = sweep::recorded_warnings(r, notes);
   try {
     e.results = app::run_case(r.c, ro);
     e.status = "ok";

@@ -11,6 +11,7 @@
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/app/setup_warnings.hpp"
+#include "pipeline/app/sweep/sweep_table.hpp"
 #include "pipeline/app/watched_setup.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/input_hash.hpp"
@@ -218,6 +219,15 @@ std::string describe(const CasePoint& point) {
   std::string s;
   for (const Assignment& a : point) s += (s.empty() ? "" : ", ") + a.key + " = " + value_label(a.value);
   return s;
+}
+
+std::function<std::string(const app::FsiSetup&)> recorded_warnings(const ResolvedCase& r,
+                                                                   std::vector<std::string>& notes) {
+  notes = r.file_warnings;
+  return [&notes, &r](const app::FsiSetup& setup) {
+    for (const std::string& w : app::setup_warnings(r.c, setup)) notes.push_back(app::warning_headline(w));
+    return with_notes("", notes);
+  };
 }
 
 }  // namespace flapsim::sweep

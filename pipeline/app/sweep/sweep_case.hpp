@@ -4,10 +4,12 @@
 /// varied keys: the checked case, the wing-file values to set, the spring factor, the
 /// fingerprint of its inputs (io::input_hash) and its sub-folder name.
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
 #include "pipeline/io/case_model.hpp"
 
@@ -41,6 +43,14 @@ struct ResolvedCase {
   /// outside the measured range 0.5 to 0.625" (a wing key with its "wing." prefix).
   std::vector<std::string> file_warnings;
 };
+
+/// \brief The case's warnings for app::RunOptions::warnings (summary.json's "warnings"), as a
+/// sweep's case and an optimisation's point record them: the files' (r.file_warnings), then
+/// the setup's (app::setup_warnings, their headlines), '; '-joined; each is also appended to
+/// \p notes (which starts as r.file_warnings), for the case's row. \p r and \p notes must
+/// outlive the run.
+std::function<std::string(const app::FsiSetup&)> recorded_warnings(const ResolvedCase& r,
+                                                                   std::vector<std::string>& notes);
 
 /// Where a point's values were written: a row of a `--cases` table (its file, the line of
 /// its header and of the row). An empty file: `--vary` values, from the command line.

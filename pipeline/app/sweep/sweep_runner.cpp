@@ -19,7 +19,6 @@
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
-#include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/sweep/earlier_cases.hpp"
 #include "pipeline/app/sweep/kept_series.hpp"
 #include "pipeline/app/sweep/keys_that_change_nothing.hpp"
@@ -207,13 +206,8 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       ro.vtk_every = options.vtk_every;
       ro.progress = app::ProgressLine::Mode::quiet;  // the sweep's own line shows the step
       ro.on_step = [&progress, i](long step, long total) { progress.step(i, step, total); };
-      notes = r.file_warnings;
       // Recorded in summary.json too: a sweep run again gives them in the row of the case it keeps.
-      ro.warnings = [&notes, &r](const app::FsiSetup& setup) {
-        for (const std::string& w : app::setup_warnings(r.c, setup))
-          notes.push_back(app::warning_headline(w));
-        return with_notes("", notes);
-      };
+      ro.warnings = recorded_warnings(r, notes);
       o.overhead_s = std::chrono::duration<double>(Clock::now() - t0).count();  // resolving
       o.results = app::run_case(r.c, ro);
       o.status = "ok";
