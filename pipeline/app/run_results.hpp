@@ -110,7 +110,7 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"mean_drag_N", "N", K::number, "%.6g", "mean drag",
                        "mean drag over the last cycle (along U∞; in hover against the horizontal motion at "
                        "r2·R); negative = thrust (in air)"},
-      ResultDefinition{"mean_CD", "", K::number, "%.4f", "",
+      ResultDefinition{"mean_CD", "", K::number, "%.4f", "mean CD",
                        "mean drag coefficient D / (½ ρ U_ref² S) (in air)"},
       ResultDefinition{"mean_side_N", "N", K::number, "%.6g", "", "mean side force, last cycle (in air)"},
       ResultDefinition{"mean_Mx_base_Nm", "Nm", K::number, "%.6g", "",

@@ -40,6 +40,28 @@ TEST(CaseWarnings, AFarWakeATruncatedWakeAFreeStreamOrAShortRunIsNotWarned) {
   EXPECT_TRUE(case_from_text(hover_case_text("cycles = 1\n")).warnings.empty());
 }
 
+// A revolving wing's cycles are time units: over less than one revolution it never comes
+// round to its wake, so the whole free wake hinges on no round-off and is not warned (the
+// Robofly wing's half revolution in 2 cycles, cases/robofly_revolving.toml, was); once it
+// turns beyond one revolution it meets its wake as a hover does, and is.
+TEST(CaseWarnings, ARevolvingWingIsWarnedOfItsFreeWakeOnlyOnceItComesRound) {
+  auto revolving = [](double rate_deg_per_s, int cycles) {
+    std::string text = hover_case_text("cycles = " + std::to_string(cycles) + "\n");
+    const std::string flapping =
+        "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n";
+    text.replace(text.find(flapping), flapping.size(),
+                 "sweep = 0.0\nrotation = 50.0\nrevolution = { rate_deg_per_s = " +
+                     std::to_string(rate_deg_per_s) + " }\n");
+    return case_from_text(text);
+  };
+  // 20 Hz: a cycle is 0.05 s. 2 cycles at −1800°/s: 180°; 8 cycles: 720°.
+  EXPECT_TRUE(revolving(-1800.0, 2).warnings.empty());
+  EXPECT_TRUE(revolving(-1800.0, 3).warnings.empty());  // 270°
+  const flapsim::io::Case round = revolving(-1800.0, 8);
+  ASSERT_EQ(round.warnings.size(), 1u);
+  EXPECT_EQ(round.warnings[0].key, "numerics.cycles");
+}
+
 TEST(CaseWarnings, ATwoCycleHoverWithTheWholeWakeFreeIsWarned) {
   const flapsim::io::Case c = case_from_text(hover_case_text("cycles = 2\n"));
   ASSERT_EQ(c.warnings.size(), 1u);
