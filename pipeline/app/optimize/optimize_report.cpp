@@ -26,14 +26,11 @@ std::string key_of(std::size_t result) { return std::string(app::kRunResults[res
 std::string optimum_warning_advice(const Evaluation& best) {
   if (app::large_deflection_note(best.results).empty())
     return "The search maximised the result the model gives there, warnings and all.";
-  return "Its chain swung beyond the small rotations its joint springs represent, so the result it maximised "
-         "is "
-         "not the wing's: keep the search where the chain holds with `--constraint peak_tip_twist_deg<=30` "
-         "(and "
-         "`peak_tip_bend_deg<=30`), or run the wing's own FEM (`structure.kind = \"fem\"`).";
+  return "Its chain swung beyond the small rotations its joint springs represent, so the result it "
+         "maximised is not the wing's: keep the search where the chain holds with "
+         "`--constraint peak_tip_twist_deg<=30` (and `peak_tip_bend_deg<=30`), or run the wing's own FEM "
+         "(`structure.kind = \"fem\"`).";
 }
-
-namespace {}  // namespace
 
 std::string optimize_report(const std::string& case_file, const Problem& problem, const OptimizeReport& report) {
   std::string md = "# flapsim optimize\n\n";
@@ -71,9 +68,8 @@ std::string optimize_report(const std::string& case_file, const Problem& problem
             " (its `summary.json`; docs/case_file.md, \"Warnings\"). " + optimum_warning_advice(best) +
             "\n\n";
     md += "Run it: `flapsim run " + report.optimum_case.filename().string() +
-          (report.optimum_spring_scale != 1.0
-               ? " --spring-scale " + io::format_number(report.optimum_spring_scale)
-               : std::string()) +
+          (report.optimum_spring_scale != 1.0 ? " --spring-scale " + io::format_number(report.optimum_spring_scale)
+                                              : std::string()) +
           " -o DIR` (from this folder).\n\n";
   } else {
     md += "## No optimum\n\nNo evaluated point satisfies the constraints";
@@ -118,10 +114,9 @@ std::string optimize_report(const std::string& case_file, const Problem& problem
     if (report.best && *report.best == i) md.append(" **optimum**");
     md.append(" |\n");
   }
-  md +=
-      "\nAll results of every evaluation: `evaluations.csv` (\"warned\": its `warnings` column, and the "
-      "`peak_tip_bend_deg`, `peak_tip_twist_deg` of a chain beyond 30°); each run's files: `runs/<inputs "
-      "hash>/`.\n";
+  md += "\nAll results of every evaluation: `evaluations.csv` (\"warned\": its `warnings` column, and the "
+        "`peak_tip_bend_deg`, `peak_tip_twist_deg` of a chain beyond 30°); each run's files: "
+        "`runs/<inputs hash>/`.\n";
   return md;
 }
 
