@@ -292,6 +292,18 @@ namespace {
 /// A hover: air without a free stream (the wake moves only by what it induces).
 bool in_still_air(const Case& c) { return c.air.enabled && !(c.air.freestream.norm() > 0.0); }
 
+/// A wing in still air that comes back to the wake it shed: a flapping wing from its first
+/// reversal, a revolving wing (the revolving-wing experiments) once it has turned a whole
+/// revolution within the run. Short of that a revolving wing's cycles are time units, not
+/// wingbeats through its wake (the Robofly wing's half revolution in 2 cycles,
+/// cases/robofly_revolving.toml, was warned of a round-off it does not have).
+bool meets_its_own_wake(const Case& c) {
+  if (!in_still_air(c)) return false;
+  const mbd::WingKinematics::Revolution& turn = c.kinematics.revolution;
+  return !turn.active() ||
+         std::abs(turn.at(c.numerics.cycles / c.kinematics.frequency).value) >= 2.0 * std::numbers::pi;
+}
+
 /// A warning at numerics.`key`, on its line of the [numerics] table (0 if the key is not written).
 void warn_at_numerics_key(const TomlTable& root, Case& c, const std::string& key, std::string message) {
   const auto t = root.find_table("numerics");
@@ -327,13 +339,14 @@ void warn_experimental_shedding(const TomlTable& root, Case& c) {
 }
 
 // A prescribed wake (free_wake = false) moves with the free stream only (uvlm::WakeModel::
-// Prescribed): in still air it stays where the trailing edge shed it, and a flapping or
-// revolving wing sweeps back through it (its part older than far_wake_cycles moves on with
-// the far wake). Measured (1 Dec; cases/hover.toml as a rigid wing, 2 cycles, mean CL of the
-// second; far_wake_cycles = 0.5 as the case, 0 in brackets): "separated" 2.45 (1.87) and
-// "none" 1.86 (1.63) against 2.77 and 2.05 with the free wake; "shed" 4.71 (8.45; per-step
-// CL peaking at 7, 11, 15 and 26 in the four half-strokes) against 2.99: its sheet stays on
-// the edge's path, so that combination is refused (read_case), the others warned.
+// Prescribed): in still air it stays where the trailing edge shed it, and a flapping wing
+// sweeps back through it, a revolving wing once it has come round (meets_its_own_wake; its
+// part older than far_wake_cycles moves on with the far wake). Measured (1 Dec;
+// cases/hover.toml as a rigid wing, 2 cycles, mean CL of the second; far_wake_cycles = 0.5 as
+// the case, 0 in brackets): "separated" 2.45 (1.87) and "none" 1.86 (1.63) against 2.77 and
+// 2.05 with the free wake; "shed" 4.71 (8.45; per-step CL peaking at 7, 11, 15 and 26 in the
+// four half-strokes) against 2.99: its sheet stays on the edge's path, so that combination is
+// refused (read_case), the others warned.
 namespace {
 
 bool still_air_prescribed_wake(const Case& c) {
@@ -341,7 +354,7 @@ bool still_air_prescribed_wake(const Case& c) {
 }
 
 void warn_still_air_prescribed_wake(const TomlTable& root, Case& c) {
-  if (!still_air_prescribed_wake(c)) return;
+  if (!still_air_prescribed_wake(c) || !meets_its_own_wake(c)) return;
   warn_at_numerics_key(
       root, c, "free_wake",
       "free_wake = false in still air: a prescribed wake moves with the free stream only, so it "
@@ -358,7 +371,7 @@ void warn_still_air_prescribed_wake(const TomlTable& root, Case& c) {
 // scattering by 0.20) against 2.77 ± 0.005 with far_wake_cycles = 0.5.
 void warn_frozen_wake_in_still_air(const TomlTable& root, Case& c) {
   const Case::Numerics& n = c.numerics;
-  if (!in_still_air(c) || !n.free_wake || n.steady || !(n.frozen_wake_cycles > 0.0)) return;
+  if (!meets_its_own_wake(c) || !n.free_wake || n.steady || !(n.frozen_wake_cycles > 0.0)) return;
   warn_at_numerics_key(
       root, c, "frozen_wake_cycles",
       "a frozen far wake in still air stays where it was shed and the wing sweeps back through "
@@ -371,15 +384,8 @@ void warn_frozen_wake_in_still_air(const TomlTable& root, Case& c) {
 
 void warn_long_free_hover(const TomlTable& root, Case& c) {
   const Case::Numerics& n = c.numerics;
-  if (!in_still_air(c) || !n.free_wake || n.cycles <= kLongFreeHoverCycles || n.far_wake_cycles > 0.0 ||
+  if (!meets_its_own_wake(c) || !n.free_wake || n.cycles <= kLongFreeHoverCycles || n.far_wake_cycles > 0.0 ||
       n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
-    return;
-  // A revolving wing (the revolving-wing experiments) meets its wake only once it has come
-  // round: over less than one revolution its cycles are time units, not wingbeats through
-  // the wake (the Robofly wing's half revolution of cases/robofly_revolving.toml in 2 cycles
-  // was warned of round-off it does not have).
-  const mbd::WingKinematics::Revolution& turn = c.kinematics.revolution;
-  if (turn.active() && std::abs(turn.at(n.cycles / c.kinematics.frequency).value) < 2.0 * std::numbers::pi)
     return;
   warn_at_numerics_key(
       root, c, "cycles",
@@ -397,7 +403,7 @@ void warn_long_free_hover(const TomlTable& root, Case& c) {
 // means wander (docs/uvlm.md, "Hover over many cycles").
 void warn_far_wake_outside_measured_range(const TomlTable& root, Case& c) {
   const double f = c.numerics.far_wake_cycles;
-  if (!in_still_air(c) || !c.numerics.free_wake || !(f > 0.0) ||
+  if (!meets_its_own_wake(c) || !c.numerics.free_wake || !(f > 0.0) ||
       (f >= kHoverFarWakeCyclesMin && f <= kHoverFarWakeCyclesMax))
     return;
   auto number = [](double x) {

@@ -41,12 +41,14 @@ TEST(CaseWarnings, AFarWakeATruncatedWakeAFreeStreamOrAShortRunIsNotWarned) {
 }
 
 // A revolving wing's cycles are time units: over less than one revolution it never comes
-// round to its wake, so the whole free wake hinges on no round-off and is not warned (the
-// Robofly wing's half revolution in 2 cycles, cases/robofly_revolving.toml, was); once it
-// turns beyond one revolution it meets its wake as a hover does, and is.
-TEST(CaseWarnings, ARevolvingWingIsWarnedOfItsFreeWakeOnlyOnceItComesRound) {
-  auto revolving = [](double rate_deg_per_s, int cycles) {
-    std::string text = hover_case_text("cycles = " + std::to_string(cycles) + "\n");
+// round to its wake, so the hover's wake warnings (the whole free wake's round-off, a
+// prescribed or frozen wake it sweeps back through, the far wake's measured range) do not
+// apply (the Robofly wing's half revolution in 2 cycles, cases/robofly_revolving.toml, was
+// warned of the round-off); once it turns beyond one revolution it meets its wake as a hover
+// does, and is.
+TEST(CaseWarnings, ARevolvingWingIsWarnedOfItsWakeOnlyOnceItComesRound) {
+  auto revolving = [](double rate_deg_per_s, int cycles, const std::string& more = "") {
+    std::string text = hover_case_text("cycles = " + std::to_string(cycles) + "\n" + more);
     const std::string flapping =
         "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n";
     text.replace(text.find(flapping), flapping.size(),
@@ -57,9 +59,15 @@ TEST(CaseWarnings, ARevolvingWingIsWarnedOfItsFreeWakeOnlyOnceItComesRound) {
   // 20 Hz: a cycle is 0.05 s. 2 cycles at −1800°/s: 180°; 8 cycles: 720°.
   EXPECT_TRUE(revolving(-1800.0, 2).warnings.empty());
   EXPECT_TRUE(revolving(-1800.0, 3).warnings.empty());  // 270°
-  const flapsim::io::Case round = revolving(-1800.0, 8);
-  ASSERT_EQ(round.warnings.size(), 1u);
-  EXPECT_EQ(round.warnings[0].key, "numerics.cycles");
+  EXPECT_TRUE(revolving(-1800.0, 3, "free_wake = false\n").warnings.empty());
+  EXPECT_TRUE(revolving(-1800.0, 3, "frozen_wake_cycles = 1.0\n").warnings.empty());
+  EXPECT_TRUE(revolving(-1800.0, 3, "far_wake_cycles = 2.0\n").warnings.empty());
+  // The revolution adds a line to [kinematics]: numerics from line 11.
+  expect_only_warning(revolving(-1800.0, 8), "numerics.cycles", 11, "round-off");
+  expect_only_warning(revolving(-1800.0, 8, "free_wake = false\n"), "numerics.free_wake", 12,
+                      "set free_wake = true");
+  expect_only_warning(revolving(-1800.0, 8, "far_wake_cycles = 2.0\n"), "numerics.far_wake_cycles", 12,
+                      "outside the measured range");
 }
 
 TEST(CaseWarnings, ATwoCycleHoverWithTheWholeWakeFreeIsWarned) {

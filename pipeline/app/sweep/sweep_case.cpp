@@ -11,7 +11,6 @@
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/app/setup_warnings.hpp"
-#include "pipeline/app/sweep/sweep_table.hpp"
 #include "pipeline/app/watched_setup.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/input_hash.hpp"
@@ -226,7 +225,7 @@ std::function<std::string(const app::FsiSetup&)> recorded_warnings(const Resolve
   notes = r.file_warnings;
   return [&notes, &r](const app::FsiSetup& setup) {
     for (const std::string& w : app::setup_warnings(r.c, setup)) notes.push_back(app::warning_headline(w));
-    return with_notes("", notes);
+    return app::join_notes(notes);
   };
 }
 
