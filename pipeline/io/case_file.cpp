@@ -423,6 +423,35 @@ void warn_far_wake_outside_measured_range(const TomlTable& root, Case& c) {
                            why + " (docs/uvlm.md, \"Hover over many cycles\")");
 }
 
+// A revolution whose ramp lasts beyond the start of the last cycle: the last cycle's mean
+// (summary.json mean_CL, the reported mean lift) is then taken while the wing still speeds up,
+// and its coefficients are on the full rate's speed Ω r2 R, which the wing has not reached.
+// Measured (1 Dec; cases/robofly_revolving.toml, "separated", 2 cycles of 0.25 s): mean CL
+// 2.280 without a ramp, 2.252 with 0.1 s, 2.164 (-5 %) with 0.3 s, 1.771 (-22 %) with 0.45 s.
+namespace {
+void warn_revolution_ramp_into_last_cycle(const TomlTable& root, Case& c) {
+  const mbd::WingKinematics::Revolution& turn = c.kinematics.revolution;
+  const double period = 1.0 / c.kinematics.frequency;                // [s]
+  const double last_cycle_start = (c.numerics.cycles - 1) * period;  // [s]
+  if (!turn.active() || c.numerics.steady || !(turn.ramp > last_cycle_start)) return;
+  const int cycles_needed = static_cast<int>(std::ceil(turn.ramp / period)) + 1;
+  auto number = [](double x) {
+    std::ostringstream o;
+    o << x;
+    return o.str();
+  };
+  const auto t = root.find_table("kinematics");
+  c.warnings.push_back(
+      {c.file, t ? t->line_of("revolution") : 0, "kinematics.revolution.ramp_s",
+       "the revolution's ramp (" + number(turn.ramp) + " s) lasts beyond the start of the last cycle (" +
+           number(last_cycle_start) + " s of a " + number(c.numerics.cycles * period) +
+           " s run): the last cycle's mean lift and its coefficients (on the full rate's speed at r2) "
+           "are taken while the wing still speeds up (cases/robofly_revolving.toml with a 0.45 s ramp: "
+           "mean CL 22 % low); run at least " +
+           std::to_string(cycles_needed) + " cycles or shorten the ramp"});
+}
+}  // namespace
+
 // Angles in radians where degrees are expected (`cos_deg = [0.87]` for a 50° stroke): every
 // value the sweep and rotation take stays within ±2π degrees, a wing that hardly moves. No
 // flapping kinematics is that small: insects and the shipped cases sweep ±50–60° and rotate
@@ -585,6 +614,7 @@ Case read_case(TomlTable root) {
   warn_experimental_shedding(root, c);
   warn_far_wake_outside_measured_range(root, c);
   warn_implausible_angles(root, c);
+  warn_revolution_ramp_into_last_cycle(root, c);
   return c;
 }
 

@@ -70,6 +70,29 @@ TEST(CaseWarnings, ARevolvingWingIsWarnedOfItsWakeOnlyOnceItComesRound) {
                       "outside the measured range");
 }
 
+// A revolution's ramp that lasts beyond the start of the last cycle: the reported mean (the
+// last cycle's) is taken while the wing still speeds up, on the full rate's reference speed
+// (cases/robofly_revolving.toml, "separated": mean CL 2.280 without a ramp, 1.771 with a
+// 0.45 s ramp of a 0.5 s run; pipeline/io/case_file.cpp). Warned at the revolution's line
+// with the cycles that would hold the ramp; a ramp that ends by the last cycle is not.
+TEST(CaseWarnings, ARevolutionStillSpeedingUpInTheLastCycleIsWarned) {
+  auto revolving = [](const std::string& ramp_s, int cycles) {
+    std::string text = hover_case_text("cycles = " + std::to_string(cycles) + "\nfar_wake_cycles = 0.5\n");
+    const std::string flapping =
+        "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n";
+    text.replace(
+        text.find(flapping), flapping.size(),
+        "sweep = 0.0\nrotation = 50.0\nrevolution = { rate_deg_per_s = -1800.0, ramp_s = " + ramp_s + " }\n");
+    return case_from_text(text);
+  };
+  // 20 Hz: a cycle is 0.05 s; 3 cycles start their last at 0.1 s.
+  EXPECT_TRUE(revolving("0.1", 3).warnings.empty());
+  EXPECT_TRUE(revolving("0.0", 1).warnings.empty());
+  // The revolution is on line 6 (after the wing, [kinematics], frequency_hz, sweep and rotation).
+  expect_only_warning(revolving("0.12", 3), "kinematics.revolution.ramp_s", 6, "run at least 4 cycles");
+  expect_only_warning(revolving("1.0", 3), "kinematics.revolution.ramp_s", 6, "run at least 21 cycles");
+}
+
 TEST(CaseWarnings, ATwoCycleHoverWithTheWholeWakeFreeIsWarned) {
   const flapsim::io::Case c = case_from_text(hover_case_text("cycles = 2\n"));
   ASSERT_EQ(c.warnings.size(), 1u);
