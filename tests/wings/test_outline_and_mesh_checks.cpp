@@ -163,6 +163,25 @@ TEST(VeinOnOutline, APointOutsideWithinTheToleranceIsMovedOntoTheOutline) {
   auto e = expect_input_error([&] { w::read_wing(w::parse_toml_string(text, "v.toml")); });
   EXPECT_EQ(e.key(), "veins[0].points") << e.what();
   EXPECT_NE(e.message().find("leaves the outline"), std::string::npos) << e.what();
+  // How far: the edge is x = 5 mm, the vein x = 5.05 mm.
+  EXPECT_NE(e.message().find("0.05 mm outside it"), std::string::npos) << e.what();
+  EXPECT_EQ(e.message().find("spline"), std::string::npos) << e.what();
+}
+
+TEST(VeinOnOutline, AVeinAlongAStraightRunOfSplinePointsIsToldTheCurveSwings) {
+  // A user's straight edge drawn as spline control points x = 5 mm at y = 0, 10, 20, 30, 40
+  // with square corners: the periodic C² spline passes through them but swings inside
+  // between them next to the corners (0.17 mm at y = 12.5 mm, measured), so a spar along
+  // x = 5 mm leaves it. The message says how far and why, and what to do.
+  std::string text = wing_text(
+      "spline = [[5.0, 0.0], [5.0, 10.0], [5.0, 20.0], [5.0, 30.0], [5.0, 40.0], [-5.0, 40.0], "
+      "[-5.0, 0.0]]\n");
+  const std::string spar = "points = [[1.0, 0.0], [1.0, 30.0]]";
+  text.replace(text.find(spar), spar.size(), "points = [[5.0, 2.0], [5.0, 30.0]]");
+  auto e = expect_input_error([&] { w::read_wing(w::parse_toml_string(text, "v.toml")); });
+  EXPECT_EQ(e.key(), "veins[0].points") << e.what();
+  EXPECT_NE(e.message().find("mm outside it"), std::string::npos) << e.what();
+  EXPECT_NE(e.message().find("draw straight edges with 'outline'"), std::string::npos) << e.what();
 }
 
 // An ellipse of n points (x semi-axis 0.15, y from 0 to 1: units of the span), as a CSV body.
