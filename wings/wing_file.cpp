@@ -395,8 +395,9 @@ Section read_section_end(const std::string& shape, const std::pair<double, doubl
 // them but rounds the corners next to the run and swings beside it (a leading edge at x = 0
 // through (0, 2), (0, 20), (0, 40) after a square root corner lay 0.41 mm outside at y = 22 mm).
 constexpr const char* kSplineVeinHint =
-    "; a spline outline passes through its control points but swings between them where they "
-    "turn a corner (a C2 curve): move the vein inside, or draw straight edges with 'outline'";
+    "; the outline is the spline's curve, through its control points but bending between them "
+    "(beside a straight run of them next to a corner it swings inside): move the vein inside, or "
+    "draw straight edges with 'outline'";
 
 Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
                const std::map<std::string, Material>& materials) {
