@@ -69,6 +69,14 @@ std::string inertial_deflection_warning(const io::Case& c, const FsiSetup& setup
 std::string large_motion_at_failure(const FsiSetup& setup, const Eigen::VectorXd& last_q,
                                     double peak_tip_bend_deg, double peak_tip_twist_deg);
 
+/// \brief "" or a sentence to add to a numerical failure of a run on the wing's FEM
+/// (structure.kind = "fem") whose tip had bent or twisted by more than
+/// kLargeTipDeflectionDeg by then (`peak_tip_bend_deg`, `peak_tip_twist_deg` [deg], as
+/// summary.json's): the FEM represents such a motion, but a wing that swings that far (one
+/// flapped too fast for its stiffness and mass) may fold beyond what its Newton iterations
+/// follow, and a finer time step does not take it further (docs/fsi.md, "Failures").
+std::string fem_motion_at_failure(const io::Case& c, double peak_tip_bend_deg, double peak_tip_twist_deg);
+
 /// \brief "" or the warning for a run whose peak tip bend or twist (peak_tip_bend_deg,
 /// peak_tip_twist_deg) exceeds kLargeTipDeflectionDeg, with the numbers.
 std::string large_deflection_warning(const RunResults& results);

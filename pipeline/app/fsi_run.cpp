@@ -92,12 +92,14 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
   try {
     time_loop(setup, data, recorder, progress, options.on_step);
   } catch (const NumericalFailure& e) {
-    // A chain that had swung beyond small rotations: say so with the failure (the joint,
-    // the angles), as the failure is then the wing's motion rather than the solver's.
+    // A chain that had swung beyond small rotations, or a FEM wing that had swung far: say
+    // so with the failure (the joint, the angles), as the failure is then the wing's motion
+    // rather than the solver's.
     const RunRecorder::TipDeflection tip = recorder.peak_tip_deflection();
     Eigen::VectorXd last_q;
     data.structure->joint_angles(last_q);
-    std::string why = large_motion_at_failure(setup, last_q, tip.bend_deg, tip.twist_deg);
+    std::string why = large_motion_at_failure(setup, last_q, tip.bend_deg, tip.twist_deg) +
+                      fem_motion_at_failure(c, tip.bend_deg, tip.twist_deg);
     const std::string released = released_chain_at_failure(c, e.step());
     if (!released.empty()) why += (why.empty() ? "" : ". ") + released;
     // A leading-edge sheet that came apart: the loads' jumps it leaves, and what to change.
