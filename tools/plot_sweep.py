@@ -49,6 +49,12 @@ def number(text):
         return math.nan
 
 
+def order(text):
+    """Sort key of a cell: numbers by value, then words (a text key's values: none, shed) by name."""
+    x = number(text)
+    return (1, 0.0, text) if math.isnan(x) else (0, x, "")
+
+
 def label(name):
     return name.rsplit(".", 1)[-1].replace("_", " ")
 
@@ -88,10 +94,18 @@ def plot_key(rows, key, others, power, out_path, failed, title_text=""):
     groups = {}
     for r in rows:
         groups.setdefault(tuple(r[o] for o in others), []).append(r)
+    # A key of words (numerics.leading_edge = none, separated, shed) is drawn at evenly spaced
+    # positions in the order the sweep gave them, each named on the axis.
+    words = [v for v in dict.fromkeys(r[key] for r in rows) if math.isnan(number(v))]
+    position = {v: i for i, v in enumerate(dict.fromkeys(r[key] for r in rows))} if words else {}
     for (column, title, scale), ax in zip(panels, axes[:, 0]):
-        for group, members in sorted(groups.items(), key=lambda g: tuple(number(v) for v in g[0])):
-            members = sorted(members, key=lambda r: number(r[key]))
-            x = [number(r[key]) * axis(key)[1] for r in members]
+        for group, members in sorted(groups.items(), key=lambda g: tuple(order(v) for v in g[0])):
+            if position:
+                members = sorted(members, key=lambda r: position[r[key]])
+                x = [position[r[key]] for r in members]
+            else:
+                members = sorted(members, key=lambda r: number(r[key]))
+                x = [number(r[key]) * axis(key)[1] for r in members]
             y = [number(r[column]) * scale for r in members]
             name = ", ".join("%s = %s" % (label(o), v) for o, v in zip(others, group))
             ax.plot(x, y, "o-", ms=4, label=name or None)
@@ -99,6 +113,8 @@ def plot_key(rows, key, others, power, out_path, failed, title_text=""):
         ax.grid(True, alpha=0.3)
         if others and len(groups) <= 12:
             ax.legend(fontsize=7)
+    if position:
+        axes[-1, 0].set_xticks(list(position.values()), list(position.keys()))
     axes[-1, 0].set_xlabel(axis(key)[0])
     heading = [t for t in (title_text, "%d case(s) not ok, left out" % failed if failed else "") if t]
     if heading:

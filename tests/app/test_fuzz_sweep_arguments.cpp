@@ -28,10 +28,10 @@ using flapsim::test::mutants_per_loader;
 const std::string kSource = FLAPSIM_SOURCE_DIR;
 constexpr std::uint64_t kSeed = 20261128;  // fixed: every run sees the same mutants
 
-std::string values_out_of_range(const std::vector<double>& values) {
+std::string values_out_of_range(const std::vector<flapsim::sweep::Assignment>& values) {
   if (values.empty() || values.size() > 10000) return "value count";
-  for (double v : values)
-    if (!std::isfinite(v)) return "value";
+  for (const flapsim::sweep::Assignment& v : values)
+    if (!std::isfinite(v.value) || !(v.word.empty() || flapsim::sweep::is_word_value(v.word))) return "value";
   return "";
 }
 
@@ -50,7 +50,7 @@ TEST(FuzzSweepArguments, VaryTexts) {
       // spring factor are checked with the wing and the chain).
       if (v.key.rfind("wing.", 0) == 0 || v.key == "spring_scale") return std::string();
       for (std::size_t i = 0; i < std::min<std::size_t>(v.values.size(), 3); ++i) {
-        const flapsim::io::Case c = flapsim::sweep::load_case_with(case_file, v.key, v.values[i]);
+        const flapsim::io::Case c = flapsim::sweep::load_case_with(case_file, v.values[i]);
         if (const std::string bad = flapsim::test::case_out_of_range(c); !bad.empty()) return bad;
         ++cases_loaded;
       }

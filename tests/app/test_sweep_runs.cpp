@@ -69,6 +69,38 @@ TEST(SweepRuns, TwoKeyGridGivesOneRowPerCombination) {
     EXPECT_EQ(read_text(dir / "plots" / name).substr(0, 4), "\x89PNG") << name;
 }
 
+// A text key varied by its words: the leading-edge models side by side in one sweep (before,
+// "--vary numerics.leading_edge=none,separated" exited 2: "'none' is not a number", and a user
+// ran one sweep per model). Each case runs with its model (summary.json leading_edge), the
+// folders and sweep.csv carry the words, and the plot names them on its axis.
+TEST(SweepRuns, AWordKeyComparesTheLeadingEdgeModels) {
+  const test::ScratchDir dir("sweep_words");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  ASSERT_EQ(run_flapsim("sweep " + (dir / "case.toml").string() +
+                        " --vary numerics.leading_edge=none,separated -j 2 -o " + (dir / "out").string()),
+            0);
+  const auto table = read_sweep_table((dir / "out" / "sweep.csv").string());
+  ASSERT_TRUE(table.rectangular);
+  ASSERT_EQ(table.rows.size(), 2u);
+  std::map<std::string, double> lift;
+  for (const auto& row : table.rows) {
+    EXPECT_EQ(row.at("status"), "ok");
+    const std::string model = row.at("numerics.leading_edge");
+    EXPECT_EQ(row.at("folder"), (model == "none" ? "00_" : "01_") + model);
+    const std::string summary = read_text(dir / "out" / row.at("folder") / "summary.json");
+    EXPECT_EQ(json_value(summary, "leading_edge"), "\"" + model + "\"");
+    lift[model] = std::stod(row.at("mean_lift_N"));
+  }
+  // The suction turned into vortex lift (Polhamus, docs/uvlm.md "Leading edge") adds to the
+  // normal force of "none": the separated edge lifts more.
+  EXPECT_GT(lift.at("separated"), lift.at("none"));
+  const std::string plot = "/usr/bin/python3 '" + std::string(FLAPSIM_SOURCE_DIR) +
+                           "/tools/plot_sweep.py' '" + (dir / "out" / "sweep.csv").string() + "' '" +
+                           (dir / "plots").string() + "' > /dev/null";
+  ASSERT_EQ(std::system(plot.c_str()), 0);
+  EXPECT_EQ(read_text(dir / "plots" / "sweep_numerics_leading_edge.png").substr(0, 4), "\x89PNG");
+}
+
 TEST(SweepRuns, KilledSweepRerunsOnlyTheMissingCases) {
   const test::ScratchDir dir("sweep_resume");
   std::ofstream(dir / "case.toml") << test::tiny_plate_case(48);

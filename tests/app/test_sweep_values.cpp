@@ -21,12 +21,27 @@ TEST(SweepValues, RangesListsAndErrors) {
   EXPECT_EQ(v.key, "kinematics.rotation_phase");
   ASSERT_EQ(v.values.size(), 5u);  // −0.10, −0.05, 0, 0.05, 0.10 (inclusive)
   const double expected[5] = {-0.10, -0.05, 0.0, 0.05, 0.10};
-  for (int i = 0; i < 5; ++i) EXPECT_EQ(v.values[static_cast<std::size_t>(i)], expected[i]);
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(v.values[static_cast<std::size_t>(i)].value, expected[i]);
   EXPECT_EQ(sweep::parse_variation("k=-0.20:0.05:0.10").values.size(), 7u);  // the rigid study
-  EXPECT_EQ(sweep::parse_variation("k=3,1,2").values, (std::vector<double>{3, 1, 2}));
+  const auto list = sweep::parse_variation("k=3,1,2");
+  ASSERT_EQ(list.values.size(), 3u);
+  EXPECT_EQ(list.values[0].value, 3);
+  EXPECT_EQ(list.values[1].value, 1);
+  EXPECT_EQ(list.values[2].value, 2);
+  EXPECT_EQ(list.values[2].word, "");
   EXPECT_THROW(sweep::parse_variation("k=0:0:1"), InputError);
   EXPECT_THROW(sweep::parse_variation("k=1:0.1:0"), InputError);
-  EXPECT_THROW(sweep::parse_variation("k=a,b"), InputError);
+  // Words are the values of a text or boolean key; a number with letters, inf and nan are not.
+  const auto words = sweep::parse_variation("numerics.leading_edge=none,separated,shed");
+  ASSERT_EQ(words.values.size(), 3u);
+  EXPECT_EQ(words.values[2].word, "shed");
+  EXPECT_EQ(sweep::value_text(words.values[2]), "\"shed\"");
+  EXPECT_EQ(sweep::value_label(words.values[2]), "shed");
+  EXPECT_EQ(sweep::value_text(sweep::parse_variation("numerics.free_wake=true,false").values[1]), "false");
+  EXPECT_THROW(sweep::parse_variation("k=1a,2"), InputError);
+  EXPECT_THROW(sweep::parse_variation("k=nan"), InputError);
+  EXPECT_THROW(sweep::parse_variation("k=Inf,1"), InputError);
+  EXPECT_THROW(sweep::parse_variation("k=a:1:2"), InputError);  // a range is of numbers
   EXPECT_THROW(sweep::parse_variation("novalues"), InputError);
 }
 
@@ -68,7 +83,13 @@ TEST(SweepValues, CaseTableRowsAndErrorsWithTheirLine) {
   ASSERT_EQ(table.points.size(), 2u);
   EXPECT_EQ(table.points[1][0].value, 0.05);
   EXPECT_EQ(table.points[1][1].value, 2.5);
-  std::ofstream(dir / "bad.csv") << "a,b\n1,2\n3,x\n";
+  // A word is a text key's value (a case table's leading_edge column: shed).
+  std::ofstream(dir / "words.csv") << "numerics.leading_edge,numerics.cycles\nshed,2\nnone,3\n";
+  const auto words = sweep::read_case_table((dir / "words.csv").string());
+  ASSERT_EQ(words.points.size(), 2u);
+  EXPECT_EQ(words.points[0][0].word, "shed");
+  EXPECT_EQ(words.points[1][1].value, 3);
+  std::ofstream(dir / "bad.csv") << "a,b\n1,2\n3,2x\n";
   try {
     sweep::read_case_table((dir / "bad.csv").string());
     ADD_FAILURE() << "a cell that is not a number must be refused";

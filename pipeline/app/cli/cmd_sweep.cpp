@@ -58,7 +58,7 @@ void print_table(const sweep::SweepPlan& plan, const sweep::SweepReport& report)
   for (const Column& col : columns) std::printf(" %*s", col.width, col.title.c_str());
   std::printf("  status\n");
   for (const auto& r : report.rows) {
-    for (const auto& a : r.point) std::printf("%-16s", sweep::value_label(a.value).c_str());
+    for (const auto& a : r.point) std::printf("%-16s", sweep::value_label(a).c_str());
     for (const Column& col : columns) {
       const std::string cell =
           r.outcome.results.at(col.result) ? app::format_result(r.outcome.results, col.result) : "nan";
@@ -126,7 +126,8 @@ void add_sweep_command(CLI::App& app) {
       "sweep",
       "Run a case for many values of its keys: a grid (--vary, several make a Cartesian product)\n"
       "or a table (--cases), in parallel over the cores, and over MPI ranks under mpirun/srun.\n"
-      "VALUES: start:step:stop (inclusive) or a comma list. KEY: a numeric case-file key, wing.<key>\n"
+      "VALUES: start:step:stop (inclusive) or a comma list of numbers or words (a text key's values:\n"
+      "numerics.leading_edge=none,separated,shed; true,false). KEY: a case-file key, wing.<key>\n"
       "of the wing file (e.g. wing.membrane.thickness) or spring_scale; KEY[i], element i (from 0) of\n"
       "an array of numbers (e.g. 'kinematics.sweep.cos_deg[0]', the stroke amplitude), e.g.\n"
       "  flapsim sweep cases/rotation_phase_rigid.toml --vary kinematics.rotation_phase=-0.20:0.05:0.10 -o "

@@ -80,6 +80,10 @@ CaseTable read_case_table(const std::string& path) {
     CasePoint point;
     for (std::size_t i = 0; i < cells.size(); ++i) {
       const std::string& s = cells[i];
+      if (is_word_value(s)) {  // a text or boolean key's value: shed, true
+        point.push_back(word_assignment(table.keys[i], s));
+        continue;
+      }
       double v = 0.0;
       const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
       if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v))

@@ -17,12 +17,12 @@ constexpr std::size_t kValuesListed = 8;
 
 // The distinct values of key k over the points, in the order given: "0.3, 0.5".
 std::string values_of(const std::vector<CasePoint>& points, std::size_t k) {
-  std::set<double> seen;
+  std::set<std::pair<double, std::string>> seen;
   std::string list;
   for (const CasePoint& point : points) {
-    if (!seen.insert(point[k].value).second) continue;
+    if (!seen.insert(value_key(point[k])).second) continue;
     if (seen.size() > kValuesListed) return list + ", ...";
-    list += (list.empty() ? "" : ", ") + value_label(point[k].value);
+    list += (list.empty() ? "" : ", ") + value_label(point[k]);
   }
   return list;
 }
@@ -78,12 +78,13 @@ void refuse_mesh_size_the_case_sets(const VariedKeys& varied, const SweepInputs&
 bool inputs_never_change_with(const std::vector<CasePoint>& points, const std::vector<ResolvedCase>& cases,
                               std::size_t k, std::string& common_hash) {
   // The other keys' values -> the key's value -> the inputs hash.
-  std::map<std::vector<double>, std::map<double, const std::string*>> groups;
+  using Value = std::pair<double, std::string>;  // value_key
+  std::map<std::vector<Value>, std::map<Value, const std::string*>> groups;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    std::vector<double> others;
+    std::vector<Value> others;
     for (std::size_t j = 0; j < points[i].size(); ++j)
-      if (j != k) others.push_back(points[i][j].value);
-    groups[others].emplace(points[i][k].value, &cases[i].inputs_hash);
+      if (j != k) others.push_back(value_key(points[i][j]));
+    groups[others].emplace(value_key(points[i][k]), &cases[i].inputs_hash);
   }
   bool compared = false;
   for (const auto& [others, hash_of_value] : groups) {

@@ -159,11 +159,15 @@ ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point, con
   std::vector<std::pair<std::string, std::string>> case_overrides;
   for (const Assignment& a : point) {
     switch (key_target(a.key)) {
-      case KeyTarget::case_file: case_overrides.emplace_back(a.key, value_text(a.value)); break;
+      case KeyTarget::case_file: case_overrides.emplace_back(a.key, value_text(a)); break;
       case KeyTarget::wing_file:
-        r.wing_overrides.emplace_back(a.key.substr(kWingPrefix.size()), value_text(a.value));
+        r.wing_overrides.emplace_back(a.key.substr(kWingPrefix.size()), value_text(a));
         break;
       case KeyTarget::spring_scale:
+        if (!a.word.empty())
+          fail_column(inputs, point, source, a.key, false,
+                      InputError(inputs.case_file, 0, a.key, "'" + a.word + "' is not a number"),
+                      "'" + a.word + "' is not a number (the factor on every joint spring)");
         if (!(a.value > 0.0))
           fail_column(inputs, point, source, a.key, false, InputError(inputs.case_file, 0, a.key, "must be > 0"),
                       "must be > 0 (the factor on every joint spring)");
@@ -210,13 +214,13 @@ std::string case_folder(std::size_t index, std::size_t count, const CasePoint& p
   char head[32];
   std::snprintf(head, sizeof head, "%0*zu", digits, index);
   std::string name = head;
-  for (const Assignment& a : point) name.append("_").append(value_label(a.value));
+  for (const Assignment& a : point) name.append("_").append(value_label(a));
   return name;
 }
 
 std::string describe(const CasePoint& point) {
   std::string s;
-  for (const Assignment& a : point) s += (s.empty() ? "" : ", ") + a.key + " = " + value_label(a.value);
+  for (const Assignment& a : point) s += (s.empty() ? "" : ", ") + a.key + " = " + value_label(a);
   return s;
 }
 

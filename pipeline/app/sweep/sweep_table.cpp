@@ -48,7 +48,7 @@ void write_sweep_table(const std::filesystem::path& path, const std::vector<std:
   for (const SweepRow& r : rows) {
     if (!r.done) continue;
     std::vector<std::string> row;
-    for (const Assignment& a : r.point) row.push_back(io::format_number(a.value));
+    for (const Assignment& a : r.point) row.push_back(a.word.empty() ? io::format_number(a.value) : a.word);
     for (std::string& cell : app::sweep_cells(r.outcome.results)) row.push_back(std::move(cell));
     // In the order of app::kSweepColumns.
     row.push_back(r.folder);

@@ -1,5 +1,6 @@
 #include "pipeline/app/sweep/sweep_values.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -55,6 +56,17 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 }  // namespace
 
+bool is_word_value(const std::string& s) {
+  if (s.empty() || !std::isalpha(static_cast<unsigned char>(s.front()))) return false;
+  for (char c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') return false;
+  std::string lower;
+  for (char c : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower != "inf" && lower != "nan" && lower != "infinity";
+}
+
+Assignment word_assignment(const std::string& key, const std::string& word) { return {key, 0.0, word}; }
+
 Variation parse_variation(const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
@@ -71,9 +83,12 @@ Variation parse_variation(const std::string& text) {
     if ((stop - start) * step < 0.0) bad(text, "the step goes away from stop");
     const double count = std::floor((stop - start) / step + 1e-9);
     if (count > 10000) bad(text, "more than 10000 values");
-    for (long i = 0; i <= static_cast<long>(count); ++i) v.values.push_back(tidy(start + i * step, step));
+    for (long i = 0; i <= static_cast<long>(count); ++i)
+      v.values.push_back({v.key, tidy(start + i * step, step)});
   } else {
-    for (const auto& s : split(values, ',')) v.values.push_back(parse_number(text, s));
+    for (const auto& s : split(values, ','))
+      v.values.push_back(is_word_value(s) ? word_assignment(v.key, s)
+                                          : Assignment{v.key, parse_number(text, s)});
   }
   if (v.values.empty()) bad(text, "no values");
   return v;
@@ -92,9 +107,9 @@ std::vector<CasePoint> cartesian_grid(const std::vector<Variation>& variations) 
     std::vector<CasePoint> next;
     next.reserve(points.size() * v.values.size());
     for (const CasePoint& p : points)
-      for (double value : v.values) {
+      for (const Assignment& value : v.values) {
         CasePoint q = p;
-        q.push_back({v.key, value});
+        q.push_back(value);
         next.push_back(std::move(q));
       }
     points = std::move(next);
@@ -103,8 +118,12 @@ std::vector<CasePoint> cartesian_grid(const std::vector<Variation>& variations) 
 }
 
 io::Case load_case_with(const std::string& case_file, const std::string& key, double value) {
+  return load_case_with(case_file, Assignment{key, value});
+}
+
+io::Case load_case_with(const std::string& case_file, const Assignment& a) {
   (void)io::load_case_file(case_file);  // errors in the file itself point at its real lines
-  return io::load_case_file(case_file, {{key, value_text(value)}});
+  return io::load_case_file(case_file, {{a.key, value_text(a)}});
 }
 
 std::string value_label(double value) {
@@ -114,5 +133,15 @@ std::string value_label(double value) {
 }
 
 std::string value_text(double value) { return io::format_number(value); }
+
+std::string value_label(const Assignment& a) { return a.word.empty() ? value_label(a.value) : a.word; }
+
+std::string value_text(const Assignment& a) {
+  if (a.word.empty()) return value_text(a.value);
+  if (a.word == "true" || a.word == "false") return a.word;
+  return "\"" + a.word + "\"";  // a word has no quote or backslash to escape
+}
+
+std::pair<double, std::string> value_key(const Assignment& a) { return {a.value, a.word}; }
 
 }  // namespace flapsim::sweep

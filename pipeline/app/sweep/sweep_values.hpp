@@ -2,7 +2,9 @@
 /// \file sweep_values.hpp
 /// \brief The `--vary KEY=VALUES` arguments of `flapsim sweep` and their Cartesian grid.
 /// VALUES is `start:step:stop` (inclusive, step may be negative) or a comma list
-/// `v1,v2,...`. KEY is one of (docs/sweeps.md, "What can be varied"):
+/// `v1,v2,...` of numbers or words (`none,separated,shed`: a text key's values, written
+/// into the file as TOML strings; `true,false` as booleans). KEY is one of (docs/sweeps.md,
+/// "What can be varied"):
 ///  - a dotted case-file key whose value is a number (`kinematics.rotation_phase`,
 ///    `kinematics.frequency_hz`, `air.density`, `numerics.steps_per_cycle`, ...);
 ///  - `wing.` and a dotted key of the case's wing file (`wing.membrane.thickness`, in the
@@ -12,22 +14,38 @@
 /// checked again, so every case of a sweep is checked as strictly as a file.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pipeline/io/case_model.hpp"
 
 namespace flapsim::sweep {
 
-struct Variation {
-  std::string key;              ///< dotted key, e.g. "kinematics.rotation_phase"
-  std::vector<double> values;   ///< in the order given
-};
-
-/// One varied key's value in one case of a sweep.
+/// One varied key's value in one case of a sweep: a number, or a word (a text or boolean
+/// key's value, e.g. numerics.leading_edge = shed).
 struct Assignment {
   std::string key;
-  double value = 0.0;
+  double value = 0.0;  ///< the number (0 for a word)
+  std::string word;    ///< the word ("shed", "true"); "" for a number
 };
+
+struct Variation {
+  std::string key;                 ///< dotted key, e.g. "kinematics.rotation_phase"
+  std::vector<Assignment> values;  ///< in the order given, each with `key`
+
+  Variation() = default;
+  /// A key and its numbers.
+  Variation(std::string k, const std::vector<double>& numbers) : key(std::move(k)) {
+    for (double x : numbers) values.push_back({key, x});
+  }
+};
+
+/// \brief Whether \p s is a word value of --vary or a case table: a letter, then letters,
+/// digits, '_' or '-' (`shed`, `iqn_ils`, `true`); not inf or nan, which are refused as numbers.
+bool is_word_value(const std::string& s);
+
+/// \brief A case-table cell or --vary item that is a word (is_word_value) as an Assignment.
+Assignment word_assignment(const std::string& key, const std::string& word);
 
 /// The values of the varied keys that make one case (in the order of the keys).
 using CasePoint = std::vector<Assignment>;
@@ -49,10 +67,23 @@ std::vector<CasePoint> cartesian_grid(const std::vector<Variation>& variations);
 ///         case is invalid
 io::Case load_case_with(const std::string& case_file, const std::string& key, double value);
 
+/// \brief The same with the assignment's value (a number or a word, value_text).
+io::Case load_case_with(const std::string& case_file, const Assignment& a);
+
 /// \brief A short, file-system-safe label of a value, e.g. "-0.1", "0.05", "26.1".
 std::string value_label(double value);
 
 /// \brief The value as TOML text that reads back as the same double ("0.05", "7", "1e+20").
 std::string value_text(double value);
+
+/// \brief The label of an assignment: its word, else value_label of its number.
+std::string value_label(const Assignment& a);
+
+/// \brief The assignment as TOML text: a word as a string ("\"shed\""), `true` and `false` as
+/// booleans, a number as value_text.
+std::string value_text(const Assignment& a);
+
+/// \brief The assignment's value for ordering and comparing (the number, then the word).
+std::pair<double, std::string> value_key(const Assignment& a);
 
 }  // namespace flapsim::sweep
