@@ -13,6 +13,12 @@ namespace flapsim::mbd {
 
 QuasiStaticDeflection peak_quasi_static_deflection(const ChainModel& model, const BaseMotion& base,
                                                    double period, int samples, double t0) {
+  return peak_quasi_static_deflection(model, base, period, samples, QuasiStaticLoads{}, t0);
+}
+
+QuasiStaticDeflection peak_quasi_static_deflection(const ChainModel& model, const BaseMotion& base,
+                                                   double period, int samples,
+                                                   const QuasiStaticLoads& loads_at, double t0) {
   const int n = model.num_dofs();
   if (n == 0) throw std::invalid_argument("quasi-static deflection: the chain has no joints");
   if (!(period > 0.0) || samples < 1)
@@ -23,11 +29,17 @@ QuasiStaticDeflection peak_quasi_static_deflection(const ChainModel& model, cons
   const Eigen::VectorXd rest = model.rest_angles();
   const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(n);
   const Loads none(model.num_bodies());
+  Loads external(model.num_bodies());
   QuasiStaticDeflection peak;
   const int first = model.first_jointed_body();
   for (int k = 0; k < samples; ++k) {
     const double t = t0 + period * k / samples;
     compute_all_terms(model, data, base(t), rest, at_rest, none);
+    if (loads_at) {  // the external loads at this pose, then their generalized forces
+      external.clear();
+      loads_at(t, data, external);
+      compute_generalized_loads(model, data, external);
+    }
     // At rest the springs and dampers give nothing: H is the inertial bias.
     const Eigen::VectorXd dq = lu.solve(data.generalized_load - data.inertial_bias - data.spring_force);
     double bend = 0.0, twist = 0.0;

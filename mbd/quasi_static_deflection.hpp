@@ -15,7 +15,11 @@
 /// deflection, a harmonic one near a resonance further ([Thomson & Dahleh 1998], ch. 3,
 /// docs/references.md). So the estimate is a floor of what a run will show, not a bound.
 
+#include <functional>
+
 #include "mbd/base_motion.hpp"
+#include "mbd/chain_data.hpp"
+#include "mbd/chain_loads.hpp"
 #include "mbd/chain_model.hpp"
 
 namespace flapsim::mbd {
@@ -34,5 +38,15 @@ struct QuasiStaticDeflection {
 /// \throws std::invalid_argument if the chain has no joints, K is singular, T ≤ 0 or samples < 1
 QuasiStaticDeflection peak_quasi_static_deflection(const ChainModel& model, const BaseMotion& base,
                                                    double period, int samples, double t0 = 0.0);
+
+/// The external loads at instant t [s] on the chain held at its rest angles, at rest relative
+/// to the base (`data` holds its body kinematics then): an estimate of the fluid's, say.
+using QuasiStaticLoads = std::function<void(double t, const ChainData& data, Loads& loads)>;
+
+/// \brief The same with the external loads of `loads_at` added at each instant to the
+/// inertial ones (K ΔΦ = Q_ext + Q − H at rest).
+QuasiStaticDeflection peak_quasi_static_deflection(const ChainModel& model, const BaseMotion& base,
+                                                   double period, int samples,
+                                                   const QuasiStaticLoads& loads_at, double t0 = 0.0);
 
 }  // namespace flapsim::mbd

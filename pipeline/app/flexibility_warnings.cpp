@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mbd/quasi_static_deflection.hpp"
+#include "pipeline/app/quasi_steady_fluid_loads.hpp"
 #include "reduction/linear_chain.hpp"
 
 namespace flapsim::app {
@@ -81,6 +82,49 @@ std::string inertial_deflection_warning(const io::Case& c, const FsiSetup& setup
                 "springs (--spring-scale) (docs/case_file.md, \"Warnings\")",
                 bend, twist, kLargeTipDeflectionDeg, q.tip_bend * deg, q.tip_twist * deg, q.joint + 1,
                 q.twist ? "twisted" : "bent", q.joint_angle * deg);
+  return text;
+}
+
+std::string fluid_load_deflection_warning(const io::Case& c, const FsiSetup& setup) {
+  const mbd::ChainModel& chain = setup.chain();
+  if (c.structure.kind != io::Case::Structure::Kind::Flexible || chain.num_dofs() == 0 || !c.air.enabled ||
+      !setup.grid || setup.chain_structure->attachment.nodes.empty())
+    return "";
+  const double period = 1.0 / c.kinematics.frequency;
+  const fsi::WingAttachment& attachment = setup.chain_structure->attachment;
+  const int nc = setup.grid->chordwise, ns = setup.grid->spanwise;
+  mbd::QuasiStaticDeflection inertial, both;
+  try {
+    inertial = mbd::peak_quasi_static_deflection(chain, setup.model.base(), period, 64);
+    both = mbd::peak_quasi_static_deflection(
+        chain, setup.model.base(), period, 64, [&](double, const mbd::ChainData& data, mbd::Loads& loads) {
+          add_quasi_steady_fluid_loads(attachment, nc, ns, data, c.air.density, c.air.freestream, loads);
+        });
+  } catch (const std::exception&) {
+    return "";  // a singular stiffness: the soft-chain and resonance checks speak of it
+  }
+  constexpr double kStepLoadPeak = 2.0;  // as inertial_deflection_warning
+  constexpr double deg = 180.0 / std::numbers::pi;
+  const double bend = kStepLoadPeak * both.tip_bend * deg, twist = kStepLoadPeak * both.tip_twist * deg;
+  // The inertia alone beyond 30 deg is inertial_deflection_warning's: one warning, not two.
+  if (kStepLoadPeak * inertial.tip_bend * deg > kLargeTipDeflectionDeg ||
+      kStepLoadPeak * inertial.tip_twist * deg > kLargeTipDeflectionDeg)
+    return "";
+  if (!(bend > kLargeTipDeflectionDeg) && !(twist > kLargeTipDeflectionDeg)) return "";
+  char text[1300];
+  std::snprintf(
+      text, sizeof text,
+      "the fluid's loads with the flapping's inertia would bend the wing's tip by up to %.1f deg and "
+      "twist it by up to %.1f deg against its base (the inertia alone %.1f and %.1f deg), beyond the "
+      "%g deg its small-rotation joint springs represent: twice the chain's linear quasi-static "
+      "deflection under the rigid wing's inertial loads and the fluid's quasi-steady normal force "
+      "on each panel at its speed and angle of attack (density %g kg/m^3; the translational "
+      "coefficients of a revolving wing, Dickinson et al. 1999; an estimate). Expect joints "
+      "swinging far past that, results that hinge on the time step, or a numerical failure. Stiffen "
+      "the wing, lower frequency_hz or the amplitudes, or run the wing's own FEM, geometrically "
+      "nonlinear (structure.kind = \"fem\") (docs/case_file.md, \"Warnings\")",
+      bend, twist, kStepLoadPeak * inertial.tip_bend * deg, kStepLoadPeak * inertial.tip_twist * deg,
+      kLargeTipDeflectionDeg, c.air.density);
   return text;
 }
 

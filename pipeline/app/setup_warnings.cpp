@@ -18,8 +18,8 @@ std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup
        {compressibility_warning(c, setup), lattice_coverage_warning(setup),
         chain_wing_mismatch_warning(setup), saved_chain_fem_warning(setup), soft_chain_warning(c, setup),
         near_resonance_warning(c, setup), fem_near_resonance_warning(c, setup),
-        inertial_deflection_warning(c, setup), coupling_tolerance_warning(setup), film_wrinkle_warning(setup),
-        fem_mesh_resolution_warning(setup)})
+        inertial_deflection_warning(c, setup), fluid_load_deflection_warning(c, setup),
+        coupling_tolerance_warning(setup), film_wrinkle_warning(setup), fem_mesh_resolution_warning(setup)})
     if (!w.empty()) out.push_back(std::move(w));
   return out;
 }
