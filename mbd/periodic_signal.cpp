@@ -75,6 +75,19 @@ PeriodicSignal PeriodicSignal::tabulated(std::vector<double> phases, std::vector
   return s;
 }
 
+bool PeriodicSignal::is_constant() const {
+  if (tabulated_) {
+    for (double v : values_)
+      if (v != values_.front()) return false;
+    return true;
+  }
+  for (double c : cos_)
+    if (c != 0.0) return false;
+  for (double c : sin_)
+    if (c != 0.0) return false;
+  return true;
+}
+
 AngleSample PeriodicSignal::at_phase(double s) const {
   AngleSample out;
   if (!tabulated_) {

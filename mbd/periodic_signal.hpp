@@ -37,6 +37,9 @@ class PeriodicSignal {
   /// Value, d/ds and d²/ds² at phase s [cycles] (any real s; period 1).
   AngleSample at_phase(double s) const;
 
+  /// Whether the signal is the same at every phase (no harmonic, or a table of equal values).
+  bool is_constant() const;
+
  private:
   bool tabulated_ = false;
   double mean_ = 0.0;

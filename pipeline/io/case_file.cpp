@@ -452,6 +452,23 @@ void warn_revolution_ramp_into_last_cycle(const TomlTable& root, Case& c) {
 }
 }  // namespace
 
+// A rotation phase that shifts nothing: δψ moves the sweep and deviation against the rotation
+// (mbd::WingKinematics::angles); with both constant (a revolving wing's sweep = 0, a plate that
+// only pitches) every δψ gives the same run (cases/robofly_revolving.toml swept over
+// rotation_phase = -0.1, 0: the same mean CL 1.652 to the last digit). Its inputs hash leaves it
+// out then (io::input_hash), so a sweep over it is refused as one that changes nothing.
+namespace {
+void warn_rotation_phase_that_shifts_nothing(const TomlTable& root, Case& c) {
+  const mbd::WingKinematics& k = c.kinematics;
+  if (k.rotation_phase == 0.0 || !k.sweep.is_constant() || !k.deviation.is_constant()) return;
+  const auto t = root.find_table("kinematics");
+  c.warnings.push_back(
+      {c.file, t ? t->line_of("rotation_phase") : 0, "kinematics.rotation_phase",
+       "the rotation phase shifts the sweep and the deviation against the rotation, and both "
+       "are constant here (no stroke to time the rotation against): it changes nothing"});
+}
+}  // namespace
+
 // Angles in radians where degrees are expected (`cos_deg = [0.87]` for a 50° stroke): every
 // value the sweep and rotation take stays within ±2π degrees, a wing that hardly moves. No
 // flapping kinematics is that small: insects and the shipped cases sweep ±50–60° and rotate
@@ -615,6 +632,7 @@ Case read_case(TomlTable root) {
   warn_far_wake_outside_measured_range(root, c);
   warn_implausible_angles(root, c);
   warn_revolution_ramp_into_last_cycle(root, c);
+  warn_rotation_phase_that_shifts_nothing(root, c);
   return c;
 }
 

@@ -115,7 +115,10 @@ void case_fields(Canonical& out, const Case& c) {
   out.signal("kinematics.sweep", k.sweep);
   out.signal("kinematics.deviation", k.deviation);
   out.signal("kinematics.rotation", k.rotation);
-  out.line("kinematics.rotation_phase", k.rotation_phase);
+  // δψ shifts the sweep and deviation against the rotation (WingKinematics::angles): with both
+  // constant (a revolving wing, a pitching plate) it shifts nothing, and the same run has one hash.
+  out.line("kinematics.rotation_phase",
+           k.sweep.is_constant() && k.deviation.is_constant() ? 0.0 : k.rotation_phase);
   out.line("kinematics.stroke_plane_angle", k.stroke_plane_angle);
   out.signal("kinematics.surge", k.surge);
   out.signal("kinematics.lateral", k.lateral);

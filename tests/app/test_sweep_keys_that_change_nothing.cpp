@@ -120,6 +120,26 @@ TEST(SweepKeysThatChangeNothing, AKeyThatReachesNoInputIsRefusedUnlessItDoesForS
             "");
 }
 
+// A revolving wing's rotation phase: δψ shifts the sweep and deviation against the rotation,
+// both constant here, so every value is the same run (its inputs hash leaves δψ out; the
+// Robofly case over -0.1, 0 gave the same mean CL to the last digit and ran both).
+TEST(SweepKeysThatChangeNothing, ARevolvingWingsRotationPhaseIsRefused) {
+  const test::ScratchDir dir("sweep_revolving_phase");
+  std::string text = test::tiny_plate_case(12);
+  const std::string flapping =
+      "sweep = { mean_deg = 10.0, cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n";
+  text.replace(text.find(flapping), flapping.size(),
+               "sweep = 0.0\nrotation = 45.0\nrevolution = { rate_deg_per_s = -720.0 }\n");
+  const std::string revolving = (dir / "revolving.toml").string();
+  std::ofstream(revolving) << text;
+  const std::string e = refusal_of_grid(revolving, {{"kinematics.rotation_phase", {-0.1, 0.0}}});
+  EXPECT_NE(
+      e.find("key 'kinematics.rotation_phase': --vary kinematics.rotation_phase = -0.1, 0: every value gives "
+             "the same inputs"),
+      std::string::npos)
+      << e;
+}
+
 TEST(SweepKeysThatChangeNothing, SweepsOfKeysThatReachTheRunAreAccepted) {
   const test::ScratchDir dir("sweep_used_keys");
   const std::string rigid = (dir / "rigid.toml").string();

@@ -16,6 +16,7 @@
 
 #include "hover_case_text.hpp"
 #include "inline_case.hpp"
+#include "pipeline/io/input_hash.hpp"
 
 namespace {
 
@@ -91,6 +92,32 @@ TEST(CaseWarnings, ARevolutionStillSpeedingUpInTheLastCycleIsWarned) {
   // The revolution is on line 6 (after the wing, [kinematics], frequency_hz, sweep and rotation).
   expect_only_warning(revolving("0.12", 3), "kinematics.revolution.ramp_s", 6, "run at least 4 cycles");
   expect_only_warning(revolving("1.0", 3), "kinematics.revolution.ramp_s", 6, "run at least 21 cycles");
+}
+
+// A rotation phase with nothing to shift: δψ moves the sweep and deviation against the
+// rotation, so with a constant sweep (a revolving wing) it changes nothing (the Robofly case
+// over rotation_phase = -0.1, 0: the same mean CL to the last digit); warned at its line, and
+// its inputs hash leaves it out. A flapping stroke is shifted: no warning, another hash.
+TEST(CaseWarnings, ARotationPhaseWithNothingToShiftIsWarnedAndLeftOutOfTheHash) {
+  const std::string flapping =
+      "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n";
+  auto with_phase = [&](const std::string& phase, bool revolving) {
+    std::string text = hover_case_text("cycles = 1\n");
+    text.replace(
+        text.find(flapping), flapping.size(),
+        (revolving ? "sweep = 0.0\nrotation = 50.0\nrevolution = { rate_deg_per_s = -1800.0 }\n" : flapping) +
+            "rotation_phase = " + phase + "\n");
+    return case_from_text(text);
+  };
+  // The phase is line 7, after the wing, [kinematics], frequency_hz, the sweep, the rotation and the
+  // revolution.
+  expect_only_warning(with_phase("0.1", true), "kinematics.rotation_phase", 7, "it changes nothing");
+  EXPECT_TRUE(with_phase("0.0", true).warnings.empty());
+  EXPECT_TRUE(with_phase("0.1", false).warnings.empty());
+  EXPECT_EQ(flapsim::io::input_hash(with_phase("0.1", true), nullptr, "", 1.0),
+            flapsim::io::input_hash(with_phase("-0.2", true), nullptr, "", 1.0));
+  EXPECT_NE(flapsim::io::input_hash(with_phase("0.1", false), nullptr, "", 1.0),
+            flapsim::io::input_hash(with_phase("-0.2", false), nullptr, "", 1.0));
 }
 
 TEST(CaseWarnings, ATwoCycleHoverWithTheWholeWakeFreeIsWarned) {

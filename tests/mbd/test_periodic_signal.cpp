@@ -45,6 +45,19 @@ TEST(PeriodicSignal, DefaultIsZero) {
   EXPECT_EQ(a.acceleration, 0.0);
 }
 
+// is_constant decides whether a rotation phase can shift anything (io::input_hash and the
+// case warning of pipeline/io/case_file.cpp): a mean alone or a table of equal values is
+// constant; one harmonic or one differing table value is not.
+TEST(PeriodicSignal, IsConstantOnlyWithoutHarmonicsOrWithEqualTableValues) {
+  using flapsim::mbd::PeriodicSignal;
+  EXPECT_TRUE(PeriodicSignal().is_constant());
+  EXPECT_TRUE(PeriodicSignal::harmonic(0.5, {0.0}, {}).is_constant());
+  EXPECT_FALSE(PeriodicSignal::harmonic(0.5, {0.0, 0.1}, {}).is_constant());
+  EXPECT_FALSE(PeriodicSignal::harmonic(0.0, {}, {1e-9}).is_constant());
+  EXPECT_TRUE(PeriodicSignal::tabulated({0.0, 0.3, 0.6}, {0.2, 0.2, 0.2}).is_constant());
+  EXPECT_FALSE(PeriodicSignal::tabulated({0.0, 0.3, 0.6}, {0.2, 0.2, 0.21}).is_constant());
+}
+
 TEST(PeriodicSignal, HarmonicMatchesItsSeriesAndExactDerivatives) {
   // value = m + a1 cos 2πs + a2 cos 4πs + b1 sin 2πs (definition in periodic_signal.hpp);
   // d/ds and d²/ds² written out by hand.
