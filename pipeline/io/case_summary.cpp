@@ -41,7 +41,13 @@ std::string describe_case(const Case& c) {
   s += line("  frequency              %10.4g Hz", k.frequency);
   s += line("  rotation phase         %10.4g of the period (< 0: advanced rotation)", k.rotation_phase);
   s += line("  stroke plane angle     %10.4g deg", k.stroke_plane_angle * kRadToDeg);
-  s += "  kinematics (AoA: geometric angle of attack; '-' at stroke reversal)\n";
+  // A revolving wing (kinematics.revolution) starts from rest and has no strokes.
+  const bool revolving = k.revolution.active();
+  if (revolving)
+    s += line("  revolution             %10.4g deg/s after a ramp of %g s, from rest",
+              k.revolution.rate * kRadToDeg, k.revolution.ramp);
+  s += revolving ? "  kinematics (AoA: geometric angle of attack; '-' at rest)\n"
+                 : "  kinematics (AoA: geometric angle of attack; '-' at stroke reversal)\n";
   s += "    phase f*t   sweep phi  deviation theta  rotation alpha   AoA    [deg]\n";
   for (double phase : {0.0, 0.25, 0.5, 0.75}) {
     const auto a = k.angles(phase / k.frequency);
@@ -51,7 +57,9 @@ std::string describe_case(const Case& c) {
       std::snprintf(aoa_text, sizeof aoa_text, "%7.2f", *aoa * kRadToDeg);
     else
       std::snprintf(aoa_text, sizeof aoa_text, "%7s", "-");
-    const char* stroke = !aoa ? "reversal" : (a.sweep.rate < 0 ? "downstroke" : "upstroke");
+    const char* stroke = revolving ? (!aoa ? "at rest" : "revolving")
+                         : !aoa    ? "reversal"
+                                   : (a.sweep.rate < 0 ? "downstroke" : "upstroke");
     s += line("    %9.2f  %10.2f  %15.2f  %14.2f  %s  %s", phase, a.sweep.value * kRadToDeg,
               a.deviation.value * kRadToDeg, a.rotation.value * kRadToDeg, aoa_text, stroke);
   }

@@ -47,6 +47,24 @@ TEST(RevolvingWingCase, RunsAndRefersItsCoefficientsToTheSteadyRevolution) {
   EXPECT_GT(flapsim::test::json_number(summary, "mean_lift_N"), 0.0);
 }
 
+// flapsim check's kinematics table of a revolving wing: the revolution's rate and ramp, and
+// the instants labelled "at rest" (t = 0) and "revolving". Before, the table said "reversal"
+// at t = 0 and "downstroke" at every other instant, the words of a flapping stroke.
+TEST(RevolvingWingCase, CheckNamesTheRevolutionNotStrokes) {
+  flapsim::test::ScratchDir dir("revolving_case_check");
+  std::ofstream(dir / "case.toml") << revolving_case(
+      "revolution = { rate_deg_per_s = -720.0, ramp_s = 0.1 }");
+  ASSERT_EQ(run_flapsim("check " + (dir / "case.toml").string(), dir / "check.txt"), 0);
+  const std::string said = read_text(dir / "check.txt");
+  EXPECT_NE(said.find("revolution                   -720 deg/s after a ramp of 0.1 s, from rest"),
+            std::string::npos)
+      << said;
+  EXPECT_NE(said.find("at rest"), std::string::npos) << said;
+  EXPECT_NE(said.find("revolving"), std::string::npos) << said;
+  EXPECT_EQ(said.find("downstroke"), std::string::npos) << said;
+  EXPECT_EQ(said.find("reversal"), std::string::npos) << said;
+}
+
 TEST(RevolvingWingCase, ARevolutionWithoutARateIsRefusedNamingTheKey) {
   flapsim::test::ScratchDir dir("revolving_case_zero");
   std::ofstream(dir / "case.toml") << revolving_case("revolution = { rate_deg_per_s = 0.0 }");
