@@ -63,7 +63,7 @@ run: program $(RUN_CHAIN)
 	if [ -f $(RUN_OUT)/chain.pvd ]; then \
 	  $(XVFB_RUN) $(PIPELINE_PYTHON) tools/render_run.py $(RUN_OUT) --phases 0.25 \
 	    -o $(RUN_OUT)/preview.png > /dev/null || exit $$?; \
-	  echo "preview: $(RUN_OUT)/preview.png (the wing at mid-downstroke of the last wingbeat)"; \
+	  echo "preview: $(RUN_OUT)/preview.png (the wing a quarter into the last cycle: mid-downstroke of a wingbeat)"; \
 	  echo "ParaView: cd $(RUN_OUT) && paraview --state=run.pvsm"; \
 	else \
 	  echo "preview and ParaView state: none (the case writes no frames: [output] vtk_every = 0; set it to 1 or more for pictures)"; \
