@@ -55,28 +55,28 @@ inline constexpr double kVeryLongRunSeconds = 3600.0;
 /// the solves), scaled by (DOFs/1000)^kFemDofsExponent and
 /// (steps per cycle/100)^−kFemStepsPerCycleExponent. Fitted (geometric mean of measured/model)
 /// to ten runs of the hawkmoth FEM at 4038–52 626 DOFs, 100 and 400 steps a cycle, in vacuum
-/// and in air (docs/fsi.md, "Cost estimate of a FEM run", the runs of 29 Nov, night, with
-/// flapsim's dense kernels under CHOLMOD and the element loop of that night; 2-core Intel
-/// Xeon with AVX-512): every estimate within a factor 1.5 of the run's CPU time. The constant
-/// of the evening before (3.6e-3 s) was 1.1–1.8 times these runs.
-inline constexpr double kFemSecondsPerStep1000 = 2.7e-3;
+/// and in air (docs/fsi.md, "Cost estimate of a FEM run", the runs of 1 Dec on a 2-core AMD
+/// EPYC with AVX-512, CI's CPU family): every estimate within 0.87–1.23 of the run's CPU time.
+/// The constants of 29 Nov (2.7e-3 s, n^1.5, 0.30, 0.70; a 2-core Intel Xeon) were 0.74–1.64
+/// times these runs (the hawkmoth FEM hover, 27 618 DOFs: 2.3 times).
+inline constexpr double kFemSecondsPerStep1000 = 3.49e-3;
 /// The factorisation of a 2-D mesh's matrix under a fill-reducing ordering grows as n^1.5
-/// (George & Liu 1981, nested dissection); the measured runs in vacuum at 400 steps a cycle
-/// give 1.31 (least squares in log DOFs, 4038–52 626 DOFs; 1.51 before the dense kernels,
-/// which gain more on the larger supernodes of finer meshes), inside the [1.2, 1.8] kept for
-/// the theory's 1.5.
-inline constexpr double kFemDofsExponent = 1.5;
+/// asymptotically (George & Liu 1981, nested dissection); at these sizes flapsim's dense
+/// supernodal kernels gain more on the larger supernodes of finer meshes, and the measured
+/// runs in vacuum at 400 steps a cycle grow as n^1.28 (least squares in log DOFs, 4038–52 626
+/// DOFs; 1.27 on 29 Nov, 1.41 and 1.51 before the kernels): the measured slope, rounded.
+inline constexpr double kFemDofsExponent = 1.3;
 /// A smaller step turns the wing less, and its Newton solve needs fewer iterations and new
-/// matrices: in vacuum a step at 400 steps a cycle costs 0.649 and 0.672 times one at 100
-/// (4038 and 9030 DOFs, measured), 4^−0.312 and 4^−0.286 (mean 0.30).
-inline constexpr double kFemStepsPerCycleExponent = 0.30;
+/// matrices: in vacuum a step at 400 steps a cycle costs 0.641 and 0.585 times one at 100
+/// (4038 and 9030 DOFs, measured 1 Dec), 4^−0.321 and 4^−0.387 (mean 0.35).
+inline constexpr double kFemStepsPerCycleExponent = 0.35;
 /// A step coupled with the lattice (air) adds its sub-iterations' solves, warm-started and
 /// loose (docs/fsi.md, "One coupled step"), and those do not shrink with the step: measured
 /// (air − vacuum) at the same mesh and step, in units of a vacuum step at 100 steps a cycle,
-/// 0.643, 0.555 (100 steps a cycle, 4038 and 9030 DOFs) and 0.972 (400 steps, 4038 DOFs),
-/// geometric mean 0.70. So an air step costs 1.7 vacuum steps at 100 steps a cycle
+/// 0.403, 0.310 (100 steps a cycle, 4038 and 9030 DOFs) and 0.520 (400 steps, 4038 DOFs),
+/// geometric mean 0.40 (1 Dec). So an air step costs 1.4 vacuum steps at 100 steps a cycle
 /// (not the ~5 of its sub-iterations).
-inline constexpr double kFemCouplingStepShare = 0.70;
+inline constexpr double kFemCouplingStepShare = 0.40;
 
 /// \param bodies    bodies of the chain the run will use (the case's structure.bodies)
 /// \param fem_dofs  DOFs of the FEM structure (kind = "fem"; 0 for a chain)
