@@ -1,5 +1,6 @@
 #include "wings/outline_csv.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -23,6 +24,26 @@ bool parse_number(const std::string& field, double& out) {
   // Finite and not denormal (as every number of an input file, toml_reader.hpp).
   return errno == 0 && end == f.c_str() + f.size() && std::isfinite(out) &&
          (out == 0.0 || std::fpclassify(out) == FP_NORMAL);
+}
+
+// The two fields of a data line: split at its one comma, or, on a line without a comma, at
+// the tabs or spaces between two words (a tab-separated "XY coordinates" export). False when
+// the line is not two fields so.
+bool two_fields(const std::string& t, std::string& a, std::string& b) {
+  const auto comma = t.find(',');
+  if (comma != std::string::npos) {
+    if (t.find(',', comma + 1) != std::string::npos) return false;
+    a = t.substr(0, comma);
+    b = t.substr(comma + 1);
+    return true;
+  }
+  const auto gap = t.find_first_of(" \t");
+  if (gap == std::string::npos) return false;
+  const auto second = t.find_first_not_of(" \t", gap);
+  if (second == std::string::npos || t.find_first_of(" \t", second) != std::string::npos) return false;
+  a = t.substr(0, gap);
+  b = t.substr(second);
+  return true;
 }
 
 }  // namespace
@@ -54,16 +75,16 @@ OutlineCsv read_outline_csv_lines(const std::string& path, const std::string& ke
       header_seen = true;
       std::string compact;
       for (char c : t)
-        if (c != ' ' && c != '\t') compact += c;
-      if (compact == "x,y") continue;
+        if (c != ' ' && c != '\t') compact += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (compact == "x,y" || compact == "xy") continue;  // "x,y", "X<tab>Y"
       // No header: fall through and read the line as data.
     }
-    const auto comma = t.find(',');
+    std::string xs, ys;
     double x = 0.0, y = 0.0;
-    if (comma == std::string::npos || t.find(',', comma + 1) != std::string::npos ||
-        !parse_number(t.substr(0, comma), x) || !parse_number(t.substr(comma + 1), y))
+    if (!two_fields(t, xs, ys) || !parse_number(xs, x) || !parse_number(ys, y))
       throw InputError(path, line_no, key,
-                       "expected a line \"x,y\" with two finite numbers (no denormals), found \"" +
+                       "expected a line \"x,y\" (or x and y separated by tabs or spaces) with two finite "
+                       "numbers (no denormals), found \"" +
                            t.substr(0, 80) + (t.size() > 80 ? "..." : "") + "\"");
     if (out.points.size() >= kMaxOutlinePoints)
       throw InputError(path, line_no, key,

@@ -61,6 +61,24 @@ TEST(OutlineCsv, AByteOrderMarkAndCrLfLineEndsAreRead) {
   EXPECT_EQ(w::read_outline_csv_lines((dir / "p.csv").string(), "k").points.size(), 3u);
 }
 
+// A tab- or space-separated outline (ImageJ's "XY coordinates" export: a header "X<tab>Y", then
+// tab-separated pairs). Before: "expected a line "x,y" with two finite numbers ..., found
+// "X\tY"" at line 1. Now the pairs are read; a comma still separates where there is one, so a
+// decimal comma ("1,5 2,5") is still refused, as are three fields.
+TEST(OutlineCsv, TabOrSpaceSeparatedPairsAreRead) {
+  flapsim::test::ScratchDir dir("outline_csv_tabs");
+  std::ofstream(dir / "t.csv") << "X\tY\n0.1\t0\n0.1\t1\n-0.2  1\n-0.2 \t 0\n";
+  const auto o = w::read_outline_csv_lines((dir / "t.csv").string(), "k");
+  ASSERT_EQ(o.points.size(), 4u);
+  EXPECT_EQ(o.points[1], Eigen::Vector2d(0.1, 1.0));
+  EXPECT_EQ(o.points[3], Eigen::Vector2d(-0.2, 0.0));
+  EXPECT_EQ(o.lines[0], 2);  // the header is line 1
+  std::ofstream(dir / "comma.csv") << "0,1 0,2\n0,1 1\n-0,2 1\n";
+  EXPECT_EQ(expect_input_error([&] { w::read_outline_csv((dir / "comma.csv").string(), "k"); }).line(), 1);
+  std::ofstream(dir / "three.csv") << "0.1 0 0\n0.1 1 0\n-0.2 1 0\n";
+  EXPECT_EQ(expect_input_error([&] { w::read_outline_csv((dir / "three.csv").string(), "k"); }).line(), 1);
+}
+
 TEST(OutlineCsv, ASelfIntersectionIsReportedAtTheCsvLineOfItsEdge) {
   // A bow tie: edge 0 (points 0-1, lines 2-3) crosses edge 2 (points 2-3).
   flapsim::test::ScratchDir dir("outline_csv_bowtie");
