@@ -27,7 +27,7 @@ std::set<std::string> sub_folders(const fs::path& dir) {
 
 TEST(SweepExtendedGrid, CasesOfTheEarlierGridAreKeptUnderTheirNewIndex) {
   const test::ScratchDir dir("sweep_extended");
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(8);
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
   const std::string base = "sweep " + (dir / "case.toml").string() + " -j 1 -q -o " + (dir / "out").string();
   ASSERT_EQ(test::run_flapsim(base + " --vary kinematics.rotation_phase=-0.1:0.1:0.1"), 0);
   EXPECT_EQ(sub_folders(dir / "out"), (std::set<std::string>{"00_-0.1", "01_0", "02_0.1"}));
@@ -53,7 +53,7 @@ namespace {
 // folder away (which the first row's "kept" names).
 TEST(SweepExtendedGrid, ACaseNeverTakesTheFolderOfAnotherCaseOfTheSameSweep) {
   const test::ScratchDir dir("sweep_same_rows");
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(8);
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
   std::ofstream(dir / "cases.csv") << "kinematics.rotation_phase\n0.05\n0.05\n";
   const std::string args = "sweep " + (dir / "case.toml").string() + " --cases " + (dir / "cases.csv").string() +
                            " -j 1 -q -o " + (dir / "out").string();

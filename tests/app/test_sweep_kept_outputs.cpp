@@ -20,7 +20,7 @@ using namespace flapsim;
 
 TEST(SweepKeptOutputs, ARerunAskingForParaViewSeriesRunsTheCasesThatHaveNone) {
   const test::ScratchDir dir("sweep_kept_vtk");
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(8);
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
   const std::string base = "sweep " + (dir / "case.toml").string() +
                            " --vary kinematics.rotation_phase=0,0.1 -j 1 -q -o " + (dir / "out").string();
   ASSERT_EQ(test::run_flapsim(base), 0);
@@ -44,7 +44,7 @@ TEST(SweepKeptOutputs, ARerunAskingForParaViewSeriesRunsTheCasesThatHaveNone) {
 // earlier run's ParaView series stayed beside the new history.csv and summary.json.
 TEST(SweepKeptOutputs, ACaseRunAgainLeavesNoEarlierSeriesBesideItsNewResults) {
   const test::ScratchDir dir("sweep_rerun_clears");
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(8);
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
   const std::string base = "sweep " + (dir / "case.toml").string() +
                            " --vary kinematics.rotation_phase=0,0.1 -j 1 -q -o " + (dir / "out").string();
   ASSERT_EQ(test::run_flapsim(base + " --vtk-every 4"), 0);
@@ -66,7 +66,7 @@ TEST(SweepKeptOutputs, AFemSweepWithItsSeriesIsKeptWhenRunAgain) {
       << "name = \"stiff_fem\"\nwing = \"wing.toml\"\n"
          "[kinematics]\nfrequency_hz = 26.1\nsweep = { mean_deg = 10.0, cos_deg = [20.0] }\n"
          "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n[structure]\nkind = \"fem\"\n"
-         "[numerics]\nsteps_per_cycle = 8\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 4\n"
+         "[numerics]\nsteps_per_cycle = 24\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 4\n"
          "core_radius = 0.2\nrho_infinity = 0.0\n";
   const std::string command = "sweep " + (dir / "case.toml").string() +
                               " --vary kinematics.rotation_phase=0,0.1 -j 1 -q --vtk-every 4 -o " + (dir / "out").string();
@@ -87,7 +87,7 @@ TEST(SweepKeptOutputs, AFemSweepWithItsSeriesIsKeptWhenRunAgain) {
 // when none are asked for.
 TEST(SweepKeptOutputs, ACaseFileIntervalEditedKeepsEveryFinishedCase) {
   const test::ScratchDir dir("sweep_kept_interval");
-  std::string text = test::tiny_plate_case(8);  // [output] vtk_every = 0
+  std::string text = test::tiny_plate_case(24);  // [output] vtk_every = 0
   std::ofstream(dir / "case.toml") << text;
   const std::string base = "sweep " + (dir / "case.toml").string() +
                            " --vary kinematics.rotation_phase=0,0.1 -j 1 -q -o " + (dir / "out").string();

@@ -25,7 +25,7 @@ const std::string kFarWakeNote =
 
 // The tiny plate's sweep over numerics.far_wake_cycles = 0.5 (in the measured range) and 1.
 std::string far_wake_sweep(const test::ScratchDir& dir) {
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
   return "sweep " + (dir / "case.toml").string() + " --vary numerics.far_wake_cycles=0.5,1 -j 1 -o " +
          (dir / "out").string();
 }
@@ -43,7 +43,7 @@ TEST(SweepRowWarnings, AVariedValueTheCaseFileWarnsAboutIsInItsRow) {
 
 TEST(SweepRowWarnings, AVariedValueTheWingFileWarnsAboutIsInItsRowQuoted) {
   const test::ScratchDir dir("sweep_row_wing_warning");
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
   ASSERT_EQ(test::run_flapsim("sweep " + (dir / "case.toml").string() +
                               " --vary wing.materials.pet.density=1390,5 -j 1 -o " + (dir / "out").string()),
             0);
@@ -78,7 +78,7 @@ TEST(RunSummaryWarnings, ARunRecordsItsWarningsInItsSummaryAsASweepRowGivesThem)
   // "warnings" is the sweep row's note above (the same words for the same case); without a
   // warning the entry is absent (run_recorder.hpp: set only when there are any).
   const test::ScratchDir dir("run_summary_warnings");
-  std::string text = test::tiny_plate_case(12);
+  std::string text = test::tiny_plate_case(24);
   std::ofstream(dir / "plain.toml") << text;
   const auto at = text.find("[numerics]");
   ASSERT_NE(at, std::string::npos);

@@ -36,7 +36,7 @@ std::string json_value(const std::string& json, const std::string& key) {
 
 TEST(SweepRuns, TwoKeyGridGivesOneRowPerCombination) {
   const test::ScratchDir dir("sweep_grid");
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
   ASSERT_EQ(run_flapsim("sweep " + (dir / "case.toml").string() +
                         " --vary kinematics.rotation_phase=-0.1,0,0.1 --vary spring_scale=1,2 -j 2 -o " +
                         (dir / "out").string()),
@@ -75,7 +75,7 @@ TEST(SweepRuns, TwoKeyGridGivesOneRowPerCombination) {
 // folders and sweep.csv carry the words, and the plot names them on its axis.
 TEST(SweepRuns, AWordKeyComparesTheLeadingEdgeModels) {
   const test::ScratchDir dir("sweep_words");
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
   ASSERT_EQ(run_flapsim("sweep " + (dir / "case.toml").string() +
                         " --vary numerics.leading_edge=none,separated -j 2 -o " + (dir / "out").string()),
             0);
@@ -107,7 +107,7 @@ TEST(SweepRuns, KilledSweepRerunsOnlyTheMissingCases) {
   // A case table (--cases): a short first case, then longer ones, so that the kill
   // lands while the later cases are still to run.
   std::ofstream(dir / "cases.csv") << "kinematics.rotation_phase,numerics.steps_per_cycle\n"
-                                      "-0.15,12\n-0.1,96\n-0.05,96\n0,96\n0.05,96\n0.1,96\n0.15,96\n";
+                                      "-0.15,24\n-0.1,96\n-0.05,96\n0,96\n0.05,96\n0.1,96\n0.15,96\n";
   const std::string args = "sweep " + (dir / "case.toml").string() + " --cases " +
                            (dir / "cases.csv").string() + " -j 1 -o " + (dir / "out").string();
   // Start the sweep in the background and kill it (SIGKILL: no clean-up) as soon as
@@ -177,7 +177,7 @@ TEST(SweepRuns, KilledSweepRerunsOnlyTheMissingCases) {
 
 TEST(SweepRuns, CaseThatCannotRunIsRecordedAndTheOthersGoOn) {
   const test::ScratchDir dir("sweep_error");
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
   fs::create_directories(dir / "out");
   std::ofstream(dir / "out" / "01_0") << "a file where the case's folder should be\n";
   ASSERT_EQ(run_flapsim("sweep " + (dir / "case.toml").string() +
@@ -205,7 +205,7 @@ TEST(SweepRuns, NumericalFailureIsRecordedAndTheOthersGoOn) {
   // per step cannot converge (the first iterate always moves the structure): that case
   // fails numerically; with 50 it runs.
   const test::ScratchDir dir("sweep_failed");
-  std::string c = test::tiny_plate_case(12);
+  std::string c = test::tiny_plate_case(24);
   c.replace(c.find("kind = \"rigid\""), 14, "kind = \"flexible\"\nbodies = 2");
   std::ofstream(dir / "case.toml") << c;
   ASSERT_EQ(run_flapsim("sweep " + (dir / "case.toml").string() +
