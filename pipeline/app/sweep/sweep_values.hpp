@@ -27,6 +27,11 @@ struct Assignment {
   std::string key;
   double value = 0.0;  ///< the number (0 for a word)
   std::string word;    ///< the word ("shed", "true"); "" for a number
+
+  Assignment() = default;
+  /// A key and its number, or its word (then `number` is 0).
+  Assignment(std::string k, double number, std::string w = "")
+      : key(std::move(k)), value(number), word(std::move(w)) {}
 };
 
 struct Variation {
