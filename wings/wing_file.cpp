@@ -15,6 +15,7 @@
 #include "wings/mesh_budget.hpp"
 #include "wings/outline_csv.hpp"
 #include "wings/outline_shapes.hpp"
+#include "wings/path_from_file_hint.hpp"
 #include "wings/planform_geometry.hpp"
 
 namespace flapsim::wings {
@@ -274,7 +275,9 @@ Planform read_planform(const TomlTable& p) {
     const std::string csv_path = p.get_path("outline_file");
     // A missing file is the wing file's error, at the line that names it.
     if (std::error_code ec; !std::filesystem::exists(csv_path, ec))
-      p.fail("outline_file", "file not found: " + csv_path + " (paths are relative to the wing file's folder)");
+      p.fail("outline_file", "file not found: " + csv_path +
+                                 " (paths are relative to the wing file's folder" +
+                                 path_from_file_hint(p.get_string("outline_file"), p.file(), "wing") + ")");
     csv = read_outline_csv_lines(csv_path, p.key_path("outline_file"));
     out.outline = csv.points;
   } else if (outline_key == "shape") {

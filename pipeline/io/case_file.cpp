@@ -15,6 +15,7 @@
 
 #include "mbd/angle_units.hpp"
 #include "wings/input_error.hpp"
+#include "wings/path_from_file_hint.hpp"
 
 namespace flapsim::io {
 
@@ -29,17 +30,7 @@ std::string existing_file(const TomlTable& t, std::string_view key) {
   if (!std::filesystem::exists(path, ec)) {
     // Written relative to the folder the command runs in (`wing = "wings/hawkmoth.toml"` in a
     // case elsewhere, run from the repository): say how to reach it from the case file's folder.
-    const std::string written = t.get_string(key);
-    std::string hint;
-    if (std::filesystem::path(written).is_relative() && std::filesystem::is_regular_file(written, ec)) {
-      const auto case_folder = std::filesystem::absolute(t.file(), ec).parent_path();
-      const auto from_case =
-          std::filesystem::absolute(written, ec).lexically_normal().lexically_relative(case_folder);
-      hint = "; \"" + written +
-             "\" is a file relative to the folder this command runs in: from the case file's "
-             "folder it is \"" +
-             from_case.string() + "\"";
-    }
+    const std::string hint = wings::path_from_file_hint(t.get_string(key), t.file(), "case");
     t.fail(key, "file not found: " + path + " (paths are relative to the case file's folder" + hint + ")");
   }
   if (!std::filesystem::is_regular_file(path, ec))

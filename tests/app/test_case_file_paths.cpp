@@ -52,4 +52,25 @@ TEST(CaseFilePaths, AWingWrittenRelativeToTheCurrentFolderIsShownItsPathFromTheC
   EXPECT_EQ(none.err.find("from the case file's folder it is"), std::string::npos) << none.err;
 }
 
+// The same for a wing's outline_file, relative to the wing file's folder.
+TEST(CaseFilePaths, AnOutlineWrittenRelativeToTheCurrentFolderIsShownItsPathFromTheWing) {
+  const flapsim::test::ScratchDir dir("wing_file_paths");
+  std::filesystem::create_directories(dir / "outlines");
+  std::filesystem::create_directories(dir / "my_wings");
+  std::filesystem::copy_file(std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/hawkmoth2_outline.csv",
+                             dir / "outlines" / "hind.csv");
+  std::ofstream(dir / "my_wings" / "hind.toml")
+      << "length_unit = \"mm\"\n[planform]\noutline_file = \"outlines/hind.csv\"\nspan = 40.0\nclamp_y = "
+         "1.0\n"
+         "[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.38\ndensity = 1390.0\n"
+         "[membrane]\nthickness = 0.05\nmaterial = \"film\"\n";
+  const auto e = check_in(dir, "my_wings/hind.toml");
+  EXPECT_EQ(e.status, 2) << e.err;
+  EXPECT_NE(e.err.find("my_wings/hind.toml:3: key 'planform.outline_file': file not found"),
+            std::string::npos)
+      << e.err;
+  EXPECT_NE(e.err.find("from the wing file's folder it is \"../outlines/hind.csv\""), std::string::npos)
+      << e.err;
+}
+
 }  // namespace
