@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "pipeline/app/run_results.hpp"
+#include "pipeline/app/sweep/sweep_values.hpp"
 #include "wings/input_error.hpp"
 
 namespace flapsim::optimize {
@@ -53,6 +54,13 @@ Bound parse_bound(const std::string& text) {
   const auto colon = range.find(':');
   if (b.key.empty() || colon == std::string::npos || range.find(':', colon + 1) != std::string::npos)
     throw bad("expected KEY=LO:HI (two bounds), e.g. kinematics.rotation_phase=-0.25:0.15");
+  // A text key's words (numerics.leading_edge=none:shed): no number lies between them.
+  if (sweep::is_word_value(trimmed(range.substr(0, colon))) &&
+      sweep::is_word_value(trimmed(range.substr(colon + 1))))
+    throw bad(
+        "optimize searches a number between two bounds, and a word is the value of a text key: compare "
+        "words with a sweep (flapsim sweep CASE.toml --vary " +
+        b.key + "=" + trimmed(range.substr(0, colon)) + "," + trimmed(range.substr(colon + 1)) + ")");
   if (!read_number(range.substr(0, colon), b.lo)) throw bad("the lower bound is not a finite number");
   if (!read_number(range.substr(colon + 1), b.hi)) throw bad("the upper bound is not a finite number");
   if (!(b.lo < b.hi)) throw bad("the lower bound must be below the upper bound (LO < HI)");
