@@ -81,7 +81,15 @@ Case::Air read_air(const TomlTable& root) {
   }
   const TomlTable a = root.get_table("air");
   a.expect_only({"density", "freestream"});
-  air.density = a.get_double("density", air.density, Bounds::positive());
+  air.density = a.get_double("density", air.density, Bounds::any());
+  if (!(air.density > 0.0)) {  // a vacuum is written otherwise
+    std::ostringstream value;
+    value << air.density;
+    a.fail("density",
+           "value " + value.str() +
+               " out of range: must be > 0 [kg/m^3]; for a run in vacuum write air = \"none\" at the top "
+               "level instead of the [air] table");
+  }
   if (a.has("freestream")) {
     const auto u = a.get_doubles("freestream");
     if (u.size() != 3) a.fail("freestream", "expected [u, v, w] in m/s (3 numbers), found " +

@@ -164,6 +164,17 @@ TEST(CaseMessages, ARigidWingWithSeveralBodiesSaysWhatToDo) {
   EXPECT_NE(e.message().find("kind = \"flexible\""), std::string::npos) << e.what();
 }
 
+TEST(CaseMessages, AnAirOfNoDensitySaysHowAVacuumIsWritten) {
+  // Before: "value 0 out of range: must be > 0", for a user who meant a run in vacuum.
+  const flapsim::InputError e = error_of(
+      "wing = \"valid_tiny_wing.toml\"\n[kinematics]\nfrequency_hz = 20.0\nsweep = 40.0\nrotation = 90.0\n"
+      "[air]\ndensity = 0.0\n[structure]\nkind = \"rigid\"\n");
+  EXPECT_EQ(e.key(), "air.density");
+  EXPECT_EQ(e.line(), 7);
+  EXPECT_NE(e.message().find("must be > 0"), std::string::npos) << e.what();
+  EXPECT_NE(e.message().find("air = \"none\""), std::string::npos) << e.what();
+}
+
 }  // namespace
 
 // leading_edge = "shed" is warned about as experimental at its key (pipeline/io/case_file.cpp,
