@@ -93,19 +93,29 @@ std::string fluid_load_deflection_warning(const io::Case& c, const FsiSetup& set
   const double period = 1.0 / c.kinematics.frequency;
   const fsi::WingAttachment& attachment = setup.chain_structure->attachment;
   const int nc = setup.grid->chordwise, ns = setup.grid->spanwise;
-  mbd::QuasiStaticDeflection inertial, both;
+  const mbd::QuasiStaticLoads fluid = [&](double, const mbd::ChainData& data, mbd::Loads& loads) {
+    add_quasi_steady_fluid_loads(attachment, nc, ns, data, c.air.density, c.air.freestream, loads);
+  };
+  // The run starts from rest with the loads of its first instant applied at once: an undamped
+  // spring overshoots the static deflection by as much again, while the rest of the cycle's
+  // loads rise from there (quasi-statically, away from a resonance, which its own warning
+  // covers). So the estimate is the largest deflection over a cycle plus the deflection at the
+  // start: the inertia of a stroke that starts at its reversal counts twice (as in
+  // inertial_deflection_warning), the fluid's loads of a wing at rest there once, those of a
+  // wing started at speed (a free stream, a revolution without a ramp) twice. The start is
+  // taken just after t = 0, where a revolution starts at its full rate.
+  mbd::QuasiStaticDeflection inertial, both, start;
   try {
     inertial = mbd::peak_quasi_static_deflection(chain, setup.model.base(), period, 64);
-    both = mbd::peak_quasi_static_deflection(
-        chain, setup.model.base(), period, 64, [&](double, const mbd::ChainData& data, mbd::Loads& loads) {
-          add_quasi_steady_fluid_loads(attachment, nc, ns, data, c.air.density, c.air.freestream, loads);
-        });
+    both = mbd::peak_quasi_static_deflection(chain, setup.model.base(), period, 64, fluid);
+    start = mbd::peak_quasi_static_deflection(chain, setup.model.base(), period, 1, fluid, 1e-9 * period);
   } catch (const std::exception&) {
     return "";  // a singular stiffness: the soft-chain and resonance checks speak of it
   }
   constexpr double kStepLoadPeak = 2.0;  // as inertial_deflection_warning
   constexpr double deg = 180.0 / std::numbers::pi;
-  const double bend = kStepLoadPeak * both.tip_bend * deg, twist = kStepLoadPeak * both.tip_twist * deg;
+  const double bend = (both.tip_bend + start.tip_bend) * deg,
+               twist = (both.tip_twist + start.tip_twist) * deg;
   // The inertia alone beyond 30 deg is inertial_deflection_warning's: one warning, not two.
   if (kStepLoadPeak * inertial.tip_bend * deg > kLargeTipDeflectionDeg ||
       kStepLoadPeak * inertial.tip_twist * deg > kLargeTipDeflectionDeg)
@@ -116,10 +126,11 @@ std::string fluid_load_deflection_warning(const io::Case& c, const FsiSetup& set
       text, sizeof text,
       "the fluid's loads with the flapping's inertia would bend the wing's tip by up to %.1f deg and "
       "twist it by up to %.1f deg against its base (the inertia alone %.1f and %.1f deg), beyond the "
-      "%g deg its small-rotation joint springs represent: twice the chain's linear quasi-static "
-      "deflection under the rigid wing's inertial loads and the fluid's quasi-steady normal force "
-      "on each panel at its speed and angle of attack (density %g kg/m^3; the translational "
-      "coefficients of a revolving wing, Dickinson et al. 1999; an estimate). Expect joints "
+      "%g deg its small-rotation joint springs represent: the chain's linear quasi-static deflection "
+      "under the rigid wing's inertial loads and the fluid's quasi-steady normal force on each panel "
+      "at its speed and angle of attack (density %g kg/m^3; the translational coefficients of a "
+      "revolving wing, Dickinson et al. 1999), its largest over a cycle plus its value at the start "
+      "(a load applied at once moves an undamped spring twice as far; an estimate). Expect joints "
       "swinging far past that, results that hinge on the time step, or a numerical failure. Stiffen "
       "the wing, lower frequency_hz or the amplitudes, or run the wing's own FEM, geometrically "
       "nonlinear (structure.kind = \"fem\") (docs/case_file.md, \"Warnings\")",
