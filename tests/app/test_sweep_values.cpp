@@ -84,10 +84,12 @@ TEST(SweepValues, CaseTableRowsAndErrorsWithTheirLine) {
   EXPECT_EQ(table.points[1][0].value, 0.05);
   EXPECT_EQ(table.points[1][1].value, 2.5);
   // A word is a text key's value (a case table's leading_edge column: shed).
-  std::ofstream(dir / "words.csv") << "numerics.leading_edge,numerics.cycles\nshed,2\nnone,3\n";
+  // A spreadsheet may quote its text cells: "none" is none.
+  std::ofstream(dir / "words.csv") << "numerics.leading_edge,numerics.cycles\nshed,2\n\"none\",3\n";
   const auto words = sweep::read_case_table((dir / "words.csv").string());
   ASSERT_EQ(words.points.size(), 2u);
   EXPECT_EQ(words.points[0][0].word, "shed");
+  EXPECT_EQ(words.points[1][0].word, "none");
   EXPECT_EQ(words.points[1][1].value, 3);
   std::ofstream(dir / "bad.csv") << "a,b\n1,2\n3,2x\n";
   try {

@@ -79,7 +79,11 @@ CaseTable read_case_table(const std::string& path) {
     }
     CasePoint point;
     for (std::size_t i = 0; i < cells.size(); ++i) {
-      const std::string& s = cells[i];
+      // A spreadsheet may quote its text cells ("shed"): one pair of quotes around a cell is dropped.
+      const std::string& cell = cells[i];
+      const bool quoted = cell.size() >= 2 && cell.front() == '"' && cell.back() == '"' &&
+                          cell.find('"', 1) == cell.size() - 1;
+      const std::string s = quoted ? cell.substr(1, cell.size() - 2) : cell;
       if (is_word_value(s)) {  // a text or boolean key's value: shed, true
         point.push_back(word_assignment(table.keys[i], s));
         continue;
