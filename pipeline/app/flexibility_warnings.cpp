@@ -12,6 +12,12 @@
 
 namespace flapsim::app {
 
+namespace {
+/// Peak over static deflection of an undamped oscillator under a load applied at once
+/// ([Thomson & Dahleh 1998], ch. 4): a run starts from rest with its first instant's loads.
+constexpr double kStepLoadPeak = 2.0;
+}  // namespace
+
 ModeResonance strongest_resonance(const std::vector<double>& mode_hz, double f) {
   ModeResonance out;
   for (std::size_t i = 0; i < mode_hz.size(); ++i)
@@ -65,7 +71,6 @@ std::string inertial_deflection_warning(const io::Case& c, const FsiSetup& setup
   } catch (const std::exception&) {
     return "";  // a singular stiffness: the soft-chain and resonance checks speak of it
   }
-  constexpr double kStepLoadPeak = 2.0;  // peak / static of a load applied at once (undamped)
   constexpr double deg = 180.0 / std::numbers::pi;
   const double bend = kStepLoadPeak * q.tip_bend * deg, twist = kStepLoadPeak * q.tip_twist * deg;
   if (!(bend > kLargeTipDeflectionDeg) && !(twist > kLargeTipDeflectionDeg)) return "";
@@ -112,7 +117,6 @@ std::string fluid_load_deflection_warning(const io::Case& c, const FsiSetup& set
   } catch (const std::exception&) {
     return "";  // a singular stiffness: the soft-chain and resonance checks speak of it
   }
-  constexpr double kStepLoadPeak = 2.0;  // as inertial_deflection_warning
   constexpr double deg = 180.0 / std::numbers::pi;
   const double bend = (both.tip_bend + start.tip_bend) * deg,
                twist = (both.tip_twist + start.tip_twist) * deg;

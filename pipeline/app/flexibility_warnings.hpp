@@ -62,11 +62,12 @@ std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup);
 std::string inertial_deflection_warning(const io::Case& c, const FsiSetup& setup);
 
 /// \brief "" or the warning for a flexible chain in a fluid that the fluid's loads, with the
-/// flapping's inertia, bend beyond small rotations: twice its linear quasi-static tip bend or
-/// twist under the rigid wing's inertial loads and the fluid's quasi-steady normal force on
-/// each panel (quasi_steady_fluid_loads.hpp) exceeds kLargeTipDeflectionDeg while the inertia
-/// alone does not (that is inertial_deflection_warning's). A wing in water or oil (a
-/// dynamically scaled model) bends under the fluid, not its inertia.
+/// flapping's inertia, bend beyond small rotations: its linear quasi-static tip bend or twist
+/// under the rigid wing's inertial loads and the fluid's quasi-steady normal force on each
+/// panel (quasi_steady_fluid_loads.hpp), the largest over a cycle plus the one at the start
+/// (the start's loads applied at once), exceeds kLargeTipDeflectionDeg while the inertia alone
+/// does not (that is inertial_deflection_warning's). A wing in water or oil (a dynamically
+/// scaled model) bends under the fluid, not its inertia.
 std::string fluid_load_deflection_warning(const io::Case& c, const FsiSetup& setup);
 
 /// \brief "" or a sentence to add to a run's numerical failure when the chain had moved

@@ -24,6 +24,13 @@ using wings::TomlTable;
 
 namespace {
 
+/// A number as a message shows it: 6 significant digits (0.25, 0.625, 1e-09).
+std::string number_text(double x) {
+  std::ostringstream o;
+  o << x;
+  return o.str();
+}
+
 std::string existing_file(const TomlTable& t, std::string_view key) {
   const std::string path = t.get_path(key);
   std::error_code ec;
@@ -83,10 +90,8 @@ Case::Air read_air(const TomlTable& root) {
   a.expect_only({"density", "freestream"});
   air.density = a.get_double("density", air.density, Bounds::any());
   if (!(air.density > 0.0)) {  // a vacuum is written otherwise
-    std::ostringstream value;
-    value << air.density;
     a.fail("density",
-           "value " + value.str() +
+           "value " + number_text(air.density) +
                " out of range: must be > 0 [kg/m^3]; for a run in vacuum write air = \"none\" at the top "
                "level instead of the [air] table");
   }
@@ -419,11 +424,6 @@ void warn_far_wake_outside_measured_range(const TomlTable& root, Case& c) {
   if (!meets_its_own_wake(c) || !c.numerics.free_wake || !(f > 0.0) ||
       (f >= kHoverFarWakeCyclesMin && f <= kHoverFarWakeCyclesMax))
     return;
-  auto number = [](double x) {
-    std::ostringstream o;
-    o << x;  // 6 significant digits: 0.25, 0.625
-    return o.str();
-  };
   const std::string why =
       f < kHoverFarWakeCyclesMin
           ? "the wing may meet rows of the far wake, which move as a block and do not give way to it "
@@ -431,9 +431,10 @@ void warn_far_wake_outside_measured_range(const TomlTable& root, Case& c) {
           : "the longer free wake's instability makes the cycle means wander (hawkmoth hover, cycles "
             "10-20: 0.8 % at 0.75, 1.4 % at 1, 4.8 % at 2)";
   warn_at_numerics_key(root, c, "far_wake_cycles",
-                       "far_wake_cycles = " + number(f) + " in hover is outside the measured range " +
-                           number(kHoverFarWakeCyclesMin) + " to " + number(kHoverFarWakeCyclesMax) + ": " +
-                           why + " (docs/uvlm.md, \"Hover over many cycles\")");
+                       "far_wake_cycles = " + number_text(f) + " in hover is outside the measured range " +
+                           number_text(kHoverFarWakeCyclesMin) + " to " +
+                           number_text(kHoverFarWakeCyclesMax) + ": " + why +
+                           " (docs/uvlm.md, \"Hover over many cycles\")");
 }
 
 // A revolution whose ramp lasts beyond the start of the last cycle: the last cycle's mean
@@ -448,16 +449,11 @@ void warn_revolution_ramp_into_last_cycle(const TomlTable& root, Case& c) {
   const double last_cycle_start = (c.numerics.cycles - 1) * period;  // [s]
   if (!turn.active() || c.numerics.steady || !(turn.ramp > last_cycle_start)) return;
   const int cycles_needed = static_cast<int>(std::ceil(turn.ramp / period)) + 1;
-  auto number = [](double x) {
-    std::ostringstream o;
-    o << x;
-    return o.str();
-  };
   const auto t = root.find_table("kinematics");
   c.warnings.push_back(
       {c.file, t ? t->line_of("revolution") : 0, "kinematics.revolution.ramp_s",
-       "the revolution's ramp (" + number(turn.ramp) + " s) lasts beyond the start of the last cycle (" +
-           number(last_cycle_start) + " s of a " + number(c.numerics.cycles * period) +
+       "the revolution's ramp (" + number_text(turn.ramp) + " s) lasts beyond the start of the last cycle (" +
+           number_text(last_cycle_start) + " s of a " + number_text(c.numerics.cycles * period) +
            " s run): the last cycle's mean lift and its coefficients (on the full rate's speed at r2) "
            "are taken while the wing still speeds up (cases/robofly_revolving.toml with a 0.45 s ramp: "
            "mean CL 22 % low); run at least " +

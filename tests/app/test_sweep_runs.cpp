@@ -34,6 +34,14 @@ std::string json_value(const std::string& json, const std::string& key) {
   return json.substr(begin, json.find_first_of(",\n", begin) - begin);
 }
 
+// tools/plot_sweep.py on DIR/out/sweep.csv into DIR/plots: its exit status.
+int plot_sweep(const test::ScratchDir& dir) {
+  const std::string plot = "/usr/bin/python3 '" + std::string(FLAPSIM_SOURCE_DIR) +
+                           "/tools/plot_sweep.py' '" + (dir / "out" / "sweep.csv").string() + "' '" +
+                           (dir / "plots").string() + "' > /dev/null";
+  return std::system(plot.c_str());
+}
+
 TEST(SweepRuns, TwoKeyGridGivesOneRowPerCombination) {
   const test::ScratchDir dir("sweep_grid");
   std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
@@ -62,9 +70,7 @@ TEST(SweepRuns, TwoKeyGridGivesOneRowPerCombination) {
   EXPECT_EQ(table.rows[1].at("folder"), "01_-0.1_2");  // first key slowest
 
   // The plot tool draws mean lift against each varied key (tools/plot_sweep.py).
-  const std::string plot = "/usr/bin/python3 '" + std::string(FLAPSIM_SOURCE_DIR) + "/tools/plot_sweep.py' '" +
-                           (dir / "out" / "sweep.csv").string() + "' '" + (dir / "plots").string() + "' > /dev/null";
-  ASSERT_EQ(std::system(plot.c_str()), 0);
+  ASSERT_EQ(plot_sweep(dir), 0);
   for (const char* name : {"sweep_kinematics_rotation_phase.png", "sweep_spring_scale.png"})
     EXPECT_EQ(read_text(dir / "plots" / name).substr(0, 4), "\x89PNG") << name;
 }
@@ -94,10 +100,7 @@ TEST(SweepRuns, AWordKeyComparesTheLeadingEdgeModels) {
   // The suction turned into vortex lift (Polhamus, docs/uvlm.md "Leading edge") adds to the
   // normal force of "none": the separated edge lifts more.
   EXPECT_GT(lift.at("separated"), lift.at("none"));
-  const std::string plot = "/usr/bin/python3 '" + std::string(FLAPSIM_SOURCE_DIR) +
-                           "/tools/plot_sweep.py' '" + (dir / "out" / "sweep.csv").string() + "' '" +
-                           (dir / "plots").string() + "' > /dev/null";
-  ASSERT_EQ(std::system(plot.c_str()), 0);
+  ASSERT_EQ(plot_sweep(dir), 0);
   EXPECT_EQ(read_text(dir / "plots" / "sweep_numerics_leading_edge.png").substr(0, 4), "\x89PNG");
 }
 
