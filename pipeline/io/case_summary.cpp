@@ -33,7 +33,21 @@ std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angle
   return dphi < 0.0 ? a.rotation.value : std::numbers::pi - a.rotation.value;
 }
 
-std::string describe_case(const Case& c) {
+std::optional<AngleInStream> angle_of_attack_in_stream(const mbd::WingKinematics& kinematics,
+                                                       const Eigen::Vector3d& freestream, double radius,
+                                                       double t) {
+  const mbd::BasePose pose = kinematics.pose(t);
+  const Eigen::Vector3d span = pose.rotation.col(1), chord = pose.rotation.col(0),
+                        normal = pose.rotation.col(2);
+  const Eigen::Vector3d point_velocity = pose.velocity + pose.angular_velocity.cross(radius * span);
+  Eigen::Vector3d w = freestream - point_velocity;
+  w -= w.dot(span) * span;
+  const double scale = freestream.norm() + 2.0 * std::numbers::pi * kinematics.frequency * radius;
+  if (!(w.norm() > 1e-9 * scale)) return std::nullopt;
+  return AngleInStream{std::atan2(std::abs(w.dot(normal)), -w.dot(chord)), w.norm()};
+}
+
+std::string describe_case(const Case& c, std::optional<double> stream_radius) {
   std::string s = "case '" + c.name + "' (" + c.file + ")\n";
   if (!c.wing_file.empty()) s += "  wing                   " + c.wing_file + "\n";
   if (!c.chain_file.empty()) s += "  chain                  " + c.chain_file + "\n";
@@ -48,7 +62,18 @@ std::string describe_case(const Case& c) {
               k.revolution.rate * kRadToDeg, k.revolution.ramp);
   s += revolving ? "  kinematics (AoA: geometric angle of attack; '-' at rest)\n"
                  : "  kinematics (AoA: geometric angle of attack; '-' at stroke reversal)\n";
-  s += "    phase f*t   sweep phi  deviation theta  rotation alpha   AoA    [deg]\n";
+  // In a free stream or with a translating pivot the geometric angle is not the one the air
+  // meets: the table adds the angle at r2·R with the stream (and the air's speed there).
+  const bool translates = !k.surge.is_constant() || !k.lateral.is_constant() || !k.heave.is_constant();
+  const bool in_stream = stream_radius && c.air.enabled && (!c.air.freestream.isZero(0.0) || translates);
+  if (in_stream)
+    s += line(
+        "    (in stream: the angle of attack the air meets at r2 = %.4g mm from the pivot, with the\n"
+        "     free stream and the pivot's motion, and the air's speed there normal to the span)",
+        *stream_radius * 1e3);
+  s += in_stream
+           ? "    phase f*t   sweep phi  deviation theta  rotation alpha   AoA   in stream [deg]  air [m/s]\n"
+           : "    phase f*t   sweep phi  deviation theta  rotation alpha   AoA    [deg]\n";
   for (double phase : {0.0, 0.25, 0.5, 0.75}) {
     const auto a = k.angles(phase / k.frequency);
     const auto aoa = geometric_angle_of_attack(a);
@@ -60,8 +85,19 @@ std::string describe_case(const Case& c) {
     const char* stroke = revolving ? (!aoa ? "at rest" : "revolving")
                          : !aoa    ? "reversal"
                                    : (a.sweep.rate < 0 ? "downstroke" : "upstroke");
-    s += line("    %9.2f  %10.2f  %15.2f  %14.2f  %s  %s", phase, a.sweep.value * kRadToDeg,
-              a.deviation.value * kRadToDeg, a.rotation.value * kRadToDeg, aoa_text, stroke);
+    std::string stream_text;
+    if (in_stream) {
+      const auto w = angle_of_attack_in_stream(k, c.air.freestream, *stream_radius, phase / k.frequency);
+      char buf[48];
+      if (w)
+        std::snprintf(buf, sizeof buf, "  %9.2f       %9.3g", w->angle * kRadToDeg, w->speed);
+      else
+        std::snprintf(buf, sizeof buf, "  %9s       %9s", "-", "0");
+      stream_text = buf;
+    }
+    s += line("    %9.2f  %10.2f  %15.2f  %14.2f  %s%s  %s", phase, a.sweep.value * kRadToDeg,
+              a.deviation.value * kRadToDeg, a.rotation.value * kRadToDeg, aoa_text, stream_text.c_str(),
+              stroke);
   }
   if (c.air.enabled)
     s += line("  air                    density %.4g kg/m^3, free stream (%.4g, %.4g, %.4g) m/s",

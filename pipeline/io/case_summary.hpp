@@ -16,7 +16,25 @@ namespace flapsim::io {
 /// (|φ̇| below 1e-9 rad/s), where the wing does not translate.
 std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angles& angles);
 
-/// Multi-line text; the kinematics table lists phases s = f·t of 0, 0.25, 0.5, 0.75.
-std::string describe_case(const Case& c);
+/// The angle of attack of the wing's span axis at a radius r [m] from the pivot in the air
+/// that moves at `freestream` [m/s] (ground frame), at time t [s]: the air's velocity
+/// relative to the point, w = U∞ − (v_pivot + ω × R_GW (0, r, 0)), its part normal to the
+/// span, and the angle [rad] in [0, π] between the leading edge's direction R_GW x̂ and the
+/// way the point moves through the air, −w: α = atan2(|w·n|, −w·c). With U∞ = 0 and a
+/// fixed pivot it is geometric_angle_of_attack wherever the deviation is constant;
+/// nullopt where the air's relative speed normal to the span is below 1e-9 of |U∞| + 2π f r
+/// (stroke reversal in hover).
+struct AngleInStream {
+  double angle = 0.0;  ///< [rad]
+  double speed = 0.0;  ///< |w| normal to the span [m/s]
+};
+std::optional<AngleInStream> angle_of_attack_in_stream(const mbd::WingKinematics& kinematics,
+                                                       const Eigen::Vector3d& freestream, double radius,
+                                                       double t);
+
+/// Multi-line text; the kinematics table lists phases s = f·t of 0, 0.25, 0.5, 0.75. With
+/// `stream_radius` (r2·R [m]) and a case in air with a free stream or a translating pivot,
+/// the table adds the angle of attack in the stream at that radius (angle_of_attack_in_stream).
+std::string describe_case(const Case& c, std::optional<double> stream_radius = std::nullopt);
 
 }  // namespace flapsim::io

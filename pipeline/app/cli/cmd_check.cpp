@@ -35,7 +35,10 @@ void check_meshable(const wings::Wing& wing) { (void)fem::mesh_wing(wing); }
 /// a wing for a run in air, loads and markers on existing bodies, the wing meshable when
 /// it is reduced in process, and the run's size against the memory (the estimate is part
 /// of the summary).
-std::string check_case_like_run(const io::Case& c, const std::string& chain_file) {
+/// `stream_radius` gets r2·R [m] of the run's lattice (in air), where the case's summary
+/// gives the angle of attack in a free stream.
+std::string check_case_like_run(const io::Case& c, const std::string& chain_file,
+                                std::optional<double>& stream_radius) {
   std::string text;
   std::optional<wings::Wing> wing;
   if (!c.wing_file.empty()) wing = print_wing_warnings(wings::load_wing_file(c.wing_file));
@@ -59,6 +62,7 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
       });
     });
     bodies = setup.chain().num_bodies();
+    if (c.air.enabled) stream_radius = setup.reference.r2 * setup.reference.span;
     if (setup.fem_structure) fem_dofs = setup.fem_structure->num_dofs();
     for (const std::string& w : app::setup_warnings(c, setup))
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
@@ -91,7 +95,9 @@ std::string check_file(const std::string& path, const std::string& chain_file) {
   if (case_file) {
     const io::Case c = print_case_warnings(io::read_case(root));
     warn_unused_structure_options(c, chain_file, 1.0);  // as run warns
-    return io::describe_case(c) + check_case_like_run(c, chain_file);
+    std::optional<double> stream_radius;
+    const std::string checked = check_case_like_run(c, chain_file, stream_radius);
+    return io::describe_case(c, stream_radius) + checked;
   }
   if (root.has("bodies"))
     throw InputError(path, root.line_of("bodies"), "bodies",
@@ -110,7 +116,8 @@ void add_check_command(CLI::App& app) {
       "A wing file (it has a [planform] table) prints span, area, mean chord S/R,\n"
       "aspect ratio R^2/S, r2/R, the number of veins and the estimated mass.\n"
       "A case file (it has a [kinematics] table) prints sweep, deviation, rotation and\n"
-      "the geometric angle of attack at phases 0, 0.25, 0.5, 0.75, then air, structure\n"
+      "the geometric angle of attack at phases 0, 0.25, 0.5, 0.75 (in a free stream also\n"
+      "the angle and speed of the air at r2 of the span), then air, structure\n"
       "and numerics, and checks the wing file it names.\n"
       "Check validates what run and mesh would: the chain file, a wing for a run in air,\n"
       "loads and markers on existing bodies, the wing meshed by gmsh (no file written), the\n"
