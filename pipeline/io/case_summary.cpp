@@ -44,7 +44,11 @@ std::optional<AngleInStream> angle_of_attack_in_stream(const mbd::WingKinematics
   w -= w.dot(span) * span;
   const double scale = freestream.norm() + 2.0 * std::numbers::pi * kinematics.frequency * radius;
   if (!(w.norm() > 1e-9 * scale)) return std::nullopt;
-  return AngleInStream{std::atan2(std::abs(w.dot(normal)), -w.dot(chord)), w.norm()};
+  // The air pushes the wing along its normal toward the side it flows to, (w·n) n: the angle
+  // is negative where that push points down.
+  const double push_up = w.dot(normal) * normal.z();
+  const double side = push_up < 0.0 ? -1.0 : 1.0;
+  return AngleInStream{side * std::atan2(std::abs(w.dot(normal)), -w.dot(chord)), w.norm()};
 }
 
 std::string describe_case(const Case& c, std::optional<double> stream_radius) {

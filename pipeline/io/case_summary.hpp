@@ -19,9 +19,11 @@ std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angle
 /// The angle of attack of the wing's span axis at a radius r [m] from the pivot in the air
 /// that moves at `freestream` [m/s] (ground frame), at time t [s]: the air's velocity
 /// relative to the point, w = U∞ − (v_pivot + ω × R_GW (0, r, 0)), its part normal to the
-/// span, and the angle [rad] in [0, π] between the leading edge's direction R_GW x̂ and the
-/// way the point moves through the air, −w: α = atan2(|w·n|, −w·c). With U∞ = 0 and a
-/// fixed pivot it is geometric_angle_of_attack wherever the deviation is constant;
+/// span, and the angle [rad] between the leading edge's direction c = R_GW x̂ and the way
+/// the point moves through the air, −w: |α| = atan2(|w·n|, −w·c) in [0, π], n = R_GW ẑ;
+/// negative where the air's push on the wing, along (w·n) n, points down (the air meets
+/// the upper face: a forward-flying wing's upstroke). With U∞ = 0 and a fixed pivot in a
+/// horizontal stroke plane it is geometric_angle_of_attack wherever the deviation is constant;
 /// nullopt where the air's relative speed normal to the span is below 1e-9 of |U∞| + 2π f r
 /// (stroke reversal in hover).
 struct AngleInStream {

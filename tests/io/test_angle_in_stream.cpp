@@ -77,10 +77,22 @@ TEST(AngleInStream, AWingFlappingDownInForwardFlightMeetsTheAirFromBelow) {
   ASSERT_TRUE(mid_down);
   EXPECT_NEAR(mid_down->angle, std::atan(down / 6.0), 1e-12);  // 23.68°
   EXPECT_NEAR(mid_down->speed, std::hypot(6.0, down), 1e-12);
-  // Mid-upstroke: the same angle, the air now from above (the angle has no side).
+  // Mid-upstroke: the air now from above, pushing the wing down: the same angle, negative.
   const auto mid_up = p::angle_of_attack_in_stream(c.kinematics, c.air.freestream, r, 0.75 / 4.0);
   ASSERT_TRUE(mid_up);
-  EXPECT_NEAR(mid_up->angle, std::atan(down / 6.0), 1e-12);
+  EXPECT_NEAR(mid_up->angle, -std::atan(down / 6.0), 1e-12);
+  // Pitched nose up by 10° (rotation 100°): 10° + 28.68° down, 28.68° − 10° up (negative).
+  p::Case pitched = c;
+  pitched.kinematics.rotation = flapsim::mbd::PeriodicSignal::harmonic(100.0 * kDegToRad, {}, {});
+  const double inflow = std::atan(down / 6.0) * kRadToDeg;
+  EXPECT_NEAR(
+      p::angle_of_attack_in_stream(pitched.kinematics, c.air.freestream, r, 0.25 / 4.0)->angle * kRadToDeg,
+      10.0 + inflow, 1e-10);
+  EXPECT_NEAR(
+      p::angle_of_attack_in_stream(pitched.kinematics, c.air.freestream, r, 0.75 / 4.0)->angle * kRadToDeg,
+      -(inflow - 10.0), 1e-10);
+  EXPECT_NEAR(p::angle_of_attack_in_stream(pitched.kinematics, c.air.freestream, r, 0.0)->angle * kRadToDeg,
+              10.0, 1e-10);
   // At the stroke's top (s = 0, φ = 30°) the wing stands still and the chord lies along the
   // stream: zero angle at the stream's speed, where the geometric column says "reversal".
   const auto top = p::angle_of_attack_in_stream(c.kinematics, c.air.freestream, r, 0.0);
