@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -256,6 +257,33 @@ Marker read_marker(const TomlTable& t, std::size_t i, int bodies) {
   return m;
 }
 
+/// A measured cycle often ends where it began: phase 1 (the next cycle's 0) repeating
+/// phase 0's value. That entry is dropped, as an outline's closing point is; phase 1 with
+/// another value, or without phase 0, is bad input naming the entry's line.
+void drop_closing_phase(const TomlTable& s, std::string_view values_key, std::vector<double>& phase,
+                        std::vector<double>& values) {
+  const std::size_t last = phase.size() - 1;
+  if (phase[last] != 1.0) return;
+  const int line = s.line_of_element("phase", last);
+  if (phase.front() != 0.0)
+    s.fail_at(line, "phase",
+              "phase 1 is phase 0 of the next cycle: phases lie in [0, 1) (a table that ends at 1 repeats "
+              "its value at 0, which this one has no entry for)");
+  const double first = values.front(), closing = values[last];
+  if (std::abs(closing - first) > 1e-9 * std::max(1.0, std::abs(first))) {
+    char text[240];
+    std::snprintf(
+        text, sizeof text,
+        "phase 1 is phase 0 of the next cycle, so its value must repeat phase 0's: %.10g against %.10g "
+        "(a cycle that does not close; drop the entry or make the two equal)",
+        closing, first);
+    s.fail_at(s.line_of_element(values_key, last), values_key, text);
+  }
+  if (phase.size() < 4) s.fail_at(line, "phase", "at least 3 points besides phase 1, which repeats phase 0");
+  phase.pop_back();
+  values.pop_back();
+}
+
 }  // namespace
 
 mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_view key,
@@ -273,11 +301,12 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
                     sin_k = "sin" + std::string(suffix);
   if (s.has("phase") || s.has(values_key)) {
     s.expect_only({"phase", values_key});
-    const auto phase = s.get_doubles("phase", Bounds{0.0, 1.0, false, true}, 3);
+    auto phase = s.get_doubles("phase", Bounds::closed(0.0, 1.0), 3);
     auto values = s.get_doubles(values_key, Bounds::any(), 3);
     if (values.size() != phase.size())
       s.fail(values_key, "needs as many entries as 'phase' (" + std::to_string(phase.size()) +
                              "), found " + std::to_string(values.size()));
+    drop_closing_phase(s, values_key, phase, values);
     for (std::size_t i = 1; i < phase.size(); ++i)
       if (!(phase[i] > phase[i - 1]))
         s.fail_at(s.line_of_element("phase", i), "phase",

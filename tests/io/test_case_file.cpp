@@ -181,6 +181,41 @@ TEST(CaseFileErrors, BadTabulatedSignal) {
   EXPECT_EQ(short_table.key(), "kinematics.deviation.phase");
 }
 
+TEST(CaseFile, ATableThatClosesItsCycleAtPhaseOneIsReadWithoutTheRepeat) {
+  // A measured cycle exported from 0 to 1 inclusive: phase 1 repeats phase 0 and is dropped
+  // (docs/case_file.md, [kinematics]); the signal is the one without it, value for value.
+  const std::string closed =
+      "[kinematics.deviation]\nphase = [0.0, 0.25, 0.5, 0.75, 1.0]\n"
+      "deg = [0.0, 5.0, 0.0, -5.0, 0.0]\n";
+  const std::string open =
+      "[kinematics.deviation]\nphase = [0.0, 0.25, 0.5, 0.75]\ndeg = [0.0, 5.0, 0.0, -5.0]\n";
+  const auto with = case_from_text(kHead + closed).kinematics,
+             without = case_from_text(kHead + open).kinematics;
+  for (double t : {0.0, 0.003, 0.0125, 0.031, 0.05})
+    EXPECT_EQ(with.angles(t).deviation.value, without.angles(t).deviation.value) << t;
+  // Phase 1 with another value than phase 0's: a cycle that does not close, named at its value.
+  const auto open_cycle = error_of(kHead +
+                                   "[kinematics.deviation]\n"               // 8
+                                   "phase = [0.0, 0.25, 0.5, 0.75, 1.0]\n"  // 9
+                                   "deg = [0.0, 5.0, 0.0, -5.0, 0.5]\n");   // 10
+  EXPECT_EQ(open_cycle.key(), "kinematics.deviation.deg");
+  EXPECT_EQ(open_cycle.line(), 10);
+  EXPECT_NE(std::string(open_cycle.what()).find("does not close"), std::string::npos) << open_cycle.what();
+  // Phase 1 without a phase 0 to repeat, and a closed table of fewer than 3 other points.
+  EXPECT_EQ(
+      error_of(kHead + "[kinematics.deviation]\nphase = [0.1, 0.4, 0.7, 1.0]\ndeg = [0.0, 1.0, 2.0, 3.0]\n")
+          .key(),
+      "kinematics.deviation.phase");
+  EXPECT_EQ(
+      error_of(kHead + "[kinematics.deviation]\nphase = [0.0, 0.5, 1.0]\ndeg = [1.0, 2.0, 1.0]\n").key(),
+      "kinematics.deviation.phase");
+  // Beyond 1 stays out of range.
+  EXPECT_EQ(
+      error_of(kHead + "[kinematics.deviation]\nphase = [0.0, 0.5, 0.8, 1.2]\ndeg = [1.0, 2.0, 1.0, 1.0]\n")
+          .key(),
+      "kinematics.deviation.phase[3]");
+}
+
 TEST(CaseFile, OverridesForSweeps) {
   const std::string path = kSource + "/cases/hover.toml";
   const p::Case c = p::load_case_file(path, {{"kinematics.rotation_phase", "-0.1"},
