@@ -28,6 +28,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from si_prefix import si_scale  # noqa: E402
+
 
 def case_numerics(case):
     """The case's numerics keys that set the resolution (defaults of docs/case_file.md)."""
@@ -125,11 +128,12 @@ def run_sweep(flapsim, case, rows, columns, out, chain, jobs, threads):
 
 def study_table(title, header, rows, lift, r):
     p, ext, err = observed_order(lift, r)
-    lines = [f"### {title}", "", "| " + " | ".join(header + ["mean lift [mN]", "change [mN]"]) + " |",
+    scale, unit = si_scale(lift, "N")  # a fruit fly's uN, not 0.0032 mN with changes of +0.0000
+    lines = [f"### {title}", "", "| " + " | ".join(header + [f"mean lift [{unit}]", f"change [{unit}]"]) + " |",
              "|" + "---|" * (len(header) + 2)]
     for k, (row, f) in enumerate(zip(rows, lift)):
-        change = "" if k == 0 else f"{1e3 * (f - lift[k - 1]):+.4f}"
-        lines.append("| " + " | ".join(str(v) for v in row) + f" | {1e3 * f:.4f} | {change} |")
+        change = "" if k == 0 else f"{scale * (f - lift[k - 1]):+.4f}"
+        lines.append("| " + " | ".join(str(v) for v in row) + f" | {scale * f:.4f} | {change} |")
     lines.append("")
     if p is None:
         lines.append(f"Refinement ratio {r:g}: the last three levels do not converge monotonically "
@@ -138,7 +142,7 @@ def study_table(title, header, rows, lift, r):
         lines.append(f"Refinement ratio {r:g}: the last two levels agree exactly.")
     else:
         lines.append(f"Refinement ratio {r:g}: observed order p = {p:.2f}; Richardson-extrapolated mean lift "
-                     f"{1e3 * ext:.4f} mN; the finest level {100 * err / ext:+.2f} % from it, the coarsest "
+                     f"{scale * ext:.4f} {unit}; the finest level {100 * err / ext:+.2f} % from it, the coarsest "
                      f"{100 * (lift[0] - ext) / ext:+.2f} %.")
     lines.append("")
     return lines, p, ext

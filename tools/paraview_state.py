@@ -32,6 +32,7 @@ import vtk
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from render_run import frame_at, read_pvd, read_vtp  # noqa: E402
+from si_prefix import run_force_scale  # noqa: E402
 
 
 class StateError(Exception):
@@ -245,8 +246,10 @@ def view_size(view, size=None):
 def caption(state, t):
     """t/T and the lift of the chart's frame nearest to time t."""
     frame = read_vtp(nearest_frame(state.series[state.timed_reader()], t))
+    lift = field(frame, 'lift_N')
+    factor, unit = run_force_scale(state.folder, lift)  # the run's unit: a fruit fly's in uN
     return (f"t/T = {field(frame, 't_over_T'):.3f}   t = {t * 1e3:.2f} ms   "
-            f"lift = {field(frame, 'lift_N') * 1e3:.4g} mN")
+            f"lift = {lift * factor:.4g} {unit}")
 
 
 def render(state, view, t, size=None, solid=None, title=True, window=None):

@@ -23,6 +23,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from si_prefix import si_scale  # noqa: E402
+
 
 def varied_keys(header):
     keys = []
@@ -85,10 +88,11 @@ def run_title(table, rows):
 
 
 def plot_key(rows, key, others, power, out_path, failed, title_text=""):
-    panels = [("mean_lift_N", "mean lift [mN]", 1e3)]
+    lift_scale, lift_unit = si_scale([number(r["mean_lift_N"]) for r in rows], "N")
+    panels = [("mean_lift_N", "mean lift [%s]" % lift_unit, lift_scale)]
     if power:
         unit = power.rsplit("_", 1)[-1] if "_" in power else ""
-        scale, shown = (1e3, "m" + unit) if unit == "W" else (1.0, unit)
+        scale, shown = si_scale([number(r[power]) for r in rows], unit) if unit == "W" else (1.0, unit)
         panels.append((power, "mean power [%s]" % shown, scale))
     fig, axes = plt.subplots(len(panels), 1, figsize=(6.0, 3.2 * len(panels)), sharex=True, squeeze=False)
     groups = {}

@@ -25,6 +25,9 @@ import xml.etree.ElementTree as ET
 
 import vtk
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from si_prefix import run_force_scale  # noqa: E402
+
 
 def fail(message):
     print(f"render_run: error: {message}", file=sys.stderr)
@@ -131,16 +134,18 @@ def shared_view(run):
     return tuple(bounds), view_direction(wing, read_vtp(chain_series[index][1]))
 
 
-def frame_title(t, frequency, phase, lift):
+def frame_title(t, frequency, phase, lift, force_scale=(1e3, "mN")):
     """The picture's title: t/T, the phase of the frame shown (and the phase asked for when
     no frame lies there: with vtk_every 4 of 40 steps per cycle, 0.25 shows the frame at
-    0.30, which the title called "phase 0.25"), t and the lift."""
+    0.30, which the title called "phase 0.25"), t and the lift in force_scale's unit
+    (si_prefix.run_force_scale: the run's own, so a fruit fly's reads uN)."""
     s = t * frequency
     shown = max(0.0, s - math.floor(s + 1e-9))
     where = f"phase {shown:.2f}"
     if abs(shown - phase) > 5e-3 and abs(abs(shown - phase) - 1.0) > 5e-3:
         where += f", the frame nearest to {phase:.2f}"
-    return f"t/T = {s:.3f} ({where})   t = {t * 1e3:.2f} ms   lift = {lift * 1e3:.4g} mN"
+    factor, unit = force_scale
+    return f"t/T = {s:.3f} ({where})   t = {t * 1e3:.2f} ms   lift = {lift * factor:.4g} {unit}"
 
 
 def add_fem_surface(renderer, fem):
@@ -253,7 +258,7 @@ def render(run, time_index, phase, args, output, view):
     renderer.ResetCameraClippingRange()
 
     text = vtk.vtkTextActor()
-    text.SetInput(frame_title(t, frequency, phase, lift))
+    text.SetInput(frame_title(t, frequency, phase, lift, run_force_scale(args.run, lift)))
     text.GetTextProperty().SetColor(0, 0, 0)
     text.GetTextProperty().SetFontSize(max(12, args.size[1] // 40))
     text.SetDisplayPosition(10, 10)
