@@ -130,7 +130,7 @@ struct Case {
     /// core_radius (uvlm::VortexLatticeModel::sheet_core_radius; docs/uvlm.md, "Why the shed hover's lift is rough: the sheet's core")
     double sheet_core_radius = 0.0;
     uvlm::CoreModel core_model = uvlm::CoreModel::LambOseen;  ///< vortex core: "cutoff" | "lamb_oseen"
-    double core_radius = 0.05;              ///< core radius as a fraction of the mean chord
+    double core_radius = 0.2;                                 ///< core radius as a fraction of the mean chord
     int wake_order = 1;                     ///< 1 | 2 (wake convection order)
     int wake_max_rows = 0;                  ///< 0 = keep all wake rows
     bool free_wake = true;                  ///< false: wake convected by U∞ and the body only
