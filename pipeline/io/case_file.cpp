@@ -529,6 +529,33 @@ void warn_few_steps_per_cycle(const TomlTable& root, Case& c) {
 }
 }  // namespace
 
+// A thin wake core in hover: the wing sweeps back through the wake it shed half a stroke
+// before, and cores below 0.15 mean chords make its lift erratic, the more so the finer the
+// step (docs/uvlm.md, "Hover results with leading_edge = none": 0.05 and 0.1 noisy, even a
+// negative mean; 0.15-0.3 periodic). Measured 1 Dec on the rigid hawkmoth hover (eq. 8) at
+// 50 / 100 / 200 steps a cycle: last-cycle CL 2.269 / 0.232 / 4.342 with 0.05 against 2.780 /
+// 2.771 / 2.775 with 0.2, the default. A free stream carries the wake away (a small core is
+// the more accurate there), and a revolving wing was not measured: neither is warned.
+namespace {
+constexpr double kThinHoverCore = 0.15;  // [mean chords]
+void warn_thin_core_in_hover(const TomlTable& root, Case& c) {
+  const Case::Numerics& n = c.numerics;
+  const mbd::WingKinematics& k = c.kinematics;
+  const bool still_pivot = k.surge.is_constant() && k.lateral.is_constant() && k.heave.is_constant();
+  if (!c.air.enabled || n.steady || !n.free_wake || !c.air.freestream.isZero(0.0) || !still_pivot ||
+      k.revolution.active() || n.core_radius >= kThinHoverCore)
+    return;
+  warn_at_numerics_key(
+      root, c, "core_radius",
+      "a wake core of " + number_text(n.core_radius) +
+          " mean chords in hover: the wing sweeps back through the wake it shed half a stroke before, "
+          "and cores below 0.15 make its lift erratic, the more so the finer the step (the rigid "
+          "hawkmoth hover's last-cycle CL 2.27 / 0.23 / 4.34 at 50 / 100 / 200 steps a cycle with 0.05, "
+          "per-step CL from -95 to 244; 2.780 / 2.771 / 2.775 with 0.2, the default); use 0.15-0.3 "
+          "(docs/case_file.md, core_radius)");
+}
+}  // namespace
+
 // Angles in radians where degrees are expected (`cos_deg = [0.87]` for a 50° stroke): every
 // value the sweep and rotation take stays within ±2π degrees, a wing that hardly moves. No
 // flapping kinematics is that small: insects and the shipped cases sweep ±50–60° and rotate
@@ -694,6 +721,7 @@ Case read_case(TomlTable root) {
   warn_revolution_ramp_into_last_cycle(root, c);
   warn_rotation_phase_that_shifts_nothing(root, c);
   warn_few_steps_per_cycle(root, c);
+  warn_thin_core_in_hover(root, c);
   return c;
 }
 
