@@ -73,7 +73,8 @@ std::string describe_case(const Case& c, std::optional<double> stream_radius) {
   if (in_stream)
     s += line(
         "    (in stream: the angle of attack the air meets at r2 = %.4g mm from the pivot, with the\n"
-        "     free stream and the pivot's motion, and the air's speed there normal to the span)",
+        "     free stream and the pivot's motion, negative where the air pushes the wing down,\n"
+        "     and the air's speed there normal to the span)",
         *stream_radius * 1e3);
   s += in_stream
            ? "    phase f*t   sweep phi  deviation theta  rotation alpha   AoA   in stream [deg]  air [m/s]\n"
