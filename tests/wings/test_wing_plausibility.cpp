@@ -61,6 +61,20 @@ TEST(WingPlausibility, FilmThinnerThanOneMicrometre) {
   expect_one_warning(wing, "membrane.thickness", 11, "was it written in metres? 2.5e-05 m is 0.025 mm");
 }
 
+TEST(WingPlausibility, ASmallInsectsSubmicrometreMembraneIsNotWarned) {
+  // A fruit fly's 0.5 µm membrane on a 2.5 mm wing (2e-4 of the span) is an insect's, not a
+  // unit mistake; the same membrane on this 10 mm plate (5e-5) is warned, as 25 nm is above.
+  const std::string fruit_fly =
+      "length_unit = \"um\"\n[planform]\nshape = \"half_ellipse\"\nspan = 2500.0\nchord = 900.0\nclamp_y = "
+      "100.0\n"
+      "[materials.cuticle]\nyoungs_modulus = 6.0e9\npoisson_ratio = 0.49\ndensity = 1200.0\n"
+      "[membrane]\nmaterial = \"cuticle\"\nthickness = 0.5\n";
+  EXPECT_TRUE(
+      w::read_wing(w::parse_toml_string(fruit_fly, kSource + "/tests/data/inline.toml")).warnings.empty());
+  expect_one_warning(plate("4.0e9", "1400.0", "0.0005"), "membrane.thickness", 11,
+                     "thinner than 1 µm and 5e-05 of the span");
+}
+
 TEST(WingPlausibility, ModulusBelowOneMegapascal) {
   // 4.0 read as Pa; 4 GPa (4e9 Pa) is a typical insect cuticle or polyester film.
   expect_one_warning(plate("4.0", "1400.0", "0.02"), "materials.film.youngs_modulus", 6,
