@@ -32,9 +32,12 @@ std::string describe_wing(const Wing& wing) {
   s += line("  root y (outline min)   %10.3f mm", p.root_y * 1e3);
   s += line("  outline points         %10zu", wing.outline.size());
   s += line("  veins                  %10zu", wing.veins.size());
-  s += line("  membrane thickness     %10.4f mm (E %.3g GPa, nu %.3g, rho %.4g kg/m^3)",
-            wing.membrane.thickness * 1e3, wing.membrane.material.youngs_modulus * 1e-9,
-            wing.membrane.material.poisson_ratio, wing.membrane.material.density);
+  // In um below 0.1 mm (a fruit fly's 0.5 um membrane read "0.0005 mm", one digit).
+  const bool thin = wing.membrane.thickness < 1e-4;
+  s += line("  membrane thickness     %10.4f %s (E %.3g GPa, nu %.3g, rho %.4g kg/m^3)",
+            wing.membrane.thickness * (thin ? 1e6 : 1e3), thin ? "um" : "mm",
+            wing.membrane.material.youngs_modulus * 1e-9, wing.membrane.material.poisson_ratio,
+            wing.membrane.material.density);
   // In mg, or ug / ng for a wing below 0.1 mg (a 1 mm wing of a 2 um film is a fraction of a
   // microgram: "0.000 mg" hid it).
   const double total = m.total();

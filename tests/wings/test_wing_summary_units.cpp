@@ -1,5 +1,6 @@
-// `flapsim check`'s wing summary shows a small wing's mass. Before: a 0.8 mm half-ellipse of a
-// 1.5 um cuticle film (0.28 ug) printed "estimated mass 0.000 mg (membrane 0.000, ...)".
+// `flapsim check`'s wing summary shows a small wing's mass and membrane. Before: a 0.8 mm
+// half-ellipse of a 1.5 um cuticle film (0.28 ug) printed "estimated mass 0.000 mg (membrane
+// 0.000, ...)".
 #include <gtest/gtest.h>
 
 #include <string>
@@ -34,6 +35,16 @@ TEST(WingSummaryUnits, AWingBelowATenthOfAMilligramIsShownInMicrograms) {
       << w::describe_wing(plate("um", 1000, 250, 2));
   // 1200 * 0.2e-3 * (40e-3 * 10e-3) = 9.6e-5 kg = 96.000 mg (the flat plate): still in mg.
   EXPECT_NE(mass_line(w::describe_wing(plate("mm", 40, 10, 0.2))).find(" 96.000 mg (membrane 96.000,"),
+            std::string::npos)
+      << w::describe_wing(plate("mm", 40, 10, 0.2));
+}
+
+TEST(WingSummaryUnits, AMembraneBelowATenthOfAMillimetreIsShownInMicrometres) {
+  // A fruit fly's 0.5 um membrane read "0.0005 mm" (one digit); 0.2 mm stays in mm.
+  EXPECT_NE(w::describe_wing(plate("um", 2500, 800, 0.5)).find("membrane thickness         0.5000 um"),
+            std::string::npos)
+      << w::describe_wing(plate("um", 2500, 800, 0.5));
+  EXPECT_NE(w::describe_wing(plate("mm", 40, 10, 0.2)).find("membrane thickness         0.2000 mm"),
             std::string::npos)
       << w::describe_wing(plate("mm", 40, 10, 0.2));
 }
