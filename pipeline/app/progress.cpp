@@ -73,7 +73,7 @@ void ProgressLine::update(long step, double time, std::string_view extra) {
   draw(line, false);
 }
 
-void ProgressLine::step_under_way() {
+void ProgressLine::step_under_way(const std::function<std::string()>& detail) {
   if (mode_ != Mode::final_only && mode_ != Mode::live) return;
   const auto now = std::chrono::steady_clock::now();
   const auto interval = mode_ == Mode::live ? std::chrono::milliseconds(1000) : log_interval_;
@@ -82,7 +82,10 @@ void ProgressLine::step_under_way() {
   char note[64];
   std::snprintf(note, sizeof note, "  step %ld under way for %.0f s", step_ + 1,
                 std::chrono::duration<double>(now - step_start_).count());
-  draw(format(step_, total_, time_, extra_) + note + wall_note(false), mode_ == Mode::final_only);
+  std::string line = format(step_, total_, time_, extra_) + note;
+  if (detail)
+    if (const std::string d = detail(); !d.empty()) line += ": " + d;
+  draw(line + wall_note(false), mode_ == Mode::final_only);
 }
 
 void ProgressLine::finish(std::string_view extra) {

@@ -96,6 +96,7 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
     // (first of the step: the structure's pose is already the predictor's = the iterate)
     solve_air(model, data, dt, step, t1);
     ++k;
+    ++data.step_solves;
     if (k == 1 && model.coupling.added_mass) {  // the air's added mass
       PanelLoadResponse response(model.lattice, *data.lattice, *data.added_mass_scratch);
       if (added_mass_due(model, data, step)) {
@@ -116,6 +117,7 @@ bool sub_iterate(const FsiModel& model, FsiData& data, double dt, long step, dou
     // 3. converged?
     delta = s.change(model.frequency);
     if (!std::isfinite(delta)) throw NumericalFailure("coupling produced a non-finite structure state", step, t1);
+    data.step_change = delta;
     if (k == 1) data.first_change = delta;
     if (delta <= tol && accuracy > 1.0 && s.solved_accuracy() > 1.0) {
       // Converged on an intermediate answer: the same loads at full accuracy (not needed
@@ -175,6 +177,8 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
   StructureData& s = *data.structure;
   const double t1 = s.time() + dt;
   const long step = data.step;
+  data.step_solves = 0;
+  data.step_change = 0.0;
   try {
     if (model.structure->num_dofs() == 0) {
       // Rigid wing: the pose is prescribed; one lattice solve, nothing to iterate.

@@ -137,6 +137,10 @@ struct FsiData {
   Eigen::VectorXd stacked_trial, stacked_next;  ///< the state vectors of ŝ and of the next s̃
   long step = 0;             ///< steps taken
   int last_iterations = 0;   ///< lattice solves in the last step
+  /// The step under way: its lattice solves so far (every try) and the structure's change
+  /// after the last of them [rad]; what a step that lasts shows on the progress line.
+  int step_solves = 0;
+  double step_change = 0.0;
   double last_change = 0.0;  ///< convergence measure at the end of the last step [rad]
   double first_change = 0.0;  ///< the last step's change after its first sub-iteration [rad]
   long accuracy_solves = 0;   ///< structure solves repeated at full accuracy (see above)

@@ -76,6 +76,37 @@ TEST(ProgressLogLines, AStepThatLastsShowsThatItIsUnderWay) {
   EXPECT_EQ(out.rfind("step 1/3  t=0.0100 s  CL=2  step 2 under way for 0 s  (", 0), 0u) << out;
 }
 
+// A coupled step that lasts says how far its coupling has come (fsi_run.cpp: lattice solves,
+// the structure's change): a light film's first step in air ran for minutes showing the
+// seconds alone. The detail is asked for only when the line is drawn.
+TEST(ProgressLogLines, AStepThatLastsSaysHowFarItsCouplingHasCome) {
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  int asked = 0;
+  const auto detail = [&] {
+    ++asked;
+    return std::string("37 lattice solves, structure change 0.0023 rad (tolerance 1e-06)");
+  };
+  {
+    ProgressLine p(3, f, ProgressLine::Mode::final_only);
+    p.set_log_interval(std::chrono::milliseconds(50));
+    p.update(1, 0.01, "CL=2");
+    p.step_under_way(detail);  // not drawn: not asked
+    std::this_thread::sleep_for(std::chrono::milliseconds(80));
+    p.step_under_way(detail);  // drawn
+    p.finish();
+  }
+  const std::string out = file_contents(f);
+  std::fclose(f);
+  EXPECT_EQ(asked, 1);
+  EXPECT_EQ(
+      out.rfind("step 1/3  t=0.0100 s  CL=2  step 2 under way for 0 s: 37 lattice solves, structure change "
+                "0.0023 rad (tolerance 1e-06)  (",
+                0),
+      0u)
+      << out;
+}
+
 // The last step's interval line and the final line were both printed when the last step
 // fell on an interval: the final line alone now.
 TEST(ProgressLogLines, TheLastStepIsPrintedOnce) {
