@@ -351,6 +351,25 @@ bool meets_its_own_wake(const Case& c) {
          std::abs(turn.at(c.numerics.cycles / c.kinematics.frequency).value) >= 2.0 * std::numbers::pi;
 }
 
+/// The far wake's default in hover: a flapping wing in still air (a fixed pivot, a sweep that
+/// swings, its wake free and kept whole) whose case leaves `far_wake_cycles` out gets
+/// kHoverFarWakeCycles, what every shipped hover case sets; otherwise 0, the whole wake free
+/// (docs/case_file.md, far_wake_cycles). Whole, the hover's wake makes the lift hinge on
+/// round-off from the second cycle and grow erratic after 5-8 (docs/uvlm.md, "Hover over many
+/// cycles": a change of the frequency by 1e-9 moved a hawkmoth hover's cycle-3 mean lift by up
+/// to 39 %); with the far wake after half a cycle the cycle means settle (cycles 2-8 within
+/// 0.6 %). A revolving wing, a free stream or a translating pivot keep 0.
+void default_far_wake_in_hover(const TomlTable& root, Case& c) {
+  Case::Numerics& n = c.numerics;
+  const mbd::WingKinematics& k = c.kinematics;
+  if (const auto t = root.find_table("numerics"); t && t->has("far_wake_cycles")) return;
+  const bool still_pivot = k.surge.is_constant() && k.lateral.is_constant() && k.heave.is_constant();
+  if (!in_still_air(c) || k.revolution.active() || !still_pivot || k.sweep.is_constant() || !n.free_wake ||
+      n.steady || n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
+    return;
+  n.far_wake_cycles = kHoverFarWakeCycles;
+}
+
 /// A warning at numerics.`key`, on its line of the [numerics] table (0 if the key is not written).
 void warn_at_numerics_key(const TomlTable& root, Case& c, const std::string& key, std::string message) {
   const auto t = root.find_table("numerics");
@@ -651,6 +670,7 @@ Case read_case(TomlTable root) {
   c.air = read_air(root);
   c.structure = read_structure(root);
   c.numerics = read_numerics(root);
+  default_far_wake_in_hover(root, c);
   if (c.structure.kind == Case::Structure::Kind::Fem) {
     // The FEM is built from the wing file; the chain's keys would be read and ignored.
     if (root.has("chain"))

@@ -183,6 +183,8 @@ inline constexpr int kLongFreeHoverCycles = 1;
 /// 2: 4.8 %, the free wake's instability). A hover outside gets a warning.
 inline constexpr double kHoverFarWakeCyclesMin = 0.5;
 inline constexpr double kHoverFarWakeCyclesMax = 0.625;
+/// far_wake_cycles of a hover case that leaves the key out (read_case; docs/case_file.md).
+inline constexpr double kHoverFarWakeCycles = 0.5;
 
 /// The names the case file gives the choices above, each with its value
 /// (wings::TomlTable::get_choice reads them, wings::choice_name names a value).

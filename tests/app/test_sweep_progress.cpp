@@ -28,7 +28,8 @@ using sweep::SweepProgress;
 TEST(SweepProgress, ALogGetsALineOnTheCaseUnderWayBeforeItEnds) {
   test::ScratchDir dir("sweep_progress_log");
   std::string text = test::tiny_plate_case(48);
-  text.replace(text.find("cycles = 1"), 10, "cycles = 8");
+  // The whole wake free (a hover's default far wake would end the case in 0.1 s).
+  text.replace(text.find("cycles = 1"), 10, "cycles = 8\nfar_wake_cycles = 0.0");
   std::ofstream(dir / "case.toml") << text;
   const std::string cmd = "OMP_NUM_THREADS=1 '" + std::string(FLAPSIM_BINARY) + "' sweep " +
                           (dir / "case.toml").string() + " --vary kinematics.rotation_phase=0.05 -j 1 --log-every 0.1 -o " +
