@@ -29,6 +29,10 @@ struct WingKinematics {
   /// Translation of the pivot in the ground frame [m] as signals of the phase s = f·t (not
   /// shifted by δψ): surge along x_G, lateral along y_G, heave along z_G; zero by default.
   PeriodicSignal surge, lateral, heave;
+  /// True if the pivot moves: surge, lateral or heave is not constant.
+  bool pivot_translates() const {
+    return !surge.is_constant() || !lateral.is_constant() || !heave.is_constant();
+  }
   /// A steady revolution added to the sweep (revolving-wing experiments: Dickinson et al.
   /// 1999, Usherwood & Ellington 2002): φ gains Ω_r(t), the rate rising from 0 to Ω over the
   /// ramp τ as Ω (1 − cos(π t/τ))/2 (no jump of the rate or of its derivative at 0 and τ),

@@ -247,7 +247,10 @@ def caption(state, t):
     """t/T and the lift of the chart's frame nearest to time t."""
     frame = read_vtp(nearest_frame(state.series[state.timed_reader()], t))
     lift = field(frame, 'lift_N')
-    factor, unit = run_force_scale(state.folder, lift)  # the run's unit: a fruit fly's in uN
+    # One unit for the whole movie, read once: the run's (a fruit fly's in uN).
+    if getattr(state, "force_scale", None) is None:
+        state.force_scale = run_force_scale(state.folder, lift)
+    factor, unit = state.force_scale
     return (f"t/T = {field(frame, 't_over_T'):.3f}   t = {t * 1e3:.2f} ms   "
             f"lift = {lift * factor:.4g} {unit}")
 

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 #include "pipeline/app/diverged_force.hpp"
@@ -36,6 +37,19 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
           : 0.0;
   fsi::initialize(model, data, 0.0);
   recorder.record_initial(data);
+  // A coupled step that lasts says how far its coupling has come: the lattice solves so far
+  // and the structure's last change against the tolerance (a light film's first step in
+  // air took minutes with nothing but the seconds shown). Asked only when the line is drawn.
+  const std::function<std::string()> coupling_so_far = [&]() -> std::string {
+    if (!model.air || model.structure->num_dofs() == 0 || data.step_solves == 0) return "";
+    char text[128];
+    std::snprintf(text, sizeof text, "%d lattice solves, structure change %.2g rad (tolerance %.2g)%s",
+                  data.step_solves, data.step_change, model.coupling.tolerance,
+                  data.structure->split_steps() > 0
+                      ? (", halved=" + std::to_string(data.structure->split_steps())).c_str()
+                      : "");
+    return text;
+  };
   // SIGINT/SIGTERM within a step (one of a film's FEM can take minutes): the step is left
   // between two of its solves and the outputs end at the step before (stop_request.hpp).
   // A step that lasts shows that it is under way on the progress line.
@@ -44,19 +58,7 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
       throw_if_interrupted("during step " + std::to_string(data.step + 1) + " of " + std::to_string(setup.steps) +
                            (data.step > 0 ? " (the step dropped: the outputs end at step " + std::to_string(data.step) + ")"
                                           : std::string(" (the step dropped: no step done)")));
-    // A coupled step that lasts says how far its coupling has come: the lattice solves so far
-    // and the structure's last change against the tolerance (a light film's first step in
-    // air took minutes with nothing but the seconds shown).
-    progress.step_under_way([&]() -> std::string {
-      if (!model.air || model.structure->num_dofs() == 0 || data.step_solves == 0) return "";
-      char text[128];
-      std::snprintf(text, sizeof text, "%d lattice solves, structure change %.2g rad (tolerance %.2g)%s",
-                    data.step_solves, data.step_change, model.coupling.tolerance,
-                    data.structure->split_steps() > 0
-                        ? (", halved=" + std::to_string(data.structure->split_steps())).c_str()
-                        : "");
-      return text;
-    });
+    progress.step_under_way(coupling_so_far);
   });
   for (long n = 0; n < setup.steps; ++n) {
     fsi::coupled_step(model, data, setup.dt);

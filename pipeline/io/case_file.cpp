@@ -363,9 +363,8 @@ void default_far_wake_in_hover(const TomlTable& root, Case& c) {
   Case::Numerics& n = c.numerics;
   const mbd::WingKinematics& k = c.kinematics;
   if (const auto t = root.find_table("numerics"); t && t->has("far_wake_cycles")) return;
-  const bool still_pivot = k.surge.is_constant() && k.lateral.is_constant() && k.heave.is_constant();
-  if (!in_still_air(c) || k.revolution.active() || !still_pivot || k.sweep.is_constant() || !n.free_wake ||
-      n.steady || n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
+  if (!in_still_air(c) || k.revolution.active() || k.pivot_translates() || k.sweep.is_constant() ||
+      !n.free_wake || n.steady || n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
     return;
   n.far_wake_cycles = kHoverFarWakeCycles;
 }
@@ -560,8 +559,7 @@ constexpr double kThinHoverCore = 0.15;  // [mean chords]
 void warn_thin_core_in_hover(const TomlTable& root, Case& c) {
   const Case::Numerics& n = c.numerics;
   const mbd::WingKinematics& k = c.kinematics;
-  const bool still_pivot = k.surge.is_constant() && k.lateral.is_constant() && k.heave.is_constant();
-  if (!c.air.enabled || n.steady || !n.free_wake || !c.air.freestream.isZero(0.0) || !still_pivot ||
+  if (!c.air.enabled || n.steady || !n.free_wake || !c.air.freestream.isZero(0.0) || k.pivot_translates() ||
       k.revolution.active() || n.core_radius >= kThinHoverCore)
     return;
   warn_at_numerics_key(

@@ -68,8 +68,8 @@ std::string describe_case(const Case& c, std::optional<double> stream_radius) {
                  : "  kinematics (AoA: geometric angle of attack; '-' at stroke reversal)\n";
   // In a free stream or with a translating pivot the geometric angle is not the one the air
   // meets: the table adds the angle at r2·R with the stream (and the air's speed there).
-  const bool translates = !k.surge.is_constant() || !k.lateral.is_constant() || !k.heave.is_constant();
-  const bool in_stream = stream_radius && c.air.enabled && (!c.air.freestream.isZero(0.0) || translates);
+  const bool in_stream =
+      stream_radius && c.air.enabled && (!c.air.freestream.isZero(0.0) || k.pivot_translates());
   if (in_stream)
     s += line(
         "    (in stream: the angle of attack the air meets at r2 = %.4g mm from the pivot, with the\n"

@@ -56,12 +56,12 @@ TEST(CaseWarnings, AHoverWithoutAFarWakeKeyGetsTheFarWakeAfterHalfACycle) {
   std::string still_sweep = hover_case_text("cycles = 10\n");
   still_sweep.replace(still_sweep.find("sweep = { cos_deg = [50.0] }"), 28, "sweep = 10.0");
   EXPECT_EQ(case_from_text(still_sweep).numerics.far_wake_cycles, 0.0);
-  std::string revolving = hover_case_text("cycles = 10\n");
-  const std::string flapping =
-      "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n";
-  revolving.replace(revolving.find(flapping), flapping.size(),
-                    "sweep = 0.0\nrotation = 50.0\nrevolution = { rate_deg_per_s = -1800.0 }\n");
-  EXPECT_EQ(case_from_text(revolving).numerics.far_wake_cycles, 0.0);
+  EXPECT_EQ(case_from_text(revolving_instead(hover_case_text("cycles = 10\n"))).numerics.far_wake_cycles,
+            0.0);
+  std::string heaving = hover_case_text("cycles = 10\n");  // a pivot that moves (a plunge)
+  heaving.replace(heaving.find("frequency_hz = 20.0\n"), 20,
+                  "frequency_hz = 20.0\nheave = { sin_m = [0.005] }\n");
+  EXPECT_EQ(case_from_text(heaving).numerics.far_wake_cycles, 0.0);
 }
 
 TEST(CaseWarnings, AFarWakeATruncatedWakeAFreeStreamOrAShortRunIsNotWarned) {
@@ -164,12 +164,7 @@ TEST(CaseWarnings, FewStepsAWingbeatAreWarned) {
   expect_only_warning(case_from_text(with_steps(20)), "numerics.steps_per_cycle", 9, "5 % at 24");
   expect_only_warning(case_from_text(with_steps(7)), "numerics.steps_per_cycle", 9, "7 steps a wingbeat");
   EXPECT_TRUE(case_from_text(with_steps(24)).warnings.empty());
-  std::string revolving = with_steps(12);
-  const std::string flapping =
-      "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n";
-  revolving.replace(revolving.find(flapping), flapping.size(),
-                    "sweep = 0.0\nrotation = 50.0\nrevolution = { rate_deg_per_s = -1800.0 }\n");
-  EXPECT_TRUE(case_from_text(revolving).warnings.empty());
+  EXPECT_TRUE(case_from_text(revolving_instead(with_steps(12))).warnings.empty());
 }
 
 // A thin wake core in hover: below 0.15 mean chords the hover's lift goes erratic with finer
@@ -187,12 +182,8 @@ TEST(CaseWarnings, AThinWakeCoreInHoverIsWarned) {
   EXPECT_TRUE(case_from_text(hover_case_text("cycles = 1\ncore_radius = 0.05\n",
                                              "[air]\nfreestream = [-3.0, 0.0, 0.0]\n"))
                   .warnings.empty());
-  std::string revolving = hover_case_text("cycles = 1\ncore_radius = 0.05\n");
-  const std::string flapping =
-      "sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n";
-  revolving.replace(revolving.find(flapping), flapping.size(),
-                    "sweep = 0.0\nrotation = 50.0\nrevolution = { rate_deg_per_s = -1800.0 }\n");
-  EXPECT_TRUE(case_from_text(revolving).warnings.empty());
+  EXPECT_TRUE(case_from_text(revolving_instead(hover_case_text("cycles = 1\ncore_radius = 0.05\n")))
+                  .warnings.empty());
 }
 
 TEST(CaseWarnings, ATwoCycleHoverWithTheWholeWakeFreeIsWarned) {
