@@ -36,13 +36,6 @@ std::shared_ptr<const fsi::FemStructureModel> make_fem_structure(const io::Case&
   check_case_mesh_sizes(c, wing, mesh);
   fem::WingFem f = fem::build_wing_fem(wing, mesh);
   std::vector<int> clamped = fem::nodes_at_or_below_y(f.model.mesh, wing.clamp_y);
-  fem::DynamicsOptions options;
-  options.rho_infinity = c.numerics.rho_infinity;
-  options.stiffness_damping = c.structure.fem_stiffness_damping;
-  options.linearised_geometric_force = c.structure.fem_linearised_geometric_terms;
-  options.matrix_per_piece = c.structure.fem_matrix_per_piece;
-  // Newton's stopping rule from the coupling's tolerance (fem_structure.hpp).
-  options = fsi::coupled_dynamics_options(options, c.numerics.coupling_tolerance, c.numerics.steps_per_cycle);
   // A thin film (its membrane wrinkles at the mesh's wavelength: film_wrinkle_warning.hpp)
   // splits its steps, and the lumped added mass there slowed or stopped its coupling
   // (docs/fsi.md, "Added mass in the coupling"): it goes without. Nor does Newton's stop
@@ -50,6 +43,19 @@ std::shared_ptr<const fsi::FemStructureModel> make_fem_structure(const io::Case&
   // contraction": the MAV film wing's five wingbeats 12 % slower with it).
   const std::optional<MembraneWrinkle> wrinkle = typical_membrane_wrinkle(f.model);
   const bool film = wrinkle && wrinkle->strain < kFilmWrinkleStrain;
+  fem::DynamicsOptions options;
+  options.rho_infinity = c.numerics.rho_infinity;
+  options.linearised_geometric_force = c.structure.fem_linearised_geometric_terms;
+  // A film's own defaults, where the case leaves the keys out (docs/case_file.md,
+  // "[structure]"): ρ∞ = 0, or its wrinkles ring undamped (a 50 µm swept film wing stopped
+  // at step 19 with 0.9 and flew 3 wingbeats with 0), and the geometric terms at the
+  // current state, where the film's stretching is its transverse stiffness.
+  if (film && !c.numerics.rho_infinity_written) options.rho_infinity = kFilmRhoInfinity;
+  if (film && !c.structure.fem_geometric_terms_written) options.linearised_geometric_force = false;
+  options.stiffness_damping = c.structure.fem_stiffness_damping;
+  options.matrix_per_piece = c.structure.fem_matrix_per_piece;
+  // Newton's stopping rule from the coupling's tolerance (fem_structure.hpp).
+  options = fsi::coupled_dynamics_options(options, c.numerics.coupling_tolerance, c.numerics.steps_per_cycle);
   options.contraction_stop = !film;
   const int nc = c.numerics.chordwise_panels, ns = c.numerics.spanwise_panels;
   auto model = std::make_shared<fsi::FemStructureModel>(std::move(f.model), std::move(clamped), base, options,

@@ -32,7 +32,7 @@ std::optional<MembraneWrinkle> typical_membrane_wrinkle(const fem::StructuralMod
   return *median;
 }
 
-std::string film_wrinkle_warning(const FsiSetup& setup) {
+std::string film_wrinkle_warning(const io::Case& c, const FsiSetup& setup) {
   if (!setup.fem_structure) return "";
   const std::optional<MembraneWrinkle> median = typical_membrane_wrinkle(setup.fem_structure->structural);
   if (!median) return "";
@@ -47,7 +47,23 @@ std::string film_wrinkle_warning(const FsiSetup& setup) {
                 "%.0f MB more memory for a Newton matrix kept for each piece (docs/fsi.md, \"Film wings\")",
                 median->thickness * 1e6, median->size * 1e3, 100.0 * median->strain,
                 2.0 * fem::kKeptMatricesBytes / 1e6);  // each may hold an LDLᵀ beside its LLᵀ
-  return text;
+  std::string out = text;
+  std::string defaults;
+  if (!c.numerics.rho_infinity_written) defaults += "numerics.rho_infinity = 0";
+  if (!c.structure.fem_geometric_terms_written)
+    defaults +=
+        std::string(defaults.empty() ? "" : " and ") + "structure.newton_geometric_terms = \"current\"";
+  if (!defaults.empty())
+    out += "; left out of the case, it takes a film's " + defaults + " (docs/case_file.md, \"[structure]\")";
+  if (c.numerics.rho_infinity_written && c.numerics.rho_infinity > kFilmRhoInfinity) {
+    std::snprintf(
+        text, sizeof text,
+        "; numerics.rho_infinity = %g leaves its wrinkles ringing, where a film's default 0 removes them "
+        "within a step",
+        c.numerics.rho_infinity);
+    out += text;
+  }
+  return out;
 }
 
 }  // namespace flapsim::app

@@ -11,6 +11,7 @@
 
 #include "fem/structural_model.hpp"
 #include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/io/case_model.hpp"
 
 namespace flapsim::app {
 
@@ -30,6 +31,12 @@ double mesh_wrinkle_strain(double thickness, double poisson_ratio, double wavele
 /// between the wings that split most steps and the 50 µm film that splits few.
 inline constexpr double kFilmWrinkleStrain = 1.5e-3;
 
+/// numerics.rho_infinity of a film's FEM (below kFilmWrinkleStrain) whose case leaves the key
+/// out (app::make_fem_structure): its wrinkles oscillate far faster than a step, and only
+/// ρ∞ = 0 removes them within one (docs/case_file.md, "[structure]"). A film whose case leaves
+/// `structure.newton_geometric_terms` out takes "current".
+inline constexpr double kFilmRhoInfinity = 0.0;
+
 /// The membrane's typical element: the shell triangle at the median of mesh_wrinkle_strain
 /// over all of them, each with its mean edge as the wavelength.
 struct MembraneWrinkle {
@@ -41,7 +48,8 @@ struct MembraneWrinkle {
 std::optional<MembraneWrinkle> typical_membrane_wrinkle(const fem::StructuralModel& model);
 
 /// \brief "" or the warning for a `kind = "fem"` case whose typical membrane element
-/// wrinkles below kFilmWrinkleStrain.
-std::string film_wrinkle_warning(const FsiSetup& setup);
+/// wrinkles below kFilmWrinkleStrain; it names the film's defaults the case takes, or a
+/// written rho_infinity above kFilmRhoInfinity.
+std::string film_wrinkle_warning(const io::Case& c, const FsiSetup& setup);
 
 }  // namespace flapsim::app

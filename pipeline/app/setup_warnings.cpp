@@ -20,8 +20,8 @@ std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup
         chain_wing_mismatch_warning(setup), saved_chain_fem_warning(setup), soft_chain_warning(c, setup),
         near_resonance_warning(c, setup), fem_near_resonance_warning(c, setup),
         inertial_deflection_warning(c, setup), fluid_load_deflection_warning(c, setup),
-        coupling_tolerance_warning(setup), small_wing_precision_warning(setup), film_wrinkle_warning(setup),
-        fem_mesh_resolution_warning(setup)})
+        coupling_tolerance_warning(setup), small_wing_precision_warning(setup),
+        film_wrinkle_warning(c, setup), fem_mesh_resolution_warning(setup)})
     if (!w.empty()) out.push_back(std::move(w));
   return out;
 }

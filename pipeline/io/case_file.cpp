@@ -130,6 +130,7 @@ Case::Structure read_structure(const TomlTable& root) {
     s.fem_stiffness_damping = t.get_double("stiffness_damping_s", 0.0, Bounds::closed(0.0, 1.0));
     s.fem_linearised_geometric_terms =
         t.get_choice("newton_geometric_terms", {"linearised", "current"}, "linearised") == "linearised";
+    s.fem_geometric_terms_written = t.has("newton_geometric_terms");
     s.fem_matrix_per_piece = t.get_bool("newton_matrix_per_piece", true);
   }
   if (s.kind != Kind::Fem)
@@ -222,6 +223,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
     t->fail("coupling_reuse_steps", "reusing earlier steps' secant pairs needs coupling = \"iqn_ils\"");
   n.added_mass = t->get_bool("added_mass", n.added_mass);
   n.rho_infinity = t->get_double("rho_infinity", n.rho_infinity, Bounds::closed(0.0, 1.0));
+  n.rho_infinity_written = t->has("rho_infinity");
   n.structure_substeps = t->get_int("structure_substeps", n.structure_substeps, Bounds::closed(1, 10000));
   n.steady = t->get_bool("steady", n.steady);
   return n;

@@ -102,6 +102,9 @@ struct Case {
     /// default) or from those at the current state ("current"; faster for thin films:
     /// docs/fem.md, "The geometric terms from the corrections taken linearly").
     bool fem_linearised_geometric_terms = true;
+    /// `newton_geometric_terms` written in the case: a thin film's FEM takes "current" where
+    /// it is not (app::make_fem_structure; docs/case_file.md).
+    bool fem_geometric_terms_written = false;
     /// A kept Newton matrix for each piece of a split FEM step (`newton_matrix_per_piece`;
     /// fem::DynamicsOptions::matrix_per_piece): faster for film wings, on by default.
     bool fem_matrix_per_piece = true;
@@ -151,6 +154,9 @@ struct Case {
     int coupling_reuse_steps = 0;           ///< iqn_ils: earlier steps whose secant pairs are kept
     double coupling_tolerance = 1e-6;       ///< relative change that ends the sub-iterations
     double rho_infinity = 0.9;              ///< generalized-α spectral radius ρ∞ in [0, 1]
+    /// `rho_infinity` written in the case: a thin film's FEM takes 0 where it is not
+    /// (app::make_fem_structure; docs/case_file.md).
+    bool rho_infinity_written = false;
     int structure_substeps = 1;             ///< chain sub-steps per time step (docs/multibody.md, "Sub-steps")
     /// The steady vortex lattice at every step (a straight wake 10⁴ mean chords long along the
     /// free stream, no ∂Γ/∂t, nothing shed; uvlm::VortexLatticeModel::steady_wake_length):

@@ -18,7 +18,7 @@ namespace flapsim::io {
 // keeps runs by their hash and wants series checks for them (docs/sweeps.md, "Resuming a
 // sweep").
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages; they change no result.)
-static_assert(sizeof(Case) == 1472, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1480, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
@@ -147,6 +147,10 @@ void case_fields(Canonical& out, const Case& c) {
     // newton_matrix_per_piece: in the hash when on until 30 Nov (then not the default), when
     // off since (the default).
     if (!c.structure.fem_matrix_per_piece) out.line("structure.newton_matrix_per_piece", 0);
+    // Left out, a thin film's FEM takes its own ρ∞ and geometric terms (app::make_fem_structure):
+    // a case with the key written and one without may differ.
+    if (!c.numerics.rho_infinity_written) out.line("numerics.rho_infinity_left_out", 1);
+    if (!c.structure.fem_geometric_terms_written) out.line("structure.newton_geometric_terms_left_out", 1);
   }
   const Case::Numerics& n = c.numerics;
   out.line("numerics.steps_per_cycle", n.steps_per_cycle);
