@@ -8,13 +8,14 @@
 #include <numbers>
 #include <utility>
 
-#include "pipeline/fsi/fem_structure.hpp"
-#include "pipeline/fsi/cycle_statistics.hpp"
-#include "pipeline/fsi/phase_analysis.hpp"
-#include "pipeline/io/fem_run_vtk.hpp"
-#include "pipeline/io/atomic_file.hpp"
-#include "pipeline/fsi/wing_attachment.hpp"
 #include "mbd/chain_kinematics.hpp"
+#include "pipeline/app/low_reynolds_warning.hpp"
+#include "pipeline/fsi/cycle_statistics.hpp"
+#include "pipeline/fsi/fem_structure.hpp"
+#include "pipeline/fsi/phase_analysis.hpp"
+#include "pipeline/fsi/wing_attachment.hpp"
+#include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/fem_run_vtk.hpp"
 #include "pipeline/io/fsi_vtk.hpp"
 #include "pipeline/io/pvsm_state.hpp"
 #include "pipeline/io/vtk_writers.hpp"
@@ -112,6 +113,7 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
     r.set("load_method", std::string(wings::choice_name(io::kLoadMethodNames, c.numerics.load_method)));
     r.set("leading_edge", std::string(wings::choice_name(io::kLeadingEdgeNames, c.numerics.leading_edge)));
     r.set("r2", setup.reference.r2);
+    r.set("reynolds_number", reynolds_number(c, setup));
   }
 }
 

@@ -527,6 +527,24 @@ void warn_rotation_phase_that_shifts_nothing(const TomlTable& root, Case& c) {
 }
 }  // namespace
 
+// A liquid with air's viscosity: a case whose fluid is far denser than air (water 998, the
+// Robofly's mineral oil 880 kg/m³) and that leaves numerics.kinematic_viscosity at air's
+// 1.5e-5 m²/s gets the core growth and the Reynolds number of air (docs/uvlm.md, "Reynolds
+// number"): warned at air.density. The bound, 10 kg/m³, is 8 times sea-level air.
+namespace {
+void warn_dense_fluid_with_air_viscosity(const TomlTable& root, Case& c) {
+  if (!c.air.enabled || !(c.air.density > kDenseFluidDensity)) return;
+  if (const auto t = root.find_table("numerics"); t && t->has("kinematic_viscosity")) return;
+  const auto a = root.find_table("air");
+  c.warnings.push_back(
+      {c.file, a ? a->line_of("density") : 0, "air.density",
+       "a fluid of " + number_text(c.air.density) +
+           " kg/m^3 with numerics.kinematic_viscosity left at air's 1.5e-5 m^2/s: the wake's core growth and "
+           "the Reynolds number `check` prints are then air's; set it to the fluid's (water 1.0e-6, the "
+           "Robofly's mineral oil 7.3e-4 m^2/s as cases/robofly_revolving.toml)"});
+}
+}  // namespace
+
 // Few steps per wingbeat: the lift converges from below as the step shrinks. Measured (1 Dec;
 // cases/hover_flexible.toml, mean CL of its 3 wingbeats against 100 steps a cycle, 3.407):
 // 7 steps -17.9 %, 12 -12.6 %, 16 -8.6 %, 20 -5.8 %, 24 -4.8 %, 30 -2.7 %, 40 -0.8 %, 50 -1.0 %.
@@ -742,6 +760,7 @@ Case read_case(TomlTable root) {
   warn_rotation_phase_that_shifts_nothing(root, c);
   warn_few_steps_per_cycle(root, c);
   warn_thin_core_in_hover(root, c);
+  warn_dense_fluid_with_air_viscosity(root, c);
   return c;
 }
 

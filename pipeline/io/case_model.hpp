@@ -189,6 +189,9 @@ inline constexpr int kLongFreeHoverCycles = 1;
 /// 2: 4.8 %, the free wake's instability). A hover outside gets a warning.
 inline constexpr double kHoverFarWakeCyclesMin = 0.5;
 inline constexpr double kHoverFarWakeCyclesMax = 0.625;
+/// air.density [kg/m³] above which a case that leaves numerics.kinematic_viscosity at air's is
+/// warned (case_file.cpp, warn_dense_fluid_with_air_viscosity): 8 times sea-level air.
+inline constexpr double kDenseFluidDensity = 10.0;
 /// far_wake_cycles of a hover case that leaves the key out (read_case; docs/case_file.md).
 inline constexpr double kHoverFarWakeCycles = 0.5;
 

@@ -186,6 +186,19 @@ TEST(CaseWarnings, AThinWakeCoreInHoverIsWarned) {
                   .warnings.empty());
 }
 
+// A liquid with air's viscosity: water's density and no numerics.kinematic_viscosity gives
+// the core growth and the Reynolds number of air (pipeline/io/case_file.cpp): warned at
+// air.density; with the fluid's ν written, or at 8 times air's density, not.
+TEST(CaseWarnings, AFluidDenserThanAirWithAirsViscosityIsWarned) {
+  expect_only_warning(case_from_text(hover_case_text("cycles = 1\n", "[air]\ndensity = 998.0\n")),
+                      "air.density", 9, "numerics.kinematic_viscosity left at air's 1.5e-5");
+  EXPECT_TRUE(case_from_text(
+                  hover_case_text("cycles = 1\nkinematic_viscosity = 1.0e-6\n", "[air]\ndensity = 998.0\n"))
+                  .warnings.empty());
+  EXPECT_TRUE(case_from_text(hover_case_text("cycles = 1\n", "[air]\ndensity = 9.8\n")).warnings.empty());
+  EXPECT_EQ(flapsim::io::kDenseFluidDensity, 10.0);
+}
+
 TEST(CaseWarnings, ATwoCycleHoverWithTheWholeWakeFreeIsWarned) {
   const flapsim::io::Case c = case_from_text(hover_case_text("cycles = 2\nfar_wake_cycles = 0.0\n"));
   ASSERT_EQ(c.warnings.size(), 1u);
