@@ -2,8 +2,10 @@
 
 #include "uvlm/biot_savart_kernel.hpp"
 #include "uvlm/lattice_internal.hpp"
+#include "uvlm/load_terms.hpp"
 #include "uvlm/old_wake_hold.hpp"
 #include "uvlm/rigid_motion.hpp"
+#include "uvlm/skin_friction.hpp"
 
 #include <omp.h>
 
@@ -114,6 +116,7 @@ VortexLatticeData::VortexLatticeData(const VortexLatticeModel& m) {
   loads.point.setZero(3, np);
   loads.point_velocity.setZero(3, np);
   loads.leading_edge_force.setZero(3, np);
+  loads.skin_friction_force.setZero(3, np);
   loads.unsteady_force.setZero(3, np);
   loads.suction.setZero(3, ns);
   loads.pressure_jump.setZero(np);
@@ -366,6 +369,10 @@ void compute_loads(const VortexLatticeModel& m, VortexLatticeData& d) {
     compute_bernoulli_loads(m, d);
   else
     compute_kutta_joukowski_loads(m, d);
+  if (m.skin_friction_viscosity > 0.0) {
+    add_skin_friction(m, d);
+    finish_loads(d);  // the totals and the power again, friction included
+  }
 }
 
 }  // namespace detail

@@ -133,6 +133,8 @@ struct VortexLatticeModel {
   /// Viscous growth of the wake's cores with age (core_growth.hpp); off: every wake
   /// segment keeps `core`.
   CoreGrowth core_growth;
+  /// ν [m²/s] of the panels' laminar skin friction (skin_friction.hpp); 0: none (inviscid).
+  double skin_friction_viscosity = 0.0;
   /// Near-wing treatment: the wing (collocation and load points) sees every wake segment
   /// older than near_wing_min_age through a core of at least this radius [m], so a wake
   /// vortex that comes back close to or through the lattice cannot put a spike into the
@@ -231,6 +233,8 @@ struct PanelLoads {
   /// rate its impulse over the step is ρ (Γₙ₊₁ − Γₙ) A n): a structure that splits the step
   /// holds it over the step rather than interpolating it (pipeline/fsi/fem_structure.hpp) [N]
   Eigen::Matrix3Xd unsteady_force;
+  /// The laminar skin friction's part of `force` (skin_friction.hpp; zero without it) [N]
+  Eigen::Matrix3Xd skin_friction_force;
   /// Suction of each strip, 3 × ns: the in-plane Kutta–Joukowski forces on its spanwise
   /// bound segments summed, before the leading-edge model acts on it [N]
   Eigen::Matrix3Xd suction;

@@ -100,6 +100,7 @@ uvlm::VortexLatticeModel lattice_model(const Case& c, double mean_chord, double 
   m.core_growth.enabled = c.numerics.core_growth;
   m.core_growth.squire_a1 = c.numerics.core_growth_a1;
   m.core_growth.kinematic_viscosity = c.numerics.kinematic_viscosity;
+  m.skin_friction_viscosity = c.numerics.laminar_skin_friction ? c.numerics.kinematic_viscosity : 0.0;
   m.near_wing_core = c.numerics.near_wing_core * mean_chord;
   // The wake younger than a quarter cycle is summed anew at every solve of a step, the
   // older one may be held within it (uvlm/old_wake_hold.hpp; docs/fsi.md, "One coupled step").

@@ -164,13 +164,43 @@ Case::Numerics read_numerics(const TomlTable& root) {
   Case::Numerics n;
   const auto t = root.find_table("numerics");
   if (!t) return n;
-  t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
-                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "lesp_critical", "sheet_merge_steps",
-                  "sheet_merge_spread_steps", "sheet_core_radius", "core_model",
-                  "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
-                  "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles", "far_wake_cycles",
-                  "wake_sum", "tree_tolerance", "wake_precision", "circulation_rate", "coupling", "max_coupling_iterations", "coupling_tolerance", "coupling_reuse_steps",
-                  "added_mass", "rho_infinity", "structure_substeps", "steady"});
+  t->expect_only({"steps_per_cycle",
+                  "cycles",
+                  "chordwise_panels",
+                  "spanwise_panels",
+                  "spacing",
+                  "chordwise_spacing",
+                  "spanwise_spacing",
+                  "load_method",
+                  "leading_edge",
+                  "skin_friction",
+                  "lesp_critical",
+                  "sheet_merge_steps",
+                  "sheet_merge_spread_steps",
+                  "sheet_core_radius",
+                  "core_model",
+                  "core_radius",
+                  "wake_order",
+                  "wake_max_rows",
+                  "free_wake",
+                  "core_growth",
+                  "core_growth_a1",
+                  "kinematic_viscosity",
+                  "near_wing_core",
+                  "frozen_wake_cycles",
+                  "far_wake_cycles",
+                  "wake_sum",
+                  "tree_tolerance",
+                  "wake_precision",
+                  "circulation_rate",
+                  "coupling",
+                  "max_coupling_iterations",
+                  "coupling_tolerance",
+                  "coupling_reuse_steps",
+                  "added_mass",
+                  "rho_infinity",
+                  "structure_substeps",
+                  "steady"});
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
   // The product in 64 bits, against a documented maximum (an int would wrap).
@@ -187,6 +217,7 @@ Case::Numerics read_numerics(const TomlTable& root) {
   n.load_method = t->get_choice("load_method", kLoadMethodNames, std::optional(n.load_method));
   n.circulation_rate = t->get_choice("circulation_rate", kCirculationRateNames, std::optional(n.circulation_rate));
   n.leading_edge = t->get_choice("leading_edge", kLeadingEdgeNames, std::optional(n.leading_edge));
+  n.laminar_skin_friction = t->get_choice("skin_friction", {"none", "laminar"}, "none") == "laminar";
   n.lesp_critical = t->get_double("lesp_critical", n.lesp_critical, Bounds{0.0, 10.0, true, false});
   n.sheet_merge_steps = t->get_int("sheet_merge_steps", n.sheet_merge_steps, Bounds::closed(0, 1000000));
   n.sheet_merge_spread_steps =

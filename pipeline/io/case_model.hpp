@@ -121,6 +121,9 @@ struct Case {
     uvlm::Spacing spanwise_spacing = uvlm::Spacing::Uniform;   ///< "uniform" | "cosine"
     uvlm::LoadMethod load_method = uvlm::LoadMethod::Bernoulli;  ///< "bernoulli" | "kutta_joukowski"
     uvlm::LeadingEdge leading_edge = uvlm::LeadingEdge::Separated;  ///< "none" | "attached" | "separated" | "shed"
+    /// `skin_friction = "laminar"`: the panels' Blasius skin friction with kinematic_viscosity
+    /// (uvlm/skin_friction.hpp); "none" (default): the inviscid lattice.
+    bool laminar_skin_friction = false;
     /// Critical leading-edge suction parameter of leading_edge = "shed" (uvlm/leading_edge_sheet.hpp)
     double lesp_critical = 0.11;
     /// leading_edge = "shed": the sheet's rings merge in pairs from this many steps old, 0 =

@@ -127,10 +127,11 @@ std::string describe_case(const Case& c, std::optional<double> stream_radius) {
   s += line("  panels                 %d chordwise x %d spanwise (%s x %s spacing)", n.chordwise_panels,
             n.spanwise_panels, std::string(wings::choice_name(kSpacingNames, n.chordwise_spacing)).c_str(),
             std::string(wings::choice_name(kSpacingNames, n.spanwise_spacing)).c_str());
-  s += line("  loads                  %s, leading edge %s%s",
+  s += line("  loads                  %s, leading edge %s%s%s",
             std::string(wings::choice_name(kLoadMethodNames, n.load_method)).c_str(),
             std::string(wings::choice_name(kLeadingEdgeNames, n.leading_edge)).c_str(),
-            n.circulation_rate == CirculationRate::Bdf1 ? ", dGamma/dt first order (bdf1)" : "");
+            n.circulation_rate == CirculationRate::Bdf1 ? ", dGamma/dt first order (bdf1)" : "",
+            n.laminar_skin_friction ? ", laminar skin friction" : "");
   if (n.leading_edge == uvlm::LeadingEdge::Shed)
     s += line(
         "  critical LESP          %.4g, sheet's core %.4g mean chords, its rings merged from %s%s",

@@ -18,7 +18,7 @@ namespace flapsim::io {
 // keeps runs by their hash and wants series checks for them (docs/sweeps.md, "Resuming a
 // sweep").
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages; they change no result.)
-static_assert(sizeof(Case) == 1480, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(Case) == 1488, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 344 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
@@ -187,6 +187,7 @@ void case_fields(Canonical& out, const Case& c) {
   // Only when not the default, so the cases hashed before the key existed keep their hash.
   if (n.coupling != CouplingMethod::Aitken) out.line("numerics.coupling", static_cast<int>(n.coupling));
   if (n.steady) out.line("numerics.steady", n.steady);  // only then: other fingerprints unchanged
+  if (n.laminar_skin_friction) out.line("numerics.skin_friction", 1);  // only then (as steady)
   out.line("numerics.max_coupling_iterations", n.max_coupling_iterations);
   out.line("numerics.coupling_tolerance", n.coupling_tolerance);
   if (!n.added_mass) out.line("numerics.added_mass", n.added_mass);  // only when off (as steady)

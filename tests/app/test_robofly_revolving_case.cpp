@@ -54,4 +54,36 @@ TEST(RoboflyRevolvingCase, TheShippedCaseAt50And60DegreesIsWithinTheFitsBoundsAn
   }
 }
 
+TEST(RoboflyRevolvingCase, LaminarSkinFrictionBringsTheDragAt40To60DegreesWithinTheFitsBound) {
+  // numerics.skin_friction = "laminar" (uvlm/skin_friction.hpp: Blasius, 1.328/√Re_c a side,
+  // with the case's ν, set for the experiment's Re = 136 before the option existed; nothing
+  // calibrated). Measured 1 Dec against the inviscid lattice's (docs/uvlm.md, "Skin
+  // friction"): CD at 10°–60° 0.281, 0.494, 0.790, 1.296, 1.876, 2.490 (−29, −16, −17, −10, −5,
+  // −1 % of the fit; inviscid −88 … −2 %), CL 0.492 … 1.469 (−19, −16, −20, −16, −11, −7 %;
+  // inviscid −12 … −3 %): the drag within 15 % at 40°–60° and the lift farther off.
+  flapsim::test::ScratchDir dir("robofly_revolving_friction");
+  std::string toml = flapsim::test::shipped_case_text("robofly_revolving");
+  const std::string every = "vtk_every = 4", shed = "\nleading_edge = \"shed\"";
+  ASSERT_NE(toml.find(every), std::string::npos);
+  toml.replace(toml.find(every), every.size(), "vtk_every = 0");
+  ASSERT_NE(toml.find(shed), std::string::npos);
+  toml.replace(toml.find(shed), shed.size(), std::string(shed) + "\nskin_friction = \"laminar\"");
+  std::ofstream(dir / "case.toml") << toml;
+  const auto outcome = flapsim::test::run_flapsim_capturing_stderr(
+      dir.path(), "sweep " + (dir / "case.toml").string() + " --vary kinematics.rotation=10,40,50,60 -q -o " +
+                      (dir / "sweep").string());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const auto table = flapsim::test::read_sweep_table((dir / "sweep" / "sweep.csv").string());
+  ASSERT_EQ(table.rows.size(), 4u);
+  for (const auto& row : table.rows) {
+    ASSERT_EQ(row.at("status"), "ok");
+    const double alpha = std::stod(row.at("kinematics.rotation"));
+    const double cd = std::stod(row.at("mean_CD"));
+    if (alpha >= 40.0)
+      EXPECT_NEAR(cd / fit_drag(alpha), 1.0, 0.15) << alpha;  // issue 30's bound on CD
+    else  // 10°: the friction is most of the drag; measured 0.281 (inviscid 0.046)
+      EXPECT_NEAR(cd, 0.281, 0.01);
+  }
+}
+
 }  // namespace
