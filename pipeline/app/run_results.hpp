@@ -283,9 +283,11 @@ inline constexpr std::array kRunReport = {
                [](const RunResults& r) { return r.has("settled_mean_CL"); }},
     ReportLine{"in vacuum (air = \"none\"): no aerodynamic loads, no lift",
                [](const RunResults& r) { return !r.has("mean_power_W"); }},
-    ReportLine{"mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W}, lift/power "
-               "{lift_per_power_N_W}; coefficients on {reference_speed_m_s} ({reference_kind})",
-               [](const RunResults& r) { return r.has("mean_power_W"); }},
+    ReportLine{
+        "mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W}, lift/power "
+        "{lift_per_power_N_W}; coefficients on {reference_speed_m_s} ({reference_kind}), Reynolds number "
+        "{reynolds_number}",
+        [](const RunResults& r) { return r.has("mean_power_W"); }},
     ReportLine{"drive: mean power {mean_drive_power_W} (peak {peak_drive_power_W}), peak moment "
                "{peak_drive_moment_Nm}"},
     ReportLine{"coupling: {mean_coupling_iterations} sub-iterations per step on average "
