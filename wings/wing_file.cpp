@@ -472,15 +472,19 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
   // Inside the outline, or on its edge within 0.1 % of the span; segments are sampled
   // so a vein cannot cut across a notch between two inside points.
   const double tol = 1e-3 * span;
-  // A point outside the outline by no more than the tolerance is moved onto the outline
-  // (its nearest point): left outside, gmsh does not embed it in the membrane and the vein
-  // floats unsupported (a spar 0.03 mm outside a 40 mm wing's edge made the FEM singular).
+  // A point off the outline's edge by no more than the tolerance, outside or inside, is
+  // moved onto the edge (its nearest point). Left outside, gmsh does not embed it in the
+  // membrane and the vein floats unsupported (a spar 0.03 mm outside a 40 mm wing's edge made
+  // the FEM singular); left inside, gmsh meshes the gap into sliver triangles (a root spar
+  // written to start on a swept leading edge, 1.1 µm inside it on a 95 mm wing: its end
+  // node held by a triangle of 3 mm sides and 1 µm height, on which the FEM's Newton
+  // stalled at step 263 of a film wing's run; tests/data/swept_film_50um_wing.toml).
   // A point off the edge by round-off only (a chord point at xi = 1 lies 1.7e-18 m outside
   // wings/hawkmoth.toml's trailing edge) is left as it is: gmsh merges it, and moving it
   // would change the shipped wings' meshes in the last digits.
   const double round_off = 1e-12 * span;
   for (auto& q : vein.points)
-    if (const double d = distance_to_boundary(outline, q); d > round_off && d <= tol && !contains_point(outline, q, 0.0))
+    if (const double d = distance_to_boundary(outline, q); d > round_off && d <= tol)
       q = nearest_boundary_point(outline, q);
   for (std::size_t i = 0; i < vein.points.size(); ++i) {
     const int nsamp = i == 0 ? 1 : 8;

@@ -186,6 +186,22 @@ TEST(VeinOnOutline, APointOutsideWithinTheToleranceIsMovedOntoTheOutline) {
   EXPECT_EQ(e.message().find("spline"), std::string::npos) << e.what();
 }
 
+TEST(VeinOnOutline, APointInsideWithinTheToleranceIsMovedOntoTheOutlineToo) {
+  // A user's root spar written to start on a swept leading edge, 1.1 µm inside it on a 95 mm
+  // wing (tests/data/swept_film_50um_wing.toml): gmsh meshed the gap into a triangle of 0.03°
+  // (fem.SweptFilmWingMesh.*). Here 1 µm inside the edge x = 5 mm of the 40 mm rectangle
+  // (tolerance 0.04 mm): onto the edge, x = 5 mm exactly; 1 mm inside stays.
+  std::string text = wing_text(kRectangle);
+  const std::string spar = "points = [[1.0, 0.0], [1.0, 30.0]]";
+  text.replace(text.find(spar), spar.size(), "points = [[4.999, 2.0], [3.0, 30.0], [4.0, 35.0]]");
+  const w::Wing wing = w::read_wing(w::parse_toml_string(text, "v.toml"));
+  ASSERT_EQ(wing.veins[0].points.size(), 3u);
+  EXPECT_EQ(wing.veins[0].points[0].x(), 5e-3);
+  EXPECT_NEAR(wing.veins[0].points[0].y(), 2e-3, 1e-15);
+  EXPECT_EQ(wing.veins[0].points[1], Eigen::Vector2d(3e-3, 30e-3));
+  EXPECT_EQ(wing.veins[0].points[2], Eigen::Vector2d(4e-3, 35e-3));
+}
+
 TEST(VeinOnOutline, AVeinAlongAStraightRunOfSplinePointsIsToldTheCurveSwings) {
   // A user's straight edge drawn as spline control points x = 5 mm at y = 0, 10, 20, 30, 40
   // with square corners: the periodic C² spline passes through them but swings inside
