@@ -41,8 +41,7 @@ std::shared_ptr<const fsi::FemStructureModel> make_fem_structure(const io::Case&
   // (docs/fsi.md, "Added mass in the coupling"): it goes without. Nor does Newton's stop
   // from the measured contraction help it (docs/fem.md, "Newton's stop from the measured
   // contraction": the MAV film wing's five wingbeats 12 % slower with it).
-  const std::optional<MembraneWrinkle> wrinkle = typical_membrane_wrinkle(f.model);
-  const bool film = wrinkle && wrinkle->strain < kFilmWrinkleStrain;
+  const bool film = is_thin_film(typical_membrane_wrinkle(f.model));
   fem::DynamicsOptions options;
   options.rho_infinity = c.numerics.rho_infinity;
   options.linearised_geometric_force = c.structure.fem_linearised_geometric_terms;

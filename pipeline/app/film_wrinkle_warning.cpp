@@ -35,8 +35,7 @@ std::optional<MembraneWrinkle> typical_membrane_wrinkle(const fem::StructuralMod
 std::string film_wrinkle_warning(const io::Case& c, const FsiSetup& setup) {
   if (!setup.fem_structure) return "";
   const std::optional<MembraneWrinkle> median = typical_membrane_wrinkle(setup.fem_structure->structural);
-  if (!median) return "";
-  if (!(median->strain < kFilmWrinkleStrain)) return "";
+  if (!is_thin_film(median)) return "";
   char text[1000];
   std::snprintf(text, sizeof text,
                 "the FEM's membrane (%.3g um on elements of %.3g mm) buckles into wrinkles of the mesh's own "

@@ -47,6 +47,12 @@ struct MembraneWrinkle {
 /// std::nullopt for a model without shells.
 std::optional<MembraneWrinkle> typical_membrane_wrinkle(const fem::StructuralModel& model);
 
+/// A thin film: the typical element wrinkles below kFilmWrinkleStrain. What the warning below
+/// and the FEM's film settings (app::make_fem_structure) both go by.
+inline bool is_thin_film(const std::optional<MembraneWrinkle>& typical) {
+  return typical && typical->strain < kFilmWrinkleStrain;
+}
+
 /// \brief "" or the warning for a `kind = "fem"` case whose typical membrane element
 /// wrinkles below kFilmWrinkleStrain; it names the film's defaults the case takes, or a
 /// written rho_infinity above kFilmRhoInfinity.

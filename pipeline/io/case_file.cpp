@@ -164,43 +164,17 @@ Case::Numerics read_numerics(const TomlTable& root) {
   Case::Numerics n;
   const auto t = root.find_table("numerics");
   if (!t) return n;
-  t->expect_only({"steps_per_cycle",
-                  "cycles",
-                  "chordwise_panels",
-                  "spanwise_panels",
-                  "spacing",
-                  "chordwise_spacing",
-                  "spanwise_spacing",
-                  "load_method",
-                  "leading_edge",
-                  "skin_friction",
-                  "lesp_critical",
-                  "sheet_merge_steps",
-                  "sheet_merge_spread_steps",
-                  "sheet_core_radius",
-                  "core_model",
-                  "core_radius",
-                  "wake_order",
-                  "wake_max_rows",
-                  "free_wake",
-                  "core_growth",
-                  "core_growth_a1",
-                  "kinematic_viscosity",
-                  "near_wing_core",
-                  "frozen_wake_cycles",
-                  "far_wake_cycles",
-                  "wake_sum",
-                  "tree_tolerance",
-                  "wake_precision",
-                  "circulation_rate",
-                  "coupling",
-                  "max_coupling_iterations",
-                  "coupling_tolerance",
-                  "coupling_reuse_steps",
-                  "added_mass",
-                  "rho_infinity",
-                  "structure_substeps",
-                  "steady"});
+  // The keys a few to a line (one per line, as clang-format lays the list out, reads worse).
+  // clang-format off
+  t->expect_only({"steps_per_cycle", "cycles", "chordwise_panels", "spanwise_panels", "spacing",
+                  "chordwise_spacing", "spanwise_spacing", "load_method", "leading_edge", "skin_friction",
+                  "lesp_critical", "sheet_merge_steps", "sheet_merge_spread_steps", "sheet_core_radius",
+                  "core_model", "core_radius", "wake_order", "wake_max_rows", "free_wake", "core_growth",
+                  "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles",
+                  "far_wake_cycles", "wake_sum", "tree_tolerance", "wake_precision", "circulation_rate",
+                  "coupling", "max_coupling_iterations", "coupling_tolerance", "coupling_reuse_steps",
+                  "added_mass", "rho_infinity", "structure_substeps", "steady"});
+  // clang-format on
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
   // The product in 64 bits, against a documented maximum (an int would wrap).
