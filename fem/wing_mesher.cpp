@@ -2,14 +2,18 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
+#include <limits>
 #include <new>
-#include <vector>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "fem/gmsh_boundary.hpp"
 #include "fem/gmsh_mesh_conversion.hpp"
 #include "fem/gmsh_module_loader.hpp"
 #include "wings/input_error.hpp"
+#include "wings/planform_geometry.hpp"
 
 namespace flapsim::fem {
 
@@ -51,6 +55,40 @@ GmshWingRequest request_for(const wings::Wing& wing, const MeshOptions& options)
   return r;
 }
 
+/// The vein that vein \p v lies along, if one does: each of v's points on one other vein's
+/// line (to round-off, 1e-9 of the span), so that gmsh's fragments give their shared line
+/// to one of them.
+std::optional<std::size_t> vein_lying_along(const wings::Wing& wing, std::size_t v) {
+  for (std::size_t u = 0; u < wing.veins.size(); ++u) {
+    if (u == v) continue;
+    const auto& line = wing.veins[u].points;
+    bool along = !wing.veins[v].points.empty();
+    for (const Eigen::Vector2d& p : wing.veins[v].points) {
+      double d = std::numeric_limits<double>::infinity();  // [m]
+      for (std::size_t k = 0; k + 1 < line.size(); ++k)
+        d = std::min(d, (wings::nearest_point_on_segment(line[k], line[k + 1], p) - p).norm());
+      along = along && d <= 1e-9 * wing.span;
+    }
+    if (along) return u;
+  }
+  return std::nullopt;
+}
+
+/// No vein lies along another: gmsh would mesh the shared line once and give its elements
+/// to one of the two (the other vein's section lost there, or the vein without elements).
+void check_no_vein_along_another(const wings::Wing& wing) {
+  for (std::size_t v = 0; v < wing.veins.size(); ++v)
+    if (const auto under = vein_lying_along(wing, v)) {
+      const auto& vein = wing.veins[v];
+      throw InputError(wing.source_file, vein.line, vein.key.empty() ? std::string("veins") : vein.key,
+                       "vein '" + vein.name + "' lies along vein '" + wing.veins[*under].name +
+                           "': gmsh meshes the two as one line and gives its elements to one of them (ends "
+                           "written within the junction tolerance of a vein are moved onto it, docs/"
+                           "wing_file.md, \"[[veins]]\"); to stiffen a stretch of a vein give it a tapered "
+                           "section or split it into veins end to end, or move this vein apart");
+    }
+}
+
 /// Every vein embedded in the membrane: each node of its beam elements is a node of a
 /// shell triangle. A vein (or a piece of one) that gmsh leaves outside the surface shares
 /// no nodes with it and would float unsupported (singular stiffness in modes/reduce):
@@ -87,6 +125,7 @@ void check_veins_embedded(const wings::Wing& wing, const Mesh& mesh) {
 
 Mesh mesh_wing(const wings::Wing& wing, const MeshOptions& options) {
   const GmshWingRequest request = request_for(wing, options);
+  check_no_vein_along_another(wing);
   MeshWithGmshFn& mesh_with_gmsh = gmsh_mesher();
   GmshWingMesh result;
   mesh_with_gmsh(request, result);

@@ -23,14 +23,19 @@ bool on_segment_box(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Ei
 
 double distance_to_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                            const Eigen::Vector2d& p) {
-  const Eigen::Vector2d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  if (len2 == 0.0) return (p - a).norm();
-  const double t = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
-  return (a + t * ab - p).norm();
+  return (nearest_point_on_segment(a, b, p) - p).norm();
 }
 
 }  // namespace
+
+Eigen::Vector2d nearest_point_on_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                         const Eigen::Vector2d& p) {
+  const Eigen::Vector2d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  if (len2 == 0.0) return a;
+  const double t = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
+  return a + t * ab;
+}
 
 double polygon_signed_area(const Polygon& poly) {
   const std::size_t n = poly.size();
@@ -116,10 +121,7 @@ Eigen::Vector2d nearest_boundary_point(const Polygon& poly, const Eigen::Vector2
   Eigen::Vector2d nearest = p;
   const std::size_t n = poly.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d a = poly[i], d = poly[(i + 1) % n] - a;
-    const double len2 = d.squaredNorm();
-    const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-    const Eigen::Vector2d q = a + t * d;
+    const Eigen::Vector2d q = nearest_point_on_segment(poly[i], poly[(i + 1) % n], p);
     if ((p - q).norm() < best) {
       best = (p - q).norm();
       nearest = q;

@@ -38,6 +38,10 @@ bool segments_intersect(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
 /// touching edges. O(n²), fine for a few hundred points.
 std::optional<std::pair<int, int>> find_self_intersection(const Polygon& polygon);
 
+/// The point of segment [a, b] nearest to p [m] (a itself for a segment of zero length).
+Eigen::Vector2d nearest_point_on_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                         const Eigen::Vector2d& p);
+
 /// Distance from p to the polygon boundary [m].
 double distance_to_boundary(const Polygon& polygon, const Eigen::Vector2d& p);
 

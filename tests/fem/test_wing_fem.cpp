@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <set>
 
@@ -181,6 +183,35 @@ TEST(WingMesh, AVeinOutsideTheMembraneIsRefusedNamingIt) {
     vein0 += b.vein == 0;
   }
   EXPECT_GE(vein0, 19);  // 19 mm at vein_element_size 0.5 mm: at least 19 elements
+}
+
+TEST(WingMesh, AVeinLyingAlongAnotherIsRefusedNamingBoth) {
+  // A second vein written on top of a stretch of the leading edge (a "doubler"; or one whose
+  // two ends the file reader moved onto it, wings/vein_junctions.hpp): gmsh meshes the shared
+  // stretch as one line and gives it to one vein; here the leading edge took it and the
+  // doubler, without elements, was refused as "shorter than the mesh tolerance, or outside
+  // the membrane", neither of which it was; had the doubler taken it, the leading edge's
+  // section there would have been lost without a word. Refused before meshing, either way.
+  wings::Wing w = small_wing();
+  w.source_file = "small.toml";
+  wings::Vein doubler = w.veins[0];
+  doubler.name = "doubler";
+  doubler.points = {{1.5e-3, 5e-3}, {1.5e-3, 8e-3}};
+  doubler.key = "veins[2].points";
+  doubler.line = 30;
+  w.veins.push_back(doubler);
+  try {
+    mesh_wing(w);
+    ADD_FAILURE() << "a vein without elements was meshed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 30);
+    EXPECT_EQ(e.key(), "veins[2].points");
+    EXPECT_NE(e.message().find("vein 'doubler' lies along vein 'leading edge'"), std::string::npos) << e.what();
+  }
+  // 0.1 mm beside it, it is a vein of its own.
+  w.veins[2].points = {{1.4e-3, 5e-3}, {1.4e-3, 8e-3}};
+  const Mesh mesh = mesh_wing(w);
+  EXPECT_GE(std::count_if(mesh.beams.begin(), mesh.beams.end(), [](const BeamElement& b) { return b.vein == 2; }), 6);
 }
 
 }  // namespace

@@ -189,7 +189,7 @@ TEST(VeinOnOutline, APointOutsideWithinTheToleranceIsMovedOntoTheOutline) {
 TEST(VeinOnOutline, APointInsideWithinTheToleranceIsMovedOntoTheOutlineToo) {
   // A user's root spar written to start on a swept leading edge, 1.1 µm inside it on a 95 mm
   // wing (tests/data/swept_film_50um_wing.toml): gmsh meshed the gap into a triangle of 0.03°
-  // (fem.SweptFilmWingMesh.*). Here 1 µm inside the edge x = 5 mm of the 40 mm rectangle
+  // (fem.MeshSlivers.*). Here 1 µm inside the edge x = 5 mm of the 40 mm rectangle
   // (tolerance 0.04 mm): onto the edge, x = 5 mm exactly; 1 mm inside stays.
   std::string text = wing_text(kRectangle);
   const std::string spar = "points = [[1.0, 0.0], [1.0, 30.0]]";

@@ -10,6 +10,7 @@
 #include <new>
 #include <string>
 
+#include "fem/mesh_quality.hpp"
 #include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/app/cli/exit_status.hpp"
 #include "pipeline/app/interruption.hpp"
@@ -32,6 +33,11 @@ void check_chain_option(const std::string& chain_file) {
 const wings::Wing& print_wing_warnings(const wings::Wing& wing) {
   for (const InputWarning& w : wing.warnings) std::fprintf(stderr, "flapsim: warning: %s\n", w.text().c_str());
   return wing;
+}
+
+void print_mesh_warnings(const fem::Mesh& mesh, const wings::Wing& wing) {
+  if (const std::string w = fem::sliver_warning(mesh, wing); !w.empty())
+    std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
 }
 
 const io::Case& print_case_warnings(const io::Case& c) {

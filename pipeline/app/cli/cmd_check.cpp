@@ -29,8 +29,12 @@ namespace flapsim::cli {
 namespace {
 
 /// gmsh's dry run: the wing is meshed (no file written), so an outline or mesh sizes
-/// gmsh cannot handle fail here, as they would in mesh, modes, reduce and run.
-void check_meshable(const wings::Wing& wing) { (void)fem::mesh_wing(wing); }
+/// gmsh cannot handle fail here, as they would in mesh, modes, reduce and run. With
+/// \p warn a sliver in the mesh is warned about, as mesh, modes and reduce warn.
+void check_meshable(const wings::Wing& wing, bool warn) {
+  const fem::Mesh mesh = fem::mesh_wing(wing);
+  if (warn) print_mesh_warnings(mesh, wing);
+}
 
 /// Everything `flapsim run` checks before its first step, without running: the chain file,
 /// a wing for a run in air, loads and markers on existing bodies, the wing meshable when
@@ -60,7 +64,7 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
     // process) is exit status 3, as in run (numerical_stage.hpp), not a system error.
     const app::FsiSetup setup = app::numerical_stage("check setup", [&] {
       return app::build_fsi_setup_watched(c, options, "check", [&] {
-        if (reduced_in_process && wing) check_meshable(*wing);
+        if (reduced_in_process && wing) check_meshable(*wing, true);
       });
     });
     bodies = setup.chain().num_bodies();
@@ -75,7 +79,8 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
   text += reynolds;
   text += "  " + app::describe(estimate) + "\n";
   if (wing) {
-    if (!reduced_in_process) check_meshable(*wing);
+    // An FEM case's sliver is among the setup's warnings; a chain file's run has no FEM.
+    if (!reduced_in_process) check_meshable(*wing, false);
     text += "\n" + wings::describe_wing(*wing);
   }
   return text;
@@ -93,7 +98,7 @@ std::string check_file(const std::string& path, const std::string& chain_file) {
   if (wing) {
     if (!chain_file.empty()) throw CLI::ValidationError("--chain", "applies to a case file, not a wing file");
     const wings::Wing w = print_wing_warnings(wings::read_wing(root));
-    check_meshable(w);
+    check_meshable(w, true);
     return wings::describe_wing(w);
   }
   if (case_file) {

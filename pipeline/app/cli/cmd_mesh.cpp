@@ -48,6 +48,7 @@ void run_mesh(const MeshArgs& args) {
   fem::MeshOptions opt;
   opt.msh_path = staged;
   const fem::Mesh mesh = fem::mesh_wing(wing, opt);
+  print_mesh_warnings(mesh, wing);
   io::publish_file_atomically(
       msh,
       [&](const std::filesystem::path& tmp) {

@@ -59,6 +59,7 @@ void run_modes(const ModesArgs& args) {
       app::compute_wing_modes(wing, args.modes, args.bodies, command_threads(), [&](const std::string& s) { monitor.stage(s); });
   const fem::WingFem& fem = r.fem;
   const fem::Mesh& mesh = fem.model.mesh;
+  print_mesh_warnings(mesh, wing);
   const fem::WingModes& m = r.modes;
   const std::vector<io::ModeLabel>& labels = r.labels;
   const std::vector<io::StaticResult>& results = r.statics;

@@ -61,6 +61,7 @@ void run_reduce(const ReduceOptions& o) {
   // A failing solve in the FEM or the reduction is a numerical failure (exit 3).
   monitor.stage("mesh and FEM matrices");
   const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
+  print_mesh_warnings(fem.model.mesh, wing);
   monitor.stage("FEM modes");
   const fem::WingModes modes = app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, o.modes); });
   monitor.stage("static load cases of the clamped wing");

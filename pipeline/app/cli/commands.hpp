@@ -10,6 +10,7 @@
 namespace CLI { class App; }
 namespace flapsim::wings { struct Wing; }
 namespace flapsim::io { struct Case; }
+namespace flapsim::fem { struct Mesh; }
 
 namespace flapsim::cli {
 
@@ -28,6 +29,10 @@ void check_chain_option(const std::string& chain_file);
 /// Prints the wing's plausibility warnings on stderr ("flapsim: warning: FILE:LINE: key
 /// 'KEY': MESSAGE", docs/wing_file.md) and returns the wing.
 const wings::Wing& print_wing_warnings(const wings::Wing& wing);
+
+/// Prints the warning for a sliver triangle in the wing's mesh (fem/mesh_quality.hpp), if
+/// there is one, as print_wing_warnings.
+void print_mesh_warnings(const fem::Mesh& mesh, const wings::Wing& wing);
 
 /// Prints the case's warnings on stderr (io::Case::warnings), as print_wing_warnings.
 const io::Case& print_case_warnings(const io::Case& c);

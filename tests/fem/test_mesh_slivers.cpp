@@ -1,0 +1,100 @@
+// Sliver triangles in a wing's mesh (fem/mesh_quality.hpp) and the two places they came from.
+// A user's swept film wing whose root spar was written to start on the leading edge but lay
+// 1.1 µm inside it (tests/data/swept_film_50um_wing.toml): gmsh meshed the gap into a
+// triangle of 0.028°, and its FEM's Newton stalled on it; the spar's end is now moved onto
+// the edge (wings/wing_file.cpp). A cross vein written to start 1 µm off the spar: 0.023°;
+// its end is now moved onto the spar (wings/vein_junctions.hpp). What neither catches (a
+// vein's inner point beside another vein) is warned about.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "common/scratch_dir.hpp"
+#include "fem/mesh_quality.hpp"
+#include "fem/wing_mesher.hpp"
+#include "wings/vein_junctions.hpp"
+#include "wings/wing_file.hpp"
+
+namespace flapsim::fem {
+namespace {
+
+const std::string kSweptFilmWing = std::string(FLAPSIM_SOURCE_DIR) + "/tests/data/swept_film_50um_wing.toml";
+
+/// The swept film wing with one more vein, written to `dir`/wing.toml.
+std::string swept_wing_with_vein(const test::ScratchDir& dir, const std::string& points) {
+  const std::string path = (dir / "wing.toml").string();
+  std::stringstream shipped;
+  shipped << std::ifstream(kSweptFilmWing).rdbuf();
+  std::ofstream(path) << shipped.str() << "\n[[veins]]\nname = \"cross vein\"\npoints = " << points
+                      << "\nouter_diameter = 0.6\nwall = 0.3\nmaterial = \"carbon\"\n";
+  return path;
+}
+
+TEST(MeshSlivers, TheSmallestAngleOfATriangleIsFoundAndWhereItLies) {
+  // A right triangle of legs 1 mm and 1 µm: its smallest angle atan(1e-3) = 0.0572958°.
+  Mesh mesh;
+  mesh.nodes = {{0.0, 0.0, 0.0}, {1e-3, 0.0, 0.0}, {0.0, 1e-6, 0.0}, {0.0, -1e-3, 0.0}};
+  mesh.triangles = {{0, 1, 2}, {0, 3, 1}};  // the second a right isosceles triangle, 45°
+  const SmallestAngle s = smallest_triangle_angle(mesh);
+  EXPECT_NEAR(s.degrees, std::atan(1e-3) * 180.0 / std::numbers::pi, 1e-12);
+  EXPECT_NEAR(s.centroid.x(), 1e-3 / 3.0, 1e-18);
+  EXPECT_NEAR(s.centroid.y(), 1e-6 / 3.0, 1e-18);
+  EXPECT_NEAR(s.longest_edge, std::hypot(1e-3, 1e-6), 1e-18);
+  wings::Wing wing;
+  wing.source_file = "w.toml";
+  const std::string warning = sliver_warning(mesh, wing);
+  EXPECT_NE(warning.find("w.toml: the wing's mesh has a sliver triangle, 0.0573 deg"), std::string::npos)
+      << warning;
+  EXPECT_NE(warning.find("near (x, y) = (0.3333, 0.0003333) mm"), std::string::npos) << warning;
+  // Without the sliver the smallest angle is 45° and nothing is warned.
+  mesh.triangles = {{0, 3, 1}};
+  EXPECT_NEAR(smallest_triangle_angle(mesh).degrees, 45.0, 1e-12);
+  EXPECT_EQ(sliver_warning(mesh, wing), "");
+}
+
+TEST(MeshSlivers, NoSliverWhereTheSparMeetsTheLeadingEdge) {
+  // Frontal-Delaunay's triangles next to a vein of finer elements: measured 8.09°; the sliver
+  // was 0.028°.
+  const wings::Wing wing = wings::load_wing_file(kSweptFilmWing);
+  const Mesh mesh = mesh_wing(wing);
+  EXPECT_GT(smallest_triangle_angle(mesh).degrees, 5.0);
+  EXPECT_EQ(sliver_warning(mesh, wing), "");
+}
+
+TEST(MeshSlivers, NoSliverWhereACrossVeinWrittenAMicrometreOffTheSparStarts) {
+  // Its end at y = 7.001 mm, 1 µm off the root spar (y = 7 mm; 3 mm elements, tolerance
+  // tan(0.5°) · 3 mm = 26 µm): as written 0.023° (measured before the junction rule), now
+  // the wing's own smallest, 8.09°.
+  const test::ScratchDir dir("mesh_slivers_cross");
+  const wings::Wing wing =
+      wings::load_wing_file(swept_wing_with_vein(dir, "[[-20.0, 7.001], [-45.0, 94.0]]"));
+  // On the spar: its line (the spar's first point was itself moved onto the swept leading
+  // edge, so the spar is not exactly y = 7 mm) passes through the cross vein's end.
+  const Eigen::Vector2d a = wing.veins[1].points.front(), b = wing.veins[1].points.back();
+  const Eigen::Vector2d p = wing.veins[2].points.front();
+  EXPECT_LT(std::abs((b - a).x() * (p - a).y() - (b - a).y() * (p - a).x()) / (b - a).norm(), 1e-15);
+  EXPECT_GT(smallest_triangle_angle(mesh_wing(wing)).degrees, 5.0);
+}
+
+TEST(MeshSlivers, AVeinsInnerPointBesideAnotherVeinIsWarnedAboutWhereItLies) {
+  // A kinked vein whose corner is 2 µm above the root spar (y = 7.002 mm at x = −25 mm):
+  // measured 0.0583°, 2.81 mm long, at (−24.71, 7.001) mm.
+  const test::ScratchDir dir("mesh_slivers_kink");
+  const wings::Wing wing =
+      wings::load_wing_file(swept_wing_with_vein(dir, "[[-20.0, 20.0], [-25.0, 7.002], [-35.0, 40.0]]"));
+  const Mesh mesh = mesh_wing(wing);
+  const SmallestAngle s = smallest_triangle_angle(mesh);
+  EXPECT_LT(s.degrees, 0.1);
+  EXPECT_NEAR(s.centroid.y(), 7.0e-3, 5e-6);
+  EXPECT_NEAR(s.centroid.x(), -25.0e-3, 1.5e-3);
+  const std::string warning = sliver_warning(mesh, wing);
+  EXPECT_NE(warning.find("wing.toml: the wing's mesh has a sliver triangle"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("7.001) mm"), std::string::npos) << warning;
+}
+
+}  // namespace
+}  // namespace flapsim::fem
