@@ -14,6 +14,7 @@
 #include "fem/gmsh_module_loader.hpp"
 #include "wings/input_error.hpp"
 #include "wings/planform_geometry.hpp"
+#include "wings/vein_junctions.hpp"
 
 namespace flapsim::fem {
 
@@ -28,26 +29,33 @@ namespace {
                        "near-touching edges), the veins and mesh.element_size");
 }
 
-/// The wing as gmsh is asked to mesh it: sizes resolved and checked, zero-length vein
-/// segments dropped.
-GmshWingRequest request_for(const wings::Wing& wing, const MeshOptions& options) {
+/// The wing as gmsh is asked to mesh it: sizes resolved and checked, \p veins (the wing's,
+/// their junctions closed for the resolved vein size) returned, zero-length vein segments
+/// dropped.
+GmshWingRequest request_for(const wings::Wing& wing, const MeshOptions& options,
+                            std::vector<wings::Vein>& veins) {
   const double h = options.element_size > 0.0 ? options.element_size : wing.mesh.element_size;
   double hv = options.vein_element_size > 0.0 ? options.vein_element_size : wing.mesh.vein_element_size;
   if (!(h > 0.0)) throw InputError(wing.source_file, 0, "mesh.element_size", "must be positive");
   if (!(hv > 0.0)) hv = h;
   hv = std::min(hv, h);
   if (wing.outline.size() < 3) throw InputError(wing.source_file, 0, "planform", "outline needs at least 3 points");
+  // A vein's end written so near another vein that the gap would be meshed into slivers is
+  // on it (wings/vein_junctions.hpp); round-off is left alone, as on the outline.
+  veins = wing.veins;
+  wings::snap_vein_ends_onto_other_veins(veins, wings::vein_junction_tolerance(wing.span, hv),
+                                         1e-12 * wing.span);
 
   GmshWingRequest r;
   r.model_name = wing.name.empty() ? "wing" : wing.name;
   for (const auto& p : wing.outline) r.outline.push_back({p.x(), p.y()});
-  for (size_t v = 0; v < wing.veins.size(); ++v) {
-    const auto& P = wing.veins[v].points;
+  for (size_t v = 0; v < veins.size(); ++v) {
+    const auto& P = veins[v].points;
     for (size_t i = 0; i + 1 < P.size(); ++i) {
       if ((P[i + 1] - P[i]).norm() < 1e-9 * h) continue;
       r.vein_segments.push_back({static_cast<int>(v), {P[i].x(), P[i].y()}, {P[i + 1].x(), P[i + 1].y()}});
     }
-    r.vein_names.push_back(wing.veins[v].name);
+    r.vein_names.push_back(veins[v].name);
   }
   r.element_size = h;
   r.vein_element_size = hv;
@@ -58,16 +66,17 @@ GmshWingRequest request_for(const wings::Wing& wing, const MeshOptions& options)
 /// The vein that vein \p v lies along, if one does: each of v's points on one other vein's
 /// line (to round-off, 1e-9 of the span), so that gmsh's fragments give their shared line
 /// to one of them.
-std::optional<std::size_t> vein_lying_along(const wings::Wing& wing, std::size_t v) {
-  for (std::size_t u = 0; u < wing.veins.size(); ++u) {
+std::optional<std::size_t> vein_lying_along(const std::vector<wings::Vein>& veins, std::size_t v,
+                                            double span) {
+  for (std::size_t u = 0; u < veins.size(); ++u) {
     if (u == v) continue;
-    const auto& line = wing.veins[u].points;
-    bool along = !wing.veins[v].points.empty();
-    for (const Eigen::Vector2d& p : wing.veins[v].points) {
+    const auto& line = veins[u].points;
+    bool along = !veins[v].points.empty();
+    for (const Eigen::Vector2d& p : veins[v].points) {
       double d = std::numeric_limits<double>::infinity();  // [m]
       for (std::size_t k = 0; k + 1 < line.size(); ++k)
         d = std::min(d, (wings::nearest_point_on_segment(line[k], line[k + 1], p) - p).norm());
-      along = along && d <= 1e-9 * wing.span;
+      along = along && d <= 1e-9 * span;
     }
     if (along) return u;
   }
@@ -76,9 +85,9 @@ std::optional<std::size_t> vein_lying_along(const wings::Wing& wing, std::size_t
 
 /// No vein lies along another: gmsh would mesh the shared line once and give its elements
 /// to one of the two (the other vein's section lost there, or the vein without elements).
-void check_no_vein_along_another(const wings::Wing& wing) {
-  for (std::size_t v = 0; v < wing.veins.size(); ++v)
-    if (const auto under = vein_lying_along(wing, v)) {
+void check_no_vein_along_another(const wings::Wing& wing, const std::vector<wings::Vein>& veins) {
+  for (std::size_t v = 0; v < veins.size(); ++v)
+    if (const auto under = vein_lying_along(veins, v, wing.span)) {
       const auto& vein = wing.veins[v];
       throw InputError(wing.source_file, vein.line, vein.key.empty() ? std::string("veins") : vein.key,
                        "vein '" + vein.name + "' lies along vein '" + wing.veins[*under].name +
@@ -124,8 +133,9 @@ void check_veins_embedded(const wings::Wing& wing, const Mesh& mesh) {
 }  // namespace
 
 Mesh mesh_wing(const wings::Wing& wing, const MeshOptions& options) {
-  const GmshWingRequest request = request_for(wing, options);
-  check_no_vein_along_another(wing);
+  std::vector<wings::Vein> veins;  // the wing's, their junctions closed
+  const GmshWingRequest request = request_for(wing, options, veins);
+  check_no_vein_along_another(wing, veins);
   MeshWithGmshFn& mesh_with_gmsh = gmsh_mesher();
   GmshWingMesh result;
   mesh_with_gmsh(request, result);

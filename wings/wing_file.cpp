@@ -17,7 +17,6 @@
 #include "wings/outline_shapes.hpp"
 #include "wings/path_from_file_hint.hpp"
 #include "wings/planform_geometry.hpp"
-#include "wings/vein_junctions.hpp"
 
 namespace flapsim::wings {
 
@@ -623,10 +622,6 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
     wing.mesh.vein_element_size =
         mesh->get_length("vein_element_size", wing.mesh.element_size, Bounds::positive());
   }
-  // A vein's end written next to another vein, so near that the gap would be meshed into
-  // slivers, is on it (vein_junctions.hpp); round-off is left alone, as on the outline.
-  snap_vein_ends_onto_other_veins(wing.veins, vein_junction_tolerance(wing.span, wing.mesh.vein_element_size),
-                                  1e-12 * wing.span);
   if (const auto surface = root.find_table("surface")) wing.surface = read_surface_shape(*surface);
   // The mesh-size rules (mesh_budget.hpp): refused here, before gmsh runs out of memory.
   const auto mesh = root.find_table("mesh");

@@ -111,15 +111,23 @@ TEST(FemCommands, MeshAndCheckWarnOfASliverNamingWhereItLies) {
   text << std::ifstream(shipped).rdbuf();
   const fs::path wing = scratch / "kinked.toml";
   std::ofstream(wing) << text.str()
-                      << "\n[[veins]]\nname = \"kinked vein\"\npoints = [[-20.0, 20.0], [-25.0, 7.002], [-35.0, 40.0]]\n"
+                      << "\n[[veins]]\nname = \"kinked vein\"\n"
+                         "points = [[-20.0, 20.0], [-25.0, 7.002], [-35.0, 40.0]]\n"
                          "outer_diameter = 0.6\nwall = 0.3\nmaterial = \"carbon\"\n";
   for (const std::string command : {"mesh", "check"}) {
     const auto r = flapsim::test::run_flapsim_capturing_stderr(
-        scratch.path(), command + " " + wing.string() + (command == "mesh" ? " -o " + (scratch / "m").string() : ""));
+        scratch.path(),
+        command + " " + wing.string() + (command == "mesh" ? " -o " + (scratch / "m").string() : ""));
     EXPECT_EQ(r.status, 0) << command << ": " << r.err;
-    EXPECT_NE(r.err.find("the wing's mesh has a sliver triangle, 0.05"), std::string::npos) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("the wing's mesh has a sliver triangle, 0.05"), std::string::npos)
+        << command << ": " << r.err;
     EXPECT_NE(r.err.find("near (x, y) = (-24.7"), std::string::npos) << command << ": " << r.err;
   }
+  // mesh's summary line gives the smallest angle, warned or not.
+  const fs::path out = scratch / "out.txt";
+  ASSERT_EQ(run_flapsim("mesh " + wing.string() + " -o " + (scratch / "m").string() + " --force", out), 0);
+  const std::string summary = flapsim::test::read_text(out);
+  EXPECT_NE(summary.find("(3 veins), smallest angle 0.0583 deg"), std::string::npos) << summary;
   const auto plain = flapsim::test::run_flapsim_capturing_stderr(scratch.path(), "check " + shipped);
   EXPECT_EQ(plain.status, 0);
   EXPECT_EQ(plain.err.find("sliver"), std::string::npos) << plain.err;

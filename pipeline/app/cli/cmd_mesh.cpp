@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "fem/mesh_quality.hpp"
 #include "fem/wing_mesher.hpp"
 #include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/io/fem_vtk.hpp"
@@ -63,8 +64,9 @@ void run_mesh(const MeshArgs& args) {
   // 4. The same mesh for ParaView.
   monitor.stage("writing the outputs");
   io::write_vtu(dir / "mesh.vtu", io::fem_unstructured_mesh(mesh, wing.clamp_y));
-  std::printf("%s: %d nodes, %zu membrane triangles, %zu vein elements (%zu veins)\n", wing.name.c_str(),
-              mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), mesh.vein_names.size());
+  std::printf("%s: %d nodes, %zu membrane triangles, %zu vein elements (%zu veins), smallest angle %.3g deg\n",
+              wing.name.c_str(), mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), mesh.vein_names.size(),
+              fem::smallest_triangle_angle(mesh).degrees);
   claim.finish("complete");
   monitor.done();
   std::printf("wrote %s, %s\n", (dir / "mesh.msh").string().c_str(), (dir / "mesh.vtu").string().c_str());
