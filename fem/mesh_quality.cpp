@@ -37,8 +37,9 @@ std::string sliver_warning(const Mesh& mesh, const wings::Wing& wing) {
       "%s: the wing's mesh has a sliver triangle, %.3g deg at its thinnest, %.3g mm long, near (x, y) = "
       "(%.4g, %.4g) mm: the FEM's Newton can stall on it. Slivers come from a vein's end or point a "
       "hair's breadth from the outline or from another vein (ends closer than tan(%.1f deg) times the "
-      "vein element size are moved onto it), or two veins close and nearly parallel: move the point "
-      "onto the line it should meet, or apart (docs/wing_file.md, \"Slivers\")",
+      "vein element size are moved onto it), two veins close and nearly parallel, or two outline points "
+      "a hair's breadth apart (a digitising duplicate): move the point onto the line it should meet, or "
+      "apart, or drop it (docs/wing_file.md, \"Slivers\")",
       wing.source_file.c_str(), s.degrees, s.longest_edge * 1e3, s.centroid.x() * 1e3, s.centroid.y() * 1e3,
       wings::kSliverAngleDeg);
   return text;

@@ -116,5 +116,23 @@ TEST(MeshSlivers, AVeinsInnerPointBesideAnotherVeinIsWarnedAboutWhereItLies) {
   EXPECT_NE(warning.find("7.001) mm"), std::string::npos) << warning;
 }
 
+TEST(MeshSlivers, TwoOutlinePointsAHairsBreadthApartAreWarnedAboutWhereTheyLie) {
+  // A digitised outline with a point repeated 0.5 µm from its neighbour (a 10 x 40 mm
+  // rectangle, its corner (5, 40) mm written twice; 1 mm elements): a sliver at that corner
+  // (measured 0.0286°, 1 mm long, at (5, 39.67) mm; atan(0.5 µm / 1 mm) = 0.0286°).
+  wings::Wing wing;
+  wing.source_file = "dup.toml";
+  wing.outline = {{5e-3, 0.0}, {5e-3, 40e-3}, {4.9995e-3, 40e-3}, {-5e-3, 40e-3}, {-5e-3, 0.0}};
+  wing.span = 40e-3;
+  wing.clamp_y = 0.0;
+  wing.mesh.element_size = wing.mesh.vein_element_size = 1e-3;
+  const Mesh mesh = mesh_wing(wing);
+  const SmallestAngle s = smallest_triangle_angle(mesh);
+  EXPECT_LT(s.degrees, wings::kSliverAngleDeg);
+  EXPECT_NEAR(s.centroid.x(), 5e-3, 1e-3);
+  EXPECT_NEAR(s.centroid.y(), 40e-3, 1e-3);
+  EXPECT_NE(sliver_warning(mesh, wing).find("two outline points a hair's breadth apart"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace flapsim::fem
