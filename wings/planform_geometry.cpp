@@ -167,6 +167,23 @@ std::optional<ChordLine> chord_at(const Polygon& poly, double y) {
   return ChordLine{hi, lo};
 }
 
+std::vector<Eigen::Vector2d> edge_vertices_between(const Polygon& poly, double y_from, double y_to,
+                                                   bool leading_edge) {
+  double span = 0.0;  // [m]
+  for (const auto& q : poly) span = std::max(span, std::abs(q.y()));
+  const double lo = std::min(y_from, y_to), hi = std::max(y_from, y_to);
+  std::vector<Eigen::Vector2d> out;
+  for (const auto& v : poly) {
+    if (!(v.y() > lo && v.y() < hi)) continue;
+    const auto c = chord_at(poly, v.y());
+    if (c && std::abs((leading_edge ? c->leading_x : c->trailing_x) - v.x()) <= 1e-9 * span) out.push_back(v);
+  }
+  std::sort(out.begin(), out.end(), [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return y_to >= y_from ? a.y() < b.y() : a.y() > b.y();
+  });
+  return out;
+}
+
 PlanformProperties planform_properties(const Polygon& poly) {
   PlanformProperties p;
   p.span = -std::numeric_limits<double>::infinity();

@@ -60,6 +60,14 @@ struct ChordLine {
 };
 std::optional<ChordLine> chord_at(const Polygon& polygon, double y);
 
+/// The outline's vertices on its leading edge (\p leading_edge) or trailing edge strictly
+/// between the stations y = \p y_from and y = \p y_to, in order from the first to the
+/// second [m]: the points a line along that edge passes through between them. A vertex is
+/// on the leading (trailing) edge when it is chord_at's leading (trailing) crossing of its
+/// own station, to 1e-9 of the outline's span.
+std::vector<Eigen::Vector2d> edge_vertices_between(const Polygon& polygon, double y_from, double y_to,
+                                                   bool leading_edge);
+
 /// Summary numbers of a planform (see the definitions above).
 struct PlanformProperties {
   double span = 0.0;          ///< R = max y [m]

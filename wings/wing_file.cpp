@@ -454,16 +454,33 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
         v.fail_at(line, pts_key, "chord fraction xi = " + fmt(rows[i][1]) +
                                      " must be in [0, 1] (0 leading edge, 1 trailing edge)");
     }
-    // Subdivide in (y/R, ξ) so a vein at constant ξ follows the curved edges.
+    // Subdivide in (y/R, ξ) so a vein at constant ξ follows the curved edges. A piece
+    // with both ends on the leading edge (ξ = 0) or both on the trailing edge (ξ = 1) runs
+    // along that edge: through the outline's own vertices between them, whatever
+    // `subdivide` (the chords between points on a curved edge leave it, outward where it
+    // is concave, and gmsh then left the vein outside the membrane or meshed the sliver
+    // between them: a costa at ξ = 0 along a half-ellipse, 0.056°).
     vein.points.push_back(to_xy(rows[0][0], rows[0][1], 0));
     source_row.push_back(0);
-    for (std::size_t i = 1; i < rows.size(); ++i)
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      const double xi = rows[i][1];
+      if (xi == rows[i - 1][1] && (xi == 0.0 || xi == 1.0)) {
+        for (const Eigen::Vector2d& q :
+             edge_vertices_between(outline, rows[i - 1][0] * span, rows[i][0] * span, xi == 0.0)) {
+          vein.points.push_back(q);
+          source_row.push_back(i);
+        }
+        vein.points.push_back(to_xy(rows[i][0], xi, i));
+        source_row.push_back(i);
+        continue;
+      }
       for (int k = 1; k <= sub; ++k) {
         const double u = double(k) / sub;
         vein.points.push_back(to_xy((1 - u) * rows[i - 1][0] + u * rows[i][0],
                                     (1 - u) * rows[i - 1][1] + u * rows[i][1], i));
         source_row.push_back(i);
       }
+    }
   }
   for (std::size_t i = 1; i < vein.points.size(); ++i)
     if ((vein.points[i] - vein.points[i - 1]).norm() == 0.0)
