@@ -276,6 +276,13 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   if (setup_.model.air) {
     r.set("mean_drag_N", mean(series(samples_, [](const StepSample& s) { return s.drag; })));
     r.set("mean_CD", mean(series(samples_, [](const StepSample& s) { return s.cd; })));
+    const LiftReference& ref = setup_.reference;
+    if (ref.kind == LiftReference::Kind::FreeStream && ref.flapping_speed > 0.0) {
+      const double ratio = ref.free_stream_speed / ref.flapping_speed;
+      const double scale = ratio * ratio;
+      r.set("mean_CL_on_flapping_speed", r.number("mean_CL") * scale);
+      r.set("mean_CD_on_flapping_speed", r.number("mean_CD") * scale);
+    }
     r.set("mean_side_N", mean(series(samples_, [](const StepSample& s) { return s.side; })));
     r.set("mean_Mx_base_Nm", mean(series(samples_, [](const StepSample& s) { return s.moment.x(); })));
     r.set("mean_My_base_Nm", mean(series(samples_, [](const StepSample& s) { return s.moment.y(); })));

@@ -44,6 +44,8 @@ TEST(FreeStreamCase, CoefficientsUseTheFreeStreamWhenTheWingDoesNotFlap) {
   EXPECT_NE(summary.find("\"reference_kind\": \"free_stream\""), std::string::npos) << summary;
   EXPECT_DOUBLE_EQ(number_in(summary, "reference_speed_m_s"), 5.0);
   EXPECT_DOUBLE_EQ(number_in(summary, "flapping_speed_m_s"), 0.0);
+  // A wing that does not flap has no coefficients on a flapping speed.
+  EXPECT_EQ(summary.find("on_flapping_speed"), std::string::npos) << summary;
   const double cl = number_in(summary, "mean_CL"), cd = number_in(summary, "mean_CD");
 
   // The same lattice, steady: the plate's outline in the wing frame, turned nose up by 5°.
@@ -71,6 +73,29 @@ TEST(FreeStreamCase, CoefficientsUseTheFreeStreamWhenTheWingDoesNotFlap) {
   EXPECT_NEAR(cd / cd_steady, 1.0, 0.03);
   EXPECT_NEAR(cl / 0.316, 1.0, 0.10);
   EXPECT_NEAR(number_in(summary, "mean_lift_N") / qs, cl, 1e-3 * cl);
+}
+
+TEST(FreeStreamCase, AFlappingWingsCoefficientsAreGivenOnItsFlappingSpeedToo) {
+  // The flat plate flapping (20 Hz, sweep ±30°) in a 5 m/s stream: the coefficients are on
+  // U∞ (docs/fsi.md), and also on the flapping speed at r2·R, by hand 4 Φ₀ f r2 R =
+  // 4 (π/6) 20 (1/√3) 0.04 m = 0.967 m/s (the cycle-mean |dφ/dt| of a cosine is 4 Φ₀ f; the
+  // rectangle's r2 is 1/√3): CL and CD times (U∞ / U_f)².
+  flapsim::test::ScratchDir dir("free_stream_flapping");
+  std::string text = flapsim::test::flat_plate_glide_case("flap", 20.0, 80.0, 20, 1);
+  text.replace(text.find("sweep = 0.0"), 11, "sweep = { cos_deg = [30.0] }");
+  std::ofstream(dir / "case.toml") << text;
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string(), dir / "report.txt"),
+            0);
+  const std::string summary = read_text(dir / "out" / "summary.json");
+  const double uf = number_in(summary, "flapping_speed_m_s");
+  EXPECT_NEAR(uf, 4.0 * (std::numbers::pi / 6.0) * 20.0 / std::sqrt(3.0) * 0.04, 1e-3);
+  const double scale = (5.0 / uf) * (5.0 / uf);
+  EXPECT_NEAR(number_in(summary, "mean_CL_on_flapping_speed"), number_in(summary, "mean_CL") * scale,
+              1e-12 * std::abs(number_in(summary, "mean_CL") * scale));
+  EXPECT_NEAR(number_in(summary, "mean_CD_on_flapping_speed"), number_in(summary, "mean_CD") * scale,
+              1e-12 * std::abs(number_in(summary, "mean_CD") * scale) + 1e-15);
+  EXPECT_NE(read_text(dir / "report.txt").find("on the flapping speed at r2, 0.96"), std::string::npos)
+      << read_text(dir / "report.txt");
 }
 
 TEST(FreeStreamCase, SteadyLatticeDoesNotDependOnTheTimeStep) {
