@@ -31,6 +31,8 @@ ModeResonance strongest_resonance(const std::vector<double>& mode_hz, double f) 
 
 double highest_resonant_mode_hz(double f) { return 2.0 * f / std::sqrt(1.0 - 1.0 / kResonantAmplification); }
 
+double lowest_resonant_mode_hz(double f) { return f / std::sqrt(1.0 + 1.0 / kResonantAmplification); }
+
 std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
   const mbd::ChainModel& chain = setup.chain();
   if (c.structure.kind != io::Case::Structure::Kind::Flexible || chain.num_dofs() == 0) return "";

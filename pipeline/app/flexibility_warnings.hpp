@@ -48,6 +48,11 @@ ModeResonance strongest_resonance(const std::vector<double>& mode_hz, double f);
 /// is below kResonantAmplification, and at f lower still).
 double highest_resonant_mode_hz(double f);
 
+/// \brief The lowest mode frequency [Hz] near resonance with a wingbeat of \p f [Hz]:
+/// f / √(1 + 1/kResonantAmplification) = 0.82 f (below it the drive is above the mode, and
+/// the amplification at f is below kResonantAmplification).
+double lowest_resonant_mode_hz(double f);
+
 /// \brief "" or the warning for a flexible chain with a mode whose dynamic amplification
 /// at the wingbeat frequency f or at 2 f (the lift's and the inertial loads' main
 /// harmonic) is kResonantAmplification or more; names the mode, its frequency, the ratio

@@ -99,6 +99,33 @@ TEST(FemResonanceWarning, TheSameWingFlappedFarFromEveryBandIsNotWarned) {
   EXPECT_NE(err.find("wrinkles of the mesh's own wavelength"), std::string::npos) << err;
 }
 
+TEST(FemResonanceWarning, TheSameWingFlappedAboveItsFirstModeIsWarnedSo) {
+  // At 300 Hz the lowest mode, 186.515 Hz, lies below the fundamental's band (0.82 f =
+  // 245 Hz: lowest_resonant_mode_hz): the wing is driven above it, r = 300 / 186.515 =
+  // 1.608, and moves against its base by r² / (r² − 1) = 1.63 times the base's motion. That
+  // is warned in place of the resonance of modes 2 and 3 (305.5, 388.5 Hz) with 300 Hz.
+  flapsim::test::ScratchDir dir("fem_resonance_bee_300");
+  const std::string err = check_bee_case(dir, bee_fem_case(dir, "bee300", 300.0));
+  EXPECT_NE(
+      err.find(
+          "warning: the FEM's mode 1 (bending shape), 186.5 Hz, lies below the wingbeat frequency 300 Hz "
+          "(drive / mode = 1.61): a wing driven above its first mode deforms against its base by about as "
+          "much as the base moves (1.63 times it"),
+      std::string::npos)
+      << err;
+  EXPECT_EQ(err.find("lies near"), std::string::npos) << err;
+  // Just inside the band (mode 1 at 0.82 f: f = 186.515 / 0.8165 = 228.4 Hz; 225 Hz): the
+  // resonance, not the drive above the mode (mode 1 at r = 1.206, 1 / (r² − 1) = 2.19, listed
+  // beside the strongest, mode 3 against 2 f).
+  const std::string near = check_bee_case(dir, bee_fem_case(dir, "bee225", 225.0));
+  EXPECT_NE(
+      near.find("mode 1 (bending shape), 186.5 Hz, near the wingbeat frequency (mode / drive = 0.829, 2.2 "
+                "times)"),
+      std::string::npos)
+      << near;
+  EXPECT_EQ(near.find("lies below the wingbeat frequency"), std::string::npos) << near;
+}
+
 TEST(FemResonanceWarning, TheWarnedFrequencyIsFlapsimModesOnTheMeshTheCaseChooses) {
   flapsim::test::ScratchDir dir("fem_resonance_bee_modes");
   // The case's mesh, coarser than the wing file's (span / 50 = 0.26 mm): 0.4 mm, the veins
