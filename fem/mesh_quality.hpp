@@ -2,7 +2,7 @@
 /// \file mesh_quality.hpp
 /// \brief Sliver triangles in a wing's mesh: the smallest angle and where it lies, and the
 /// warning `mesh`, `check`, `modes`, `reduce` and an FEM run give for one below
-/// wings::kSliverAngleDeg (docs/wing_file.md, "[mesh]").
+/// wings::kSliverAngleDeg (docs/wing_file.md, "Checks", "Slivers").
 
 #include <string>
 
@@ -25,7 +25,8 @@ SmallestAngle smallest_triangle_angle(const Mesh& mesh);
 /// \brief "" or the warning for a mesh whose smallest angle is below wings::kSliverAngleDeg:
 /// where the sliver lies (in the wing file's coordinates, mm), how thin it is, and what
 /// makes one (a vein's end or point beside the outline or another vein, two veins close and
-/// nearly parallel): the FEM's Newton can stall on such a triangle.
+/// nearly parallel, two outline points a hair's breadth apart): the FEM's Newton can stall on
+/// such a triangle.
 std::string sliver_warning(const Mesh& mesh, const wings::Wing& wing);
 
 }  // namespace flapsim::fem

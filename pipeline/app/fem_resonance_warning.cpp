@@ -46,8 +46,8 @@ std::string fem_near_resonance_warning(const io::Case& c, const FsiSetup& setup)
   if (!modes.frequencies_hz.empty() && modes.frequencies_hz[0] < lowest_resonant_mode_hz(f)) {
     // Below the fundamental's band: the drive is above the first mode. A base-driven
     // oscillator at r = f / f1 > 1 moves against its base by r² / (r² − 1) times the
-    // base's motion (the relative transmissibility, undamped; Rao, Mechanical Vibrations,
-    // ch. 3): about as far as the base itself moves, the flapping's tens of degrees.
+    // base's motion (the motion relative to a moving support, undamped; [Thomson & Dahleh
+    // 1998] ch. 3): about as far as the base itself moves, the flapping's tens of degrees.
     const double r = f / modes.frequencies_hz[0];
     char text[900];
     std::snprintf(
