@@ -1,10 +1,11 @@
-// Sliver triangles in a wing's mesh (fem/mesh_quality.hpp) and the two places they came from.
+// Sliver triangles in a wing's mesh (fem/mesh_quality.hpp) and where they came from.
 // A user's swept film wing whose root spar was written to start on the leading edge but lay
 // 1.1 µm inside it (tests/data/swept_film_50um_wing.toml): gmsh meshed the gap into a
 // triangle of 0.028°, and its FEM's Newton stalled on it; the spar's end is now moved onto
 // the edge (wings/wing_file.cpp). A cross vein written to start 1 µm off the spar: 0.023°;
 // its end is now moved onto the spar (wings/vein_junctions.hpp). What neither catches (a
-// vein's inner point beside another vein) is warned about.
+// vein's inner point beside another vein, an outline point repeated a hair's breadth away) is
+// warned about; a costa written along a curved edge now follows it (wings/wing_file.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
