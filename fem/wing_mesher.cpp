@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <limits>
 #include <new>
 #include <optional>
 #include <string>
@@ -69,15 +68,10 @@ GmshWingRequest request_for(const wings::Wing& wing, const MeshOptions& options,
 std::optional<std::size_t> vein_lying_along(const std::vector<wings::Vein>& veins, std::size_t v,
                                             double span) {
   for (std::size_t u = 0; u < veins.size(); ++u) {
-    if (u == v) continue;
-    const auto& line = veins[u].points;
-    bool along = !veins[v].points.empty();
-    for (const Eigen::Vector2d& p : veins[v].points) {
-      double d = std::numeric_limits<double>::infinity();  // [m]
-      for (std::size_t k = 0; k + 1 < line.size(); ++k)
-        d = std::min(d, (wings::nearest_point_on_segment(line[k], line[k + 1], p) - p).norm());
-      along = along && d <= 1e-9 * span;
-    }
+    if (u == v || veins[u].points.empty() || veins[v].points.empty()) continue;
+    bool along = true;
+    for (const Eigen::Vector2d& p : veins[v].points)
+      along = along && (wings::nearest_point_on_polyline(veins[u].points, p) - p).norm() <= 1e-9 * span;
     if (along) return u;
   }
   return std::nullopt;

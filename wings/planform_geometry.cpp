@@ -116,18 +116,24 @@ double distance_to_boundary(const Polygon& poly, const Eigen::Vector2d& p) {
   return best;
 }
 
-Eigen::Vector2d nearest_boundary_point(const Polygon& poly, const Eigen::Vector2d& p) {
+Eigen::Vector2d nearest_point_on_polyline(const std::vector<Eigen::Vector2d>& points,
+                                          const Eigen::Vector2d& p, bool closed) {
+  const std::size_t n = points.size();
+  if (n == 1) return points[0];
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector2d nearest = p;
-  const std::size_t n = poly.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d q = nearest_point_on_segment(poly[i], poly[(i + 1) % n], p);
+  for (std::size_t i = 0; i < (closed ? n : n - 1); ++i) {
+    const Eigen::Vector2d q = nearest_point_on_segment(points[i], points[(i + 1) % n], p);
     if ((p - q).norm() < best) {
       best = (p - q).norm();
       nearest = q;
     }
   }
   return nearest;
+}
+
+Eigen::Vector2d nearest_boundary_point(const Polygon& poly, const Eigen::Vector2d& p) {
+  return nearest_point_on_polyline(poly, p, true);
 }
 
 bool contains_point(const Polygon& poly, const Eigen::Vector2d& p, double tolerance) {

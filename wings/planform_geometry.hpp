@@ -42,6 +42,13 @@ std::optional<std::pair<int, int>> find_self_intersection(const Polygon& polygon
 Eigen::Vector2d nearest_point_on_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                          const Eigen::Vector2d& p);
 
+/// The point of the polyline through \p points nearest to p [m]: of its segments between
+/// consecutive points, and with \p closed also the one from the last point back to the
+/// first (a polygon's boundary). The first of equally near points; the only point of a
+/// polyline of one. \p points must not be empty.
+Eigen::Vector2d nearest_point_on_polyline(const std::vector<Eigen::Vector2d>& points,
+                                          const Eigen::Vector2d& p, bool closed = false);
+
 /// Distance from p to the polygon boundary [m].
 double distance_to_boundary(const Polygon& polygon, const Eigen::Vector2d& p);
 

@@ -44,14 +44,11 @@ int snap_vein_ends_onto_other_veins(std::vector<Vein>& veins, double tolerance, 
       double best = std::numeric_limits<double>::infinity();  // [m]
       Eigen::Vector2d nearest = *end;
       for (std::size_t j = 0; j < veins.size(); ++j) {
-        if (j == i) continue;
-        const auto& q = veins[j].points;
-        for (std::size_t k = 0; k + 1 < q.size(); ++k) {
-          const Eigen::Vector2d c = nearest_point_on_segment(q[k], q[k + 1], *end);
-          if (const double d = (c - *end).norm(); d < best) {
-            best = d;
-            nearest = c;
-          }
+        if (j == i || veins[j].points.empty()) continue;
+        const Eigen::Vector2d c = nearest_point_on_polyline(veins[j].points, *end);
+        if (const double d = (c - *end).norm(); d < best) {
+          best = d;
+          nearest = c;
         }
       }
       if (is_gap(best)) {

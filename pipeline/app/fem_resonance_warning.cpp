@@ -34,6 +34,31 @@ FemNaturalModes fem_resonance_modes(const io::Case& c, const FsiSetup& setup) {
   return out;
 }
 
+namespace {
+
+/// The warning for a wing whose first mode lies below the fundamental's resonance band.
+std::string driven_above_first_mode_warning(const FemNaturalModes& modes, double f) {
+  // Below the fundamental's band: the drive is above the first mode. A base-driven
+  // oscillator at r = f / f1 > 1 moves against its base by r² / (r² − 1) times the
+  // base's motion (the motion relative to a moving support, undamped; [Thomson & Dahleh
+  // 1998] ch. 3): about as far as the base itself moves, the flapping's tens of degrees.
+  const double r = f / modes.frequencies_hz[0];
+  char text[900];
+  std::snprintf(
+      text, sizeof text,
+      "the FEM's mode 1 (%s shape), %.4g Hz, lies below the wingbeat frequency %.3g Hz (drive / mode = "
+      "%.3g): a wing driven above its first mode deforms against its base by about as much as the "
+      "base moves (%.2f times it, undamped), tens of degrees at the tip where the flapping swings "
+      "tens of degrees; an FEM step follows such motion only in many pieces, if at all (the wing's "
+      "natural modes clamped at its root, in vacuum, as `flapsim modes` finds them on this mesh). "
+      "Stiffen the wing (veins, a thicker membrane) or lower frequency_hz below the first mode "
+      "(docs/case_file.md, \"Warnings\")",
+      fem::to_string(modes.kinds[0]).c_str(), modes.frequencies_hz[0], f, r, r * r / (r * r - 1.0));
+  return text;
+}
+
+}  // namespace
+
 std::string fem_near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
   if (c.structure.kind != io::Case::Structure::Kind::Fem || !setup.fem_structure) return "";
   FemNaturalModes modes;
@@ -43,25 +68,8 @@ std::string fem_near_resonance_warning(const io::Case& c, const FsiSetup& setup)
     return "";
   }
   const double f = c.kinematics.frequency;
-  if (!modes.frequencies_hz.empty() && modes.frequencies_hz[0] < lowest_resonant_mode_hz(f)) {
-    // Below the fundamental's band: the drive is above the first mode. A base-driven
-    // oscillator at r = f / f1 > 1 moves against its base by r² / (r² − 1) times the
-    // base's motion (the motion relative to a moving support, undamped; [Thomson & Dahleh
-    // 1998] ch. 3): about as far as the base itself moves, the flapping's tens of degrees.
-    const double r = f / modes.frequencies_hz[0];
-    char text[900];
-    std::snprintf(
-        text, sizeof text,
-        "the FEM's mode 1 (%s shape), %.4g Hz, lies below the wingbeat frequency %.3g Hz (drive / mode = "
-        "%.3g): a wing driven above its first mode deforms against its base by about as much as the "
-        "base moves (%.2f times it, undamped), tens of degrees at the tip where the flapping swings "
-        "tens of degrees; an FEM step follows such motion only in many pieces, if at all (the wing's "
-        "natural modes clamped at its root, in vacuum, as `flapsim modes` finds them on this mesh). "
-        "Stiffen the wing (veins, a thicker membrane) or lower frequency_hz below the first mode "
-        "(docs/case_file.md, \"Warnings\")",
-        fem::to_string(modes.kinds[0]).c_str(), modes.frequencies_hz[0], f, r, r * r / (r * r - 1.0));
-    return text;
-  }
+  if (!modes.frequencies_hz.empty() && modes.frequencies_hz[0] < lowest_resonant_mode_hz(f))
+    return driven_above_first_mode_warning(modes, f);
   const ModeResonance near = strongest_resonance(modes.frequencies_hz, f);
   if (near.mode < 0 || !(near.amplification >= kResonantAmplification)) return "";
   const auto kind = [&](int mode) { return fem::to_string(modes.kinds[static_cast<std::size_t>(mode)]); };

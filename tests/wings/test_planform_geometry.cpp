@@ -105,3 +105,17 @@ TEST(PlanformGeometry, Hawkmoth1OutlineArea) {
       std::string(FLAPSIM_SOURCE_DIR) + "/wings/outlines/robofly_dickinson_outline.csv", "o");
   EXPECT_NEAR(w::polygon_area(r), 0.2531, 0.00005);
 }
+
+TEST(PlanformGeometry, NearestPointOfAnOpenAndAClosedPolyline) {
+  // Three sides of the unit square, (0,0) → (1,0) → (1,1) → (0,1). From (−0.5, 0.5) the
+  // open polyline's nearest point is its first corner, (0, 0) and (0, 1) being equally near
+  // (the first is taken); closed, the fourth side x = 0 is there: (0, 0.5).
+  const Polygon square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const Eigen::Vector2d p(-0.5, 0.5);
+  EXPECT_EQ(w::nearest_point_on_polyline(square, p), Eigen::Vector2d(0, 0));
+  EXPECT_EQ(w::nearest_point_on_polyline(square, p, true), Eigen::Vector2d(0, 0.5));
+  EXPECT_EQ(w::nearest_boundary_point(square, p), Eigen::Vector2d(0, 0.5));
+  // Inside a segment: the foot of the perpendicular; a polyline of one point: that point.
+  EXPECT_EQ(w::nearest_point_on_polyline(square, Eigen::Vector2d(1.5, 0.25)), Eigen::Vector2d(1, 0.25));
+  EXPECT_EQ(w::nearest_point_on_polyline({{2, 3}}, p), Eigen::Vector2d(2, 3));
+}
