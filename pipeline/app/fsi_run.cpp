@@ -140,8 +140,11 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
   }
   const RunResults results = recorder.finish(data, "ok");
   char extra[96];
-  std::snprintf(extra, sizeof extra, "mean lift %.4g N, mean CL %.3f", results.number("mean_lift_N"),
-                results.number("mean_CL"));
+  if (results.has("mean_CL"))
+    std::snprintf(extra, sizeof extra, "mean lift %.4g N, mean CL %.3f", results.number("mean_lift_N"),
+                  results.number("mean_CL"));
+  else
+    std::snprintf(extra, sizeof extra, "in vacuum, no lift");
   progress.finish(extra);
   return results;
 }

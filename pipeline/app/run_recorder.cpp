@@ -269,11 +269,11 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   r.set("steps", data.step);
   r.set("time_s", t_end);
   r.set("mean_lift_N", mean(series(samples_, [](const StepSample& s) { return s.lift; })));
-  r.set("mean_CL", mean(series(samples_, [](const StepSample& s) { return s.cl; })));
   r.set("mean_Fx_N", mean(series(samples_, [](const StepSample& s) { return s.force.x(); })));
   r.set("mean_Fy_N", mean(series(samples_, [](const StepSample& s) { return s.force.y(); })));
   r.set("mean_Fz_N", mean(series(samples_, [](const StepSample& s) { return s.force.z(); })));
-  if (setup_.model.air) {
+  if (setup_.model.air) {  // in vacuum no reference speed: no coefficients
+    r.set("mean_CL", mean(series(samples_, [](const StepSample& s) { return s.cl; })));
     r.set("mean_drag_N", mean(series(samples_, [](const StepSample& s) { return s.drag; })));
     r.set("mean_CD", mean(series(samples_, [](const StepSample& s) { return s.cd; })));
     const LiftReference& ref = setup_.reference;

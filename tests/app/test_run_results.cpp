@@ -260,7 +260,9 @@ TEST(RunResults, TheLastLineNamesOnlyTheFilesWritten) {
 }
 
 // A run in vacuum has no lift and no coefficient. Before: cases/three_body.toml (air = "none")
-// reported "mean lift (last cycle) 0 N, mean CL 0.0000", as if the wing had made none.
+// reported "mean lift (last cycle) 0 N, mean CL 0.0000", as if the wing had made none, and
+// summary.json kept "mean_CL": 0 (a coefficient without a reference speed) after the report
+// had lost it.
 TEST(RunResults, AVacuumRunReportsNoLiftCoefficient) {
   flapsim::test::ScratchDir dir("run_vacuum_report");
   ASSERT_EQ(flapsim::test::run_flapsim("run " + std::string(FLAPSIM_SOURCE_DIR) + "/cases/three_body.toml -o " +
@@ -270,6 +272,10 @@ TEST(RunResults, AVacuumRunReportsNoLiftCoefficient) {
   const std::string text = flapsim::test::read_text(dir / "run.txt");
   EXPECT_NE(text.find("in vacuum (air = \"none\"): no aerodynamic loads, no lift\n"), std::string::npos) << text;
   EXPECT_EQ(text.find("mean CL"), std::string::npos) << text;
+  const std::string summary = flapsim::test::read_text(dir / "out" / "summary.json");
+  EXPECT_EQ(summary.find("\"mean_CL\""), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("\"mean_CD\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"mean_lift_N\": 0"), std::string::npos) << summary;  // no air, no force
 }
 
 }  // namespace

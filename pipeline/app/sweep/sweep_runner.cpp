@@ -63,8 +63,11 @@ int default_threads(const MpiWorld& world, std::size_t cases) {
 std::string finished_line(std::size_t finished, std::size_t total, const SweepRow& r, double wall) {
   const std::string head = "sweep " + std::to_string(finished) + "/" + std::to_string(total) + "  " + describe(r.point);
   char numbers[128];
-  std::snprintf(numbers, sizeof numbers, "  mean lift %.5g N  CL %.3f  ", r.outcome.results.number("mean_lift_N"),
-                r.outcome.results.number("mean_CL"));
+  if (r.outcome.results.has("mean_CL"))
+    std::snprintf(numbers, sizeof numbers, "  mean lift %.5g N  CL %.3f  ", r.outcome.results.number("mean_lift_N"),
+                  r.outcome.results.number("mean_CL"));
+  else  // in vacuum (or a run that stopped before its first step)
+    std::snprintf(numbers, sizeof numbers, "  ");
   const char* status = r.outcome.status == "ok" ? "ok" : r.outcome.status == "interrupted" ? "INTERRUPTED" : "FAILED";
   char tail[64];
   std::snprintf(tail, sizeof tail, "  (rank %d, %.1f s)", r.outcome.rank, wall);
