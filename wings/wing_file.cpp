@@ -425,7 +425,8 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
   const auto rows = v.get_number_rows(pts_key, 2);
   if (rows.size() < 2) v.fail(pts_key, "a vein needs at least 2 points, found " + std::to_string(rows.size()));
 
-  const double span = planform_properties(outline).span;
+  const PlanformProperties outline_properties = planform_properties(outline);
+  const double span = outline_properties.span;
   std::vector<std::size_t> source_row;  // which row of the file each point came from
   if (abs_pts) {
     if (v.has("subdivide")) v.fail("subdivide", "only applies to 'chord_points'");
@@ -443,7 +444,8 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
       const auto c = chord_at(outline, eta * span);
       if (!c)
         v.fail_at(v.line_of_element(pts_key, row), pts_key,
-                  "y/R = " + fmt(eta) + " lies outside the outline's span range");
+                  "y/R = " + fmt(eta) + " lies outside the outline's span range (y/R from " +
+                      fmt(outline_properties.root_y / span) + " at its root to 1 at its tip)");
       return Eigen::Vector2d(c->leading_x - xi * c->length(), eta * span);
     };
     for (std::size_t i = 0; i < rows.size(); ++i) {

@@ -195,6 +195,25 @@ TEST(WingFileErrors, VeinOutsideOutline) {
   EXPECT_EQ(e.key(), "veins[0].points");
 }
 
+// A wing whose root is off the pivot (y from 2 to 10 mm: y/R from 0.2) and a vein written from
+// y/R = 0.1: the message gives the outline's range, which a user would otherwise work out.
+TEST(WingFileErrors, ChordPointsBelowTheRootNameTheOutlinesRange) {
+  std::string t = plate("thickness = 0.05\n",
+                        "[[veins]]\n"                                      // 12
+                        "material = \"film\"\n"                            // 13
+                        "chord_points = [[0.1, 0.5], [0.9, 0.5]]\n"         // 14
+                        "outer_diameter = 0.3\nwall = 0.05\n");
+  t.replace(t.find("[[2.0, 0.0]"), 11, "[[2.0, 2.0]");
+  t.replace(t.find("[-3.0, 0.0]]"), 12, "[-3.0, 2.0]]");
+  t.replace(t.find("clamp_y = 0.0"), 13, "clamp_y = 2.0");
+  const auto e = error_of(t);
+  EXPECT_EQ(e.line(), 14);
+  EXPECT_EQ(e.key(), "veins[0].chord_points");
+  EXPECT_NE(e.message().find("y/R = 0.1 lies outside the outline's span range (y/R from 0.2 at its root to 1 at its tip)"),
+            std::string::npos)
+      << e.message();
+}
+
 TEST(WingFileErrors, VeinOnTheEdgeIsAccepted) {
   EXPECT_NO_THROW(wing_from_text(plate("thickness = 0.05\n",
                                        "[[veins]]\nmaterial = \"film\"\n"
