@@ -7,10 +7,12 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <utility>
 
+#include "wings/drawing_frame.hpp"
 #include "wings/input_error.hpp"
 #include "wings/mesh_budget.hpp"
 #include "wings/outline_csv.hpp"
@@ -221,6 +223,7 @@ struct Planform {
   Polygon outline;
   double clamp_y = 0.0;
   bool from_spline = false;  ///< the outline is `spline`'s curve, not the points as written
+  std::optional<DrawingFrame> drawing;  ///< an SVG outline_file: its map, for veins with drawing_id
 };
 
 // The outline of `shape = "..."` (ellipse, half_ellipse, rounded_rectangle) from its size keys.
@@ -251,13 +254,14 @@ Polygon read_shape_outline(const TomlTable& p, int samples) {
 
 Planform read_planform(const TomlTable& p) {
   p.expect_only({"outline", "outline_file", "spline", "shape", "outline_points", "chord", "root_y",
-                 "leading_edge_x", "tip_radius", "span", "area", "clamp_y"});
+                 "leading_edge_x", "tip_radius", "span", "area", "clamp_y", "outline_id", "drawing_tip",
+                 "drawing_leading_edge"});
   const std::array<std::string_view, 4> sources{"outline", "outline_file", "spline", "shape"};
   std::string outline_key;
   for (const auto key : sources)
     if (p.has(key)) {
       if (!outline_key.empty())
-        p.fail(key, "give exactly one of 'outline' (inline [[x, y], ...]), 'outline_file' (CSV), "
+        p.fail(key, "give exactly one of 'outline' (inline [[x, y], ...]), 'outline_file' (CSV or SVG), "
                     "'spline' (control points of a closed spline) or 'shape' (ellipse, half_ellipse, "
                     "rounded_rectangle); '" + outline_key + "' is given too");
       outline_key = key;
@@ -275,17 +279,36 @@ Planform read_planform(const TomlTable& p) {
 
   Planform out;
   OutlineCsv csv;  // with the CSV line of each point, for messages
+  int drawing_line = 0;  // an SVG outline's element's line in the drawing
+  const bool from_drawing = from_file && is_svg_path(p.get_string("outline_file"));
+  if (!from_drawing)
+    for (const char* k : {"outline_id", "drawing_tip", "drawing_leading_edge"})
+      if (p.has(k)) p.fail(k, "only applies to an SVG drawing as outline_file");
   if (from_file) {
-    // The CSV is in units of the wing length; 'span' scales it.
-    if (!p.has("span")) p.fail("span", "missing required key: a CSV outline is scaled to 'span'");
-    const std::string csv_path = p.get_path("outline_file");
+    // The CSV is in units of the wing length, a drawing in its own; 'span' scales either.
+    if (!p.has("span"))
+      p.fail("span", std::string("missing required key: ") + (from_drawing ? "a drawing" : "a CSV outline") +
+                         " is scaled to 'span'");
+    const std::string file_path = p.get_path("outline_file");
     // A missing file is the wing file's error, at the line that names it.
-    if (std::error_code ec; !std::filesystem::exists(csv_path, ec))
-      p.fail("outline_file", "file not found: " + csv_path +
+    if (std::error_code ec; !std::filesystem::exists(file_path, ec))
+      p.fail("outline_file", "file not found: " + file_path +
                                  " (paths are relative to the wing file's folder" +
                                  path_from_file_hint(p.get_string("outline_file"), p.file(), "wing") + ")");
-    csv = read_outline_csv_lines(csv_path, p.key_path("outline_file"));
-    out.outline = csv.points;
+    if (from_drawing) {
+      DrawingOutline drawn = read_drawing_outline(p, file_path);
+      out.outline = std::move(drawn.outline);
+      out.drawing = std::move(drawn.frame);
+      drawing_line = drawn.line;
+      if (out.outline.size() > kMaxOutlinePoints)
+        throw InputError(file_path, drawing_line, p.key_path("outline_file"),
+                         "the outline is flattened into " + std::to_string(out.outline.size()) +
+                             " points, more than " + std::to_string(kMaxOutlinePoints) +
+                             " (meshing costs about n^2): simplify it in the drawing program");
+    } else {
+      csv = read_outline_csv_lines(file_path, p.key_path("outline_file"));
+      out.outline = csv.points;
+    }
   } else if (outline_key == "shape") {
     out.outline = read_shape_outline(p, samples);
   } else {
@@ -327,6 +350,7 @@ Planform read_planform(const TomlTable& p) {
       p.fail(outline_key, "the outline must reach y > 0 (the tip) to be scaled to the span");
     const double k = span / max_y;
     for (auto& q : out.outline) q *= k;
+    if (out.drawing) out.drawing->scale = k;
   }
 
   // 2. The polygon must be simple (checked before stretching, which keeps simplicity).
@@ -335,6 +359,8 @@ Planform read_planform(const TomlTable& p) {
                              " (points " + std::to_string(hit->first) + "-" +
                              std::to_string((hit->first + 1) % out.outline.size()) + ") touches or crosses edge " +
                              std::to_string(hit->second);
+    if (from_drawing)  // the drawing's file and the outline element's line
+      throw InputError(p.get_path("outline_file"), drawing_line, p.key_path("outline_file"), what);
     if (from_file)  // the CSV's file and line of the edge's first point
       throw InputError(p.get_path("outline_file"), csv.lines[static_cast<std::size_t>(hit->first)],
                        p.key_path("outline_file"), what);
@@ -365,6 +391,7 @@ Planform read_planform(const TomlTable& p) {
     const double area = p.get_double("area", Bounds::positive()) * p.length_scale() * p.length_scale();
     const double k = area / polygon_area(out.outline);
     for (auto& q : out.outline) q.x() *= k;
+    if (out.drawing) out.drawing->x_stretch = k;
   }
 
   // Every coordinate usable in metres after scaling and stretching: 0 or a normal number
@@ -411,24 +438,36 @@ constexpr const char* kSplineVeinHint =
 Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
                const std::map<std::string, Material>& materials) {
   const Polygon& outline = planform.outline;
-  v.expect_only({"name", "material", "points", "chord_points", "subdivide", "shape",
+  v.expect_only({"name", "material", "points", "chord_points", "drawing_id", "subdivide", "shape",
                  "outer_diameter", "wall", "diameter", "width", "height"});
   Vein vein;
   vein.name = v.get_string("name", "vein " + std::to_string(index + 1));
   vein.material = find_material(v, "material", materials);
 
-  const bool abs_pts = v.has("points"), chord_pts = v.has("chord_points");
-  if (abs_pts == chord_pts)
-    v.fail(abs_pts ? "chord_points" : "points",
-           "give exactly one of 'points' ([[x, y], ...] lengths) or 'chord_points' ([[y/R, xi], ...])");
-  const std::string pts_key = abs_pts ? "points" : "chord_points";
-  const auto rows = v.get_number_rows(pts_key, 2);
-  if (rows.size() < 2) v.fail(pts_key, "a vein needs at least 2 points, found " + std::to_string(rows.size()));
+  const bool abs_pts = v.has("points"), chord_pts = v.has("chord_points"), drawn = v.has("drawing_id");
+  if (int(abs_pts) + int(chord_pts) + int(drawn) != 1)
+    v.fail(abs_pts ? (chord_pts ? "chord_points" : "drawing_id") : chord_pts ? "drawing_id" : "points",
+           "give exactly one of 'points' ([[x, y], ...] lengths), 'chord_points' ([[y/R, xi], ...]) or "
+           "'drawing_id' (a line of the planform's SVG drawing)");
+  if (drawn && !planform.drawing)
+    v.fail("drawing_id", "the planform's outline_file is no SVG drawing: a vein is drawn in the outline's drawing");
+  const std::string pts_key = abs_pts ? "points" : chord_pts ? "chord_points" : "drawing_id";
+  const auto rows = drawn ? std::vector<std::vector<double>>{} : v.get_number_rows(pts_key, 2);
+  if (!drawn && rows.size() < 2)
+    v.fail(pts_key, "a vein needs at least 2 points, found " + std::to_string(rows.size()));
+  // The line of a point's row ('drawing_id''s own line for a drawn vein).
+  const auto line_of_row = [&](std::size_t row) {
+    return drawn ? v.line_of(pts_key) : v.line_of_element(pts_key, row);
+  };
 
   const PlanformProperties outline_properties = planform_properties(outline);
   const double span = outline_properties.span;
   std::vector<std::size_t> source_row;  // which row of the file each point came from
-  if (abs_pts) {
+  if (drawn) {
+    if (v.has("subdivide")) v.fail("subdivide", "only applies to 'chord_points'");
+    vein.points = drawing_vein_points(v, *planform.drawing);
+    source_row.assign(vein.points.size(), 0);
+  } else if (abs_pts) {
     if (v.has("subdivide")) v.fail("subdivide", "only applies to 'chord_points'");
     for (std::size_t i = 0; i < rows.size(); ++i) {
       vein.points.emplace_back(rows[i][0] * v.length_scale(), rows[i][1] * v.length_scale());
@@ -486,7 +525,7 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
   }
   for (std::size_t i = 1; i < vein.points.size(); ++i)
     if ((vein.points[i] - vein.points[i - 1]).norm() == 0.0)
-      v.fail_at(v.line_of_element(pts_key, source_row[i]), pts_key, "two consecutive points coincide");
+      v.fail_at(line_of_row(source_row[i]), pts_key, "two consecutive points coincide");
 
   // Inside the outline, or on its edge within 0.1 % of the span; segments are sampled
   // so a vein cannot cut across a notch between two inside points.
@@ -512,7 +551,7 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
       const Eigen::Vector2d q = i == 0 ? vein.points[0]
                                        : ((1 - u) * vein.points[i - 1] + u * vein.points[i]).eval();
       if (!contains_point(outline, q, tol)) {
-        v.fail_at(v.line_of_element(pts_key, source_row[i]), pts_key,
+        v.fail_at(line_of_row(source_row[i]), pts_key,
                   "the vein leaves the outline near (x, y) = (" + fmt(q.x() / v.length_scale()) + ", " +
                       fmt(q.y() / v.length_scale()) + ") " + v.length_unit() + ", " +
                       fmt(distance_to_boundary(outline, q) / v.length_scale()) + " " + v.length_unit() +

@@ -1,5 +1,5 @@
-// A mutation fuzzer over every loader of user files: wing files, case files, chain files
-// and outline CSV files. From valid seeds, a fixed-seed generator makes mutants (bytes
+// A mutation fuzzer over every loader of user files: wing files, case files, chain files,
+// outline CSV files and SVG drawings. From valid seeds, a fixed-seed generator makes mutants (bytes
 // flipped, inserted, deleted; lines dropped, doubled, swapped; numbers replaced by edge
 // values: 0, denormals, 2^53 + 1, INT64_MIN, 1e308, inf, nan, ...; pieces of TOML
 // structure inserted; truncation). Each
@@ -9,7 +9,7 @@
 //  - a hang (a mutant taking over 10 s aborts the test, naming the loader),
 //  - a mutant that loads with a value outside the documented ranges (docs/wing_file.md,
 //    docs/case_file.md, docs/multibody.md): the "exit 0 on a bad value" of the CLI.
-// `make test`: 600 mutants per loader (2400); `make fuzz`: FLAPSIM_FUZZ_MUTANTS per loader.
+// `make test`: 600 mutants per loader (3000); `make fuzz`: FLAPSIM_FUZZ_MUTANTS per loader.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -107,6 +107,26 @@ TEST(FuzzLoaders, OutlineCsvFiles) {
         return std::string("point value");
     return std::string();
   });
+}
+
+// An SVG drawing (wings/svg_drawing.hpp) read as a wing's outline and veins: the test
+// drawing's mutants, through tests/data/drawn_wing.toml's keys.
+TEST(FuzzLoaders, SvgDrawings) {
+  flapsim::test::ScratchDir dir("fuzz_drawing");
+  const std::string seed = read_file(kSource + "/tests/data/drawn_wing.svg");
+  std::ofstream(dir / "drawn_wing.toml") << read_file(kSource + "/tests/data/drawn_wing.toml");
+  const fs::path file = dir / "drawn_wing.svg";
+  const auto t = fuzz("SVG drawing", seed, kSeed + 4, mutants_per_loader(), [&](const std::string& text) {
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+    const w::Wing wing = w::read_wing(w::parse_toml_file((dir / "drawn_wing.toml").string()));
+    if (wing.outline.size() > w::kMaxOutlinePoints) return std::string("outline point count");
+    for (const auto& v : wing.veins)
+      for (const auto& q : v.points)
+        if (!std::isfinite(q.x()) || !std::isfinite(q.y())) return std::string("vein point");
+    return wing_out_of_range(wing);
+  });
+  EXPECT_GT(t.loaded, 0u);  // the fuzzer reaches the wing, not only the XML's errors
+  EXPECT_GT(t.refused, 0u);
 }
 
 }  // namespace

@@ -1,0 +1,194 @@
+// The SVG reader of wing drawings (wings/svg_drawing.hpp): path data by SVG 1.1's grammar,
+// Bézier and arc flattening against the exact curves, transforms of groups, the elements
+// skipped, and every error located by file and line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "expect_input_error.hpp"
+#include "wings/svg_drawing.hpp"
+
+namespace w = flapsim::wings;
+using Eigen::Vector2d;
+
+namespace {
+
+w::SvgDrawing drawing(const std::string& body) {
+  return w::parse_svg_drawing("<svg xmlns=\"http://www.w3.org/2000/svg\">\n" + body + "\n</svg>\n", "d.svg",
+                              "planform.outline_file");
+}
+
+// The drawing's one shape (a copy: the drawing is often a temporary).
+w::SvgShape only(const w::SvgDrawing& d) {
+  EXPECT_EQ(d.shapes.size(), 1u);
+  return d.shapes.empty() ? w::SvgShape{} : d.shapes.front();
+}
+
+void expect_points(const std::vector<Vector2d>& got, const std::vector<Vector2d>& want, double tol = 1e-12) {
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < got.size(); ++i)
+    EXPECT_LT((got[i] - want[i]).norm(), tol)
+        << "point " << i << ": " << got[i].transpose() << " vs " << want[i].transpose();
+}
+
+}  // namespace
+
+// Lines, absolute and relative, H and V, the implicit lineto after a moveto, closepath.
+TEST(SvgDrawing, StraightPathCommandsAbsoluteAndRelative) {
+  const w::SvgShape a = only(drawing("<path id=\"a\" d=\"M 0,0 L 10 0 10,5 Z\"/>"));
+  EXPECT_TRUE(a.closed);
+  EXPECT_EQ(a.id, "a");
+  expect_points(a.points, {{0, 0}, {10, 0}, {10, 5}});
+  const w::SvgShape b = only(drawing("<path d=\"m 1 1 h 4 v 2 h -4 z\"/>"));
+  expect_points(b.points, {{1, 1}, {5, 1}, {5, 3}, {1, 3}});
+  // After m, pairs are relative linetos; after M absolute ones.
+  const w::SvgShape c = only(drawing("<path d=\"m 1 1 2 0 0 2\"/>"));
+  EXPECT_FALSE(c.closed);
+  expect_points(c.points, {{1, 1}, {3, 1}, {3, 3}});
+}
+
+// SVG 1.1, 8.3.9: "10-5.5.5" is 10, −5.5, 0.5; exponents; no separators after commands.
+TEST(SvgDrawing, NumbersWithoutSeparatorsFollowSvgsGrammar) {
+  const w::SvgShape s = only(drawing("<path d=\"M0,0L10-5.5.5,2l1e1-2E-1\"/>"));
+  expect_points(s.points, {{0, 0}, {10, -5.5}, {0.5, 2}, {10.5, 1.8}});
+}
+
+// A cubic's points lie on the exact curve B(k/n), its ends exactly; the chords keep within
+// the documented flatness (2.5e-4 of the control polygon) of the curve.
+TEST(SvgDrawing, CubicBezierPointsLieOnTheCurveWithinTheFlatness) {
+  const Vector2d p0(0, 0), p1(30, -40), p2(80, -40), p3(100, 0);
+  const w::SvgShape s = only(drawing("<path d=\"M 0 0 C 30 -40 80 -40 100 0\"/>"));
+  const int n = static_cast<int>(s.points.size()) - 1;
+  ASSERT_GE(n, 2);
+  const auto bezier = [&](double t) {
+    const double u = 1 - t;
+    return Vector2d(u * u * u * p0 + 3 * u * u * t * p1 + 3 * u * t * t * p2 + t * t * t * p3);
+  };
+  for (int k = 0; k <= n; ++k) EXPECT_LT((s.points[k] - bezier(double(k) / n)).norm(), 1e-12);
+  EXPECT_EQ(s.points.back(), p3);
+  const double polygon = (p1 - p0).norm() + (p2 - p1).norm() + (p3 - p2).norm();
+  double worst = 0.0;  // the curve's largest distance from its chords, densely sampled
+  for (int k = 0; k < n; ++k)
+    for (int j = 1; j < 50; ++j) {
+      const double t = (k + j / 50.0) / n;
+      const Vector2d a = s.points[k], b = s.points[k + 1], q = bezier(t);
+      const double u = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      worst = std::max(worst, (a + u * (b - a) - q).norm());
+    }
+  EXPECT_LE(worst, 2.5e-4 * polygon);
+  EXPECT_GT(worst, 2.5e-6 * polygon);  // not flattened far finer than asked
+}
+
+// An arc's points lie on its circle (SVG 1.1, F.6.5: the centre from the end points and
+// flags); 96 pieces a turn: a quarter circle in 24. The four flag choices by hand.
+TEST(SvgDrawing, ArcsFollowTheirCircleWithTheFlagsChoosingTheCentre) {
+  // From (10, 0) to (0, 10), radius 10: centre (0, 0) or (10, 10).
+  struct Case {
+    const char* flags;
+    Vector2d centre;
+    int pieces;
+  };
+  for (const Case& c : {Case{"0 1", {0, 0}, 24}, Case{"0 0", {10, 10}, 24}, Case{"1 0", {0, 0}, 72},
+                        Case{"1 1", {10, 10}, 72}}) {
+    const w::SvgShape s = only(drawing(std::string("<path d=\"M 10 0 A 10 10 0 ") + c.flags + " 0 10\"/>"));
+    EXPECT_EQ(static_cast<int>(s.points.size()) - 1, c.pieces) << c.flags;
+    for (const Vector2d& q : s.points) EXPECT_NEAR((q - c.centre).norm(), 10.0, 1e-12) << c.flags;
+    EXPECT_EQ(s.points.back(), Vector2d(0, 10));
+  }
+  // Radii too small for the ends are scaled up (F.6.6): a half circle of radius 5.
+  const w::SvgShape h = only(drawing("<path d=\"M 0 0 A 1 1 0 0 1 10 0\"/>"));
+  for (const Vector2d& q : h.points) EXPECT_NEAR((q - Vector2d(5, 0)).norm(), 5.0, 1e-12);
+}
+
+// Smooth cubics reflect the last control point; quadratics and their smooth form likewise.
+TEST(SvgDrawing, SmoothCurvesReflectTheLastControlPoint) {
+  const w::SvgShape s = only(drawing("<path d=\"M 0 0 C 0 10 10 10 10 0 S 20 -10 20 0\"/>"));
+  const w::SvgShape t = only(drawing("<path d=\"M 0 0 C 0 10 10 10 10 0 C 10 -10 20 -10 20 0\"/>"));
+  expect_points(s.points, t.points);
+  const w::SvgShape q = only(drawing("<path d=\"M 0 0 Q 5 10 10 0 T 20 0\"/>"));
+  const w::SvgShape r = only(drawing("<path d=\"M 0 0 Q 5 10 10 0 Q 15 -10 20 0\"/>"));
+  expect_points(q.points, r.points);
+}
+
+// Group and element transforms compose outside in: translate(100, 0) of the group, then
+// the element's scale(2) rotate(90): (1, 0) → (0, 1) → (0, 2) → (100, 2).
+TEST(SvgDrawing, TransformsOfGroupsAndElementsCompose) {
+  const w::SvgShape s =
+      only(drawing("<g transform=\"translate(100,0)\"><g><polyline transform=\"scale(2) rotate(90)\" "
+                   "points=\"0,0 1,0 1,1\"/></g></g>"));
+  expect_points(s.points, {{100, 0}, {100, 2}, {98, 2}});
+  const w::SvgShape m =
+      only(drawing("<line transform=\"matrix(1 0 0 -1 5 5)\" x1=\"1\" y1=\"1\" x2=\"2\" y2=\"3\"/>"));
+  expect_points(m.points, {{6, 4}, {7, 2}});
+  const w::SvgShape r =
+      only(drawing("<line transform=\"rotate(180 5 5)\" x1=\"0\" y1=\"0\" x2=\"10\" y2=\"0\"/>"));
+  expect_points(r.points, {{10, 10}, {0, 10}});
+}
+
+// What a drawing program writes around the shapes: the XML declaration, comments, a
+// DOCTYPE, Inkscape's named view and metadata, and <defs> whose paths are no shapes.
+TEST(SvgDrawing, DefinitionsCommentsAndMetadataAreNotShapes) {
+  const w::SvgDrawing d = w::parse_svg_drawing(
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!DOCTYPE svg [ <!ENTITY x \"y\"> ]>\n"
+      "<!-- a <path d=\"M 0 0\"/> in a comment -->\n"
+      "<svg:svg xmlns:svg=\"http://www.w3.org/2000/svg\" width=\"210mm\">\n"
+      "  <sodipodi:namedview id=\"base\"/>\n  <defs><path id=\"lpe\" d=\"M 0 0 L 1 1\"/></defs>\n"
+      "  <metadata><rdf:RDF><cc:Work/></rdf:RDF></metadata>\n"
+      "  <svg:g inkscape:label=\"Layer 1\">\n    <svg:rect id=\"r&amp;1\" inkscape:label=\"wing\" x=\"1\" "
+      "y=\"2\"\n"
+      "      width=\"3\" height=\"4\"/>\n  </svg:g>\n</svg:svg>\n",
+      "d.svg", "k");
+  const w::SvgShape r = only(d);
+  EXPECT_EQ(r.element, "rect");
+  EXPECT_EQ(r.id, "r&1");
+  EXPECT_EQ(r.label, "wing");
+  EXPECT_EQ(r.line, 9);
+  EXPECT_TRUE(r.closed);
+  expect_points(r.points, {{1, 2}, {4, 2}, {4, 6}, {1, 6}});
+  EXPECT_EQ(w::find_svg_shapes(d, "wing").size(), 1u);
+  EXPECT_EQ(w::find_svg_shapes(d, "r&1").size(), 1u);
+  EXPECT_TRUE(w::find_svg_shapes(d, "lpe").empty());
+}
+
+// A circle is 96 points on it; a path's subpaths are counted, the first kept.
+TEST(SvgDrawing, CirclesAndSubpaths) {
+  const w::SvgShape c = only(drawing("<circle cx=\"3\" cy=\"4\" r=\"2\"/>"));
+  EXPECT_EQ(c.points.size(), 96u);
+  Vector2d mean = Vector2d::Zero();
+  for (const Vector2d& q : c.points) {
+    EXPECT_NEAR((q - Vector2d(3, 4)).norm(), 2.0, 1e-12);
+    mean += q / 96.0;
+  }
+  EXPECT_LT((mean - Vector2d(3, 4)).norm(), 1e-12);
+  const w::SvgShape p = only(drawing("<path d=\"M 0 0 L 1 0 L 1 1 Z M 5 5 L 6 5 L 6 6 Z\"/>"));
+  EXPECT_EQ(p.subpaths, 2);
+  expect_points(p.points, {{0, 0}, {1, 0}, {1, 1}});
+}
+
+// Each error names the file and the line of the element.
+TEST(SvgDrawing, ErrorsNameTheFileAndTheElementsLine) {
+  const auto bad_path = expect_input_error([] { drawing("\n<path id=\"v\" d=\"M 0 0 L 1\"/>"); });
+  EXPECT_EQ(bad_path.file(), "d.svg");
+  EXPECT_EQ(bad_path.line(), 3);
+  EXPECT_EQ(bad_path.key(), "planform.outline_file");
+  EXPECT_NE(
+      bad_path.message().find("the path 'v' (line 3): path data (d) at character 10: expected a number"),
+      std::string::npos)
+      << bad_path.message();
+  const auto bad_transform = expect_input_error([] { drawing("<g transform=\"perspective(2)\"></g>"); });
+  EXPECT_EQ(bad_transform.line(), 2);
+  EXPECT_NE(bad_transform.message().find("unknown transform 'perspective'"), std::string::npos);
+  const auto unclosed = expect_input_error([] { drawing("<g>\n<path d=\"M 0 0 L 1 1\"/>"); });
+  EXPECT_NE(unclosed.message().find("</svg> closes <g> of line 2"), std::string::npos) << unclosed.message();
+  const auto rounded =
+      expect_input_error([] { drawing("<rect x=\"0\" y=\"0\" width=\"1\" height=\"1\" rx=\"0.1\"/>"); });
+  EXPECT_NE(rounded.message().find("Object to Path"), std::string::npos);
+  const auto not_svg = expect_input_error([] { w::parse_svg_drawing("<html></html>", "d.svg", "k"); });
+  EXPECT_NE(not_svg.message().find("not an SVG drawing"), std::string::npos);
+  const auto arc_flag = expect_input_error([] { drawing("<path d=\"M 0 0 A 1 1 0 2 0 1 1\"/>"); });
+  EXPECT_NE(arc_flag.message().find("large-arc flag must be 0 or 1"), std::string::npos);
+  const auto missing = expect_input_error([] { w::read_svg_drawing("/nonexistent/wing.svg", "k"); });
+  EXPECT_EQ(missing.file(), "/nonexistent/wing.svg");
+}

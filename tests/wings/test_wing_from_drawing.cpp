@@ -1,0 +1,238 @@
+// A wing from an SVG drawing (wings/drawing_frame.hpp; docs/wing_file.md, "A wing from a
+// drawing"): the same wing as its inline outline and `points` veins worked out by hand, in
+// every orientation of the drawing, the pivot, the shipped test drawing's Bézier outline
+// against its exact area, and each mistake a user can make named.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "common/scratch_dir.hpp"
+#include "expect_input_error.hpp"
+#include "wings/planform_geometry.hpp"
+#include "wings/toml_reader.hpp"
+#include "wings/wing_file.hpp"
+
+namespace w = flapsim::wings;
+using Eigen::Vector2d;
+using flapsim::test::ScratchDir;
+
+namespace {
+
+const std::string kMaterial =
+    "[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"
+    "[membrane]\nthickness = 0.01\nmaterial = \"film\"\n";
+
+// A trapezoid drawn with its tip to the right and its leading edge up, page units (y down):
+// root from (10, 20) (leading edge) to (10, 50), tip from (110, 10) to (110, 40); a vein
+// from (12, 30) to (100, 25). Pivot: the root's leading-edge end, (10, 20). In the wing's
+// frame (y = x_page − 10, x = 20 − y_page, then scaled by 50 mm / 100): outline (0, 0),
+// (5, 50), (−10, 50), (−15, 0) mm, the vein from (−5, 1) to (−2.5, 45) mm.
+const std::string kShapes =
+    "<polygon id=\"outline\" points=\"10,20 110,10 110,40 10,50\"/>\n"
+    "<polyline id=\"R1\" points=\"12,30 100,25\"/>\n";
+
+std::string svg(const std::string& body) {
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\">\n" + body + "</svg>\n";
+}
+
+std::string wing_toml(const std::string& planform_extra, const std::string& vein = "drawing_id = \"R1\"") {
+  return "length_unit = \"mm\"\n[planform]\noutline_file = \"w.svg\"\nspan = 50.0\nclamp_y = 0.5\n" +
+         planform_extra + kMaterial + "[[veins]]\nmaterial = \"film\"\nouter_diameter = 0.2\nwall = 0.05\n" +
+         vein + "\n";
+}
+
+w::Wing read(const ScratchDir& dir, const std::string& drawing, const std::string& toml) {
+  std::ofstream(dir / "w.svg") << drawing;
+  return w::read_wing(w::parse_toml_string(toml, (dir / "w.toml").string()));
+}
+
+// The wing by hand, as an inline outline and a `points` vein.
+w::Wing by_hand() {
+  return w::read_wing(w::parse_toml_string(
+      "length_unit = \"mm\"\n[planform]\noutline = [[0, 0], [5, 50], [-10, 50], [-15, 0]]\nclamp_y = 0.5\n" +
+          kMaterial +
+          "[[veins]]\nmaterial = \"film\"\nouter_diameter = 0.2\nwall = 0.05\npoints = [[-5, 1], [-2.5, "
+          "45]]\n",
+      "hand.toml"));
+}
+
+void expect_same_wing(const w::Wing& a, const w::Wing& b) {
+  ASSERT_EQ(a.outline.size(), b.outline.size());
+  // The outline may start at another point: match each by its nearest.
+  for (const Vector2d& p : a.outline) {
+    double nearest = 1e300;
+    for (const Vector2d& q : b.outline) nearest = std::min(nearest, (p - q).norm());
+    EXPECT_LT(nearest, 1e-15) << p.transpose();
+  }
+  ASSERT_EQ(a.veins.size(), b.veins.size());
+  for (std::size_t v = 0; v < a.veins.size(); ++v) {
+    ASSERT_EQ(a.veins[v].points.size(), b.veins[v].points.size());
+    for (std::size_t i = 0; i < a.veins[v].points.size(); ++i)
+      EXPECT_LT((a.veins[v].points[i] - b.veins[v].points[i]).norm(), 1e-15);
+  }
+  EXPECT_NEAR(w::planform_properties(a.outline).area, w::planform_properties(b.outline).area, 1e-18);
+}
+
+}  // namespace
+
+TEST(WingFromDrawing, IsTheWingItsPointsWorkedOutByHandGive) {
+  ScratchDir dir("drawing_by_hand");
+  expect_same_wing(read(dir, svg(kShapes), wing_toml("")), by_hand());
+  // A vein drawn from its tip to its root: its root-most end first, as written by hand.
+  expect_same_wing(read(dir,
+                        svg("<polygon id=\"outline\" points=\"10,20 110,10 110,40 10,50\"/>\n"
+                            "<polyline id=\"R1\" points=\"100,25 12,30\"/>\n"),
+                        wing_toml("")),
+                   by_hand());
+}
+
+// The same drawing turned on the page (tip up: rotate(−90) turns it counterclockwise as
+// seen) or mirrored (leading edge down) is the same wing with drawing_tip and
+// drawing_leading_edge saying so; the default leading edge lies 90° counterclockwise of the tip.
+TEST(WingFromDrawing, EveryOrientationOfTheDrawingGivesTheSameWing) {
+  ScratchDir dir("drawing_orientations");
+  const w::Wing hand = by_hand();
+  expect_same_wing(
+      read(dir, svg("<g transform=\"rotate(-90)\">" + kShapes + "</g>"), wing_toml("drawing_tip = \"up\"\n")),
+      hand);
+  expect_same_wing(read(dir, svg("<g transform=\"rotate(90)\">" + kShapes + "</g>"),
+                        wing_toml("drawing_tip = \"down\"\n")),
+                   hand);
+  expect_same_wing(read(dir, svg("<g transform=\"rotate(180)\">" + kShapes + "</g>"),
+                        wing_toml("drawing_tip = \"left\"\n")),
+                   hand);
+  expect_same_wing(read(dir, svg("<g transform=\"scale(1,-1)\">" + kShapes + "</g>"),
+                        wing_toml("drawing_leading_edge = \"down\"\n")),
+                   hand);
+  // Without the key, the turned drawing is another wing (its span along the page's x).
+  const w::Wing unturned = read(dir, svg("<g transform=\"rotate(-90)\">" + kShapes + "</g>"), wing_toml(""));
+  EXPECT_GT(
+      std::abs(w::planform_properties(unturned.outline).area - w::planform_properties(hand.outline).area),
+      1e-6);
+}
+
+// A circle named "pivot" at the root's middle, (10, 35): the wing is the hand-made one moved
+// by 15 page units (7.5 mm) in x.
+TEST(WingFromDrawing, APivotCircleSetsTheOrigin) {
+  ScratchDir dir("drawing_pivot");
+  const w::Wing wing =
+      read(dir, svg(kShapes + "<circle id=\"pivot\" cx=\"10\" cy=\"35\" r=\"1\"/>\n"), wing_toml(""));
+  const w::Wing hand = by_hand();
+  for (const Vector2d& p : hand.outline) {
+    double nearest = 1e300;
+    for (const Vector2d& q : wing.outline) nearest = std::min(nearest, (p + Vector2d(7.5e-3, 0) - q).norm());
+    EXPECT_LT(nearest, 1e-15);
+  }
+}
+
+// The shipped test drawing (tests/data/drawn_wing.svg, Inkscape's layout): its outline is
+// three cubic Bézier curves and the root's straight closing edge. Green's theorem over the
+// exact curves gives its area, A = Σ ∮ x dy, closed form for a cubic (the integral of
+// x(t) y'(t) over t in [0, 1], a polynomial); the flattened outline's area lies within the
+// flattening's bound of it (each chord within 2.5e-4 of its curve's control polygon: a
+// relative area error of that order). Scaled to span 40 mm: the drawing's tip, the largest
+// x of the curves, found by sampling them.
+TEST(WingFromDrawing, TheTestDrawingsBezierOutlineHasItsExactArea) {
+  const std::string file = std::string(FLAPSIM_SOURCE_DIR) + "/tests/data/drawn_wing.toml";
+  const w::Wing wing = w::read_wing(w::parse_toml_file(file));
+  // The outline's curves in the layer's coordinates (relative commands resolved by hand):
+  // start (20, 90); c 60,-20 140,-30 195,-20 → (80,70) (160,60) (215,70); c 13,5 13,25 -3,30
+  // from (215, 70) → (228,75) (228,95) (212,100); C 150,125 70,130 20,115; Z back to (20, 90).
+  using P = Vector2d;
+  const P c[3][4] = {{P(20, 90), P(80, 70), P(160, 60), P(215, 70)},
+                     {P(215, 70), P(228, 75), P(228, 95), P(212, 100)},
+                     {P(212, 100), P(150, 125), P(70, 130), P(20, 115)}};
+  // ∫ x dy over a cubic by Gauss–Legendre with 4 points: exact for the degree-5 integrand.
+  const double gx[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  double area = 0.0, tip_x = -1e300;
+  for (const auto& b : c) {
+    for (int k = 0; k < 4; ++k) {
+      const double t = 0.5 * (gx[k] + 1), u = 1 - t;
+      const P q = u * u * u * b[0] + 3 * u * u * t * b[1] + 3 * u * t * t * b[2] + t * t * t * b[3];
+      const P d = 3 * u * u * (b[1] - b[0]) + 6 * u * t * (b[2] - b[1]) + 3 * t * t * (b[3] - b[2]);
+      area += 0.5 * gw[k] * q.x() * d.y();
+    }
+    for (int k = 0; k <= 100000; ++k) {  // the tip: the largest x of the curves
+      const double t = k / 100000.0, u = 1 - t;
+      tip_x = std::max(tip_x, u * u * u * b[0].x() + 3 * u * u * t * b[1].x() + 3 * u * t * t * b[2].x() +
+                                  t * t * t * b[3].x());
+    }
+  }
+  area += 20.0 * (90.0 - 115.0);                // the root's edge x = 20 from y = 115 to 90: ∫ x dy
+  area = std::abs(area);                        // page y points down: the sign is the drawing's direction
+  const double scale = 40e-3 / (tip_x - 20.0);  // the pivot's x is the root's, 20: y_wing = x − 20
+  const double exact = area * scale * scale;
+  const double flattened = w::planform_properties(wing.outline).area;
+  // The chords cut off at most (2/3) δ ℓ each (δ their distance from the curve, within 2.5e-4
+  // of the curve's control polygon, 226, 50 and 205 page units): (2/3) Σ δ ℓ over a perimeter
+  // of about 450 units against an area of about 5300: under 1e-3 of it.
+  EXPECT_LT(flattened / exact, 1.0);
+  EXPECT_GT(flattened / exact, 1.0 - 1e-3) << flattened << " vs " << exact;
+  EXPECT_NEAR(w::planform_properties(wing.outline).span, 40e-3, 1e-6 * 40e-3);  // tip sampled within 1e-6 R
+  EXPECT_EQ(wing.veins.size(), 2u);
+  // R1 is drawn from the tip inward; its first point is the root-most: page (22, 95), the
+  // pivot at (20, 92): y = 2, x = −3 page units.
+  // (scale from the exact tip: the flattened outline's tip lies within 1e-6 R of it)
+  EXPECT_LT((wing.veins[0].points.front() - scale * Vector2d(-3, 2)).norm(), 1e-6 * 40e-3);
+}
+
+// What a user gets wrong, each named with the key and line.
+TEST(WingFromDrawing, MistakesAreNamed) {
+  ScratchDir dir("drawing_mistakes");
+  const auto message = [&](const std::string& drawing, const std::string& toml) {
+    return expect_input_error([&] { read(dir, drawing, toml); }).what();
+  };
+  const std::string two =
+      "<rect id=\"a\" x=\"0\" y=\"0\" width=\"100\" height=\"20\"/>\n"
+      "<rect id=\"b\" x=\"0\" y=\"30\" width=\"100\" height=\"20\"/>\n";
+  EXPECT_NE(std::string(message(svg(two), wing_toml("", "points = [[0, 1], [0, 2]]")))
+                .find("has 2 closed shapes: name the outline's with outline_id"),
+            std::string::npos);
+  EXPECT_NE(std::string(message(svg(two), wing_toml("outline_id = \"c\"\n", "points = [[0, 1], [0, 2]]")))
+                .find("no shape with the id or label 'c' in"),
+            std::string::npos);
+  EXPECT_NE(std::string(message(svg("<path id=\"outline\" d=\"M 0 0 L 100 0 L 100 20\"/>\n"),
+                                wing_toml("", "points = [[0, 1], [0, 2]]")))
+                .find("must be one closed curve: it is open"),
+            std::string::npos);
+  EXPECT_NE(std::string(message(svg(kShapes), wing_toml("", "drawing_id = \"R2\"")))
+                .find("no shape with the id or label 'R2'"),
+            std::string::npos);
+  EXPECT_NE(std::string(message(svg(kShapes),
+                                wing_toml("drawing_tip = \"right\"\ndrawing_leading_edge = \"left\"\n")))
+                .find("must be at right angles to drawing_tip"),
+            std::string::npos);
+  // A vein drawn past the outline: the wing file's line of drawing_id.
+  const auto outside = expect_input_error([&] {
+    read(dir,
+         svg("<polygon id=\"outline\" points=\"10,20 110,10 110,40 10,50\"/>\n<polyline id=\"R1\" "
+             "points=\"12,30 130,25\"/>\n"),
+         wing_toml(""));
+  });
+  EXPECT_EQ(outside.key(), "veins[0].drawing_id");
+  EXPECT_EQ(outside.line(), 17);  // wing_toml's line of drawing_id
+  EXPECT_NE(outside.message().find("the vein leaves the outline"), std::string::npos);
+  // The drawing's keys without a drawing, and a drawn vein without one.
+  const auto inline_outline = [](const std::string& extra, const std::string& vein) {
+    return "length_unit = \"mm\"\n[planform]\noutline = [[0, 0], [5, 50], [-10, 50], [-15, 0]]\nclamp_y = "
+           "0.5\n" +
+           extra + kMaterial + "[[veins]]\nmaterial = \"film\"\nouter_diameter = 0.2\nwall = 0.05\n" + vein +
+           "\n";
+  };
+  EXPECT_NE(
+      std::string(expect_input_error([&] {
+                    w::read_wing(w::parse_toml_string(
+                        inline_outline("drawing_tip = \"up\"\n", "points = [[0, 1], [0, 2]]"), "x.toml"));
+                  }).what())
+          .find("only applies to an SVG drawing"),
+      std::string::npos);
+  EXPECT_NE(
+      std::string(expect_input_error([&] {
+                    w::read_wing(w::parse_toml_string(inline_outline("", "drawing_id = \"R1\""), "x.toml"));
+                  }).what())
+          .find("no SVG drawing"),
+      std::string::npos);
+}
