@@ -69,7 +69,7 @@ test-asan: deps $(ASAN_BUILD)/CMakeCache.txt
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
 
 # The fuzzers of `make test` (tests/io/test_fuzz_loaders.cpp, tests/app/test_fuzz_sweep_arguments.cpp)
-# with more mutants: FUZZ_MUTANTS per loader (wing, case, chain, outline CSV, sweep --cases
+# with more mutants: FUZZ_MUTANTS per loader (wing, case, chain, outline CSV, SVG drawing, sweep --cases
 # table; a quarter each for four --vary seeds), same fixed seeds.
 FUZZ_MUTANTS ?= 25000
 fuzz: build

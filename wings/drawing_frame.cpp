@@ -29,6 +29,16 @@ std::string list_shapes(const std::vector<const SvgShape*>& shapes) {
   return s;
 }
 
+// A closed shape, or an open one that ends where it starts (to 1e-9 of its size: a curve
+// drawn back to its first point without a closepath, as some programs save it).
+bool encloses(const SvgShape& s) {
+  if (s.closed) return true;
+  if (s.points.size() < 4) return false;
+  double extent = 0.0;
+  for (const Vec& q : s.points) extent = std::max(extent, (q - s.points.front()).cwiseAbs().maxCoeff());
+  return (s.points.back() - s.points.front()).cwiseAbs().maxCoeff() <= 1e-9 * extent;
+}
+
 const SvgShape& pick_outline(const TomlTable& p, const SvgDrawing& d) {
   const std::string file = d.file;
   if (p.has("outline_id")) {
@@ -51,7 +61,7 @@ const SvgShape& pick_outline(const TomlTable& p, const SvgDrawing& d) {
   }
   std::vector<const SvgShape*> closed;
   for (const SvgShape& s : d.shapes)
-    if (s.closed && s.id != "pivot" && s.label != "pivot") closed.push_back(&s);
+    if (encloses(s) && s.id != "pivot" && s.label != "pivot") closed.push_back(&s);
   if (closed.empty())
     p.fail("outline_file",
            file +
@@ -85,7 +95,7 @@ DrawingOutline read_drawing_outline(const TomlTable& p, const std::string& svg_p
   f.drawing = read_svg_drawing(svg_path, p.key_path("outline_file"));
   const SvgShape& shape = pick_outline(p, f.drawing);
   const std::string key = p.has("outline_id") ? "outline_id" : "outline_file";
-  if (!shape.closed || shape.subpaths != 1)
+  if (!encloses(shape) || shape.subpaths != 1)
     p.fail(key,
            "the outline, " + shape.describe() + " of " + svg_path + ", must be one closed curve: " +
                (shape.subpaths != 1 ? "it has " + std::to_string(shape.subpaths) +

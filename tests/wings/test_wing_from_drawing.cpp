@@ -91,6 +91,16 @@ TEST(WingFromDrawing, IsTheWingItsPointsWorkedOutByHandGive) {
 // The same drawing turned on the page (tip up: rotate(−90) turns it counterclockwise as
 // seen) or mirrored (leading edge down) is the same wing with drawing_tip and
 // drawing_leading_edge saying so; the default leading edge lies 90° counterclockwise of the tip.
+// An outline drawn back to its first point without a closepath (Z) is closed as drawn.
+TEST(WingFromDrawing, AnOutlineEndingWhereItStartsIsClosed) {
+  ScratchDir dir("drawing_open_closed");
+  expect_same_wing(read(dir,
+                        svg("<path id=\"outline\" d=\"M 10,20 L 110,10 110,40 10,50 10,20\"/>\n"
+                            "<polyline id=\"R1\" points=\"12,30 100,25\"/>\n"),
+                        wing_toml("")),
+                   by_hand());
+}
+
 TEST(WingFromDrawing, EveryOrientationOfTheDrawingGivesTheSameWing) {
   ScratchDir dir("drawing_orientations");
   const w::Wing hand = by_hand();
