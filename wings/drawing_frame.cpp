@@ -21,6 +21,10 @@ Vec screen_direction(const std::string& name) {
   return {0.0, 1.0};  // "down"
 }
 
+std::string direction_name(const Vec& d) {
+  return d.x() > 0.5 ? "right" : d.x() < -0.5 ? "left" : d.y() < 0.0 ? "up" : "down";
+}
+
 // Up to eight shapes, for a message listing them.
 std::string list_shapes(const std::vector<const SvgShape*>& shapes) {
   std::string s;
@@ -136,6 +140,10 @@ DrawingOutline read_drawing_outline(const TomlTable& p, const std::string& svg_p
     }
   }
   for (const Vec& q : shape.points) out.outline.push_back(f.to_wing(q));
+  out.description = "outline " + shape.describe() + " of " + std::filesystem::path(svg_path).filename().string() +
+                    ", tip " + p.get_string("drawing_tip", "right") + ", leading edge " +
+                    direction_name(f.leading_edge) + ", pivot " +
+                    (pivots.size() == 1 ? pivots.front()->describe() : std::string("its root-most point"));
   return out;
 }
 

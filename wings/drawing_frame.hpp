@@ -40,6 +40,9 @@ struct DrawingOutline {
   DrawingFrame frame;
   std::vector<Eigen::Vector2d> outline;
   int line = 0;  ///< the outline's element's line in the drawing
+  /// "the path 'path1' (label 'outline') (line 34), tip right, leading edge up, pivot: the
+  /// circle 'pivot' (line 40)": for `check` (with the scale, once known).
+  std::string description;
 };
 
 /// Reads the drawing `svg_path` that `planform.outline_file` names and picks its outline

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -224,6 +225,7 @@ struct Planform {
   double clamp_y = 0.0;
   bool from_spline = false;  ///< the outline is `spline`'s curve, not the points as written
   std::optional<DrawingFrame> drawing;  ///< an SVG outline_file: its map, for veins with drawing_id
+  std::string drawing_description;      ///< Wing::drawing
 };
 
 // The outline of `shape = "..."` (ellipse, half_ellipse, rounded_rectangle) from its size keys.
@@ -299,6 +301,7 @@ Planform read_planform(const TomlTable& p) {
       DrawingOutline drawn = read_drawing_outline(p, file_path);
       out.outline = std::move(drawn.outline);
       out.drawing = std::move(drawn.frame);
+      out.drawing_description = std::move(drawn.description);
       drawing_line = drawn.line;
       if (out.outline.size() > kMaxOutlinePoints)
         throw InputError(file_path, drawing_line, p.key_path("outline_file"),
@@ -350,7 +353,12 @@ Planform read_planform(const TomlTable& p) {
       p.fail(outline_key, "the outline must reach y > 0 (the tip) to be scaled to the span");
     const double k = span / max_y;
     for (auto& q : out.outline) q *= k;
-    if (out.drawing) out.drawing->scale = k;
+    if (out.drawing) {
+      out.drawing->scale = k;
+      char scale[64];
+      std::snprintf(scale, sizeof scale, "; 1 drawing unit = %.4g %s", k / p.length_scale(), p.length_unit().c_str());
+      out.drawing_description += scale;
+    }
   }
 
   // 2. The polygon must be simple (checked before stretching, which keeps simplicity).
@@ -652,6 +660,7 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
   const Planform planform = read_planform(root.get_table("planform"));
   wing.outline = planform.outline;
   wing.clamp_y = planform.clamp_y;
+  wing.drawing = planform.drawing_description;
   const PlanformProperties props = planform_properties(wing.outline);
   wing.span = props.span;
   check_span(root.get_table("planform"), wing.span, wing.warnings);

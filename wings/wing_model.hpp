@@ -93,6 +93,9 @@ struct Wing {
   /// Twist, camber and dihedral of the lattice's reference surface ([surface]; flat if
   /// absent). Lattice-only: the FEM, the reduction and the chain use the flat planform.
   SurfaceShape surface;
+  /// How an outline read from a drawing was taken from it (which shape, the orientation,
+  /// the pivot, the scale), for `check`; empty for any other outline.
+  std::string drawing;
 };
 
 }  // namespace flapsim::wings

@@ -31,6 +31,7 @@ std::string describe_wing(const Wing& wing) {
   s += line("  r2/R                   %10.4f", p.r2);
   s += line("  root y (outline min)   %10.3f mm", p.root_y * 1e3);
   s += line("  outline points         %10zu", wing.outline.size());
+  if (!wing.drawing.empty()) s += "  drawn                  " + wing.drawing + "\n";
   s += line("  veins                  %10zu", wing.veins.size());
   // In um below 0.1 mm (a fruit fly's 0.5 um membrane read "0.0005 mm", one digit).
   const bool thin = wing.membrane.thickness < 1e-4;

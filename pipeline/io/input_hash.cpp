@@ -17,11 +17,11 @@ namespace flapsim::io {
 // series), not its numbers, so two runs that differ in it alone share a hash; a command that
 // keeps runs by their hash and wants series checks for them (docs/sweeps.md, "Resuming a
 // sweep").
-// (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages; they change no result.)
+// (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and Vein::key locate messages, Case::warnings and Wing::warnings warn, Wing::lattice_gap follows from the outline and refuses a run, SurfaceShape::line locates messages, Wing::drawing describes where the outline came from (the outline is hashed); they change no result.)
 static_assert(sizeof(Case) == 1488, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
-static_assert(sizeof(wings::Wing) == 344 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::Wing) == 376 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Vein) == 200, "wings::Vein changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Section) == 40,
               "wings::Section changed: add the new field to canonical_inputs()");

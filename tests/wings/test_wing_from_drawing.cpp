@@ -183,6 +183,12 @@ TEST(WingFromDrawing, TheTestDrawingsBezierOutlineHasItsExactArea) {
   EXPECT_GT(flattened / exact, 1.0 - 1e-3) << flattened << " vs " << exact;
   EXPECT_NEAR(w::planform_properties(wing.outline).span, 40e-3, 1e-6 * 40e-3);  // tip sampled within 1e-6 R
   EXPECT_EQ(wing.veins.size(), 2u);
+  // What `check` prints of it (the scale: 40 mm over the tip's x from the pivot, 0.1957 mm).
+  EXPECT_NE(wing.drawing.find("outline the path 'path1' (label 'outline') (line 33) of drawn_wing.svg, tip right, "
+                              "leading edge up, pivot the circle 'pivot' (line 38); 1 drawing unit = 0.1957 mm"),
+            std::string::npos)
+      << wing.drawing;
+  EXPECT_NEAR(scale, 0.1957e-3, 0.00005e-3);
   // R1 is drawn from the tip inward; its first point is the root-most: page (22, 95), the
   // pivot at (20, 92): y = 2, x = −3 page units.
   // (scale from the exact tip: the flattened outline's tip lies within 1e-6 R of it)
