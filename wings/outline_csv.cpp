@@ -4,9 +4,9 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 
+#include "wings/bounded_input_file.hpp"
 #include "wings/input_error.hpp"
 #include "wings/text_trim.hpp"
 
@@ -50,15 +50,7 @@ bool two_fields(const std::string& t, std::string& a, std::string& b) {
 
 OutlineCsv read_outline_csv_lines(const std::string& path, const std::string& key) {
   // Bounded: a regular file of limited size (not /dev/zero, a FIFO or a folder).
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw InputError(path, 0, key, "the outline file does not exist");
-  if (!std::filesystem::is_regular_file(status))
-    throw InputError(path, 0, key, "the outline file is not a regular file (a device, FIFO or folder)");
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxOutlineFileBytes)
-    throw InputError(path, 0, key,
-                     "the outline file is larger than " + std::to_string(kMaxOutlineFileBytes) + " bytes");
+  check_bounded_input_file(path, key, "the outline file", kMaxOutlineFileBytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, key, "cannot open the outline file");
   OutlineCsv out;

@@ -1,10 +1,10 @@
 #include "wings/svg_drawing.hpp"
 
-#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
 
+#include "wings/bounded_input_file.hpp"
 #include "wings/input_error.hpp"
 #include "wings/svg_numbers.hpp"
 #include "wings/svg_path_data.hpp"
@@ -173,15 +173,7 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
 }
 
 SvgDrawing read_svg_drawing(const std::string& path, const std::string& key) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw InputError(path, 0, key, "the drawing does not exist");
-  if (!std::filesystem::is_regular_file(status))
-    throw InputError(path, 0, key, "the drawing is not a regular file (a device, FIFO or folder)");
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxDrawingFileBytes)
-    throw InputError(path, 0, key,
-                     "the drawing is larger than " + std::to_string(kMaxDrawingFileBytes) + " bytes");
+  check_bounded_input_file(path, key, "the drawing", kMaxDrawingFileBytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, key, "cannot open the drawing");
   std::ostringstream text;
