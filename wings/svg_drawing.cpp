@@ -1,5 +1,6 @@
 #include "wings/svg_drawing.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -127,6 +128,7 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
     SvgAffine transform;
     bool skipped;
     int line;
+    std::vector<std::string> names;  // the ids and labels of it and the groups around it
   };
   std::vector<Open> stack;
   SvgTagReader reader(text, file, key);
@@ -162,9 +164,15 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
         if (points > kMaxDrawingPoints)
           where.fail(tag.line,
                      "the drawing flattens into more than " + std::to_string(kMaxDrawingPoints) + " points");
+        if (!stack.empty()) shape->group_names = stack.back().names;
         drawing.shapes.push_back(std::move(*shape));
       }
-    if (!tag.self_closing) stack.push_back({tag.name, transform, skipped, tag.line});
+    if (!tag.self_closing) {
+      std::vector<std::string> names = stack.empty() ? std::vector<std::string>{} : stack.back().names;
+      for (const char* attribute : {"id", "inkscape:label"})
+        if (const std::string* n = tag.attribute(attribute)) names.push_back(*n);
+      stack.push_back({tag.name, transform, skipped, tag.line, std::move(names)});
+    }
   }
   if (!seen_svg) where.fail(0, "not an SVG drawing: no <svg> element");
   if (!stack.empty())
@@ -185,6 +193,10 @@ std::vector<const SvgShape*> find_svg_shapes(const SvgDrawing& drawing, std::str
   std::vector<const SvgShape*> found;
   for (const SvgShape& s : drawing.shapes)
     if (s.id == name || s.label == name) found.push_back(&s);
+  if (found.empty())  // the shapes of a group of that name
+    for (const SvgShape& s : drawing.shapes)
+      if (std::find(s.group_names.begin(), s.group_names.end(), name) != s.group_names.end())
+        found.push_back(&s);
   return found;
 }
 

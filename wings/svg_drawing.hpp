@@ -40,6 +40,8 @@ struct SvgShape {
   /// The first subpath's points, consecutive duplicates removed; a closed one's last point
   /// does not repeat its first. [user units, SVG frame]
   std::vector<Eigen::Vector2d> points;
+  /// The ids and labels of the groups (and other elements) around it, outermost first.
+  std::vector<std::string> group_names;
   /// "the path 'R1' (line 12)": how messages name it.
   std::string describe() const;
 };
@@ -58,7 +60,9 @@ SvgDrawing read_svg_drawing(const std::string& path, const std::string& key);
 /// The shapes of an SVG text (for tests; \p file names it in messages).
 SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, const std::string& key);
 
-/// The shapes whose `id` or `inkscape:label` is \p name.
+/// The shapes whose `id` or `inkscape:label` is \p name; if none, the shapes inside a group
+/// (or any element) of that name: matplotlib names a patch's `<g>`, not its path (`gid`),
+/// and a group of one shape is the shape.
 std::vector<const SvgShape*> find_svg_shapes(const SvgDrawing& drawing, std::string_view name);
 
 }  // namespace flapsim::wings

@@ -152,6 +152,23 @@ TEST(SvgDrawing, DefinitionsCommentsAndMetadataAreNotShapes) {
   EXPECT_TRUE(w::find_svg_shapes(d, "lpe").empty());
 }
 
+// A name may be a group's: matplotlib writes a patch's gid on the <g> around its path.
+// The shape's own id or label comes first; a group of two shapes names both.
+TEST(SvgDrawing, AGroupsNameFindsTheShapesInsideIt) {
+  const w::SvgDrawing d = drawing(
+      "<g id=\"outline\"><g><path d=\"M 0 0 L 1 0 L 1 1 Z\"/></g></g>\n"
+      "<g id=\"veins\"><path id=\"outline_copy\" d=\"M 0 0 L 1 1\"/><path d=\"M 0 1 L 1 0\"/></g>\n"
+      "<g id=\"R1\"><path id=\"inner\" inkscape:label=\"R1\" d=\"M 2 2 L 3 3\"/><path d=\"M 5 5 L 6 6\"/></g>\n");
+  const auto outline = w::find_svg_shapes(d, "outline");
+  ASSERT_EQ(outline.size(), 1u);
+  EXPECT_TRUE(outline.front()->closed);
+  EXPECT_EQ(outline.front()->group_names, (std::vector<std::string>{"outline"}));
+  EXPECT_EQ(w::find_svg_shapes(d, "veins").size(), 2u);
+  const auto r1 = w::find_svg_shapes(d, "R1");  // its own label, not the group's two
+  ASSERT_EQ(r1.size(), 1u);
+  EXPECT_EQ(r1.front()->id, "inner");
+}
+
 // A circle is 96 points on it; a path's subpaths are counted, the first kept.
 TEST(SvgDrawing, CirclesAndSubpaths) {
   const w::SvgShape c = only(drawing("<circle cx=\"3\" cy=\"4\" r=\"2\"/>"));
