@@ -124,6 +124,27 @@ void check_span(const TomlTable& p, double span_m, std::vector<InputWarning>& wa
            "; lengths are in length_unit = \"" + p.length_unit() + "\"" + unit_guess(p, span_m, 1e-3, 1.0));
 }
 
+// A drawing read with its tip in the wrong direction: the outline reaches further across the
+// span than along it (the drawn test wing read with drawing_tip = "up": R²/S 0.075, a mean
+// chord 13 times its span).
+void check_drawing_direction(const TomlTable& p, const Polygon& outline, std::vector<InputWarning>& warnings) {
+  Eigen::Vector2d lo = outline.front(), hi = lo;
+  for (const auto& q : outline) {
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  const Eigen::Vector2d extent = hi - lo;  // (chordwise, spanwise) [m]
+  if (extent.x() <= extent.y()) return;
+  const std::string tip = p.get_string("drawing_tip", "right");
+  const bool across = tip == "right" || tip == "left";
+  warn(warnings, p, p.has("drawing_tip") ? "drawing_tip" : "outline_file",
+       "the drawn outline reaches " + fmt(extent.x() / p.length_scale()) + " " + p.length_unit() +
+           " chordwise but " + fmt(extent.y() / p.length_scale()) + " " + p.length_unit() +
+           " from root to tip, its span along the drawing's " + tip + " direction: does the tip point " +
+           (across ? "up or down" : "right or left") + " in the drawing? Set drawing_tip (docs/wing_file.md, "
+           "\"A wing from a drawing\")");
+}
+
 void check_plate(const TomlTable& t, double thickness_m, std::vector<InputWarning>& warnings) {
   if (thickness_m <= 5e-3) return;
   warn(warnings, t, "thickness",
@@ -664,6 +685,7 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
   const PlanformProperties props = planform_properties(wing.outline);
   wing.span = props.span;
   check_span(root.get_table("planform"), wing.span, wing.warnings);
+  if (!wing.drawing.empty()) check_drawing_direction(root.get_table("planform"), wing.outline, wing.warnings);
   wing.lattice_gap = lattice_gap(root.get_table("planform"), wing.outline);
   warn_lattice_gap(wing.lattice_gap, wing.warnings);
 

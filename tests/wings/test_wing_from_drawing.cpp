@@ -116,11 +116,19 @@ TEST(WingFromDrawing, EveryOrientationOfTheDrawingGivesTheSameWing) {
   expect_same_wing(read(dir, svg("<g transform=\"scale(1,-1)\">" + kShapes + "</g>"),
                         wing_toml("drawing_leading_edge = \"down\"\n")),
                    hand);
-  // Without the key, the turned drawing is another wing (its span along the page's x).
+  // Without the key, the turned drawing is another wing (its span along the page's x), 3 times
+  // wider than long: warned, asking where the tip points. The hand-made wing is not.
   const w::Wing unturned = read(dir, svg("<g transform=\"rotate(-90)\">" + kShapes + "</g>"), wing_toml(""));
   EXPECT_GT(
       std::abs(w::planform_properties(unturned.outline).area - w::planform_properties(hand.outline).area),
       1e-6);
+  ASSERT_EQ(unturned.warnings.size(), 1u);
+  EXPECT_EQ(unturned.warnings.front().key, "planform.outline_file");
+  EXPECT_NE(unturned.warnings.front().message.find("from root to tip, its span along the drawing's right direction: "
+                                                   "does the tip point up or down in the drawing?"),
+            std::string::npos)
+      << unturned.warnings.front().message;
+  EXPECT_TRUE(read(dir, svg(kShapes), wing_toml("")).warnings.empty());
 }
 
 // A circle named "pivot" at the root's middle, (10, 35): the wing is the hand-made one moved
