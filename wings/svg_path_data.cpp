@@ -142,7 +142,14 @@ std::vector<SvgSubpath> parse_svg_path_data(std::string_view d, std::size_t poin
       bad("a number after closepath (Z)");
     }
     const bool rel = std::islower(static_cast<unsigned char>(command));
-    switch (std::toupper(static_cast<unsigned char>(command))) {
+    const char upper = static_cast<char>(std::toupper(static_cast<unsigned char>(command)));
+    // The reflection of the last control point about the current point if the previous
+    // command was one of the two curves given, else the current point (SVG 1.1, 8.3.6, 8.3.7).
+    const auto reflected_control = [&](char curve, char smooth) {
+      const char p = static_cast<char>(std::toupper(static_cast<unsigned char>(previous)));
+      return (p == curve || p == smooth) ? Vec(2 * current - last_control) : current;
+    };
+    switch (upper) {
       case 'M':
         current = start = point(rel);  // a leading 'm' is relative to (0, 0): absolute
         out.push_back({});
@@ -163,36 +170,20 @@ std::vector<SvgSubpath> parse_svg_path_data(std::string_view d, std::size_t poin
         current.y() = num() + (rel ? current.y() : 0.0);
         append_svg_point(out.back().points, current);
         break;
-      case 'C': {
+      case 'C':
+      case 'S': {  // S: the first control point is the last one's reflection (after C or S)
         open_subpath();
-        const Vec p1 = point(rel), p2 = point(rel), p3 = point(rel);
-        cubic(out.back().points, current, p1, p2, p3);
-        last_control = p2;
-        current = p3;
-        break;
-      }
-      case 'S': {
-        open_subpath();
-        const char pu = static_cast<char>(std::toupper(static_cast<unsigned char>(previous)));
-        const Vec p1 = (pu == 'C' || pu == 'S') ? Vec(2 * current - last_control) : current;
+        const Vec p1 = upper == 'C' ? point(rel) : reflected_control('C', 'S');
         const Vec p2 = point(rel), p3 = point(rel);
         cubic(out.back().points, current, p1, p2, p3);
         last_control = p2;
         current = p3;
         break;
       }
-      case 'Q': {
+      case 'Q':
+      case 'T': {  // T: the control point is the last one's reflection (after Q or T)
         open_subpath();
-        const Vec p1 = point(rel), p2 = point(rel);
-        quadratic(out.back().points, current, p1, p2);
-        last_control = p1;
-        current = p2;
-        break;
-      }
-      case 'T': {
-        open_subpath();
-        const char pu = static_cast<char>(std::toupper(static_cast<unsigned char>(previous)));
-        const Vec p1 = (pu == 'Q' || pu == 'T') ? Vec(2 * current - last_control) : current;
+        const Vec p1 = upper == 'Q' ? point(rel) : reflected_control('Q', 'T');
         const Vec p2 = point(rel);
         quadratic(out.back().points, current, p1, p2);
         last_control = p1;

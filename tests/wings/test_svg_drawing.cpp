@@ -110,6 +110,11 @@ TEST(SvgDrawing, SmoothCurvesReflectTheLastControlPoint) {
   const w::SvgShape q = only(drawing("<path d=\"M 0 0 Q 5 10 10 0 T 20 0\"/>"));
   const w::SvgShape r = only(drawing("<path d=\"M 0 0 Q 5 10 10 0 Q 15 -10 20 0\"/>"));
   expect_points(q.points, r.points);
+  // After another command the first control point is the current point (SVG 1.1, 8.3.6).
+  expect_points(only(drawing("<path d=\"M 0 0 L 1 1 S 5 10 10 0\"/>")).points,
+                only(drawing("<path d=\"M 0 0 L 1 1 C 1 1 5 10 10 0\"/>")).points);
+  expect_points(only(drawing("<path d=\"M 0 0 L 1 1 T 10 0\"/>")).points,
+                only(drawing("<path d=\"M 0 0 L 1 1 Q 1 1 10 0\"/>")).points);
 }
 
 // Group and element transforms compose outside in: translate(100, 0) of the group, then
