@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 
 #include "wings/outline_csv.hpp"
@@ -19,10 +20,6 @@ Vec screen_direction(const std::string& name) {
   if (name == "left") return {-1.0, 0.0};
   if (name == "up") return {0.0, -1.0};
   return {0.0, 1.0};  // "down"
-}
-
-std::string direction_name(const Vec& d) {
-  return d.x() > 0.5 ? "right" : d.x() < -0.5 ? "left" : d.y() < 0.0 ? "up" : "down";
 }
 
 // Up to eight shapes, for a message listing them.
@@ -44,7 +41,7 @@ bool encloses(const SvgShape& s) {
 }
 
 const SvgShape& pick_outline(const TomlTable& p, const SvgDrawing& d) {
-  const std::string file = d.file;
+  const std::string& file = d.file;
   if (p.has("outline_id")) {
     const std::string name = p.get_string("outline_id");
     const auto found = find_svg_shapes(d, name);
@@ -87,6 +84,17 @@ Vec DrawingFrame::to_wing(const Vec& q) const {
   return {scale * x_stretch * d.dot(leading_edge), scale * d.dot(tip)};
 }
 
+std::string DrawingFrame::direction_name(const Vec& d) {
+  return d.x() > 0.5 ? "right" : d.x() < -0.5 ? "left" : d.y() < 0.0 ? "up" : "down";
+}
+
+std::string DrawingFrame::describe(const std::string& length_unit, double metres_per_unit) const {
+  char unit_scale[64];
+  std::snprintf(unit_scale, sizeof unit_scale, "%.4g", scale / metres_per_unit);
+  return outline_source + ", tip " + direction_name(tip) + ", leading edge " + direction_name(leading_edge) +
+         ", pivot " + pivot_source + "; 1 drawing unit = " + unit_scale + " " + length_unit;
+}
+
 bool is_svg_path(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -114,7 +122,7 @@ DrawingOutline read_drawing_outline(const TomlTable& p, const std::string& svg_p
                        : Vec(f.tip.y(), -f.tip.x());  // 90° counterclockwise as seen
   if (f.leading_edge.dot(f.tip) != 0.0)
     p.fail("drawing_leading_edge", "must be at right angles to drawing_tip (\"" +
-                                       p.get_string("drawing_tip", "right") +
+                                       DrawingFrame::direction_name(f.tip) +
                                        "\"): the leading edge runs along the span");
 
   const auto pivots = find_svg_shapes(f.drawing, "pivot");
@@ -140,10 +148,9 @@ DrawingOutline read_drawing_outline(const TomlTable& p, const std::string& svg_p
     }
   }
   for (const Vec& q : shape.points) out.outline.push_back(f.to_wing(q));
-  out.description = "outline " + shape.describe() + " of " + std::filesystem::path(svg_path).filename().string() +
-                    ", tip " + p.get_string("drawing_tip", "right") + ", leading edge " +
-                    direction_name(f.leading_edge) + ", pivot " +
-                    (pivots.size() == 1 ? pivots.front()->describe() : std::string("its root-most point"));
+  f.outline_source =
+      "outline " + shape.describe() + " of " + std::filesystem::path(svg_path).filename().string();
+  f.pivot_source = pivots.size() == 1 ? pivots.front()->describe() : std::string("its root-most point");
   return out;
 }
 

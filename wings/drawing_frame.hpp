@@ -30,9 +30,18 @@ struct DrawingFrame {
   Eigen::Vector2d leading_edge{0.0, -1.0};          ///< unit direction of the wing's +x in the drawing
   double scale = 1.0;      ///< wing length per drawing unit (set when the outline is scaled to the span)
   double x_stretch = 1.0;  ///< the chordwise stretch to `area` (1 without it)
+  /// "outline the path 'path1' (label 'outline') (line 33) of drawn_wing.svg" and the pivot's
+  /// "the circle 'pivot' (line 38)" or "its root-most point", for describe().
+  std::string outline_source, pivot_source;
 
   /// A point of the drawing in the wing's frame [m once scale is set].
   Eigen::Vector2d to_wing(const Eigen::Vector2d& q) const;
+  /// "right", "left", "up" or "down": a direction as the drawing is seen.
+  static std::string direction_name(const Eigen::Vector2d& direction);
+  /// What `check` prints: "outline the path … of drawn_wing.svg, tip right, leading edge up,
+  /// pivot the circle 'pivot' (line 38); 1 drawing unit = 0.1957 mm" (the scale in the wing
+  /// file's length unit, \p metres_per_unit of it).
+  std::string describe(const std::string& length_unit, double metres_per_unit) const;
 };
 
 /// The outline of a drawing, in the wing's frame before scaling (drawing units).
@@ -40,9 +49,6 @@ struct DrawingOutline {
   DrawingFrame frame;
   std::vector<Eigen::Vector2d> outline;
   int line = 0;  ///< the outline's element's line in the drawing
-  /// "the path 'path1' (label 'outline') (line 34), tip right, leading edge up, pivot: the
-  /// circle 'pivot' (line 40)": for `check` (with the scale, once known).
-  std::string description;
 };
 
 /// Reads the drawing `svg_path` that `planform.outline_file` names and picks its outline

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -127,7 +126,8 @@ void check_span(const TomlTable& p, double span_m, std::vector<InputWarning>& wa
 // A drawing read with its tip in the wrong direction: the outline reaches further across the
 // span than along it (the drawn test wing read with drawing_tip = "up": R²/S 0.075, a mean
 // chord 13 times its span).
-void check_drawing_direction(const TomlTable& p, const Polygon& outline, std::vector<InputWarning>& warnings) {
+void check_drawing_direction(const TomlTable& p, const DrawingFrame& frame, const Polygon& outline,
+                             std::vector<InputWarning>& warnings) {
   Eigen::Vector2d lo = outline.front(), hi = lo;
   for (const auto& q : outline) {
     lo = lo.cwiseMin(q);
@@ -135,8 +135,8 @@ void check_drawing_direction(const TomlTable& p, const Polygon& outline, std::ve
   }
   const Eigen::Vector2d extent = hi - lo;  // (chordwise, spanwise) [m]
   if (extent.x() <= extent.y()) return;
-  const std::string tip = p.get_string("drawing_tip", "right");
-  const bool across = tip == "right" || tip == "left";
+  const std::string tip = DrawingFrame::direction_name(frame.tip);
+  const bool across = frame.tip.y() == 0.0;  // right or left
   warn(warnings, p, p.has("drawing_tip") ? "drawing_tip" : "outline_file",
        "the drawn outline reaches " + fmt(extent.x() / p.length_scale()) + " " + p.length_unit() +
            " chordwise but " + fmt(extent.y() / p.length_scale()) + " " + p.length_unit() +
@@ -246,7 +246,6 @@ struct Planform {
   double clamp_y = 0.0;
   bool from_spline = false;  ///< the outline is `spline`'s curve, not the points as written
   std::optional<DrawingFrame> drawing;  ///< an SVG outline_file: its map, for veins with drawing_id
-  std::string drawing_description;      ///< Wing::drawing
 };
 
 // The outline of `shape = "..."` (ellipse, half_ellipse, rounded_rectangle) from its size keys.
@@ -322,7 +321,6 @@ Planform read_planform(const TomlTable& p) {
       DrawingOutline drawn = read_drawing_outline(p, file_path);
       out.outline = std::move(drawn.outline);
       out.drawing = std::move(drawn.frame);
-      out.drawing_description = std::move(drawn.description);
       drawing_line = drawn.line;
       if (out.outline.size() > kMaxOutlinePoints)
         throw InputError(file_path, drawing_line, p.key_path("outline_file"),
@@ -374,12 +372,7 @@ Planform read_planform(const TomlTable& p) {
       p.fail(outline_key, "the outline must reach y > 0 (the tip) to be scaled to the span");
     const double k = span / max_y;
     for (auto& q : out.outline) q *= k;
-    if (out.drawing) {
-      out.drawing->scale = k;
-      char scale[64];
-      std::snprintf(scale, sizeof scale, "; 1 drawing unit = %.4g %s", k / p.length_scale(), p.length_unit().c_str());
-      out.drawing_description += scale;
-    }
+    if (out.drawing) out.drawing->scale = k;
   }
 
   // 2. The polygon must be simple (checked before stretching, which keeps simplicity).
@@ -678,15 +671,18 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
   const TomlTable mats = root.get_table("materials");
   for (const auto& name : mats.keys()) materials[name] = read_material(mats.get_table(name), wing.warnings);
 
-  const Planform planform = read_planform(root.get_table("planform"));
+  const TomlTable planform_table = root.get_table("planform");
+  const Planform planform = read_planform(planform_table);
   wing.outline = planform.outline;
   wing.clamp_y = planform.clamp_y;
-  wing.drawing = planform.drawing_description;
+  if (planform.drawing)
+    wing.drawing = planform.drawing->describe(planform_table.length_unit(), planform_table.length_scale());
   const PlanformProperties props = planform_properties(wing.outline);
   wing.span = props.span;
-  check_span(root.get_table("planform"), wing.span, wing.warnings);
-  if (!wing.drawing.empty()) check_drawing_direction(root.get_table("planform"), wing.outline, wing.warnings);
-  wing.lattice_gap = lattice_gap(root.get_table("planform"), wing.outline);
+  check_span(planform_table, wing.span, wing.warnings);
+  if (planform.drawing)
+    check_drawing_direction(planform_table, *planform.drawing, wing.outline, wing.warnings);
+  wing.lattice_gap = lattice_gap(planform_table, wing.outline);
   warn_lattice_gap(wing.lattice_gap, wing.warnings);
 
   const TomlTable mem = root.get_table("membrane");
