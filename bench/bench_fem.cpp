@@ -16,7 +16,7 @@
 #include "fem/wing_mesher.hpp"
 #include "pipeline/app/wing_modes_stage.hpp"
 #include "pipeline/io/fem_vtk.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace {
 

@@ -31,8 +31,8 @@
 #include "pipeline/fsi/fem_structure.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "uvlm/planform_grid.hpp"
-#include "wings/planform_geometry.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/planform_geometry.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace {
 

@@ -17,7 +17,7 @@
 #include "pipeline/app/cli/thread_options.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "uvlm/vortex_lattice.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>

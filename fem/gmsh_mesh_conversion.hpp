@@ -7,7 +7,7 @@
 
 #include "fem/gmsh_boundary.hpp"
 #include "fem/mesh.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::fem {
 

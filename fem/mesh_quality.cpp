@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "wings/vein_junctions.hpp"
+#include "wings/loader/vein_junctions.hpp"
 
 namespace flapsim::fem {
 

@@ -9,7 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "fem/mesh.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::fem {
 

@@ -3,7 +3,7 @@
 /// \brief Cross-section constants of a vein (frame element) from its shape:
 /// area, second moments, torsion constant and polar moment.
 
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::fem {
 

@@ -7,7 +7,7 @@
 #include "fem/frame_element.hpp"
 #include "fem/mesh.hpp"
 #include "fem/shell_element.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::fem {
 

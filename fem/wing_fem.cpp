@@ -1,6 +1,6 @@
 #include "fem/wing_fem.hpp"
 
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::fem {
 

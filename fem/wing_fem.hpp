@@ -20,7 +20,7 @@
 #include "fem/mode_classification.hpp"
 #include "fem/structural_model.hpp"
 #include "fem/wing_mesher.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::fem {
 

@@ -11,9 +11,9 @@
 #include "fem/gmsh_boundary.hpp"
 #include "fem/gmsh_mesh_conversion.hpp"
 #include "fem/gmsh_module_loader.hpp"
-#include "wings/input_error.hpp"
-#include "wings/planform_geometry.hpp"
-#include "wings/vein_junctions.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/planform_geometry.hpp"
+#include "wings/loader/vein_junctions.hpp"
 
 namespace flapsim::fem {
 
@@ -40,7 +40,7 @@ GmshWingRequest request_for(const wings::Wing& wing, const MeshOptions& options,
   hv = std::min(hv, h);
   if (wing.outline.size() < 3) throw InputError(wing.source_file, 0, "planform", "outline needs at least 3 points");
   // A vein's end written so near another vein that the gap would be meshed into slivers is
-  // on it (wings/vein_junctions.hpp); round-off is left alone, as on the outline.
+  // on it (wings/loader/vein_junctions.hpp); round-off is left alone, as on the outline.
   veins = wing.veins;
   wings::snap_vein_ends_onto_other_veins(veins, wings::vein_junction_tolerance(wing.span, hv),
                                          1e-12 * wing.span);

@@ -10,7 +10,7 @@
 #include <filesystem>
 
 #include "fem/mesh.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::fem {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "wings/wing_mass_properties.hpp"
+#include "wings/loader/wing_mass_properties.hpp"
 
 namespace flapsim::app {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "wings/planform_geometry.hpp"
+#include "wings/loader/planform_geometry.hpp"
 
 namespace flapsim::app {
 

@@ -3,8 +3,8 @@
 #include "fem/constraints.hpp"
 #include "fem/wing_fem.hpp"
 #include "pipeline/app/film_wrinkle_warning.hpp"
-#include "wings/input_error.hpp"
-#include "wings/mesh_budget.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/mesh_budget.hpp"
 
 namespace flapsim::app {
 
@@ -13,7 +13,7 @@ void check_case_mesh_sizes(const io::Case& c, const wings::Wing& wing, const fem
   wings::Wing sized = wing;
   if (mesh.element_size > 0.0) sized.mesh.element_size = mesh.element_size;
   if (mesh.vein_element_size > 0.0) sized.mesh.vein_element_size = mesh.vein_element_size;
-  wings::MeshSizeKeys keys;  // the wing file's rules (wings/mesh_budget.hpp), in the case's keys
+  wings::MeshSizeKeys keys;  // the wing file's rules (wings/loader/mesh_budget.hpp), in the case's keys
   keys.element = "structure.element_size_mm";
   keys.vein = "structure.vein_element_size_mm";
   keys.element_given = c.structure.fem_element_size > 0.0;

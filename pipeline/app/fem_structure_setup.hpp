@@ -14,14 +14,14 @@
 #include "mbd/base_motion.hpp"
 #include "pipeline/fsi/fem_structure.hpp"
 #include "pipeline/io/case_model.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::app {
 
 /// \brief Refuses the case's mesh sizes (`element_size_mm`, `vein_element_size_mm`, already
 /// in `mesh` [m]; 0 = the wing file's) that the wing file's own rules would refuse: veins finer
 /// than or as fine as the membrane, an element at most half the span, and the element budget
-/// of wings/mesh_budget.hpp (a typo of 0.01 for 1 asked gmsh for 10⁸ triangles).
+/// of wings/loader/mesh_budget.hpp (a typo of 0.01 for 1 asked gmsh for 10⁸ triangles).
 /// \throws flapsim::InputError naming the case file, line and key
 void check_case_mesh_sizes(const io::Case& c, const wings::Wing& wing, const fem::MeshOptions& mesh);
 

@@ -14,10 +14,10 @@
 #include "pipeline/app/structure_source.hpp"
 #include "reduction/linear_chain.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
-#include "wings/input_error.hpp"
-#include "wings/planform_geometry.hpp"
-#include "wings/wing_file.hpp"
-#include "wings/wing_mass_properties.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/planform_geometry.hpp"
+#include "wings/loader/wing_file.hpp"
+#include "wings/loader/wing_mass_properties.hpp"
 
 namespace flapsim::app {
 

@@ -19,7 +19,7 @@
 #include "pipeline/fsi/coupled_step.hpp"
 #include "pipeline/fsi/fem_structure.hpp"
 #include "uvlm/planform_grid.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::app {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "wings/surface_shape.hpp"
+#include "wings/loader/surface_shape.hpp"
 
 namespace flapsim::app {
 

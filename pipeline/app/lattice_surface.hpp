@@ -2,10 +2,10 @@
 /// \file lattice_surface.hpp
 /// \brief The vortex lattice's reference surface from the wing file: the flat planform
 /// grid (uvlm/planform_grid.hpp) moved by the wing's `[surface]` twist, camber and
-/// dihedral (wings/surface_shape.hpp). Lattice-only: the FEM and the chain stay flat.
+/// dihedral (wings/loader/surface_shape.hpp). Lattice-only: the FEM and the chain stay flat.
 
 #include "uvlm/planform_grid.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::app {
 

@@ -13,7 +13,7 @@
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/atomic_file.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::app {
 

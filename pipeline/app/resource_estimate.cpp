@@ -10,7 +10,7 @@
 
 #include "pipeline/app/run_history.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::app {
 

@@ -19,7 +19,7 @@
 #include "pipeline/io/fsi_vtk.hpp"
 #include "pipeline/io/pvsm_state.hpp"
 #include "pipeline/io/vtk_writers.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 namespace flapsim::app {
 

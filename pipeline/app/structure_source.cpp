@@ -10,7 +10,7 @@
 #include "reduction/chain_lumping.hpp"
 #include "reduction/reduction_report.hpp"
 #include "reduction/clamped_wing_analysis.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::app {
 

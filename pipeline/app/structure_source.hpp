@@ -11,7 +11,7 @@
 #include "mbd/chain_model.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/chain_file.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::app {
 

@@ -15,7 +15,7 @@
 #include "reduction/chain_lumping.hpp"
 #include "reduction/reduction_failure.hpp"
 #include "reduction/station_mode_kind.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::app {
 

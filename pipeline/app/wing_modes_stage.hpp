@@ -12,7 +12,7 @@
 
 #include "fem/wing_fem.hpp"
 #include "pipeline/io/fem_vtk.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::app {
 

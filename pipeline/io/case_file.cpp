@@ -15,8 +15,8 @@
 #include <stdexcept>
 
 #include "mbd/angle_units.hpp"
-#include "wings/input_error.hpp"
-#include "wings/path_from_file_hint.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/path_from_file_hint.hpp"
 
 namespace flapsim::io {
 

@@ -9,7 +9,7 @@
 
 #include "mbd/periodic_signal.hpp"
 #include "pipeline/io/case_model.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 namespace flapsim::io {
 

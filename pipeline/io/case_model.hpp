@@ -21,7 +21,7 @@
 #include "uvlm/planform_grid.hpp"
 #include "uvlm/vortex_core.hpp"
 #include "uvlm/vortex_lattice.hpp"
-#include "wings/input_warning.hpp"
+#include "wings/loader/input_warning.hpp"
 
 namespace flapsim::io {
 
@@ -64,7 +64,7 @@ struct Case {
     }
   }
   /// Accepted but likely to mislead (a long hover with the whole wake free); the command
-  /// line prints each on stderr and carries on (wings/input_warning.hpp).
+  /// line prints each on stderr and carries on (wings/loader/input_warning.hpp).
   std::vector<InputWarning> warnings;
   std::string name;        ///< short name (from the file, else the file stem)
   std::string wing_file;   ///< resolved path of the wing file (may be empty)

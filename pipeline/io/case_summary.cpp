@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "mbd/angle_units.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 namespace flapsim::io {
 

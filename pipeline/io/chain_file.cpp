@@ -3,8 +3,8 @@
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "pipeline/io/input_hash.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 #include <array>
 #include <cstdio>

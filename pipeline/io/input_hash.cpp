@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "pipeline/io/csv_writer.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::io {
 

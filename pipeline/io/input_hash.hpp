@@ -21,7 +21,7 @@
 #include <string_view>
 
 #include "pipeline/io/case_model.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::io {
 

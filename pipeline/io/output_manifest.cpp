@@ -14,8 +14,8 @@
 #include <system_error>
 
 #include "pipeline/io/atomic_file.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_preflight.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_preflight.hpp"
 
 namespace flapsim::io {
 

@@ -88,7 +88,7 @@ TEST(FemStructureCase, AStiffFemPlateFliesAndIsDrivenAsTheRigidPlate) {
   EXPECT_NE(test::read_text(dir / "fem" / "run.pvsm").find("fem.pvd"), std::string::npos);
 }
 
-// The case's element sizes meet the wing file's rules (wings/mesh_budget.hpp, wing_file.cpp):
+// The case's element sizes meet the wing file's rules (wings/loader/mesh_budget.hpp, wing_file.cpp):
 // a typo of 0.001 for 1 mm asked gmsh for ~10⁹ triangles (minutes and 14 GB before this
 // check) and is refused at the case's line and key, exit status 2, before any meshing.
 TEST(FemStructureCase, AMeshSizeTheWingFileWouldRefuseIsRefusedAtTheCasesLineAndKey) {

@@ -13,7 +13,7 @@
 #include "pipeline/app/film_wrinkle_warning.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/io/case_file.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace {
 

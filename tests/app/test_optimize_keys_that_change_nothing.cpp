@@ -17,7 +17,7 @@
 #include "common/scratch_dir.hpp"
 #include "pipeline/app/optimize/bounds_check.hpp"
 #include "sweep_test_helpers.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace {
 

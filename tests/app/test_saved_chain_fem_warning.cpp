@@ -13,7 +13,7 @@
 #include "pipeline/app/chain_fem_mismatch.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/io/chain_file.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 using namespace flapsim;
 using test::kOneJointChain;

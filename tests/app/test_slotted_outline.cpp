@@ -13,7 +13,7 @@
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "robustness_helpers.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 using namespace flapsim::test;
 

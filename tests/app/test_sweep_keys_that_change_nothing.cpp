@@ -17,7 +17,7 @@
 #include "pipeline/app/sweep/keys_that_change_nothing.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "sweep_test_helpers.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include "pipeline/app/sweep/case_table.hpp"
 #include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "pipeline/app/sweep/sweep_case.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 using namespace flapsim;
 

@@ -23,9 +23,9 @@
 #include "pipeline/app/lattice_surface.hpp"
 #include "uvlm/planform_grid.hpp"
 #include "uvlm/vortex_lattice.hpp"
-#include "wings/input_error.hpp"
-#include "wings/surface_shape.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/surface_shape.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace {
 
@@ -218,7 +218,7 @@ TEST(WingSurface, ADihedralWingFromTheFileMatchesAnIndependentHorseshoeLattice) 
 }
 
 TEST(WingSurface, TheShapedNodesLieOnTheMeanLineTwistedAndTurned) {
-  // The formulas of wings/surface_shape.hpp at points whose answer is known in closed form:
+  // The formulas of wings/loader/surface_shape.hpp at points whose answer is known in closed form:
   // the NACA mean line's crest z_c(p) = m (Abbott & von Doenhoff §6.4) and its ends at 0;
   // a twist of θ about the quarter chord puts the leading edge at z = (c/4) sin θ; a
   // dihedral Γ puts a flat point (x, y) at (x, y cos Γ, y sin Γ).

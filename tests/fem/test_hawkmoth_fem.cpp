@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "fem/wing_fem.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::fem {
 namespace {

@@ -19,7 +19,7 @@
 #include "fem/nodal_rotation.hpp"
 #include "fem/nonlinear_dynamics.hpp"
 #include "fem/wing_fem.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::fem {
 namespace {

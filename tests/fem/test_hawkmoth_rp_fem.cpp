@@ -10,7 +10,7 @@
 #include <Eigen/Geometry>
 
 #include "fem/wing_fem.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::fem {
 namespace {

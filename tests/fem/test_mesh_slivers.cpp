@@ -2,10 +2,10 @@
 // A user's swept film wing whose root spar was written to start on the leading edge but lay
 // 1.1 µm inside it (tests/data/swept_film_50um_wing.toml): gmsh meshed the gap into a
 // triangle of 0.028°, and its FEM's Newton stalled on it; the spar's end is now moved onto
-// the edge (wings/wing_file.cpp). A cross vein written to start 1 µm off the spar: 0.023°;
-// its end is now moved onto the spar (wings/vein_junctions.hpp). What neither catches (a
+// the edge (wings/loader/wing_file.cpp). A cross vein written to start 1 µm off the spar: 0.023°;
+// its end is now moved onto the spar (wings/loader/vein_junctions.hpp). What neither catches (a
 // vein's inner point beside another vein, an outline point repeated a hair's breadth away) is
-// warned about; a costa written along a curved edge now follows it (wings/wing_file.cpp).
+// warned about; a costa written along a curved edge now follows it (wings/loader/wing_file.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,9 +18,9 @@
 #include "common/scratch_dir.hpp"
 #include "fem/mesh_quality.hpp"
 #include "fem/wing_mesher.hpp"
-#include "wings/planform_geometry.hpp"
-#include "wings/vein_junctions.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/planform_geometry.hpp"
+#include "wings/loader/vein_junctions.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::fem {
 namespace {
@@ -140,7 +140,7 @@ TEST(MeshSlivers, ACostaAlongACurvedLeadingEdgeLeavesNoSliver) {
   // A costa written at xi = 0 along an elliptic wing's leading edge (40 mm, chord 12 mm,
   // subdivide 10): its chords between the edge's points left gaps of up to 0.13 mm that gmsh
   // meshed into 1.03° triangles (a half-ellipse: 0.056°); along the edge's own vertices
-  // (wings/wing_file.cpp), measured 15.4°, and every node of the costa on the outline.
+  // (wings/loader/wing_file.cpp), measured 15.4°, and every node of the costa on the outline.
   const test::ScratchDir dir("mesh_slivers_costa");
   const std::string path = (dir / "ell.toml").string();
   std::ofstream(path)

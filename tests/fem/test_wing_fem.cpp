@@ -14,8 +14,8 @@
 #include "fem/load_cases.hpp"
 #include "fem/static_solver.hpp"
 #include "fem/wing_fem.hpp"
-#include "wings/input_error.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::fem {
 namespace {
@@ -187,7 +187,7 @@ TEST(WingMesh, AVeinOutsideTheMembraneIsRefusedNamingIt) {
 
 TEST(WingMesh, AVeinLyingAlongAnotherIsRefusedNamingBoth) {
   // A second vein written on top of a stretch of the leading edge (a "doubler"; or one whose
-  // two ends the file reader moved onto it, wings/vein_junctions.hpp): gmsh meshes the shared
+  // two ends the file reader moved onto it, wings/loader/vein_junctions.hpp): gmsh meshes the shared
   // stretch as one line and gives it to one vein; here the leading edge took it and the
   // doubler, without elements, was refused as "shorter than the mesh tolerance, or outside
   // the membrane", neither of which it was; had the doubler taken it, the leading edge's

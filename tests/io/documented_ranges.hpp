@@ -10,8 +10,8 @@
 #include "mbd/chain_model.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_model.hpp"
-#include "wings/mesh_budget.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/mesh_budget.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::test {
 

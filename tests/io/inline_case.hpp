@@ -8,8 +8,8 @@
 
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_model.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 inline flapsim::io::Case case_from_text(const std::string& text) {
   return flapsim::io::read_case(flapsim::wings::parse_toml_string(

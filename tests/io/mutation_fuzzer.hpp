@@ -23,7 +23,7 @@
 #include <utility>
 #include <vector>
 
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::test {
 
@@ -43,7 +43,7 @@ inline const std::vector<std::string> kEdgeValues = {
 
 // Pieces of TOML's structure (headers, multi-line strings, escapes, non-ASCII text, a date
 // and a space) where toml++ 3.x has assertions and undefined behaviour of its own
-// (wings/toml_preflight.hpp).
+// (wings/loader/toml_preflight.hpp).
 inline const std::vector<std::string> kPieces = {"\n[", "\n[[", "[#", "]]", "\"\"\"", "'''", "\\\n ", "\xC2\xA7", "\xE2\x80\xA8",
                                           "\xEF\xAC\xB0", " 0", "1979-05-27 ", "}", "\r\n", "{a = [\n"};
 

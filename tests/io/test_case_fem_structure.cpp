@@ -9,7 +9,7 @@
 #include "inline_case.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/case_summary.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace p = flapsim::io;
 

@@ -12,8 +12,8 @@
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/case_summary.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 namespace p = flapsim::io;
 using flapsim::InputError;

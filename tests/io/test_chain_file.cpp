@@ -4,7 +4,7 @@
 #include "mbd/chain_test_models.hpp"
 
 #include "pipeline/io/chain_file.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -34,11 +34,11 @@
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "pipeline/io/chain_file.hpp"
-#include "wings/input_error.hpp"
-#include "wings/mesh_budget.hpp"
-#include "wings/outline_csv.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/mesh_budget.hpp"
+#include "wings/loader/outline_csv.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace fs = std::filesystem;
 namespace io = flapsim::io;
@@ -109,7 +109,7 @@ TEST(FuzzLoaders, OutlineCsvFiles) {
   });
 }
 
-// An SVG drawing (wings/svg_drawing.hpp) read as a wing's outline and veins: the test
+// An SVG drawing (wings/loader/svg_drawing.hpp) read as a wing's outline and veins: the test
 // drawing's mutants, through tests/data/drawn_wing.toml's keys.
 TEST(FuzzLoaders, SvgDrawings) {
   flapsim::test::ScratchDir dir("fuzz_drawing");

@@ -9,7 +9,7 @@
 #include "common/scratch_dir.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/input_hash.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include "fem/wing_fem.hpp"
 #include "reduction/beam_properties.hpp"
 #include "reduction/reduction_failure.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::reduction {
 namespace {

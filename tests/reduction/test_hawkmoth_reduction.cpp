@@ -12,7 +12,7 @@
 #include "reduction/beam_properties.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/reduction_report.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::reduction {
 namespace {

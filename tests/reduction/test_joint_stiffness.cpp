@@ -17,7 +17,7 @@
 #include "fem/wing_fem.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/linear_chain.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::reduction {
 namespace {

@@ -32,7 +32,7 @@
 #include "fem/wing_fem.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/reduction_report.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::reduction {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "fem/wing_fem.hpp"
 #include "reduction/chain_lumping.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::reduction {
 namespace {

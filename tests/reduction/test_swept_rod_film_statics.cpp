@@ -23,7 +23,7 @@
 #include "reduction/chain_lumping.hpp"
 #include "reduction/linear_chain.hpp"
 #include "reduction/reduction_report.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::reduction {
 namespace {

@@ -17,7 +17,7 @@
 #include "reduction/beam_properties.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/reduction_report.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::reduction {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 template <typename F>
 flapsim::InputError expect_input_error(F f) {

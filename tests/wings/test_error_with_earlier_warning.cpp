@@ -7,8 +7,8 @@
 #include <string>
 
 #include "expect_input_error.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
 
 using flapsim::wings::parse_toml_string;
 using flapsim::wings::read_wing;

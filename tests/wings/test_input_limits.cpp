@@ -6,11 +6,11 @@
 #include <limits>
 #include <string>
 
-#include "wings/checked_integer.hpp"
+#include "wings/loader/checked_integer.hpp"
 #include "expect_input_error.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
 
 using flapsim::InputError;
 using flapsim::wings::Bounds;

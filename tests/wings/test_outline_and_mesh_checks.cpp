@@ -10,11 +10,11 @@
 
 #include "common/scratch_dir.hpp"
 #include "expect_input_error.hpp"
-#include "wings/input_error.hpp"
-#include "wings/mesh_budget.hpp"
-#include "wings/outline_csv.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/mesh_budget.hpp"
+#include "wings/loader/outline_csv.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace w = flapsim::wings;
 using flapsim::InputError;

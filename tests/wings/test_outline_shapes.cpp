@@ -1,4 +1,4 @@
-// Outlines without a list of points (wings/outline_shapes.hpp): the closed spline
+// Outlines without a list of points (wings/loader/outline_shapes.hpp): the closed spline
 // through control points and the parametric planforms, against their exact areas;
 // and the same through the wing file's [planform] keys.
 #include <gtest/gtest.h>
@@ -7,11 +7,11 @@
 #include <numbers>
 #include <string>
 
-#include "wings/input_error.hpp"
-#include "wings/outline_shapes.hpp"
-#include "wings/planform_geometry.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/outline_shapes.hpp"
+#include "wings/loader/planform_geometry.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace w = flapsim::wings;
 using flapsim::InputError;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "wings/outline_csv.hpp"
-#include "wings/planform_geometry.hpp"
+#include "wings/loader/outline_csv.hpp"
+#include "wings/loader/planform_geometry.hpp"
 
 using flapsim::wings::Polygon;
 namespace w = flapsim::wings;

@@ -1,4 +1,4 @@
-// The SVG reader of wing drawings (wings/svg_drawing.hpp): path data by SVG 1.1's grammar,
+// The SVG reader of wing drawings (wings/loader/svg_drawing.hpp): path data by SVG 1.1's grammar,
 // Bézier and arc flattening against the exact curves, transforms of groups, the elements
 // skipped, and every error located by file and line.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "expect_input_error.hpp"
-#include "wings/svg_drawing.hpp"
+#include "wings/loader/svg_drawing.hpp"
 
 namespace w = flapsim::wings;
 using Eigen::Vector2d;

@@ -1,4 +1,4 @@
-// Dotted keys with array elements, KEY[i] (wings/toml_key_path.hpp), and the overrides of a
+// Dotted keys with array elements, KEY[i] (wings/loader/toml_key_path.hpp), and the overrides of a
 // sweep or an optimisation that set such an element (TomlTable::apply_overrides).
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "expect_input_error.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_key_path.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_key_path.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 namespace {
 

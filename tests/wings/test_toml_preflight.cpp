@@ -1,4 +1,4 @@
-// The scan before toml++ (wings/toml_preflight.hpp): the inputs on which toml++ 3.x stops
+// The scan before toml++ (wings/loader/toml_preflight.hpp): the inputs on which toml++ 3.x stops
 // on its own assertion (an abort in builds without NDEBUG, undefined behaviour with it on
 // compilers with an "assume") are refused as bad input at their line; valid TOML that
 // looks like them still parses. Each refused input below aborts toml++ 3.3's parser in
@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "expect_input_error.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 using flapsim::wings::parse_toml_string;
 

@@ -4,8 +4,8 @@
 #include <string>
 
 #include "expect_input_error.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 using flapsim::InputError;
 using flapsim::wings::Bounds;

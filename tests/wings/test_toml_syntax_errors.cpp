@@ -6,7 +6,7 @@
 #include <string>
 
 #include "expect_input_error.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 using flapsim::wings::parse_toml_string;
 

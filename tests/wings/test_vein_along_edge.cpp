@@ -1,13 +1,13 @@
 // A chord_points vein whose consecutive points are both on the leading edge (xi = 0) or both
 // on the trailing edge (xi = 1) runs along that edge through the outline's own vertices
-// (wings/wing_file.cpp): the straight chords between points on a curved edge left it.
+// (wings/loader/wing_file.cpp): the straight chords between points on a curved edge left it.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "wings/planform_geometry.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/planform_geometry.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace w = flapsim::wings;
 

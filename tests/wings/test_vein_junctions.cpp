@@ -1,11 +1,11 @@
 // A vein's end written next to another vein is moved onto it when the gap would be meshed
-// into slivers (wings/vein_junctions.hpp, applied by the mesher for the mesh's vein size):
+// into slivers (wings/loader/vein_junctions.hpp, applied by the mesher for the mesh's vein size):
 // the ends only, within tan(0.5°) of the vein element size and at most 0.1 % of the span.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "wings/vein_junctions.hpp"
+#include "wings/loader/vein_junctions.hpp"
 
 namespace w = flapsim::wings;
 

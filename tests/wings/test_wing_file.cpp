@@ -6,11 +6,11 @@
 #include <numbers>
 #include <string>
 
-#include "wings/input_error.hpp"
-#include "wings/planform_geometry.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
-#include "wings/wing_mass_properties.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/planform_geometry.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
+#include "wings/loader/wing_mass_properties.hpp"
 
 namespace w = flapsim::wings;
 using flapsim::InputError;

@@ -1,4 +1,4 @@
-// A wing from an SVG drawing (wings/drawing_frame.hpp; docs/wing_file.md, "A wing from a
+// A wing from an SVG drawing (wings/loader/drawing_frame.hpp; docs/wing_file.md, "A wing from a
 // drawing"): the same wing as its inline outline and `points` veins worked out by hand, in
 // every orientation of the drawing, the pivot, the shipped test drawing's Bézier outline
 // against its exact area, and each mistake a user can make named.
@@ -10,9 +10,9 @@
 
 #include "common/scratch_dir.hpp"
 #include "expect_input_error.hpp"
-#include "wings/planform_geometry.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/planform_geometry.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace w = flapsim::wings;
 using Eigen::Vector2d;
@@ -259,4 +259,42 @@ TEST(WingFromDrawing, MistakesAreNamed) {
                   }).what())
           .find("no SVG drawing"),
       std::string::npos);
+}
+
+// A hidden layer (Inkscape: style="display:none" on the layer's group) or a hidden object is
+// not part of the drawing (SVG 1.1, 11.5): a closed reference shape in a hidden layer is not
+// a second outline, a hidden vein is not read, and a name found only among the hidden shapes
+// says so. Before: hidden shapes were read like the others ("has 2 closed shapes").
+TEST(WingFromDrawing, HiddenLayersAndObjectsAreNotRead) {
+  ScratchDir dir("drawing_hidden");
+  const std::string hidden_layer =
+      "<g inkscape:groupmode=\"layer\" inkscape:label=\"trace\" style=\"fill:none; display : none\">\n"
+      "  <rect x=\"0\" y=\"0\" width=\"300\" height=\"90\"/>\n"
+      "  <polyline id=\"R2\" points=\"12,30 100,25\"/>\n</g>\n";
+  const std::string unnamed_outline =
+      "<polygon points=\"10,20 110,10 110,40 10,50\"/>\n<polyline id=\"R1\" points=\"12,30 100,25\"/>\n";
+  // The visible shapes alone are the wing worked out by hand.
+  expect_same_wing(read(dir, svg(hidden_layer + unnamed_outline), wing_toml("")), by_hand());
+  // The same layer shown: two closed shapes.
+  std::string shown = hidden_layer;
+  shown.replace(shown.find("display : none"), 14, "display:inline");
+  EXPECT_NE(
+      std::string(expect_input_error([&] { read(dir, svg(shown + unnamed_outline), wing_toml("")); }).what())
+          .find("has 2 closed shapes"),
+      std::string::npos);
+  // A vein named only in the hidden layer; an outline hidden by its own attribute.
+  const std::string hidden_vein =
+      expect_input_error([&] {
+        read(dir, svg(hidden_layer + unnamed_outline), wing_toml("", "drawing_id = \"R2\""));
+      }).what();
+  EXPECT_NE(hidden_vein.find("no shape with the id or label 'R2'"), std::string::npos) << hidden_vein;
+  EXPECT_NE(hidden_vein.find("the polyline 'R2' (line 4) of it is hidden, display:none"), std::string::npos)
+      << hidden_vein;
+  const std::string hidden_outline =
+      expect_input_error([&] {
+        read(dir, svg("<polygon display=\"none\" points=\"10,20 110,10 110,40 10,50\"/>\n"), wing_toml(""));
+      }).what();
+  EXPECT_NE(hidden_outline.find("has no closed shape for the outline"), std::string::npos) << hidden_outline;
+  EXPECT_NE(hidden_outline.find("its 1 hidden shape, display:none, is not read"), std::string::npos)
+      << hidden_outline;
 }

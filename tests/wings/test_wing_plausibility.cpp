@@ -7,10 +7,10 @@
 #include <numbers>
 #include <string>
 
-#include "wings/input_error.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
-#include "wings/wing_mass_properties.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
+#include "wings/loader/wing_mass_properties.hpp"
 
 namespace w = flapsim::wings;
 

@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
-#include "wings/wing_summary.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
+#include "wings/loader/wing_summary.hpp"
 
 namespace {
 

@@ -15,11 +15,11 @@
 #include "pipeline/app/cli/exit_status.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/toml_reader.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/case_model.hpp"
-#include "wings/input_error.hpp"
-#include "wings/wing_model.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/wing_model.hpp"
 
 namespace flapsim::cli {
 

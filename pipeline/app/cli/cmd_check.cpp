@@ -19,10 +19,10 @@
 #include "pipeline/app/watched_setup.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_summary.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_reader.hpp"
-#include "wings/wing_file.hpp"
-#include "wings/wing_summary.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
+#include "wings/loader/wing_file.hpp"
+#include "wings/loader/wing_summary.hpp"
 
 namespace flapsim::cli {
 

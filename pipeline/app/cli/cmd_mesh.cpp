@@ -17,7 +17,7 @@
 #include "pipeline/io/fem_vtk.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::cli {
 

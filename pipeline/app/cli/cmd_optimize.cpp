@@ -21,7 +21,7 @@
 #include "pipeline/app/sweep/sweep_case.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::cli {
 

@@ -26,8 +26,8 @@
 #include "reduction/beam_properties.hpp"
 #include "reduction/chain_lumping.hpp"
 #include "reduction/reduction_report.hpp"
-#include "wings/input_error.hpp"
-#include "wings/wing_file.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/wing_file.hpp"
 
 namespace flapsim::cli {
 

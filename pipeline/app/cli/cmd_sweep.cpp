@@ -20,9 +20,9 @@
 #include "pipeline/app/sweep/case_table.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/toml_reader.hpp"
 #include "pipeline/io/case_file.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::cli {
 

@@ -4,7 +4,7 @@
 
 #include "pipeline/app/sweep/keys_that_change_nothing.hpp"
 #include "pipeline/io/csv_writer.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::optimize {
 

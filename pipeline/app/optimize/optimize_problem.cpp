@@ -5,7 +5,7 @@
 
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::optimize {
 

@@ -28,7 +28,7 @@
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "pipeline/io/folder_lock.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::optimize {
 

@@ -7,9 +7,9 @@
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
-#include "wings/input_error.hpp"
-#include "wings/toml_key_path.hpp"
-#include "wings/toml_reader.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_key_path.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 namespace flapsim::optimize {
 

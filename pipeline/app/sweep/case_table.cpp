@@ -6,8 +6,8 @@
 #include <fstream>
 #include <set>
 
-#include "wings/input_error.hpp"
-#include "wings/text_trim.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/text_trim.hpp"
 
 namespace flapsim::sweep {
 

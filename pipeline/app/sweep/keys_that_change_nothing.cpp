@@ -6,7 +6,7 @@
 #include <set>
 #include <string_view>
 
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::sweep {
 

@@ -14,7 +14,7 @@
 #include "pipeline/app/watched_setup.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/input_hash.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::sweep {
 

@@ -29,7 +29,7 @@
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/folder_lock.hpp"
 #include "pipeline/io/output_manifest.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::sweep {
 

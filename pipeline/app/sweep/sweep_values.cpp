@@ -7,7 +7,7 @@
 
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
-#include "wings/input_error.hpp"
+#include "wings/loader/input_error.hpp"
 
 namespace flapsim::sweep {
 
