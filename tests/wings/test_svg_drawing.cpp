@@ -213,4 +213,8 @@ TEST(SvgDrawing, ErrorsNameTheFileAndTheElementsLine) {
   EXPECT_NE(arc_flag.message().find("large-arc flag must be 0 or 1"), std::string::npos);
   const auto missing = expect_input_error([] { w::read_svg_drawing("/nonexistent/wing.svg", "k"); });
   EXPECT_EQ(missing.file(), "/nonexistent/wing.svg");
+  // A compressed drawing saved with the .svg extension: gzip's first two bytes (RFC 1952).
+  const auto gzipped =
+      expect_input_error([] { w::parse_svg_drawing(std::string("\x1f\x8b\x08\0\0\0", 6), "d.svg", "k"); });
+  EXPECT_NE(gzipped.message().find("compressed (gzip"), std::string::npos) << gzipped.message();
 }

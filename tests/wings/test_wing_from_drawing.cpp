@@ -298,3 +298,32 @@ TEST(WingFromDrawing, HiddenLayersAndObjectsAreNotRead) {
   EXPECT_NE(hidden_outline.find("its 1 hidden shape, display:none, is not read"), std::string::npos)
       << hidden_outline;
 }
+
+// An outline_file in a format flapsim does not read is named with what to do, before its
+// bytes are read as CSV (before: "expected a line "x,y" ..., found "%PDF-1.4"").
+TEST(WingFromDrawing, ADrawingInAnotherFormatIsNamedWithWhatToDo) {
+  ScratchDir dir("drawing_formats");
+  for (const char* name : {"w.pdf", "w.DXF", "w.svgz", "w.png", "w.ai"}) {
+    std::ofstream(dir / name) << "%PDF-1.4\n";
+    std::string toml = wing_toml("", "points = [[0, 1], [0, 2]]");
+    toml.replace(toml.find("w.svg"), 5, name);
+    const auto e =
+        expect_input_error([&] { w::read_wing(w::parse_toml_string(toml, (dir / "w.toml").string())); });
+    EXPECT_EQ(e.key(), "planform.outline_file") << name;
+    EXPECT_EQ(e.line(), 3) << name;  // wing_toml's line of outline_file
+    EXPECT_NE(e.message().find("which is not read"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find(std::string(name) == "w.png" ? "trace the wing's outline" : "SVG"),
+              std::string::npos)
+        << e.message();
+  }
+  // A CSV under another extension is read as before (here .txt).
+  std::ofstream(dir / "o.txt") << "x,y\n0,0\n0.1,1\n-0.2,1\n-0.3,0\n";
+  EXPECT_EQ(
+      w::read_wing(w::parse_toml_string(
+                       "length_unit = \"mm\"\n[planform]\noutline_file = \"o.txt\"\nspan = 50.0\nclamp_y = "
+                       "0.5\n" +
+                           kMaterial,
+                       (dir / "w.toml").string()))
+          .outline.size(),
+      4u);
+}

@@ -63,4 +63,9 @@ std::vector<Eigen::Vector2d> drawing_vein_points(const TomlTable& vein, const Dr
 /// Whether a path names an SVG file (by its extension, in any case).
 bool is_svg_path(const std::string& path);
 
+/// For a path whose extension names a drawing or picture format flapsim does not read (PDF,
+/// DXF, EPS, a compressed SVG, a photo, ...), why and what to do instead, for outline_file's
+/// message; "" for any other path (a CSV, whatever its extension, or an SVG).
+std::string unread_outline_format(const std::string& path);
+
 }  // namespace flapsim::wings

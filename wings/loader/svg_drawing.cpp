@@ -146,6 +146,8 @@ std::string SvgShape::describe() const {
 
 SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, const std::string& key) {
   const Where where{file, key};
+  if (text.size() >= 2 && text[0] == '\x1f' && text[1] == '\x8b')  // gzip's magic number (RFC 1952)
+    where.fail(0, "the drawing is compressed (gzip, an .svgz saved as .svg): save it as plain SVG");
   SvgDrawing drawing;
   drawing.file = file;
   struct Open {

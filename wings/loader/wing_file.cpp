@@ -317,6 +317,8 @@ Planform read_planform(const TomlTable& p) {
       p.fail("outline_file", "file not found: " + file_path +
                                  " (paths are relative to the wing file's folder" +
                                  path_from_file_hint(p.get_string("outline_file"), p.file(), "wing") + ")");
+    if (const std::string unread = unread_outline_format(file_path); !unread.empty())
+      p.fail("outline_file", file_path + " is " + unread);
     if (from_drawing) {
       DrawingOutline drawn = read_drawing_outline(p, file_path);
       out.outline = std::move(drawn.outline);
