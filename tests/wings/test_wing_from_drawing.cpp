@@ -225,6 +225,18 @@ TEST(WingFromDrawing, MistakesAreNamed) {
   EXPECT_NE(std::string(message(svg(kShapes), wing_toml("", "drawing_id = \"R2\"")))
                 .find("no shape with the id or label 'R2'"),
             std::string::npos);
+  // A branching vein drawn as one path, and a vein traced as an area: what to draw instead.
+  const std::string outline = "<polygon id=\"outline\" points=\"10,20 110,10 110,40 10,50\"/>\n";
+  EXPECT_NE(
+      std::string(
+          message(svg(outline + "<path id=\"R1\" d=\"M 12 30 L 100 25 M 50 28 L 90 15\"/>\n"), wing_toml("")))
+          .find("must be one open line: it has 2 subpaths (a branching vein is one [[veins]] entry a branch"),
+      std::string::npos);
+  EXPECT_NE(
+      std::string(message(svg(outline + "<path id=\"R1\" d=\"M 12 30 L 100 25 L 100 26 L 12 31 Z\"/>\n"),
+                          wing_toml("")))
+          .find("it is closed (a vein traced as an area"),
+      std::string::npos);
   EXPECT_NE(std::string(message(svg(kShapes),
                                 wing_toml("drawing_tip = \"right\"\ndrawing_leading_edge = \"left\"\n")))
                 .find("must be at right angles to drawing_tip"),

@@ -210,9 +210,14 @@ std::vector<Vec> drawing_vein_points(const TomlTable& v, const DrawingFrame& fra
            "several shapes of " + frame.drawing.file + " are '" + name + "': " + list_shapes(found));
   const SvgShape& s = *found.front();
   if (s.closed || s.subpaths != 1)
-    v.fail("drawing_id",
-           "the vein, " + s.describe() + " of " + frame.drawing.file + ", must be one open line: " +
-               (s.subpaths != 1 ? "it has " + std::to_string(s.subpaths) + " subpaths" : "it is closed"));
+    v.fail(
+        "drawing_id",
+        "the vein, " + s.describe() + " of " + frame.drawing.file + ", must be one open line: " +
+            (s.subpaths != 1 ? "it has " + std::to_string(s.subpaths) +
+                                   " subpaths (a branching vein is one [[veins]] entry a branch: Path > "
+                                   "Break Apart, and name each piece)"
+                             : "it is closed (a vein traced as an area, as Trace Bitmap gives it, is drawn "
+                               "as a line along its middle instead: its thickness is outer_diameter)"));
   if (s.points.size() < 2)
     v.fail("drawing_id", "the vein, " + s.describe() + ", has fewer than 2 distinct points");
   if (s.points.size() > kMaxOutlinePoints)  // as an outline: gmsh makes an edge of each piece
