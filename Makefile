@@ -8,6 +8,8 @@
 #   make run [CASE=cases/x.toml]   a case (default: the full pipeline on the hawkmoth
 #                        wing: wing -> FEM -> reduction -> flexible FSI hover at 26.1 Hz)
 #                        into out/<case>/, with a preview PNG and a ParaView state
+#   make run WING=wings/x.toml [CASE=...]   the case flown with another wing (its model
+#                        made first for a flexible case), into out/<case>_<wing>/
 #   make model WING=wings/x.toml [BODIES=N]   regenerate out/<wing>/ (mesh, FEM, beam,
 #                        chain), re-running only the stages whose inputs changed
 #   make hawkmoth-model  the same for the default wing (out/hawkmoth/)
@@ -42,7 +44,7 @@ MAKEFLAGS  += --no-print-directory
 all: build
 
 help:
-	@sed -n '1,31p' Makefile
+	@sed -n '1,33p' Makefile
 
 deps:
 	@tools/install_deps.sh

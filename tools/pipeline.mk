@@ -7,6 +7,8 @@
 #                       into out/<case name>/, with the model of its wing when it needs
 #                       one (out/<case name>_run/ when the case has its wing's name, whose
 #                       model is out/<wing>/); leaves preview.png and run.pvsm there
+#   make run WING=wings/x.toml [CASE=...]   the case flown with another wing (its model
+#                       made first when the case is flexible), into out/<case name>_<wing>/
 #   make phase-study    rigid (dpsi = -0.20..+0.10) and flexible (-0.10..+0.10) sweeps,
 #                       6 cycles each (nothing truncated), all 12 cases over the cores
 #   make phase-study CASE=cases/x.toml [PHASES=-0.2:0.05:0.1]
@@ -48,15 +50,25 @@ RUN_CHAIN         := $(if $(CASE_NEEDS_MODEL),$(PIPELINE_CHAIN))
 # run into its wing's model folder, out/<wing>/, whose summary.json flapsim run does not
 # replace ('make run CASE=cases/mav_film_wing.toml' stopped there, exit 4): its run goes
 # to out/<case name>_run/.
-RUN_OUT           ?= $(OUT)/$(CASE_NAME)$(if $(and $(RUN_CHAIN),$(filter $(MODEL_OUT),$(OUT)/$(CASE_NAME))),_run)
+# make run WING=wings/x.toml: the case flown with that wing (flapsim run --wing; a flexible
+# case with the chain of that wing's model, out/<wing>/), into out/<case name>_<wing>/.
+RUN_WING          := $(if $(filter command line,$(origin WING)),$(WING))
+RUN_NAME          := $(CASE_NAME)$(if $(RUN_WING),_$(MODEL_NAME))
+RUN_OUT           ?= $(OUT)/$(RUN_NAME)$(if $(and $(RUN_CHAIN),$(filter $(MODEL_OUT),$(OUT)/$(RUN_NAME))),_run)
+# A sweep flies its case's own wing: WING= would give its cases another wing's chain.
+ifneq ($(RUN_WING),)
+ifneq ($(filter phase-study convergence,$(MAKECMDGOALS)),)
+$(error WING=$(WING) applies to make run, make movie and make model; a sweep (phase-study, convergence) flies its case's wing: copy the case and set its 'wing' to $(WING))
+endif
+endif
 
 .PHONY: run run-pipeline phase-study plots figures sweep-plots optimize-plots validate reproduce snapshot movie
 
 
 run: program $(RUN_CHAIN)
-	@$(PIPELINE_BIN) check $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) > /dev/null
+	@$(PIPELINE_BIN) check $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(if $(RUN_WING),--wing $(RUN_WING)) > /dev/null
 	@start=$$(date +%s.%N); \
-	OMP_NUM_THREADS=1 $(PIPELINE_BIN) run $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) \
+	OMP_NUM_THREADS=1 $(PIPELINE_BIN) run $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(if $(RUN_WING),--wing $(RUN_WING)) \
 	  --spring-scale $(PIPELINE_SPRINGS) -o $(RUN_OUT) || exit $$?; \
 	end=$$(date +%s.%N); \
 	echo "FSI run: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"; \

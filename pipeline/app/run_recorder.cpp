@@ -93,6 +93,7 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
   }
   RunResults& r = results_;
   r.set("case", c.name);
+  if (!c.wing_file.empty()) r.set("wing_file", c.wing_file);
   r.set("structure", setup.structure_source);
   r.set("air", model.air);
   r.set("frequency_hz", c.kinematics.frequency);

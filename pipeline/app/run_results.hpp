@@ -44,6 +44,10 @@ inline constexpr auto kRunResults = [] {
       // The case and the setup, known before the first step.
       ResultDefinition{"case", "", K::text, "", "", "name of the case"},
       ResultDefinition{
+          "wing_file", "", K::text, "", "",
+          "the wing file flown: the case's 'wing' resolved from its folder, or run --wing's (absent "
+          "for a case of a chain file alone)"},
+      ResultDefinition{
           "structure", "", K::text, "", "",
           "where the structure came from: rigid wing, chain file, or the wing reduced in process"},
       ResultDefinition{"air", "", K::flag, "", "", "true: in air (vortex lattice); false: in vacuum"},
@@ -53,15 +57,17 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"steps_per_cycle", "", K::integer, "", "", "time steps per flapping cycle"},
       ResultDefinition{"cycles", "", K::integer, "", "", "flapping cycles of the case"},
       ResultDefinition{"dt_s", "s", K::number, "%.6g", "", "time step"},
-      ResultDefinition{"structure_kind", "", K::text, "", "",
-                       "the case's structure.kind: \"rigid\", \"flexible\" (the bar chain) or \"fem\" (the wing's FEM)"},
+      ResultDefinition{
+          "structure_kind", "", K::text, "", "",
+          "the case's structure.kind: \"rigid\", \"flexible\" (the bar chain) or \"fem\" (the wing's FEM)"},
       ResultDefinition{"bodies", "", K::integer, "", "", "bodies of the chain (1: rigid wing and FEM)"},
       ResultDefinition{"fem_nodes", "", K::integer, "", "", "nodes of the FEM structure (kind = \"fem\")"},
       ResultDefinition{"spring_scale", "", K::number, "%.6g", "",
                        "factor on every joint spring (flapsim run --spring-scale)"},
-      ResultDefinition{"inputs_hash", "", K::text, "", "",
-                       "fingerprint of the resolved case (all but output.vtk_every), wing, chain file and spring "
-                       "factor (FNV-1a 64, io::input_hash); a sweep re-run keeps a case whose hash is unchanged"},
+      ResultDefinition{
+          "inputs_hash", "", K::text, "", "",
+          "fingerprint of the resolved case (all but output.vtk_every), wing, chain file and spring "
+          "factor (FNV-1a 64, io::input_hash); a sweep re-run keeps a case whose hash is unchanged"},
       ResultDefinition{"reference_area_m2", "m^2", K::number, "%.6g", "",
                        "S of CL: planform area of the outline (in air)"},
       ResultDefinition{"reference_speed_m_s", "m/s", K::number, "%.6g", "",
@@ -72,25 +78,30 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"flapping_speed_m_s", "m/s", K::number, "%.6g", "",
                        "cycle-mean speed of the span axis at r2·R, base translation included (in air)"},
       ResultDefinition{"free_stream_speed_m_s", "m/s", K::number, "%.6g", "", "|U∞| (in air)"},
-      ResultDefinition{"load_method", "", K::text, "", "", "load route: bernoulli or kutta_joukowski (in air)"},
+      ResultDefinition{"load_method", "", K::text, "", "",
+                       "load route: bernoulli or kutta_joukowski (in air)"},
       ResultDefinition{"leading_edge", "", K::text, "", "",
                        "leading-edge model: none, attached, separated or shed (in air)"},
       ResultDefinition{"r2", "", K::number, "%.4f", "",
                        "non-dimensional radius of gyration of the outline's area (in air)"},
-      ResultDefinition{"reynolds_number", "", K::number, "%.4g", "",
-                       "Re = U_ref c/nu: the reference speed, the mean chord S/R and numerics.kinematic_viscosity; "
-                       "below 32 warned (in air; docs/uvlm.md, \"Reynolds number\")"},
+      ResultDefinition{
+          "reynolds_number", "", K::number, "%.4g", "",
+          "Re = U_ref c/nu: the reference speed, the mean chord S/R and numerics.kinematic_viscosity; "
+          "below 32 warned (in air; docs/uvlm.md, \"Reynolds number\")"},
       // How the run ended.
       ResultDefinition{"error", "", K::text, "", "",
-                       "what stopped the run: the numerical failure, the output error or the signal (failed and interrupted runs)"},
+                       "what stopped the run: the numerical failure, the output error or the signal (failed "
+                       "and interrupted runs)"},
       ResultDefinition{"status", "", K::text, "", "",
-                       "\"ok\"; \"failed\" (exit status 3, or 4 for an output error); \"interrupted\" (SIGINT or SIGTERM, exit status 130 or 143)"},
-      ResultDefinition{"warnings", "", K::text, "", "",
-                       "the case's warnings known before its first step (its case and wing files', its "
-                       "setup's) in a few words, '; '-separated, as sweep.csv's message gives them (set by "
-                       "flapsim run, flapsim sweep and flapsim optimize when there are any; a sweep run again "
-                       "repeats them in "
-                       "the row of a case it keeps)"},
+                       "\"ok\"; \"failed\" (exit status 3, or 4 for an output error); \"interrupted\" "
+                       "(SIGINT or SIGTERM, exit status 130 or 143)"},
+      ResultDefinition{
+          "warnings", "", K::text, "", "",
+          "the case's warnings known before its first step (its case and wing files', its "
+          "setup's) in a few words, '; '-separated, as sweep.csv's message gives them (set by "
+          "flapsim run, flapsim sweep and flapsim optimize when there are any; a sweep run again "
+          "repeats them in "
+          "the row of a case it keeps)"},
       ResultDefinition{"steps", "", K::integer, "", "", "time steps completed"},
       ResultDefinition{"time_s", "s", K::number, "%.6g", "", "simulated time reached"},
       // Loads: means over the last cycle (or what was run, if less), trapezoidal rule.
@@ -108,10 +119,12 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"mean_drag_N", "N", K::number, "%.6g", "mean drag",
                        "mean drag over the last cycle (along U∞; in hover against the horizontal motion at "
                        "r2·R); negative = thrust (in air)"},
-      ResultDefinition{"mean_CD", "", K::number, "%.4f", "mean CD", "mean drag coefficient D / (½ ρ U_ref² S) (in air)"},
-      ResultDefinition{"mean_CL_on_flapping_speed", "", K::number, "%.4f", "",
-                       "in a free stream, of a wing that flaps: mean_CL on the flapping speed at r2·R instead of "
-                       "U∞, L / (½ ρ flapping_speed² S) (the free stream's CL times (U∞ / flapping_speed)²)"},
+      ResultDefinition{"mean_CD", "", K::number, "%.4f", "mean CD",
+                       "mean drag coefficient D / (½ ρ U_ref² S) (in air)"},
+      ResultDefinition{
+          "mean_CL_on_flapping_speed", "", K::number, "%.4f", "",
+          "in a free stream, of a wing that flaps: mean_CL on the flapping speed at r2·R instead of "
+          "U∞, L / (½ ρ flapping_speed² S) (the free stream's CL times (U∞ / flapping_speed)²)"},
       ResultDefinition{"mean_CD_on_flapping_speed", "", K::number, "%.4f", "",
                        "in a free stream, of a wing that flaps: mean_CD on the flapping speed at r2·R"},
       ResultDefinition{"mean_side_N", "N", K::number, "%.6g", "", "mean side force, last cycle (in air)"},
@@ -136,21 +149,24 @@ inline constexpr auto kRunResults = [] {
                        "cycles do not repeat) (in air)"},
       ResultDefinition{"settled_mean_CL", "", K::number, "%.4f", "settled CL",
                        "mean lift coefficient over the settled cycles (in air)"},
-      ResultDefinition{"settled_CL_standard_error", "", K::number, "%.4f", "",
-                       "standard error of settled_mean_CL: the standard deviation of the cycles' mean CL over "
-                       "√settled_cycles (how well the mean is known if the cycles are independent) (in air)"},
+      ResultDefinition{
+          "settled_CL_standard_error", "", K::number, "%.4f", "",
+          "standard error of settled_mean_CL: the standard deviation of the cycles' mean CL over "
+          "√settled_cycles (how well the mean is known if the cycles are independent) (in air)"},
       ResultDefinition{"cycle_CL_deviation", "", K::number, "%.4f", "",
                        "standard deviation of the settled cycles' mean CL: ~0 for a periodic run (in air)"},
-      ResultDefinition{"cycle_CL_lag_correlation", "", K::number, "%.3f", "",
-                       "correlation of each settled cycle's mean CL with the next's: near 0 when the cycles are "
-                       "independent, and the standard error holds (in air)"},
+      ResultDefinition{
+          "cycle_CL_lag_correlation", "", K::number, "%.3f", "",
+          "correlation of each settled cycle's mean CL with the next's: near 0 when the cycles are "
+          "independent, and the standard error holds (in air)"},
       ResultDefinition{"mean_drive_power_W", "W", K::number, "%.6g", "drive power",
                        "cycle-mean power the base supplies to the wing, ω·M + v·F at the pivot (inertial "
                        "plus aerodynamic), last cycle"},
       ResultDefinition{"peak_drive_power_W", "W", K::number, "%.6g", "",
                        "largest power the base supplies in the last cycle"},
-      ResultDefinition{"peak_drive_moment_Nm", "Nm", K::number, "%.6g", "",
-                       "largest magnitude of the moment the base exerts on the wing about the pivot, last cycle"},
+      ResultDefinition{
+          "peak_drive_moment_Nm", "Nm", K::number, "%.6g", "",
+          "largest magnitude of the moment the base exerts on the wing about the pivot, last cycle"},
       // Rotation phases and lags over the last cycle, fractions of the period (docs/fsi.md).
       ResultDefinition{"base_rotation_phase", "", K::number, "%.4f", "",
                        "rotation phase of the base measured from its angles (reproduces the case's δψ)"},
@@ -167,10 +183,11 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"outer_rotation_lag", "", K::number, "%.4f", "outer lag",
                        "outer body's α = 90° crossings minus the base's"},
       // The flexible wing's deflection (chains with joints).
-      ResultDefinition{"peak_tip_bend_deg", "deg", K::number, "%.1f", "",
-                       "largest |tip bend| during the run: the rotation of the chain's last body or the FEM's "
-                       "tip section from its rest orientation, in the wing frame, as Rx(bend) Ry(twist) "
-                       "(fsi::tip_deflection)"},
+      ResultDefinition{
+          "peak_tip_bend_deg", "deg", K::number, "%.1f", "",
+          "largest |tip bend| during the run: the rotation of the chain's last body or the FEM's "
+          "tip section from its rest orientation, in the wing frame, as Rx(bend) Ry(twist) "
+          "(fsi::tip_deflection)"},
       ResultDefinition{"peak_tip_twist_deg", "deg", K::number, "%.1f", "",
                        "largest |tip twist| during the run, as peak_tip_bend_deg: the twist about the "
                        "wing frame's span axis y_W (fsi::tip_deflection)"},
@@ -265,7 +282,9 @@ struct ReportLine {
 };
 
 inline constexpr std::array kRunReport = {
-    ReportLine{"case {case}: {structure}"},
+    ReportLine{"case {case}, wing {wing_file}: {structure}",
+               [](const RunResults& r) { return r.has("wing_file"); }},
+    ReportLine{"case {case}: {structure}", [](const RunResults& r) { return !r.has("wing_file"); }},
     // In vacuum there is no lift, and no speed to make a coefficient of: "mean lift 0 N,
     // mean CL 0.0000" read as a result.
     ReportLine{"mean lift (last cycle) {mean_lift_N}, mean CL {mean_CL}",
@@ -276,15 +295,17 @@ inline constexpr std::array kRunReport = {
                [](const RunResults& r) { return r.has("settled_mean_CL"); }},
     ReportLine{"in vacuum (air = \"none\"): no aerodynamic loads, no lift",
                [](const RunResults& r) { return !r.has("mean_power_W"); }},
-    ReportLine{"mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W}, lift/power "
-               "{lift_per_power_N_W}; coefficients on {reference_speed_m_s} ({reference_kind}), Reynolds number "
-               "{reynolds_number}",
-               [](const RunResults& r) { return r.has("mean_power_W"); }},
+    ReportLine{
+        "mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W}, lift/power "
+        "{lift_per_power_N_W}; coefficients on {reference_speed_m_s} ({reference_kind}), Reynolds number "
+        "{reynolds_number}",
+        [](const RunResults& r) { return r.has("mean_power_W"); }},
     // A flapping wing in a free stream: its coefficients on U∞ grow as (flapping speed / U∞)²
     // (a 40 mm wing at 200 Hz in a 1 m/s stream: CL 1495); the flapping speed's as well.
-    ReportLine{"on the flapping speed at r2, {flapping_speed_m_s} (the free stream {free_stream_speed_m_s}): CL "
-               "{mean_CL_on_flapping_speed}, CD {mean_CD_on_flapping_speed}",
-               [](const RunResults& r) { return r.has("mean_CL_on_flapping_speed"); }},
+    ReportLine{
+        "on the flapping speed at r2, {flapping_speed_m_s} (the free stream {free_stream_speed_m_s}): CL "
+        "{mean_CL_on_flapping_speed}, CD {mean_CD_on_flapping_speed}",
+        [](const RunResults& r) { return r.has("mean_CL_on_flapping_speed"); }},
     ReportLine{"drive: mean power {mean_drive_power_W} (peak {peak_drive_power_W}), peak moment "
                "{peak_drive_moment_Nm}"},
     ReportLine{"coupling: {mean_coupling_iterations} sub-iterations per step on average "

@@ -1,6 +1,7 @@
 // flapsim check FILE.toml: validate a wing or case file and print its summary.
 #include "pipeline/app/cli/commands.hpp"
 #include "pipeline/app/cli/option_checks.hpp"
+#include "pipeline/app/cli/wing_option.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -89,19 +90,21 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
 /// Reads the file, decides whether it is a wing ([planform]) or a case ([kinematics]),
 /// checks it completely (a case as `run` would: its wing, chain file and size) and returns
 /// the summary text. Nothing is printed until everything has been checked.
-std::string check_file(const std::string& path, const std::string& chain_file) {
-  const wings::TomlTable root = wings::parse_toml_file(path);
+std::string check_file(const std::string& path, const std::string& chain_file, const std::string& wing_file) {
+  wings::TomlTable root = wings::parse_toml_file(path);
   const bool wing = wings::is_wing_document(root), case_file = io::is_case_document(root);
   if (wing && case_file)
     throw InputError(path, root.line_of("planform"), "planform",
                      "a file is either a wing file ([planform]) or a case file ([kinematics]), not both");
   if (wing) {
     if (!chain_file.empty()) throw CLI::ValidationError("--chain", "applies to a case file, not a wing file");
+    if (!wing_file.empty()) throw CLI::ValidationError("--wing", "applies to a case file, not a wing file");
     const wings::Wing w = print_wing_warnings(wings::read_wing(root));
     check_meshable(w, true);
     return wings::describe_wing(w);
   }
   if (case_file) {
+    apply_wing_option(root, wing_file, chain_file);
     const io::Case c = print_case_warnings(io::read_case(root));
     warn_unused_structure_options(c, chain_file, 1.0);  // as run warns
     std::optional<double> stream_radius;
@@ -139,12 +142,16 @@ void add_check_command(CLI::App& app) {
       "Formats: docs/wing_file.md, docs/case_file.md.");
   auto file = std::make_shared<std::string>();
   auto chain = std::make_shared<std::string>();
+  auto wing = std::make_shared<std::string>();
   cmd->add_option("FILE", *file, "wing or case file (TOML)")->required();
   cmd->add_option("--chain", *chain, "for a case: the chain file run --chain would use (overrides the case's 'chain')")
       ->check(non_empty_option());
-  cmd->callback([file, chain] {
+  cmd->add_option("--wing", *wing,
+                  "for a case: the wing file run --wing would fly (overrides the case's 'wing')")
+      ->check(non_empty_option());
+  cmd->callback([file, chain, wing] {
     check_chain_option(*chain);
-    std::cout << check_file(*file, *chain) << std::flush;
+    std::cout << check_file(*file, *chain, *wing) << std::flush;
   });
 }
 

@@ -1,6 +1,7 @@
-// flapsim run CASE.toml -o DIR [--chain FILE] [--vtk-every N]
+// flapsim run CASE.toml -o DIR [--chain FILE] [--wing FILE] [--vtk-every N]
 #include "pipeline/app/cli/commands.hpp"
 #include "pipeline/app/cli/option_checks.hpp"
+#include "pipeline/app/cli/wing_option.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -29,6 +30,7 @@ struct RunArgs {
   std::string case_file;
   std::string output_dir;
   std::string chain_file;
+  std::string wing_file;
   int vtk_every = -1;
   double spring_scale = 1.0;
   bool quiet = false;
@@ -36,13 +38,15 @@ struct RunArgs {
 };
 
 void run_command(const RunArgs& a) {
-  const io::Case c = print_case_warnings(io::load_case_file(a.case_file));
   check_chain_option(a.chain_file);
+  wings::TomlTable case_root = wings::parse_toml_file(a.case_file);
+  apply_wing_option(case_root, a.wing_file, a.chain_file);
+  const io::Case c = print_case_warnings(io::read_case(case_root));
   warn_unused_structure_options(c, a.chain_file, a.spring_scale);
   app::RunOptions options;
   // The case name is never a path: the default folder is out/ plus the name made safe.
-  options.output_dir = a.output_dir.empty() ? std::filesystem::path("out") / io::folder_name_of(c.name)
-                                            : std::filesystem::path(a.output_dir);
+  options.output_dir =
+      a.output_dir.empty() ? default_run_folder(c.name, a.wing_file) : std::filesystem::path(a.output_dir);
   options.chain_file = a.chain_file;
   options.spring_scale = a.spring_scale;
   if (a.vtk_every >= 0) options.vtk_every = a.vtk_every;
@@ -119,6 +123,8 @@ void add_run_command(CLI::App& app) {
       "the FEM's deformed mesh, displacement and membrane strain).\n"
       "A flexible case takes its chain from --chain, else from the case's 'chain' key, else it\n"
       "reduces the case's wing in process to structure.bodies bodies (as 'flapsim reduce').\n"
+      "--wing flies another wing in the case (its kinematics, air, structure and numerics\n"
+      "kept), into out/<case name>_<wing file name> by default.\n"
       "Also writes run.pvsm, a ParaView state of the series and the lift (docs/fsi.md).\n"
       "One run per folder: a rerun replaces the previous run's files (DIR/flapsim_outputs.toml);\n"
       "another command's files that would be replaced need --force. A long run prints its\n"
@@ -128,9 +134,16 @@ void add_run_command(CLI::App& app) {
       "Exit status: 0 ok, 1 usage, 2 bad input, 3 numerical failure (outputs so far stay valid),\n"
       "4 output or system error, 130/143 interrupted by SIGINT/SIGTERM.");
   cmd->add_option("case", args->case_file, "case file (TOML, docs/case_file.md)")->required();
-  cmd->add_option("-o,--output", args->output_dir, "output folder (default out/<case name>)")->check(non_empty_option());
+  cmd->add_option("-o,--output", args->output_dir,
+                  "output folder (default out/<case name>, with --wing out/<case name>_<wing file name>)")
+      ->check(non_empty_option());
   cmd->add_option("--chain", args->chain_file,
                   "chain file (chain.toml from 'flapsim reduce'), overrides the case's 'chain'")
+      ->check(non_empty_option());
+  cmd->add_option(
+         "--wing", args->wing_file,
+         "wing file (TOML) flown instead of the case's 'wing' (a flexible case reduces it as it runs, "
+         "unless --chain)")
       ->check(non_empty_option());
   cmd->add_option("--vtk-every", args->vtk_every,
                   "write the ParaView series every N steps, 0 = none (default: the case's output.vtk_every)")

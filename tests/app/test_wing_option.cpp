@@ -1,0 +1,97 @@
+// `flapsim run CASE --wing WING` (pipeline/app/cli/wing_option.hpp; docs/case_file.md,
+// "Another wing for a case"): the case flown with another wing is the case written with that
+// wing, into its own default folder; what cannot work is refused naming the key.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/run_flapsim.hpp"
+#include "common/scratch_dir.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using flapsim::test::json_number;
+using flapsim::test::read_text;
+using flapsim::test::run_flapsim;
+using flapsim::test::run_flapsim_capturing_stderr;
+
+constexpr const char* kOptionFilm =
+    "[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"
+    "[membrane]\nthickness = 0.01\nmaterial = \"film\"\n";
+
+void write_option_wing(const fs::path& file, const std::string& outline) {
+  std::ofstream(file) << "length_unit = \"mm\"\n[planform]\noutline = " << outline << "\nclamp_y = 0.5\n"
+                      << kOptionFilm;
+}
+
+void write_option_case(const fs::path& file, const std::string& wing) {
+  std::ofstream(file) << "name = \"beat\"\nwing = \"" << wing
+                      << "\"\n[kinematics]\nfrequency_hz = 25\nsweep = { cos_deg = [60.0] }\n"
+                         "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n[structure]\nkind = \"rigid\"\n"
+                         "[numerics]\nsteps_per_cycle = 20\ncycles = 1\n";
+}
+
+// A rigid wingbeat of a trapezoid flown by a case written for a rectangle: the mean lift of
+// the case written with the trapezoid, to the last bit, and not the rectangle's.
+TEST(WingOption, ACaseFlownWithAnotherWingIsThatCaseWrittenWithIt) {
+  const flapsim::test::ScratchDir dir("wing_option_run");
+  fs::create_directories(dir / "wings");
+  write_option_wing(dir / "wings" / "rectangle.toml", "[[0, 0], [0, 50], [-15, 50], [-15, 0]]");
+  write_option_wing(dir / "wings" / "trapezoid.toml", "[[0, 0], [5, 50], [-10, 50], [-15, 0]]");
+  write_option_case(dir / "rectangle_case.toml", "wings/rectangle.toml");
+  write_option_case(dir / "trapezoid_case.toml", "wings/trapezoid.toml");
+  ASSERT_EQ(run_flapsim("run " + (dir / "rectangle_case.toml").string() + " --wing " +
+                        (dir / "wings" / "trapezoid.toml").string() + " -o " + (dir / "o1").string()),
+            0);
+  ASSERT_EQ(run_flapsim("run " + (dir / "trapezoid_case.toml").string() + " -o " + (dir / "o2").string()), 0);
+  ASSERT_EQ(run_flapsim("run " + (dir / "rectangle_case.toml").string() + " -o " + (dir / "o3").string()), 0);
+  const std::string flown = read_text(dir / "o1" / "summary.json");
+  const double with_option = json_number(flown, "mean_lift_N");
+  const double written = json_number(read_text(dir / "o2" / "summary.json"), "mean_lift_N");
+  const double rectangle = json_number(read_text(dir / "o3" / "summary.json"), "mean_lift_N");
+  EXPECT_GT(written, 0.0);
+  EXPECT_EQ(with_option, written);
+  EXPECT_GT(std::abs(rectangle - written), 1e-3 * written);  // the option did change the wing
+  EXPECT_NE(flown.find("trapezoid.toml\""), std::string::npos) << "summary.json's wing_file";
+}
+
+// Without -o the run goes to out/<case name>_<wing file's name>, beside the case's own out/<case name>.
+TEST(WingOption, TheDefaultFolderNamesTheCaseAndTheWing) {
+  const flapsim::test::ScratchDir dir("wing_option_folder");
+  write_option_wing(dir / "my_wing.toml", "[[0, 0], [5, 50], [-10, 50], [-15, 0]]");
+  write_option_wing(dir / "case_wing.toml", "[[0, 0], [0, 50], [-15, 50], [-15, 0]]");
+  write_option_case(dir / "beat.toml", "case_wing.toml");
+  ASSERT_EQ(flapsim::test::run_flapsim_in_shell("cd '" + dir.path().string() + "' && exec",
+                                                "run beat.toml --wing my_wing.toml -q"),
+            0);
+  EXPECT_TRUE(fs::exists(dir / "out" / "beat_my_wing" / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "beat"));
+}
+
+// A case that flies a chain file of its own was reduced from its own wing: --wing needs
+// --chain with it. A missing wing file names --wing; --wing of a wing file is a usage error.
+TEST(WingOption, WhatCannotWorkIsRefusedNamingTheKey) {
+  const flapsim::test::ScratchDir dir("wing_option_refused");
+  write_option_wing(dir / "w.toml", "[[0, 0], [5, 50], [-10, 50], [-15, 0]]");
+  const std::string chain_case = std::string(FLAPSIM_SOURCE_DIR) + "/cases/vacuum_flapping.toml";
+  const auto chained =
+      run_flapsim_capturing_stderr(dir.path(), "run " + chain_case + " --wing " + (dir / "w.toml").string() +
+                                                   " -o " + (dir / "o").string());
+  EXPECT_EQ(chained.status, 2);
+  EXPECT_NE(chained.err.find("vacuum_flapping.toml:16: key 'chain': the case flies its own chain file"),
+            std::string::npos)
+      << chained.err;  // line 16 of cases/vacuum_flapping.toml: chain = "chains/hawkmoth_10_bodies.toml"
+  EXPECT_FALSE(fs::exists(dir / "o"));
+  const auto missing = run_flapsim_capturing_stderr(
+      dir.path(), "check " + chain_case + " --wing " + (dir / "nothere.toml").string());
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("key '--wing': wing file not found"), std::string::npos) << missing.err;
+  EXPECT_EQ(run_flapsim("check " + (dir / "w.toml").string() + " --wing " + (dir / "w.toml").string()), 1);
+}
+
+}  // namespace
