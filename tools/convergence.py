@@ -96,7 +96,7 @@ def observed_order(f, r):
     return p, ext, f3 - ext
 
 
-def run_sweep(flapsim, case, rows, columns, out, chain, jobs, threads):
+def run_sweep(flapsim, case, rows, columns, out, chain, wing, jobs, threads):
     os.makedirs(out, exist_ok=True)
     table = os.path.join(out, "levels.csv")
     with open(table, "w", newline="", encoding="utf-8") as t:
@@ -106,6 +106,8 @@ def run_sweep(flapsim, case, rows, columns, out, chain, jobs, threads):
     cmd = [flapsim, "sweep", case, "--cases", table, "-o", out, "--force"]
     if chain:
         cmd += ["--chain", chain]
+    if wing:
+        cmd += ["--wing", wing]
     if jobs:
         cmd += ["-j", str(jobs)]
     if threads:
@@ -158,6 +160,7 @@ def main():
     ap.add_argument("--steps", help="steps_per_cycle levels instead, e.g. 50,100,200")
     ap.add_argument("--study", choices=["both", "lattice", "steps"], default="both")
     ap.add_argument("--chain", help="chain file (as flapsim run --chain)")
+    ap.add_argument("--wing", help="wing file flown instead of the case's (as flapsim run --wing)")
     ap.add_argument("--flapsim", default="build/flapsim")
     ap.add_argument("-j", "--jobs", type=int, default=0, help="levels run at once (flapsim sweep -j)")
     ap.add_argument("--threads", type=int, default=0, help="flapsim sweep --threads")
@@ -187,15 +190,17 @@ def main():
         print(f"convergence: {e}", file=sys.stderr)
         return 1
     name = os.path.splitext(os.path.basename(a.case))[0]
+    if a.wing:
+        name += "_" + os.path.splitext(os.path.basename(a.wing))[0]
     out = a.output or os.path.join("out", "convergence", name)
     os.makedirs(out, exist_ok=True)
-    md = [f"# Convergence of {a.case}", ""]
+    md = [f"# Convergence of {a.case}" + (f" with the wing {a.wing}" if a.wing else ""), ""]
     rows_csv = []
     if a.study != "steps":
         rows = [(nc, ns, base["steps_per_cycle"]) for nc, ns in lattice]
         lift = run_sweep(a.flapsim, a.case, [(nc, ns) for nc, ns in lattice],
                          ["numerics.chordwise_panels", "numerics.spanwise_panels"], os.path.join(out, "lattice"),
-                         a.chain, a.jobs, a.threads)
+                         a.chain, a.wing, a.jobs, a.threads)
         lines, _, _ = study_table("Lattice (steps_per_cycle " + str(base["steps_per_cycle"]) + ")",
                                   ["chordwise", "spanwise", "steps"], rows, lift, r_lattice)
         md += lines
@@ -203,7 +208,7 @@ def main():
     if a.study != "lattice":
         rows = [(base["chordwise_panels"], base["spanwise_panels"], s) for s in steps]
         lift = run_sweep(a.flapsim, a.case, [(s,) for s in steps], ["numerics.steps_per_cycle"],
-                         os.path.join(out, "steps"), a.chain, a.jobs, a.threads)
+                         os.path.join(out, "steps"), a.chain, a.wing, a.jobs, a.threads)
         lines, _, _ = study_table(f"Time step (lattice {base['chordwise_panels']} x {base['spanwise_panels']})",
                                   ["chordwise", "spanwise", "steps"], rows, lift, r_steps)
         md += lines

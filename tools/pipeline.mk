@@ -8,7 +8,9 @@
 #                       one (out/<case name>_run/ when the case has its wing's name, whose
 #                       model is out/<wing>/); leaves preview.png and run.pvsm there
 #   make run WING=wings/x.toml [CASE=...]   the case flown with another wing (its model
-#                       made first when the case is flexible), into out/<case name>_<wing>/
+#                       made first when the case is flexible), into out/<case name>_<wing>/;
+#                       WING= works alike for movie, phase-study (out/phase_study_<wing>/),
+#                       plots (out/plots_<wing>/) and convergence (out/convergence/<case name>_<wing>/)
 #   make phase-study    rigid (dpsi = -0.20..+0.10) and flexible (-0.10..+0.10) sweeps,
 #                       6 cycles each (nothing truncated), all 12 cases over the cores
 #   make phase-study CASE=cases/x.toml [PHASES=-0.2:0.05:0.1]
@@ -40,9 +42,9 @@ PIPELINE_CHAIN    ?= $(MODEL_OUT)/chain.toml
 # springs as reduced from the calibrated wings/hawkmoth.toml. Override for sensitivity
 # studies, e.g. 'make phase-study PIPELINE_SPRINGS=4'.
 PIPELINE_SPRINGS  ?= 1
-PHASE_OUT         ?= $(OUT)/phase_study
+PHASE_OUT         ?= $(OUT)/phase_study$(if $(RUN_WING),_$(MODEL_NAME))
 PHASE_JOBS        ?= $(shell nproc)
-PLOTS_OUT         ?= $(OUT)/plots
+PLOTS_OUT         ?= $(OUT)/plots$(if $(RUN_WING),_$(MODEL_NAME))
 PHASES            ?= -0.20:0.05:0.10
 # A flexible case without its own chain runs with its wing's chain (tools/case.mk).
 RUN_CHAIN         := $(if $(CASE_NEEDS_MODEL),$(PIPELINE_CHAIN))
@@ -55,20 +57,15 @@ RUN_CHAIN         := $(if $(CASE_NEEDS_MODEL),$(PIPELINE_CHAIN))
 RUN_WING          := $(if $(filter command line,$(origin WING)),$(WING))
 RUN_NAME          := $(CASE_NAME)$(if $(RUN_WING),_$(MODEL_NAME))
 RUN_OUT           ?= $(OUT)/$(RUN_NAME)$(if $(and $(RUN_CHAIN),$(filter $(MODEL_OUT),$(OUT)/$(RUN_NAME))),_run)
-# A sweep flies its case's own wing: WING= would give its cases another wing's chain.
-ifneq ($(RUN_WING),)
-ifneq ($(filter phase-study convergence,$(MAKECMDGOALS)),)
-$(error WING=$(WING) applies to make run, make movie and make model; a sweep (phase-study, convergence) flies its case's wing: copy the case and set its 'wing' to $(WING))
-endif
-endif
+RUN_WING_OPTION   := $(if $(RUN_WING),--wing $(RUN_WING))
 
 .PHONY: run run-pipeline phase-study plots figures sweep-plots optimize-plots validate reproduce snapshot movie
 
 
 run: program $(RUN_CHAIN)
-	@$(PIPELINE_BIN) check $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(if $(RUN_WING),--wing $(RUN_WING)) > /dev/null
+	@$(PIPELINE_BIN) check $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(RUN_WING_OPTION) > /dev/null
 	@start=$$(date +%s.%N); \
-	OMP_NUM_THREADS=1 $(PIPELINE_BIN) run $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(if $(RUN_WING),--wing $(RUN_WING)) \
+	OMP_NUM_THREADS=1 $(PIPELINE_BIN) run $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(RUN_WING_OPTION) \
 	  --spring-scale $(PIPELINE_SPRINGS) -o $(RUN_OUT) || exit $$?; \
 	end=$$(date +%s.%N); \
 	echo "FSI run: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"; \
@@ -88,17 +85,17 @@ ifeq ($(origin CASE),command line)
 # The rotation-phase sweep of the given case.
 phase-study: program $(RUN_CHAIN)
 	@mkdir -p $(PHASE_OUT)
-	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) \
+	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(RUN_WING_OPTION) \
 	  --spring-scale $(PIPELINE_SPRINGS) --vary kinematics.rotation_phase=$(PHASES) \
 	  -o $(PHASE_OUT)/$(CASE_NAME) -j $(PHASE_JOBS)
 else
 phase-study: program $(PIPELINE_CHAIN)
 	@mkdir -p $(PHASE_OUT)
 	@start=$$(date +%s.%N); \
-	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep cases/rotation_phase_rigid_coupled.toml \
+	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep cases/rotation_phase_rigid_coupled.toml $(RUN_WING_OPTION) \
 	  --vary kinematics.rotation_phase=-0.20:0.05:0.10 -o $(PHASE_OUT)/rigid -j $(PHASE_JOBS) \
 	  > $(PHASE_OUT).rigid.log 2>&1 & rigid=$$!; \
-	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep cases/rotation_phase_flexible.toml \
+	OMP_NUM_THREADS=1 $(PIPELINE_BIN) sweep cases/rotation_phase_flexible.toml $(RUN_WING_OPTION) \
 	  --chain $(PIPELINE_CHAIN) --spring-scale $(PIPELINE_SPRINGS) \
 	  --vary kinematics.rotation_phase=-0.10:0.05:0.10 -o $(PHASE_OUT)/flexible -j $(PHASE_JOBS) \
 	  > $(PHASE_OUT).flexible.log 2>&1 & flexible=$$!; \
@@ -179,9 +176,9 @@ movie:
 # CONVERGENCE_ARGS passes more, e.g. "--lattice 6x10,12x20,24x40 --study lattice".
 CONVERGENCE_LEVELS ?= 3
 CONVERGENCE_ARGS   ?=
-CONVERGENCE_OUT    ?= $(OUT)/convergence/$(CASE_NAME)
+CONVERGENCE_OUT    ?= $(OUT)/convergence/$(RUN_NAME)
 .PHONY: convergence
 convergence: program $(RUN_CHAIN)
 	OMP_NUM_THREADS=1 /usr/bin/python3 tools/convergence.py $(CASE) --flapsim $(PIPELINE_BIN) \
-	  $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) --levels $(CONVERGENCE_LEVELS) -j $(PHASE_JOBS) \
+	  $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(RUN_WING_OPTION) --levels $(CONVERGENCE_LEVELS) -j $(PHASE_JOBS) \
 	  -o $(CONVERGENCE_OUT) $(CONVERGENCE_ARGS)

@@ -49,7 +49,7 @@ test::FlapsimOutcome optimize_capturing_stderr(const test::ScratchDir& dir, cons
 // What optimize::check_start_and_bounds says of `bounds` on `case_file` ("" when accepted).
 std::string refusal_of_bounds(const std::string& case_file, const std::vector<optimize::Bound>& bounds,
                               int vtk_every = 0) {
-  const optimize::PointEvaluator evaluator(sweep::SweepInputs{case_file, "", 1.0},
+  const optimize::PointEvaluator evaluator(sweep::SweepInputs{case_file, "", 1.0, ""},
                                            optimize::EvaluatorOptions{});
   optimize::Problem problem;
   problem.bounds = bounds;

@@ -32,8 +32,8 @@ TEST(SweepArrayElements, AVariedAmplitudeIsTheCaseWithThatAmplitudeWritten) {
   const test::ScratchDir dir("sweep_array_elements");
   std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
   std::ofstream(dir / "case40.toml") << plate_with_stroke("40.0");
-  const sweep::SweepInputs varied{(dir / "case.toml").string(), "", 1.0};
-  const sweep::SweepInputs written{(dir / "case40.toml").string(), "", 1.0};
+  const sweep::SweepInputs varied{(dir / "case.toml").string(), "", 1.0, ""};
+  const sweep::SweepInputs written{(dir / "case40.toml").string(), "", 1.0, ""};
   const auto by_element = sweep::resolve_case(varied, {{"kinematics.sweep.cos_deg[0]", 40.0}});
   EXPECT_EQ(by_element.inputs_hash, sweep::resolve_case(written, {}).inputs_hash);
   EXPECT_NE(by_element.inputs_hash, sweep::resolve_case(varied, {}).inputs_hash);

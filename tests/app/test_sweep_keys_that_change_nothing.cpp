@@ -28,7 +28,7 @@ using namespace flapsim;
 // run_sweep resolves it ("" when the sweep is accepted).
 std::string refusal_of_grid(const std::string& case_file, const std::vector<sweep::Variation>& variations,
                             int vtk_every = 0) {
-  const sweep::SweepInputs inputs{case_file, "", 1.0};
+  const sweep::SweepInputs inputs{case_file, "", 1.0, ""};
   const sweep::SweepPlan plan = sweep::grid_plan(variations);
   std::vector<sweep::ResolvedCase> cases;
   for (const sweep::CasePoint& point : plan.points) cases.push_back(sweep::resolve_case(inputs, point));

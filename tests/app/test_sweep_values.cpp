@@ -107,7 +107,7 @@ TEST(SweepValues, CaseTableRowsAndErrorsWithTheirLine) {
 
 TEST(SweepValues, WingKeysAndSpringScaleChangeTheCaseAndItsHash) {
   const std::string hover = std::string(FLAPSIM_SOURCE_DIR) + "/cases/hover.toml";
-  const sweep::SweepInputs inputs{hover, "", 1.0};
+  const sweep::SweepInputs inputs{hover, "", 1.0, ""};
   const auto base = sweep::resolve_case(inputs, {});
   const auto same =
       sweep::resolve_case(inputs, {{"kinematics.rotation_phase", base.c.kinematics.rotation_phase}});

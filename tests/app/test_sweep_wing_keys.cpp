@@ -28,8 +28,8 @@ std::string refusal(const sweep::SweepInputs& inputs, const std::string& key, do
 }
 
 TEST(SweepWingKeys, AStiffnessKeyWithAChainFileIsRefused) {
-  const sweep::SweepInputs inputs{kSource + "/cases/hover_flexible.toml", kSource + "/cases/chains/hawkmoth_10_bodies.toml",
-                                  1.0};
+  const sweep::SweepInputs inputs{kSource + "/cases/hover_flexible.toml",
+                                  kSource + "/cases/chains/hawkmoth_10_bodies.toml", 1.0, ""};
   const std::string e = refusal(inputs, "wing.materials.vein.youngs_modulus", 3e9);
   EXPECT_NE(e.find("key 'wing.materials.vein.youngs_modulus'"), std::string::npos) << e;
   EXPECT_NE(e.find("changes nothing"), std::string::npos) << e;
@@ -37,11 +37,11 @@ TEST(SweepWingKeys, AStiffnessKeyWithAChainFileIsRefused) {
             std::string::npos);
   EXPECT_EQ(refusal(inputs, "wing.planform.area", 800.0), "");  // the lattice's outline
   // Without the chain file the wing is reduced in process for each value: accepted.
-  EXPECT_EQ(refusal({inputs.case_file, "", 1.0}, "wing.materials.vein.youngs_modulus", 3e9), "");
+  EXPECT_EQ(refusal({inputs.case_file, "", 1.0, ""}, "wing.materials.vein.youngs_modulus", 3e9), "");
 }
 
 TEST(SweepWingKeys, AStiffnessKeyOfARigidWingIsRefusedItsMassIsNot) {
-  const sweep::SweepInputs inputs{kSource + "/cases/lua_rigid.toml", "", 1.0};
+  const sweep::SweepInputs inputs{kSource + "/cases/lua_rigid.toml", "", 1.0, ""};
   EXPECT_NE(refusal(inputs, "wing.materials.vein.youngs_modulus", 3e9).find("rigid wing"), std::string::npos);
   EXPECT_NE(refusal(inputs, "wing.mesh.element_size", 0.8).find("rigid wing"), std::string::npos);
   EXPECT_EQ(refusal(inputs, "wing.membrane.nonstructural_mass_per_area", 0.01), "");

@@ -95,3 +95,31 @@ TEST(WingOption, WhatCannotWorkIsRefusedNamingTheKey) {
 }
 
 }  // namespace
+
+// sweep --wing: every case flies the wing (the sweep's row is the run of the case written
+// with it); optimize --wing: its optimum.toml names that wing, so that `run` flies it again.
+TEST(WingOption, SweepsAndOptimisationsFlyTheWingInEveryCase) {
+  const flapsim::test::ScratchDir dir("wing_option_sweep");
+  write_option_wing(dir / "rectangle.toml", "[[0, 0], [0, 50], [-15, 50], [-15, 0]]");
+  write_option_wing(dir / "trapezoid.toml", "[[0, 0], [5, 50], [-10, 50], [-15, 0]]");
+  write_option_case(dir / "rectangle_case.toml", "rectangle.toml");
+  write_option_case(dir / "trapezoid_case.toml", "trapezoid.toml");
+  const std::string trapezoid = (dir / "trapezoid.toml").string();
+  ASSERT_EQ(run_flapsim("sweep " + (dir / "rectangle_case.toml").string() + " --wing " + trapezoid +
+                        " --vary kinematics.rotation_phase=0 -q -o " + (dir / "sweep").string()),
+            0);
+  ASSERT_EQ(run_flapsim("run " + (dir / "trapezoid_case.toml").string() + " -q -o " + (dir / "run").string()),
+            0);
+  const double written = json_number(read_text(dir / "run" / "summary.json"), "mean_lift_N");
+  const std::string row = read_text(dir / "sweep" / "sweep.csv");
+  const std::size_t second_line = row.find('\n') + 1;  // the header, then the one case
+  EXPECT_EQ(std::stod(row.substr(row.find(',', second_line) + 1)), written) << row;
+  ASSERT_EQ(
+      run_flapsim(
+          "optimize " + (dir / "rectangle_case.toml").string() + " --wing " + trapezoid +
+          " --vary kinematics.rotation_phase=-0.1:0.1 --maximize mean_lift_N --max-evaluations 2 -q -o " +
+          (dir / "opt").string()),
+      0);
+  EXPECT_NE(read_text(dir / "opt" / "optimum.toml").find("wing = '../trapezoid.toml'"), std::string::npos)
+      << read_text(dir / "opt" / "optimum.toml");
+}

@@ -4,6 +4,7 @@
 //   [--force] [--quiet]
 #include "pipeline/app/cli/commands.hpp"
 #include "pipeline/app/cli/option_checks.hpp"
+#include "pipeline/app/cli/wing_option.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -28,7 +29,7 @@ namespace flapsim::cli {
 namespace {
 
 struct OptimizeArgs {
-  std::string case_file, output_dir, chain_file, maximize, algorithm;
+  std::string case_file, output_dir, chain_file, wing_file, maximize, algorithm;
   std::vector<std::string> vary, constraints;
   int max_evaluations = 50;
   int starts = 1;
@@ -47,12 +48,15 @@ void optimize_command(const OptimizeArgs& a) {
   problem.objective = optimize::parse_result(a.maximize, "--maximize");
   for (const std::string& c : a.constraints) problem.constraints.push_back(optimize::parse_constraint(c));
   check_chain_option(a.chain_file);
-  const io::Case base = print_case_warnings(io::load_case_file(a.case_file));
+  wings::TomlTable case_root = wings::parse_toml_file(a.case_file);
+  apply_wing_option(case_root, a.wing_file, a.chain_file);
+  const io::Case base = print_case_warnings(io::read_case(case_root));
   warn_unused_structure_options(base, a.chain_file, a.spring_scale);
 
   optimize::OptimizeOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;
+  options.wing_file = a.wing_file;
   options.spring_scale = a.spring_scale;
   options.vtk_every = a.vtk_every;
   options.force = a.force;
@@ -128,6 +132,9 @@ void add_optimize_command(CLI::App& app) {
                   "first step, as a fraction of each key's range (default 0.25)")
       ->check(CLI::Range(1e-6, 0.5));
   cmd->add_option("--chain", args->chain_file, "chain file for every run (as flapsim run --chain)")->check(non_empty_option());
+  cmd->add_option("--wing", args->wing_file,
+                  "wing file every run flies instead of the case's 'wing' (as flapsim run --wing)")
+      ->check(non_empty_option());
   cmd->add_option("--spring-scale", args->spring_scale, "joint-spring factor for every run (as flapsim run)")
       ->check(positive_number());
   cmd->add_option("--vtk-every", args->vtk_every, "ParaView series of each run every N steps (default 0: none)")

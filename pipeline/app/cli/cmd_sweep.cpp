@@ -2,6 +2,7 @@
 //   [--spring-scale S] [--jobs N] [--vtk-every N] [--log-every S] [--force] [--quiet]
 #include "pipeline/app/cli/commands.hpp"
 #include "pipeline/app/cli/option_checks.hpp"
+#include "pipeline/app/cli/wing_option.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -29,7 +30,7 @@ namespace flapsim::cli {
 namespace {
 
 struct SweepArgs {
-  std::string case_file, cases_table, output_dir, chain_file;
+  std::string case_file, cases_table, output_dir, chain_file, wing_file;
   std::vector<std::string> vary;
   int jobs = 0;
   int vtk_every = 0;
@@ -87,7 +88,9 @@ void sweep_command(const SweepArgs& a) {
     plan = sweep::grid_plan(variations);
   }
   check_chain_option(a.chain_file);
-  const io::Case base = print_case_warnings(io::load_case_file(a.case_file));  // each case is checked again
+  wings::TomlTable case_root = wings::parse_toml_file(a.case_file);
+  apply_wing_option(case_root, a.wing_file, a.chain_file);
+  const io::Case base = print_case_warnings(io::read_case(case_root));  // each case is checked again
   warn_unused_structure_options(base, a.chain_file, a.spring_scale);
   if (base.structure.kind != io::Case::Structure::Kind::Flexible &&
       std::find(plan.keys.begin(), plan.keys.end(), "spring_scale") != plan.keys.end())
@@ -98,6 +101,7 @@ void sweep_command(const SweepArgs& a) {
   sweep::SweepOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;
+  options.wing_file = a.wing_file;
   options.spring_scale = a.spring_scale;
   options.threads = a.jobs > 0 ? a.jobs : requested_threads();  // 0: the runner's default
   options.vtk_every = a.vtk_every;
@@ -154,6 +158,9 @@ void add_sweep_command(CLI::App& app) {
                   "CSV table, one case per row; the header names the keys (instead of --vary)");
   cmd->add_option("-o,--output", args->output_dir, "output folder")->required()->check(non_empty_option());
   cmd->add_option("--chain", args->chain_file, "chain file for every case (as flapsim run --chain)")->check(non_empty_option());
+  cmd->add_option("--wing", args->wing_file,
+                  "wing file every case flies instead of the case's 'wing' (as flapsim run --wing)")
+      ->check(non_empty_option());
   cmd->add_option(
          "-j,--jobs", args->jobs,
          "cases run at the same time per process/rank (default: --threads if given, else the cores, shared by the ranks on a machine)")

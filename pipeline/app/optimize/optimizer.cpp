@@ -121,7 +121,7 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
   sweep::MpiWorld world;
   report.root = world.rank() == 0;
   report.ranks = world.size();
-  const sweep::SweepInputs inputs{case_file, options.chain_file, options.spring_scale};
+  const sweep::SweepInputs inputs{case_file, options.chain_file, options.spring_scale, options.wing_file};
   EvaluatorOptions eo;
   eo.runs_dir = options.output_dir / "runs";
   eo.vtk_every = options.vtk_every;

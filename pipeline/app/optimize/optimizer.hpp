@@ -35,6 +35,7 @@ namespace flapsim::optimize {
 struct OptimizeOptions {
   std::filesystem::path output_dir;
   std::string chain_file;          ///< for every run (flapsim run --chain)
+  std::string wing_file;           ///< flown by every run instead of the case's 'wing' (flapsim run --wing)
   double spring_scale = 1.0;       ///< for every run (a varied spring_scale replaces it)
   int vtk_every = 0;               ///< ParaView series of each run (0: none)
   bool force = false;              ///< run every point, also those an earlier run evaluated

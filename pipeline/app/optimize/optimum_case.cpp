@@ -64,6 +64,11 @@ std::string text_of(const toml::table& t) {
   return s.str();
 }
 
+// The wing file the points fly: --wing's, else the case's.
+std::string flown_wing(const sweep::SweepInputs& inputs) {
+  return inputs.wing_file.empty() ? io::load_case_file(inputs.case_file).wing_file : inputs.wing_file;
+}
+
 }  // namespace
 
 std::optional<double> value_in_inputs(const sweep::SweepInputs& inputs, const std::string& key) {
@@ -71,7 +76,7 @@ std::optional<double> value_in_inputs(const sweep::SweepInputs& inputs, const st
   std::string file = inputs.case_file;
   std::string dotted = key;
   if (sweep::key_target(key) == sweep::KeyTarget::wing_file) {
-    file = io::load_case_file(inputs.case_file).wing_file;
+    file = flown_wing(inputs);
     dotted = key.substr(kWingPrefix.size());
     if (file.empty()) return std::nullopt;
   }
@@ -101,6 +106,7 @@ WrittenCase write_case_at(const sweep::SweepInputs& inputs, const sweep::CasePoi
   }
   move_path(c, "wing", case_folder, dir);
   move_path(c, "chain", case_folder, dir);
+  if (!inputs.wing_file.empty()) c.insert_or_assign("wing", from_dir(inputs.wing_file, dir));
   if (!inputs.chain_file.empty()) c.insert_or_assign("chain", from_dir(inputs.chain_file, dir));
   std::string head;
   std::string comment;
@@ -109,7 +115,7 @@ WrittenCase write_case_at(const sweep::SweepInputs& inputs, const sweep::CasePoi
     comment += "# Run with --spring-scale " + io::format_number(out.spring_scale) +
                " (the factor on every joint spring has no case key).\n";
   if (wing_varied) {
-    const std::string wing_path = io::load_case_file(inputs.case_file).wing_file;
+    const std::string wing_path = flown_wing(inputs);
     toml::table w = parse(wing_path);
     for (const sweep::Assignment& a : point)
       if (sweep::key_target(a.key) == sweep::KeyTarget::wing_file)

@@ -12,6 +12,7 @@
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/watched_setup.hpp"
+#include "pipeline/app/wing_override.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/input_hash.hpp"
 #include "wings/loader/input_error.hpp"
@@ -157,6 +158,7 @@ ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point, con
   ResolvedCase r;
   r.spring_scale = inputs.spring_scale;
   std::vector<std::pair<std::string, std::string>> case_overrides;
+  if (!inputs.wing_file.empty()) case_overrides.push_back(app::wing_file_override(inputs.wing_file));
   for (const Assignment& a : point) {
     switch (key_target(a.key)) {
       case KeyTarget::case_file: case_overrides.emplace_back(a.key, value_text(a)); break;

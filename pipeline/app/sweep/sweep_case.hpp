@@ -31,6 +31,7 @@ struct SweepInputs {
   std::string case_file;
   std::string chain_file;     ///< flapsim sweep --chain ("" = the case's)
   double spring_scale = 1.0;  ///< flapsim sweep --spring-scale (a varied spring_scale replaces it)
+  std::string wing_file;      ///< flapsim sweep --wing ("" = the case's 'wing')
 };
 
 struct ResolvedCase {

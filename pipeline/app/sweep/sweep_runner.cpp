@@ -101,7 +101,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
   report.root = world.rank() == 0;
   report.ranks = world.size();
   const std::size_t n = plan.points.size();
-  const SweepInputs inputs{case_file, options.chain_file, options.spring_scale};
+  const SweepInputs inputs{case_file, options.chain_file, options.spring_scale, options.wing_file};
   const std::string host = host_name();
 
   // 1. Rank 0 resolves and checks every case, and finds those an earlier run completed.

@@ -32,6 +32,7 @@ namespace flapsim::sweep {
 struct SweepOptions {
   std::filesystem::path output_dir;
   std::string chain_file;        ///< passed to every case (flapsim run --chain)
+  std::string wing_file;         ///< flown by every case instead of the case's 'wing' (flapsim run --wing)
   double spring_scale = 1.0;     ///< passed to every case (flapsim run --spring-scale)
   int threads = 0;               ///< per rank; 0 = the machine's cores / the ranks on it
   int vtk_every = 0;             ///< VTK series per case (0 = none, the default for sweeps)
