@@ -10,6 +10,7 @@
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
+#include "rigid_wingbeat_case.hpp"
 
 namespace {
 
@@ -17,17 +18,8 @@ namespace fs = std::filesystem;
 using flapsim::test::json_number;
 using flapsim::test::read_text;
 using flapsim::test::run_flapsim;
-
-constexpr const char* kMembrane =
-    "[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"
-    "[membrane]\nthickness = 0.01\nmaterial = \"film\"\n";
-
-void write_case(const fs::path& file, const std::string& wing) {
-  std::ofstream(file) << "name = \"drawn\"\nwing = \"" << wing
-                      << "\"\n[kinematics]\nfrequency_hz = 25\nsweep = { cos_deg = [60.0] }\n"
-                         "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n[structure]\nkind = \"rigid\"\n"
-                         "[numerics]\nsteps_per_cycle = 20\ncycles = 1\n";
-}
+using flapsim::test::write_film_wing;
+using flapsim::test::write_rigid_wingbeat_case;
 
 // The trapezoid of wings.WingFromDrawing.* (tip right, leading edge up; outline (0, 0), (5, 50),
 // (−10, 50), (−15, 0) mm by hand) flapped rigidly for a wingbeat: the same mean lift as the
@@ -37,15 +29,10 @@ TEST(WingFromDrawingRun, ADrawnWingFliesAsTheSameWingWrittenAsPoints) {
   const flapsim::test::ScratchDir dir("drawn_wing_run");
   std::ofstream(dir / "w.svg") << "<svg xmlns=\"http://www.w3.org/2000/svg\">\n"
                                   "<polygon id=\"outline\" points=\"10,20 110,10 110,40 10,50\"/>\n</svg>\n";
-  std::ofstream(dir / "drawn.toml")
-      << "length_unit = \"mm\"\n[planform]\noutline_file = \"w.svg\"\nspan = 50.0\n"
-         "clamp_y = 0.5\n"
-      << kMembrane;
-  std::ofstream(dir / "hand.toml") << "length_unit = \"mm\"\n[planform]\n"
-                                      "outline = [[0, 0], [5, 50], [-10, 50], [-15, 0]]\nclamp_y = 0.5\n"
-                                   << kMembrane;
-  write_case(dir / "drawn_case.toml", "drawn.toml");
-  write_case(dir / "hand_case.toml", "hand.toml");
+  write_film_wing(dir / "drawn.toml", "outline_file = \"w.svg\"\nspan = 50.0");
+  write_film_wing(dir / "hand.toml", "outline = [[0, 0], [5, 50], [-10, 50], [-15, 0]]");
+  write_rigid_wingbeat_case(dir / "drawn_case.toml", "drawn", "drawn.toml");
+  write_rigid_wingbeat_case(dir / "hand_case.toml", "drawn", "hand.toml");
   ASSERT_EQ(run_flapsim("run " + (dir / "drawn_case.toml").string() + " -o " + (dir / "o1").string()), 0);
   ASSERT_EQ(run_flapsim("run " + (dir / "hand_case.toml").string() + " -o " + (dir / "o2").string()), 0);
   const double drawn = json_number(read_text(dir / "o1" / "summary.json"), "mean_lift_N");

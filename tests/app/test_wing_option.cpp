@@ -6,11 +6,11 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
+#include "rigid_wingbeat_case.hpp"
 
 namespace {
 
@@ -19,32 +19,21 @@ using flapsim::test::json_number;
 using flapsim::test::read_text;
 using flapsim::test::run_flapsim;
 using flapsim::test::run_flapsim_capturing_stderr;
+using flapsim::test::write_film_wing;
+using flapsim::test::write_rigid_wingbeat_case;
 
-constexpr const char* kOptionFilm =
-    "[materials.film]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.3\ndensity = 1400.0\n"
-    "[membrane]\nthickness = 0.01\nmaterial = \"film\"\n";
-
-void write_option_wing(const fs::path& file, const std::string& outline) {
-  std::ofstream(file) << "length_unit = \"mm\"\n[planform]\noutline = " << outline << "\nclamp_y = 0.5\n"
-                      << kOptionFilm;
-}
-
-void write_option_case(const fs::path& file, const std::string& wing) {
-  std::ofstream(file) << "name = \"beat\"\nwing = \"" << wing
-                      << "\"\n[kinematics]\nfrequency_hz = 25\nsweep = { cos_deg = [60.0] }\n"
-                         "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n[structure]\nkind = \"rigid\"\n"
-                         "[numerics]\nsteps_per_cycle = 20\ncycles = 1\n";
-}
+constexpr const char* kRectangle = "outline = [[0, 0], [0, 50], [-15, 50], [-15, 0]]";  // mm
+constexpr const char* kTrapezoid = "outline = [[0, 0], [5, 50], [-10, 50], [-15, 0]]";
 
 // A rigid wingbeat of a trapezoid flown by a case written for a rectangle: the mean lift of
 // the case written with the trapezoid, to the last bit, and not the rectangle's.
 TEST(WingOption, ACaseFlownWithAnotherWingIsThatCaseWrittenWithIt) {
   const flapsim::test::ScratchDir dir("wing_option_run");
   fs::create_directories(dir / "wings");
-  write_option_wing(dir / "wings" / "rectangle.toml", "[[0, 0], [0, 50], [-15, 50], [-15, 0]]");
-  write_option_wing(dir / "wings" / "trapezoid.toml", "[[0, 0], [5, 50], [-10, 50], [-15, 0]]");
-  write_option_case(dir / "rectangle_case.toml", "wings/rectangle.toml");
-  write_option_case(dir / "trapezoid_case.toml", "wings/trapezoid.toml");
+  write_film_wing(dir / "wings" / "rectangle.toml", kRectangle);
+  write_film_wing(dir / "wings" / "trapezoid.toml", kTrapezoid);
+  write_rigid_wingbeat_case(dir / "rectangle_case.toml", "beat", "wings/rectangle.toml");
+  write_rigid_wingbeat_case(dir / "trapezoid_case.toml", "beat", "wings/trapezoid.toml");
   ASSERT_EQ(run_flapsim("run " + (dir / "rectangle_case.toml").string() + " --wing " +
                         (dir / "wings" / "trapezoid.toml").string() + " -o " + (dir / "o1").string()),
             0);
@@ -63,9 +52,9 @@ TEST(WingOption, ACaseFlownWithAnotherWingIsThatCaseWrittenWithIt) {
 // Without -o the run goes to out/<case name>_<wing file's name>, beside the case's own out/<case name>.
 TEST(WingOption, TheDefaultFolderNamesTheCaseAndTheWing) {
   const flapsim::test::ScratchDir dir("wing_option_folder");
-  write_option_wing(dir / "my_wing.toml", "[[0, 0], [5, 50], [-10, 50], [-15, 0]]");
-  write_option_wing(dir / "case_wing.toml", "[[0, 0], [0, 50], [-15, 50], [-15, 0]]");
-  write_option_case(dir / "beat.toml", "case_wing.toml");
+  write_film_wing(dir / "my_wing.toml", kTrapezoid);
+  write_film_wing(dir / "case_wing.toml", kRectangle);
+  write_rigid_wingbeat_case(dir / "beat.toml", "beat", "case_wing.toml");
   ASSERT_EQ(flapsim::test::run_flapsim_in_shell("cd '" + dir.path().string() + "' && exec",
                                                 "run beat.toml --wing my_wing.toml -q"),
             0);
@@ -77,7 +66,7 @@ TEST(WingOption, TheDefaultFolderNamesTheCaseAndTheWing) {
 // --chain with it. A missing wing file names --wing; --wing of a wing file is a usage error.
 TEST(WingOption, WhatCannotWorkIsRefusedNamingTheKey) {
   const flapsim::test::ScratchDir dir("wing_option_refused");
-  write_option_wing(dir / "w.toml", "[[0, 0], [5, 50], [-10, 50], [-15, 0]]");
+  write_film_wing(dir / "w.toml", kTrapezoid);
   const std::string chain_case = std::string(FLAPSIM_SOURCE_DIR) + "/cases/vacuum_flapping.toml";
   const auto chained =
       run_flapsim_capturing_stderr(dir.path(), "run " + chain_case + " --wing " + (dir / "w.toml").string() +
@@ -100,10 +89,10 @@ TEST(WingOption, WhatCannotWorkIsRefusedNamingTheKey) {
 // with it); optimize --wing: its optimum.toml names that wing, so that `run` flies it again.
 TEST(WingOption, SweepsAndOptimisationsFlyTheWingInEveryCase) {
   const flapsim::test::ScratchDir dir("wing_option_sweep");
-  write_option_wing(dir / "rectangle.toml", "[[0, 0], [0, 50], [-15, 50], [-15, 0]]");
-  write_option_wing(dir / "trapezoid.toml", "[[0, 0], [5, 50], [-10, 50], [-15, 0]]");
-  write_option_case(dir / "rectangle_case.toml", "rectangle.toml");
-  write_option_case(dir / "trapezoid_case.toml", "trapezoid.toml");
+  write_film_wing(dir / "rectangle.toml", kRectangle);
+  write_film_wing(dir / "trapezoid.toml", kTrapezoid);
+  write_rigid_wingbeat_case(dir / "rectangle_case.toml", "beat", "rectangle.toml");
+  write_rigid_wingbeat_case(dir / "trapezoid_case.toml", "beat", "trapezoid.toml");
   const std::string trapezoid = (dir / "trapezoid.toml").string();
   ASSERT_EQ(run_flapsim("sweep " + (dir / "rectangle_case.toml").string() + " --wing " + trapezoid +
                         " --vary kinematics.rotation_phase=0 -q -o " + (dir / "sweep").string()),
