@@ -1,6 +1,7 @@
 #include "pipeline/app/run_recorder.hpp"
 
 #include <exception>
+#include <filesystem>
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +25,17 @@
 namespace flapsim::app {
 
 namespace {
+
+// A path as a user names it: one under the current folder relative to it (run --wing's
+// wing reaches the case as an absolute path), any other as it is.
+std::string as_named(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path here = std::filesystem::current_path(ec);
+  const std::filesystem::path p(path);
+  if (ec || !p.is_absolute()) return path;
+  const std::filesystem::path relative = p.lexically_relative(here);
+  return relative.empty() || *relative.begin() == ".." ? path : relative.generic_string();
+}
 
 const std::filesystem::path& existing_directory(const std::filesystem::path& dir) {
   io::ensure_directory(dir);
@@ -93,7 +105,7 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
   }
   RunResults& r = results_;
   r.set("case", c.name);
-  if (!c.wing_file.empty()) r.set("wing_file", c.wing_file);
+  if (!c.wing_file.empty()) r.set("wing_file", as_named(c.wing_file));
   r.set("structure", setup.structure_source);
   r.set("air", model.air);
   r.set("frequency_hz", c.kinematics.frequency);
