@@ -328,6 +328,16 @@ TEST(WingFromDrawing, ADrawingInAnotherFormatIsNamedWithWhatToDo) {
               std::string::npos)
         << e.message();
   }
+  // The drawing or an outline CSV given where the wing file belongs (`flapsim mesh w.svg`).
+  std::ofstream(dir / "d.svg") << svg(kShapes);
+  std::ofstream(dir / "o.csv") << "x,y\n0,0\n";
+  for (const char* name : {"d.svg", "o.csv"}) {
+    const auto e = expect_input_error([&] { w::load_wing_file((dir / name).string()); });
+    EXPECT_NE(e.message().find("TOML syntax error"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("is not a wing file: a wing file (TOML, docs/wing_file.md) names it"),
+              std::string::npos)
+        << e.message();
+  }
   // A CSV under another extension is read as before (here .txt).
   std::ofstream(dir / "o.txt") << "x,y\n0,0\n0.1,1\n-0.2,1\n-0.3,0\n";
   EXPECT_EQ(

@@ -148,7 +148,20 @@ TomlTable parse_toml_file(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path, 0, "", "cannot read the file");
-  return parse_toml_string(text.str(), path);
+  try {
+    return parse_toml_string(text.str(), path);
+  } catch (const InputError& e) {
+    // An outline or a drawing given where a wing file belongs (`flapsim mesh wing.svg`,
+    // `run --wing outline.csv`): its first line is no TOML.
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".svg" && ext != ".csv") throw;
+    throw InputError(
+        e.file(), e.line(), e.key(),
+        e.message() + "; an " + (ext == ".svg" ? "SVG drawing" : "outline CSV") +
+            " is not a wing file: a wing file (TOML, docs/wing_file.md) names it with [planform] "
+            "outline_file and gives its membrane, veins and materials");
+  }
 }
 
 // --- location and errors ------------------------------------------------------------------
