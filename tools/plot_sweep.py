@@ -6,8 +6,8 @@ table has a power column — with one line per combination of the other varied k
   sweep_<key>.png, sweep_<key>.pdf   one figure per varied key (PNG 200 dpi, PDF vector)
 
 The varied keys are the leading columns of sweep.csv: case keys and wing keys are dotted
-(kinematics.rotation_phase, wing.membrane.thickness), and spring_scale; result columns
-are not. Cases whose status is not "ok" are left out (and counted on the figure).
+(kinematics.rotation_phase, wing.membrane.thickness), spring_scale and wing (the wing
+files, named on the axis by their file names); result columns are not. Cases whose status is not "ok" are left out (and counted on the figure).
 
 Usage: plot_sweep.py SWEEP.csv [OUTPUT_DIR]   (default OUTPUT_DIR: plots/ next to SWEEP.csv;
 Debian's python3-matplotlib)
@@ -30,7 +30,7 @@ from si_prefix import si_scale  # noqa: E402
 def varied_keys(header):
     keys = []
     for name in header:
-        if "." in name or name == "spring_scale":
+        if "." in name or name in ("spring_scale", "wing"):
             keys.append(name)
         else:
             break
@@ -68,7 +68,13 @@ AXES = {
     "kinematics.rotation_phase": ("rotation phase δψ [% of the period]", 100.0),
     "kinematics.frequency_hz": ("wingbeat frequency [Hz]", 1.0),
     "spring_scale": ("joint spring factor [-]", 1.0),
+    "wing": ("wing", 1.0),
 }
+
+
+def tick(key, value):
+    """A value as the axis names it: a wing file by its name (wings/hawkmoth.toml: hawkmoth)."""
+    return os.path.splitext(os.path.basename(value))[0] if key == "wing" else value
 
 
 def axis(key):
@@ -111,14 +117,14 @@ def plot_key(rows, key, others, power, out_path, failed, title_text=""):
                 members = sorted(members, key=lambda r: number(r[key]))
                 x = [number(r[key]) * axis(key)[1] for r in members]
             y = [number(r[column]) * scale for r in members]
-            name = ", ".join("%s = %s" % (label(o), v) for o, v in zip(others, group))
+            name = ", ".join("%s = %s" % (label(o), tick(o, v)) for o, v in zip(others, group))
             ax.plot(x, y, "o-", ms=4, label=name or None)
         ax.set_ylabel(title)
         ax.grid(True, alpha=0.3)
         if others and len(groups) <= 12:
             ax.legend(fontsize=7)
     if position:
-        axes[-1, 0].set_xticks(list(position.values()), list(position.keys()))
+        axes[-1, 0].set_xticks(list(position.values()), [tick(key, v) for v in position.keys()])
     axes[-1, 0].set_xlabel(axis(key)[0])
     heading = [t for t in (title_text, "%d case(s) not ok, left out" % failed if failed else "") if t]
     if heading:

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "common/run_flapsim.hpp"
@@ -111,4 +112,55 @@ TEST(WingOption, SweepsAndOptimisationsFlyTheWingInEveryCase) {
       0);
   EXPECT_NE(read_text(dir / "opt" / "optimum.toml").find("wing = '../trapezoid.toml'"), std::string::npos)
       << read_text(dir / "opt" / "optimum.toml");
+}
+
+// A sweep over wings: `--vary wing=a.toml,b.toml` (paths from the current folder, as --wing's)
+// or a case table's `wing` column flies each wing as its own case, named by its file in the
+// case's folder; each row is the run of the case written with that wing, bit for bit.
+TEST(WingOption, ASweepOverWingsFliesEachAsTheCaseWrittenWithIt) {
+  const flapsim::test::ScratchDir dir("wing_option_vary");
+  write_film_wing(dir / "rectangle.toml", kRectangle);
+  write_film_wing(dir / "trapezoid.toml", kTrapezoid);
+  write_rigid_wingbeat_case(dir / "rectangle_case.toml", "beat", "rectangle.toml");
+  write_rigid_wingbeat_case(dir / "trapezoid_case.toml", "beat", "trapezoid.toml");
+  const std::string cd = "cd '" + dir.path().string() + "' && exec";
+  ASSERT_EQ(flapsim::test::run_flapsim_in_shell(
+                cd, "sweep rectangle_case.toml --vary wing=trapezoid.toml,rectangle.toml -q -o grid"),
+            0);
+  std::ofstream(dir / "wings.csv") << "wing\ntrapezoid.toml\nrectangle.toml\n";
+  ASSERT_EQ(
+      flapsim::test::run_flapsim_in_shell(cd, "sweep rectangle_case.toml --cases wings.csv -q -o table"), 0);
+  for (const char* c : {"trapezoid", "rectangle"})
+    ASSERT_EQ(run_flapsim("run " + (dir / (std::string(c) + "_case.toml")).string() + " -q -o " +
+                          (dir / (std::string("run_") + c)).string()),
+              0);
+  const double trapezoid = json_number(read_text(dir / "run_trapezoid" / "summary.json"), "mean_lift_N");
+  const double rectangle = json_number(read_text(dir / "run_rectangle" / "summary.json"), "mean_lift_N");
+  for (const char* sweep : {"grid", "table"}) {
+    SCOPED_TRACE(sweep);
+    EXPECT_EQ(json_number(read_text(dir / sweep / "00_trapezoid" / "summary.json"), "mean_lift_N"),
+              trapezoid);
+    EXPECT_EQ(json_number(read_text(dir / sweep / "01_rectangle" / "summary.json"), "mean_lift_N"),
+              rectangle);
+    const std::string table = read_text(dir / sweep / "sweep.csv");
+    EXPECT_EQ(table.rfind("wing,", 0), 0u) << table;
+    EXPECT_NE(table.find("\ntrapezoid.toml,"), std::string::npos) << table;  // the path as given
+  }
+  EXPECT_NE(trapezoid, rectangle);
+  // A missing wing names the value; --wing and a varied wing at once are refused.
+  const auto missing =
+      run_flapsim_capturing_stderr(dir.path(), "sweep " + (dir / "rectangle_case.toml").string() +
+                                                   " --vary wing=nothere.toml -q -o " + (dir / "x").string());
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("wing file not found: nothere.toml (a path from the current folder"),
+            std::string::npos)
+      << missing.err;
+  const auto both = run_flapsim_capturing_stderr(
+      dir.path(), "sweep " + (dir / "rectangle_case.toml").string() + " --wing " +
+                      (dir / "trapezoid.toml").string() + " --vary wing=rectangle.toml -q -o " +
+                      (dir / "y").string());
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("give the wings one way"), std::string::npos) << both.err;
+  EXPECT_FALSE(fs::exists(dir / "x"));
+  EXPECT_FALSE(fs::exists(dir / "y"));
 }

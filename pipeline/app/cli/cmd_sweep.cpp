@@ -88,6 +88,9 @@ void sweep_command(const SweepArgs& a) {
     plan = sweep::grid_plan(variations);
   }
   check_chain_option(a.chain_file);
+  if (!a.wing_file.empty() && std::find(plan.keys.begin(), plan.keys.end(), "wing") != plan.keys.end())
+    throw InputError("", 0, "--wing",
+                     "the sweep varies 'wing' too: give the wings one way, --wing or the varied key");
   wings::TomlTable case_root = wings::parse_toml_file(a.case_file);
   apply_wing_option(case_root, a.wing_file, a.chain_file);
   const io::Case base = print_case_warnings(io::read_case(case_root));  // each case is checked again

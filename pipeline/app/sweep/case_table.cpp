@@ -84,7 +84,7 @@ CaseTable read_case_table(const std::string& path) {
       const bool quoted = cell.size() >= 2 && cell.front() == '"' && cell.back() == '"' &&
                           cell.find('"', 1) == cell.size() - 1;
       const std::string s = quoted ? cell.substr(1, cell.size() - 2) : cell;
-      if (is_word_value(s)) {  // a text or boolean key's value: shed, true
+      if (is_word_value(s) || (takes_paths(table.keys[i]) && !s.empty())) {  // shed, true; a wing file
         point.push_back(word_assignment(table.keys[i], s));
         continue;
       }

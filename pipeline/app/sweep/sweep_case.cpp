@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <new>
 #include <string>
 #include <string_view>
@@ -161,7 +162,16 @@ ResolvedCase resolve_case(const SweepInputs& inputs, const CasePoint& point, con
   if (!inputs.wing_file.empty()) case_overrides.push_back(app::wing_file_override(inputs.wing_file));
   for (const Assignment& a : point) {
     switch (key_target(a.key)) {
-      case KeyTarget::case_file: case_overrides.emplace_back(a.key, value_text(a)); break;
+      case KeyTarget::case_file:
+        // A wing file is a path from the current folder, as run --wing's.
+        if (std::error_code ec; takes_paths(a.key) && !std::filesystem::is_regular_file(a.word, ec)) {
+          const std::string why =
+              "wing file not found: " + a.word + " (a path from the current folder, as run --wing's)";
+          fail_column(inputs, point, source, a.key, false, InputError("", 0, a.key, why), why);
+        }
+        case_overrides.push_back(takes_paths(a.key) ? app::wing_file_override(a.word)
+                                                    : std::pair{a.key, value_text(a)});
+        break;
       case KeyTarget::wing_file:
         r.wing_overrides.emplace_back(a.key.substr(kWingPrefix.size()), value_text(a));
         break;

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 
 #include "pipeline/io/case_file.hpp"
@@ -67,6 +68,8 @@ bool is_word_value(const std::string& s) {
 
 Assignment word_assignment(const std::string& key, const std::string& word) { return {key, 0.0, word}; }
 
+bool takes_paths(const std::string& key) { return key == "wing"; }
+
 Variation parse_variation(const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
@@ -74,7 +77,13 @@ Variation parse_variation(const std::string& text) {
   Variation v;
   v.key = text.substr(0, eq);
   const std::string values = text.substr(eq + 1);
-  if (values.find(':') != std::string::npos) {
+  if (takes_paths(v.key)) {  // wing=wings/a.toml,wings/b.toml
+    for (const auto& s : split(values, ','))
+      if (s.empty())
+        bad(text, "an empty path in the list of wing files");
+      else
+        v.values.push_back(word_assignment(v.key, s));
+  } else if (values.find(':') != std::string::npos) {
     const auto p = split(values, ':');
     if (p.size() != 3) bad(text, "a range is start:step:stop");
     const double start = parse_number(text, p[0]), step = parse_number(text, p[1]),
@@ -134,7 +143,10 @@ std::string value_label(double value) {
 
 std::string value_text(double value) { return io::format_number(value); }
 
-std::string value_label(const Assignment& a) { return a.word.empty() ? value_label(a.value) : a.word; }
+std::string value_label(const Assignment& a) {
+  if (takes_paths(a.key)) return std::filesystem::path(a.word).stem().string();
+  return a.word.empty() ? value_label(a.value) : a.word;
+}
 
 std::string value_text(const Assignment& a) {
   if (a.word.empty()) return value_text(a.value);

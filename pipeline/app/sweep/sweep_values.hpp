@@ -9,7 +9,9 @@
 ///    `kinematics.frequency_hz`, `air.density`, `numerics.steps_per_cycle`, ...);
 ///  - `wing.` and a dotted key of the case's wing file (`wing.membrane.thickness`, in the
 ///    wing file's length unit; `wing.materials.vein.youngs_modulus`, ...);
-///  - `spring_scale`, the factor on every joint spring (flapsim run --spring-scale).
+///  - `spring_scale`, the factor on every joint spring (flapsim run --spring-scale);
+///  - `wing`, the wing file each case flies: a comma list of paths from the current folder
+///    (as flapsim run --wing), `wing=wings/a.toml,wings/b.toml`.
 /// Each value is written into the parsed file (case or wing) and the file is read and
 /// checked again, so every case of a sweep is checked as strictly as a file.
 
@@ -52,6 +54,10 @@ bool is_word_value(const std::string& s);
 /// \brief A case-table cell or --vary item that is a word (is_word_value) as an Assignment.
 Assignment word_assignment(const std::string& key, const std::string& word);
 
+/// \brief Whether \p key takes paths (the `wing` of each case) instead of numbers or words: its
+/// values are kept as written (Assignment::word), a path from the current folder.
+bool takes_paths(const std::string& key);
+
 /// The values of the varied keys that make one case (in the order of the keys).
 using CasePoint = std::vector<Assignment>;
 
@@ -81,7 +87,8 @@ std::string value_label(double value);
 /// \brief The value as TOML text that reads back as the same double ("0.05", "7", "1e+20").
 std::string value_text(double value);
 
-/// \brief The label of an assignment: its word, else value_label of its number.
+/// \brief The label of an assignment: its word (of a path, the file's name without its
+/// extension: wings/a.toml is "a"), else value_label of its number.
 std::string value_label(const Assignment& a);
 
 /// \brief The assignment as TOML text: a word as a string ("\"shed\""), `true` and `false` as
