@@ -161,6 +161,15 @@ TEST(WingOption, ASweepOverWingsFliesEachAsTheCaseWrittenWithIt) {
                       (dir / "y").string());
   EXPECT_EQ(both.status, 2);
   EXPECT_NE(both.err.find("give the wings one way"), std::string::npos) << both.err;
+  // A chain file is one wing's: a case with its own chain, or --chain, with varied wings.
+  const auto chained = run_flapsim_capturing_stderr(
+      dir.path(), "sweep " + std::string(FLAPSIM_SOURCE_DIR) + "/cases/vacuum_flapping.toml --vary wing=" +
+                      (dir / "rectangle.toml").string() + " -q -o " + (dir / "z").string());
+  EXPECT_EQ(chained.status, 2);
+  EXPECT_NE(chained.err.find("vacuum_flapping.toml:16: key 'chain': the sweep varies 'wing'"),
+            std::string::npos)
+      << chained.err;
   EXPECT_FALSE(fs::exists(dir / "x"));
   EXPECT_FALSE(fs::exists(dir / "y"));
+  EXPECT_FALSE(fs::exists(dir / "z"));
 }

@@ -88,10 +88,19 @@ void sweep_command(const SweepArgs& a) {
     plan = sweep::grid_plan(variations);
   }
   check_chain_option(a.chain_file);
-  if (!a.wing_file.empty() && std::find(plan.keys.begin(), plan.keys.end(), "wing") != plan.keys.end())
+  const bool wing_varied = std::find(plan.keys.begin(), plan.keys.end(), "wing") != plan.keys.end();
+  if (!a.wing_file.empty() && wing_varied)
     throw InputError("", 0, "--wing",
                      "the sweep varies 'wing' too: give the wings one way, --wing or the varied key");
   wings::TomlTable case_root = wings::parse_toml_file(a.case_file);
+  // A chain file is one wing's: with varied wings each case reduces its own.
+  const std::string chained_wings =
+      "the sweep varies 'wing', and a chain file is reduced from one wing: leave it out, and each case "
+      "reduces "
+      "its own wing as it runs";
+  if (wing_varied && !a.chain_file.empty()) throw InputError(a.chain_file, 0, "--chain", chained_wings);
+  if (wing_varied && case_root.has("chain"))
+    throw InputError(case_root.file(), case_root.line_of("chain"), "chain", chained_wings);
   apply_wing_option(case_root, a.wing_file, a.chain_file);
   const io::Case base = print_case_warnings(io::read_case(case_root));  // each case is checked again
   warn_unused_structure_options(base, a.chain_file, a.spring_scale);
