@@ -97,8 +97,12 @@ std::string DrawingFrame::direction_name(const Vec& d) {
 std::string DrawingFrame::describe(const std::string& length_unit, double metres_per_unit) const {
   char unit_scale[64];
   std::snprintf(unit_scale, sizeof unit_scale, "%.4g", scale / metres_per_unit);
+  const std::size_t hidden = drawing.hidden.size();
   return outline_source + ", tip " + direction_name(tip) + ", leading edge " + direction_name(leading_edge) +
-         ", pivot " + pivot_source + "; 1 drawing unit = " + unit_scale + " " + length_unit;
+         ", pivot " + pivot_source + "; 1 drawing unit = " + unit_scale + " " + length_unit +
+         (hidden == 0 ? std::string()
+                      : "; " + std::to_string(hidden) + (hidden == 1 ? " hidden shape" : " hidden shapes") +
+                            " (display:none) not read");
 }
 
 namespace {
