@@ -352,3 +352,34 @@ TEST(WingFromDrawing, ADrawingInAnotherFormatIsNamedWithWhatToDo) {
           .outline.size(),
       4u);
 }
+
+// A traced vein passing the outline's edge a little at either end (here 1 drawing unit,
+// 0.5 mm, 1 % of the 50 mm span) is cut at the edge, with a warning for each end; by hand
+// (the trapezoid's map above): the vein (9, 30)–(111, 25) crosses the root x = 10 at
+// t = 1/102 and the tip x = 110 at t = 101/102, so it runs from (x, y) = ((20 − (30 − 5/102))/2,
+// 0) to ((20 − (30 − 505/102))/2, 50) mm. Passing by 8 % of the span it is refused.
+TEST(WingFromDrawing, AVeinPassingTheEdgeALittleIsCutAtTheEdge) {
+  ScratchDir dir("drawing_vein_overshoot");
+  const std::string outline = "<polygon id=\"outline\" points=\"10,20 110,10 110,40 10,50\"/>\n";
+  const w::Wing wing =
+      read(dir, svg(outline + "<polyline id=\"R1\" points=\"9,30 111,25\"/>\n"), wing_toml(""));
+  ASSERT_EQ(wing.veins.size(), 1u);
+  const auto& p = wing.veins[0].points;
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_NEAR(p[0].x(), (20.0 - (30.0 - 5.0 / 102.0)) / 2.0 * 1e-3, 1e-12);
+  EXPECT_NEAR(p[0].y(), 0.0, 1e-12);
+  EXPECT_NEAR(p[1].x(), (20.0 - (30.0 - 505.0 / 102.0)) / 2.0 * 1e-3, 1e-12);
+  EXPECT_NEAR(p[1].y(), 50e-3, 1e-12);
+  ASSERT_EQ(wing.warnings.size(), 2u);
+  EXPECT_NE(
+      wing.warnings[0].message.find("root end passes the outline's edge by 0.5 mm (1 % of the span): cut"),
+      std::string::npos)
+      << wing.warnings[0].message;
+  EXPECT_EQ(wing.warnings[1].key, "veins[0].drawing_id");
+  const auto far = expect_input_error(
+      [&] { read(dir, svg(outline + "<polyline id=\"R1\" points=\"12,30 118,25\"/>\n"), wing_toml("")); });
+  EXPECT_NE(far.message().find("4 mm outside it"), std::string::npos) << far.message();
+  EXPECT_NE(far.message().find("a drawn vein's end may pass the edge by up to 2 % of the span (1 mm)"),
+            std::string::npos)
+      << far.message();
+}

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "wings/loader/drawing_frame.hpp"
+#include "wings/loader/drawn_vein_ends.hpp"
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/mesh_budget.hpp"
 #include "wings/loader/outline_csv.hpp"
@@ -460,7 +461,7 @@ constexpr const char* kSplineVeinHint =
     "draw straight edges with 'outline'";
 
 Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
-               const std::map<std::string, Material>& materials) {
+               const std::map<std::string, Material>& materials, std::vector<InputWarning>& warnings) {
   const Polygon& outline = planform.outline;
   v.expect_only({"name", "material", "points", "chord_points", "drawing_id", "subdivide", "shape",
                  "outer_diameter", "wall", "diameter", "width", "height"});
@@ -490,6 +491,14 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
   if (drawn) {
     if (v.has("subdivide")) v.fail("subdivide", "only applies to 'chord_points'");
     vein.points = drawing_vein_points(v, *planform.drawing);
+    const auto reach = cut_overshooting_ends(vein.points, outline, 1e-3 * span, kDrawnVeinOvershoot * span);
+    for (int end = 0; end < 2; ++end)
+      if (reach[end] > 0.0)
+        warn(warnings, v, "drawing_id",
+             "the drawn vein's " + std::string(end == 0 ? "root" : "outer") +
+                 " end passes the outline's edge by " + fmt(reach[end] / v.length_scale()) + " " +
+                 v.length_unit() + " (" + fmt(100.0 * reach[end] / span) +
+                 " % of the span): cut at the edge");
     source_row.assign(vein.points.size(), 0);
   } else if (abs_pts) {
     if (v.has("subdivide")) v.fail("subdivide", "only applies to 'chord_points'");
@@ -580,7 +589,12 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
                       fmt(q.y() / v.length_scale()) + ") " + v.length_unit() + ", " +
                       fmt(distance_to_boundary(outline, q) / v.length_scale()) + " " + v.length_unit() +
                       " outside it (tolerance " + fmt(tol / v.length_scale()) + " " + v.length_unit() + ")" +
-                      (planform.from_spline ? kSplineVeinHint : ""));
+                      (planform.from_spline ? kSplineVeinHint : "") +
+                      (drawn ? "; a drawn vein's end may pass the edge by up to " +
+                                   fmt(100.0 * kDrawnVeinOvershoot) + " % of the span (" +
+                                   fmt(kDrawnVeinOvershoot * span / v.length_scale()) + " " +
+                                   v.length_unit() + ") and is cut there"
+                             : ""));
       }
     }
   }
@@ -698,7 +712,7 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
 
   const auto veins = root.get_tables("veins");
   for (std::size_t i = 0; i < veins.size(); ++i)
-    wing.veins.push_back(read_vein(veins[i], i, planform, materials));
+    wing.veins.push_back(read_vein(veins[i], i, planform, materials, wing.warnings));
 
   // Mesh sizes default to R/50 (about 2500 membrane nodes on a hawkmoth-like planform).
   wing.mesh.element_size = wing.span / 50.0;
