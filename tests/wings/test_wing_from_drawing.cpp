@@ -383,3 +383,47 @@ TEST(WingFromDrawing, AVeinPassingTheEdgeALittleIsCutAtTheEdge) {
             std::string::npos)
       << far.message();
 }
+
+// A traced branch that stops a little short of the vein it starts from, or passes it, is
+// joined to it (else the branch's end floats in the membrane, held by the film alone). On the
+// trapezoid (wing frame by hand: x = (20 − y_page)/2, y = (x_page − 10)/2 mm), R1 runs from
+// (10, 30) to (110, 25): at x_page = 50 through y_page = 28, the wing's (−4, 20) mm. A branch
+// R2 from (50, 28.6) (0.3 mm short of R1) to (90, 38) starts on R1's nearest point; from
+// (50, 27.4) (0.3 mm past R1) it is cut where it crosses R1. Each joins within 1e-12 m
+// of R1's line, a warning says how far it was; a branch 2 mm off (4 % of the span) stays free.
+TEST(WingFromDrawing, ABranchStoppingShortOfAVeinOrPassingItIsJoinedToIt) {
+  ScratchDir dir("drawing_vein_junction");
+  const std::string shapes =
+      "<polygon id=\"outline\" points=\"10,20 110,10 110,40 10,50\"/>\n"
+      "<polyline id=\"R1\" points=\"10,30 110,25\"/>\n";
+  const std::string two_veins = wing_toml("") +
+                                "[[veins]]\nmaterial = \"film\"\nouter_diameter = 0.2\nwall = "
+                                "0.05\ndrawing_id = \"R2\"\n";
+  // R1 in the wing's frame: from (−5, 0) to (−2.5, 50) mm.
+  const auto off_r1 = [](const Vector2d& q) {
+    const Vector2d a(-5e-3, 0.0), b(-2.5e-3, 50e-3);
+    const Vector2d n = Vector2d(-(b - a).y(), (b - a).x()).normalized();
+    return std::abs((q - a).dot(n));
+  };
+  for (const char* start : {"50,28.6", "50,27.4", "50,32"}) {
+    SCOPED_TRACE(start);
+    const w::Wing wing = read(
+        dir, svg(shapes + "<polyline id=\"R2\" points=\"" + std::string(start) + " 90,38\"/>\n"), two_veins);
+    ASSERT_EQ(wing.veins.size(), 2u);
+    const Vector2d root = wing.veins[1].points.front();
+    if (std::string(start) == "50,32") {  // 2 mm off: a free end, as drawn
+      EXPECT_NEAR(root.x(), -6e-3, 1e-12);
+      EXPECT_TRUE(wing.warnings.empty());
+      continue;
+    }
+    EXPECT_LT(off_r1(root), 1e-12);
+    EXPECT_EQ(wing.veins[1].points.size(), 2u);
+    ASSERT_EQ(wing.warnings.size(), 1u);
+    EXPECT_EQ(wing.warnings[0].key, "veins[1].drawing_id");
+    const std::string expected = std::string(start) == "50,28.6"
+                                     ? "root end stops 0.29"  // 0.3 mm along y_page, 0.2996 mm across R1
+                                     // R2 meets R1 at 17.8°: 0.3 mm past it across is 0.985 mm along R2.
+                                     : "root end crosses vein 1 ('vein 1') and goes on 0.98";
+    EXPECT_NE(wing.warnings[0].message.find(expected), std::string::npos) << wing.warnings[0].message;
+  }
+}

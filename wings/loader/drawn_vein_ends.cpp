@@ -1,6 +1,7 @@
 #include "wings/loader/drawn_vein_ends.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace flapsim::wings {
 
@@ -46,7 +47,96 @@ double cut_last_end(std::vector<Vec>& points, const Polygon& outline, double tol
   return 0.0;  // wholly outside: refused later
 }
 
+// The nearest point of a polyline to q.
+Vec nearest_on_polyline(const std::vector<Vec>& line, const Vec& q) {
+  Vec best = line.front();
+  for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+    const Vec a = line[k], ab = line[k + 1] - a;
+    const double t = std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    if ((a + t * ab - q).norm() < (best - q).norm()) best = a + t * ab;
+  }
+  return best;
+}
+
+// The parameter s along a → b where it crosses c → d (0 ≤ s, u ≤ 1), if it does.
+std::optional<double> crossing_parameter(const Vec& a, const Vec& b, const Vec& c, const Vec& d) {
+  const Vec r = b - a, e = d - c;
+  const double denom = r.x() * e.y() - r.y() * e.x();
+  if (denom == 0.0) return std::nullopt;  // parallel
+  const Vec ac = c - a;
+  const double s = (ac.x() * e.y() - ac.y() * e.x()) / denom, u = (ac.x() * r.y() - ac.y() * r.x()) / denom;
+  if (s < 0.0 || s > 1.0 || u < 0.0 || u > 1.0) return std::nullopt;
+  return s;
+}
+
+// The join of the last end of \p vein with \p other, if within the limit: the cut where the
+// vein's last `limit` of length crosses it, else the nearest point of its line.
+struct EndJoin {
+  double distance;
+  bool crossed;
+  std::size_t keep;  // points kept before the end's new point
+  Vec point;
+};
+std::optional<EndJoin> join_last_end(const std::vector<Vec>& vein, const std::vector<Vec>& other,
+                                     double limit) {
+  double arc = 0.0;  // from the vein's end back to the segment's far point
+  for (std::size_t k = vein.size() - 1; k-- > 0 && arc <= limit;) {
+    const Vec a = vein[k], b = vein[k + 1];
+    std::optional<double> last;  // the crossing nearest b on this segment
+    for (std::size_t m = 0; m + 1 < other.size(); ++m)
+      if (const auto s = crossing_parameter(a, b, other[m], other[m + 1]); s && (!last || *s > *last))
+        last = s;
+    if (last) {
+      const double passed = arc + (1.0 - *last) * (b - a).norm();
+      if (passed > limit || *last == 0.0) return std::nullopt;
+      return EndJoin{passed, true, k + 1, a + *last * (b - a)};
+    }
+    arc += (b - a).norm();
+  }
+  const Vec q = nearest_on_polyline(other, vein.back());
+  const double gap = (q - vein.back()).norm();
+  if (gap > limit) return std::nullopt;
+  return EndJoin{gap, false, vein.size() - 1, q};
+}
+
 }  // namespace
+
+std::vector<DrawnVeinJoin> join_drawn_vein_ends(std::vector<std::vector<Vec>>& veins,
+                                                const std::vector<bool>& drawn, const Polygon& outline,
+                                                double tolerance, double limit) {
+  std::vector<DrawnVeinJoin> joins;
+  for (std::size_t i = 0; i < veins.size(); ++i) {
+    if (!drawn[i]) continue;
+    for (int end = 0; end < 2; ++end) {
+      std::vector<Vec>& v = veins[i];
+      if (end == 0) std::reverse(v.begin(), v.end());
+      std::optional<EndJoin> best;
+      std::size_t best_other = 0;
+      if (distance_to_boundary(outline, v.back()) > tolerance)
+        for (std::size_t j = 0; j < veins.size(); ++j) {
+          if (j == i) continue;
+          const auto join = join_last_end(v, veins[j], limit);
+          if (join && join->distance > tolerance && (!best || join->distance < best->distance)) {
+            best = join;
+            best_other = j;
+          }
+        }
+      if (best) {
+        std::vector<Vec> joined(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(best->keep));
+        if ((best->point - joined.back()).norm() > tolerance)
+          joined.push_back(best->point);
+        else
+          joined.back() = best->point;  // its last point moved onto the other vein
+        if (joined.size() >= 2) {
+          v = std::move(joined);
+          joins.push_back({i, best_other, end, best->distance, best->crossed});
+        }
+      }
+      if (end == 0) std::reverse(v.begin(), v.end());
+    }
+  }
+  return joins;
+}
 
 std::array<double, 2> cut_overshooting_ends(std::vector<Vec>& points, const Polygon& outline,
                                             double tolerance, double limit) {

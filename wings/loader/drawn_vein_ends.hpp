@@ -24,4 +24,22 @@ inline constexpr double kDrawnVeinOvershoot = 0.02;
 std::array<double, 2> cut_overshooting_ends(std::vector<Eigen::Vector2d>& points, const Polygon& outline,
                                             double tolerance, double limit);
 
+/// An end of a drawn vein joined to another vein (join_drawn_vein_ends).
+struct DrawnVeinJoin {
+  std::size_t vein = 0, other = 0;  ///< indices into the veins
+  int end = 0;                      ///< 0 its root end (its first point), 1 its outer end
+  double distance = 0.0;            ///< how far the end was from the other vein, or went on past it [m]
+  bool crossed = false;             ///< the end passed the other vein (cut where it crosses)
+};
+
+/// Joins the ends of the drawn veins (\p drawn[i]) that stop short of another vein or pass it
+/// by at most \p limit, as a hand-traced branch does: an end passing another vein within
+/// \p limit of arc length is cut where it crosses it, else an end within \p limit of another
+/// vein's line (and farther than \p tolerance, which the mesher closes itself) is moved onto
+/// its nearest point. An end on the outline's edge (within \p tolerance) stays. Veins in
+/// order, each end to the nearest such vein; \returns what was joined.
+std::vector<DrawnVeinJoin> join_drawn_vein_ends(std::vector<std::vector<Eigen::Vector2d>>& veins,
+                                                const std::vector<bool>& drawn, const Polygon& outline,
+                                                double tolerance, double limit);
+
 }  // namespace flapsim::wings

@@ -460,6 +460,29 @@ constexpr const char* kSplineVeinHint =
     "(beside a straight run of them next to a corner it swings inside): move the vein inside, or "
     "draw straight edges with 'outline'";
 
+// A drawn vein's end a little short of another vein, or past it, joined to it
+// (drawn_vein_ends.hpp), with a warning for each.
+void join_drawn_veins(Wing& wing, const std::vector<TomlTable>& tables) {
+  std::vector<std::vector<Eigen::Vector2d>> lines;
+  std::vector<bool> drawn;
+  for (std::size_t i = 0; i < wing.veins.size(); ++i) {
+    lines.push_back(wing.veins[i].points);
+    drawn.push_back(tables[i].has("drawing_id"));
+  }
+  const auto joins =
+      join_drawn_vein_ends(lines, drawn, wing.outline, 1e-3 * wing.span, kDrawnVeinOvershoot * wing.span);
+  for (const DrawnVeinJoin& j : joins) {
+    const TomlTable& t = tables[j.vein];
+    wing.veins[j.vein].points = lines[j.vein];
+    const std::string other = "vein " + std::to_string(j.other + 1) + " ('" + wing.veins[j.other].name + "')";
+    const std::string amount = fmt(j.distance / t.length_scale()) + " " + t.length_unit();
+    warn(wing.warnings, t, "drawing_id",
+         "the drawn vein's " + std::string(j.end == 0 ? "root" : "outer") + " end " +
+             (j.crossed ? "crosses " + other + " and goes on " + amount + ": cut where it crosses"
+                        : "stops " + amount + " short of " + other + ": joined to it"));
+  }
+}
+
 Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
                const std::map<std::string, Material>& materials, std::vector<InputWarning>& warnings) {
   const Polygon& outline = planform.outline;
@@ -713,6 +736,7 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
   const auto veins = root.get_tables("veins");
   for (std::size_t i = 0; i < veins.size(); ++i)
     wing.veins.push_back(read_vein(veins[i], i, planform, materials, wing.warnings));
+  if (planform.drawing) join_drawn_veins(wing, veins);
 
   // Mesh sizes default to R/50 (about 2500 membrane nodes on a hawkmoth-like planform).
   wing.mesh.element_size = wing.span / 50.0;
