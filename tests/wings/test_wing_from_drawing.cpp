@@ -225,6 +225,15 @@ TEST(WingFromDrawing, MistakesAreNamed) {
   EXPECT_NE(std::string(message(svg(kShapes), wing_toml("", "drawing_id = \"R2\"")))
                 .find("no shape with the id or label 'R2'"),
             std::string::npos);
+  // An outline or a pivot without points (found by fuzzing the wing's drawing: `points=""`
+  // read the first point of an empty outline).
+  EXPECT_NE(std::string(message(svg("<polygon id=\"outline\" points=\"\"/>\n"),
+                                wing_toml("", "points = [[0, 1], [0, 2]]")))
+                .find("has 0 distinct points: a closed outline needs at least 3"),
+            std::string::npos);
+  EXPECT_NE(std::string(message(svg(kShapes + "<polygon id=\"pivot\" points=\"\"/>\n"), wing_toml("")))
+                .find("the pivot, the polygon 'pivot' (line 4) of"),
+            std::string::npos);
   // A branching vein drawn as one path, and a vein traced as an area: what to draw instead.
   const std::string outline = "<polygon id=\"outline\" points=\"10,20 110,10 110,40 10,50\"/>\n";
   EXPECT_NE(

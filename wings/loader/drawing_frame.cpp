@@ -162,6 +162,10 @@ DrawingOutline read_drawing_outline(const TomlTable& p, const std::string& svg_p
                (shape.subpaths != 1 ? "it has " + std::to_string(shape.subpaths) +
                                           " subpaths (Inkscape: Path > Break Apart, and keep the outline's)"
                                     : "it is open (close it: a path ending with Z, or a polygon)"));
+  if (shape.points.size() < 3)
+    p.fail(key, "the outline, " + shape.describe() + " of " + svg_path + ", has " +
+                    std::to_string(shape.points.size()) +
+                    " distinct points: a closed outline needs at least 3");
   out.line = shape.line;
 
   static constexpr std::array<std::string_view, 4> kDirections{"right", "left", "up", "down"};
@@ -177,6 +181,9 @@ DrawingOutline read_drawing_outline(const TomlTable& p, const std::string& svg_p
   const auto pivots = find_svg_shapes(f.drawing, "pivot");
   if (pivots.size() > 1)
     p.fail("outline_file", "several shapes of " + svg_path + " are 'pivot': " + list_shapes(pivots));
+  if (pivots.size() == 1 && pivots.front()->points.empty())
+    p.fail("outline_file",
+           "the pivot, " + pivots.front()->describe() + " of " + svg_path + ", has no points");
   if (pivots.size() == 1) {
     // The centre of its bounding box: a circle's centre, to the last bit where the centre
     // and radius are (the mean of its points differs by round-off).
