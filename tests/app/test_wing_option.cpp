@@ -26,15 +26,23 @@ using flapsim::test::write_rigid_wingbeat_case;
 constexpr const char* kRectangle = "outline = [[0, 0], [0, 50], [-15, 50], [-15, 0]]";  // mm
 constexpr const char* kTrapezoid = "outline = [[0, 0], [5, 50], [-10, 50], [-15, 0]]";
 
+// DIR/FOLDER/rectangle.toml and trapezoid.toml, and DIR/rectangle_case.toml and
+// trapezoid_case.toml flapping each for a rigid wingbeat.
+void write_two_wings_and_their_cases(const fs::path& dir, const std::string& folder = "") {
+  const fs::path wings = folder.empty() ? dir : dir / folder;
+  fs::create_directories(wings);
+  write_film_wing(wings / "rectangle.toml", kRectangle);
+  write_film_wing(wings / "trapezoid.toml", kTrapezoid);
+  const std::string prefix = folder.empty() ? "" : folder + "/";
+  write_rigid_wingbeat_case(dir / "rectangle_case.toml", "beat", prefix + "rectangle.toml");
+  write_rigid_wingbeat_case(dir / "trapezoid_case.toml", "beat", prefix + "trapezoid.toml");
+}
+
 // A rigid wingbeat of a trapezoid flown by a case written for a rectangle: the mean lift of
 // the case written with the trapezoid, to the last bit, and not the rectangle's.
 TEST(WingOption, ACaseFlownWithAnotherWingIsThatCaseWrittenWithIt) {
   const flapsim::test::ScratchDir dir("wing_option_run");
-  fs::create_directories(dir / "wings");
-  write_film_wing(dir / "wings" / "rectangle.toml", kRectangle);
-  write_film_wing(dir / "wings" / "trapezoid.toml", kTrapezoid);
-  write_rigid_wingbeat_case(dir / "rectangle_case.toml", "beat", "wings/rectangle.toml");
-  write_rigid_wingbeat_case(dir / "trapezoid_case.toml", "beat", "wings/trapezoid.toml");
+  write_two_wings_and_their_cases(dir.path(), "wings");
   ASSERT_EQ(run_flapsim("run " + (dir / "rectangle_case.toml").string() + " --wing " +
                         (dir / "wings" / "trapezoid.toml").string() + " -o " + (dir / "o1").string()),
             0);
@@ -84,16 +92,11 @@ TEST(WingOption, WhatCannotWorkIsRefusedNamingTheKey) {
   EXPECT_EQ(run_flapsim("check " + (dir / "w.toml").string() + " --wing " + (dir / "w.toml").string()), 1);
 }
 
-}  // namespace
-
 // sweep --wing: every case flies the wing (the sweep's row is the run of the case written
 // with it); optimize --wing: its optimum.toml names that wing, so that `run` flies it again.
 TEST(WingOption, SweepsAndOptimisationsFlyTheWingInEveryCase) {
   const flapsim::test::ScratchDir dir("wing_option_sweep");
-  write_film_wing(dir / "rectangle.toml", kRectangle);
-  write_film_wing(dir / "trapezoid.toml", kTrapezoid);
-  write_rigid_wingbeat_case(dir / "rectangle_case.toml", "beat", "rectangle.toml");
-  write_rigid_wingbeat_case(dir / "trapezoid_case.toml", "beat", "trapezoid.toml");
+  write_two_wings_and_their_cases(dir.path());
   const std::string trapezoid = (dir / "trapezoid.toml").string();
   ASSERT_EQ(run_flapsim("sweep " + (dir / "rectangle_case.toml").string() + " --wing " + trapezoid +
                         " --vary kinematics.rotation_phase=0 -q -o " + (dir / "sweep").string()),
@@ -119,10 +122,7 @@ TEST(WingOption, SweepsAndOptimisationsFlyTheWingInEveryCase) {
 // case's folder; each row is the run of the case written with that wing, bit for bit.
 TEST(WingOption, ASweepOverWingsFliesEachAsTheCaseWrittenWithIt) {
   const flapsim::test::ScratchDir dir("wing_option_vary");
-  write_film_wing(dir / "rectangle.toml", kRectangle);
-  write_film_wing(dir / "trapezoid.toml", kTrapezoid);
-  write_rigid_wingbeat_case(dir / "rectangle_case.toml", "beat", "rectangle.toml");
-  write_rigid_wingbeat_case(dir / "trapezoid_case.toml", "beat", "trapezoid.toml");
+  write_two_wings_and_their_cases(dir.path());
   const std::string cd = "cd '" + dir.path().string() + "' && exec";
   ASSERT_EQ(flapsim::test::run_flapsim_in_shell(
                 cd, "sweep rectangle_case.toml --vary wing=trapezoid.toml,rectangle.toml -q -o grid"),
@@ -173,3 +173,5 @@ TEST(WingOption, ASweepOverWingsFliesEachAsTheCaseWrittenWithIt) {
   EXPECT_FALSE(fs::exists(dir / "y"));
   EXPECT_FALSE(fs::exists(dir / "z"));
 }
+
+}  // namespace
