@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "wings/loader/file_extension.hpp"
 #include "wings/loader/outline_csv.hpp"
 
 namespace flapsim::wings {
@@ -105,48 +106,35 @@ std::string DrawingFrame::describe(const std::string& length_unit, double metres
                             " (display:none) not read");
 }
 
-namespace {
-
-std::string lower_case_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-}  // namespace
-
 bool is_svg_path(const std::string& path) { return lower_case_extension(path) == ".svg"; }
 
 std::string unread_outline_format(const std::string& path) {
-  const std::string ext = lower_case_extension(path);
-  if (ext == ".svgz")
-    return "a compressed SVG drawing, which is not read: save it as plain SVG (Inkscape: File > Save As, "
-           "'Inkscape SVG' or 'Plain SVG')";
+  constexpr const char* kSaveAsSvg =
+      ", which is not read: outline_file takes a CSV of points or an SVG drawing; open it in a drawing "
+      "program "
+      "(Inkscape opens PDF, DXF, EPS and AI files) and save it as SVG";
   struct Format {
     const char* extensions;  // space-separated, each with a leading and a trailing space
     const char* name;
+    const char* what_to_do;
   };
-  static constexpr Format kDrawings[] = {
-      {" .pdf ", "a PDF"},
-      {" .dxf .dwg ", "a CAD drawing"},
-      {" .eps .ps .ai ", "a PostScript or Illustrator drawing"},
-      {" .emf .wmf .cdr .vsd .vsdx ", "a drawing"},
+  static constexpr Format kFormats[] = {
+      {" .svgz ", "a compressed SVG drawing",
+       ", which is not read: save it as plain SVG (Inkscape: File > Save As, 'Inkscape SVG' or 'Plain SVG')"},
+      {" .pdf ", "a PDF", kSaveAsSvg},
+      {" .dxf .dwg ", "a CAD drawing", kSaveAsSvg},
+      {" .eps .ps .ai ", "a PostScript or Illustrator drawing", kSaveAsSvg},
+      {" .emf .wmf .cdr .vsd .vsdx ", "a drawing", kSaveAsSvg},
+      {" .png .jpg .jpeg .tif .tiff .bmp .gif .webp ", "a picture",
+       ", which is not read: outline_file takes a CSV of points or an SVG drawing; trace the wing's outline "
+       "over the picture in a drawing program (Inkscape: Path > Trace Bitmap, or draw it with the Bézier "
+       "tool) "
+       "and save the drawing as SVG"},
   };
-  static constexpr Format kPictures[] = {
-      {" .png .jpg .jpeg .tif .tiff .bmp .gif .webp ", "a picture"},
-  };
-  const std::string word = " " + ext + " ";
-  for (const Format& f : kDrawings)
-    if (!ext.empty() && std::string(f.extensions).find(word) != std::string::npos)
-      return std::string(f.name) +
-             ", which is not read: outline_file takes a CSV of points or an SVG drawing; open it in a "
-             "drawing program (Inkscape opens PDF, DXF, EPS and AI files) and save it as SVG";
-  for (const Format& f : kPictures)
-    if (!ext.empty() && std::string(f.extensions).find(word) != std::string::npos)
-      return std::string(f.name) +
-             ", which is not read: outline_file takes a CSV of points or an SVG drawing; trace the wing's "
-             "outline over the picture in a drawing program (Inkscape: Path > Trace Bitmap, or draw it with "
-             "the Bézier tool) and save the drawing as SVG";
+  const std::string ext = lower_case_extension(path);
+  for (const Format& f : kFormats)
+    if (!ext.empty() && std::string(f.extensions).find(" " + ext + " ") != std::string::npos)
+      return std::string(f.name) + f.what_to_do;
   return "";
 }
 

@@ -47,17 +47,6 @@ double cut_last_end(std::vector<Vec>& points, const Polygon& outline, double tol
   return 0.0;  // wholly outside: refused later
 }
 
-// The nearest point of a polyline to q.
-Vec nearest_on_polyline(const std::vector<Vec>& line, const Vec& q) {
-  Vec best = line.front();
-  for (std::size_t k = 0; k + 1 < line.size(); ++k) {
-    const Vec a = line[k], ab = line[k + 1] - a;
-    const double t = std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-    if ((a + t * ab - q).norm() < (best - q).norm()) best = a + t * ab;
-  }
-  return best;
-}
-
 // The parameter s along a → b where it crosses c → d (0 ≤ s, u ≤ 1), if it does.
 std::optional<double> crossing_parameter(const Vec& a, const Vec& b, const Vec& c, const Vec& d) {
   const Vec r = b - a, e = d - c;
@@ -93,7 +82,7 @@ std::optional<EndJoin> join_last_end(const std::vector<Vec>& vein, const std::ve
     }
     arc += (b - a).norm();
   }
-  const Vec q = nearest_on_polyline(other, vein.back());
+  const Vec q = nearest_point_on_polyline(other, vein.back());
   const double gap = (q - vein.back()).norm();
   if (gap > limit) return std::nullopt;
   return EndJoin{gap, false, vein.size() - 1, q};

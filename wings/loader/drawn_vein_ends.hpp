@@ -33,7 +33,11 @@ struct DrawnVeinJoin {
 };
 
 /// Joins the ends of the drawn veins (\p drawn[i]) that stop short of another vein or pass it
-/// by at most \p limit, as a hand-traced branch does: an end passing another vein within
+/// by at most \p limit, as a hand-traced branch does. The mesher's own junction rule
+/// (vein_junctions.hpp) closes gaps of a sliver's size for every vein; this one reaches
+/// further for drawn veins only, so it leaves ends on the outline's edge alone (two veins
+/// reaching the margin side by side stay apart), cuts an end that crosses a vein, and says
+/// what it joined: an end passing another vein within
 /// \p limit of arc length is cut where it crosses it, else an end within \p limit of another
 /// vein's line (and farther than \p tolerance, which the mesher closes itself) is moved onto
 /// its nearest point. An end on the outline's edge (within \p tolerance) stays. Veins in

@@ -1,7 +1,6 @@
 #include "wings/loader/svg_drawing.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include "wings/loader/svg_path_data.hpp"
 #include "wings/loader/svg_transform.hpp"
 #include "wings/loader/svg_xml_tags.hpp"
+#include "wings/loader/text_trim.hpp"
 
 namespace flapsim::wings {
 
@@ -37,24 +37,15 @@ bool skipped_subtree(const std::string& name) {
 // `display:none` on the tag, in its style or as an attribute (SVG 1.1, 11.5: the element
 // and everything inside it is not rendered). Inkscape hides layers and objects so.
 bool display_none(const SvgTag& tag) {
-  const auto trimmed = [](std::string_view v) {
-    while (!v.empty() && std::isspace(static_cast<unsigned char>(v.front()))) v.remove_prefix(1);
-    while (!v.empty() && std::isspace(static_cast<unsigned char>(v.back()))) v.remove_suffix(1);
-    return v;
-  };
-  if (const std::string* d = tag.attribute("display"); d && trimmed(*d) == "none") return true;
+  if (const std::string* d = tag.attribute("display"); d && trim(*d) == "none") return true;
   const std::string* style = tag.attribute("style");
   if (!style) return false;
-  std::string_view rest = *style;
-  while (!rest.empty()) {
-    const std::size_t end = std::min(rest.find(';'), rest.size());
-    const std::string_view declaration = rest.substr(0, end);
-    rest.remove_prefix(std::min(end + 1, rest.size()));
-    const std::size_t colon = declaration.find(':');
-    if (colon != std::string_view::npos && trimmed(declaration.substr(0, colon)) == "display" &&
-        trimmed(declaration.substr(colon + 1)) == "none")
+  std::istringstream declarations(*style);
+  for (std::string declaration; std::getline(declarations, declaration, ';');)
+    if (const auto colon = declaration.find(':'); colon != std::string::npos &&
+                                                  trim(declaration.substr(0, colon)) == "display" &&
+                                                  trim(declaration.substr(colon + 1)) == "none")
       return true;
-  }
   return false;
 }
 

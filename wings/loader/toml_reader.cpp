@@ -1,4 +1,5 @@
 #include "wings/loader/toml_reader.hpp"
+#include "wings/loader/file_extension.hpp"
 #include "wings/loader/toml_syntax_error.hpp"
 
 #include <toml++/toml.h>
@@ -153,8 +154,7 @@ TomlTable parse_toml_file(const std::string& path) {
   } catch (const InputError& e) {
     // An outline or a drawing given where a wing file belongs (`flapsim mesh wing.svg`,
     // `run --wing outline.csv`): its first line is no TOML.
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lower_case_extension(path);
     if (ext != ".svg" && ext != ".csv") throw;
     throw InputError(
         e.file(), e.line(), e.key(),
