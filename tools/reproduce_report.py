@@ -469,7 +469,8 @@ def write(plan, a, wall, cpu=None):
     T("\n### Lua et al.'s lift coefficient\n")
     T("Searched for Lua, Lai, Lim & Yeo (Exp. Fluids 2010, hovering rigid and flexible hawkmoth-like wings, "
       "Re 6000) for their reference speed, reference area and wing: the paper's text was not found (four searches of stored "
-      "public web pages and documentation, 28 Nov 2026: only unrelated flapping-wing papers). RP does not state "
+      "public web pages and documentation, 28 Nov 2026, and two more, 2 Dec 2026: only unrelated flapping-wing "
+      "papers). RP does not state "
       "its reference speed either (docs/uvlm.md). So the CL is not given in their definition; flapsim's is "
       "L / (½ ρ U² S) with U the cycle-mean speed at r2 and S the planform area. The same mean lift under the "
       "plausible definitions (sinusoidal sweep: U_rms = π/(2√2) U_mean, U_peak = π/2 U_mean, U_tip = U_r2 / r2):\n")
