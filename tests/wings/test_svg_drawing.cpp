@@ -174,6 +174,91 @@ TEST(SvgDrawing, AGroupsNameFindsTheShapesInsideIt) {
   EXPECT_EQ(r1.front()->id, "inner");
 }
 
+// A <use> (Inkscape's clone) draws its original in the use's frame: the use's transform, then
+// translate(x, y), then the original's own transform, not the transforms of the groups around
+// the original (SVG 1.1, 5.6). Worked by hand: the path's (0,0)-(10,0) moved by its own
+// translate(1,0) is (1,0)-(11,0); y = 5 gives (1,5)-(11,5); rotate(90), (x,y) -> (-y,x), gives
+// (-5,1)-(-5,11). The original, inside translate(100,0): (101,0)-(111,0).
+TEST(SvgDrawing, AClonesShapeIsItsOriginalInTheClonesFrame) {
+  const w::SvgDrawing d = drawing(
+      "<g transform=\"translate(100,0)\"><path id=\"p\" transform=\"translate(1,0)\" d=\"M 0 0 L 10 "
+      "0\"/></g>\n"
+      "<use xlink:href=\"#p\" id=\"u\" inkscape:label=\"vein2\" x=\"0\" y=\"5\" transform=\"rotate(90)\"/>\n"
+      "<path id=\"last\" d=\"M 0 0 L 0 1\"/>");
+  ASSERT_EQ(d.shapes.size(), 3u);  // in document order: the clone where its <use> is
+  EXPECT_EQ(d.shapes[0].id, "p");
+  expect_points(d.shapes[0].points, {{101, 0}, {111, 0}});
+  const auto clone = w::find_svg_shapes(d, "vein2");
+  ASSERT_EQ(clone.size(), 1u);
+  EXPECT_EQ(clone.front(), &d.shapes[1]);
+  expect_points(clone.front()->points, {{-5, 1}, {-5, 11}});
+  EXPECT_EQ(clone.front()->id, "u");
+  EXPECT_EQ(clone.front()->line, 3);
+  EXPECT_EQ(clone.front()->describe(), "the clone 'u' (label 'vein2') (line 3) of the path 'p' (line 2)");
+  EXPECT_EQ(w::find_svg_shapes(d, "p").size(), 1u);  // the original alone has its id
+  EXPECT_EQ(d.shapes[2].id, "last");
+}
+
+// A clone of a group defined in <defs> draws the group's shapes, found by the clone's name as
+// a group's; the definitions themselves are not drawn. A clone of the clone follows it; a
+// hidden <use> is a hidden shape.
+TEST(SvgDrawing, ClonesOfAGroupAndOfAClone) {
+  const w::SvgDrawing d = drawing(
+      "<defs><g id=\"pair\" transform=\"scale(2)\"><path id=\"a\" d=\"M 0 0 L 1 0\"/>"
+      "<path id=\"b\" d=\"M 0 1 L 1 1\"/></g></defs>\n"
+      "<use href=\"#pair\" id=\"twins\" x=\"10\"/>\n"
+      "<use href=\"#twins\" id=\"again\" y=\"100\"/>\n"
+      "<use href=\"#pair\" id=\"ghost\" style=\"display:none\"/>");
+  EXPECT_EQ(d.shapes.size(), 4u);
+  EXPECT_TRUE(w::find_svg_shapes(d, "a").empty());
+  const auto twins = w::find_svg_shapes(d, "twins");  // with the group's scale(2), then x = 10
+  ASSERT_EQ(twins.size(), 2u);
+  expect_points(twins[0]->points, {{10, 0}, {12, 0}});
+  expect_points(twins[1]->points, {{10, 2}, {12, 2}});
+  const auto again = w::find_svg_shapes(d, "again");
+  ASSERT_EQ(again.size(), 2u);
+  expect_points(again[1]->points, {{10, 102}, {12, 102}});
+  EXPECT_EQ(again[1]->describe(), "the clone (line 4) of the path 'b' (line 2)");
+  EXPECT_EQ(d.hidden.size(), 2u);
+  EXPECT_TRUE(d.unread_clones.empty());
+}
+
+// A clone that cannot be drawn is no shape; a name only it has says why.
+TEST(SvgDrawing, ClonesThatDrawNothingAreNamedWithWhy) {
+  const w::SvgDrawing d = drawing(
+      "<use id=\"lost\" href=\"#nothing\"/>\n"
+      "<g id=\"loop\"><use id=\"self\" href=\"#loop\"/></g>\n"
+      "<use id=\"other\" href=\"other.svg#p\"/>\n"
+      "<defs><symbol id=\"sym\" viewBox=\"0 0 1 1\"><path d=\"M 0 0 L 1 1\"/></symbol></defs>\n"
+      "<use id=\"scaled\" href=\"#sym\" width=\"10\" height=\"10\"/>");
+  EXPECT_TRUE(d.shapes.empty());
+  ASSERT_EQ(d.unread_clones.size(), 4u);
+  const auto note = [&](const char* name) { return w::missing_shape_note(d, name); };
+  EXPECT_NE(
+      note("lost").find("the use 'lost' (line 2) is a clone that draws nothing: the drawing has no element "
+                        "with the id 'nothing'"),
+      std::string::npos)
+      << note("lost");
+  EXPECT_NE(note("self").find("deep"), std::string::npos) << note("self");
+  EXPECT_NE(note("other").find("not an element of this drawing"), std::string::npos) << note("other");
+  EXPECT_NE(note("scaled").find("viewBox"), std::string::npos) << note("scaled");
+  EXPECT_EQ(note("nobody"), "");
+}
+
+// Clones of groups of clones multiply: 9 levels of 10 clones each of a 2-point line ask for
+// 2·10^9 points, refused at the drawing's budget (kMaxDrawingPoints, 10^6) as they are made.
+TEST(SvgDrawing, ClonesMultiplyingPastTheDrawingsBudgetAreRefused) {
+  std::string body = "<defs><g id=\"g0\"><path d=\"M 0 0 L 1 0\"/></g>\n";
+  for (int level = 1; level <= 9; ++level) {
+    body += "<g id=\"g" + std::to_string(level) + "\">";
+    for (int k = 0; k < 10; ++k) body += "<use href=\"#g" + std::to_string(level - 1) + "\"/>";
+    body += "</g>\n";
+  }
+  body += "</defs>\n<use href=\"#g9\"/>";
+  const std::string e = expect_input_error([&] { (void)drawing(body); }).what();
+  EXPECT_NE(e.find("more than 1000000 points (with its clones)"), std::string::npos) << e;
+}
+
 // A circle is 96 points on it; a path's subpaths are counted, the first kept.
 TEST(SvgDrawing, CirclesAndSubpaths) {
   const w::SvgShape c = only(drawing("<circle cx=\"3\" cy=\"4\" r=\"2\"/>"));

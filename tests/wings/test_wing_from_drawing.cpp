@@ -323,6 +323,38 @@ TEST(WingFromDrawing, HiddenLayersAndObjectsAreNotRead) {
       << hidden_outline;
 }
 
+// Inkscape's clones (Edit > Clone): a vein drawn once and cloned into place, and an outline
+// cloned from a template in <defs> moved by the clone's transform, give the wing worked out
+// by hand; a vein named by a clone that draws nothing is refused saying why.
+TEST(WingFromDrawing, ClonedShapesAreTheWingsOutlineAndVeins) {
+  ScratchDir dir("drawing_clones");
+  const std::string cloned =
+      "<defs><polygon id=\"template\" points=\"0,10 100,0 100,30 0,40\"/></defs>\n"
+      "<use href=\"#template\" id=\"outline\" transform=\"translate(10,10)\"/>\n"
+      "<g transform=\"translate(500,500)\"><polyline id=\"vein\" points=\"2,5 90,0\"/></g>\n"
+      "<g style=\"display:none\">\n<use xlink:href=\"#vein\" id=\"draft\"/></g>\n"
+      "<use xlink:href=\"#vein\" id=\"use7\" inkscape:label=\"R1\" x=\"10\" y=\"25\"/>\n";
+  // The original vein inside translate(500,500) is a second, unnamed open shape: not read.
+  expect_same_wing(read(dir, svg(cloned), wing_toml("")), by_hand());
+  // check's line says which clone draws nothing.
+  const w::Wing broken = read(dir, svg(cloned + "<use href=\"#gone\" id=\"R2\"/>\n"), wing_toml(""));
+  EXPECT_NE(
+      broken.drawing.find("; 1 clone draws nothing (the use 'R2' (line 8): the drawing has no element with "
+                          "the id 'gone')"),
+      std::string::npos)
+      << broken.drawing;
+  const std::string lost =
+      expect_input_error([&] {
+        read(dir, svg(cloned + "<use href=\"#gone\" id=\"R2\"/>\n"), wing_toml("", "drawing_id = \"R2\""));
+      }).what();
+  EXPECT_NE(lost.find("no shape with the id or label 'R2'"), std::string::npos) << lost;
+  EXPECT_NE(
+      lost.find("the use 'R2' (line 8) is a clone that draws nothing: the drawing has no element with the "
+                "id 'gone'"),
+      std::string::npos)
+      << lost;
+}
+
 // An outline_file in a format flapsim does not read is named with what to do, before its
 // bytes are read as CSV (before: "expected a line "x,y" ..., found "%PDF-1.4"").
 TEST(WingFromDrawing, ADrawingInAnotherFormatIsNamedWithWhatToDo) {

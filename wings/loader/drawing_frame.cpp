@@ -50,7 +50,7 @@ const SvgShape& pick_outline(const TomlTable& p, const SvgDrawing& d) {
       std::vector<const SvgShape*> all;
       for (const SvgShape& s : d.shapes) all.push_back(&s);
       p.fail("outline_id", "no shape with the id or label '" + name + "' in " + file +
-                               hidden_shape_note(d, name) +
+                               missing_shape_note(d, name) +
                                (all.empty() ? " (it has no shapes)" : "; its shapes: " + list_shapes(all)));
     }
     if (found.size() > 1)
@@ -98,12 +98,16 @@ std::string DrawingFrame::direction_name(const Vec& d) {
 std::string DrawingFrame::describe(const std::string& length_unit, double metres_per_unit) const {
   char unit_scale[64];
   std::snprintf(unit_scale, sizeof unit_scale, "%.4g", scale / metres_per_unit);
-  const std::size_t hidden = drawing.hidden.size();
+  const std::size_t hidden = drawing.hidden.size(), unread = drawing.unread_clones.size();
   return outline_source + ", tip " + direction_name(tip) + ", leading edge " + direction_name(leading_edge) +
          ", pivot " + pivot_source + "; 1 drawing unit = " + unit_scale + " " + length_unit +
          (hidden == 0 ? std::string()
                       : "; " + std::to_string(hidden) + (hidden == 1 ? " hidden shape" : " hidden shapes") +
-                            " (display:none) not read");
+                            " (display:none) not read") +
+         (unread == 0 ? std::string()
+                      : "; " + std::to_string(unread) + (unread == 1 ? " clone draws" : " clones draw") +
+                            " nothing (" + drawing.unread_clones.front().use.describe() + ": " +
+                            drawing.unread_clones.front().why + ")");
 }
 
 bool is_svg_path(const std::string& path) { return lower_case_extension(path) == ".svg"; }
@@ -203,7 +207,7 @@ std::vector<Vec> drawing_vein_points(const TomlTable& v, const DrawingFrame& fra
   const auto found = find_svg_shapes(frame.drawing, name);
   if (found.empty())
     v.fail("drawing_id", "no shape with the id or label '" + name + "' in " + frame.drawing.file +
-                             hidden_shape_note(frame.drawing, name));
+                             missing_shape_note(frame.drawing, name));
   if (found.size() > 1)
     v.fail("drawing_id",
            "several shapes of " + frame.drawing.file + " are '" + name + "': " + list_shapes(found));

@@ -7,6 +7,7 @@
 
 #include "wings/loader/bounded_input_file.hpp"
 #include "wings/loader/input_error.hpp"
+#include "wings/loader/svg_clones.hpp"
 #include "wings/loader/svg_numbers.hpp"
 #include "wings/loader/svg_path_data.hpp"
 #include "wings/loader/svg_transform.hpp"
@@ -33,6 +34,9 @@ bool skipped_subtree(const std::string& name) {
     if (name == n) return true;
   return false;
 }
+
+// The elements whose shapes are drawn only where a clone refers to them (SVG 1.1, 5.3, 5.5).
+bool definitions(const std::string& name) { return name == "defs" || name == "symbol"; }
 
 // `display:none` on the tag, in its style or as an attribute (SVG 1.1, 11.5: the element
 // and everything inside it is not rendered). Inkscape hides layers and objects so.
@@ -129,10 +133,11 @@ std::optional<SvgShape> shape_of(const SvgTag& tag, const Where& where, std::siz
 }  // namespace
 
 std::string SvgShape::describe() const {
-  std::string s = "the " + element;
+  std::string s = clone_of.empty() ? "the " + element : std::string("the clone");
   if (!id.empty()) s += " '" + id + "'";
   if (!label.empty() && label != id) s += " (label '" + label + "')";
-  return s + " (line " + std::to_string(line) + ")";
+  s += " (line " + std::to_string(line) + ")";
+  return clone_of.empty() ? s : s + " of " + clone_of;
 }
 
 SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, const std::string& key) {
@@ -145,9 +150,17 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
     std::string name;
     SvgAffine transform;
     bool skipped;
+    bool defined;  // in <defs> or a <symbol>: its shapes drawn only by clones
     bool hidden;
     int line;
     std::vector<std::string> names;  // the ids and labels of it and the groups around it
+    std::string target;              // its id, if it is a clone's target (SvgCloneSource::targets)
+  };
+  SvgCloneSource clones;
+  // The items of an element with an id end where it closes.
+  auto end_target = [&](const std::string& id) {
+    if (const auto t = clones.targets.find(id); t != clones.targets.end() && t->second.last == 0)
+      t->second.last = clones.items.size();
   };
   std::vector<Open> stack;
   SvgTagReader reader(text, file, key);
@@ -161,6 +174,7 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
                                  (stack.empty() ? std::string("nothing")
                                                 : "<" + stack.back().name + "> of line " +
                                                       std::to_string(stack.back().line)));
+      if (!stack.back().target.empty()) end_target(stack.back().target);
       stack.pop_back();
       continue;
     }
@@ -169,34 +183,77 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
     seen_svg = true;
     const bool parent_skipped = !stack.empty() && stack.back().skipped;
     const bool skipped = parent_skipped || skipped_subtree(tag.name);
+    // Shapes read: drawn ones, and in <defs> and <symbol> those a clone may draw.
+    const bool defined =
+        skipped && ((!stack.empty() && stack.back().defined) || (!parent_skipped && definitions(tag.name)));
+    const bool read = !skipped || defined;
     const bool hidden = (!stack.empty() && stack.back().hidden) || display_none(tag);
-    SvgAffine transform = stack.empty() ? svg_identity() : stack.back().transform;
-    if (!skipped)
+    const SvgAffine parent = stack.empty() ? svg_identity() : stack.back().transform;
+    SvgAffine transform = parent;
+    if (read)
       if (const std::string* t = tag.attribute("transform")) try {
           transform = svg_compose(transform, parse_svg_transform(*t));
         } catch (const SvgSyntaxError& e) {
-          where.fail(tag.line, e.what());
+          if (!skipped) where.fail(tag.line, e.what());
+          transform = parent;  // a definition's error: read where a clone draws it (not at all)
         }
-    if (!skipped)
-      if (auto shape = shape_of(tag, where, points)) {
-        for (Vec& p : shape->points) p = svg_apply(transform, p);
-        points += shape->points.size();
-        if (points > kMaxDrawingPoints)
-          where.fail(tag.line,
-                     "the drawing flattens into more than " + std::to_string(kMaxDrawingPoints) + " points");
-        if (!stack.empty()) shape->group_names = stack.back().names;
-        (hidden ? drawing.hidden : drawing.shapes).push_back(std::move(*shape));
+    std::vector<std::string> names = stack.empty() ? std::vector<std::string>{} : stack.back().names;
+    std::string target;
+    if (const std::string* id = tag.attribute("id"); read && id && !clones.targets.contains(*id)) {
+      target = *id;
+      const std::size_t own = (tag.attribute("inkscape:label") ? 1u : 0u) + 1u;  // its id and label
+      clones.targets[target] = {
+          clones.items.size(), 0,        parent,
+          names.size() + own,  tag.name, tag.name == "symbol" && tag.attribute("viewBox") != nullptr};
+    }
+    std::optional<SvgShape> shape;
+    if (!skipped) {
+      shape = shape_of(tag, where, points);
+    } else if (defined) {
+      try {
+        shape = shape_of(tag, where, points);
+      } catch (const InputError&) {  // a definition that cannot be read: no shape for a clone
       }
-    if (!tag.self_closing) {
-      std::vector<std::string> names = stack.empty() ? std::vector<std::string>{} : stack.back().names;
+    }
+    if (shape) {
+      for (Vec& p : shape->points) p = svg_apply(transform, p);
+      points += shape->points.size();
+      if (points > kMaxDrawingPoints)
+        where.fail(tag.line,
+                   "the drawing flattens into more than " + std::to_string(kMaxDrawingPoints) + " points");
+      shape->group_names = names;
+      clones.items.push_back({static_cast<int>(clones.shapes.size()), -1});
+      clones.shapes.push_back(*shape);
+      if (!skipped) (hidden ? drawing.hidden : drawing.shapes).push_back(std::move(*shape));
+    } else if (read && tag.name == "use") {
+      SvgCloneSource::Clone c;
+      c.use.element = "use";
+      c.use.line = tag.line;
+      if (const auto* id = tag.attribute("id")) c.use.id = *id;
+      if (const auto* label = tag.attribute("inkscape:label")) c.use.label = *label;
+      c.use.group_names = names;
+      if (const std::string* h = tag.attribute("href")) c.href = trim(*h);
+      if (const std::string* h = tag.attribute("xlink:href"); h && c.href.empty()) c.href = trim(*h);
+      c.frame = svg_compose(transform, svg_translation(length_attribute(tag, "x", where, false),
+                                                       length_attribute(tag, "y", where, false)));
+      c.hidden = hidden;
+      c.drawn = !skipped;
+      c.position = (hidden ? drawing.hidden : drawing.shapes).size();
+      clones.items.push_back({-1, static_cast<int>(clones.clones.size())});
+      clones.clones.push_back(std::move(c));
+    }
+    if (tag.self_closing) {
+      if (!target.empty()) end_target(target);
+    } else {
       for (const char* attribute : {"id", "inkscape:label"})
         if (const std::string* n = tag.attribute(attribute)) names.push_back(*n);
-      stack.push_back({tag.name, transform, skipped, hidden, tag.line, std::move(names)});
+      stack.push_back({tag.name, transform, skipped, defined, hidden, tag.line, std::move(names), target});
     }
   }
   if (!seen_svg) where.fail(0, "not an SVG drawing: no <svg> element");
   if (!stack.empty())
     where.fail(stack.back().line, "malformed SVG: <" + stack.back().name + "> is never closed");
+  add_svg_clones(clones, drawing, points, key);
   return drawing;
 }
 
@@ -228,12 +285,16 @@ std::vector<const SvgShape*> find_svg_shapes(const SvgDrawing& drawing, std::str
   return shapes_named(drawing.shapes, name);
 }
 
-std::string hidden_shape_note(const SvgDrawing& drawing, std::string_view name) {
-  const auto found = shapes_named(drawing.hidden, name);
-  if (found.empty()) return "";
-  return " (" + found.front()->describe() +
-         " of it is hidden, display:none: show it in the drawing, "
-         "as Inkscape's eye in Layers and Objects does)";
+std::string missing_shape_note(const SvgDrawing& drawing, std::string_view name) {
+  if (const auto found = shapes_named(drawing.hidden, name); !found.empty())
+    return " (" + found.front()->describe() +
+           " of it is hidden, display:none: show it in the drawing, "
+           "as Inkscape's eye in Layers and Objects does)";
+  for (const SvgDrawing::UnreadClone& c : drawing.unread_clones)
+    if (c.use.id == name || c.use.label == name ||
+        std::find(c.use.group_names.begin(), c.use.group_names.end(), name) != c.use.group_names.end())
+      return " (" + c.use.describe() + " is a clone that draws nothing: " + c.why + ")";
+  return "";
 }
 
 }  // namespace flapsim::wings

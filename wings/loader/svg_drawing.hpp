@@ -6,14 +6,15 @@
 ///
 /// Every `<path>`, `<polygon>`, `<polyline>`, `<line>`, `<rect>`, `<circle>` and `<ellipse>`
 /// outside `<defs>`, `<clipPath>`, `<mask>`, `<marker>`, `<pattern>`, `<symbol>` and
-/// `<metadata>` is one shape (or a hidden one, SvgDrawing::hidden), flattened to points in the drawing's user
-/// units after the `transform` of the element and of every group around it (matrix, translate, scale, rotate,
-/// skewX, skewY: wings/loader/svg_transform.hpp). Path data as SVG 1.1 defines it, curves flattened into
-/// straight pieces (wings/loader/svg_path_data.hpp: a Bézier curve's chords within 2.5e-4 of its control
-/// polygon, a quarter circle in 29 pieces, a wing's area within 1e-3; arcs, circles and ellipses 96 pieces a
-/// turn), the tags as wings/loader/svg_xml_tags.hpp reads them. The frame is SVG's: x to the right, y
-/// downward. A regular file of at most kMaxDrawingFileBytes; every error names the file and the line of the
-/// element it concerns.
+/// `<metadata>` is one shape (or a hidden one, SvgDrawing::hidden), and every `<use>` (a clone)
+/// draws copies of the shapes it refers to (wings/loader/svg_clones.hpp), flattened to points in the
+/// drawing's user units after the `transform` of the element and of every group around it (matrix, translate,
+/// scale, rotate, skewX, skewY: wings/loader/svg_transform.hpp). Path data as SVG 1.1 defines it, curves
+/// flattened into straight pieces (wings/loader/svg_path_data.hpp: a Bézier curve's chords within 2.5e-4 of
+/// its control polygon, a quarter circle in 29 pieces, a wing's area within 1e-3; arcs, circles and ellipses
+/// 96 pieces a turn), the tags as wings/loader/svg_xml_tags.hpp reads them. The frame is SVG's: x to the
+/// right, y downward. A regular file of at most kMaxDrawingFileBytes; every error names the file and the line
+/// of the element it concerns.
 
 #include <Eigen/Core>
 #include <string>
@@ -41,7 +42,11 @@ struct SvgShape {
   std::vector<Eigen::Vector2d> points;
   /// The ids and labels of the groups (and other elements) around it, outermost first.
   std::vector<std::string> group_names;
-  /// "the path 'R1' (line 12)": how messages name it.
+  /// Of a clone's shape (a `<use>`, wings/loader/svg_clones.hpp): how its original is named,
+  /// "the path 'path5' (line 12)"; "" for a shape drawn as itself. Its line is the use's.
+  std::string clone_of;
+  /// "the path 'R1' (line 12)", "the clone 'use3' (line 30) of the path 'R1' (line 12)":
+  /// how messages name it.
   std::string describe() const;
 };
 
@@ -53,6 +58,12 @@ struct SvgDrawing {
   /// them, as Inkscape hides a layer or an object. Not read as the outline, a vein or the
   /// pivot; kept so that a message can say that a name not found is hidden.
   std::vector<SvgShape> hidden;
+  /// A `<use>` that draws nothing, and why (wings/loader/svg_clones.hpp).
+  struct UnreadClone {
+    SvgShape use;
+    std::string why;
+  };
+  std::vector<UnreadClone> unread_clones;
 };
 
 /// \param path SVG file
@@ -69,7 +80,8 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
 std::vector<const SvgShape*> find_svg_shapes(const SvgDrawing& drawing, std::string_view name);
 
 /// For a name find_svg_shapes does not find: " (the path 'R1' (line 12) of it is hidden,
-/// display:none: show it in the drawing)" if a hidden shape has it, else "".
-std::string hidden_shape_note(const SvgDrawing& drawing, std::string_view name);
+/// display:none: show it in the drawing)" if a hidden shape has it, " (the use 'use3' (line
+/// 30) is a clone that is not read: …)" if a clone that draws nothing has it, else "".
+std::string missing_shape_note(const SvgDrawing& drawing, std::string_view name);
 
 }  // namespace flapsim::wings

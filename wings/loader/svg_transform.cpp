@@ -16,6 +16,12 @@ SvgAffine svg_identity() {
   return m;
 }
 
+SvgAffine svg_translation(double x, double y) {
+  SvgAffine m = svg_identity();
+  m.col(2) = Eigen::Vector2d(x, y);
+  return m;
+}
+
 SvgAffine svg_compose(const SvgAffine& a, const SvgAffine& b) {
   SvgAffine m;
   m.leftCols<2>() = a.leftCols<2>() * b.leftCols<2>();

@@ -14,6 +14,8 @@ namespace flapsim::wings {
 using SvgAffine = Eigen::Matrix<double, 2, 3>;
 
 SvgAffine svg_identity();
+/// translate(x, y).
+SvgAffine svg_translation(double x, double y);
 /// a ∘ b: b first.
 SvgAffine svg_compose(const SvgAffine& a, const SvgAffine& b);
 Eigen::Vector2d svg_apply(const SvgAffine& m, const Eigen::Vector2d& p);
