@@ -336,6 +336,19 @@ TEST(WingFromDrawing, ClonedShapesAreTheWingsOutlineAndVeins) {
       "<use xlink:href=\"#vein\" id=\"use7\" inkscape:label=\"R1\" x=\"10\" y=\"25\"/>\n";
   // The original vein inside translate(500,500) is a second, unnamed open shape: not read.
   expect_same_wing(read(dir, svg(cloned), wing_toml("")), by_hand());
+  // An outline cloned from a template that is not there.
+  const std::string no_outline =
+      expect_input_error([&] {
+        read(dir,
+             svg("<use href=\"#templet\" id=\"use3\"/>\n<polyline id=\"R1\" points=\"12,30 100,25\"/>\n"),
+             wing_toml(""));
+      }).what();
+  EXPECT_NE(no_outline.find("has no closed shape for the outline"), std::string::npos) << no_outline;
+  EXPECT_NE(
+      no_outline.find("(the use 'use3' (line 2) is a clone that draws nothing: the drawing has no element "
+                      "with the id 'templet')"),
+      std::string::npos)
+      << no_outline;
   // check's line says which clone draws nothing.
   const w::Wing broken = read(dir, svg(cloned + "<use href=\"#gone\" id=\"R2\"/>\n"), wing_toml(""));
   EXPECT_NE(

@@ -74,7 +74,11 @@ const SvgShape& pick_outline(const TomlTable& p, const SvgDrawing& d) {
                                  : " (its " + std::to_string(d.hidden.size()) +
                                        (d.hidden.size() == 1 ? " hidden shape, display:none, is"
                                                              : " hidden shapes, display:none, are") +
-                                       " not read: show the outline)"));
+                                       " not read: show the outline)") +
+               (d.unread_clones.empty()
+                    ? std::string()
+                    : " (" + d.unread_clones.front().use.describe() +
+                          " is a clone that draws nothing: " + d.unread_clones.front().why + ")"));
   if (closed.size() > 1)
     p.fail("outline_file",
            file + " has " + std::to_string(closed.size()) +
