@@ -3,7 +3,7 @@
 // wings/hawkmoth.toml and wings/mav_film_wing_25um.toml, flapped by the kinematics of
 // cases/hover_flexible.toml (26.1 Hz, 100 steps per cycle; the coupled hawkmoth runs
 // cases/hover_flexible_fem.toml, the same with its coupling keys) and
-// cases/mav_film_wing_25um_fem.toml (12 Hz, 80 steps per cycle).
+// cases/mav_film_wing_25um_fem.toml (12 Hz, 100 steps per cycle since 2 Dec; 80 before).
 //  * *StructureStep: one structure step in vacuum (solve + accept), each benchmark
 //    iteration the next step of the flapping cycle.
 //  * *CoupledCycle: one whole cycle of the coupled run in air (the vortex lattice of the case,

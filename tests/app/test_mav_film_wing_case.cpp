@@ -14,6 +14,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
@@ -81,6 +82,38 @@ TEST(MavFilmWingCase, TheFirstDesignWithA25MicrometreFilmIsWarnedNearResonance) 
   EXPECT_EQ(check.status, 0) << check.err;
   EXPECT_NE(check.err.find("(torsion), "), std::string::npos) << check.err;
   EXPECT_NE(check.err.find("wingbeat frequency"), std::string::npos) << check.err;
+}
+
+// The FEM case as shipped runs through its first wingbeat, the reversal at half of it where a
+// film's coupling is hardest: at 80 steps a wingbeat it stopped at step 42 (the coupling not
+// converged in 3 x 50 sub-iterations) from 1 Dec (the older wake's hold taken later in a step
+// moved its path) until 2 Dec, unseen, as no test ran it (docs/fsi.md, "The MAV case's
+// mesh"). One wingbeat of the case, its every other key as shipped: exit 0, all its steps, and
+// the film pitching about the rod within the ±22–24° every mesh gave (that section's table).
+TEST(MavFilmWingCase, TheFemCaseRunsThroughItsFirstWingbeat) {
+  ScratchDir dir("mav_film_wing_fem_case");
+  std::string text = read_text(kSource + "/cases/mav_film_wing_25um_fem.toml");
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"wing = \"../wings/", "wing = \"" + kSource + "/wings/"},
+        {"\ncycles = 5", "\ncycles = 1"}}) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  }
+  std::ofstream(dir / "case.toml") << text;
+  const auto out = dir / "run";
+  const FlapsimOutcome run = run_flapsim_capturing_stderr(
+      dir.path(), "run " + (dir / "case.toml").string() + " --vtk-every 0 -o " + out.string());
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::string summary = read_text(out / "summary.json");
+  const double steps_per_cycle = json_number(summary, "steps"),
+               twist = json_number(summary, "peak_tip_twist_deg");
+  std::printf(
+      "[ value ] mav_film_wing_25um_fem, one wingbeat: %.0f steps, peak tip twist %.2f deg, mean lift %.4g "
+      "N\n",
+      steps_per_cycle, twist, json_number(summary, "mean_lift_N"));
+  EXPECT_EQ(steps_per_cycle, 100.0);  // the case's steps_per_cycle, all of them
+  EXPECT_GT(twist, 15.0);
+  EXPECT_LT(twist, 30.0);
 }
 
 // Its FEM case takes the first-order ∂Γ/∂t into its lattice (numerics.circulation_rate =
