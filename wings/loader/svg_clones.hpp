@@ -47,9 +47,8 @@ struct SvgCloneSource {
   struct Target {
     std::size_t first = 0, last = 0;
     SvgAffine parent;  ///< the transforms of the groups around it (not its own)
-    std::size_t names_before =
-        0;                ///< its shapes' group_names start with this many: the groups' around it and its own
-    std::string element;  ///< its tag's name
+    /// Its shapes' group_names start with this many names: the groups' around it and its own.
+    std::size_t names_before = 0;
     bool scaled_symbol = false;  ///< a <symbol> with a viewBox (its scaling is not applied: not drawn)
   };
   /// A shape or a clone, in document order: one of the two indices is ≥ 0.

@@ -130,6 +130,21 @@ std::optional<SvgShape> shape_of(const SvgTag& tag, const Where& where, std::siz
   return s;
 }
 
+// A <use> tag's clone: its names, what it refers to and its frame (the transforms around it
+// and its own, then translate(x, y); SVG 1.1, 5.6).
+SvgCloneSource::Clone clone_of(const SvgTag& tag, const SvgAffine& transform, const Where& where) {
+  SvgCloneSource::Clone c;
+  c.use.element = "use";
+  c.use.line = tag.line;
+  if (const auto* id = tag.attribute("id")) c.use.id = *id;
+  if (const auto* label = tag.attribute("inkscape:label")) c.use.label = *label;
+  if (const std::string* h = tag.attribute("href")) c.href = trim(*h);
+  if (const std::string* h = tag.attribute("xlink:href"); h && c.href.empty()) c.href = trim(*h);
+  c.frame = svg_compose(transform, svg_translation(length_attribute(tag, "x", where, false),
+                                                   length_attribute(tag, "y", where, false)));
+  return c;
+}
+
 }  // namespace
 
 std::string SvgShape::describe() const {
@@ -202,9 +217,8 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
     if (const std::string* id = tag.attribute("id"); read && id && !clones.targets.contains(*id)) {
       target = *id;
       const std::size_t own = (tag.attribute("inkscape:label") ? 1u : 0u) + 1u;  // its id and label
-      clones.targets[target] = {
-          clones.items.size(), 0,        parent,
-          names.size() + own,  tag.name, tag.name == "symbol" && tag.attribute("viewBox") != nullptr};
+      clones.targets[target] = {clones.items.size(), 0, parent, names.size() + own,
+                                tag.name == "symbol" && tag.attribute("viewBox") != nullptr};
     }
     std::optional<SvgShape> shape;
     if (!skipped) {
@@ -226,16 +240,8 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
       clones.shapes.push_back(*shape);
       if (!skipped) (hidden ? drawing.hidden : drawing.shapes).push_back(std::move(*shape));
     } else if (read && tag.name == "use") {
-      SvgCloneSource::Clone c;
-      c.use.element = "use";
-      c.use.line = tag.line;
-      if (const auto* id = tag.attribute("id")) c.use.id = *id;
-      if (const auto* label = tag.attribute("inkscape:label")) c.use.label = *label;
+      SvgCloneSource::Clone c = clone_of(tag, transform, where);
       c.use.group_names = names;
-      if (const std::string* h = tag.attribute("href")) c.href = trim(*h);
-      if (const std::string* h = tag.attribute("xlink:href"); h && c.href.empty()) c.href = trim(*h);
-      c.frame = svg_compose(transform, svg_translation(length_attribute(tag, "x", where, false),
-                                                       length_attribute(tag, "y", where, false)));
       c.hidden = hidden;
       c.drawn = !skipped;
       c.position = (hidden ? drawing.hidden : drawing.shapes).size();
