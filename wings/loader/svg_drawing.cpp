@@ -231,10 +231,12 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
     }
     if (shape) {
       for (Vec& p : shape->points) p = svg_apply(transform, p);
-      points += shape->points.size();
-      if (points > kMaxDrawingPoints)
-        where.fail(tag.line,
-                   "the drawing flattens into more than " + std::to_string(kMaxDrawingPoints) + " points");
+      if (!skipped) {  // a definition's points count where a clone copies them (svg_clones.cpp)
+        points += shape->points.size();
+        if (points > kMaxDrawingPoints)
+          where.fail(tag.line,
+                     "the drawing flattens into more than " + std::to_string(kMaxDrawingPoints) + " points");
+      }
       shape->group_names = names;
       clones.items.push_back({static_cast<int>(clones.shapes.size()), -1});
       clones.shapes.push_back(*shape);
