@@ -60,8 +60,7 @@ struct Resolver {
         points += inner.back().points.size();
         if (points > kMaxDrawingPoints)
           throw InputError(drawing.file, clone.use.line, key,
-                           "the drawing flattens into more than " + std::to_string(kMaxDrawingPoints) +
-                               " points (with its clones)");
+                           too_many_drawing_points() + " (with its clones)");
       } else if (!draw(static_cast<std::size_t>(item.clone), depth + 1, inner)) {
         return false;
       }

@@ -233,9 +233,7 @@ SvgDrawing parse_svg_drawing(std::string_view text, const std::string& file, con
       for (Vec& p : shape->points) p = svg_apply(transform, p);
       if (!skipped) {  // a definition's points count where a clone copies them (svg_clones.cpp)
         points += shape->points.size();
-        if (points > kMaxDrawingPoints)
-          where.fail(tag.line,
-                     "the drawing flattens into more than " + std::to_string(kMaxDrawingPoints) + " points");
+        if (points > kMaxDrawingPoints) where.fail(tag.line, too_many_drawing_points());
       }
       shape->group_names = names;
       clones.items.push_back({static_cast<int>(clones.shapes.size()), -1});

@@ -28,6 +28,10 @@ inline constexpr std::size_t kMaxDrawingFileBytes = 16u << 20;  ///< 16 MiB (an 
 /// curve is at most 55 pieces, so 16 MiB of short curve commands could otherwise ask for
 /// 10⁸. An outline or a vein is refused beyond 5,000 (kMaxOutlinePoints) anyway.
 inline constexpr std::size_t kMaxDrawingPoints = 1'000'000;
+/// The message of a drawing past kMaxDrawingPoints.
+inline std::string too_many_drawing_points() {
+  return "the drawing flattens into more than " + std::to_string(kMaxDrawingPoints) + " points";
+}
 
 /// One shape of the drawing.
 struct SvgShape {

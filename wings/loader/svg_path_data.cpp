@@ -213,8 +213,7 @@ std::vector<SvgSubpath> parse_svg_path_data(std::string_view d, std::size_t poin
     }
     previous = command;
     while (counted + 1 < out.size()) points += out[counted++].points.size();  // the finished subpaths
-    if (!out.empty() && points + out.back().points.size() > kMaxDrawingPoints)
-      bad("the drawing flattens into more than " + std::to_string(kMaxDrawingPoints) + " points");
+    if (!out.empty() && points + out.back().points.size() > kMaxDrawingPoints) bad(too_many_drawing_points());
   }
   return out;
 }
