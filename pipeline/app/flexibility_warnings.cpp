@@ -159,10 +159,10 @@ std::string large_motion_at_failure(const FsiSetup& setup, const Eigen::VectorXd
   char text[1100];
   std::snprintf(text, sizeof text,
                 "By then the wing had moved beyond what its chain represents: the joint inboard of body %d "
-                "%s %.1f deg at the last completed step (history.csv %s_%d_rad), the tip bent up to %.1f "
+                "%s %.1f deg at the last completed step (history.csv %s_%d_rad), and the tip bent up to %.1f "
                 "deg and twisted up to %.1f deg against its base (summary.json peak_tip_bend_deg, "
-                "peak_tip_twist_deg), beyond the %g deg up to which the joint springs, derived from the "
-                "wing's small-rotation FEM, represent it. A finer time step may go further, but through a "
+                "peak_tip_twist_deg); the joint springs, derived from the wing's small-rotation FEM, "
+                "represent it up to %g deg. A finer time step may go further, but through a "
                 "motion the model was not made for: run the wing's own FEM, geometrically nonlinear "
                 "(structure.kind = \"fem\"), stiffen the wing, or lower frequency_hz or the amplitudes "
                 "(docs/case_file.md, \"Warnings\")",

@@ -104,6 +104,7 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
   ProgressLine progress(setup.steps, stderr, options.progress);
   // 3. The time loop; a numerical failure still leaves a complete summary.json.
   try {
+    recorder.begin();
     time_loop(setup, data, recorder, progress, options.on_step);
   } catch (const NumericalFailure& e) {
     // A chain that had swung beyond small rotations, or a FEM wing that had swung far: say

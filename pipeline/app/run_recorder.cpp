@@ -93,16 +93,6 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
   if (model.air) dynamic_pressure_ = setup.reference.dynamic_pressure_area(model.density) / setup.reference.area;
   tip_path_.name = "tip";
   for (const auto& m : c.markers) marker_paths_.push_back(io::Trajectory{m.name, {}, {}});
-  if (vtk_every_ > 0) {
-    if (model.air) {
-      wing_pvd_.emplace(dir_ / "wing.pvd");
-      wake_pvd_.emplace(dir_ / "wake.pvd");
-    }
-    chain_pvd_.emplace(dir_ / (structure_series(setup) + ".pvd"));
-    series_published_ = std::chrono::steady_clock::now();
-    io::ensure_directory(dir_ / "vtk");
-    write_state();
-  }
   RunResults& r = results_;
   r.set("case", c.name);
   if (!c.wing_file.empty()) r.set("wing_file", as_named(c.wing_file));
@@ -128,6 +118,18 @@ RunRecorder::RunRecorder(const io::Case& c, const FsiSetup& setup, const std::fi
     r.set("r2", setup.reference.r2);
     r.set("reynolds_number", reynolds_number(c, setup));
   }
+}
+
+void RunRecorder::begin() {
+  if (vtk_every_ <= 0) return;
+  if (setup_.model.air) {
+    wing_pvd_.emplace(dir_ / "wing.pvd");
+    wake_pvd_.emplace(dir_ / "wake.pvd");
+  }
+  chain_pvd_.emplace(dir_ / (structure_series(setup_) + ".pvd"));
+  series_published_ = std::chrono::steady_clock::now();
+  io::ensure_directory(dir_ / "vtk");
+  write_state();
 }
 
 void RunRecorder::record(const fsi::FsiData& data) {

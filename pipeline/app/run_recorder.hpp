@@ -50,7 +50,7 @@ class RunRecorder {
   /// \param vtk_every    write the ParaView series every n steps; 0 = never
   /// \param spring_scale the joint-spring factor the setup applied (reported)
   /// \param started      when the run started (wall time, setup included)
-  /// \throws io::OutputError if the folder or the files cannot be created
+  /// \throws io::OutputError if the folder or history.csv cannot be created
   RunRecorder(const io::Case& c, const FsiSetup& setup, const std::filesystem::path& output_dir,
               int vtk_every, double spring_scale, std::chrono::steady_clock::time_point started);
 
@@ -62,6 +62,12 @@ class RunRecorder {
   void set_warnings(std::string notes) {
     if (!notes.empty()) results_.set("warnings", std::move(notes));
   }
+
+  /// \brief Creates the ParaView series (the .pvd files, vtk/) and run.pvsm when frames are
+  /// written: called within the run's error handling, so that an output error here (a file
+  /// size limit below run.pvsm's size, a file named vtk) still leaves summary.json saying
+  /// "failed" (finish). \throws io::OutputError
+  void begin();
 
   /// \brief Records the state after a coupled step (before the wake is shed).
   void record(const fsi::FsiData& data);

@@ -605,7 +605,7 @@ void warn_thin_core_in_hover(const TomlTable& root, Case& c) {
 constexpr double kRadianSuspicionDeg = 2.0 * 3.14159265358979323846;
 void warn_implausible_angles(const TomlTable& root, Case& c) {
   const mbd::WingKinematics& k = c.kinematics;
-  double largest_deg = 0.0, largest_sweep_deg = 0.0;
+  double largest_deg = 0.0, largest_sweep_deg = 0.0, largest_rotation_deg = 0.0;
   double lowest_sweep = std::numeric_limits<double>::infinity(), highest_sweep = -lowest_sweep;  // [deg]
   for (int i = 0; i < 360; ++i) {
     const double s = i / 360.0;
@@ -614,7 +614,9 @@ void warn_implausible_angles(const TomlTable& root, Case& c) {
     highest_sweep = std::max(highest_sweep, signed_sweep);
     const double sweep = std::abs(signed_sweep);
     largest_sweep_deg = std::max(largest_sweep_deg, sweep);
-    largest_deg = std::max({largest_deg, sweep, std::abs(k.rotation.at_phase(s).value) / kDegToRad});
+    const double rotation = std::abs(k.rotation.at_phase(s).value) / kDegToRad;
+    largest_rotation_deg = std::max(largest_rotation_deg, rotation);
+    largest_deg = std::max({largest_deg, sweep, rotation});
   }
   // The stroke alone in radians (rotation in degrees): a sweep that swings, by less than
   // ±2π degrees. A sweep that does not swing at all (0: a plunging or pitching wing) is not.
@@ -643,6 +645,13 @@ void warn_implausible_angles(const TomlTable& root, Case& c) {
     c.warnings.push_back({c.file, t ? t->line_of("sweep") : 0, "kinematics.sweep",
                           "the sweep angle reaches " + fixed(largest_sweep_deg) +
                               " degrees, more than half a turn from the stroke's zero: an amplitude in the "
+                              "wrong unit or a coefficient off?"});
+  // A rotation beyond a whole turn (1e300 degrees ran to a lift of -0.7 mN unwarned): no
+  // wing pitches that far; 90 +- 90 degrees is the most a stroke's reversal asks.
+  if (largest_rotation_deg > 360.0)
+    c.warnings.push_back({c.file, t ? t->line_of("rotation") : 0, "kinematics.rotation",
+                          "the rotation angle reaches " + fixed(largest_rotation_deg) +
+                              " degrees, more than a whole turn from the wing's zero: an amplitude in the "
                               "wrong unit or a coefficient off?"});
 }
 

@@ -66,6 +66,16 @@ TEST(CliMessages, AnOptionValueOutOfRangeGetsAShortMessage) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
+TEST(CliMessages, AnUnknownCommandIsNamedWithTheCommandsThereAre) {
+  // Before: "A subcommand is required", as if none had been given.
+  ScratchDir dir("message_command");
+  const FlapsimOutcome r = run_flapsim_capturing_stderr(dir.path(), "bogus");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("unknown command 'bogus'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("check, mesh, modes, reduce, run, sweep, optimize"), std::string::npos) << r.err;
+  EXPECT_EQ(run_flapsim_capturing_stderr(dir.path(), "--version").status, 0);
+}
+
 TEST(CliMessages, AChainThatMissesTheFemIsWarnedAbout) {
   // The first MAV film wing (25 um film) with 4 bodies: first bending +132 % (MAC-paired) (docs/reduction.md, "Film wings").
   ScratchDir dir("message_mismatch");

@@ -31,4 +31,28 @@ TEST(OutputErrorSummary, ARunWhoseHistoryCannotBeWrittenStillWritesAFailedSummar
   EXPECT_LT(std::count(history.begin(), history.end(), '\n'), 3 * 24 + 1);
 }
 
+TEST(OutputErrorSummary, AnOutputErrorBeforeTheFirstStepStillWritesAFailedSummary) {
+  // The series' files and run.pvsm (about 30 KiB) are written before the first step. Before:
+  // an error there (a file-size limit of 8 KiB, a file named vtk where the frames go) exited 4
+  // with no summary.json, though the summary (about 2 KiB) fits.
+  ScratchDir dir("output_error_summary_start");
+  std::ofstream(dir / "case.toml") << small_plate_case("rigid", 1, 1);
+  const auto limited = dir / "limited";
+  ASSERT_EQ(run_flapsim_with_file_limit("run " + (dir / "case.toml").string() + " -o " + limited.string(), 8),
+            4);
+  const std::string summary = read_text(limited / "summary.json");
+  EXPECT_NE(summary.find("\"status\": \"failed\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("run.pvsm"), std::string::npos) << summary;
+  EXPECT_TRUE(truncated_files(dir, limited).empty());
+  // A file where the frames' folder goes.
+  const auto blocked = dir / "blocked";
+  std::filesystem::create_directories(blocked);
+  std::ofstream(blocked / "vtk") << "not a folder\n";
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + blocked.string()), 4);
+  const std::string blocked_summary = read_text(blocked / "summary.json");
+  EXPECT_NE(blocked_summary.find("\"status\": \"failed\""), std::string::npos) << blocked_summary;
+  EXPECT_NE(blocked_summary.find("vtk"), std::string::npos) << blocked_summary;
+  EXPECT_TRUE(dir.temporaries().empty());
+}
+
 }  // namespace

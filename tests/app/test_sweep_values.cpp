@@ -45,6 +45,24 @@ TEST(SweepValues, RangesListsAndErrors) {
   EXPECT_THROW(sweep::parse_variation("novalues"), InputError);
 }
 
+TEST(SweepValues, BlanksAroundAValueGoAndBlanksInsideItStay) {
+  // Before, every blank went: "2 6" ran 26 Hz and "wing=sp ace.toml" flew space.toml.
+  const auto spaced = sweep::parse_variation(" kinematics.frequency_hz = 26 , 30\t");
+  EXPECT_EQ(spaced.key, "kinematics.frequency_hz");
+  ASSERT_EQ(spaced.values.size(), 2u);
+  EXPECT_EQ(spaced.values[0].value, 26);
+  EXPECT_EQ(spaced.values[1].value, 30);
+  EXPECT_EQ(sweep::parse_variation("k= -0.1 : 0.1 : 0.1").values.size(), 3u);
+  EXPECT_THROW(sweep::parse_variation("kinematics.frequency_hz=2 6,3 0"), InputError);
+  EXPECT_THROW(sweep::parse_variation("k=0:0. 1:1"), InputError);
+  EXPECT_THROW(sweep::parse_variation("numerics.leading_edge=sh ed"), InputError);
+  EXPECT_THROW(sweep::parse_variation(" =1"), InputError);
+  const auto wings = sweep::parse_variation("wing=my wings/sp ace.toml, b.toml");
+  ASSERT_EQ(wings.values.size(), 2u);
+  EXPECT_EQ(wings.values[0].word, "my wings/sp ace.toml");
+  EXPECT_EQ(wings.values[1].word, "b.toml");
+}
+
 TEST(SweepValues, CaseIsReReadWithTheValue) {
   const std::string hover = std::string(FLAPSIM_SOURCE_DIR) + "/cases/hover.toml";
   const auto c = sweep::load_case_with(hover, "kinematics.rotation_phase", -0.15);

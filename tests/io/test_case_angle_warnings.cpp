@@ -60,6 +60,24 @@ TEST(CaseAngleWarnings, ASweepBeyondHalfATurnIsWarned) {
       << c.warnings[0].message;
 }
 
+// A rotation beyond a whole turn: `rotation = { mean_deg = 1e300 }` ran to a lift of
+// -0.7 mN without a word, where the sweep's 510 degrees was warned.
+TEST(CaseAngleWarnings, ARotationBeyondAWholeTurnIsWarned) {
+  const flapsim::io::Case c = case_from_text(kinematics_case("{ cos_deg = [50.0] }", "{ mean_deg = 1e300 }"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(c.warnings[0].key, "kinematics.rotation");
+  EXPECT_EQ(c.warnings[0].line, 5);
+  EXPECT_NE(c.warnings[0].message.find("the rotation angle reaches 1e+300 degrees"), std::string::npos)
+      << c.warnings[0].message;
+  // 90 + 270 = 360 degrees, a whole turn at most: not warned; 90 + 271 is.
+  EXPECT_TRUE(
+      case_from_text(kinematics_case("{ cos_deg = [50.0] }", "{ mean_deg = 90.0, sin_deg = [-270.0] }"))
+          .warnings.empty());
+  EXPECT_EQ(case_from_text(kinematics_case("{ cos_deg = [50.0] }", "{ mean_deg = 90.0, sin_deg = [-271.0] }"))
+                .warnings.size(),
+            1u);
+}
+
 TEST(CaseAngleWarnings, ThePlausibleKinematicsOfEveryShippedCaseAreNotWarned) {
   EXPECT_TRUE(case_from_text(kinematics_case("{ cos_deg = [50.0] }", "{ mean_deg = 90.0, sin_deg = [-45.0] }"))
                   .warnings.empty());
@@ -68,7 +86,10 @@ TEST(CaseAngleWarnings, ThePlausibleKinematicsOfEveryShippedCaseAreNotWarned) {
   for (const auto& e : std::filesystem::directory_iterator(std::string(FLAPSIM_SOURCE_DIR) + "/cases")) {
     if (e.path().extension() != ".toml") continue;
     const flapsim::io::Case c = flapsim::io::load_case_file(e.path().string());
-    for (const auto& w : c.warnings) EXPECT_NE(w.key, "kinematics.sweep") << e.path() << ": " << w.text();
+    for (const auto& w : c.warnings) {
+      EXPECT_NE(w.key, "kinematics.sweep") << e.path() << ": " << w.text();
+      EXPECT_NE(w.key, "kinematics.rotation") << e.path() << ": " << w.text();
+    }
     ++cases;
   }
   EXPECT_GE(cases, 10);

@@ -103,6 +103,22 @@ TEST(OutlineCsv, AMissingOutlineFileIsTheWingFilesErrorAtItsLine) {
   EXPECT_NE(e.message().find("bwo.csv"), std::string::npos) << e.what();
 }
 
+TEST(OutlineCsv, AnOutlineFileThatIsNoFileIsTheWingFilesErrorAtItsLine) {
+  // outline_file naming a folder or /dev/zero: before, the message named that path alone,
+  // not the wing file and the line where it is written (as a missing file's does).
+  flapsim::test::ScratchDir dir("outline_csv_not_a_file");
+  std::filesystem::create_directories(dir / "a_folder.csv");
+  for (const std::string target : {"a_folder.csv", "/dev/zero"}) {
+    std::ofstream(dir / "w.toml") << wing_text("outline_file = \"" + target + "\"\nspan = 40.0\n");
+    auto e = expect_input_error([&] { w::load_wing_file((dir / "w.toml").string()); });
+    EXPECT_EQ(e.file(), (dir / "w.toml").string()) << e.what();
+    EXPECT_EQ(e.line(), 4) << e.what();
+    EXPECT_EQ(e.key(), "planform.outline_file");
+    EXPECT_NE(e.message().find("not a regular file"), std::string::npos) << e.what();
+    EXPECT_NE(e.message().find(target), std::string::npos) << e.what();
+  }
+}
+
 TEST(OutlineCsv, DevicesAndHugeFilesAreRefusedWithoutReading) {
   // /dev/zero read without bound (the issue); now refused at once as not a regular file.
   const auto start = std::chrono::steady_clock::now();

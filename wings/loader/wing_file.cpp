@@ -318,6 +318,11 @@ Planform read_planform(const TomlTable& p) {
       p.fail("outline_file", "file not found: " + file_path +
                                  " (paths are relative to the wing file's folder" +
                                  path_from_file_hint(p.get_string("outline_file"), p.file(), "wing") + ")");
+    // So is a path that is no file (a folder, /dev/zero): before, named against itself alone.
+    if (std::error_code ec; !std::filesystem::is_regular_file(file_path, ec))
+      p.fail("outline_file", file_path +
+                                 " is not a regular file (a device, FIFO or folder): give the outline's CSV "
+                                 "or SVG file");
     if (const std::string unread = unread_outline_format(file_path); !unread.empty())
       p.fail("outline_file", file_path + " is " + unread);
     if (from_drawing) {

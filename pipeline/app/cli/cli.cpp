@@ -101,6 +101,20 @@ int run(int argc, char** argv) {
   add_sweep_command(app);
   add_optimize_command(app);
   for (CLI::App* command : app.get_subcommands({})) add_threads_option(*command);
+  // A first word that is no command: CLI11 says only "A subcommand is required".
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const CLI::App* command : app.get_subcommands({})) {
+      known = known || command->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + command->get_name();
+    }
+    if (!known) {
+      std::cerr << "flapsim: unknown command '" << argv[1] << "': the commands are " << names
+                << " (flapsim --help)\n";
+      return kExitUsage;
+    }
+  }
   // The exit-status contract (exit_status.hpp, README.md): each kind of error has one status.
   try {
     app.parse(argc, argv);

@@ -40,18 +40,22 @@ double tidy(double v, double step) {
   return std::stod(buf);
 }
 
+// The text without the blanks around it; blanks inside stay ("2 6" is no number, a path
+// "my wings/a.toml" keeps its space: before, both lost it, and "2 6" ran 26 Hz).
+std::string trimmed(const std::string& s) {
+  const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+  std::size_t a = 0, b = s.size();
+  while (a < b && blank(s[a])) ++a;
+  while (b > a && blank(s[b - 1])) --b;
+  return s.substr(a, b - a);
+}
+
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> parts;
-  std::string cur;
-  for (char c : s) {
-    if (c == sep) {
-      parts.push_back(cur);
-      cur.clear();
-    } else if (c != ' ') {
-      cur += c;
-    }
-  }
-  parts.push_back(cur);
+  std::size_t from = 0;
+  for (std::size_t at = s.find(sep); at != std::string::npos; from = at + 1, at = s.find(sep, from))
+    parts.push_back(trimmed(s.substr(from, at - from)));
+  parts.push_back(trimmed(s.substr(from)));
   return parts;
 }
 
@@ -75,7 +79,8 @@ Variation parse_variation(const std::string& text) {
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
     bad(text, "expected KEY=start:step:stop or KEY=v1,v2,...");
   Variation v;
-  v.key = text.substr(0, eq);
+  v.key = trimmed(text.substr(0, eq));
+  if (v.key.empty()) bad(text, "expected KEY=start:step:stop or KEY=v1,v2,...");
   const std::string values = text.substr(eq + 1);
   if (takes_paths(v.key)) {  // wing=wings/a.toml,wings/b.toml
     for (const auto& s : split(values, ','))
