@@ -138,8 +138,12 @@ def study_table(title, header, rows, lift, r):
         lines.append("| " + " | ".join(str(v) for v in row) + f" | {scale * f:.4f} | {change} |")
     lines.append("")
     if p is None:
-        lines.append(f"Refinement ratio {r:g}: the last three levels do not converge monotonically "
-                     "(no observed order, no extrapolation).")
+        # Two cases: the changes change sign (oscillating), or keep it and do not shrink.
+        d12, d23 = (lift[-3] - lift[-2], lift[-2] - lift[-1]) if len(lift) >= 3 else (0.0, 0.0)
+        why = ("the changes do not shrink (the levels are not yet in their asymptotic range)"
+               if d12 * d23 > 0.0 else "the changes change sign (the levels oscillate)")
+        lines.append(f"Refinement ratio {r:g}: over the last three levels {why}: no observed order, "
+                     "no extrapolation.")
     elif math.isinf(p):
         lines.append(f"Refinement ratio {r:g}: the last two levels agree exactly.")
     else:

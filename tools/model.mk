@@ -4,8 +4,9 @@
 # Included from the top-level Makefile, which defines BUILD, OUT and `program`.
 #
 # Each stage is a file target whose prerequisites are its real inputs: the wing file
-# and every file it names (its outline CSV; tools/toml_inputs.py lists them), the
-# flapsim binary and, for the reduction, the number of bodies. So make re-runs only the
+# and every file it names (its outline CSV; tools/toml_inputs.py lists them; their paths
+# and contents in .wing_source, below), the flapsim binary and, for the reduction, the
+# number of bodies. So make re-runs only the
 # stages whose inputs changed: a second `make model` right after the first does
 # nothing, touching the outline re-runs mesh, modes and reduce, another BODIES re-runs
 # the reduction only. Every command writes its files atomically, so an interrupted stage
@@ -36,8 +37,18 @@ MODEL_FILES := $(shell $(MODEL_PYTHON) tools/toml_inputs.py wing $(WING))
 $(shell mkdir -p $(MODEL_OUT) && \
   if [ "$$(cat $(MODEL_OUT)/.bodies 2>/dev/null)" != "$(BODIES)" ]; then \
     echo "$(BODIES)" > $(MODEL_OUT)/.bodies; fi)
+# Which files, with which contents, the model is of (rewritten only when that changes):
+# out/<wing>/ is named after the wing file's name alone, so another wing of the same name
+# (wings/a/x.toml after wings/b/x.toml), or a wing restored with an older time stamp
+# (cp -p, tar x, rsync -a), must re-run the stages; before, make judged by time stamps
+# alone and flew the other wing's chain.
+$(shell mkdir -p $(MODEL_OUT) && \
+  for f in $(or $(MODEL_FILES),$(WING)); do realpath "$$f"; sha256sum < "$$f"; done \
+    > $(MODEL_OUT)/.wing_source.new 2> /dev/null; \
+  if cmp -s $(MODEL_OUT)/.wing_source.new $(MODEL_OUT)/.wing_source; then rm -f $(MODEL_OUT)/.wing_source.new; \
+  else mv $(MODEL_OUT)/.wing_source.new $(MODEL_OUT)/.wing_source; fi)
 endif
-MODEL_INPUTS := $(or $(MODEL_FILES),$(WING)) $(MODEL_BIN)
+MODEL_INPUTS := $(or $(MODEL_FILES),$(WING)) $(MODEL_BIN) $(MODEL_OUT)/.wing_source
 
 # `program` runs first (cmake relinks flapsim only if a source changed, keeping its time
 # stamp otherwise; it builds no test or benchmark); the stage files are then judged

@@ -62,14 +62,17 @@ RUN_WING_OPTION   := $(if $(RUN_WING),--wing $(RUN_WING))
 .PHONY: run run-pipeline phase-study plots figures sweep-plots optimize-plots validate reproduce snapshot movie
 
 
+# The check stops a case with bad input before the run; its warnings, which the run prints
+# again, are shown only when it fails (before, every warning was printed twice).
 run: program $(RUN_CHAIN)
-	@$(PIPELINE_BIN) check $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(RUN_WING_OPTION) > /dev/null
+	@said=$$($(PIPELINE_BIN) check $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(RUN_WING_OPTION) 2>&1 > /dev/null) || \
+	  { status=$$?; printf '%s\n' "$$said" >&2; exit $$status; }
 	@start=$$(date +%s.%N); \
 	OMP_NUM_THREADS=1 $(PIPELINE_BIN) run $(CASE) $(if $(RUN_CHAIN),--chain $(RUN_CHAIN)) $(RUN_WING_OPTION) \
 	  --spring-scale $(PIPELINE_SPRINGS) -o $(RUN_OUT) || exit $$?; \
 	end=$$(date +%s.%N); \
 	echo "FSI run: $$(awk "BEGIN{printf \"%.1f\", $$end - $$start}") s wall"; \
-	if [ -f $(RUN_OUT)/chain.pvd ]; then \
+	if [ -f $(RUN_OUT)/run.pvsm ]; then \
 	  $(XVFB_RUN) $(PIPELINE_PYTHON) tools/render_run.py $(RUN_OUT) --phases 0.25 \
 	    -o $(RUN_OUT)/preview.png > /dev/null || exit $$?; \
 	  echo "preview: $(RUN_OUT)/preview.png (the wing a quarter into the last cycle: mid-downstroke of a wingbeat)"; \

@@ -246,6 +246,7 @@ void RunRecorder::write_state() const {
   io::RunState state;
   state.air = setup_.model.air;
   state.chain_pvd = structure_series(setup_) + ".pvd";
+  state.structure_mesh = static_cast<bool>(setup_.fem_structure);
   double length = 0.0;
   for (const auto& b : setup_.chain().bodies) length += b.length;
   if (length > 0.0) state.length_scale = length;

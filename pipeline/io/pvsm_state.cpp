@@ -87,7 +87,8 @@ std::string run_state_xml(const RunState& s) {
 
   // The representations of one 3-D view (ids base + 1 …; a representation belongs to one
   // view): the wing coloured by wing_field with its panel edges, the wake's vortex lines
-  // coloured by circulation, translucent, the chain as thick black lines; a scalar bar
+  // coloured by circulation, translucent, the chain as thick black lines (a FEM's mesh:
+  // RunState::structure_mesh); a scalar bar
   // for each coloured one. Returns the ids the view lists.
   const auto view_representations = [&](int base, const std::string& view_name) {
     std::vector<int> shown;
@@ -130,12 +131,26 @@ std::string run_state_xml(const RunState& s) {
           .number("Diffuse", 0.0);
       proxies.push_back(std::move(wake));
     }
-    ProxyXml chain = representation(base + 3, kChainReader, "chain");
-    chain.value("Representation", "Wireframe")
-        .values("ColorArrayName", {"", "", "", "0", ""})
-        .numbers("DiffuseColor", {0.0, 0.0, 0.0})
-        .numbers("AmbientColor", {0.0, 0.0, 0.0})
-        .number("LineWidth", 4.0);
+    ProxyXml chain = representation(base + 3, kChainReader, s.structure_mesh ? "FEM" : "chain");
+    if (!s.structure_mesh)
+      chain.value("Representation", "Wireframe")
+          .values("ColorArrayName", {"", "", "", "0", ""})
+          .numbers("DiffuseColor", {0.0, 0.0, 0.0})
+          .numbers("AmbientColor", {0.0, 0.0, 0.0})
+          .number("LineWidth", 4.0);
+    else if (s.air)
+      chain.value("Representation", "Wireframe")
+          .values("ColorArrayName", {"", "", "", "0", ""})
+          .numbers("DiffuseColor", {0.2, 0.2, 0.2})
+          .numbers("AmbientColor", {0.2, 0.2, 0.2})
+          .number("Opacity", 0.25)
+          .number("LineWidth", 1.0);
+    else
+      chain.value("Representation", "Surface With Edges")
+          .values("ColorArrayName", {"", "", "", "0", ""})
+          .numbers("DiffuseColor", {0.75, 0.75, 0.75})
+          .numbers("AmbientColor", {0.75, 0.75, 0.75})
+          .number("LineWidth", 1.0);
     proxies.push_back(std::move(chain));
     if (s.air) {
       scalar_bar(base + 4, kWingLut, cp ? "Cp" : "pressure jump [Pa]", {0.89, 0.52});

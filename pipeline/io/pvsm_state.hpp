@@ -44,6 +44,10 @@ struct RunState {
   std::string wing_pvd = "wing.pvd";    ///< relative to the state file
   std::string wake_pvd = "wake.pvd";
   std::string chain_pvd = "chain.pvd";
+  /// The structure's series is the FEM's surface mesh (fem.pvd), not the chain's bars: in
+  /// air thin translucent lines over the wing coloured by wing_field (as thick black lines
+  /// its thousands of edges hid the colours), in vacuum a grey surface with its edges.
+  bool structure_mesh = false;
   double length_scale = 0.05;  ///< wing length [m], places the camera without bounds
   /// The wing's colour field (cell data): "Cp" when the frames carry it, else the
   /// pressure jump "pressure_jump_Pa".

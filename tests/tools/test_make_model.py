@@ -7,7 +7,9 @@ user runs it, into a temporary OUT under build/:
   2. a small wing whose outline is a CSV file (copied into the work folder): the first
      call builds mesh, modes and chain; a second call runs no stage (every file keeps its
      time stamp); touching only the outline re-runs mesh, modes and reduce; another
-     BODIES re-runs the reduction only."""
+     BODIES re-runs the reduction only;
+  3. another wing of the same file name in another folder, older than the model, re-runs
+     every stage, and so does going back to the first."""
 import os
 import subprocess
 import sys
@@ -97,6 +99,39 @@ again = stamps(model, files)
 check(all(again[n] == after[n] for n in stages["mesh"] + stages["modes"]), "another BODIES keeps mesh and modes")
 check(all(again[n] > after[n] for n in stages["reduce"]), "another BODIES re-runs the reduction")
 with open(os.path.join(model, "chain.toml")) as f:
-    check(f.read().count("[[bodies]]") == 2, "the chain has the 2 bodies asked for")
+    stiff_chain = f.read()
+check(stiff_chain.count("[[bodies]]") == 2, "the chain has the 2 bodies asked for")
+
+# 3. Another wing of the same file name in another folder (its film 4 times softer), its
+# files an hour older than the model: out/strip/ is the model of either, and judged by time
+# stamps alone it looked up to date and make run flew the stiffer wing's chain. Its paths
+# and contents (.wing_source) re-run every stage; going back to the first wing does too.
+other = os.path.join(work, "other")
+os.makedirs(other, exist_ok=True)
+other_wing = os.path.join(other, "strip.toml")
+with open(wing) as f, open(other_wing, "w") as g:
+    g.write(f.read().replace("youngs_modulus = 4.0e9", "youngs_modulus = 1.0e9"))
+with open(os.path.join(work, "strip_outline.csv")) as f, open(os.path.join(other, "strip_outline.csv"), "w") as g:
+    g.write(f.read())
+hour_ago = time.time() - 3600
+for path in (other_wing, os.path.join(other, "strip_outline.csv")):
+    os.utime(path, (hour_ago, hour_ago))
+time.sleep(1.1)
+r = make("model", f"WING={other_wing}", "BODIES=2")
+softer = stamps(model, files)
+check(r.returncode == 0, "make model with the other wing of the same name")
+for stage, names in stages.items():
+    check(all(softer[n] > again[n] for n in names), f"another wing of the same name re-ran {stage}")
+with open(os.path.join(model, "chain.toml")) as f:
+    check(f.read() != stiff_chain, "the other wing's chain is its own (a softer film: other springs)")
+time.sleep(1.1)
+r = make("model", f"WING={wing}", "BODIES=2")
+back = stamps(model, files)
+check(r.returncode == 0 and all(back[n] > softer[n] for n in files), "back to the first wing re-ran every stage")
+with open(os.path.join(model, "chain.toml")) as f:
+    check(f.read() == stiff_chain, "back to the first wing, its chain again")
+time.sleep(1.1)
+r = make("model", f"WING={wing}", "BODIES=2")
+check(r.returncode == 0 and stamps(model, files) == back, "and a second call rewrites nothing")
 
 sys.exit(1 if failures else 0)

@@ -3,7 +3,9 @@
 whose [output] vtk_every = 0 (a user's case, written for sweeps) runs it and says that there is
 no preview. Before: the run completed, then tools/render_run.py found no chain.pvd and make
 stopped with Error 2 ("render_run: error: ...: no chain.pvd"), a successful run reported as a
-failure."""
+failure. Each of the case's warnings is printed once (make run's check of the case printed
+them too).
+"""
 import os
 import subprocess
 import sys
@@ -28,6 +30,13 @@ if not os.path.isfile(os.path.join(out, "noframes", "summary.json")):
     failures.append("no summary.json in out/noframes")
 if "preview and ParaView state: none" not in r.stdout:
     failures.append("make run does not say that there is no preview")
+# Its 12 steps a cycle in air are warned about, once: make run's check of the case showed its
+# warnings too, so each was printed twice.
+warnings = [line for line in r.stderr.splitlines() if "warning:" in line]
+if not warnings:
+    failures.append("no warning about the case's 12 steps a cycle")
+if len(set(warnings)) != len(warnings):
+    failures.append(f"a warning printed twice: {warnings}")
 for f in failures:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)

@@ -55,11 +55,22 @@ void print_table(const sweep::SweepPlan& plan, const sweep::SweepReport& report)
     if (!d.unit.empty()) title += " [" + std::string(d.unit) + "]";
     columns.push_back({i, title, std::max(static_cast<int>(title.size()) + 1, 10)});
   }
-  for (const std::string& key : plan.keys) std::printf("%-16s", key.substr(key.rfind('.') + 1).c_str());
+  // The keys' columns: 16 wide, or one more than their longest title or value (a title as
+  // long as 16, chordwise_panels, ran into the next one's).
+  std::vector<int> key_widths;
+  for (std::size_t k = 0; k < plan.keys.size(); ++k) {
+    std::size_t longest = plan.keys[k].size() - (plan.keys[k].rfind('.') + 1);
+    for (const auto& r : report.rows)
+      if (k < r.point.size()) longest = std::max(longest, sweep::value_label(r.point[k]).size());
+    key_widths.push_back(std::max(16, static_cast<int>(longest) + 1));
+  }
+  for (std::size_t k = 0; k < plan.keys.size(); ++k)
+    std::printf("%-*s", key_widths[k], plan.keys[k].substr(plan.keys[k].rfind('.') + 1).c_str());
   for (const Column& col : columns) std::printf(" %*s", col.width, col.title.c_str());
   std::printf("  status\n");
   for (const auto& r : report.rows) {
-    for (const auto& a : r.point) std::printf("%-16s", sweep::value_label(a).c_str());
+    for (std::size_t k = 0; k < r.point.size(); ++k)
+      std::printf("%-*s", k < key_widths.size() ? key_widths[k] : 16, sweep::value_label(r.point[k]).c_str());
     for (const Column& col : columns) {
       const std::string cell =
           r.outcome.results.at(col.result) ? app::format_result(r.outcome.results, col.result) : "nan";
