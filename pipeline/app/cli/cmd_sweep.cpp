@@ -57,15 +57,16 @@ void print_table(const sweep::SweepPlan& plan, const sweep::SweepReport& report)
   }
   // The keys' columns: 16 wide, or one more than their longest title or value (a title as
   // long as 16, chordwise_panels, ran into the next one's).
+  std::vector<std::string> key_titles;
   std::vector<int> key_widths;
   for (std::size_t k = 0; k < plan.keys.size(); ++k) {
-    std::size_t longest = plan.keys[k].size() - (plan.keys[k].rfind('.') + 1);
+    key_titles.push_back(plan.keys[k].substr(plan.keys[k].rfind('.') + 1));
+    std::size_t longest = key_titles.back().size();
     for (const auto& r : report.rows)
       if (k < r.point.size()) longest = std::max(longest, sweep::value_label(r.point[k]).size());
     key_widths.push_back(std::max(16, static_cast<int>(longest) + 1));
   }
-  for (std::size_t k = 0; k < plan.keys.size(); ++k)
-    std::printf("%-*s", key_widths[k], plan.keys[k].substr(plan.keys[k].rfind('.') + 1).c_str());
+  for (std::size_t k = 0; k < key_titles.size(); ++k) std::printf("%-*s", key_widths[k], key_titles[k].c_str());
   for (const Column& col : columns) std::printf(" %*s", col.width, col.title.c_str());
   std::printf("  status\n");
   for (const auto& r : report.rows) {
