@@ -89,9 +89,16 @@ StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
     Eigen::Vector3d along = reference.drag_direction;
     if (reference.kind == LiftReference::Kind::Flapping) {
       // Hover: against the wing's horizontal motion (normal to the lift direction) at r2·R.
+      // At a stroke reversal that motion stops and the direction is undefined: a step that
+      // falls on it (sweep = A cos 2πft at t = T/2, T) had |v| ~ 1e-16 m/s of either sign
+      // from round-off, and its drag ±|F_horizontal| (a mean drag 1.8 % off with the
+      // frequency changed). Below 1e-9 of the reference speed the step's drag and side force
+      // are 0, the mean of the two half strokes' limits there.
       const Eigen::Vector3d v = span_point_velocity(kinematics, reference.r2 * reference.span, s.time);
       const Eigen::Vector3d horizontal = v - v.dot(up) * up;
-      along = horizontal.norm() > 0.0 ? Eigen::Vector3d(-horizontal.normalized()) : Eigen::Vector3d::Zero();
+      along = horizontal.norm() > kReversalSpeedFraction * reference.speed
+                  ? Eigen::Vector3d(-horizontal.normalized())
+                  : Eigen::Vector3d::Zero();
     }
     s.lift = s.force.dot(up);
     s.drag = s.force.dot(along);

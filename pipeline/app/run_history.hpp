@@ -54,6 +54,11 @@ struct StepSample {
   Eigen::Vector3d tip_position = Eigen::Vector3d::Zero();
 };
 
+/// In hover a step whose horizontal speed at r2·R is below this fraction of the reference
+/// speed lies on a stroke reversal: its drag direction is undefined, and its drag and side
+/// force are 0 (docs/fsi.md, "Directions").
+inline constexpr double kReversalSpeedFraction = 1e-9;
+
 /// \brief The sample of the step just taken (after fsi::coupled_step).
 /// \param kinematics  the case's base kinematics (angles, stroke plane)
 /// \param reference   references and directions of the coefficients (ignored in vacuum)
