@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <string>
@@ -133,6 +134,47 @@ TEST(FemModesState, AnimatesTheChosenModeAndNamesIt) {
                                        " --modes 3 --state-mode 4"),
             1);
   EXPECT_FALSE(fs::exists(scratch / "bad" / "fem_modes.pvsm"));
+}
+
+// A mesh too coarse for the modes asked for: the flat plate at 8 mm elements has 19 nodes and
+// fewer modes than 500. Before, --state-mode past the modes computed read beyond the results
+// (a state animating a mode_96 that fem.vtu lacks, "0.00 Hz", or exit 4 with a garbled
+// message). Now a warning says how many there are, and the state animates the last of them.
+TEST(FemModesState, AModePastThoseACoarseMeshGivesIsWarnedAndTheLastOneAnimated) {
+  const flapsim::test::ScratchDir scratch("fem_modes_state_coarse");
+  std::ofstream(scratch / "coarse.toml")
+      << "name = \"coarse\"\nlength_unit = \"mm\"\n[planform]\n"
+         "outline = [[2.5, 0.0], [2.5, 40.0], [-7.5, 40.0], [-7.5, 0.0]]\nclamp_y = 0.0\n"
+         "[materials.pet]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.38\ndensity = 1390.0\n"
+         "[membrane]\nthickness = 0.2\nmaterial = \"pet\"\n[mesh]\nelement_size = 8.0\nvein_element_size = "
+         "8.0\n";
+  const fs::path dir = scratch / "out";
+  const flapsim::test::FlapsimOutcome r = flapsim::test::run_flapsim_capturing_stderr(
+      scratch.path(), "modes " + (scratch / "coarse.toml").string() + " -o " + dir.string() +
+                          " --modes 500 --state-mode 300");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("not the 500 asked for (--modes)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--state-mode 300 is beyond the"), std::string::npos) << r.err;
+  vtkNew<vtkXMLUnstructuredGridReader> vtu;
+  vtu->SetFileName((dir / "fem.vtu").c_str());
+  vtu->Update();
+  int last = 0;
+  char name[16];
+  for (int k = 1; k <= 500; ++k) {
+    std::snprintf(name, sizeof name, "mode_%02d", k);
+    if (vtu->GetOutput()->GetPointData()->GetArray(name)) last = k;
+  }
+  ASSERT_GT(last, 1);
+  ASSERT_LT(last, 300);
+  std::snprintf(name, sizeof name, "mode_%02d", last);
+  const auto proxies = read_proxies(dir / "fem_modes.pvsm");
+  const Proxy* warp = of_type(proxies, "WarpByVector");
+  ASSERT_TRUE(warp);
+  EXPECT_EQ(warp->properties.at("Vectors").at(4), name);
+  const Proxy* text = of_type(proxies, "TextSource");
+  ASSERT_TRUE(text);
+  EXPECT_EQ(text->properties.at("Text").at(0).find("0.00 Hz"), std::string::npos)
+      << text->properties.at("Text").at(0);
 }
 
 }  // namespace

@@ -67,6 +67,26 @@ TEST(OptimizeErrors, BadInputExitsTwoNamingTheOptionWithNothingWritten) {
   }
 }
 
+// A result that only a run shows the case does not set: the rigid plate has no tip bend.
+// Exit 2 after the first run, the message located once (before: "<input>: <input>: key
+// '--maximize'", the start's error relayed by its text and located again).
+TEST(OptimizeErrors, AnObjectiveTheCasesRunsDoNotSetExitsTwoAfterTheFirstRun) {
+  const test::ScratchDir dir("optimize_unset_objective");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  const test::FlapsimOutcome out = test::run_flapsim_capturing_stderr(
+      dir.path(), "optimize " + (dir / "case.toml").string() +
+                      " --vary kinematics.rotation_phase=-0.1:0.1 --maximize peak_tip_bend_deg -o " +
+                      (dir / "out").string());
+  EXPECT_EQ(out.status, 2) << out.err;
+  EXPECT_NE(
+      out.err.find("flapsim: error: <input>: key '--maximize': 'peak_tip_bend_deg' is not set by a run of "
+                   "this case at kinematics.rotation_phase = "),
+      std::string::npos)
+      << out.err;
+  EXPECT_EQ(out.err.find("<input>: <input>"), std::string::npos) << out.err;
+  EXPECT_TRUE(fs::exists(dir / "out" / "evaluations.csv"));  // the run that shows it stays
+}
+
 TEST(OptimizeErrors, AConstraintNoEvaluatedPointSatisfiesIsReportedAndExitsTwo) {
   const test::ScratchDir dir("optimize_infeasible");
   std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);

@@ -17,12 +17,19 @@ class InputError : public std::runtime_error {
       : std::runtime_error(format(file, line, key, message)),
         file_(std::move(file)), line_(line), key_(std::move(key)), message_(message) {}
 
+  /// An error relayed by its text alone (an optimisation's start that failed on another
+  /// rank or thread): what() is \p what as it was, not located again ("<input>: <input>: …").
+  static InputError relayed(const std::string& what) { return InputError(Relayed{}, what); }
+
   const std::string& file() const { return file_; }
   int line() const { return line_; }
   const std::string& key() const { return key_; }
   const std::string& message() const { return message_; }
 
  private:
+  struct Relayed {};
+  InputError(Relayed, const std::string& what) : std::runtime_error(what), line_(0), message_(what) {}
+
   static std::string format(const std::string& file, int line, const std::string& key,
                             const std::string& message) {
     // Built by appending only: GCC 12 warns (-Wrestrict, a false positive, GCC bug 105329)

@@ -63,14 +63,29 @@ void run_modes(const ModesArgs& args) {
   const fem::WingModes& m = r.modes;
   const std::vector<io::ModeLabel>& labels = r.labels;
   const std::vector<io::StaticResult>& results = r.statics;
+  // A coarse mesh has fewer modes than asked for: say so, and animate one it has (before,
+  // --state-mode past them read beyond the results: a "mode 96: 0.00 Hz" state, or exit 4).
+  const int computed = static_cast<int>(m.modes.frequencies_hz.size());
+  if (computed < args.modes)
+    std::fprintf(
+        stderr,
+        "flapsim: warning: the wing's mesh (%d nodes) gives %d modes, not the %d asked for (--modes): "
+        "a finer mesh ([mesh] element_size) gives more\n",
+        mesh.num_nodes(), computed, args.modes);
+  const int state_mode = std::min(args.state_mode, computed);
+  if (state_mode < args.state_mode)
+    std::fprintf(stderr,
+                 "flapsim: warning: --state-mode %d is beyond the %d modes computed: fem_modes.pvsm animates "
+                 "mode %d\n",
+                 args.state_mode, computed, state_mode);
   monitor.stage("writing the outputs");
   // 6. Outputs (each atomic).
   io::write_modes_csv(dir / "modes.csv", m.modes, labels);
   io::write_fem_vtu(dir / "fem.vtu", mesh, wing.clamp_y, m.modes, labels, results);
   {
     io::FemModeView view;
-    view.mode = args.state_mode;
-    const auto k = static_cast<std::size_t>(args.state_mode - 1);
+    view.mode = state_mode;
+    const auto k = static_cast<std::size_t>(state_mode - 1);
     view.frequency_hz = m.modes.frequencies_hz(static_cast<Eigen::Index>(k));
     view.kind = labels[k].kind;
     view.shape_kind = labels[k].shape_kind;
@@ -95,7 +110,7 @@ void run_modes(const ModesArgs& args) {
                 l.beam_share, l.shape_kind.c_str());
   }
   std::printf("wrote %s, %s, %s (ParaView: mode %d animated)\n", (dir / "modes.csv").string().c_str(),
-              (dir / "fem.vtu").string().c_str(), (dir / "fem_modes.pvsm").string().c_str(), args.state_mode);
+              (dir / "fem.vtu").string().c_str(), (dir / "fem_modes.pvsm").string().c_str(), state_mode);
 }
 
 }  // namespace

@@ -269,7 +269,7 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
   if (!report.root) return report;
   if (failed_start) {
     const std::string& why = stop_lines[*failed_start];
-    if (failed_status == "input") throw InputError("", 0, "", why);
+    if (failed_status == "input") throw InputError::relayed(why);
     if (failed_status == "interrupted") {
       const int signal = app::pending_interrupt() != 0 ? app::pending_interrupt() : SIGINT;
       throw app::Interrupted(signal, why + "; the same command again goes on from the points evaluated so far");

@@ -6,7 +6,9 @@
 #include <set>
 #include <string_view>
 
+#include "pipeline/io/case_model.hpp"
 #include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 namespace flapsim::sweep {
 
@@ -108,6 +110,26 @@ void refuse_key_that_reaches_no_input(const VariedKeys& varied, const std::vecto
          "drop it from the " + varied.command);
 }
 
+// The joint springs' factor of a case with no joint springs (a rigid wing, the wing's own
+// FEM), in an optimisation: every case keeps its inputs but for the factor itself, which
+// io::input_hash counts, so the same-inputs rule does not see it (an optimisation of it on a
+// rigid case ran 7 equal runs and wrote the optimum of a flat objective without a word). A
+// sweep warns instead (cmd_sweep.cpp): its rows may pair the factor with keys that matter.
+void refuse_spring_scale_without_springs(const VariedKeys& varied, const SweepInputs& inputs,
+                                         const std::vector<ResolvedCase>& cases, std::size_t k) {
+  if (varied.command != "optimisation" || varied.keys[k] != "spring_scale" || cases.empty()) return;
+  for (const ResolvedCase& r : cases)
+    if (r.c.structure.kind == io::Case::Structure::Kind::Flexible) return;
+  const io::Case& c = cases.front().c;
+  const int line = c.line_of("structure.kind");
+  const std::string where = line > 0 ? " (" + inputs.case_file + " line " + std::to_string(line) + ")" : "";
+  refuse(varied, k,
+         "the case's structure.kind = \"" +
+             std::string(wings::choice_name(io::kStructureKindNames, c.structure.kind)) + "\"" + where +
+             " has no joint springs to scale",
+         "drop it from the " + varied.command + ", or fly a flexible case (structure.kind = \"flexible\")");
+}
+
 }  // namespace
 
 void refuse_interval_the_command_sets(const VariedKeys& varied, int vtk_every) {
@@ -128,6 +150,7 @@ void refuse_keys_that_change_nothing(const VariedKeys& varied, const SweepInputs
   refuse_interval_the_command_sets(varied, vtk_every);
   for (std::size_t k = 0; k < varied.keys.size(); ++k) {
     refuse_mesh_size_the_case_sets(varied, inputs, cases, k);
+    refuse_spring_scale_without_springs(varied, inputs, cases, k);
     refuse_key_that_reaches_no_input(varied, points, cases, k);
   }
 }
