@@ -5,7 +5,6 @@ preview.png beside run.pvsm and says where they are. Before: make looked for cha
 alone, said "preview and ParaView state: none (the case writes no frames ...)" and made no
 preview, though the run had written its frames and its state."""
 import os
-import subprocess
 import sys
 
 import tool_test_args
@@ -18,9 +17,7 @@ with open(case, "w") as f:  # the FEM plate of test_render_fem_run.py, flapped i
             "[kinematics]\nfrequency_hz = 26.1\nsweep = { cos_deg = [20.0] }\nrotation = 90.0\n"
             '[structure]\nkind = "fem"\nelement_size_mm = 2.5\n'
             "[numerics]\nsteps_per_cycle = 48\ncycles = 1\n[output]\nvtk_every = 6\n")
-r = subprocess.run(["make", "-C", a.source, "--no-print-directory", f"BUILD={a.build}", f"OUT={out}", "run",
-                    f"CASE={case}"], capture_output=True, text=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
-print(r.stdout[-3000:], r.stderr[-3000:])
+r = tool_test_args.make_run(a.source, a.build, out, case)
 check = tool_test_args.Checks()
 run = os.path.join(out, "fem_preview")
 check(r.returncode == 0, f"make run exited {r.returncode}")

@@ -7,7 +7,6 @@ failure. Each of the case's warnings is printed once (make run's check of the ca
 them too).
 """
 import os
-import subprocess
 import sys
 
 import tool_test_args
@@ -20,9 +19,7 @@ with open(case, "w") as f:
             'sweep = { cos_deg = [50.0] }\nrotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n'
             '[structure]\nkind = "rigid"\n[numerics]\nsteps_per_cycle = 12\ncycles = 1\nchordwise_panels = 2\n'
             'spanwise_panels = 3\n[output]\nvtk_every = 0\n')
-r = subprocess.run(["make", "-C", a.source, "--no-print-directory", f"BUILD={a.build}", f"OUT={out}", "run",
-                    f"CASE={case}"], capture_output=True, text=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
-print(r.stdout[-3000:], r.stderr[-3000:])
+r = tool_test_args.make_run(a.source, a.build, out, case)
 failures = []
 if r.returncode != 0:
     failures.append(f"make run exited {r.returncode}")

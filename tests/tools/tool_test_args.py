@@ -54,6 +54,15 @@ def run_case(flapsim, case, run):
     return run
 
 
+def make_run(source, build, out, case):
+    """`make run CASE=case` of the source tree with BUILD and OUT given, one OpenMP thread;
+    prints the end of its output and returns the CompletedProcess (stdout, stderr as text)."""
+    r = subprocess.run(["make", "-C", source, "--no-print-directory", f"BUILD={build}", f"OUT={out}", "run",
+                        f"CASE={case}"], capture_output=True, text=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
+    print(r.stdout[-3000:], r.stderr[-3000:])
+    return r
+
+
 class Checks:
     """check(ok, message): records and prints a failed check; `failures` lists them."""
 
