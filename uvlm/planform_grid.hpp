@@ -21,6 +21,11 @@ namespace flapsim::uvlm {
 
 enum class Spacing { Uniform, Cosine };
 
+/// An end whose chord reaches `min_end_chord` times the largest within this fraction of the
+/// span from its end is square (a root edge off perpendicular by round-off): its station
+/// sits that far in, with the chord there, not where a sub-micron slant passes the limit.
+inline constexpr double kSquareEndFraction = 1e-6;
+
 struct PlanformGridOptions {
   int chordwise = 6;                        ///< nc panels
   int spanwise = 10;                        ///< ns panels

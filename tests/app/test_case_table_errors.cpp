@@ -91,18 +91,42 @@ TEST(CaseTableErrors, AByteOrderMarkIsSkippedAndSemicolonsAreNamed) {
       << r.err;
 }
 
-// A number with a decimal comma in quotes ("20,5", a spreadsheet's CSV in such a locale)
-// splits into two cells; the message says why. Before: only "the row has 2 cells, the header 1".
+// A number with a decimal comma in quotes ("20,5", a spreadsheet's CSV in such a locale) is
+// one quoted cell; the message says the decimal mark is a point. Before: the comma split it
+// ("the row has 2 cells, the header 1 (the row has quotes: ...)").
 TEST(CaseTableErrors, AQuotedDecimalCommaIsNamed) {
   ScratchDir dir("table_quoted_comma");
   const FlapsimOutcome r = sweep_with_table(dir, "kinematics.frequency_hz\n\"20,5\"\n");
   EXPECT_EQ(r.status, 2) << r.err;
-  EXPECT_NE(r.err.find((dir / "table.csv").string() + ":2: the row has 2 cells, the header 1 (the row has quotes: "
-                                                       "the table's cells are plain numbers separated by commas, with a "
-                                                       "point as the decimal mark: 20.5, not \"20,5\")"),
+  EXPECT_NE(r.err.find(located(dir, 2, "kinematics.frequency_hz") +
+                       "'20,5' is not a number: the table's decimal mark is a point (20.5, not \"20,5\")"),
             std::string::npos)
       << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+// Quoted cells as spreadsheets and R's write.csv write them (RFC 4180): a quoted header, a
+// quoted path holding a comma, "" for a quote. Before: the header was the unknown key
+// '"kinematics.rotation_phase"', and "my wing,v2.toml" two cells.
+TEST(CaseTableErrors, QuotedCellsAreReadAsSpreadsheetsWriteThem) {
+  ScratchDir dir("table_quoted_cells");
+  std::ofstream(dir / "t.csv") << "\"kinematics.rotation_phase\", \"numerics.leading_edge\",\"wing\"\n"
+                                  "\"-0.1\",\"shed\", \"my wing,v2.toml\" \n0.1,none,\"a \"\"b\"\".toml\"\n";
+  const flapsim::sweep::CaseTable t = flapsim::sweep::read_case_table((dir / "t.csv").string());
+  ASSERT_EQ(t.keys.size(), 3u);
+  EXPECT_EQ(t.keys[0], "kinematics.rotation_phase");
+  EXPECT_EQ(t.keys[2], "wing");
+  ASSERT_EQ(t.points.size(), 2u);
+  EXPECT_EQ(t.points[0][0].value, -0.1);
+  EXPECT_EQ(t.points[0][1].word, "shed");
+  EXPECT_EQ(t.points[0][2].word, "my wing,v2.toml");
+  EXPECT_EQ(t.points[1][2].word, "a \"b\".toml");
+  // A quote left open is named at its row.
+  const FlapsimOutcome r = sweep_with_table(dir, "kinematics.rotation_phase\n\"-0.1\n");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find((dir / "table.csv").string() + ":2: a quote (\") opened and not closed in the row"),
+            std::string::npos)
+      << r.err;
 }
 
 }  // namespace

@@ -40,6 +40,26 @@ TEST(PlanformGrid, RectangleNodesAndArea) {
   EXPECT_NEAR(g.nodes(1, 2 + 5 * 5), 1.0, 1e-15);
 }
 
+// A root edge square only to round-off (a drawing rotated by 90°, a corner off by 1e-12 of
+// the span): before, the root station went to where the slant's chord passes 0.1 of the
+// largest, 1e-13 in, and the root strip started from that chord (a lattice 2.7 % smaller,
+// CL 1.8 % lower in a hover). Now its grid is the square root's to the slant's size.
+TEST(PlanformGrid, ARootSquareOnlyToRoundOffGivesTheSquareRootsGrid) {
+  PlanformGridOptions o;
+  const std::vector<Eigen::Vector2d> square = {
+      {0.0025, 0.0}, {0.0025, 0.04}, {-0.0075, 0.04}, {-0.0075, 0.0}};
+  const PlanformGrid g = make_planform_grid(square, o);
+  for (const double slant : {1e-15, -1e-15, 1e-9}) {
+    std::vector<Eigen::Vector2d> off = square;
+    off[3].y() += slant;  // the root's trailing corner [m]
+    const PlanformGrid h = make_planform_grid(off, o);
+    EXPECT_NEAR(h.lattice_area, g.lattice_area, 1e-5 * g.lattice_area) << slant;
+    EXPECT_NEAR(h.y_root, g.y_root, 1e-6 * 0.04 + std::abs(slant)) << slant;
+    // The root station's chord is the full 10 mm.
+    EXPECT_NEAR(h.nodes(0, 0) - h.nodes(0, o.chordwise), 0.01, 1e-6) << slant;
+  }
+}
+
 TEST(PlanformGrid, CosineSpacingClustersAtBothEdges) {
   PlanformGridOptions o;
   o.chordwise = 4;

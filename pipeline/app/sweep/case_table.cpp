@@ -16,19 +16,61 @@ using wings::without_byte_order_mark;
 
 namespace {
 
-std::vector<std::string> cells_of(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cur;
-  for (char c : line) {
-    if (c == ',') {
-      cells.push_back(trim(cur));
-      cur.clear();
+// One cell of a row: its text, unquoted, and whether it was quoted.
+struct TableCell {
+  std::string text;
+  bool quoted = false;
+};
+
+// The cells of a row, separated by commas; a cell in double quotes (a spreadsheet's text
+// cells, R's write.csv quotes every cell and the header) may hold commas, and "" in it is a
+// quote (RFC 4180). Before, quotes were dropped only around a whole data cell: a quoted
+// header was an unknown key '"kinematics.rotation_phase"', and "my wing,v2.toml" two cells.
+std::vector<TableCell> cells_of(const std::string& line, const std::string& path, int number) {
+  std::vector<TableCell> cells;
+  std::size_t i = 0;
+  while (true) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    TableCell cell;
+    if (i < line.size() && line[i] == '"') {
+      cell.quoted = true;
+      for (++i;; ++i) {
+        if (i >= line.size())
+          throw InputError(path, number, "", "a quote (\") opened and not closed in the row");
+        if (line[i] != '"') {
+          cell.text += line[i];
+        } else if (i + 1 < line.size() && line[i + 1] == '"') {
+          cell.text += '"';
+          ++i;
+        } else {
+          ++i;
+          break;
+        }
+      }
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+      if (i < line.size() && line[i] != ',')
+        throw InputError(path, number, "", "text after the closing quote of the cell \"" + cell.text + "\"");
     } else {
-      cur += c;
+      std::string raw;
+      while (i < line.size() && line[i] != ',') raw += line[i++];
+      cell.text = trim(raw);
     }
+    cells.push_back(std::move(cell));
+    if (i >= line.size()) break;
+    ++i;  // the comma
   }
-  cells.push_back(trim(cur));
   return cells;
+}
+
+// "20,5": a number with a decimal comma (a spreadsheet's CSV in such a locale, quoted).
+bool decimal_comma_number(const std::string& s) {
+  const auto comma = s.find(',');
+  if (comma == std::string::npos || s.find(',', comma + 1) != std::string::npos) return false;
+  std::string with_point = s;
+  with_point[comma] = '.';
+  double v = 0.0;
+  const auto r = std::from_chars(with_point.data(), with_point.data() + with_point.size(), v);
+  return r.ec == std::errc() && r.ptr == with_point.data() + with_point.size();
 }
 
 }  // namespace
@@ -48,42 +90,33 @@ CaseTable read_case_table(const std::string& path) {
     ++number;
     const std::string t = trim(number == 1 ? without_byte_order_mark(line) : line);
     if (t.empty() || t.front() == '#') continue;
-    const auto cells = cells_of(t);
+    const std::vector<TableCell> cells = cells_of(t, path, number);
     if (header) {
       // A table of one column whose name holds a ';' was written with semicolons (a
       // spreadsheet's CSV in a locale whose decimal mark is the comma).
-      if (cells.size() == 1 && cells[0].find(';') != std::string::npos)
-        throw InputError(path, number, "",
-                         "the header \"" + cells[0] + "\" is separated by ';': the table's cells are separated by "
-                         "commas, with a point as the decimal mark (kinematics.rotation_phase,air.density)");
+      if (cells.size() == 1 && cells[0].text.find(';') != std::string::npos)
+        throw InputError(
+            path, number, "",
+            "the header \"" + cells[0].text +
+                "\" is separated by ';': the table's cells are separated by "
+                "commas, with a point as the decimal mark (kinematics.rotation_phase,air.density)");
       std::set<std::string> seen;
-      for (const std::string& k : cells) {
-        if (k.empty()) throw InputError(path, number, "", "empty column name in the header");
-        if (!seen.insert(k).second) throw InputError(path, number, k, "the column appears twice");
+      for (const TableCell& k : cells) {
+        if (k.text.empty()) throw InputError(path, number, "", "empty column name in the header");
+        if (!seen.insert(k.text).second) throw InputError(path, number, k.text, "the column appears twice");
+        table.keys.push_back(k.text);
       }
-      table.keys = cells;
       table.header_line = number;
       header = false;
       continue;
     }
-    if (cells.size() != table.keys.size()) {
-      // A quoted number with a decimal comma ("20,5", as a spreadsheet in such a locale
-      // writes it) splits into two cells: say so rather than count cells.
-      const bool quoted_comma = t.find('"') != std::string::npos;
+    if (cells.size() != table.keys.size())
       throw InputError(path, number, "",
                        "the row has " + std::to_string(cells.size()) + " cells, the header " +
-                           std::to_string(table.keys.size()) +
-                           (quoted_comma ? " (the row has quotes: the table's cells are plain numbers separated by "
-                                           "commas, with a point as the decimal mark: 20.5, not \"20,5\")"
-                                         : ""));
-    }
+                           std::to_string(table.keys.size()));
     CasePoint point;
     for (std::size_t i = 0; i < cells.size(); ++i) {
-      // A spreadsheet may quote its text cells ("shed"): one pair of quotes around a cell is dropped.
-      const std::string& cell = cells[i];
-      const bool quoted = cell.size() >= 2 && cell.front() == '"' && cell.back() == '"' &&
-                          cell.find('"', 1) == cell.size() - 1;
-      const std::string s = quoted ? cell.substr(1, cell.size() - 2) : cell;
+      const std::string& s = cells[i].text;
       if (is_word_value(s) || (takes_paths(table.keys[i]) && !s.empty())) {  // shed, true; a wing file
         point.push_back(word_assignment(table.keys[i], s));
         continue;
@@ -91,7 +124,13 @@ CaseTable read_case_table(const std::string& path) {
       double v = 0.0;
       const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
       if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v))
-        throw InputError(path, number, table.keys[i], "'" + s + "' is not a number");
+        throw InputError(
+            path, number, table.keys[i],
+            "'" + s + "' is not a number" +
+                (decimal_comma_number(s)
+                     ? std::string(": the table's decimal mark is a point (" + s.substr(0, s.find(',')) +
+                                   "." + s.substr(s.find(',') + 1) + ", not \"" + s + "\")")
+                     : std::string()));
       point.push_back({table.keys[i], v});
     }
     table.points.push_back(std::move(point));
