@@ -1,5 +1,8 @@
 #include "pipeline/app/run_history.hpp"
 
+#include <cmath>
+#include <numbers>
+
 #include "mbd/angle_units.hpp"
 #include "mbd/chain_energy.hpp"
 #include "mbd/chain_kinematics.hpp"
@@ -62,6 +65,19 @@ constexpr HistoryColumn kColumns[] = {
      [](const StepSample& s) { return s.tip_twist * kRadToDeg; }},
 };
 
+// A section's stroke angles read from its rotation lie in (−π, π]; the prescribed base's
+// keep counting (a revolving wing's sweep passes 360°, a rotation's mean plus amplitude
+// may pass 180°). Each is moved by the whole turns that bring it nearest the base's, so a
+// rigid wing's tip reads the base's angles and a flexible one's its lag, with no ±360° jumps
+// (until 2 Dec 2026 a revolving wing's phi_tip_deg read 9, 99, −171, 0 where phi_base_deg
+// read 9, 459, 909, 2160).
+mbd::StrokeAngles turned_as_the_base(mbd::StrokeAngles a, const mbd::WingKinematics::Angles& base) {
+  constexpr double kTurn = 2.0 * std::numbers::pi;
+  a.sweep += kTurn * std::round((base.sweep.value - a.sweep) / kTurn);
+  a.rotation += kTurn * std::round((base.rotation.value - a.rotation) / kTurn);
+  return a;
+}
+
 }  // namespace
 
 std::span<const HistoryColumn> history_columns() { return kColumns; }
@@ -75,8 +91,8 @@ StepSample sample_step(const fsi::FsiModel& model, const fsi::FsiData& data,
   s.time = data.time();
   s.base = kinematics.angles(s.time);
   const Eigen::Matrix3d r_sg = mbd::rotation_y(kinematics.stroke_plane_angle).transpose();
-  s.tip = mbd::stroke_angles(r_sg * out.tip_rotation);
-  s.outer = mbd::stroke_angles(r_sg * out.outer_rotation);
+  s.tip = turned_as_the_base(mbd::stroke_angles(r_sg * out.tip_rotation), s.base);
+  s.outer = turned_as_the_base(mbd::stroke_angles(r_sg * out.outer_rotation), s.base);
   s.tip_bend = out.tip_bend;
   s.tip_twist = out.tip_twist;
   s.tip_position = out.tip_position;

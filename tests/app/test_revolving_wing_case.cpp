@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include "app/history_csv.hpp"
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 
@@ -19,8 +20,11 @@ using flapsim::test::run_flapsim;
 const std::string kSource = FLAPSIM_SOURCE_DIR;
 
 std::string revolving_case(const std::string& revolution) {
-  return "name = \"revolve\"\nwing = \"" + kSource + "/wings/flat_plate.toml\"\n"
-         "[kinematics]\nfrequency_hz = 2.0\nsweep = 0.0\nrotation = 45.0\n" + revolution + "\n"
+  return "name = \"revolve\"\nwing = \"" + kSource +
+         "/wings/flat_plate.toml\"\n"
+         "[kinematics]\nfrequency_hz = 2.0\nsweep = 0.0\nrotation = 45.0\n" +
+         revolution +
+         "\n"
          "[structure]\nkind = \"rigid\"\n"
          "[numerics]\nsteps_per_cycle = 40\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 6\n"
          "[output]\nvtk_every = 0\n";
@@ -32,8 +36,11 @@ TEST(RevolvingWingCase, RunsAndRefersItsCoefficientsToTheSteadyRevolution) {
   // Ω r2 R = 4π · 0.040 / √3 = 0.29022 m/s, reached after the 0.1 s ramp; one period of
   // 0.5 s is one revolution.
   flapsim::test::ScratchDir dir("revolving_case");
-  std::ofstream(dir / "case.toml") << revolving_case("revolution = { rate_deg_per_s = -720.0, ramp_s = 0.1 }");
-  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string(), dir / "run.txt"), 0);
+  std::ofstream(dir / "case.toml") << revolving_case(
+      "revolution = { rate_deg_per_s = -720.0, ramp_s = 0.1 }");
+  ASSERT_EQ(
+      run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string(), dir / "run.txt"),
+      0);
   // The report has no rotation phase for a wing that never reverses (it printed "base nan").
   const std::string report = read_text(dir / "run.txt");
   EXPECT_NE(report.find("mean lift (last cycle)"), std::string::npos) << report;
@@ -63,6 +70,27 @@ TEST(RevolvingWingCase, CheckNamesTheRevolutionNotStrokes) {
   EXPECT_NE(said.find("revolving"), std::string::npos) << said;
   EXPECT_EQ(said.find("downstroke"), std::string::npos) << said;
   EXPECT_EQ(said.find("reversal"), std::string::npos) << said;
+}
+
+// A rigid wing's sections turn with its base: over three revolutions phi_tip_deg and
+// phi_outer_deg read phi_base_deg (to round-off), past 360° as it does. Until 2 Dec 2026 the
+// sections' angles were read into (−180°, 180°] (9, 99, −171, 0 where the base read 9, 459,
+// 909, 2160), and a flexible wing's lag behind its base jumped by 360°.
+TEST(RevolvingWingCase, ARigidWingsSectionsCountTheTurnsAsItsBase) {
+  flapsim::test::ScratchDir dir("revolving_case_turns");
+  std::string c = revolving_case("revolution = { rate_deg_per_s = 720.0 }");
+  c.replace(c.find("cycles = 1"), 10, "cycles = 3");
+  c.insert(c.find("[kinematics]"), "air = \"none\"\n");
+  std::ofstream(dir / "case.toml") << c;
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
+  const flapsim::test::HistoryCsv h = flapsim::test::read_history_csv(dir / "out" / "history.csv");
+  ASSERT_EQ(h.rows.size(), 120u);
+  EXPECT_NEAR(h.at(120, "phi_base_deg"), 1080.0, 1e-9);  // 720°/s for 1.5 s
+  for (long step = 1; step <= 120; ++step) {
+    for (const char* section : {"phi_tip_deg", "phi_outer_deg"})
+      ASSERT_NEAR(h.at(step, section), h.at(step, "phi_base_deg"), 1e-6) << section << " at step " << step;
+    ASSERT_NEAR(h.at(step, "alpha_tip_deg"), h.at(step, "alpha_base_deg"), 1e-6) << "step " << step;
+  }
 }
 
 TEST(RevolvingWingCase, ARevolutionWithoutARateIsRefusedNamingTheKey) {
