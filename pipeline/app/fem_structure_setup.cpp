@@ -20,6 +20,8 @@ void check_case_mesh_sizes(const io::Case& c, const wings::Wing& wing, const fem
   keys.vein_given = c.structure.fem_vein_element_size > 0.0;
   keys.length_scale = 1e-3;
   keys.unit = "mm";
+  keys.element_not_given =
+      "the membrane's element size of the wing file (" + wing.source_file + ", [mesh] element_size)";
   if (const auto problem = wings::mesh_size_problem(sized, keys))
     throw InputError(c.file, c.line_of(problem->key), problem->key, problem->what);
 }

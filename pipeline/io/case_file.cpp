@@ -38,8 +38,12 @@ std::string existing_file(const TomlTable& t, std::string_view key) {
   if (!std::filesystem::exists(path, ec)) {
     // Written relative to the folder the command runs in (`wing = "wings/hawkmoth.toml"` in a
     // case elsewhere, run from the repository): say how to reach it from the case file's folder.
-    const std::string hint = wings::path_from_file_hint(t.get_string(key), t.file(), "case");
-    t.fail(key, "file not found: " + path + " (paths are relative to the case file's folder" + hint + ")");
+    const std::string written = t.get_string(key);
+    const std::string hint = wings::path_from_file_hint(written, t.file(), "case");
+    // The path as written, and where that is from the folder the command runs in.
+    const std::string from_here = written == path ? "" : ", here " + path;
+    t.fail(key, "file not found: " + written + " (paths are relative to the case file's folder" + from_here +
+                    hint + ")");
   }
   if (!std::filesystem::is_regular_file(path, ec))
     t.fail(key, "not a regular file (a device, FIFO or folder): " + path);

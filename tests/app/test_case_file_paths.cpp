@@ -50,6 +50,13 @@ TEST(CaseFilePaths, AWingWrittenRelativeToTheCurrentFolderIsShownItsPathFromTheC
   const auto none = check_in(dir, "studies/a/nowhere.toml");
   EXPECT_EQ(none.status, 2);
   EXPECT_EQ(none.err.find("from the case file's folder it is"), std::string::npos) << none.err;
+  // The path as the case writes it, then where that is from the current folder (the message
+  // showed only the latter: a case writing "../../wings/x.toml" read "../wings/x.toml").
+  EXPECT_NE(
+      none.err.find("file not found: wings/none.toml (paths are relative to the case file's folder, here "
+                    "studies/a/wings/none.toml)"),
+      std::string::npos)
+      << none.err;
 }
 
 // The same for a wing's outline_file, relative to the wing file's folder.

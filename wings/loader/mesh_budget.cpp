@@ -33,9 +33,12 @@ std::string number(double v) {
 std::optional<MeshSizeProblem> mesh_size_problem(const Wing& wing, const MeshSizeKeys& keys) {
   const double h = wing.mesh.element_size, hv = wing.mesh.vein_element_size;
   const auto length = [&](double metres) { return number(metres / keys.length_scale) + " " + keys.unit; };
-  if (hv > h * (1 + 1e-12))
+  if (hv > h * (1 + 1e-12)) {
+    const std::string& membrane =
+        keys.element_given || keys.element_not_given.empty() ? keys.element : keys.element_not_given;
     return MeshSizeProblem{keys.vein_given ? keys.vein : keys.element,
-                           "must not exceed " + keys.element + " (" + length(hv) + " against " + length(h) + ")"};
+                           "must not exceed " + membrane + " (" + length(hv) + " against " + length(h) + ")"};
+  }
   if (h > 0.5 * wing.span)
     return MeshSizeProblem{keys.element, "must not exceed half the span (" + keys.element + " " + length(h) +
                                              ", span " + length(wing.span) + ")"};

@@ -33,6 +33,9 @@ struct MeshSizeKeys {
   bool element_given = false, vein_given = false;
   double length_scale = 1.0;  ///< metres per unit [m]
   std::string unit = "m";
+  /// The membrane's size named in the veins' message where `element` was not given (the
+  /// case's vein size against the wing file's membrane size); empty: `element`.
+  std::string element_not_given;
 };
 
 /// A mesh size refused: the key to name (one of MeshSizeKeys') and why.
