@@ -73,6 +73,20 @@ TreeParameters tree_parameters(double tolerance) {
   return {4, 0.12, tolerance};
 }
 
+double SegmentTree::reserved_bytes(std::size_t n, int threads) {
+  // The arrays reserve() assigns, in its order.
+  const double segments = static_cast<double>(n);
+  const double cap = kPiecesPerSegment * segments;
+  const double nodes = std::floor(cap / 4) + 64;
+  const double padded = cap + nodes * (kLanes - 1);
+  const double d = sizeof(double), u32 = sizeof(std::uint32_t), u64 = sizeof(std::uint64_t);
+  double bytes =
+      10 * segments * d + 13 * cap * d + 10 * padded * d + padded * u32 + 2 * cap * u64 + 3 * cap * u32;
+  bytes += nodes * (sizeof(Node) + 3 * terms_up_to(kMaxOrder) * d + u32);
+  bytes += std::max(threads, 1) * (2 * segments * u32 + 12 * (segments + kLanes) * d);
+  return bytes;
+}
+
 void SegmentTree::reserve(std::size_t n) {
   const std::size_t cap = kPiecesPerSegment * n;
   // Nodes: a leaf holds up to kLeafSegments pieces and every internal node ≥ 2 children;

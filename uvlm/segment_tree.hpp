@@ -76,6 +76,9 @@ class SegmentTree {
   /// Allocate for up to `segments` segments (and kPiecesPerSegment pieces per segment),
   /// and the scratch of omp_get_max_threads() threads (more threads are not used).
   void reserve(std::size_t segments);
+  /// The bytes reserve(segments) allocates with `threads` threads' scratch (about 2.6 kB a
+  /// segment on two threads): what a run's memory estimate counts for the tree code.
+  static double reserved_bytes(std::size_t segments, int threads);
 
   /// Sort `segments` into the tree and compute the node moments.
   /// \param core  the core the segments are summed with (its radius and model; each

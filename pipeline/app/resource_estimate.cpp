@@ -1,5 +1,6 @@
 #include "pipeline/app/resource_estimate.hpp"
 
+#include <omp.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -10,6 +11,7 @@
 
 #include "pipeline/app/run_history.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
+#include "uvlm/segment_tree.hpp"
 #include "wings/loader/input_error.hpp"
 
 namespace flapsim::app {
@@ -90,10 +92,20 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
     const int merge = shed ? n.sheet_merge_steps : 0, spread = n.sheet_merge_spread_steps;
     memory += wake_nodes * 6 * 8 + rows * ns * 8 + wake_segments * 8 * 8;
+    double summed_segments = wake_segments;
     if (shed) {  // the same per ring, its rings' node rows and one more (the release row)
       const double rings = uvlm::sheet_ring_capacity(steps);
-      memory += (rings + 1.0) * (ns + 1.0) * 6 * 8 + rings * ns * 8 + ((rings + 1.0) * ns + rings * (ns + 1.0)) * 8 * 8;
+      const double sheet_segments = (rings + 1.0) * ns + rings * (ns + 1.0);
+      memory += (rings + 1.0) * (ns + 1.0) * 6 * 8 + rings * ns * 8 + sheet_segments * 8 * 8;
+      summed_segments += sheet_segments;
     }
+    // The tree code's storage, reserved for every segment the wake (and sheet) can hold
+    // (vortex_lattice.cpp): about 2.6 kB a segment, 40 times the segment's own. Until 2 Dec
+    // 2026 it was not counted: a 200-cycle hover with the tree estimated at 82 MB held 495 MB
+    // after 6 s, and a run under `ulimit -v` that check passed stopped out of memory.
+    if (n.wake_sum == uvlm::WakeSum::Tree)
+      memory +=
+          uvlm::SegmentTree::reserved_bytes(static_cast<std::size_t>(summed_segments), omp_get_max_threads());
     e.lattice_bytes = 2.0 * panels * panels * 8;  // influence matrix and its LU
     memory += e.lattice_bytes;
     // Interactions: at step k the wake has r = min(k, max_rows) rows; the wake's nodes move
