@@ -25,6 +25,9 @@ using wings::TomlTable;
 
 namespace {
 
+/// The largest initial joint rate a case takes [°/s] (structure.initial_rates_deg_per_s).
+constexpr double kMaxInitialRateDegPerS = 1e7;
+
 /// A number as a message shows it: 6 significant digits (0.25, 0.625, 1e-09).
 std::string number_text(double x) {
   std::ostringstream o;
@@ -153,11 +156,17 @@ Case::Structure read_structure(const TomlTable& root) {
     if (s.kind == Kind::Rigid)
       t.fail(key, "a rigid wing has no joints: give initial angles for a flexible structure");
     if (s.kind == Kind::Fem)
-      t.fail(key, "the FEM structure starts at rest relative to its base, undeformed; joint angles are "
-                  "the bar chain's (kind = \"flexible\")");
-    std::vector<double> v = t.get_doubles(key, Bounds::any(), 1);
-    for (double& x : v) x *= kDegToRad;
+      t.fail(key,
+             "the FEM structure starts at rest relative to its base, undeformed; joint angles are "
+             "the bar chain's (kind = \"flexible\")");
     const bool angles = std::string_view(key) == "initial_angles_deg";
+    // A joint bent by more than half a turn, or turning faster than 10⁷ °/s (28 000 turns a
+    // second), is a typo: refused here rather than failing the run's first step (1e300 was
+    // read, and the run stopped with exit status 3 printing a 300-digit angle).
+    const Bounds range = angles ? Bounds::closed(-180.0, 180.0)
+                                : Bounds::closed(-kMaxInitialRateDegPerS, kMaxInitialRateDegPerS);
+    std::vector<double> v = t.get_doubles(key, range, 1);
+    for (double& x : v) x *= kDegToRad;
     (angles ? s.initial_angles : s.initial_rates) = v;
     (angles ? s.initial_angles_line : s.initial_rates_line) = t.line_of(key);
   }
@@ -263,6 +272,17 @@ Marker read_marker(const TomlTable& t, std::size_t i, int bodies) {
   t.expect_only({"name", "body", "point"});
   Marker m;
   m.name = t.get_string("name", "marker " + std::to_string(i + 1));
+  // The name heads history.csv's columns <name>_x_m, …: a comma, a quote or a control
+  // character there (quoted by RFC 4180) breaks the readers docs/output_files.md shows
+  // (numpy.genfromtxt with names=True), and an empty name gives columns "_x_m".
+  const bool plain = std::all_of(m.name.begin(), m.name.end(), [](char ch) {
+    return static_cast<unsigned char>(ch) >= 0x20 && ch != 0x7f && ch != ',' && ch != '"';
+  });
+  if (m.name.empty() || m.name.size() > 64 || !plain)
+    t.fail("name",
+           "a marker's name (it heads history.csv's columns) is 1 to 64 characters without commas, "
+           "quotes or control characters, found \"" +
+               m.name + "\"");
   m.body = read_body(t, bodies);
   m.point = t.get_length_vector3("point");
   return m;

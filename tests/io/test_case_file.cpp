@@ -143,7 +143,8 @@ TEST(CaseFileErrors, EachProblemNamesLineAndKey) {
   const Bad cases[] = {
       // missing frequency: reported at the [kinematics] header
       {"wing = \"valid_tiny_wing.toml\"\n[kinematics]\nsweep = 0.0\nrotation = 1.0\n"
-       "[structure]\nkind = \"rigid\"\n", 2, "kinematics.frequency_hz"},
+       "[structure]\nkind = \"rigid\"\n",
+       2, "kinematics.frequency_hz"},
       {kHead + "[numerics]\nsteps_per_cycle = -5\n", 9, "numerics.steps_per_cycle"},
       {kHead + "[numerics]\ncore_model = \"vatistas\"\n", 9, "numerics.core_model"},
       {kHead + "[numerics]\ncylces = 3\n", 9, "numerics.cylces"},
@@ -154,14 +155,29 @@ TEST(CaseFileErrors, EachProblemNamesLineAndKey) {
       {"air = \"vacuum\"\n" + kHead, 1, "air"},
       {kHead + "[[markers]]\nbody = 2\npoint = [0, 0, 0]\n", 9, "markers[0].body"},
       // two markers of one name would write the same history.csv columns twice
-      {kHead + "[[markers]]\nname = \"tip\"\nbody = 1\npoint = [0, 0, 0]\n[[markers]]\nname = \"tip\"\nbody = 1\npoint = [0, 0, 0]\n", 13,
-       "markers[1].name"},
+      {kHead + "[[markers]]\nname = \"tip\"\nbody = 1\npoint = [0, 0, 0]\n[[markers]]\nname = \"tip\"\nbody "
+               "= 1\npoint = [0, 0, 0]\n",
+       13, "markers[1].name"},
+      // a marker's name heads history.csv's columns: no comma, quote or control character
+      // (they broke numpy.genfromtxt's names=True), and not empty (columns "_x_m")
+      {kHead + "[[markers]]\nname = \"le, 70%\"\nbody = 1\npoint = [0, 0, 0]\n", 9, "markers[0].name"},
+      {kHead + "[[markers]]\nname = \"\"\nbody = 1\npoint = [0, 0, 0]\n", 9, "markers[0].name"},
+      {kHead + "[[markers]]\nname = \"a\\nb\"\nbody = 1\npoint = [0, 0, 0]\n", 9, "markers[0].name"},
+      // initial joint angles beyond half a turn, rates beyond 1e7 °/s (1e300 was read and the
+      // run failed its first step)
+      {kHead.substr(0, kHead.find("kind")) +
+           "kind = \"flexible\"\nbodies = 2\ninitial_angles_deg = [190, 0]\n",
+       9, "structure.initial_angles_deg[0]"},
+      {kHead.substr(0, kHead.find("kind")) +
+           "kind = \"flexible\"\nbodies = 2\ninitial_rates_deg_per_s = [0, -2e7]\n",
+       9, "structure.initial_rates_deg_per_s[1]"},
       {"wing = \"no_such_wing.toml\"\n" + kHead.substr(kHead.find('\n') + 1), 1, "wing"},
       {kHead + "bodies = 2\n", 8, "structure.bodies"},  // rigid has one body
-      {"[kinematics]\nfrequency_hz = 1.0\nsweep = 0.0\nrotation = 0.0\n[structure]\nkind = \"rigid\"\n",
-       1, "wing"},
+      {"[kinematics]\nfrequency_hz = 1.0\nsweep = 0.0\nrotation = 0.0\n[structure]\nkind = \"rigid\"\n", 1,
+       "wing"},
       {kHead.substr(0, kHead.find("frequency_hz = 20.0")) + "frequency_hz = \"20\"\n" +
-           kHead.substr(kHead.find("sweep")), 3, "kinematics.frequency_hz"},
+           kHead.substr(kHead.find("sweep")),
+       3, "kinematics.frequency_hz"},
   };
   for (const auto& b : cases) {
     const auto e = error_of(b.text);
