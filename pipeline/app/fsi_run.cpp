@@ -90,15 +90,19 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
 RunResults run_case(const io::Case& c, const RunOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   // 1. Setup: structure, lattice, attachment, base motion, references.
+  // A chain file and a spring scale act on a flexible wing's chain only; for another kind
+  // they are unused (warned by the commands) and no part of the run's inputs or summary.
+  const bool chain_used = c.structure.kind == io::Case::Structure::Kind::Flexible;
+  const std::string chain_file = chain_used ? options.chain_file : std::string();
+  const double spring_scale = chain_used ? options.spring_scale : 1.0;
   const FsiSetup setup = numerical_stage("run setup", [&] {
-    return build_fsi_setup(c, SetupOptions{options.chain_file, options.spring_scale, options.wing_overrides});
+    return build_fsi_setup(c, SetupOptions{chain_file, spring_scale, options.wing_overrides});
   });
   if (options.before_start) options.before_start(setup);
   // 2. The recorder: the output folder, history.csv, the series.
   RunRecorder recorder(c, setup, options.output_dir, options.vtk_every.value_or(c.output.vtk_every),
-                       options.spring_scale, started);
-  recorder.set_inputs_hash(
-      io::input_hash(c, setup.wing ? &*setup.wing : nullptr, options.chain_file, options.spring_scale));
+                       spring_scale, started);
+  recorder.set_inputs_hash(io::input_hash(c, setup.wing ? &*setup.wing : nullptr, chain_file, spring_scale));
   if (options.warnings) recorder.set_warnings(options.warnings(setup));
   fsi::FsiData data(setup.model);
   ProgressLine progress(setup.steps, stderr, options.progress);

@@ -242,10 +242,13 @@ std::string canonical_inputs(const Case& c, const wings::Wing* wing, const std::
   case_fields(out, c);
   out.line("wing.present", wing != nullptr);
   if (wing) wing_fields(out, *wing);
-  const std::string& chain = chain_file.empty() ? c.chain_file : chain_file;
+  // A chain and its spring scale are inputs of a flexible wing only: another kind does not
+  // use them (the commands warn), and a run with them is the run without them.
+  const bool chain_used = c.structure.kind == Case::Structure::Kind::Flexible;
+  const std::string chain = !chain_used ? std::string() : chain_file.empty() ? c.chain_file : chain_file;
   out.line("chain.present", !chain.empty());
   if (!chain.empty()) out.line("chain.bytes", file_bytes(chain));
-  out.line("spring_scale", spring_scale);
+  out.line("spring_scale", chain_used ? spring_scale : 1.0);
   return std::move(out.text());
 }
 

@@ -106,6 +106,19 @@ TEST(CliMessages, ChainAndSpringOptionsOfARigidCaseAreSaidToBeUnused) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("warning: --chain"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("warning: --spring-scale is not used"), std::string::npos) << r.err;
+  // Unused, they are no part of the run: its inputs hash and summary.json are those of the
+  // run without them (they changed the hash, so a sweep or optimisation keyed on it took the
+  // same run for another).
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -q -o " + (dir / "plain").string()), 0);
+  const std::string with = read_text(dir / "out" / "summary.json"),
+                    without = read_text(dir / "plain" / "summary.json");
+  const auto hash = [](const std::string& json) {
+    const std::size_t at = json.find("\"inputs_hash\"");
+    return at == std::string::npos ? std::string() : json.substr(at, 90);
+  };
+  EXPECT_FALSE(hash(with).empty()) << with;
+  EXPECT_EQ(hash(with), hash(without));
+  EXPECT_EQ(flapsim::test::json_number(with, "spring_scale"), 1.0);
 }
 
 }  // namespace

@@ -44,7 +44,10 @@ int plot_sweep(const test::ScratchDir& dir) {
 
 TEST(SweepRuns, TwoKeyGridGivesOneRowPerCombination) {
   const test::ScratchDir dir("sweep_grid");
-  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
+  // A flexible wing of 2 bodies (spring_scale is an input of a chain only).
+  std::string text = test::tiny_plate_case(24);
+  text.replace(text.find("kind = \"rigid\""), 14, "kind = \"flexible\"\nbodies = 2");
+  std::ofstream(dir / "case.toml") << text;
   ASSERT_EQ(run_flapsim("sweep " + (dir / "case.toml").string() +
                         " --vary kinematics.rotation_phase=-0.1,0,0.1 --vary spring_scale=1,2 -j 2 -o " +
                         (dir / "out").string()),
