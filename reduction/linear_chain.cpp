@@ -65,6 +65,10 @@ std::vector<ChainMode> LinearChain::modes() const {
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness_, mass_);
   if (solver.info() != Eigen::Success)
     throw std::runtime_error("LinearChain: eigenvalue problem of the chain failed");
+  // An eigenvalue below this fraction of the largest is a mechanism's (no spring), not a
+  // mode's: at round-off.
+  constexpr double kMechanism = 1e-12;
+  const double largest = solver.eigenvalues().maxCoeff();
   for (int i = 0; i < n; ++i) {
     ChainMode m;
     const double lambda = std::max(solver.eigenvalues()[i], 0.0);
@@ -72,7 +76,14 @@ std::vector<ChainMode> LinearChain::modes() const {
     m.shape = solver.eigenvectors().col(i);
     Eigen::VectorXd bend = m.shape, twist = m.shape;
     for (int d = 0; d < n; ++d) (d % 2 == 0 ? twist : bend)[d] = 0.0;
-    const double e_bend = bend.dot(stiffness_ * bend), e_twist = twist.dot(stiffness_ * twist);
+    double e_bend = bend.dot(stiffness_ * bend), e_twist = twist.dot(stiffness_ * twist);
+    // A mode of no stiffness (a joint without a spring: frequency 0) stores no spring energy,
+    // and its kind was the round-off's ("0 Hz (bending)" for a pure twist of the joint): it
+    // is named by where its kinetic energy lies.
+    if (!(lambda > kMechanism * largest)) {
+      e_bend = bend.dot(mass_ * bend);
+      e_twist = twist.dot(mass_ * twist);
+    }
     m.bending_energy_fraction = e_bend + e_twist > 0.0 ? e_bend / (e_bend + e_twist) : 0.0;
     out.push_back(std::move(m));
   }

@@ -6,8 +6,10 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "mbd/chain_data.hpp"
 #include "mbd/chain_dynamics.hpp"
@@ -87,6 +89,22 @@ TEST(LinearChain, HenckyCantileverFrequencies) {
   }
   EXPECT_NEAR(err[0] / err[1], 4.0, 0.5);  // second order
   EXPECT_NEAR(err[1] / err[2], 4.0, 0.5);
+}
+
+// A joint without a twist spring (a chain file's twist_stiffness = 0): the chain's first mode
+// is that joint's free twist, of frequency 0 and no spring energy. Its kind was the spring
+// energy's round-off (a 4-body chain's warning said "0 Hz (bending)" for a mode whose shape
+// was the twist of joint 2 alone); it is now named by its kinetic energy: torsion.
+TEST(LinearChain, AJointWithoutATwistSpringGivesATorsionMechanism) {
+  mbd::ChainModel chain = mbd::make_uniform_cantilever_chain(0.05, 1e-4, 5e-5, 7e-4, 2e-9, 4);
+  chain.joints[2].twist_stiffness = 0.0;  // the joint inboard of the third body
+  const std::vector<ChainMode> modes = LinearChain(chain).modes();
+  ASSERT_FALSE(modes.empty());
+  EXPECT_NEAR(modes[0].frequency_hz, 0.0, 1e-3);
+  EXPECT_FALSE(modes[0].is_bending());
+  EXPECT_LT(modes[0].bending_energy_fraction, 1e-6);
+  // The other modes keep their spring-energy kinds: the first bending mode is still found.
+  EXPECT_TRUE(std::any_of(modes.begin(), modes.end(), [](const ChainMode& m) { return m.is_bending(); }));
 }
 
 }  // namespace
