@@ -157,6 +157,14 @@ mbd::ChainModel parse_chain(const TomlTable& root, std::optional<ChainFemRecord>
     const bool needs_joint =
         !full_stiffness && !(chain.root == mbd::RootAttachment::rigid && static_cast<int>(i) < chain.welded_bodies);
     if (auto jt = t.find_table("joint")) {
+      // A body welded to a rigid root has no joint: its springs would be read and ignored.
+      if (chain.root == mbd::RootAttachment::rigid && static_cast<int>(i) < chain.welded_bodies)
+        t.fail(
+            "joint",
+            "body " + std::to_string(i + 1) + " is welded to the rigid root (root = \"rigid\"" +
+                (chain.welded_bodies > 1 ? ", welded_bodies = " + std::to_string(chain.welded_bodies) : "") +
+                "): it has no joint, and its [bodies.joint] would be ignored; drop the table, or "
+                "give the root its springs with root = \"sprung\"");
       if (full_stiffness) {  // the springs are the matrix: no per-joint springs
         jt->expect_only({"bend_damping", "twist_damping", "bend_rest", "twist_rest"});
       } else {

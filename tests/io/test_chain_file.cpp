@@ -123,6 +123,10 @@ TEST(ChainFile, BadInputNamesFileLineAndKey) {
   // unknown root choice (line 1)
   expect_error("root = \"welded\"\n[[bodies]]\nlength = 0.01\nmass = 1e-5\ncenter_of_mass = [0, 0, 0]\n" + inertia,
                1, "root");
+  // springs for the first body of a rigid root, welded to it: they were read and ignored
+  // (its [bodies.joint] at line 7)
+  expect_error(head + inertia + "[bodies.joint]\nbend_stiffness = 0.02\ntwist_stiffness = 0.01\n", 7,
+               "bodies[0].joint");
 }
 
 
