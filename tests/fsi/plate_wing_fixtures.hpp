@@ -100,6 +100,15 @@ inline fsi::FsiModel plate_fsi_model(std::shared_ptr<const fsi::StructureModel> 
   return m;
 }
 
+// A structure's model in vacuum (no lattice), its frequency 10 Hz.
+inline fsi::FsiModel vacuum_fsi_model(std::shared_ptr<const fsi::StructureModel> structure) {
+  fsi::FsiModel m;
+  m.structure = std::move(structure);
+  m.frequency = 10.0;
+  m.air = false;
+  return m;
+}
+
 // `steps` coupled steps of dt [s] of an FEM run from d's state: each step's lift [N] appended
 // to `lift`, the FEM's node positions [m] to `x` (3 × nodes columns a step). Returns the
 // largest coupling change of the steps.

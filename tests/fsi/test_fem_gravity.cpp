@@ -52,10 +52,7 @@ TEST(FsiFemGravity, APlateSettlesWhereTheStaticFemPutsItAndTheBaseCarriesItsWeig
   const mbd::BaseMotion at_rest = [](double) { return mbd::BasePose{}; };
   auto structure = std::make_shared<fsi::FemStructureModel>(std::move(sm), root, at_rest, options,
                                                             Eigen::Matrix3Xd(3, 0), 1, 1, 0.040, g);
-  fsi::FsiModel m;
-  m.structure = structure;
-  m.frequency = 10.0;
-  m.air = false;
+  const fsi::FsiModel m = test::vacuum_fsi_model(structure);
   fsi::FsiData d(m);
   fsi::initialize(m, d, 0.0);
   for (int n = 0; n < 400; ++n) fsi::coupled_step(m, d, 1e-3);

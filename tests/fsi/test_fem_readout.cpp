@@ -38,10 +38,7 @@ fsi::StructureReadout readout_of_a_turned_plate(int nx, int ny, Eigen::Matrix3d&
   };
   auto structure = std::make_shared<fsi::FemStructureModel>(
       std::move(sm), root, turned, fem::DynamicsOptions{}, Eigen::Matrix3Xd(3, 0), 1, 1, 0.040);
-  fsi::FsiModel m;
-  m.structure = structure;
-  m.frequency = 10.0;
-  m.air = false;
+  const fsi::FsiModel m = test::vacuum_fsi_model(structure);
   fsi::FsiData d(m);
   fsi::initialize(m, d, 0.0);
   return d.structure->readout();
