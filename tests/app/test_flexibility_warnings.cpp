@@ -120,4 +120,32 @@ TEST(FlexibilityWarnings, CheckWarnsAboutAWingItReducesInProcess) {
   }
 }
 
+// The case's [[loads]] count with the flapping's inertia in the large-deflection warning. The
+// one-joint chain's body 2 (bend spring 1e-3 N m/rad) under 0.02 N in ground z at its tip,
+// 0.02 m beyond the joint, flapped slowly (0.1 Hz: its inertia negligible): the linear static
+// bend is F l / k = 0.02 · 0.02 / 1e-3 = 0.4 rad = 22.92°, twice that as a load applied at
+// once, 45.8°, beyond 30°. Before, such a load went unwarned (a 0.3 N tip load on a 4-body
+// chain, 137.5° linear) and the run's failure blamed the kinematics; 0.005 N (11.5°) is not
+// warned.
+TEST(FlexibilityWarnings, ThePointLoadsCountWithTheInertia) {
+  ScratchDir dir("inertia_with_loads");
+  for (const double force : {0.02, 0.005}) {
+    const flapsim::io::Case c =
+        load_one_joint_case(dir, 0.1, "rotation = 0.0",
+                            "[[loads]]\nbody = 2\npoint = [0.0, 0.02, 0.0]\nframe = \"ground\"\nforce_z = " +
+                                std::to_string(force) + "\n");
+    const std::string w = flapsim::app::inertial_deflection_warning(c, flapsim::app::build_fsi_setup(c, {}));
+    if (force > 0.01) {
+      EXPECT_NE(
+          w.find(
+              "the flapping's inertia with the case's [[loads]] would bend the wing's tip by up to 45.8 deg"),
+          std::string::npos)
+          << w;
+      EXPECT_NE(w.find("inertial loads and the [[loads]] (22.9 and 0.0 deg;"), std::string::npos) << w;
+    } else {
+      EXPECT_EQ(w, "");
+    }
+  }
+}
+
 }  // namespace
