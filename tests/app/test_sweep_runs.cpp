@@ -200,7 +200,7 @@ TEST(SweepRuns, CaseThatCannotRunIsRecordedAndTheOthersGoOn) {
   EXPECT_FALSE(table.rows[0].at("host").empty());
 
   // --vary takes one value each time: the case file may follow it.
-  ASSERT_EQ(run_flapsim("sweep --vary kinematics.rotation_phase=0.1 --vary spring_scale=2 " +
+  ASSERT_EQ(run_flapsim("sweep --vary kinematics.rotation_phase=0.1 --vary air.density=1.2 " +
                         (dir / "case.toml").string() + " -o " + (dir / "order").string()),
             0);
   EXPECT_EQ(read_sweep_table((dir / "order" / "sweep.csv").string()).rows.size(), 1u);

@@ -116,12 +116,6 @@ void sweep_command(const SweepArgs& a) {
   apply_wing_option(case_root, a.wing_file, a.chain_file);
   const io::Case base = print_case_warnings(io::read_case(case_root));  // each case is checked again
   warn_unused_structure_options(base, a.chain_file, a.spring_scale);
-  if (base.structure.kind != io::Case::Structure::Kind::Flexible &&
-      std::find(plan.keys.begin(), plan.keys.end(), "spring_scale") != plan.keys.end())
-    std::fprintf(stderr, "flapsim: warning: spring_scale changes nothing: %s says structure.kind = \"%s\" "
-                         "(no joint springs); the rows that differ only in it will be equal\n",
-                 a.case_file.c_str(),
-                 std::string(wings::choice_name(io::kStructureKindNames, base.structure.kind)).c_str());
   sweep::SweepOptions options;
   options.output_dir = a.output_dir;
   options.chain_file = a.chain_file;

@@ -111,13 +111,12 @@ void refuse_key_that_reaches_no_input(const VariedKeys& varied, const std::vecto
 }
 
 // The joint springs' factor of a case with no joint springs (a rigid wing, the wing's own
-// FEM), in an optimisation: every case keeps its inputs but for the factor itself, which
-// io::input_hash counts, so the same-inputs rule does not see it (an optimisation of it on a
-// rigid case ran 7 equal runs and wrote the optimum of a flat objective without a word). A
-// sweep warns instead (cmd_sweep.cpp): its rows may pair the factor with keys that matter.
+// FEM): io::input_hash leaves it out for such a case, so the same-inputs rule below would
+// refuse it too; this says why (an optimisation of it on a rigid case once ran 7 equal runs
+// and wrote the optimum of a flat objective without a word; a sweep, identical rows).
 void refuse_spring_scale_without_springs(const VariedKeys& varied, const SweepInputs& inputs,
                                          const std::vector<ResolvedCase>& cases, std::size_t k) {
-  if (varied.command != "optimisation" || varied.keys[k] != "spring_scale" || cases.empty()) return;
+  if (varied.keys[k] != "spring_scale" || cases.empty()) return;
   for (const ResolvedCase& r : cases)
     if (r.c.structure.kind == io::Case::Structure::Kind::Flexible) return;
   const io::Case& c = cases.front().c;

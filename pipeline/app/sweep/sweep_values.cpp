@@ -9,6 +9,7 @@
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "wings/loader/input_error.hpp"
+#include "wings/loader/text_trim.hpp"
 
 namespace flapsim::sweep {
 
@@ -40,22 +41,14 @@ double tidy(double v, double step) {
   return std::stod(buf);
 }
 
-// The text without the blanks around it; blanks inside stay ("2 6" is no number, a path
+// The parts without the blanks around them; blanks inside stay ("2 6" is no number, a path
 // "my wings/a.toml" keeps its space: before, both lost it, and "2 6" ran 26 Hz).
-std::string trimmed(const std::string& s) {
-  const auto blank = [](char c) { return c == ' ' || c == '\t'; };
-  std::size_t a = 0, b = s.size();
-  while (a < b && blank(s[a])) ++a;
-  while (b > a && blank(s[b - 1])) --b;
-  return s.substr(a, b - a);
-}
-
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> parts;
   std::size_t from = 0;
   for (std::size_t at = s.find(sep); at != std::string::npos; from = at + 1, at = s.find(sep, from))
-    parts.push_back(trimmed(s.substr(from, at - from)));
-  parts.push_back(trimmed(s.substr(from)));
+    parts.push_back(wings::trim(s.substr(from, at - from)));
+  parts.push_back(wings::trim(s.substr(from)));
   return parts;
 }
 
@@ -79,7 +72,7 @@ Variation parse_variation(const std::string& text) {
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
     bad(text, "expected KEY=start:step:stop or KEY=v1,v2,...");
   Variation v;
-  v.key = trimmed(text.substr(0, eq));
+  v.key = wings::trim(text.substr(0, eq));
   if (v.key.empty()) bad(text, "expected KEY=start:step:stop or KEY=v1,v2,...");
   const std::string values = text.substr(eq + 1);
   if (takes_paths(v.key)) {  // wing=wings/a.toml,wings/b.toml
