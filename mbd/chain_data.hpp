@@ -49,6 +49,10 @@ struct StepWorkspace {
   int last_substeps = 1;                ///< pieces the last step was solved in (sub-steps and halves)
   long split_steps = 0;                 ///< steps that needed halving since construction
   int max_substeps = 1;                 ///< most pieces of one halved step since construction
+  /// Steps that failed even in halves and were solved as a restart (backward Euler,
+  /// generalized_alpha.hpp) since construction.
+  long restarted_steps = 0;
+  bool jacobian_restart = false;  ///< the kept Jacobian is the restart's (backward Euler)
   /// The load damping D (ChainData::load_damping) the Jacobian holds (zero: none); the
   /// Jacobian is corrected by the difference when the caller changes D.
   Eigen::MatrixXd jacobian_damping;

@@ -143,15 +143,33 @@ struct StepProblem {
   }
 };
 
+// The coefficients that make the scheme backward Euler when the start's a and Φ̈ are zero:
+// Φ_{n+1} = Φ_n + h Φ̇_{n+1}, Φ̇_{n+1} = Φ̇_n + h Φ̈_{n+1}, a_{n+1} = Φ̈_{n+1}.
+constexpr GeneralizedAlphaCoefficients kBackwardEuler{0.0, 0.0, 1.0, 1.0};
 
-// One generalized-α step of size dt from `current`, solved whole.
+// One step of size dt from `current`, solved whole: generalized-α, or with `restart` one
+// backward-Euler step from `current`'s Φ and Φ̇ alone (its a and Φ̈ not used, Newton started
+// from Φ̈ = 0), which leaves a_{n+1} = Φ̈_{n+1}: the scheme started again from there.
 void solve_step(const ChainModel& model, ChainData& data, const BaseMotion& base,
-                const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
-                const Loads& loads, ChainState& next) {
+                const GeneralizedAlphaSettings& settings, const ChainState& given, double dt,
+                const Loads& loads, ChainState& next, bool restart = false) {
+  ChainState restarted;
+  if (restart) {
+    restarted = given;
+    restarted.a.setZero();
+    restarted.qdd.setZero();
+  }
+  const ChainState& current = restart ? restarted : given;
   const double t1 = current.time + dt;
   const BasePose pose = base(t1);
-  StepProblem p{model, data, pose, current, loads,
-                GeneralizedAlphaCoefficients::from_rho_infinity(settings.rho_infinity), dt};
+  StepProblem p{
+      model,
+      data,
+      pose,
+      current,
+      loads,
+      restart ? kBackwardEuler : GeneralizedAlphaCoefficients::from_rho_infinity(settings.rho_infinity),
+      dt};
   StepWorkspace& ws = data.step;
   ws.last_iterations = 0;
   ws.last_refreshes = 0;
@@ -161,7 +179,10 @@ void solve_step(const ChainModel& model, ChainData& data, const BaseMotion& base
   double rnorm = ws.r.lpNorm<Eigen::Infinity>();
   if (!std::isfinite(rnorm))
     throw ConvergenceFailure("residual is not finite at the first iterate", current.step, t1);
-  // The Jacobian's h-dependent part changes with dt: rebuild when the step size changed.
+  // The Jacobian's h-dependent part changes with dt and with the scheme's coefficients:
+  // rebuild when the step size changed or the kept one belongs to the other scheme.
+  if (restart || ws.jacobian_restart) ws.jacobian_valid = false;
+  ws.jacobian_restart = restart;
   if (!ws.jacobian_valid || std::abs(ws.jacobian_dt - dt) > 1e-12 * dt)
     p.rebuild_jacobian(ws.x, ws.r);
   else
@@ -218,20 +239,22 @@ void solve_step(const ChainModel& model, ChainData& data, const BaseMotion& base
 
 // The step from `current` over dt in 2^level pieces or more: solved whole if it converges,
 // else as two halves, each split again if it fails, down to level max_step_halvings.
-// Returns the number of pieces used.
+// With `restart` each piece is a backward-Euler step (solve_step). Returns the number of
+// pieces used.
 int solve_in_pieces(const ChainModel& model, ChainData& data, const BaseMotion& base,
                     const GeneralizedAlphaSettings& settings, const ChainState& current, double dt,
-                    const Loads& loads, ChainState& next, int level) {
+                    const Loads& loads, ChainState& next, int level, bool restart = false) {
   try {
-    solve_step(model, data, base, settings, current, dt, loads, next);
+    solve_step(model, data, base, settings, current, dt, loads, next, restart);
     return 1;
   } catch (const ConvergenceFailure&) {
     if (level >= settings.max_step_halvings) throw;
   }
   ChainState middle;
-  int pieces = solve_in_pieces(model, data, base, settings, current, 0.5 * dt, loads, middle, level + 1);
+  int pieces =
+      solve_in_pieces(model, data, base, settings, current, 0.5 * dt, loads, middle, level + 1, restart);
   middle.step = current.step;  // the pieces belong to the step being solved
-  pieces += solve_in_pieces(model, data, base, settings, middle, 0.5 * dt, loads, next, level + 1);
+  pieces += solve_in_pieces(model, data, base, settings, middle, 0.5 * dt, loads, next, level + 1, restart);
   return pieces;
 }
 
@@ -253,10 +276,21 @@ int solve_with_halving(const ChainModel& model, ChainData& data, const BaseMotio
       first_half.step = current.step;
       pieces += solve_in_pieces(model, data, base, settings, first_half, 0.5 * dt, loads, next, 1);
     } catch (const ConvergenceFailure& split) {
-      throw ConvergenceFailure(whole.reason() + "; split into pieces down to 1/" +
-                                   std::to_string(1 << settings.max_step_halvings) +
-                                   " of the step, still: " + split.reason(),
-                               current.step, t1);
+      // The scheme's history can be what fails: its algorithmic acceleration carries a
+      // start's (or a jump's) acceleration into every piece, e.g. a light chain under a load
+      // applied at once, Φ̈₀ = 3.5e8 rad/s², whose first step of 0.25 s got Φ̇₁ = 2.2e7 rad/s
+      // from a₀ alone. Last: the step restarted without it, as backward Euler (first order,
+      // damps every mode the step does not resolve), in halves if need be.
+      try {
+        pieces = solve_in_pieces(model, data, base, settings, current, dt, loads, next, 0, true);
+        ++data.step.restarted_steps;
+      } catch (const ConvergenceFailure& restarted) {
+        throw ConvergenceFailure(whole.reason() + "; split into pieces down to 1/" +
+                                     std::to_string(1 << settings.max_step_halvings) +
+                                     " of the step, still: " + split.reason() +
+                                     "; restarted as backward Euler, still: " + restarted.reason(),
+                                 current.step, t1);
+      }
     }
     next.time = t1;
     next.step = current.step + 1;

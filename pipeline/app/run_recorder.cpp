@@ -378,6 +378,8 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     r.set("split_structural_steps", data.structure->split_steps());
     r.set("max_structural_pieces", data.structure->max_step_pieces());
   }
+  if (data.structure->restarted_steps() > 0)
+    r.set("restarted_structural_steps", data.structure->restarted_steps());
   if (data.stall_retries > 0) r.set("stalled_steps_retried", data.stall_retries);
   if (setup_.model.air) r.set("wake_panels", data.lattice->wake_panels());
 }

@@ -209,6 +209,10 @@ inline constexpr auto kRunResults = [] {
                        "only when one was"},
       ResultDefinition{"max_structural_pieces", "", K::integer, "", "",
                        "most pieces one such solve took (2 … 64); set only with split_structural_steps"},
+      ResultDefinition{
+          "restarted_structural_steps", "", K::integer, "", "",
+          "chain solves that failed even in halves and were solved as a restart of the "
+          "time scheme, backward Euler (docs/multibody.md, step halving); set only when one was"},
       ResultDefinition{"stalled_steps_retried", "", K::integer, "", "",
                        "steps whose coupling stalled and was tried again with the structure solved more "
                        "finely (docs/fsi.md, \"A stalled coupling, tried again\"); set only when one was"},
@@ -318,6 +322,11 @@ inline constexpr std::array kRunReport = {
                [](const RunResults& r) {
                  return r.has("split_structural_steps") && r.text("structure_kind") != "fem";
                }},
+    ReportLine{"structure: {restarted_structural_steps} chain solves failed even in halves and were "
+               "restarted as backward Euler (first order, damping what the step does not resolve): a load "
+               "applied at once, or a step far too long for the chain; check the results with more "
+               "steps_per_cycle (docs/multibody.md, \"Step halving\")",
+               [](const RunResults& r) { return r.has("restarted_structural_steps"); }},
     ReportLine{"coupling: {stalled_steps_retried} steps stalled and were tried again with the structure "
                "solved more finely (docs/fsi.md, \"A stalled coupling, tried again\")",
                [](const RunResults& r) { return r.has("stalled_steps_retried"); }},

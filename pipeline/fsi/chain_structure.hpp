@@ -79,6 +79,7 @@ class ChainStructureData : public StructureData {
   int interface_size() const override { return model_.chain.num_dofs(); }
   long split_steps() const override { return chain.step.split_steps; }
   int max_step_pieces() const override { return chain.step.max_substeps; }
+  long restarted_steps() const override { return chain.step.restarted_steps; }
   StructureReadout readout() const override;
   void joint_angles(Eigen::VectorXd& q) const override { q = state.q; }
 

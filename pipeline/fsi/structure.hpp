@@ -182,6 +182,10 @@ class StructureData {
   /// (step halving), and the most pieces one step needed (1: none split).
   virtual long split_steps() const = 0;
   virtual int max_step_pieces() const = 0;
+  /// Steps that failed even in pieces and were solved as a restart of the time scheme
+  /// (the chain's backward-Euler restart, docs/multibody.md "Step halving"); 0 (the default)
+  /// for a structure without one.
+  virtual long restarted_steps() const { return 0; }
 
   /// The run's record of the accepted state (not used by the coupling).
   virtual StructureReadout readout() const = 0;
