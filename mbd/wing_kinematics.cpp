@@ -60,7 +60,7 @@ AngleSample per_second(AngleSample a, double f) {
 
 AngleSample WingKinematics::Revolution::at(double t) const {
   AngleSample r;
-  if (t <= 0.0 || rate == 0.0) return r;
+  if (t < 0.0 || rate == 0.0) return r;  // τ = 0: at Ω from t = 0 itself
   if (t >= ramp) {
     // ∫₀^τ Ω (1 − cos(π u/τ))/2 du = Ω τ/2, then Ω per second.
     r.value = rate * (0.5 * ramp + (t - ramp));

@@ -54,6 +54,19 @@ TEST(RevolvingWingCase, RunsAndRefersItsCoefficientsToTheSteadyRevolution) {
   EXPECT_GT(flapsim::test::json_number(summary, "mean_lift_N"), 0.0);
 }
 
+// Without a ramp the wing turns at Ω from t = 0 (docs/kinematics.md), and the reference
+// speed is Ω r2 R: until 2 Dec the rate at t = 0 itself was 0, the reference speed (a mean
+// of 720 samples of a period from t = 0) 719/720 of it, CL and CD 0.28 % high
+// (cases/robofly_revolving.toml: 0.99418 against 2π · 0.25 · 0.63380 = 0.99556 m/s).
+TEST(RevolvingWingCase, WithoutARampTheReferenceSpeedIsTheRevolutionsFromTheStart) {
+  flapsim::test::ScratchDir dir("revolving_case_no_ramp");
+  std::ofstream(dir / "case.toml") << revolving_case("revolution = { rate_deg_per_s = -720.0 }");
+  ASSERT_EQ(run_flapsim("run " + (dir / "case.toml").string() + " -o " + (dir / "out").string()), 0);
+  const std::string summary = read_text(dir / "out" / "summary.json");
+  const double expected = 4.0 * std::numbers::pi * 0.040 * flapsim::test::json_number(summary, "r2");
+  EXPECT_NEAR(flapsim::test::json_number(summary, "reference_speed_m_s"), expected, 1e-9 * expected);
+}
+
 // flapsim check's kinematics table of a revolving wing: the revolution's rate and ramp, and
 // the instants labelled "at rest" (t = 0) and "revolving". Before, the table said "reversal"
 // at t = 0 and "downstroke" at every other instant, the words of a flapping stroke.

@@ -26,8 +26,9 @@ double fit_drag(double alpha) {
 }
 
 TEST(RoboflyRevolvingCase, TheShippedCaseAt50And60DegreesIsWithinTheFitsBoundsAndItsForceNormalToTheWing) {
-  // Measured 1 Dec: 50°: CL 1.652 (−7.4 %), CD 1.817 (−8.2 %), force 47.7° from the vertical;
-  // 60°: CL 1.535 (−3.1 %), CD 2.452 (−2.5 %), 57.9°.
+  // Measured 2 Dec: 50°: CL 1.648 (−7.6 %), CD 1.812 (−8.5 %); 60°: CL 1.531 (−3.4 %), CD
+  // 2.445 (−2.8 %) (1 Dec, the reference speed 719/720 of Ω r2 R: 1.652, 1.817, 1.535, 2.452;
+  // the force 47.7° and 57.9° from the vertical).
   // The lattice-level run of the same conditions (unmerged sheet): 1.649, 1.809.
   flapsim::test::ScratchDir dir("robofly_revolving_case");
   std::string toml = flapsim::test::shipped_case_text("robofly_revolving");
@@ -58,9 +59,9 @@ TEST(RoboflyRevolvingCase, LaminarSkinFrictionBringsTheDragAt40To60DegreesWithin
   // numerics.skin_friction = "laminar" (uvlm/skin_friction.hpp: Blasius, 1.328/√Re_c a side,
   // with the case's ν, set for the experiment's Re = 136 before the option existed; nothing
   // calibrated). Measured 1 Dec against the inviscid lattice's (docs/uvlm.md, "Skin
-  // friction"): CD at 10°–60° 0.281, 0.494, 0.790, 1.296, 1.876, 2.490 (−29, −16, −17, −10, −5,
-  // −1 % of the fit; inviscid −88 … −2 %), CL 0.492 … 1.469 (−19, −16, −20, −16, −11, −7 %;
-  // inviscid −12 … −3 %): the drag within 15 % at 40°–60° and the lift farther off.
+  // friction"; 2 Dec): CD at 10°–60° 0.280, 0.492, 0.788, 1.292, 1.871, 2.483 (−29, −17, −17,
+  // −10, −5, −1 % of the fit; inviscid −88 … −3 %), CL 0.491 … 1.465 (−20, −16, −21, −16, −12,
+  // −8 %; inviscid −13 … −3 %): the drag within 15 % at 40°–60° and the lift farther off.
   flapsim::test::ScratchDir dir("robofly_revolving_friction");
   std::string toml = flapsim::test::shipped_case_text("robofly_revolving");
   const std::string every = "vtk_every = 4", shed = "\nleading_edge = \"shed\"";
