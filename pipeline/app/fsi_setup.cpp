@@ -312,9 +312,18 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
       ref.kind = LiftReference::Kind::Flapping;
       ref.speed = ref.flapping_speed;
     }
-    if (!(ref.speed > 0.0))
-      throw InputError(c.file, c.line_of("air.freestream"), "air.freestream",
-                       "neither a free stream nor a moving wing: no reference speed for the coefficients");
+    // A span axis that does not move (a wing that only pitches about it) moves by round-off
+    // (2e-17 m/s, CL 8e32): compared with the speed of a span turning a radian a period.
+    const double turning_span_speed = 2.0 * std::numbers::pi * c.kinematics.frequency * p.span;  // [m/s]
+    if (!(ref.speed > 1e-9 * turning_span_speed)) {
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    "neither a free stream nor a moving span: the point at r2 R on the span axis moves at "
+                    "%.3g m/s over a cycle (a wing that only pitches about its span axis), no reference "
+                    "speed for the coefficients; give the case a free stream, a sweep or a deviation",
+                    ref.speed);
+      throw InputError(c.file, c.line_of("air.freestream"), "air.freestream", text);
+    }
   }
   if (c.structure.kind == Case::Structure::Kind::Fem) {
     // The FEM's shell is the flat planform and the lattice rides on it: a shaped lattice

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <string>
@@ -122,4 +123,22 @@ TEST(FreeStreamCase, SteadyLatticeDoesNotDependOnTheTimeStep) {
   EXPECT_NEAR(cd10 / cd40, 1.0, 1e-12);
   EXPECT_NEAR(cl40 / 0.316, 1.0, 0.10);
   EXPECT_NEAR(cl_u / cl40, 1.0, 0.015);
+}
+
+// A wing whose span axis does not move in still air (it only pitches about it, docs/fsi.md
+// "Coefficients, forces and power": a case with neither speed is refused). Until 2 Dec its
+// span point's speed of round-off, 2e-17 m/s, was taken as the reference speed: exit 0,
+// status "ok" and mean CL 8e32 with a warning of a Reynolds number 1.5e-14.
+TEST(FreeStreamCase, AWingThatOnlyPitchesInStillAirIsRefused) {
+  flapsim::test::ScratchDir dir("pitch_only_case");
+  std::ofstream(dir / "case.toml") << "name = \"pitch\"\nwing = \"" FLAPSIM_SOURCE_DIR "/wings/flat_plate.toml\"\n"
+                                      "[kinematics]\nfrequency_hz = 20.0\nsweep = 10.0\n"
+                                      "rotation = { mean_deg = 90.0, sin_deg = [-40.0] }\n"
+                                      "[structure]\nkind = \"rigid\"\n"
+                                      "[numerics]\nsteps_per_cycle = 20\ncycles = 1\n";
+  const auto outcome = flapsim::test::run_flapsim_capturing_stderr(
+      dir.path(), "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(outcome.status, 2) << outcome.err;
+  EXPECT_NE(outcome.err.find("neither a free stream nor a moving span"), std::string::npos) << outcome.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "summary.json"));
 }
