@@ -62,10 +62,12 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
   });
   for (long n = 0; n < setup.steps; ++n) {
     fsi::coupled_step(model, data, setup.dt);
-    recorder.record(data);
-    // From the second step on: the first carries a start's impulse (diverged_force.hpp).
+    // From the second step on: the first carries a start's impulse (diverged_force.hpp). A
+    // step whose force diverged is in no output: the outputs end at the step before.
+    const StepSample& measured = recorder.measure(data);
     if (force_limit > 0.0 && n > 0)
-      throw_if_force_diverged(recorder.last().force, force_limit, data.step - 1, data.time());
+      throw_if_force_diverged(measured.force, force_limit, data.step - 1, data.time());
+    recorder.record(data);
     fsi::shed_wake(model, data);
     // Chain solves split in halves so far (step halving, mbd/generalized_alpha.hpp): shown once there are any.
     char split[48] = "";

@@ -132,8 +132,16 @@ void RunRecorder::begin() {
   write_state();
 }
 
+const StepSample& RunRecorder::measure(const fsi::FsiData& data) {
+  measured_ = sample_step(setup_.model, data, case_.kinematics, setup_.reference);
+  measured_step_ = data.step;
+  return *measured_;
+}
+
 void RunRecorder::record(const fsi::FsiData& data) {
-  samples_.push_back(sample_step(setup_.model, data, case_.kinematics, setup_.reference));
+  if (!measured_ || measured_step_ != data.step) measure(data);
+  samples_.push_back(std::move(*measured_));
+  measured_.reset();
   history_row(samples_.back(), case_, data, row_);
   history_.append(std::span<const double>(row_.data(), row_.size()));
   // The markers' positions are the row's last columns (run_history.hpp).
@@ -269,7 +277,10 @@ void RunRecorder::write_state() const {
 void RunRecorder::analyse(const fsi::FsiData& data) {
   RunResults& r = results_;
   const double period = setup_.period;
-  const double t_end = data.time();
+  // A step measured and then refused (its force diverged) is not one completed: the results
+  // end at the step before.
+  const bool refused = measured_ && measured_step_ == data.step && !samples_.empty();
+  const double t_end = refused ? samples_.back().time : data.time();
   const double t_begin = std::max(0.0, t_end - period);
   const std::vector<double> t = series(samples_, [](const StepSample& s) { return s.time; });
   // The series start at the first step; t = 0 has no loads: its value is the first step's.
@@ -282,7 +293,7 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   const auto mean = [&](std::vector<double> x) {
     return fsi::window_mean(t_from_zero, from_zero(std::move(x)), t_begin, t_end);
   };
-  r.set("steps", data.step);
+  r.set("steps", data.step - (refused ? 1 : 0));
   r.set("time_s", t_end);
   r.set("mean_lift_N", mean(series(samples_, [](const StepSample& s) { return s.lift; })));
   r.set("mean_Fx_N", mean(series(samples_, [](const StepSample& s) { return s.force.x(); })));
@@ -389,6 +400,10 @@ LiftJump RunRecorder::largest_lift_jump() const {
   for (std::size_t k = 1; k < samples_.size(); ++k) {
     const double change = std::abs(samples_[k].cl - samples_[k - 1].cl);
     if (change > largest.size) largest = {change, static_cast<long>(k) + 1};
+  }
+  if (measured_ && !samples_.empty()) {  // the step that failed after it was measured
+    const double change = std::abs(measured_->cl - samples_.back().cl);
+    if (change > largest.size) largest = {change, static_cast<long>(samples_.size()) + 1};
   }
   return largest;
 }

@@ -69,6 +69,11 @@ class RunRecorder {
   /// "failed" (finish). \throws io::OutputError
   void begin();
 
+  /// \brief The sample of the state after a coupled step, measured but not yet recorded: a
+  /// step the caller then refuses (a diverged force) is in no output. The next record() of
+  /// the same step takes it.
+  const StepSample& measure(const fsi::FsiData& data);
+
   /// \brief Records the state after a coupled step (before the wake is shed).
   void record(const fsi::FsiData& data);
 
@@ -91,8 +96,9 @@ class RunRecorder {
   };
   TipDeflection peak_tip_deflection() const;
 
-  /// The largest change of C_L between two consecutive recorded steps so far
-  /// (diverged_force.hpp; 0 before the second step).
+  /// The largest change of C_L between two consecutive recorded steps so far, the measured
+  /// step that was not recorded (the one that failed) included (diverged_force.hpp; 0
+  /// before the second step).
   LiftJump largest_lift_jump() const;
 
  private:
@@ -133,6 +139,8 @@ class RunRecorder {
   std::vector<std::string> frame_fields_;
   io::StateCameraChooser camera_;
   std::vector<StepSample> samples_;
+  std::optional<StepSample> measured_;  ///< measure()'s sample until record() takes it
+  long measured_step_ = -1;             ///< the step it was measured after
   RunResults results_;
 };
 
