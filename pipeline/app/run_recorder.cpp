@@ -316,6 +316,17 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     r.set("mean_Mz_base_Nm", mean(series(samples_, [](const StepSample& s) { return s.moment.z(); })));
     const double power = mean(series(samples_, [](const StepSample& s) { return s.power; }));
     r.set("mean_power_W", power);
+    // The largest step-to-step change of C_L after the start (its first two steps carry the
+    // impulse of a wing started in air): the mark of a shed sheet come apart (run_results.hpp).
+    LiftJump jump;
+    for (std::size_t k = 2; k < samples_.size(); ++k) {
+      const double change = std::abs(samples_[k].cl - samples_[k - 1].cl);
+      if (change > jump.size) jump = {change, static_cast<long>(k) + 1};
+    }
+    if (jump.step > 0) {
+      r.set("largest_CL_jump", jump.size);
+      r.set("largest_CL_jump_step", jump.step);
+    }
     r.set("mean_CP", mean(series(samples_, [](const StepSample& s) { return s.cp; })));
     r.set("lift_per_power_N_W", power != 0.0 ? r.number("mean_lift_N") / power
                                              : std::numeric_limits<double>::quiet_NaN());

@@ -131,7 +131,8 @@ TEST(FreeStreamCase, SteadyLatticeDoesNotDependOnTheTimeStep) {
 // status "ok" and mean CL 8e32 with a warning of a Reynolds number 1.5e-14.
 TEST(FreeStreamCase, AWingThatOnlyPitchesInStillAirIsRefused) {
   flapsim::test::ScratchDir dir("pitch_only_case");
-  std::ofstream(dir / "case.toml") << "name = \"pitch\"\nwing = \"" FLAPSIM_SOURCE_DIR "/wings/flat_plate.toml\"\n"
+  std::ofstream(dir / "case.toml") << "name = \"pitch\"\nwing = \"" FLAPSIM_SOURCE_DIR
+                                      "/wings/flat_plate.toml\"\n"
                                       "[kinematics]\nfrequency_hz = 20.0\nsweep = 10.0\n"
                                       "rotation = { mean_deg = 90.0, sin_deg = [-40.0] }\n"
                                       "[structure]\nkind = \"rigid\"\n"
