@@ -69,9 +69,14 @@ def last_cycle(history_csv, frequency_hz, cycles):
 
 
 def main(argv):
-    if len(argv) < 2:
-        sys.exit(__doc__)
+    if len(argv) < 2 or argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if len(argv) >= 2 else 1
     folder = argv[1]
+    for name in ("optimum.toml", "report.md", "evaluations.csv"):
+        if not os.path.isfile(os.path.join(folder, name)):
+            print("plot_optimize.py: %s has no %s: not a flapsim optimize folder" % (folder, name), file=sys.stderr)
+            return 2
     out = argv[2] if len(argv) > 2 else os.path.join(folder, "plots")
     os.makedirs(out, exist_ok=True)
     objective, optimum_hash, keys = problem(folder)
@@ -135,4 +140,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv)
+    sys.exit(main(sys.argv))

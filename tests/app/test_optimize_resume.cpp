@@ -1,6 +1,7 @@
 // flapsim optimize resumed (issue 33): an optimisation stopped by --max-evaluations and run
 // again does not run any evaluated point again, and ends where an uninterrupted one ends.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -67,6 +68,18 @@ TEST(OptimizeResume, AnInterruptedOptimisationRerunsNoEvaluatedPoint) {
   ASSERT_EQ(std::system(plot.c_str()), 0);
   for (const char* name : {"optimize_objective.png", "optimize_path.png", "optimize_lift_cycle.png"})
     EXPECT_EQ(test::read_text(dir / "plots" / name).substr(0, 4), "\x89PNG") << name;
+  // Its --help is its usage, and a folder that is no optimisation is said to be one (exit 2,
+  // nothing made). Until 2 Dec both ended in a traceback after making FOLDER/plots
+  // ("--help/plots" in the current folder).
+  const std::string tool = "cd '" + dir.path().string() + "' && /usr/bin/python3 '" +
+                           std::string(FLAPSIM_SOURCE_DIR) + "/tools/plot_optimize.py' ";
+  EXPECT_EQ(std::system((tool + "--help > help.txt").c_str()), 0);
+  EXPECT_NE(test::read_text(dir / "help.txt").find("Usage: plot_optimize.py DIR"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "--help"));
+  const int status = std::system((tool + "plots 2> none.txt").c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << status;
+  EXPECT_NE(test::read_text(dir / "none.txt").find("not a flapsim optimize folder"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "plots" / "plots"));
 
   // A third run of the same command runs nothing.
   ASSERT_EQ(test::run_flapsim(command + " -o " + (dir / "whole").string()), 0);
