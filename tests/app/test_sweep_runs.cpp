@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -230,3 +231,18 @@ TEST(SweepRuns, NumericalFailureIsRecordedAndTheOthersGoOn) {
 }
 
 }  // namespace
+
+// OMP_NUM_THREADS, when set, is a sweep's threads as it is every command's
+// (docs/performance.md; docs/sweeps.md -j): a user on a shared machine who set it to 1 got
+// "1 rank x 2 threads" (the machine's cores) until 2 Dec. 3 here, on any machine.
+TEST(SweepRuns, TheEnvironmentsThreadCountIsTheSweepsDefault) {
+  const test::ScratchDir dir("sweep_omp_threads");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(8);
+  const std::string cmd = "OMP_NUM_THREADS=3 '" + std::string(FLAPSIM_BINARY) + "' sweep '" +
+                          (dir / "case.toml").string() +
+                          "' --vary kinematics.rotation_phase=-0.1,0,0.1 --log-every 1000 -o '" +
+                          (dir / "out").string() + "' > '" + (dir / "said.txt").string() + "' 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << read_text(dir / "said.txt");
+  const std::string said = read_text(dir / "said.txt");
+  EXPECT_NE(said.find("1 rank x 3 threads"), std::string::npos) << said;
+}

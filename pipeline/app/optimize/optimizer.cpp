@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "pipeline/app/interruption.hpp"
+#include "pipeline/app/omp_environment.hpp"
 #include "pipeline/app/optimize/bounds_check.hpp"
 #include "pipeline/app/optimize/optimize_report.hpp"
 #include "pipeline/app/optimize/optimum_case.hpp"
@@ -158,7 +159,7 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
   // share of its machine's cores. Set on the worker thread that runs the search (a new
   // thread does not inherit the OpenMP setting of this one).
   int omp_threads = omp_get_max_threads();
-  if (world.active()) {
+  if (world.active() && !app::omp_num_threads_set()) {
     const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     omp_threads = std::max(1, cores / std::max(1, world.ranks_on_host()));
   }

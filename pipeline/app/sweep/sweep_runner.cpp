@@ -19,6 +19,7 @@
 #include "pipeline/app/flexibility_warnings.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
+#include "pipeline/app/omp_environment.hpp"
 #include "pipeline/app/sweep/earlier_cases.hpp"
 #include "pipeline/app/sweep/kept_series.hpp"
 #include "pipeline/app/sweep/keys_that_change_nothing.hpp"
@@ -53,8 +54,12 @@ void share_check(const MpiWorld& world, bool ok) {
 }
 
 int default_threads(const MpiWorld& world, std::size_t cases) {
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const int per_rank = std::max(1, cores / std::max(1, world.ranks_on_host()));
+  // OMP_NUM_THREADS, when set, is the user's threads per process (as for every command:
+  // docs/performance.md); else the machine's cores shared by the ranks on it.
+  const int per_rank = app::omp_num_threads_set()
+                           ? std::max(1, omp_get_max_threads())
+                           : std::max(1, std::max(1, static_cast<int>(std::thread::hardware_concurrency())) /
+                                             std::max(1, world.ranks_on_host()));
   // Without MPI, no more threads than cases.
   return world.active() ? per_rank : std::max(1, std::min<int>(per_rank, static_cast<int>(cases)));
 }
