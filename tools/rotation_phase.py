@@ -21,9 +21,10 @@ cycle (the last one the run completed):
   rp_lead   rp_phase - base: the section's crossings minus the base's, same cycle
             (negative: the section rotates earlier);
   own_phase the section's crossings minus ITS OWN sweep reversals (its own phi maximum
-            before the falling crossing, minimum before the rising one): what
-            summary.json's tip_rotation_phase measures (pipeline/fsi/phase_analysis.hpp),
-            recomputed here on the same cycle.
+            before the falling crossing, minimum before the rising one): the definition
+            of summary.json's tip_rotation_phase (pipeline/fsi/phase_analysis.hpp), on
+            this tool's wingbeat, where summary.json takes the run's last period: they
+            differ by a fraction of a step where the wingbeats differ (docs/fsi.md).
 
 Usage: rotation_phase.py RUN_DIR [--section tip|outer] [--json]
 prints base, rp_phase, rp_lead, own_phase for the section (fractions of the period).
