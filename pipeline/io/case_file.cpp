@@ -480,17 +480,32 @@ void warn_frozen_wake_in_still_air(const TomlTable& root, Case& c) {
 
 void warn_long_free_hover(const TomlTable& root, Case& c) {
   const Case::Numerics& n = c.numerics;
-  if (!meets_its_own_wake(c) || !n.free_wake || n.cycles <= kLongFreeHoverCycles || n.far_wake_cycles > 0.0 ||
-      n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
+  const mbd::WingKinematics& k = c.kinematics;
+  // A revolving wing's cycles are a time unit (frequency_hz): it comes back to its wake once
+  // a revolution, so its revolutions are what count.
+  const double wingbeats = k.revolution.active() ? std::abs(k.revolution.at(n.cycles / k.frequency).value) /
+                                                       (2.0 * std::numbers::pi)
+                                                 : static_cast<double>(n.cycles);
+  if (!meets_its_own_wake(c) || !n.free_wake || !(wingbeats > kLongFreeHoverCycles) ||
+      n.far_wake_cycles > 0.0 || n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
     return;
+  // The far wake needs a span that sweeps a disk (fsi_setup.cpp refuses it otherwise: a wing
+  // that only pitches or plunges); such a wing is told what it can do instead.
+  const bool sweeps_a_disk = k.revolution.active() || !k.sweep.is_constant() || !k.deviation.is_constant();
+  const std::string remedy = sweeps_a_disk
+                                 ? "set far_wake_cycles = 0.5 (as cases/hover_periodic.toml)"
+                                 : "this wing's span sweeps no disk for a far wake (far_wake_cycles is "
+                                   "refused): read its first cycles, or cap the wake (wake_max_rows)";
+  const std::string what =
+      k.revolution.active() ? number_text(wingbeats) + " revolutions" : std::to_string(n.cycles) + " cycles";
   warn_at_numerics_key(
       root, c, "cycles",
-      std::to_string(n.cycles) +
-          " cycles of hover with the whole wake free: from the second "
+      what +
+          " of hover with the whole wake free: from the second "
           "cycle on the lift hinges on round-off (a change of the frequency by 1e-9 moved a "
           "hawkmoth hover's cycle-3 mean lift by up to 39 %), and it grows erratic after 5-8 "
-          "cycles (docs/uvlm.md, \"Hover over many cycles\"); set far_wake_cycles = 0.5 (as "
-          "cases/hover_periodic.toml)");
+          "cycles (docs/uvlm.md, \"Hover over many cycles\"); " +
+          remedy);
 }
 
 // A hover (no free stream) whose convected far wake starts outside the measured range
@@ -499,6 +514,9 @@ void warn_long_free_hover(const TomlTable& root, Case& c) {
 // means wander (docs/uvlm.md, "Hover over many cycles").
 void warn_far_wake_outside_measured_range(const TomlTable& root, Case& c) {
   const double f = c.numerics.far_wake_cycles;
+  // The range is in wingbeats of a flapping hover; a revolving wing's cycle is a time unit
+  // (frequency_hz): the same run at another frequency_hz was warned or not.
+  if (c.kinematics.revolution.active()) return;
   if (!meets_its_own_wake(c) || !c.numerics.free_wake || !(f > 0.0) ||
       (f >= kHoverFarWakeCyclesMin && f <= kHoverFarWakeCyclesMax))
     return;

@@ -97,8 +97,29 @@ TEST(CaseWarnings, ARevolvingWingIsWarnedOfItsWakeOnlyOnceItComesRound) {
   expect_only_warning(revolving(-1800.0, 8), "numerics.cycles", 11, "round-off");
   expect_only_warning(revolving(-1800.0, 8, "free_wake = false\n"), "numerics.free_wake", 12,
                       "set free_wake = true");
-  expect_only_warning(revolving(-1800.0, 8, "far_wake_cycles = 2.0\n"), "numerics.far_wake_cycles", 12,
-                      "outside the measured range");
+  // The far wake's measured range is in wingbeats of a flapping hover; a revolving wing's
+  // cycle is a time unit (until 2 Dec the same run was warned or not with frequency_hz).
+  EXPECT_TRUE(revolving(-1800.0, 8, "far_wake_cycles = 2.0\n").warnings.empty());
+  // Its revolutions are what the long hover's warning counts: 720° in 8 cycles.
+  EXPECT_NE(revolving(-1800.0, 8).warnings[0].message.find("2 revolutions of hover with the whole wake free"),
+            std::string::npos);
+}
+
+// A wing whose span sweeps no disk (it plunges: its pivot moves, its span keeps one direction)
+// cannot have the far wake (refused, pipeline/app/fsi_setup.cpp): the long hover's warning
+// names what it can do instead (until 2 Dec it said "set far_wake_cycles = 0.5", which is
+// then refused).
+TEST(CaseWarnings, ALongHoverOfAWingWithoutASweepIsNotToldToSetTheFarWake) {
+  std::string text = hover_case_text("cycles = 3\nfar_wake_cycles = 0.0\n");
+  const std::string sweep = "sweep = { cos_deg = [50.0] }\n";
+  ASSERT_NE(text.find(sweep), std::string::npos);
+  text.replace(text.find(sweep), sweep.size(), "sweep = 0.0\nheave = { sin_m = [0.005] }\n");
+  const flapsim::io::Case c = case_from_text(text);
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(c.warnings[0].key, "numerics.cycles");
+  EXPECT_NE(c.warnings[0].message.find("sweeps no disk"), std::string::npos) << c.warnings[0].message;
+  EXPECT_EQ(c.warnings[0].message.find("set far_wake_cycles = 0.5"), std::string::npos)
+      << c.warnings[0].message;
 }
 
 // A revolution's ramp that lasts beyond the start of the last cycle: the reported mean (the
