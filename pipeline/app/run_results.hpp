@@ -297,7 +297,10 @@ struct ReportLine {
 /// 7.0 at most (an AR-4 plate shedding at 20°; the other models 3.5 at most after the start's
 /// two steps), runs whose sheet came apart by 9.4–142 (a revolving delta wing's 12 cycles that
 /// ended "ok" at a mean CL of 1.03 against 1.5 in its first revolution: 39; the hover of a
-/// delta: 28), the forward flight of docs/fsi.md "Failures" by 10–80 a step.
+/// delta: 28), the forward flight of docs/fsi.md "Failures" by 10–80 a step. A sheet that
+/// strikes the wing at a reversal spikes as 1/Δt (Lua et al.'s hover at 200 steps a cycle:
+/// 20–41, its mean over many cycles within 3 % of the measurement, docs/uvlm.md): warned
+/// too, and the warning says how to tell the two apart.
 inline constexpr double kSheetApartClJump = 10.0;
 
 inline constexpr std::array kRunReport = {
@@ -316,9 +319,11 @@ inline constexpr std::array kRunReport = {
     // diverged-force bound: the run ends "ok" on a flow that is not the air's.
     ReportLine{"warning: with leading_edge = \"shed\" the lift coefficient changed by {largest_CL_jump} from "
                "one step to the next (into step {largest_CL_jump_step}; history.csv CL): the leading-edge "
-               "sheet came apart near the wing, and the results from there on are not the flow's; "
-               "numerics.sheet_core_radius = 0.5 keeps it together in more runs, leading_edge = "
-               "\"separated\", the default, sheds no sheet (docs/fsi.md, \"Failures\")",
+               "sheet came apart near the wing, or struck it (runs whose sheet stayed together changed by "
+               "7 at most); if the lift around that step runs away rather than spiking at a reversal, the "
+               "results from there on are not the flow's; numerics.sheet_core_radius = 0.5 keeps the sheet "
+               "together in more runs, leading_edge = \"separated\", the default, sheds none (docs/fsi.md, "
+               "\"Failures\")",
                [](const RunResults& r) {
                  return r.text("leading_edge") == "shed" && r.number("largest_CL_jump") > kSheetApartClJump;
                }},
