@@ -45,12 +45,16 @@ struct CorotatedFrame {
   Eigen::Matrix<double, 3, 6 * N> spin_map;   ///< G: δω̃_r = G δũ (local components)
 };
 
-/// Optional velocity-proportional (co-rotational stiffness-proportional) damping.
+/// Optional stiffness-proportional damping of the element's own deformation rate: the local
+/// force gains a₁ k ḋ with ḋ = (d − d_n)/h, d_n the element's deformation at the step's start
+/// (first order in h). d does not change under any rigid motion, so a wing flapped rigidly
+/// feels none of it (damping the nodes' velocities instead, B ḋ from v, left the integrator's
+/// non-rigid residue of the flapping, O(h² ω ω̇), damped by the membrane's stiffness: forces as
+/// large as the wing's own, docs/fem.md "Damping"); its work a₁/h Δdᵀ k Δd is not negative.
 template <int N>
 struct EicrDamping {
-  const Eigen::Matrix<double, 6 * N, 1>* velocity = nullptr;  ///< global (ẋ, ω) of the element's nodes
-  double coefficient = 0.0;       ///< a₁ [s]: damping force a₁ Bᵀ k ḋ
-  double tangent_scale = 0.0;     ///< factor of a₁ Bᵀ k B added to the tangent (∂v/∂u)
+  const Eigen::Matrix<double, 6 * N, 1>* start_deformation = nullptr;  ///< d_n [m, rad]
+  double coefficient = 0.0;  ///< a₁/h [-]: local force (a₁/h) k (d − d_n), tangent (1 + a₁/h) Bᵀ k B
 };
 
 /// \brief The deformational displacements d = (ū_a, θ̄_a) of an element in its co-rotated
@@ -103,11 +107,11 @@ double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d
   Vec d;
   eicr_deformation<N>(Xbar, T0, Tr, x, R, xbar, d);
   for (int a = 0; a < N; ++a) H[a] = inverse_tangent(d.template segment<3>(6 * a + 3));
-  // P and B = H P are formed only for the tangent or damping: the force alone (every
-  // iteration of a modified Newton, nonlinear_dynamics.hpp) applies Pᵀ in closed form.
-  const bool damped = damping.velocity != nullptr && damping.coefficient != 0.0;
+  // P and B = H P are formed only for the tangent: the force alone (every iteration of a
+  // modified Newton, nonlinear_dynamics.hpp) applies Pᵀ in closed form.
+  const bool damped = damping.start_deformation != nullptr && damping.coefficient != 0.0;
   Mat P, B;
-  if (K != nullptr || damped) {
+  if (K != nullptr) {
     P.setZero();
     for (int a = 0; a < N; ++a) {
       for (int b = 0; b < N; ++b)
@@ -123,11 +127,7 @@ double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d
   Vec fl;
   Mat k;  // the local tangent, formed only when the tangent or the damping needs it
   const double energy = law(d, fl, (K != nullptr || damped) ? &k : nullptr);
-  if (damped) {
-    Vec vl;
-    for (int i = 0; i < 2 * N; ++i) vl.template segment<3>(3 * i) = Tr * damping.velocity->template segment<3>(3 * i);
-    fl += damping.coefficient * (k * (B * vl));
-  }
+  if (damped) fl += damping.coefficient * (k * (d - *damping.start_deformation));
   Vec fbar = fl;
   for (int a = 0; a < N; ++a) fbar.template segment<3>(6 * a + 3) = H[a].transpose() * fl.template segment<3>(6 * a + 3);
   // p = Pᵀ f̄: with n_a, m_a the force and moment parts of f̄,
@@ -158,7 +158,7 @@ double eicr_force_with_law(const LocalLaw& law, const std::array<Eigen::Vector3d
       for (int a = 0; a < N; ++a) fbar.template segment<3>(6 * a + 3) = H[a].transpose() * fl.template segment<3>(6 * a + 3);
       p.noalias() = P.transpose() * fbar;
     }
-    if (damping.tangent_scale != 0.0) Kl *= 1.0 + damping.tangent_scale;
+    if (damped) Kl *= 1.0 + damping.coefficient;
     Eigen::Matrix<double, 3, n> FnT = Eigen::Matrix<double, 3, n>::Zero();
     Mat Kg;
     for (int i = 0; i < 2 * N; ++i) Kg.template block<3, n>(3 * i, 0) = -skew(p.template segment<3>(3 * i)) * G;

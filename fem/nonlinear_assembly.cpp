@@ -208,9 +208,23 @@ void NonlinearAssembler::record_correction_path(const CorotationalState& state, 
   if (point < 0 || point > 2) throw std::invalid_argument("record_correction_path: point must be 0, 1 or 2");
   // The deformations alone (the forces at the path's points are not needed): the elements
   // that take a linearised geometric force, linear shells and frames.
-  auto& shell_d = path_shell_d_[static_cast<size_t>(point)];
-  auto& frame_d = path_frame_d_[static_cast<size_t>(point)];
-  const int ns = model_.membrane_law == MembraneLaw::Elastic ? static_cast<int>(model_.shells.size()) : 0;
+  record_deformations(state, false, path_shell_d_[static_cast<size_t>(point)],
+                      path_frame_d_[static_cast<size_t>(point)]);
+}
+
+void NonlinearAssembler::record_step_start(const CorotationalState& state) {
+  start_shell_d_.resize(model_.shells.size());
+  start_frame_d_.resize(model_.frames.size());
+  record_deformations(state, true, start_shell_d_, start_frame_d_);
+}
+
+void NonlinearAssembler::record_deformations(const CorotationalState& state, bool all_shells,
+                                             std::vector<Eigen::Matrix<double, 18, 1>>& shell_d,
+                                             std::vector<Eigen::Matrix<double, 12, 1>>& frame_d) const {
+  const int ns =
+      model_.membrane_law == MembraneLaw::Elastic || (all_shells && model_.membrane_law != MembraneLaw::Film)
+          ? static_cast<int>(model_.shells.size())
+          : 0;
   const int nb = static_cast<int>(model_.frames.size());
   const auto& p = state.position;
   const auto& r = state.rotation;
@@ -261,11 +275,8 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
     const std::array<Eigen::Vector3d, 3> x{s.position[el.nodes[0]], s.position[el.nodes[1]], s.position[el.nodes[2]]};
     const std::array<Eigen::Matrix3d, 3> R{s.rotation[el.nodes[0]], s.rotation[el.nodes[1]], s.rotation[el.nodes[2]]};
     EicrDamping<3> damp;
-    Vector18d v;
-    if (ex.velocity != nullptr && ex.damping != 0.0) {
-      for (int a = 0; a < 3; ++a) v.segment<6>(6 * a) = ex.velocity->segment<6>(6 * el.nodes[a]);
-      damp = {&v, ex.damping, ex.damping * ex.damping_tangent_scale};
-    }
+    if (ex.damping_rate > 0.0 && ex.damping != 0.0)
+      damp = {&start_shell_d_.at(static_cast<size_t>(e)), ex.damping * ex.damping_rate};
     Matrix18d* K = tangent ? &shell_K_[static_cast<size_t>(e)] : nullptr;
     if (model_.membrane_law == MembraneLaw::Film) {  // translations only, no damping
       Eigen::Matrix<double, 9, 1> f9;
@@ -292,8 +303,15 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
                 const size_t i = static_cast<size_t>(e);
                 Vector18d g;  // the local force along the last correction, taken linearly
                 const bool linearised = ex.linearised_geometric_force && K != nullptr;
-                if (linearised)
-                  g = el.local_stiffness * (4.0 * path_shell_d_[1][i] - 2.0 * path_shell_d_[0][i] - path_shell_d_[2][i]);
+                if (linearised) {
+                  const Vector18d d_lin =
+                      4.0 * path_shell_d_[1][i] - 2.0 * path_shell_d_[0][i] - path_shell_d_[2][i];
+                  // with the damping's part taken the same way: (a₁/h) k (d_lin − d_n)
+                  g = damp.start_deformation != nullptr
+                          ? Vector18d(el.local_stiffness * ((1.0 + damp.coefficient) * d_lin -
+                                                            damp.coefficient * *damp.start_deformation))
+                          : Vector18d(el.local_stiffness * d_lin);
+                }
                 return eicr_force_with_law<3>(ShellLinearLaw{el}, el.reference_local, el.reference_axes,
                                               shell_corotated_frame(x), x, R, shell_f_[i], K, damp, symmetric,
                                               linearised ? &g : nullptr);
@@ -304,17 +322,19 @@ double NonlinearAssembler::evaluate(const CorotationalState& s, Eigen::VectorXd&
     const CorotationalFrame& el = model_.frames[static_cast<size_t>(e)];
     const std::array<Eigen::Vector3d, 2> x{s.position[el.nodes[0]], s.position[el.nodes[1]]};
     const std::array<Eigen::Matrix3d, 2> R{s.rotation[el.nodes[0]], s.rotation[el.nodes[1]]};
-    EicrDamping<2> damp;
-    Vector12d v;
-    if (ex.velocity != nullptr && ex.damping != 0.0) {
-      for (int a = 0; a < 2; ++a) v.segment<6>(6 * a) = ex.velocity->segment<6>(6 * el.nodes[a]);
-      damp = {&v, ex.damping, ex.damping * ex.damping_tangent_scale};
-    }
     const size_t i = static_cast<size_t>(e);
+    EicrDamping<2> damp;
+    if (ex.damping_rate > 0.0 && ex.damping != 0.0)
+      damp = {&start_frame_d_.at(i), ex.damping * ex.damping_rate};
     Vector12d g;  // the local force along the last correction, taken linearly
     const bool linearised = ex.linearised_geometric_force && tangent;
-    if (linearised)
-      g = el.local_stiffness * (4.0 * path_frame_d_[1][i] - 2.0 * path_frame_d_[0][i] - path_frame_d_[2][i]);
+    if (linearised) {
+      const Vector12d d_lin = 4.0 * path_frame_d_[1][i] - 2.0 * path_frame_d_[0][i] - path_frame_d_[2][i];
+      g = damp.start_deformation != nullptr
+              ? Vector12d(el.local_stiffness *
+                          ((1.0 + damp.coefficient) * d_lin - damp.coefficient * *damp.start_deformation))
+              : Vector12d(el.local_stiffness * d_lin);
+    }
     energy_[static_cast<size_t>(ns + e)] =
         eicr_force<2>(el.local_stiffness, el.reference_local, el.reference_axes, frame_corotated_frame(el, x, R), x,
                       R, frame_f_[i], tangent ? &frame_K_[i] : nullptr, damp, form_ == TangentForm::SymmetricLower,

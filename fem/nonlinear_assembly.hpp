@@ -89,9 +89,10 @@ Eigen::VectorXd displacement_vector(const CorotationalModel& model, const Corota
 /// Extra terms of one evaluation (dynamics).
 struct TangentExtras {
   double mass_scale = 0.0;                     ///< c_M: adds c_M·M to the tangent [1/s²]
-  const Eigen::VectorXd* velocity = nullptr;   ///< full (ẋ, ω) for damping [m/s, rad/s]
-  double damping = 0.0;                        ///< a₁ [s]: co-rotational stiffness-proportional damping
-  double damping_tangent_scale = 0.0;          ///< ∂v/∂u [1/s] for the damping tangent
+  double damping = 0.0;  ///< a₁ [s]: stiffness-proportional damping of the elements' deformation rate
+  /// 1/h [1/s]: the deformation rate (d − d_n)/h of the damping, d_n recorded by
+  /// NonlinearAssembler::record_step_start; 0: no damping.
+  double damping_rate = 0.0;
   /// The geometric terms of the tangent from each element's local force at the end of the
   /// last Newton correction taken linearly, k (d₀ + B₀ Δu), instead of k d(u) at the current
   /// state (the mixed, "MIP" Newton of Magisano, Leonetti & Garcea 2017; linear shells and
@@ -125,6 +126,10 @@ class NonlinearAssembler {
   /// `point` 0 at its start, 1 at its middle, 2 at its end. From the three,
   /// d₀ + B₀ Δu = 4 d(½) − 2 d(0) − d(1) + O(Δu³) (TangentExtras::linearised_geometric_force).
   void record_correction_path(const CorotationalState& state, int point);
+
+  /// \brief Record the elements' local deformations d_n at the start of a step (the state
+  /// the step starts from): the damping's rate (d − d_n)/h (TangentExtras::damping_rate).
+  void record_step_start(const CorotationalState& state);
 
   /// \brief Adds factor · D_k to the tangent's translation block of each node k (free
   /// DOFs only; the lower triangle for SymmetricLower), after evaluate made it.
@@ -160,6 +165,13 @@ class NonlinearAssembler {
   std::vector<double> energy_;
   std::array<std::vector<Eigen::Matrix<double, 18, 1>>, 3> path_shell_d_;  ///< d along a correction
   std::array<std::vector<Eigen::Matrix<double, 12, 1>>, 3> path_frame_d_;
+  std::vector<Eigen::Matrix<double, 18, 1>> start_shell_d_;  ///< d at the step's start (damping)
+  std::vector<Eigen::Matrix<double, 12, 1>> start_frame_d_;
+  /// The deformations d of the shells (all but films', `all_shells`; else the linear ones)
+  /// and frames at a state, into the given arrays.
+  void record_deformations(const CorotationalState& state, bool all_shells,
+                           std::vector<Eigen::Matrix<double, 18, 1>>& shell_d,
+                           std::vector<Eigen::Matrix<double, 12, 1>>& frame_d) const;
 };
 
 }  // namespace flapsim::fem

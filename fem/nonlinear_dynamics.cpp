@@ -220,6 +220,8 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
                              damping->reference_velocity == nullptr ||
                              damping->reference_velocity->cols() != cm.num_nodes()))
     throw std::invalid_argument("step: the load damping needs a block per node and a velocity per model node");
+  // The damping's rate (d − d_n)/h needs each element's deformation at this step's start.
+  if (model.options.stiffness_damping != 0.0) w.assembler.record_step_start(d.state);
   if (w.damping_written) w.damping_force.setZero();
   w.damping_written = damping != nullptr;
   // The kept matrix to start with: the one made for this step (or piece: the same t_n and
@@ -313,9 +315,8 @@ StepResult step(const DynamicsModel& model, DynamicsData& d, double h, const Eig
     const double cV = ga / (be * h);                           // ∂v/∂u [1/s]
     TangentExtras ex;
     ex.mass_scale = cM;
-    ex.velocity = &w.v1;
     ex.damping = model.options.stiffness_damping;
-    ex.damping_tangent_scale = cV;
+    ex.damping_rate = ex.damping != 0.0 ? 1.0 / h : 0.0;
     double previous = 0.0;  // the last correction's size
     bool refactor = false;
     bool corrected = false;  // a correction of this solve has been applied (w.last_dx)

@@ -50,8 +50,9 @@
 /// flapping rotation needs no moving frame and no fictitious (centrifugal,
 /// Coriolis, Euler) forces: they arise from M v̇ in the inertial frame.
 ///
-/// Damping (optional): co-rotational stiffness-proportional damping a₁ Bᵀ k ḋ
-/// acting on deformational velocities only. Mass-proportional damping is not
+/// Damping (optional): stiffness-proportional damping a₁ Bᵀ k ḋ of each element's own
+/// deformation rate, ḋ = (d_{n+1} − d_n)/h (first order; zero for any rigid motion, so the
+/// flapping is not damped: corotational_kernel.hpp EicrDamping). Mass-proportional damping is not
 /// offered: in the ground frame it would damp the rigid flapping motion.
 
 #include <memory>
