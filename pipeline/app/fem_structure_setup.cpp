@@ -5,6 +5,7 @@
 #include "pipeline/app/film_wrinkle_warning.hpp"
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/mesh_budget.hpp"
+#include "wings/loader/planform_geometry.hpp"
 
 namespace flapsim::app {
 
@@ -43,7 +44,8 @@ std::shared_ptr<const fsi::FemStructureModel> make_fem_structure(const io::Case&
   // (docs/fsi.md, "Added mass in the coupling"): it goes without. Nor does Newton's stop
   // from the measured contraction help it (docs/fem.md, "Newton's stop from the measured
   // contraction": the MAV film wing's five wingbeats 12 % slower with it).
-  const bool film = is_thin_film(typical_membrane_wrinkle(f.model));
+  const bool film =
+      is_thin_film(typical_membrane_wrinkle(f.model), wings::planform_properties(wing.outline).mean_chord);
   fem::DynamicsOptions options;
   options.rho_infinity = c.numerics.rho_infinity;
   options.linearised_geometric_force = c.structure.fem_linearised_geometric_terms;

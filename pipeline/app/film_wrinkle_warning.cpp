@@ -1,6 +1,7 @@
 #include "pipeline/app/film_wrinkle_warning.hpp"
 
 #include "fem/nonlinear_dynamics.hpp"
+#include "wings/loader/planform_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,17 +36,29 @@ std::optional<MembraneWrinkle> typical_membrane_wrinkle(const fem::StructuralMod
 std::string film_wrinkle_warning(const io::Case& c, const FsiSetup& setup) {
   if (!setup.fem_structure) return "";
   const std::optional<MembraneWrinkle> median = typical_membrane_wrinkle(setup.fem_structure->structural);
-  if (!is_thin_film(median)) return "";
+  const double mean_chord =
+      setup.wing ? wings::planform_properties(setup.wing->outline).mean_chord : 0.0;  // [m]
+  if (!is_thin_film(median, mean_chord)) return "";
+  char why[200];
+  if (median->strain < kFilmWrinkleStrain)
+    std::snprintf(why, sizeof why,
+                  "buckles into wrinkles of the mesh's own wavelength under %.2g %% of compression",
+                  100.0 * median->strain);
+  else
+    std::snprintf(why, sizeof why,
+                  "is %.2g of the wing's mean chord thin (a film below %.2g, whatever its mesh)",
+                  median->thickness / mean_chord, kFilmThicknessOverChord);
   char text[1000];
-  std::snprintf(text, sizeof text,
-                "the FEM's membrane (%.3g um on elements of %.3g mm) buckles into wrinkles of the mesh's own "
-                "wavelength under %.2g %% of compression, a thin film: where the flapping compresses it (a bending "
-                "rod: ~0.06 %%) the FEM splits its steps (docs/fsi.md, \"Step halving of the FEM\"), and such runs "
-                "took 8x (the 75 mm film wing), 16x (the MAV film wing), 70x (a 55 mm swept 15 um film) and some "
-                "500x (a 13 mm wing of a 4 um membrane at 150 Hz) the time estimated here, and up to "
-                "%.0f MB more memory for a Newton matrix kept for each piece (docs/fsi.md, \"Film wings\")",
-                median->thickness * 1e6, median->size * 1e3, 100.0 * median->strain,
-                2.0 * fem::kKeptMatricesBytes / 1e6);  // each may hold an LDLᵀ beside its LLᵀ
+  std::snprintf(
+      text, sizeof text,
+      "the FEM's membrane (%.3g um on elements of %.3g mm) %s, a thin film: where the flapping compresses "
+      "it (a bending rod: ~0.06 %%) the FEM splits its steps (docs/fsi.md, \"Step halving of the FEM\"), and "
+      "such runs "
+      "took 8x (the 75 mm film wing), 16x (the MAV film wing), 70x (a 55 mm swept 15 um film) and some "
+      "500x (a 13 mm wing of a 4 um membrane at 150 Hz) the time estimated here, and up to "
+      "%.0f MB more memory for a Newton matrix kept for each piece (docs/fsi.md, \"Film wings\")",
+      median->thickness * 1e6, median->size * 1e3, why,
+      2.0 * fem::kKeptMatricesBytes / 1e6);  // each may hold an LDLᵀ beside its LLᵀ
   std::string out = text;
   std::string defaults;
   if (!c.numerics.rho_infinity_written) defaults += "numerics.rho_infinity = 0";

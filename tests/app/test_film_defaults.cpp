@@ -106,3 +106,27 @@ TEST(FilmDefaults, AMinimalSweptFilmCaseFliesAWingbeat) {
   // split steps move it (docs/case_file.md, coupling_reuse_steps), rounded up to 5 %.
   EXPECT_NEAR(mean, 0.527, 0.05 * 0.527);
 }
+
+// A film by its thickness over its chord (kFilmThicknessOverChord): a rounded 25 µm Mylar wing
+// of 11.6 mm mean chord on two rods (tests/data/rod_film_25um_wing.toml, 2.2e-3), whose 1 mm
+// elements wrinkle at 2.5e-3, above kFilmWrinkleStrain: until 2 Dec neither warned nor given
+// the film's settings, it split 18 of its first 19 steps at 20 Hz in 170 s (exit by SIGINT),
+// and with the film's settings written ran its 80 steps in 36 s.
+TEST(FilmDefaults, AFilmByItsThicknessOverItsChordTakesTheFilmsDefaultsWhateverItsMesh) {
+  ScratchDir dir("film_defaults_slender");
+  const std::string text = "name = \"rod_film\"\nwing = \"" + kFilmSource +
+                           "/tests/data/rod_film_25um_wing.toml\"\n"
+                           "[kinematics]\nfrequency_hz = 20.0\nsweep = { cos_deg = [40.0] }\n"
+                           "rotation = { mean_deg = 90.0, sin_deg = [-40.0] }\n"
+                           "[structure]\nkind = \"fem\"\n[numerics]\nsteps_per_cycle = 40\ncycles = 1\n";
+  const auto c = load_text(dir, "rod_film", text);
+  const auto setup = flapsim::app::build_fsi_setup(c, {});
+  ASSERT_TRUE(setup.fem_structure);
+  const auto typical = flapsim::app::typical_membrane_wrinkle(setup.fem_structure->structural);
+  ASSERT_TRUE(typical);
+  EXPECT_GT(typical->strain, flapsim::app::kFilmWrinkleStrain);  // not a film by its mesh
+  EXPECT_EQ(setup.fem_structure->dynamics.options.rho_infinity, flapsim::app::kFilmRhoInfinity);
+  EXPECT_FALSE(setup.fem_structure->dynamics.options.linearised_geometric_force);
+  const std::string warning = flapsim::app::film_wrinkle_warning(c, setup);
+  EXPECT_NE(warning.find("is 0.0022 of the wing's mean chord thin"), std::string::npos) << warning;
+}
