@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace flapsim::reduction {
@@ -58,6 +59,10 @@ BeamProperties extract_beam_properties(const ClampedWingAnalysis& analysis, int 
     const double dph = mot_t[static_cast<std::size_t>(k + 1)].phi - ph0;
     st.EI = analysis.moment() * ds / dth;  // EI = M Δs / Δθ
     st.GJ = analysis.torque() * ds / dph;  // GJ = T Δs / Δφ
+    // A section turned against the load (or not at all) identifies no stiffness: NaN, counted
+    // (the chain's springs come from the stations' compliance, not from these).
+    if (!(st.EI > 0.0) || !std::isfinite(st.EI)) st.EI = std::numeric_limits<double>::quiet_NaN();
+    if (!(st.GJ > 0.0) || !std::isfinite(st.GJ)) st.GJ = std::numeric_limits<double>::quiet_NaN();
     st.n_ea = nea[static_cast<std::size_t>(k)];
     st.in_tip_zone = st.s_end > z_start + 1e-12 * ds;
     beam.stations.push_back(st);
@@ -86,7 +91,11 @@ BeamProperties extract_beam_properties(const ClampedWingAnalysis& analysis, int 
     st.GJ = ok.GJ;
     st.n_ea = ok.n_ea;
   }
-  for (auto& st : beam.stations) st.x_ea = ax.point(st.s, st.n_ea).x();
+  for (auto& st : beam.stations) {
+    st.x_ea = ax.point(st.s, st.n_ea).x();
+    beam.unidentified_ei += std::isnan(st.EI) ? 1 : 0;
+    beam.unidentified_gj += std::isnan(st.GJ) ? 1 : 0;
+  }
 
   // Mean elastic axis from the twists at the tip zone's edge, and the coupling measure.
   const SectionSampler edge = analysis.sampler({z_start}, 0.5 * ds);  // clear of the loads

@@ -40,6 +40,10 @@ struct BeamProperties {
   /// Twist under the unit bending moment relative to the twist under the unit torque,
   /// at the tip zone's edge: size of the bending–torsion coupling the chain leaves out [-].
   double bend_twist_coupling = 0.0;
+  /// Cells whose EI (GJ) is not identified: their sections turned against the unit moment
+  /// (torque) or not at all, Δθ·M ≤ 0 (a film beyond its rods: its sections' fit follows the
+  /// film, which twists about the spar, not the spar that carries the moment); NaN there.
+  int unidentified_ei = 0, unidentified_gj = 0;
   std::vector<BeamStation> stations;
 };
 

@@ -139,6 +139,19 @@ std::string fitted_axis_note(const reduction::BeamProperties& beam) {
   return buf;
 }
 
+std::string unidentified_stiffness_note(const reduction::BeamProperties& beam) {
+  char buf[600];
+  std::snprintf(
+      buf, sizeof buf,
+      "Note: beam.csv's EI is not identified at %d and GJ at %d of its %zu stations (NaN there): the "
+      "sections turned against the unit moment or torque, as the film of a wing beyond its rods does "
+      "(its sections' fit follows the film, which twists about the spar, not the spar that carries the "
+      "moment). The chain's springs come from the stations' compliance, not from these columns "
+      "(docs/reduction.md, \"Stiffness: per cell\").",
+      beam.unidentified_ei, beam.unidentified_gj, beam.stations.size());
+  return buf;
+}
+
 std::string reduction_report(const std::string& wing_file, const reduction::BeamProperties& beam,
                              const reduction::LumpedChain& lc, const reduction::ChainFemComparison& c) {
   std::ostringstream s;
@@ -146,18 +159,19 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
     << "Method: docs/reduction.md. Flexural axis at psi = " << beam.axis.psi << " rad from y_W"
     << (beam.axis.offset != 0.0 ? ", " + std::to_string(beam.axis.offset * 1e3) + " mm from the pivot"
                                 : std::string(" through the pivot"))
-    << "; flexible span " << beam.s_root << " … " << beam.s_tip << " m; "
-    << beam.stations.size() << " beam stations; " << lc.chain.num_bodies() << " bodies of "
-    << lc.body_length << " m, root " << (lc.chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid")
-    << ".\n\n"
+    << "; flexible span " << beam.s_root << " … " << beam.s_tip << " m; " << beam.stations.size()
+    << " beam stations; " << lc.chain.num_bodies() << " bodies of " << lc.body_length << " m, root "
+    << (lc.chain.root == mbd::RootAttachment::sprung ? "sprung" : "rigid") << ".\n\n"
     << (beam.fitted_axis_rejected ? fitted_axis_note(beam) + "\n\n" : std::string())
+    << (beam.unidentified_ei + beam.unidentified_gj > 0 ? unidentified_stiffness_note(beam) + "\n\n"
+                                                        : std::string())
     << "FEM mass " << c.fem_mass << " kg, strip sum " << beam.strip_mass_sum << " kg, chain mass "
     << c.chain_mass << " kg. Mean elastic axis from the tip twists: n = " << beam.n_ea_tip
     << " m from the axis. Bending–torsion coupling (twist under the unit moment / twist under "
        "the unit torque): "
     << beam.bend_twist_coupling
     << (lc.springs == reduction::SpringModel::full ? " (carried by the chain's full joint stiffness).\n\n"
-                                                     : " (not represented by the diagonal springs).\n\n")
+                                                   : " (not represented by the diagonal springs).\n\n")
     << "## Chain vs FEM\n\n| quantity | FEM | chain | error | MAC |\n|---|---|---|---|---|\n";
   auto mode_row = [&](const char* name, const reduction::ModeMatch& m) {
     if (!m.found) {
