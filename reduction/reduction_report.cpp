@@ -90,51 +90,22 @@ ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
     out.fem_beam_share.push_back(sk.beam_share);
   }
 
-  // Sample points: two per body at its mid-span, at the leading and trailing nodes of the band.
-  std::vector<double> mids;
-  for (int k = 0; k < nb; ++k) mids.push_back(a * (k + 0.5));
-  const SectionSampler smp = analysis.sampler(mids, 0.25 * a);
-  auto fem_samples = [&](const Eigen::VectorXd& shape) {
-    Eigen::VectorXd uz(analysis.nodes().cols());
-    for (Eigen::Index i = 0; i < uz.size(); ++i) uz[i] = shape[fem::dof_index(static_cast<int>(i), fem::UZ)];
-    Eigen::VectorXd v(2 * nb);
-    for (int k = 0; k < nb; ++k) {
-      const SectionMotion m = smp.sample(k, uz);
-      v[2 * k] = m.w - m.phi * smp.n_max(k);
-      v[2 * k + 1] = m.w - m.phi * smp.n_min(k);
-    }
-    return v;
-  };
-  auto chain_samples = [&](const Eigen::VectorXd& q) {
-    Eigen::VectorXd v(2 * nb);
-    for (int k = 0; k < nb; ++k) {
-      v[2 * k] = lin.displacement(k, Eigen::Vector3d(smp.n_max(k), mids[static_cast<std::size_t>(k)], 0.0), q).z();
-      v[2 * k + 1] = lin.displacement(k, Eigen::Vector3d(smp.n_min(k), mids[static_cast<std::size_t>(k)], 0.0), q).z();
-    }
-    return v;
-  };
   // Every FEM beam mode with the chain mode whose shape correlates best; the first bending
   // and torsion rows are taken from these pairs (the chain's own kind of its mode is not
   // asked: on a coupled mode it may differ from the FEM's, docs/reduction.md).
   // The MAC is taken in the chain's own coordinates, weighted by its mass matrix: the FEM
   // mode's joint angles Φ (its stations' motion, as its kind is named) against the chain
-  // mode's q, (Φᵀ M q)² / (Φᵀ M Φ · qᵀ M q), as plain MACs of Lᵀ Φ and Lᵀ q (M = L Lᵀ). The
-  // surface samples it replaced (two points a body, fitted over every node of a band) read a
-  // film wing's trailing-edge film: a 25 µm wing on a spar (tests/data/rod_film_25um_wing.toml)
-  // at 8 bodies paired its first bending mode (717 Hz) with the chain's first torsion mode
-  // (66.7 Hz, MAC 0.67; the chain's bending mode at 711.9 Hz had 0.04) and warned of −90.7 %.
-  const Eigen::LLT<Eigen::MatrixXd> mass_factor(lin.mass_matrix());
-  const bool weighted = mass_factor.info() == Eigen::Success;
-  const Eigen::MatrixXd mass_root_t = weighted ? Eigen::MatrixXd(mass_factor.matrixU()) : Eigen::MatrixXd();
+  // mode's q, (Φᵀ M q)² / (Φᵀ M Φ · qᵀ M q), as plain MACs of Lᵀ Φ and Lᵀ q (M = L Lᵀ, positive
+  // definite: the chain's modes are those of K q = ω² M q). The surface samples it replaced
+  // (two points a body, fitted over every node of a band) read a film wing's trailing-edge
+  // film: a 25 µm wing on a spar (tests/data/rod_film_25um_wing.toml) at 8 bodies paired its
+  // first bending mode (717 Hz) with the chain's first torsion mode (66.7 Hz, MAC 0.67; the
+  // chain's bending mode at 711.9 Hz had 0.04) and warned of −90.7 %.
+  const Eigen::MatrixXd mass_root_t = Eigen::LLT<Eigen::MatrixXd>(lin.mass_matrix()).matrixU();
   std::vector<Eigen::VectorXd> fem_s, chain_s;
   std::vector<StationModeKind> fem_k;
-  for (Eigen::Index i = 0; i < modes.shapes.cols(); ++i)
-    fem_s.push_back(
-        weighted ? Eigen::VectorXd(mass_root_t * lumped.joint_stiffness.joint_angles(
-                                                     lumped.stations.station_motion(modes.shapes.col(i))))
-                 : fem_samples(modes.shapes.col(i)));
-  for (const auto& m : cmodes)
-    chain_s.push_back(weighted ? Eigen::VectorXd(mass_root_t * m.shape) : chain_samples(m.shape));
+  for (const auto& sk : station_kinds) fem_s.push_back(mass_root_t * sk.joint_angles);
+  for (const auto& m : cmodes) chain_s.push_back(mass_root_t * m.shape);
   for (const auto& sk : station_kinds) fem_k.push_back(sk.kind);
   out.beam_mode_pairs = pair_modes_by_mac(fem_s, out.fem_hz, fem_k, chain_s, out.chain_hz);
   out.bending = first_pair_of_kind(out.beam_mode_pairs, fem_k, StationModeKind::bending);

@@ -30,7 +30,8 @@ StationModeMeasures classify_by_stations(const LumpedChain& lc, const Eigen::Vec
     }
   }
   m.beam_share = all > 0.0 ? rigid / all : 0.0;
-  const Eigen::VectorXd phi = lc.joint_stiffness.joint_angles(u);
+  m.joint_angles = lc.joint_stiffness.joint_angles(u);
+  const Eigen::VectorXd& phi = m.joint_angles;
   Eigen::VectorXd bend = phi, twist = phi;
   for (Eigen::Index d = 0; d < phi.size(); ++d) (d % 2 == 0 ? twist : bend)[d] = 0.0;
   const Eigen::MatrixXd& k = lc.joint_stiffness.stiffness;

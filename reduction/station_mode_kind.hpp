@@ -28,6 +28,8 @@ struct StationModeMeasures {
   double beam_share = 0.0;     ///< mass-weighted share of u_z that the stations' rigid sections carry [-]
   double bending_share = 0.0;  ///< share of the joint-stiffness energy in the θ block [-]
   StationModeKind kind = StationModeKind::film;
+  Eigen::VectorXd
+      joint_angles;  ///< Φ = T u: the mode in the chain's coordinates [rad] (the MAC's, reduction_report.cpp)
 };
 
 /// \brief Measures and kind of the FEM mode shape \p shape (full DOF vector).

@@ -318,11 +318,7 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     r.set("mean_power_W", power);
     // The largest step-to-step change of C_L after the start (its first two steps carry the
     // impulse of a wing started in air): the mark of a shed sheet come apart (run_results.hpp).
-    LiftJump jump;
-    for (std::size_t k = 2; k < samples_.size(); ++k) {
-      const double change = std::abs(samples_[k].cl - samples_[k - 1].cl);
-      if (change > jump.size) jump = {change, static_cast<long>(k) + 1};
-    }
+    const LiftJump jump = largest_recorded_jump(3);
     if (jump.step > 0) {
       r.set("largest_CL_jump", jump.size);
       r.set("largest_CL_jump_step", jump.step);
@@ -406,12 +402,17 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   if (setup_.model.air) r.set("wake_panels", data.lattice->wake_panels());
 }
 
-LiftJump RunRecorder::largest_lift_jump() const {
+LiftJump RunRecorder::largest_recorded_jump(long first_step) const {
   LiftJump largest;
-  for (std::size_t k = 1; k < samples_.size(); ++k) {
+  for (std::size_t k = static_cast<std::size_t>(std::max(first_step - 1, 1L)); k < samples_.size(); ++k) {
     const double change = std::abs(samples_[k].cl - samples_[k - 1].cl);
     if (change > largest.size) largest = {change, static_cast<long>(k) + 1};
   }
+  return largest;
+}
+
+LiftJump RunRecorder::largest_lift_jump() const {
+  LiftJump largest = largest_recorded_jump(2);
   if (measured_ && !samples_.empty()) {  // the step that failed after it was measured
     const double change = std::abs(measured_->cl - samples_.back().cl);
     if (change > largest.size) largest = {change, static_cast<long>(samples_.size()) + 1};

@@ -103,6 +103,9 @@ class RunRecorder {
 
  private:
   void write_series(const fsi::FsiData& data, long step);
+  /// The largest change of C_L between two consecutive recorded steps, into step
+  /// \p first_step (1-based, ≥ 2) or later.
+  LiftJump largest_recorded_jump(long first_step) const;
   /// Flushes the frames written since the last publication and rewrites the .pvd files,
   /// if kSeriesPublishInterval has passed since then or \p now. \throws io::OutputError
   void publish_series(bool now);
