@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <system_error>
 
@@ -152,6 +153,9 @@ std::vector<std::string> command_outputs(const std::string& command) {
   if (command == "modes") return {"modes.csv", "fem.vtu", "fem_modes.pvsm"};
   if (command == "reduce")
     return {"beam.csv", "chain.toml", "reduction.vtm", "reduction/*.vtp", "report.md", "summary.json"};
+  // optimize keeps no manifest (a rerun resumes from its evaluations.csv); named here so
+  // that reduce, which also writes report.md, does not replace its report unasked.
+  if (command == "optimize") return {"evaluations.csv", "optimum.toml", "optimum_wing.toml", "report.md"};
   if (command == "run")
     return {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "fem.pvd", "run.pvsm",
             "tip_path.vtp", "marker_*_path.vtp", "vtk/wing_*.vtp", "vtk/wake_*.vtp", "vtk/chain_*.vtp",
@@ -159,12 +163,18 @@ std::vector<std::string> command_outputs(const std::string& command) {
   return {};
 }
 
-void claim_output_folder(const fs::path& dir, const std::string& command, bool force) {
-  prepare_output_directory(dir);
-  Manifest m = read_manifest(dir);
+namespace {
+
+// The commands whose outputs one folder may hold side by side, as long as no file name clashes.
+constexpr const char* kFolderCommands[] = {"mesh", "modes", "reduce", "optimize", "run"};
+
+// Another command's outputs present in \p dir that \p command would replace (its name and the
+// clashing file names), or none.
+std::optional<std::pair<std::string, std::vector<std::string>>> clashing_outputs(const fs::path& dir,
+                                                                                 const Manifest& m,
+                                                                                 const std::string& command) {
   const std::vector<std::string> mine = command_outputs(command);
-  // Another command's outputs that this command would replace.
-  for (const std::string other : {"mesh", "modes", "reduce", "run"}) {
+  for (const std::string other : kFolderCommands) {
     if (other == command) continue;
     const auto clash = shared(mine, command_outputs(other));
     if (clash.empty()) continue;
@@ -177,16 +187,38 @@ void claim_output_folder(const fs::path& dir, const std::string& command, bool f
                                               if (shared({o}, mine).empty()) own.push_back(o);
                                             return any_present(dir, own);
                                           }();
-    if (!present) continue;
-    if (!force) {
-      std::string names;
-      for (const auto& c : clash) names += (names.empty() ? "" : ", ") + c;
-      throw OutputError(dir, "the folder holds the outputs of 'flapsim " + other + "' (" + names +
-                                 "), which 'flapsim " + command +
-                                 "' would replace; choose another folder (-o) or add --force to replace them");
-    }
-    remove_outputs(dir, command_outputs(other));
-    m.erase(other);
+    if (present) return std::make_pair(other, clash);
+  }
+  return std::nullopt;
+}
+
+std::string clash_message(const std::string& other, const std::vector<std::string>& clash,
+                          const std::string& command) {
+  std::string names;
+  for (const auto& c : clash) names += (names.empty() ? "" : ", ") + c;
+  return "the folder holds the outputs of 'flapsim " + other + "' (" + names + "), which 'flapsim " +
+         command + "' would replace; choose another folder (-o)";
+}
+
+}  // namespace
+
+void refuse_clashing_outputs(const fs::path& dir, const std::string& command) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;
+  if (const auto c = clashing_outputs(dir, read_manifest(dir), command))
+    throw OutputError(dir, clash_message(c->first, c->second, command));
+}
+
+void claim_output_folder(const fs::path& dir, const std::string& command, bool force) {
+  prepare_output_directory(dir);
+  Manifest m = read_manifest(dir);
+  const std::vector<std::string> mine = command_outputs(command);
+  // Another command's outputs that this command would replace.
+  while (const auto c = clashing_outputs(dir, m, command)) {
+    if (!force)
+      throw OutputError(dir, clash_message(c->first, c->second, command) + " or add --force to replace them");
+    remove_outputs(dir, command_outputs(c->first));
+    m.erase(c->first);
   }
   // This command's earlier outputs: all of them go, so the folder holds one run's files.
   std::vector<std::string> earlier = mine;

@@ -35,11 +35,18 @@ std::vector<std::string> command_outputs(const std::string& command);
 void remove_command_outputs(const std::filesystem::path& dir, const std::string& command);
 
 /// \brief Claims \p dir for \p command (see the file comment).
-/// \param command  "mesh", "modes", "reduce" or "run"
+/// \param command  "mesh", "modes", "reduce" or "run" ("optimize" has no claim:
+///                 refuse_clashing_outputs)
 /// \param force    replace another command's outputs that clash with this command's
 /// \throws OutputError naming the folder and the clashing command if not forced, or if
 ///         the folder or the manifest cannot be written
 void claim_output_folder(const std::filesystem::path& dir, const std::string& command, bool force);
+
+/// \brief Refuses \p dir if it holds another command's outputs that \p command would replace
+/// (as claim_output_folder without --force), for a command that keeps no manifest of its own
+/// ("optimize", whose report.md reduce writes too); a folder not yet made holds none.
+/// \throws OutputError naming the folder, the other command and the clashing files
+void refuse_clashing_outputs(const std::filesystem::path& dir, const std::string& command);
 
 /// \brief Records in the manifest how \p command ended: "complete", "failed" or "interrupted".
 /// \throws OutputError

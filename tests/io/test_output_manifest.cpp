@@ -96,6 +96,47 @@ TEST(OutputManifest, AFolderWithoutManifestIsJudgedByItsFiles) {
   EXPECT_FALSE(fs::exists(run / "vtk/wing_000010.vtp"));
 }
 
+TEST(OutputManifest, ReduceAndOptimizeDoNotReplaceEachOthersReport) {
+  // Both write report.md: optimize into a reduce folder, and reduce into an optimize folder,
+  // each replaced the other's report (exit 0, the other command's report gone).
+  flapsim::test::ScratchDir reduced("manifest_reduce_then_optimize");
+  io::claim_output_folder(reduced.path(), "reduce", false);
+  for (const auto& f : io::command_outputs("reduce")) touch(reduced / f);
+  io::record_command_status(reduced.path(), "reduce", "complete");
+  try {
+    io::refuse_clashing_outputs(reduced.path(), "optimize");
+    ADD_FAILURE() << "optimize took a reduce folder";
+  } catch (const io::OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'flapsim reduce' (report.md)"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(reduced / "report.md"));
+
+  flapsim::test::ScratchDir optimized("manifest_optimize_then_reduce");
+  touch(optimized / "evaluations.csv");  // optimize keeps no manifest
+  touch(optimized / "optimum.toml");
+  touch(optimized / "report.md");
+  touch(optimized / "runs/0123abcd/summary.json");
+  io::refuse_clashing_outputs(optimized.path(), "optimize");  // its own rerun: resumed, not refused
+  try {
+    io::claim_output_folder(optimized.path(), "reduce", false);
+    ADD_FAILURE() << "reduce claimed an optimize folder";
+  } catch (const io::OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'flapsim optimize' (report.md)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--force"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(optimized / "report.md"));
+  io::claim_output_folder(optimized.path(), "reduce", true);
+  EXPECT_FALSE(fs::exists(optimized / "report.md"));
+  EXPECT_FALSE(fs::exists(optimized / "evaluations.csv"));  // the optimisation's outputs go together
+  EXPECT_TRUE(fs::exists(optimized / "runs/0123abcd/summary.json"));  // its runs' folders are theirs
+
+  // A folder not made yet, or one with unrelated files, holds nothing to refuse.
+  io::refuse_clashing_outputs(optimized / "not_yet", "optimize");
+  flapsim::test::ScratchDir other("manifest_optimize_fresh");
+  touch(other / "report.md");  // no command's own files beside it: the user's
+  io::refuse_clashing_outputs(other.path(), "optimize");
+}
+
 TEST(OutputManifest, AnUnwritableFolderIsAnOutputError) {
   // A regular file where the folder should be (independent of the user's permissions).
   flapsim::test::ScratchDir dir("manifest_unwritable");

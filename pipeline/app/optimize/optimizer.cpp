@@ -29,6 +29,7 @@
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
 #include "pipeline/io/folder_lock.hpp"
+#include "pipeline/io/output_manifest.hpp"
 #include "wings/loader/input_error.hpp"
 
 namespace flapsim::optimize {
@@ -145,6 +146,9 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
   const std::vector<std::vector<double>> starts =
       start_points(report.start, lo, hi, static_cast<std::size_t>(options.starts));
 
+  // A folder holding another command's report.md (reduce's) is not overwritten (every rank:
+  // the same verdict).
+  io::refuse_clashing_outputs(options.output_dir, "optimize");
   std::optional<io::FolderLock> lock;  // rank 0: no other command writes into DIR meanwhile
   std::optional<EvaluationTable> table;
   std::vector<std::string> keys;
