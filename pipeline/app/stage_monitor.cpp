@@ -187,6 +187,10 @@ void StageMonitor::end_interrupted(int signal_number, io::OutputFolderClaim::Sta
       stage.append(" during ").append(name_).append(" (stage ").append(std::to_string(index_)).append(" of ")
           .append(std::to_string(total_)).append(")");
   }
+  if (!options_.scratch_file.empty()) {
+    std::error_code ignored;
+    std::filesystem::remove(options_.scratch_file, ignored);
+  }
   std::string manifest;
   if (claim_) {
     remove_temporaries(claim_->dir());

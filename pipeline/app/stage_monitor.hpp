@@ -20,6 +20,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <filesystem>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -39,6 +40,9 @@ class StageMonitor {
     enum class Display { automatic, live, log, quiet } display = Display::automatic;
     std::FILE* stream = stderr;  ///< not owned
     bool watch_signals = true;   ///< false: progress only (tests in process)
+    /// A file of the command's outside its folder (mesh's gmsh file in the system's temporary
+    /// folder), removed if the command is interrupted; none if empty.
+    std::filesystem::path scratch_file;
   };
 
   /// \brief Starts watching. Call before any thread is started (before the FEM) so that every

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -202,11 +203,32 @@ std::string clash_message(const std::string& other, const std::vector<std::strin
 
 }  // namespace
 
-void refuse_clashing_outputs(const fs::path& dir, const std::string& command) {
+void refuse_clashing_outputs(const fs::path& dir, const std::string& command, bool offer_force) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return;
   if (const auto c = clashing_outputs(dir, read_manifest(dir), command))
-    throw OutputError(dir, clash_message(c->first, c->second, command));
+    throw OutputError(dir, clash_message(c->first, c->second, command) +
+                               (offer_force ? " or add --force to replace them" : ""));
+}
+
+void preflight_output_folder(const fs::path& dir, const std::string& command, bool force) {
+  std::error_code ec;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec)) throw OutputError(dir, "exists and is not a directory");
+    prepare_output_directory(dir);            // writable: a probe file, removed at once
+    { const FolderLock busy(dir, command); }  // no other command writing into it now
+    if (!force) refuse_clashing_outputs(dir, command, true);
+    return;
+  }
+  // A folder to be made: its nearest existing parent must take it.
+  fs::path parent = fs::absolute(dir, ec).parent_path();
+  while (!parent.empty() && !fs::exists(parent, ec) && parent != parent.parent_path())
+    parent = parent.parent_path();
+  if (!fs::is_directory(parent, ec))
+    throw OutputError(dir, "cannot create directory: '" + parent.string() + "' is not a directory");
+  if (::access(parent.c_str(), W_OK | X_OK) != 0)
+    throw OutputError(
+        dir, "cannot create directory: '" + parent.string() + "' is not writable: " + std::strerror(errno));
 }
 
 void claim_output_folder(const fs::path& dir, const std::string& command, bool force) {
@@ -306,6 +328,14 @@ void OutputFolderClaim::claim(bool force) {
     throw;
   }
   state_ = State::open;
+}
+
+void OutputFolderClaim::claim_once(bool force) {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (state_ != State::unclaimed) return;
+  }
+  claim(force);
 }
 
 void OutputFolderClaim::finish(const std::string& status) {

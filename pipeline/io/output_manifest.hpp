@@ -46,7 +46,18 @@ void claim_output_folder(const std::filesystem::path& dir, const std::string& co
 /// (as claim_output_folder without --force), for a command that keeps no manifest of its own
 /// ("optimize", whose report.md reduce writes too); a folder not yet made holds none.
 /// \throws OutputError naming the folder, the other command and the clashing files
-void refuse_clashing_outputs(const std::filesystem::path& dir, const std::string& command);
+void refuse_clashing_outputs(const std::filesystem::path& dir, const std::string& command,
+                             bool offer_force = false);
+
+/// \brief The checks of claim_output_folder that write nothing, made before a command's work
+/// (mesh, modes, reduce: the wing's errors found while meshing come after them, and a claim
+/// made before those removed the folder's earlier outputs, then exit 2): \p dir, if it
+/// exists, is a writable folder no other command is writing into, holding no other
+/// command's outputs that \p command would replace unless \p force; if it does not exist,
+/// its nearest existing parent is a writable folder. Creates nothing (a probe file in an
+/// existing folder is removed at once). The claim itself follows once the input is known good.
+/// \throws OutputError naming the folder
+void preflight_output_folder(const std::filesystem::path& dir, const std::string& command, bool force);
 
 /// \brief Records in the manifest how \p command ended: "complete", "failed" or "interrupted".
 /// \throws OutputError
@@ -71,6 +82,9 @@ class OutputFolderClaim {
   /// until the claim is destroyed.
   /// \throws OutputError also if another flapsim command is writing into the folder
   void claim(bool force);
+  /// claim(force) if not claimed yet; nothing once claimed or ended (a command that claims
+  /// at whichever of several points it reaches first).
+  void claim_once(bool force);
   /// record_command_status with "complete", "failed" or "interrupted"; ends the claim.
   /// Does nothing if the claim was already ended (by end_if_open from another thread).
   void finish(const std::string& status);

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/run_flapsim.hpp"
@@ -134,3 +135,47 @@ TEST(FemCommands, MeshAndCheckWarnOfASliverNamingWhereItLies) {
 }
 
 }  // namespace
+
+// A wing error the mesher finds (a vein along another, refused while meshing) came after the
+// folder was claimed: mesh, modes and reduce removed the folder's earlier outputs (mesh.msh,
+// modes.csv, chain.toml, ...) and then exited 2; into a new folder they made it, with a
+// manifest saying "failed". Now the folder is claimed once the wing is meshed.
+TEST(FemCommands, AWingErrorFoundWhileMeshingLeavesTheFolderAsItWas) {
+  const flapsim::test::ScratchDir scratch("fem_commands_mesher_error");
+  const fs::path dir = scratch / "model";
+  const std::string good = std::string(FLAPSIM_SOURCE_DIR) + "/wings/flat_plate.toml";
+  ASSERT_EQ(run_flapsim("mesh " + good + " -o " + dir.string()), 0);
+  for (const char* f :
+       {"modes.csv", "fem.vtu", "fem_modes.pvsm", "beam.csv", "chain.toml", "report.md", "summary.json"})
+    std::ofstream(dir / f) << "earlier " << f << "\n";
+  std::vector<std::pair<fs::path, std::string>> before;
+  for (const auto& e : fs::directory_iterator(dir))
+    before.emplace_back(e.path(), flapsim::test::read_text(e.path()));
+  ASSERT_EQ(before.size(), 10u);  // mesh.msh, mesh.vtu, the manifest and the seven above
+
+  const fs::path bad = scratch / "vein_along_vein.toml";
+  std::ofstream(bad)
+      << flapsim::test::read_text(good)
+      << "\n[materials.carbon]\nyoungs_modulus = 135.0e9\npoisson_ratio = 0.3\ndensity = 1550.0\n"
+         "\n[[veins]]\nname = \"spar\"\npoints = [[0.0, 0.0], [0.0, 38.0]]\nshape = "
+         "\"solid_circle\"\ndiameter = 0.5\n"
+         "material = \"carbon\"\n"
+         "\n[[veins]]\nname = \"doubler\"\npoints = [[0.0, 5.0], [0.0, 30.0]]\nshape = "
+         "\"solid_circle\"\ndiameter = 0.3\n"
+         "material = \"carbon\"\n";
+  for (const char* command : {"mesh", "modes", "reduce"}) {
+    const auto r = flapsim::test::run_flapsim_capturing_stderr(
+        scratch.path(), std::string(command) + " " + bad.string() + " -o " + dir.string() + " --force");
+    EXPECT_EQ(r.status, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("vein 'doubler' lies along vein 'spar'"), std::string::npos)
+        << command << ": " << r.err;
+    for (const auto& [path, text] : before)
+      EXPECT_EQ(flapsim::test::read_text(path), text) << command << " changed " << path;
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++files;
+    EXPECT_EQ(files, before.size()) << command;
+    const fs::path fresh = scratch / (std::string("new_") + command);
+    EXPECT_EQ(run_flapsim(std::string(command) + " " + bad.string() + " -o " + fresh.string()), 2) << command;
+    EXPECT_FALSE(fs::exists(fresh)) << command << " made the folder of a refused wing";
+  }
+}

@@ -10,6 +10,9 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <system_error>
+
+#include <unistd.h>
 
 #include "fem/mesh_quality.hpp"
 #include "fem/wing_mesher.hpp"
@@ -29,36 +32,56 @@ struct MeshArgs {
   bool force = false;
 };
 
+/// gmsh's file while it is checked and copied: in the system's temporary folder (the output
+/// folder may not exist yet), removed however the command ends.
+struct StagedGmshFile {
+  std::filesystem::path path;
+  StagedGmshFile() {
+    std::error_code ec;
+    const std::filesystem::path folder = std::filesystem::temp_directory_path(ec);
+    if (ec)
+      throw io::OutputError("TMPDIR", "the system's temporary folder, for gmsh's file: " + ec.message());
+    path = folder / ("flapsim_mesh." + std::to_string(static_cast<long>(::getpid())) + ".msh");
+  }
+  StagedGmshFile(const StagedGmshFile&) = delete;
+  StagedGmshFile& operator=(const StagedGmshFile&) = delete;
+  ~StagedGmshFile() {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+  }
+};
+
 void run_mesh(const MeshArgs& args) {
   // 1. Read and check the wing (InputError: exit 2, nothing written).
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
   print_wing_warnings(wing);
-  // 2. The output folder, writable before any work (else exit 4 naming it).
+  // 2. The output folder, writable before any work (else exit 4 naming it); claimed once
+  // the wing is meshed, so that a wing error the mesher finds (exit 2) leaves it as it was.
   const std::filesystem::path dir(args.out_dir);
+  io::preflight_output_folder(dir, "mesh", args.force);
   io::OutputFolderClaim claim(dir, "mesh");
+  // 3. Mesh; gmsh saves the mesh to a staging file in the system's temporary folder (with
+  // the .msh extension gmsh needs), copied into the folder as mesh.msh only if complete
+  // (gmsh does not report a failed write: the file must end with its $EndElements
+  // section), flushed to disk and renamed.
+  const StagedGmshFile staged;
   // SIGINT/SIGTERM: "interrupted" in the manifest, exit 130/143 at once; progress of a long mesh.
-  app::StageMonitor monitor(claim, 2);
-  claim.claim(args.force);
+  app::StageMonitor::Options watch;
+  watch.scratch_file = staged.path;
+  app::StageMonitor monitor(claim, 2, watch);
   monitor.stage("meshing (gmsh)");
-  // 3. Mesh; gmsh saves the mesh to a staging name (with the .msh extension gmsh needs);
-  // it is published as mesh.msh only if complete (gmsh does not report a failed write:
-  // the file must end with its $EndElements section), flushed to disk and renamed.
-  const std::filesystem::path msh = dir / "mesh.msh";
-  std::filesystem::path staged = io::temporary_path(msh);
-  staged += ".msh";
   fem::MeshOptions opt;
-  opt.msh_path = staged;
+  opt.msh_path = staged.path;
   const fem::Mesh mesh = fem::mesh_wing(wing, opt);
   print_mesh_warnings(mesh, wing);
+  claim.claim(args.force);
+  const std::filesystem::path msh = dir / "mesh.msh";
   io::publish_file_atomically(
       msh,
       [&](const std::filesystem::path& tmp) {
         std::error_code ec;
-        std::filesystem::rename(staged, tmp, ec);
-        if (ec) {
-          std::filesystem::remove(staged, ec);
-          throw io::OutputError(msh, "cannot rename gmsh's file: " + ec.message());
-        }
+        std::filesystem::copy_file(staged.path, tmp, std::filesystem::copy_options::overwrite_existing, ec);
+        if (ec) throw io::OutputError(msh, "cannot copy gmsh's file: " + ec.message());
       },
       "$EndElements\n");
   // 4. The same mesh for ParaView.

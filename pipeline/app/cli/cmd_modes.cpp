@@ -48,15 +48,23 @@ void run_modes(const ModesArgs& args) {
   const wings::Wing wing = wings::load_wing_file(args.wing_file);
   print_wing_warnings(wing);
   const std::filesystem::path dir(args.out_dir);
+  io::preflight_output_folder(dir, "modes",
+                              args.force);  // unwritable, busy, another's: exit 4 before any work
   io::OutputFolderClaim claim(dir, "modes");
   // SIGINT/SIGTERM: "interrupted" in the manifest, exit 130/143 at once; progress of long stages.
   app::StageMonitor monitor(claim, 5);
-  claim.claim(args.force);
   // 2–5. Mesh, K and M, root clamp; the lowest modes of the clamped wing; the static tip
   // load cases; the modes' names from the stations of the chain (docs/reduction.md). A
-  // failing solver is a numerical failure (exit 3).
+  // failing solver is a numerical failure (exit 3). The folder is claimed as the second
+  // stage begins, the wing meshed: a wing error found by the mesher (exit 2) leaves it as it was.
+  bool meshed = false;
   const app::WingModesStage r =
-      app::compute_wing_modes(wing, args.modes, args.bodies, command_threads(), [&](const std::string& s) { monitor.stage(s); });
+      app::compute_wing_modes(wing, args.modes, args.bodies, command_threads(), [&](const std::string& s) {
+        if (meshed) claim.claim_once(args.force);
+        meshed = true;
+        monitor.stage(s);
+      });
+  claim.claim_once(args.force);
   const fem::WingFem& fem = r.fem;
   const fem::Mesh& mesh = fem.model.mesh;
   print_mesh_warnings(mesh, wing);

@@ -54,14 +54,16 @@ void run_reduce(const ReduceOptions& o) {
             : o.axis == "fitted" ? reduction::AxisChoice::fitted
                                  : reduction::AxisChoice::flexural;
   const fs::path dir(o.out_dir);
+  io::preflight_output_folder(dir, "reduce", o.force);  // unwritable, busy, another's: exit 4 before any work
   io::OutputFolderClaim claim(dir, "reduce");
   // SIGINT/SIGTERM: "interrupted" in the manifest, exit 130/143 at once; progress of long stages.
   app::StageMonitor monitor(claim, 7);
-  claim.claim(o.force);  // unwritable: exit 4 before any work
   // A failing solve in the FEM or the reduction is a numerical failure (exit 3).
   monitor.stage("mesh and FEM matrices");
   const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
   print_mesh_warnings(fem.model.mesh, wing);
+  // Claimed once meshed: a wing error found by the mesher (exit 2) leaves the folder as it was.
+  claim.claim(o.force);
   monitor.stage("FEM modes");
   const fem::WingModes modes = app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, o.modes); });
   monitor.stage("static load cases of the clamped wing");
