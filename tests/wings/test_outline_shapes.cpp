@@ -63,6 +63,54 @@ TEST(OutlineShapes, HalfEllipseHasTheFullChordAtTheRoot) {
   EXPECT_NEAR(root->leading_x, 0.005, 1e-9);
 }
 
+TEST(OutlineShapes, EllipsesKeepTheirRootTipAndChordAtAnyPointCount) {
+  // An even count of a half ellipse (the default 96) missed its tip, and the scaling to the
+  // span stretched the outline: root edge at 1.000134 mm (written 1), chord 16.0021 mm, the
+  // area above the exact ellipse's (552.967 against 552.920 mm²), and a vein starting at
+  // y = root_y refused as outside the outline. An ellipse of 18 points had its foremost point
+  // 0.12 mm behind leading_edge_x and a chord of 15.76 mm.
+  for (const int n : {16, 17, 18, 19, 96, 97}) {
+    const std::string count = "\noutline_points = " + std::to_string(n);
+    const w::Wing h = wing_from_planform(
+        "shape = \"half_ellipse\"\nspan = 45.0\nchord = 16.0\nroot_y = 1.0\n"
+        "leading_edge_x = 4.0\nclamp_y = 1.5" +
+        count);
+    double min_y = 1, max_y = -1;
+    for (const auto& q : h.outline) {
+      min_y = std::min(min_y, q.y());
+      max_y = std::max(max_y, q.y());
+    }
+    EXPECT_NEAR(min_y, 0.001, 1e-15) << n;
+    EXPECT_NEAR(max_y, 0.045, 1e-15) << n;
+    const auto root = w::chord_at(h.outline, 0.001 + 1e-12);
+    ASSERT_TRUE(root) << n;
+    EXPECT_NEAR(root->length(), 0.016, 1e-12) << n;
+    EXPECT_NEAR(root->leading_x, 0.004, 1e-12) << n;
+    EXPECT_LT(w::polygon_area(h.outline), kPi * 0.016 * 0.044 / 4) << n;  // inscribed
+    EXPECT_EQ(h.outline.size() % 2, 1u) << n;
+
+    const w::Wing e = wing_from_planform(
+        "shape = \"ellipse\"\nspan = 45.0\nchord = 16.0\nroot_y = 1.0\n"
+        "leading_edge_x = 4.0\nclamp_y = 2.0" +
+        count);
+    double max_x = -1, min_x = 1;
+    min_y = 1;
+    max_y = -1;
+    for (const auto& q : e.outline) {
+      max_x = std::max(max_x, q.x());
+      min_x = std::min(min_x, q.x());
+      min_y = std::min(min_y, q.y());
+      max_y = std::max(max_y, q.y());
+    }
+    EXPECT_NEAR(max_x, 0.004, 1e-15) << n;
+    EXPECT_NEAR(max_x - min_x, 0.016, 1e-15) << n;
+    EXPECT_NEAR(min_y, 0.001, 1e-15) << n;
+    EXPECT_NEAR(max_y, 0.045, 1e-15) << n;
+    EXPECT_EQ(e.outline.size() % 4, 0u) << n;
+    EXPECT_GE(e.outline.size(), static_cast<std::size_t>(n)) << n;
+  }
+}
+
 TEST(OutlineShapes, RoundedRectangleLosesTheCornersOfItsTip) {
   // Exact area c L − 2 (1 − π/4) r² (two quarter-circle corners); the polygon's arcs
   // are inscribed, m segments of a quarter circle enclose (m/2) sin(π/2m) r² instead of π r²/4.

@@ -85,14 +85,23 @@ Polygon shape_outline(OutlineShape shape, const ShapeSize& s, int samples) {
   const double xc = s.leading_edge_x - half;  // x of the chord's middle
   Polygon p;
   switch (shape) {
-    case OutlineShape::ellipse:  // centre half-way, semi-axes chord/2 and L/2
-      for (int k = 0; k < n; ++k) {
-        const double t = 2.0 * kPi * k / n - 0.5 * kPi;  // from the root point, counter-clockwise
+    case OutlineShape::ellipse: {  // centre half-way, semi-axes chord/2 and L/2
+      // A multiple of 4 points, so that the root, the foremost, the tip and the rearmost
+      // point are points of it (18 points put the foremost 0.12 mm behind leading_edge_x and
+      // the chord 1.5 % short; an odd count missed the tip, and the scaling to the span then
+      // stretched the whole outline).
+      const int m = (n + 3) / 4 * 4;
+      for (int k = 0; k < m; ++k) {
+        const double t = 2.0 * kPi * k / m - 0.5 * kPi;  // from the root point, counter-clockwise
         p.emplace_back(xc + half * std::cos(t), s.root_y + 0.5 * length * (1.0 + std::sin(t)));
       }
       break;
+    }
     case OutlineShape::half_ellipse:  // centre on the root edge, semi-axes chord/2 and L
-      add_arc(p, {xc, s.root_y}, half, length, 0.0, kPi, n - 1);
+      // An even number of segments (an odd number of points), so that the tip is a point of it:
+      // with 96 points the tip fell between two, and the scaling to the span moved the root edge
+      // to y = 1.000134 mm (written 1) and made the chord 16.0021 mm.
+      add_arc(p, {xc, s.root_y}, half, length, 0.0, kPi, n % 2 == 1 ? n - 1 : n);
       break;
     case OutlineShape::rounded_rectangle: {
       const double r = s.tip_radius;
