@@ -90,6 +90,27 @@ TEST(OutlineCsv, ASelfIntersectionIsReportedAtTheCsvLineOfItsEdge) {
   EXPECT_EQ(e.key(), "planform.outline_file");
 }
 
+TEST(OutlineCsv, ARepeatedPointIsNamedAsARepeatAtItsOwnLine) {
+  // A closing point written twice (lines 8 and 9 repeat line 2): one is accepted, the other
+  // was reported as "edge 0 (points 0-1) touches or crosses edge 5" at line 2.
+  flapsim::test::ScratchDir dir("outline_csv_repeat");
+  std::ofstream(dir / "dup.csv") << "x,y\n0.0,0.04\n0.05,0.5\n0.0,1.0\n-0.12,0.98\n-0.30,0.6\n-0.35,0.04\n"
+                                    "0.0,0.04\n0.0,0.04\n";
+  std::ofstream(dir / "w.toml") << wing_text("outline_file = \"dup.csv\"\nspan = 40.0\n");
+  auto e = expect_input_error([&] { w::load_wing_file((dir / "w.toml").string()); });
+  EXPECT_EQ(e.line(), 8) << e.what();
+  EXPECT_EQ(e.key(), "planform.outline_file");
+  EXPECT_NE(e.message().find("point 6 repeats point 0"), std::string::npos) << e.what();
+  // A repeat inside the list, in the wing file: its own element's line.
+  auto f = expect_input_error([&] {
+    w::read_wing(w::parse_toml_string(
+        wing_text("outline = [\n[5.0, 0.0],\n[5.0, 40.0],\n[5.0, 40.0],\n[-5.0, 40.0],\n[-5.0, 0.0]]\n"),
+        "r.toml"));
+  });
+  EXPECT_EQ(f.line(), 7) << f.what();  // "[5.0, 40.0]," the second time
+  EXPECT_NE(f.message().find("point 2 repeats point 1"), std::string::npos) << f.what();
+}
+
 TEST(OutlineCsv, AMissingOutlineFileIsTheWingFilesErrorAtItsLine) {
   // Before: "bow.csv: key 'planform.outline_file': the outline file does not exist" — the
   // missing file named, not the wing file and the line that names it.

@@ -93,10 +93,13 @@ bool segments_intersect(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
 std::optional<std::pair<int, int>> find_self_intersection(const Polygon& poly) {
   const int n = static_cast<int>(poly.size());
   if (n < 3) return std::nullopt;
+  // Repeated points first (zero-length edges): else the edge ending at a repeat of point 0
+  // was reported as touching edge 0, not as the repeat it is.
+  for (int i = 0; i < n; ++i)
+    if (poly[i] == poly[(i + 1) % n]) return std::make_pair(i, (i + 1) % n);
   for (int i = 0; i < n; ++i) {
     const auto& a = poly[i];
     const auto& b = poly[(i + 1) % n];
-    if (a == b) return std::make_pair(i, (i + 1) % n);  // repeated point: zero-length edge
     // Adjacent edge folding back on this one (a spike of zero width).
     const auto& c = poly[(i + 2) % n];
     if (orient(a, b, c) == 0.0 && (b - a).dot(c - b) < 0.0) return std::make_pair(i, (i + 1) % n);

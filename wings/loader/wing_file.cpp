@@ -385,17 +385,23 @@ Planform read_planform(const TomlTable& p) {
 
   // 2. The polygon must be simple (checked before stretching, which keeps simplicity).
   if (const auto hit = find_self_intersection(out.outline)) {
-    const std::string what = "the outline is not a simple polygon: edge " + std::to_string(hit->first) +
-                             " (points " + std::to_string(hit->first) + "-" +
-                             std::to_string((hit->first + 1) % out.outline.size()) + ") touches or crosses edge " +
-                             std::to_string(hit->second);
+    const std::size_t n = out.outline.size();
+    const auto i = static_cast<std::size_t>(hit->first), next = (i + 1) % n;
+    // A point equal to the next (a zero-length edge) is named as the repeat it is, at the
+    // later of the two in the file.
+    const bool repeat = out.outline[i] == out.outline[next];
+    const std::size_t at = repeat ? std::max(i, next) : i;
+    const std::string what =
+        repeat ? "point " + std::to_string(at) + " repeats point " + std::to_string(std::min(i, next)) +
+                     " (points counted from 0; a closing point equal to the first is accepted once)"
+               : "the outline is not a simple polygon: edge " + std::to_string(i) + " (points " +
+                     std::to_string(i) + "-" + std::to_string(next) + ") touches or crosses edge " +
+                     std::to_string(hit->second);
     if (from_drawing)  // the drawing's file and the outline element's line
       throw InputError(p.get_path("outline_file"), drawing_line, p.key_path("outline_file"), what);
-    if (from_file)  // the CSV's file and line of the edge's first point
-      throw InputError(p.get_path("outline_file"), csv.lines[static_cast<std::size_t>(hit->first)],
-                       p.key_path("outline_file"), what);
-    const int line = outline_key == "outline" ? p.line_of_element(outline_key, static_cast<std::size_t>(hit->first))
-                                              : p.line_of(outline_key);
+    if (from_file)  // the CSV's file and line of the edge's first point, or of the repeat
+      throw InputError(p.get_path("outline_file"), csv.lines[at], p.key_path("outline_file"), what);
+    const int line = outline_key == "outline" ? p.line_of_element(outline_key, at) : p.line_of(outline_key);
     p.fail_at(line, outline_key, what);
   }
   const double signed_area = polygon_signed_area(out.outline);
