@@ -44,3 +44,24 @@ TEST(WingErrorWithEarlierWarning, AnErrorWithoutWarningsIsUnchanged) {
   });
   EXPECT_EQ(e.message(), "must not exceed half the span (element_size 1 mm, span 1.5 mm)") << e.what();
 }
+
+// A span in mm written 1000 times too large (40000 for 40): the outline's sliver check
+// (R²/S 3334) came before the span's warning, and the error alone named no unit.
+TEST(WingErrorWithEarlierWarning, ASliverOfASpanNoWingHasNamesTheUnit) {
+  const auto e = expect_input_error([] {
+    read_wing(parse_toml_string(
+        "name = \"p\"\nlength_unit = \"mm\"\n[planform]\nshape = \"rounded_rectangle\"\nspan = "
+        "40000.0\nchord = 12.0\n"
+        "root_y = 2.0\nclamp_y = 3.0\n[materials.pet]\nyoungs_modulus = 4.0e9\npoisson_ratio = 0.38\n"
+        "density = 1390.0\n[membrane]\nthickness = 0.05\nmaterial = \"pet\"\n",
+        "span.toml"));
+  });
+  EXPECT_EQ(e.key(), "planform.shape");
+  EXPECT_NE(e.message().find("the outline is a sliver"), std::string::npos) << e.what();
+  EXPECT_NE(
+      e.message().find("span.toml:5: key 'planform.span': the wing would be 40 m from pivot to tip, longer "
+                       "than any flapping wing (2 m)"),
+      std::string::npos)
+      << e.what();
+  EXPECT_NE(e.message().find("was it written in um"), std::string::npos) << e.what();
+}

@@ -275,7 +275,7 @@ Polygon read_shape_outline(const TomlTable& p, int samples) {
   return shape_outline(shape, size, samples);
 }
 
-Planform read_planform(const TomlTable& p) {
+Planform read_planform(const TomlTable& p, std::vector<InputWarning>& warnings) {
   p.expect_only({"outline", "outline_file", "spline", "shape", "outline_points", "chord", "root_y",
                  "leading_edge_x", "tip_radius", "span", "area", "clamp_y", "outline_id", "drawing_tip",
                  "drawing_leading_edge"});
@@ -381,7 +381,11 @@ Planform read_planform(const TomlTable& p) {
     const double k = span / max_y;
     for (auto& q : out.outline) q *= k;
     if (out.drawing) out.drawing->scale = k;
+    max_y = span;
   }
+  // A span no flapping wing has, warned before the outline's checks: an error they find (a
+  // "sliver" of a span in mm written as 40000) then carries the warning with its unit guess.
+  check_span(p, max_y, warnings);
 
   // 2. The polygon must be simple (checked before stretching, which keeps simplicity).
   if (const auto hit = find_self_intersection(out.outline)) {
@@ -722,14 +726,13 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
   for (const auto& name : mats.keys()) materials[name] = read_material(mats.get_table(name), wing.warnings);
 
   const TomlTable planform_table = root.get_table("planform");
-  const Planform planform = read_planform(planform_table);
+  const Planform planform = read_planform(planform_table, wing.warnings);
   wing.outline = planform.outline;
   wing.clamp_y = planform.clamp_y;
   if (planform.drawing)
     wing.drawing = planform.drawing->describe(planform_table.length_unit(), planform_table.length_scale());
   const PlanformProperties props = planform_properties(wing.outline);
   wing.span = props.span;
-  check_span(planform_table, wing.span, wing.warnings);
   if (planform.drawing)
     check_drawing_direction(planform_table, *planform.drawing, wing.outline, wing.warnings);
   wing.lattice_gap = lattice_gap(planform_table, wing.outline);
