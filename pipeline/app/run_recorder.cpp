@@ -295,6 +295,7 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   };
   r.set("steps", data.step - (refused ? 1 : 0));
   r.set("time_s", t_end);
+  r.set("mean_window_cycles", period > 0.0 ? (t_end - t_begin) / period : 0.0);
   r.set("mean_lift_N", mean(series(samples_, [](const StepSample& s) { return s.lift; })));
   r.set("mean_Fx_N", mean(series(samples_, [](const StepSample& s) { return s.force.x(); })));
   r.set("mean_Fy_N", mean(series(samples_, [](const StepSample& s) { return s.force.y(); })));

@@ -104,6 +104,9 @@ inline constexpr auto kRunResults = [] {
           "the row of a case it keeps)"},
       ResultDefinition{"steps", "", K::integer, "", "", "time steps completed"},
       ResultDefinition{"time_s", "s", K::number, "%.6g", "", "simulated time reached"},
+      ResultDefinition{"mean_window_cycles", "", K::number, "%.4g", "",
+                       "the cycles the last-cycle means cover: 1, or what was run of the first cycle "
+                       "(a run that ended before its first cycle was complete)"},
       // Loads: means over the last cycle (or what was run, if less), trapezoidal rule.
       ResultDefinition{"mean_lift_N", "N", K::number, "%.6g", "mean lift",
                        "mean lift (the force along the lift direction: +z_G in hover, normal to U∞ in a "
@@ -311,6 +314,11 @@ inline constexpr std::array kRunReport = {
     // mean CL 0.0000" read as a result.
     ReportLine{"mean lift (last cycle) {mean_lift_N}, mean CL {mean_CL}",
                [](const RunResults& r) { return r.has("mean_power_W"); }},
+    ReportLine{"note: the run ended within its first cycle: its means cover {mean_window_cycles} of a cycle "
+               "from the start, not a cycle's",
+               [](const RunResults& r) {
+                 return r.has("mean_window_cycles") && r.number("mean_window_cycles") < 1.0;
+               }},
     ReportLine{"over {settled_cycles} cycles from the second: mean lift {settled_mean_lift_N}, mean CL "
                "{settled_mean_CL} ± {settled_CL_standard_error} (standard error; the cycles' mean CL scatter "
                "by {cycle_CL_deviation})",

@@ -41,6 +41,12 @@ void expect_interrupted_outputs(const ScratchDir& dir) {
   EXPECT_GT(rows, 20);
   EXPECT_EQ(rows, summary_steps(summary)) << summary;
   EXPECT_LT(rows, 24 * 200);
+  // The last-cycle means of a run stopped within its first cycle cover what was run, and say
+  // so (before: no key told the window of an interrupted run's mean_CL).
+  const auto at = summary.find("\"mean_window_cycles\": ");
+  ASSERT_NE(at, std::string::npos) << summary;
+  const double window = std::strtod(summary.c_str() + at + 22, nullptr);
+  EXPECT_NEAR(window, std::min(1.0, static_cast<double>(rows) / 200.0), 1e-9) << summary;
   EXPECT_TRUE(dir.temporaries().empty());
   EXPECT_NE(read_text(dir / "out" / "flapsim_outputs.toml").find("interrupted"), std::string::npos);
 }
