@@ -1,6 +1,7 @@
 #include "pipeline/app/setup_warnings.hpp"
 
 #include "fem/mesh_quality.hpp"
+#include "fem/root_clamp_warning.hpp"
 #include "pipeline/app/chain_fem_mismatch.hpp"
 #include "pipeline/app/chain_wing_match.hpp"
 #include "pipeline/app/compressibility_warning.hpp"
@@ -24,8 +25,12 @@ std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup
         inertial_deflection_warning(c, setup), fluid_load_deflection_warning(c, setup),
         coupling_tolerance_warning(setup), small_wing_precision_warning(setup),
         film_wrinkle_warning(c, setup), fem_mesh_resolution_warning(setup),
-        setup.fem_structure && setup.wing ? fem::sliver_warning(setup.fem_structure->structural.mesh, *setup.wing)
-                                          : std::string()})
+        setup.fem_structure && setup.wing
+            ? fem::sliver_warning(setup.fem_structure->structural.mesh, *setup.wing)
+            : std::string(),
+        setup.fem_structure && setup.wing
+            ? fem::root_clamp_warning(setup.fem_structure->structural.mesh, *setup.wing)
+            : std::string()})
     if (!w.empty()) out.push_back(std::move(w));
   return out;
 }

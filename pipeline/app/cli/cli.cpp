@@ -11,14 +11,15 @@
 #include <string>
 
 #include "fem/mesh_quality.hpp"
-#include "pipeline/app/cli/thread_options.hpp"
+#include "fem/root_clamp_warning.hpp"
 #include "pipeline/app/cli/exit_status.hpp"
+#include "pipeline/app/cli/thread_options.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
-#include "wings/loader/toml_reader.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/case_model.hpp"
 #include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
 #include "wings/loader/wing_model.hpp"
 
 namespace flapsim::cli {
@@ -37,6 +38,8 @@ const wings::Wing& print_wing_warnings(const wings::Wing& wing) {
 
 void print_mesh_warnings(const fem::Mesh& mesh, const wings::Wing& wing) {
   if (const std::string w = fem::sliver_warning(mesh, wing); !w.empty())
+    std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
+  if (const std::string w = fem::root_clamp_warning(mesh, wing); !w.empty())
     std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
 }
 
