@@ -106,11 +106,15 @@ def view_direction(wing, chain):
 
 
 def frame_at(series, frequency, phase):
-    """The entry of the series closest to t/T = phase within the last complete wingbeat."""
+    """The entry of the series closest to the last t/T at the given phase. A run that
+    stopped before reaching that phase in its first wingbeat (interrupted, diverged) shows
+    its last frame, the nearest it has: the target used to be clamped to t = 0, and a run
+    stopped at t/T 0.2 showed its start (no wake, no lift) at phases 0.25, 0.5 and 0.75."""
     last = series[-1][0] * frequency
     start = math.floor(last - phase + 1e-9) + phase if last >= phase else phase
     target = start if start <= last + 1e-9 else start - 1.0
-    target = max(target, 0.0)
+    if target < 0.0:
+        target = last
     return min(series, key=lambda e: abs(e[0] * frequency - target))
 
 
@@ -213,18 +217,20 @@ def render(run, time_index, phase, args, output, view):
         actor.GetProperty().EdgeVisibilityOn()
         actor.GetProperty().SetEdgeColor(0.2, 0.2, 0.2)
         renderer.AddActor(actor)
-        if wake_series and not args.no_wake:
-            wake = read_vtp(wake_series[time_index][1])
-            if wake.GetNumberOfCells() > 0:
-                wm = vtk.vtkPolyDataMapper()
-                wm.SetInputData(wake)
-                wm.SetScalarModeToUseCellFieldData()
-                wm.SelectColorArray("circulation_m2_s")
-                wm.SetLookupTable(diverging(max(cell_range(wake, "circulation_m2_s"), 1e-12)))
-                wa = vtk.vtkActor()
-                wa.SetMapper(wm)
-                wa.GetProperty().SetOpacity(0.15)
-                renderer.AddActor(wa)
+    # The wake whatever shows the wing (an FEM run in air draws its own surface, not the
+    # lattice's, and its pictures had no wake).
+    if wake_series and not args.no_wake:
+        wake = read_vtp(wake_series[time_index][1])
+        if wake.GetNumberOfCells() > 0:
+            wm = vtk.vtkPolyDataMapper()
+            wm.SetInputData(wake)
+            wm.SetScalarModeToUseCellFieldData()
+            wm.SelectColorArray("circulation_m2_s")
+            wm.SetLookupTable(diverging(max(cell_range(wake, "circulation_m2_s"), 1e-12)))
+            wa = vtk.vtkActor()
+            wa.SetMapper(wm)
+            wa.GetProperty().SetOpacity(0.15)
+            renderer.AddActor(wa)
     chain = read_vtp(chain_file)
     if math.isnan(lift):
         lift = field(chain, "lift_N")
