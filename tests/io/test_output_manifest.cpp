@@ -47,6 +47,22 @@ TEST(OutputManifest, ARerunRemovesEveryFileOfTheEarlierRun) {
   EXPECT_NE(manifest.find("running"), std::string::npos) << manifest;
 }
 
+TEST(OutputManifest, ARerunRemovesThePicturesDrawnFromTheEarlierRun) {
+  // make run's preview.png, make snapshot's snapshots/ and make movie's movie.mp4 are drawn
+  // from a run's frames; a rerun with vtk_every = 0 removed the frames and left the pictures
+  // of the earlier run as if they were its own.
+  flapsim::test::ScratchDir dir("manifest_pictures");
+  io::claim_output_folder(dir.path(), "run", false);
+  for (const char* f : {"preview.png", "movie.mp4", "snapshots/front_phase_0.25.png",
+                        "snapshots/side_phase_0.50.png", "snapshots/phase_0.75.png"})
+    touch(dir / f);
+  touch(dir / "my_figure.png");  // not flapsim's: kept
+  io::record_command_status(dir.path(), "run", "complete");
+  io::claim_output_folder(dir.path(), "run", false);
+  for (const char* f : {"preview.png", "movie.mp4", "snapshots"}) EXPECT_FALSE(fs::exists(dir / f)) << f;
+  EXPECT_TRUE(fs::exists(dir / "my_figure.png"));
+}
+
 TEST(OutputManifest, AnotherCommandsOutputsAreReplacedOnlyWhenForced) {
   // run -o into a reduce folder replaced its summary.json.
   flapsim::test::ScratchDir dir("manifest_clash");
