@@ -85,6 +85,24 @@ TEST(RunSignals, ARunStoppedWithinItsFirstCycleSaysWhatItsMeansCover) {
   EXPECT_NEAR(window_cycles(summary), steps / 4800.0, 1e-9) << summary;
 }
 
+// A complete run's means cover one whole cycle: summary.json says 1 and the report notes
+// nothing. The window T was computed as t_end − (t_end − T): at 20 Hz with 1 or 5 cycles of
+// 24 steps (as at 25 and 30 Hz, and 26.1 Hz with 5) it came out 0.9999999999999998, and
+// `flapsim run` said the run had ended within its first cycle.
+TEST(RunSignals, ACompleteRunsMeansCoverOneWholeCycle) {
+  for (const int cycles : {1, 5}) {
+    ScratchDir dir("run_whole_cycle_" + std::to_string(cycles));
+    std::ofstream(dir / "case.toml") << replace_once(small_plate_case("rigid", cycles, 0),
+                                                     "frequency_hz = 26.1", "frequency_hz = 20.0");
+    ASSERT_EQ(run_flapsim("run '" + (dir / "case.toml").string() + "' -o '" + (dir / "out").string() + "'",
+                          dir / "stdout.txt"),
+              0);
+    EXPECT_EQ(window_cycles(read_text(dir / "out" / "summary.json")), 1.0) << cycles << " cycles";
+    EXPECT_EQ(read_text(dir / "stdout.txt").find("ended within its first cycle"), std::string::npos)
+        << read_text(dir / "stdout.txt");
+  }
+}
+
 // A step that lasts minutes: the 75 mm film wing's FEM (wings/film_wing_75mm_25um.toml, the
 // case cases/film_wing_fem.toml) at 4 steps a wingbeat splits its first step into up to 256
 // pieces, each solved again at every sub-iteration (docs/fsi.md, "Step halving of the FEM");
