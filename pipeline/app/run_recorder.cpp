@@ -226,6 +226,7 @@ void RunRecorder::write_series(const fsi::FsiData& data, long step) {
   const auto cf = io::PvdSeries::step_file_name("vtk/" + structure_series(setup_), step, "vtp");
   io::write_vtp(dir_ / cf, chain, io::Flush::deferred);
   chain_pvd_->append(t, dir_ / cf);
+  frame_times_.push_back(t);
   publish_series(false);
 }
 
@@ -269,6 +270,7 @@ void RunRecorder::write_state() const {
   if (!frame_fields_.empty()) state.frame_fields = frame_fields_;
   state.bounds = camera_.bounds();
   state.front = camera_.best(io::state_box(state), static_cast<double>(io::kStateViewWidth) / io::kStateViewHeight);
+  state.start_time = io::state_start_time(frame_times_, setup_.period);
   io::write_run_state(dir_ / "run.pvsm", state);
 }
 

@@ -140,6 +140,7 @@ class RunRecorder {
   std::string wing_field_ = "pressure_jump_Pa";
   ThinnedSample wing_values_, circulation_values_;  ///< at most 2²⁰ values each (thinned_sample.hpp)
   std::vector<std::string> frame_fields_;
+  std::vector<double> frame_times_;  ///< t of the frames written [s] (the state opens at one)
   io::StateCameraChooser camera_;
   std::vector<StepSample> samples_;
   std::optional<StepSample> measured_;  ///< measure()'s sample until record() takes it

@@ -42,6 +42,20 @@ std::array<double, 6> state_box(const RunState& s) {
   return box;
 }
 
+std::optional<double> state_start_time(const std::vector<double>& frame_times, double period) {
+  if (frame_times.empty()) return std::nullopt;
+  const double last = frame_times.back();
+  if (!(period > 0.0)) return last;
+  constexpr double kPhase = 0.25;
+  const double cycles = last / period;
+  // The latest t/T = n + 0.25 not after the last frame; none in a run this short: its last frame.
+  const double n = std::floor(cycles - kPhase + 1e-9);
+  if (n < 0.0) return last;
+  const double target = (n + kPhase) * period;
+  return *std::min_element(frame_times.begin(), frame_times.end(),
+                           [&](double a, double b) { return std::abs(a - target) < std::abs(b - target); });
+}
+
 double magnitude_percentile(std::vector<double>& values, double p) {
   if (values.empty()) return 0.0;
   for (double& v : values) v = std::abs(v);
@@ -234,12 +248,16 @@ std::string run_state_xml(const RunState& s) {
 
   ProxyXml keeper("misc", "TimeKeeper", kTimeKeeper, 16);
   keeper.proxies("TimeSources", readers).proxies("Views", {kRenderView, kSideView, kChartView});
-  proxies.push_back(std::move(keeper));
   ProxyXml scene("animation", "AnimationScene", kScene, 16);
   scene.proxies("TimeKeeper", {kTimeKeeper})
       .proxies("Cues", {kTimeCue})
       .proxies("ViewModules", {kRenderView, kSideView, kChartView})
       .value("PlayMode", "2");  // snap to the time steps of the series
+  if (s.start_time) {           // open on a frame of the last wingbeat, not on t = 0 (no loads, no wake)
+    keeper.value("Time", format_number(*s.start_time));
+    scene.value("AnimationTime", format_number(*s.start_time));
+  }
+  proxies.push_back(std::move(keeper));
   proxies.push_back(std::move(scene));
   ProxyXml cue("animation", "TimeAnimationCue", kTimeCue, 16);
   cue.proxies("AnimatedProxy", {kTimeKeeper}).value("AnimatedPropertyName", "Time").value("UseAnimationTime", "1");

@@ -65,7 +65,16 @@ struct RunState {
   /// The front view's direction (StateCameraChooser::best over state_box); the side view
   /// looks along the span at mid-stroke (-y), level.
   ViewDirection front{{-0.933, -0.25, 0.259}, {0.0, 0.0, 1.0}};
+  /// The time the state opens at [s] (a frame's TimeValue: state_start_time); without it
+  /// ParaView opens at the first frame, t = 0, a wing without loads and no wake.
+  std::optional<double> start_time;
 };
+
+/// \brief The time of the frame the state opens at [s]: of \p frame_times (ascending [s]),
+/// the one nearest the last wingbeat's mid-downstroke (phase 0.25 of \p period [s]), the
+/// frame `make run`'s preview and `make snapshot`'s front_phase_0.25 show; for a run that
+/// stopped before phase 0.25 of its first wingbeat, its last frame. Empty without frames.
+std::optional<double> state_start_time(const std::vector<double>& frame_times, double period);
 
 /// \brief What the cameras frame: the bounds (or a cube of ± length_scale about the
 /// origin), with 0.3 length_scale more below for the near wake [m].

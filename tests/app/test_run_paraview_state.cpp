@@ -117,6 +117,13 @@ TEST(RunParaViewState, StateNamesExistingFilesAndFramesCarryLiftAndPhase) {
   };
   const auto wing = pvd_entries(dir / "out" / "wing.pvd");
   ASSERT_EQ(wing.size(), 4u);  // steps 0, 4, 8, 12
+  // The state opens at the frame nearest phase 0.25 (step 4, t/T 0.33), not at t = 0
+  // (a wing without loads, no wake: the first thing ParaView showed).
+  const std::string xml = flapsim::test::read_text(state);
+  const auto keeper = xml.find("id=\"256.Time\"");
+  ASSERT_NE(keeper, std::string::npos);
+  const auto value = xml.find("value=\"", keeper) + 7;
+  EXPECT_EQ(std::stod(xml.substr(value, xml.find('"', value) - value)), wing[1].first);
   EXPECT_EQ(wing[0].first, 0.0);
   for (std::size_t k = 0; k < wing.size(); ++k) {
     vtkNew<vtkXMLPolyDataReader> reader;
