@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -140,6 +143,28 @@ TEST(FemCommands, MeshAndCheckWarnOfASliverNamingWhereItLies) {
 // folder was claimed: mesh, modes and reduce removed the folder's earlier outputs (mesh.msh,
 // modes.csv, chain.toml, ...) and then exited 2; into a new folder they made it, with a
 // manifest saying "failed". Now the folder is claimed once the wing is meshed.
+// mesh stages gmsh's file in TMPDIR: an unwritable TMPDIR (/proc, unwritable even for root)
+// was reported as a wing gmsh cannot mesh ("check the outline ...", exit 2); it is the
+// folder's fault, an output error (exit 4) naming it, and the output folder is not made.
+// A TMPDIR that does not exist is named too (the message said 'TMPDIR').
+TEST(FemCommands, AnUnwritableTemporaryFolderIsAnOutputErrorNotAWingError) {
+  const flapsim::test::ScratchDir scratch("fem_commands_tmpdir");
+  const std::string wing = std::string(FLAPSIM_SOURCE_DIR) + "/wings/flat_plate.toml";
+  for (const std::string tmpdir : {"/proc", "/nonexistent_flapsim_tmpdir"}) {
+    const fs::path out = scratch / ("model" + std::to_string(tmpdir.size()));
+    const std::string cmd = "TMPDIR=" + tmpdir + " FLAPSIM_QUIET=1 '" + std::string(FLAPSIM_BINARY) +
+                            "' mesh " + wing + " -o " + out.string() + " > /dev/null 2> " +
+                            (scratch / "err.txt").string();
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    const std::string err = flapsim::test::read_text(scratch / "err.txt");
+    EXPECT_EQ(WEXITSTATUS(status), 4) << tmpdir << ": " << err;
+    EXPECT_NE(err.find(tmpdir), std::string::npos) << err;
+    EXPECT_EQ(err.find("check the outline"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(out)) << tmpdir;
+  }
+}
+
 TEST(FemCommands, AWingErrorFoundWhileMeshingLeavesTheFolderAsItWas) {
   const flapsim::test::ScratchDir scratch("fem_commands_mesher_error");
   const fs::path dir = scratch / "model";

@@ -38,10 +38,26 @@ struct StagedGmshFile {
   std::filesystem::path path;
   StagedGmshFile() {
     std::error_code ec;
+    const char* tmpdir = std::getenv("TMPDIR");
+    const std::string named = tmpdir && *tmpdir ? tmpdir : "/tmp";
     const std::filesystem::path folder = std::filesystem::temp_directory_path(ec);
     if (ec)
-      throw io::OutputError("TMPDIR", "the system's temporary folder, for gmsh's file: " + ec.message());
+      throw io::OutputError(named,
+                            "the system's temporary folder (TMPDIR), for gmsh's file: " + ec.message());
     path = folder / ("flapsim_mesh." + std::to_string(static_cast<long>(::getpid())) + ".msh");
+    // Writable, or gmsh's failure to save there read as a wing it cannot mesh (exit 2,
+    // "check the outline") where the folder is at fault (exit 4).
+    errno = 0;
+    const bool writable = static_cast<bool>(std::ofstream(path) << "probe\n");
+    const int error = errno;
+    std::filesystem::remove(path, ec);
+    if (!writable)
+      throw io::OutputError(folder,
+                            "the system's temporary folder (TMPDIR), for gmsh's file, is not writable: "
+                            "cannot create '" +
+                                path.filename().string() + "' there" +
+                                (error ? " (" + std::string(std::strerror(error)) + ")" : std::string()) +
+                                "; set TMPDIR to a writable folder");
   }
   StagedGmshFile(const StagedGmshFile&) = delete;
   StagedGmshFile& operator=(const StagedGmshFile&) = delete;
