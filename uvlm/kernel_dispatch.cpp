@@ -17,7 +17,7 @@ KernelIsa widest_supported() {
 
 // FLAPSIM_KERNEL=scalar|avx2|avx512 chooses a narrower variant (to measure what a CPU
 // without the wider units gets; the results are the same bits); unknown or unsupported
-// values are ignored.
+// values are ignored (kernel_environment_warning says so).
 KernelIsa initial() {
   const char* env = std::getenv("FLAPSIM_KERNEL");
   if (env != nullptr)
@@ -32,6 +32,20 @@ std::atomic<KernelIsa>& current() {
 }
 
 }  // namespace
+
+std::string kernel_environment_warning() {
+  const char* env = std::getenv("FLAPSIM_KERNEL");
+  if (env == nullptr) return "";
+  const std::string value(env);
+  const std::string used = "the kernels run " + std::string(kernel_isa_name(widest_supported())) +
+                           ", the widest this CPU has (docs/performance.md)";
+  for (KernelIsa isa : {KernelIsa::Scalar, KernelIsa::Avx2, KernelIsa::Avx512})
+    if (kernel_isa_name(isa) == value)
+      return kernel_isa_supported(isa) ? ""
+                                       : "FLAPSIM_KERNEL='" + value + "': this CPU cannot run it; " + used;
+  return "FLAPSIM_KERNEL='" + value +
+         "' is not one of scalar, avx2, avx512 (lower case) and is ignored: " + used;
+}
 
 std::string_view kernel_isa_name(KernelIsa isa) {
   switch (isa) {

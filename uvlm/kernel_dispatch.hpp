@@ -11,6 +11,7 @@
 /// return bit-identical velocities and a run's results do not depend on the CPU
 /// (tests/uvlm/test_kernel_dispatch.cpp checks this for each variant the CPU supports).
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -30,6 +31,11 @@ std::vector<KernelIsa> supported_kernel_isas();
 /// The variant in use: the widest supported one unless the environment variable
 /// FLAPSIM_KERNEL (scalar, avx2, avx512; read once) or set_kernel_isa chose another.
 KernelIsa kernel_isa();
+
+/// A warning when FLAPSIM_KERNEL is set to a variant it cannot choose (not scalar, avx2 or
+/// avx512, or one this CPU lacks), which is ignored: a benchmark "with FLAPSIM_KERNEL=AVX2"
+/// measured the AVX-512 kernels without a word. Empty when unset or honoured.
+std::string kernel_environment_warning();
 
 /// Use `isa` for every later kernel call (tests, benchmarks: identical results by design).
 /// \throws std::invalid_argument if this CPU does not support it

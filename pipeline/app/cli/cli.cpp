@@ -18,6 +18,7 @@
 #include "pipeline/fsi/numerical_failure.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/case_model.hpp"
+#include "uvlm/kernel_dispatch.hpp"
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/toml_reader.hpp"
 #include "wings/loader/wing_model.hpp"
@@ -118,6 +119,8 @@ int run(int argc, char** argv) {
       return kExitUsage;
     }
   }
+  if (const std::string w = uvlm::kernel_environment_warning(); !w.empty())
+    std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   // The exit-status contract (exit_status.hpp, README.md): each kind of error has one status.
   try {
     app.parse(argc, argv);
