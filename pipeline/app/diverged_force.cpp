@@ -11,20 +11,46 @@
 namespace flapsim::app {
 
 double fastest_wing_point_speed(const mbd::BaseMotion& base, double period, const Eigen::Matrix3Xd& nodes,
-                                const Eigen::Vector3d& free_stream, int samples) {
+                                const Eigen::Vector3d& free_stream, int samples, double duration) {
   double fastest = 0.0;
-  for (int k = 0; k < samples; ++k) {
-    const mbd::BasePose p = base(period * k / samples);
-    for (Eigen::Index n = 0; n < nodes.cols(); ++n) {
-      const Eigen::Vector3d r = p.rotation * nodes.col(n);
-      fastest = std::max(fastest, (free_stream - p.velocity - p.angular_velocity.cross(r)).norm());
+  const double last_start = std::max(0.0, duration - period);
+  for (const double start : {0.0, last_start}) {
+    for (int k = 0; k < samples; ++k) {
+      const mbd::BasePose p = base(start + period * k / samples);
+      for (Eigen::Index n = 0; n < nodes.cols(); ++n) {
+        const Eigen::Vector3d r = p.rotation * nodes.col(n);
+        fastest = std::max(fastest, (free_stream - p.velocity - p.angular_velocity.cross(r)).norm());
+      }
     }
+    if (last_start == 0.0) break;
   }
   return fastest;
 }
 
-double diverged_force_limit(double rho, double fastest_speed, double area) {
-  return kDivergedForceCoefficient * 0.5 * rho * fastest_speed * fastest_speed * area;
+double fastest_wing_point_acceleration(const mbd::BaseMotion& base, double period,
+                                       const Eigen::Matrix3Xd& nodes, int samples, double duration) {
+  double fastest = 0.0;
+  const double last_start = std::max(0.0, duration - period);
+  for (const double start : {0.0, last_start}) {
+    for (int k = 0; k < samples; ++k) {
+      const mbd::BasePose p = base(start + period * k / samples);
+      for (Eigen::Index n = 0; n < nodes.cols(); ++n) {
+        const Eigen::Vector3d r = p.rotation * nodes.col(n);
+        const Eigen::Vector3d a = p.acceleration + p.angular_acceleration.cross(r) +
+                                  p.angular_velocity.cross(p.angular_velocity.cross(r));
+        fastest = std::max(fastest, a.norm());
+      }
+    }
+    if (last_start == 0.0) break;
+  }
+  return fastest;
+}
+
+double diverged_force_limit(double rho, double fastest_speed, double area, double fastest_acceleration,
+                            double mean_chord) {
+  constexpr double kQuarterPi = 0.25 * 3.14159265358979323846;
+  return kDivergedForceCoefficient * (0.5 * rho * fastest_speed * fastest_speed * area +
+                                      kQuarterPi * rho * mean_chord * fastest_acceleration * area);
 }
 
 void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time) {

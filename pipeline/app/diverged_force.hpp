@@ -30,12 +30,29 @@ namespace flapsim::app {
 inline constexpr double kDivergedForceCoefficient = 20.0;
 
 /// U_b [m/s] of the file comment: `nodes` the lattice's nodes in the wing frame W [m], the
-/// base's motion sampled at `samples` instants of one period [s] (from t = 0).
+/// base's motion sampled at `samples` instants of the run's first period [s] and as many of
+/// its last (a run of `duration` [s]; 0: one period). A revolving wing that speeds up over
+/// longer than a cycle (revolution.ramp_s) reaches its speed only later: sampled over the
+/// first cycle alone its bound was that of a wing nearly at rest, and a valid run stopped
+/// as diverged at 8e-7 N (ramp 0.5 s of a 26 Hz cycle, the Robofly case with a 2 s ramp).
+/// The kinematics are periodic but for the revolution, whose rate only grows: the first and
+/// last periods hold the largest speed.
 double fastest_wing_point_speed(const mbd::BaseMotion& base, double period, const Eigen::Matrix3Xd& nodes,
-                                const Eigen::Vector3d& free_stream, int samples = 400);
+                                const Eigen::Vector3d& free_stream, int samples = 400, double duration = 0.0);
 
-/// The largest aerodynamic force [N] a run may carry: kDivergedForceCoefficient ½ ρ U_b² S.
-double diverged_force_limit(double rho, double fastest_speed, double area);
+/// a_b [m/s²]: the largest acceleration of a lattice node (`nodes` in W [m]) over the same
+/// instants as fastest_wing_point_speed: |a_pivot + ω̇ × r + ω × (ω × r)|.
+double fastest_wing_point_acceleration(const mbd::BaseMotion& base, double period,
+                                       const Eigen::Matrix3Xd& nodes, int samples = 400,
+                                       double duration = 0.0);
+
+/// The largest aerodynamic force [N] a run may carry: kDivergedForceCoefficient (½ ρ U_b² S
+/// + (π/4) ρ c̄ a_b S), the second term the added mass of a plate of chord c̄ (π/4 ρ c̄² a per
+/// span) [Katz & Plotkin 2001, §13.8]: a wing that starts from rest carries the force of its
+/// acceleration before it has any speed (a revolution ramped up over 5 s or 10⁶ s stopped as
+/// diverged at step 2 with 1e-9 N against a bound of U_b alone of 1e-9 N, 1e-16 against 2e-25).
+double diverged_force_limit(double rho, double fastest_speed, double area, double fastest_acceleration = 0.0,
+                            double mean_chord = 0.0);
 
 /// Throws NumericalFailure (with the step and time) when |force| exceeds `limit` [N].
 void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time);

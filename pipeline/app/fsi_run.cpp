@@ -29,11 +29,16 @@ void time_loop(const FsiSetup& setup, fsi::FsiData& data, RunRecorder& recorder,
                const std::function<void(long, long)>& on_step) {
   const fsi::FsiModel& model = setup.model;
   // The force beyond which the lattice has diverged (diverged_force.hpp).
+  const double duration = static_cast<double>(setup.steps) * setup.dt;  // [s]
   const double force_limit =
       model.air && setup.grid
-          ? diverged_force_limit(model.density,
-                                 fastest_wing_point_speed(model.base(), setup.period, setup.grid->nodes, model.free_stream),
-                                 setup.reference.area)
+          ? diverged_force_limit(
+                model.density,
+                fastest_wing_point_speed(model.base(), setup.period, setup.grid->nodes, model.free_stream,
+                                         400, duration),
+                setup.reference.area,
+                fastest_wing_point_acceleration(model.base(), setup.period, setup.grid->nodes, 400, duration),
+                setup.reference.mean_chord)
           : 0.0;
   fsi::initialize(model, data, 0.0);
   recorder.record_initial(data);

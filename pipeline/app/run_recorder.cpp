@@ -235,6 +235,11 @@ void RunRecorder::record_for_state(const io::PolyDataMesh& frame, long step) {
   for (const auto& [name, value] : frame.field_data.numbers) frame_fields_.push_back(name);
   camera_.add_frame(frame);
   if (step == 0) return;  // no loads before the first solve
+  for (const io::VectorField& f : frame.point_data.vectors)  // a FEM's surface in vacuum
+    if (f.name == "displacement_m") {
+      const Eigen::VectorXd magnitude = f.values.colwise().norm().transpose();
+      displacement_values_.add(magnitude.begin(), magnitude.end());
+    }
   const Eigen::VectorXd* values = cell_scalar(frame, "Cp");
   wing_field_ = values ? "Cp" : "pressure_jump_Pa";
   if (!values) values = cell_scalar(frame, wing_field_);
@@ -267,6 +272,9 @@ void RunRecorder::write_state() const {
   state.wing_field = wing_field_;
   if (wing_range > 0.0) state.wing_range = wing_range;
   if (gamma_range > 0.0) state.circulation_range = gamma_range;
+  std::vector<double> displacement = displacement_values_.values();
+  if (const double d = io::magnitude_percentile(displacement, io::kStateColourPercentile); d > 0.0)
+    state.displacement_range = d;
   if (!frame_fields_.empty()) state.frame_fields = frame_fields_;
   state.bounds = camera_.bounds();
   state.front = camera_.best(io::state_box(state), static_cast<double>(io::kStateViewWidth) / io::kStateViewHeight);
@@ -282,7 +290,10 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   // A step measured and then refused (its force diverged) is not one completed: the results
   // end at the step before.
   const bool refused = measured_ && measured_step_ == data.step && !samples_.empty();
-  const double t_end = refused ? samples_.back().time : data.time();
+  // The results end at the last step recorded: a step that failed (a structure that did
+  // not converge, a diverged force) had moved the structure's clock on, and time_s said
+  // 0.3625 s after 28 steps of 0.0125 s, the means' window shifted by that step.
+  const double t_end = samples_.empty() ? 0.0 : samples_.back().time;
   const double t_begin = std::max(0.0, t_end - period);
   const std::vector<double> t = series(samples_, [](const StepSample& s) { return s.time; });
   // The series start at the first step; t = 0 has no loads: its value is the first step's.

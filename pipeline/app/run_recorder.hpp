@@ -139,6 +139,7 @@ class RunRecorder {
   /// chain's) frames for the cameras.
   std::string wing_field_ = "pressure_jump_Pa";
   ThinnedSample wing_values_, circulation_values_;  ///< at most 2²⁰ values each (thinned_sample.hpp)
+  ThinnedSample displacement_values_;               ///< |displacement_m| of a FEM's surface in vacuum [m]
   std::vector<std::string> frame_fields_;
   std::vector<double> frame_times_;  ///< t of the frames written [s] (the state opens at one)
   io::StateCameraChooser camera_;

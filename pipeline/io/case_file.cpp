@@ -755,6 +755,13 @@ Case read_case(TomlTable root) {
                                     "splits its own steps where they fail (docs/fsi.md, \"Step halving of the FEM\"): "
                                     "remove structure_substeps");
   }
+  // A rigid wing is the wing file's outline as one body: a chain file is not read (a broken
+  // one passed check and run without a word, where --chain on such a case is warned).
+  if (c.structure.kind == Case::Structure::Kind::Rigid && root.has("chain") && root.has("wing"))
+    c.warnings.push_back(
+        {c.file, root.line_of("chain"), "chain",
+         "not used: structure.kind = \"rigid\" flies the wing file's outline as one rigid body; "
+         "the chain file is read only with kind = \"flexible\" (it is not checked either)"});
   // The steady lattice's wake leaves along the free stream (docs/uvlm.md, "Steady lattice").
   if (c.numerics.steady && !(c.air.enabled && c.air.freestream.norm() > 0.0))
     root.get_table("numerics").fail("steady", "the steady lattice needs air with a free stream "

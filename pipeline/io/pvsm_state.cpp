@@ -29,6 +29,18 @@ ProxyXml diverging_lookup_table(int id, double range) {
   return lut;
 }
 
+// A sequential map of a vector's magnitude over [0, range]: white at rest to dark blue
+// (render_run.py's FEM colours), fixed as the diverging map.
+ProxyXml magnitude_lookup_table(int id, double range) {
+  ProxyXml lut("lookup_tables", "PVLookupTable", id, 21);
+  lut.numbers("RGBPoints", {0.0, 1.0, 1.0, 1.0, range, 0.1, 0.25, 0.6})
+      .value("ColorSpace", "0")  // RGB
+      .value("VectorMode", "0")  // magnitude
+      .value("ScalarRangeInitialized", "1")
+      .value("AutomaticRescaleRangeMode", "-1");
+  return lut;
+}
+
 // The side view: along the span at mid-stroke, from beyond the tip (+y), level with the
 // stroke plane: the stroke seen edge-on and the wake below it.
 ViewDirection side_view() { return {{0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}; }
@@ -72,7 +84,7 @@ std::string run_state_xml(const RunState& s) {
   constexpr int kTimeKeeper = 256, kScene = 261, kTimeCue = 263;
   constexpr int kWingReader = 1001, kWakeReader = 1002, kChainReader = 1003, kLiftOverTime = 1004;
   constexpr int kChartRep = 2004;
-  constexpr int kWingLut = 3001, kCirculationLut = 3002;
+  constexpr int kWingLut = 3001, kCirculationLut = 3002, kDisplacementLut = 3003;
   constexpr int kRenderView = 4001, kChartView = 4002, kSideView = 4003, kLayout = 5001;
 
   std::vector<ProxyXml> proxies;
@@ -97,6 +109,11 @@ std::string run_state_xml(const RunState& s) {
     luts.emplace_back(kWingLut, s.wing_field + ".PVLookupTable");
     proxies.push_back(diverging_lookup_table(kCirculationLut, s.circulation_range));
     luts.emplace_back(kCirculationLut, "circulation_m2_s.PVLookupTable");
+  }
+  const bool fem_in_vacuum = s.structure_mesh && !s.air;
+  if (fem_in_vacuum) {
+    proxies.push_back(magnitude_lookup_table(kDisplacementLut, s.displacement_range));
+    luts.emplace_back(kDisplacementLut, "displacement_m.PVLookupTable");
   }
 
   // The representations of one 3-D view (ids base + 1 …; a representation belongs to one
@@ -159,13 +176,13 @@ std::string run_state_xml(const RunState& s) {
           .numbers("AmbientColor", {0.2, 0.2, 0.2})
           .number("Opacity", 0.25)
           .number("LineWidth", 1.0);
-    else
-      chain.value("Representation", "Surface With Edges")
-          .values("ColorArrayName", {"", "", "", "0", ""})
-          .numbers("DiffuseColor", {0.75, 0.75, 0.75})
-          .numbers("AmbientColor", {0.75, 0.75, 0.75})
-          .number("LineWidth", 1.0);
+    else  // coloured by |displacement_m| (point data); its thousands of edges would hide it
+      chain.value("Representation", "Surface")
+          .values("ColorArrayName", {"", "", "", "0", "displacement_m"})
+          .proxies("LookupTable", {kDisplacementLut})
+          .number("LineWidth", 2.0);
     proxies.push_back(std::move(chain));
+    if (fem_in_vacuum) scalar_bar(base + 4, kDisplacementLut, "|displacement| [m]", {0.89, 0.52});
     if (s.air) {
       scalar_bar(base + 4, kWingLut, cp ? "Cp" : "pressure jump [Pa]", {0.89, 0.52});
       scalar_bar(base + 5, kCirculationLut, "circulation [m^2/s]", {0.89, 0.05});

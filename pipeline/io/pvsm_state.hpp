@@ -46,7 +46,7 @@ struct RunState {
   std::string chain_pvd = "chain.pvd";
   /// The structure's series is the FEM's surface mesh (fem.pvd), not the chain's bars: in
   /// air thin translucent lines over the wing coloured by wing_field (as thick black lines
-  /// its thousands of edges hid the colours), in vacuum a grey surface with its edges.
+  /// its thousands of edges hid the colours), in vacuum its surface coloured by |displacement_m|.
   bool structure_mesh = false;
   double length_scale = 0.05;  ///< wing length [m], places the camera without bounds
   /// The wing's colour field (cell data): "Cp" when the frames carry it, else the
@@ -54,6 +54,9 @@ struct RunState {
   std::string wing_field = "pressure_jump_Pa";
   double wing_range = 1.0;         ///< colour map over ± this (unit of wing_field)
   double circulation_range = 1e-4; ///< |Γ| for the wake's colour map [m²/s]
+  /// |displacement_m| for the colour map of a FEM's surface in vacuum (structure_mesh, no
+  /// air): white at rest to blue [m] (a grey surface under its edges showed no deflection).
+  double displacement_range = 1e-3;
   double percentile = kStateColourPercentile;  ///< of the ranges above [%] (a comment in the state)
   /// The field data names of the frames (each a column of the chart's table); all but
   /// lift_N and CL are listed hidden.

@@ -59,6 +59,45 @@ TEST(DivergedForce, TheFastestPointIsTheFarthestCornerAtTheFastestInstant) {
   EXPECT_DOUBLE_EQ(flapsim::app::fastest_wing_point_speed(moving, T, corners_of_a_flat_plate(), Eigen::Vector3d::Zero()), 5.0);
 }
 
+// A wing revolving ever faster (a ramp longer than the run's first period): its fastest
+// speed is the last period's, Ω(t_end) times the farthest node's radius, not the first's.
+TEST(DivergedForce, ARevolutionThatSpeedsUpIsSampledOverTheRunsLastPeriod) {
+  const double T = 0.25, ramp = 2.0, omega = 2 * std::numbers::pi;  // s, s, rad/s
+  const flapsim::mbd::BaseMotion speeding_up = [&](double t) {
+    flapsim::mbd::BasePose p;
+    const double rate = omega * std::min(1.0, t / ramp);
+    p.angular_velocity = {0.0, 0.0, rate};
+    return p;
+  };
+  const double radius = std::hypot(7.5e-3, 40e-3);  // m, the plate's farthest corner
+  const double first = flapsim::app::fastest_wing_point_speed(speeding_up, T, corners_of_a_flat_plate(),
+                                                              Eigen::Vector3d::Zero());
+  EXPECT_LT(first, 0.13 * omega * radius);  // at most Ω T / ramp of the final speed
+  // A run of 8 periods (2 s): the last instant sampled is 2 − T/400 s.
+  const double whole = flapsim::app::fastest_wing_point_speed(speeding_up, T, corners_of_a_flat_plate(),
+                                                              Eigen::Vector3d::Zero(), 400, 8 * T);
+  EXPECT_NEAR(whole, omega * radius * (1.0 - T / 400 / ramp), 1e-12);
+}
+
+// The added-mass part of the bound: a wing that accelerates from rest. A plate turning
+// about z with ω̇ = 10 rad/s² at ω = 0: its farthest corner accelerates at ω̇ r; the bound
+// adds 20 (π/4) ρ c̄ a_b S to 20 ½ ρ U_b² S.
+TEST(DivergedForce, AWingAcceleratingFromRestHasTheBoundOfItsAddedMass) {
+  const flapsim::mbd::BaseMotion starting = [](double) {
+    flapsim::mbd::BasePose p;
+    p.angular_acceleration = {0.0, 0.0, 10.0};
+    return p;
+  };
+  const double radius = std::hypot(7.5e-3, 40e-3);  // m
+  const double a = flapsim::app::fastest_wing_point_acceleration(starting, 0.04, corners_of_a_flat_plate());
+  EXPECT_NEAR(a, 10.0 * radius, 1e-12);
+  const double rho = 1.225, area = 4e-4, chord = 0.01;
+  EXPECT_NEAR(flapsim::app::diverged_force_limit(rho, 0.0, area, a, chord),
+              20.0 * std::numbers::pi / 4 * rho * chord * a * area, 1e-18);
+  EXPECT_EQ(flapsim::app::diverged_force_limit(rho, 4.0, area),
+            flapsim::app::diverged_force_limit(rho, 4.0, area, 0.0, chord));
+}
+
 TEST(DivergedForce, AForceBeyondTheLimitIsAFailureOfItsStep) {
   // limit = 20 · ½ ρ U_b² S (diverged_force.hpp): 20 · 0.5 · 1.225 · 4² · 4e-4 = 0.0784 N.
   const double limit = flapsim::app::diverged_force_limit(1.225, 4.0, 4e-4);
@@ -128,6 +167,31 @@ TEST(DivergedForce, TheRigidHoverWithAShedLeadingEdgeStopsWhereItsLiftRunsAway) 
   }
   EXPECT_GT(diverged, 10.0 * first);
   EXPECT_GT(diverged, before);
+}
+
+// A run that fails within a step (here the loads of a rotation that jumps by 90° between two
+// spline knots 1e-16 of a cycle apart are not finite at step 2): summary.json's time_s is the
+// last recorded step's, as history.csv's last t_s, and its means' window ends there. The
+// failed step had moved the structure's clock on: time_s was step 2's time after 1 step, and
+// mean_window_cycles counted it (2 against 1 step of 24).
+TEST(DivergedForce, AFailedRunsSummaryEndsAtItsLastRecordedStep) {
+  flapsim::test::ScratchDir dir("failed_run_time");
+  std::ofstream(dir / "case.toml")
+      << "name = \"jump\"\nwing = \"" << FLAPSIM_SOURCE_DIR << "/wings/flat_plate.toml\"\n"
+      << "[kinematics]\nfrequency_hz = 26.1\nsweep = { mean_deg = 10.0, cos_deg = [50.0] }\n"
+      << "rotation = { phase = [0.0, 0.5, 0.5000000000000001, 0.75], deg = [90.0, 45.0, 135.0, 100.0] }\n"
+      << "[structure]\nkind = \"rigid\"\n"
+      << "[numerics]\nsteps_per_cycle = 24\ncycles = 1\nchordwise_panels = 3\nspanwise_panels = 4\n"
+      << "[output]\nvtk_every = 0\n";
+  const auto outcome = flapsim::test::run_flapsim_capturing_stderr(
+      dir.path(), "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(outcome.status, 3) << outcome.err;
+  const flapsim::test::HistoryCsv h = flapsim::test::read_history_csv(dir / "out" / "history.csv");
+  ASSERT_FALSE(h.rows.empty());
+  const std::string summary = read_text(dir / "out" / "summary.json");
+  EXPECT_EQ(flapsim::test::json_number(summary, "steps"), static_cast<double>(h.rows.size()));
+  EXPECT_EQ(flapsim::test::json_number(summary, "time_s"), h.column("t_s").back());
+  EXPECT_NEAR(flapsim::test::json_number(summary, "mean_window_cycles"), h.rows.size() / 24.0, 1e-12);
 }
 
 TEST(DivergedForce, WithTheSheetsCoreTheAdviceNamesTheSameHoverRunsThrough) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "app/history_csv.hpp"
 #include "common/run_flapsim.hpp"
@@ -52,6 +53,29 @@ TEST(RevolvingWingCase, RunsAndRefersItsCoefficientsToTheSteadyRevolution) {
   EXPECT_NEAR(flapsim::test::json_number(summary, "reference_speed_m_s"), expected, 1e-9 * expected);
   // Leading edge first at 45°: the wing lifts.
   EXPECT_GT(flapsim::test::json_number(summary, "mean_lift_N"), 0.0);
+}
+
+// A ramp longer than a cycle (frequency_hz only sets the time unit of a revolving wing):
+// the diverged-force bound took the wing's fastest speed over the first cycle alone, where
+// the wing has hardly started, and counted no force of its acceleration; such runs stopped
+// as "the lattice has diverged" (exit 3) at forces of nanonewtons (here: ramps of 0.5 s and
+// 5 s at 26.1 Hz, 10⁶ s at 2 Hz; the shipped Robofly case with a 2 s ramp at step 87). The
+// bound now samples the last cycle too and adds the wing's added-mass force
+// (diverged_force.hpp); the runs complete and the wing lifts.
+TEST(RevolvingWingCase, ARampLongerThanACycleRunsToTheEnd) {
+  for (const auto& [ramp, frequency] : {std::pair{"0.5", "26.1"}, {"5.0", "26.1"}, {"1e6", "2.0"}}) {
+    flapsim::test::ScratchDir dir(std::string("revolving_long_ramp_") + ramp);
+    std::string text =
+        revolving_case(std::string("revolution = { rate_deg_per_s = -720.0, ramp_s = ") + ramp + " }");
+    text.replace(text.find("cycles = 1"), 10, "cycles = 2");
+    text.replace(text.find("frequency_hz = 2.0"), 18, std::string("frequency_hz = ") + frequency);
+    std::ofstream(dir / "case.toml") << text;
+    const auto r = flapsim::test::run_flapsim_capturing_stderr(
+        dir.path(), "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string());
+    EXPECT_EQ(r.status, 0) << "ramp " << ramp << " s: " << r.err;
+    EXPECT_GT(flapsim::test::json_number(read_text(dir / "out" / "summary.json"), "mean_lift_N"), 0.0)
+        << ramp;
+  }
 }
 
 // Without a ramp the wing turns at Ω from t = 0 (docs/kinematics.md), and the reference

@@ -303,4 +303,16 @@ TEST(CaseWarnings, AFrozenFarWakeInStillAirIsWarned) {
                   .warnings.empty());
 }
 
+// A rigid case's chain file is not read (the wing file's outline is the one rigid body): a
+// broken chain file (garbage = [) passed check and run without a word, where --chain on such
+// a case is warned. The case's chain key is warned too, at its line. (The file need only
+// exist; any existing file stands for it here.) A flexible case reads it: no warning.
+TEST(CaseWarnings, ARigidCasesChainFileIsWarnedAsUnused) {
+  const std::string rigid = "chain = \"valid_tiny_case.toml\"\n" + hover_case_text("cycles = 1\n");
+  expect_only_warning(case_from_text(rigid), "chain", 1, "not used: structure.kind = \"rigid\"");
+  std::string flexible = rigid;
+  flexible.replace(flexible.find("kind = \"rigid\""), 14, "kind = \"flexible\"\nbodies = 2");
+  EXPECT_TRUE(case_from_text(flexible).warnings.empty());
+}
+
 }  // namespace

@@ -41,8 +41,34 @@ TEST(RunStateStructure, TheChainIsThickBlackLinesAndAFemMeshThinLinesOverTheWing
   EXPECT_NE(over_wing.find("fem.pvd"), std::string::npos);
   io::RunState fem_in_vacuum = fem_in_air;
   fem_in_vacuum.air = false;
-  EXPECT_EQ(structure_property(io::run_state_xml(fem_in_vacuum), 2103, "Representation"),
-            "Surface With Edges");
+  EXPECT_EQ(structure_property(io::run_state_xml(fem_in_vacuum), 2103, "Representation"), "Surface");
+}
+
+// A FEM run in vacuum (cases/vacuum_flapping_fem.toml) showed a grey surface under the
+// edges of its 8873 triangles: its 10 mm tip deflection was invisible. Its surface is
+// coloured by |displacement_m| (point data, magnitude), white at rest to blue at the
+// displacement_range the run measured, with a scalar bar.
+TEST(RunStateStructure, AFemInVacuumIsColouredByItsDisplacement) {
+  io::RunState fem_in_vacuum;
+  fem_in_vacuum.air = false;
+  fem_in_vacuum.chain_pvd = "fem.pvd";
+  fem_in_vacuum.structure_mesh = true;
+  fem_in_vacuum.displacement_range = 0.0125;
+  const std::string xml = io::run_state_xml(fem_in_vacuum);
+  const auto colour = xml.find("id=\"2103.ColorArrayName\"");
+  ASSERT_NE(colour, std::string::npos);
+  EXPECT_NE(xml.substr(colour, xml.find("</Property>", colour) - colour).find("value=\"displacement_m\""),
+            std::string::npos);
+  EXPECT_EQ(structure_property(xml, 3003, "VectorMode"), "0");  // magnitude
+  const auto points = xml.find("id=\"3003.RGBPoints\"");
+  ASSERT_NE(points, std::string::npos);
+  EXPECT_NE(xml.substr(points, xml.find("</Property>", points) - points).find("value=\"0.0125\""),
+            std::string::npos);
+  EXPECT_NE(xml.find("|displacement| [m]"), std::string::npos);  // its scalar bar
+  // A chain in vacuum and anything in air have no such map.
+  io::RunState chain_in_vacuum;
+  chain_in_vacuum.air = false;
+  EXPECT_EQ(io::run_state_xml(chain_in_vacuum).find("displacement_m.PVLookupTable"), std::string::npos);
 }
 
 }  // namespace
