@@ -26,6 +26,24 @@ std::vector<std::string> evaluated_hashes(const fs::path& dir) {
   return hashes;
 }
 
+// A second search in the same folder that finds no optimum (a constraint no point meets,
+// exit 2 "no optimum.toml written") left the first search's optimum.toml beside its own
+// evaluations and report: `flapsim run DIR/optimum.toml` and make optimize-plots took another
+// problem's optimum. A search removes the earlier search's optimum and report when it starts.
+TEST(OptimizeResume, ASearchWithoutAnOptimumLeavesNoEarlierSearchsOptimum) {
+  const test::ScratchDir dir("optimize_stale_optimum");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
+  const std::string start = "optimize " + (dir / "case.toml").string() +
+                            " --vary kinematics.rotation_phase=-0.25:0.15 --max-evaluations 3 -q -o " +
+                            (dir / "opt").string();
+  ASSERT_EQ(test::run_flapsim(start + " --maximize mean_lift_N"), 0);
+  ASSERT_TRUE(fs::exists(dir / "opt" / "optimum.toml"));
+  EXPECT_EQ(test::run_flapsim(start + " --maximize lift_per_power_N_W --constraint 'mean_lift_N>=1'"), 2);
+  EXPECT_FALSE(fs::exists(dir / "opt" / "optimum.toml"));
+  const std::string report = test::read_text(dir / "opt" / "report.md");
+  EXPECT_NE(report.find("lift_per_power_N_W"), std::string::npos) << report;  // this search's report
+}
+
 TEST(OptimizeResume, AnInterruptedOptimisationRerunsNoEvaluatedPoint) {
   const test::ScratchDir dir("optimize_resume");
   std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);

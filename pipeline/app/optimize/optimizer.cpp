@@ -157,6 +157,17 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
     io::ensure_directory(options.output_dir);
     io::ensure_directory(eo.runs_dir);
     lock.emplace(options.output_dir, "optimize");
+    // An earlier search's end (its optimum and report) goes now; this search writes its
+    // own at its end. Left, they stood beside this search's evaluations.csv after it found
+    // no optimum (exit 2, "no optimum.toml written") or was interrupted, and
+    // `flapsim run DIR/optimum.toml` and make optimize-plots used another problem's optimum.
+    for (const char* earlier : {"optimum.toml", "optimum_wing.toml", "report.md"}) {
+      std::error_code ec;
+      std::filesystem::remove(options.output_dir / earlier, ec);
+      if (ec)
+        throw io::OutputError(options.output_dir / earlier,
+                              "cannot remove an earlier search's file: " + ec.message());
+    }
     table.emplace(options.output_dir / "evaluations.csv", keys);
   }
   // The threads of a run: this thread's (--threads, or the cores); under MPI each rank's
