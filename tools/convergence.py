@@ -27,25 +27,26 @@ import re
 import subprocess
 import sys
 import tempfile
+import tomllib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from si_prefix import si_scale  # noqa: E402
 
 
 def case_numerics(case):
-    """The case's numerics keys that set the resolution (defaults of docs/case_file.md)."""
+    """The case's numerics keys that set the resolution (defaults of docs/case_file.md), read
+    as TOML (tomllib): a line-by-line reading missed `numerics.steps_per_cycle = 30` written as
+    a dotted key, an inline table or `1_000`, and labelled the levels with the defaults while
+    the runs used the case's values."""
     values = {"chordwise_panels": 6, "spanwise_panels": 10, "steps_per_cycle": 100}
-    section = None
-    with open(case, encoding="utf-8") as f:
-        for raw in f:
-            line = raw.split("#", 1)[0].strip()
-            m = re.match(r"^\[([^\]]+)\]$", line)
-            if m:
-                section = m.group(1).strip()
-                continue
-            m = re.match(r"^([A-Za-z_]+)\s*=\s*([0-9]+)\s*$", line)
-            if m and section == "numerics" and m.group(1) in values:
-                values[m.group(1)] = int(m.group(2))
+    try:
+        with open(case, "rb") as f:
+            numerics = tomllib.load(f).get("numerics", {})
+    except (OSError, tomllib.TOMLDecodeError) as e:
+        raise ValueError(f"{case}: {e}") from e
+    for key in values:
+        if isinstance(numerics.get(key), int) and not isinstance(numerics.get(key), bool):
+            values[key] = numerics[key]
     return values
 
 
