@@ -33,6 +33,12 @@ struct WingKinematics {
   bool pivot_translates() const {
     return !surge.is_constant() || !lateral.is_constant() || !heave.is_constant();
   }
+  /// True if the base oscillates at the wingbeat frequency: a sweep, deviation, rotation or
+  /// pivot translation that is not constant. A wing that only revolves has no wingbeat (its
+  /// frequency_hz sets the time unit), so nothing drives it at that frequency.
+  bool oscillates() const {
+    return !sweep.is_constant() || !deviation.is_constant() || !rotation.is_constant() || pivot_translates();
+  }
   /// A steady revolution added to the sweep (revolving-wing experiments: Dickinson et al.
   /// 1999, Usherwood & Ellington 2002): φ gains Ω_r(t), the rate rising from 0 to Ω over the
   /// ramp τ as Ω (1 − cos(π t/τ))/2 (no jump of the rate or of its derivative at 0 and τ),

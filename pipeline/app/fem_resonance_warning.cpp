@@ -61,6 +61,7 @@ std::string driven_above_first_mode_warning(const FemNaturalModes& modes, double
 
 std::string fem_near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
   if (c.structure.kind != io::Case::Structure::Kind::Fem || !setup.fem_structure) return "";
+  if (!c.kinematics.oscillates()) return "";  // a wing that only revolves: no wingbeat drives it
   FemNaturalModes modes;
   try {
     modes = fem_resonance_modes(c, setup);

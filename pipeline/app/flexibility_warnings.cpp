@@ -36,6 +36,7 @@ double lowest_resonant_mode_hz(double f) { return f / std::sqrt(1.0 + 1.0 / kRes
 std::string near_resonance_warning(const io::Case& c, const FsiSetup& setup) {
   const mbd::ChainModel& chain = setup.chain();
   if (c.structure.kind != io::Case::Structure::Kind::Flexible || chain.num_dofs() == 0) return "";
+  if (!c.kinematics.oscillates()) return "";  // a wing that only revolves: no wingbeat drives it
   std::vector<reduction::ChainMode> modes;
   try {
     modes = reduction::LinearChain(chain).modes();

@@ -179,6 +179,7 @@ void check_lattice_can_follow(const Case& c, const wings::Wing& wing) {
 std::string soft_chain_warning(const Case& c, const FsiSetup& setup) {
   const mbd::ChainModel& chain = setup.chain();
   if (c.structure.kind != Case::Structure::Kind::Flexible || chain.num_dofs() == 0) return "";
+  if (!c.kinematics.oscillates()) return "";  // a wing that only revolves: no wingbeat drives it
   double f1 = 0.0;
   bool bending = false;
   try {
