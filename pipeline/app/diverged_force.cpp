@@ -67,12 +67,17 @@ void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long st
 std::string diverged_lattice_advice(const io::Case::Numerics& n, LiftJump jump) {
   if (n.leading_edge != uvlm::LeadingEdge::Shed) return {};
   char evidence[200];
-  std::snprintf(
-      evidence, sizeof evidence,
-      "With leading_edge = \"shed\" the lift coefficient changed by up to %.3g from one step to the "
-      "next (into step %ld; history.csv CL), as it does where the leading-edge sheet comes apart near "
-      "the wing: ",
-      jump.size, jump.step);
+  if (jump.step >= 2)
+    std::snprintf(
+        evidence, sizeof evidence,
+        "With leading_edge = \"shed\" the lift coefficient changed by up to %.3g from one step to the "
+        "next (into step %ld; history.csv CL), as it does where the leading-edge sheet comes apart near "
+        "the wing: ",
+        jump.size, jump.step);
+  else  // no two steps to compare (it said "changed by up to 0 ... (into step 0")
+    std::snprintf(evidence, sizeof evidence,
+                  "With leading_edge = \"shed\" the run stopped before two steps could be compared; the "
+                  "leading-edge sheet may come apart near the wing: ");
   const std::string default_model =
       "leading_edge = \"separated\", the default, sheds no sheet (docs/uvlm.md, "
       "\"Leading-edge vortex shedding: measurements\")";

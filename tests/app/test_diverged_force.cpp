@@ -305,6 +305,12 @@ TEST(DivergedForce, TheAdviceNamesTheSheetsCoreOnlyWhereItIsNarrow) {
   n.sheet_core_radius = 0.0;
   n.core_radius = 0.6;  // the wake's, wider already
   EXPECT_FALSE(names_core());
+  // A run stopped at its second step has no two steps to compare: no jump is quoted (it said
+  // "changed by up to 0 ... (into step 0", of a step that does not exist).
+  const std::string early = flapsim::app::diverged_lattice_advice(n, {});
+  EXPECT_EQ(early.find("into step"), std::string::npos) << early;
+  EXPECT_NE(early.find("before two steps could be compared"), std::string::npos) << early;
+  EXPECT_NE(early.find("leading_edge = \"separated\""), std::string::npos) << early;
 }
 
 TEST(DivergedForce, AnImpulsiveStartInAFreeStreamRunsOn) {
