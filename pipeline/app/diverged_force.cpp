@@ -66,7 +66,7 @@ void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long st
 
 std::string diverged_lattice_advice(const io::Case::Numerics& n, LiftJump jump) {
   if (n.leading_edge != uvlm::LeadingEdge::Shed) return {};
-  char evidence[200];
+  char evidence[320];
   if (jump.step >= 2)
     std::snprintf(
         evidence, sizeof evidence,
