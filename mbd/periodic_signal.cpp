@@ -115,6 +115,14 @@ bool PeriodicSignal::is_constant() const {
   return true;
 }
 
+int PeriodicSignal::highest_harmonic() const {
+  if (tabulated_) return 0;
+  for (std::size_t n = std::max(cos_.size(), sin_.size()); n > 0; --n)
+    if ((n <= cos_.size() && cos_[n - 1] != 0.0) || (n <= sin_.size() && sin_[n - 1] != 0.0))
+      return static_cast<int>(n);
+  return 0;
+}
+
 AngleSample PeriodicSignal::at_phase(double s) const {
   AngleSample out;
   if (!tabulated_) {

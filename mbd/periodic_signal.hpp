@@ -40,6 +40,10 @@ class PeriodicSignal {
   /// Whether the signal is the same at every phase (no harmonic, or a table of equal values).
   bool is_constant() const;
 
+  /// The highest harmonic n with a non-zero coefficient of a harmonic series (0 for none and
+  /// for a table): a step resolves it only with more than 2n steps per cycle.
+  int highest_harmonic() const;
+
  private:
   bool tabulated_ = false;
   double mean_ = 0.0;

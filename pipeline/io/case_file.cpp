@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "mbd/angle_units.hpp"
 #include "wings/loader/input_error.hpp"
@@ -614,6 +615,33 @@ void warn_few_steps_per_cycle(const TomlTable& root, Case& c) {
 }
 }  // namespace
 
+// A harmonic the time step does not resolve: harmonic n needs more than 2n steps per cycle
+// (docs/case_file.md, "Kinematics"); a 21st harmonic at 24 steps ran without a word, its
+// motion aliased to a lower one.
+namespace {
+void warn_unresolved_harmonic(const TomlTable& root, Case& c) {
+  const mbd::WingKinematics& k = c.kinematics;
+  const std::pair<const char*, const mbd::PeriodicSignal*> signals[] = {
+      {"sweep", &k.sweep}, {"deviation", &k.deviation}, {"rotation", &k.rotation},
+      {"surge", &k.surge}, {"lateral", &k.lateral},     {"heave", &k.heave}};
+  int highest = 0;
+  std::string key;
+  for (const auto& [name, signal] : signals)
+    if (signal->highest_harmonic() > highest) {
+      highest = signal->highest_harmonic();
+      key = name;
+    }
+  if (c.numerics.steady || c.numerics.steps_per_cycle > 2 * highest) return;
+  warn_at_numerics_key(
+      root, c, "steps_per_cycle",
+      std::to_string(c.numerics.steps_per_cycle) + " steps a cycle do not resolve harmonic " +
+          std::to_string(highest) + " of kinematics." + key +
+          " (a step resolves harmonic n only with more than 2n steps a cycle): its motion is "
+          "sampled as a lower harmonic's; use more than " +
+          std::to_string(2 * highest) + " steps a cycle");
+}
+}  // namespace
+
 // A thin wake core in hover: the wing sweeps back through the wake it shed half a stroke
 // before, and cores below 0.15 mean chords make its lift erratic, the more so the finer the
 // step (docs/uvlm.md, "Hover results with leading_edge = none": 0.05 and 0.1 noisy, even a
@@ -822,6 +850,7 @@ Case read_case(TomlTable root) {
   warn_revolution_ramp_into_last_cycle(root, c);
   warn_rotation_phase_that_shifts_nothing(root, c);
   warn_few_steps_per_cycle(root, c);
+  warn_unresolved_harmonic(root, c);
   warn_thin_core_in_hover(root, c);
   warn_dense_fluid_with_air_viscosity(root, c);
   return c;

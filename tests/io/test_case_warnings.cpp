@@ -315,4 +315,22 @@ TEST(CaseWarnings, ARigidCasesChainFileIsWarnedAsUnused) {
   EXPECT_TRUE(case_from_text(flexible).warnings.empty());
 }
 
+// A harmonic the time step cannot resolve (harmonic n needs more than 2n steps a cycle,
+// docs/case_file.md): a sweep with a 21st harmonic at 40 steps ran without a word, its motion
+// aliased. Warned at steps_per_cycle, naming the harmonic and the signal; the 19th is not.
+TEST(CaseWarnings, AHarmonicTheStepCannotResolveIsWarned) {
+  const auto with_highest = [](int n) {
+    std::string coefficients = "50.0";
+    for (int k = 2; k <= n; ++k) coefficients += k == n ? ", 0.5" : ", 0.0";
+    std::string text = hover_case_text("cycles = 1\n");
+    const std::string sweep = "sweep = { cos_deg = [50.0] }";
+    text.replace(text.find(sweep), sweep.size(), "sweep = { cos_deg = [" + coefficients + "] }");
+    return case_from_text(text);
+  };
+  expect_only_warning(with_highest(21), "numerics.steps_per_cycle", 9,
+                      "do not resolve harmonic 21 of kinematics.sweep");
+  expect_only_warning(with_highest(20), "numerics.steps_per_cycle", 9, "use more than 40 steps a cycle");
+  EXPECT_TRUE(with_highest(19).warnings.empty());
+}
+
 }  // namespace
