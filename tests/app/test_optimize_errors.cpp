@@ -111,4 +111,28 @@ TEST(OptimizeErrors, AConstraintNoEvaluatedPointSatisfiesIsReportedAndExitsTwo) 
   EXPECT_FALSE(fs::exists(out / "optimum.toml"));
 }
 
+// Without constraints a search has no optimum only when every run failed: the report said "No
+// evaluated point satisfies the constraints ... Relax the constraint" of a search that had
+// none. Every run here fails at its second step (a rotation that jumps by 90° between two
+// knots 1e-16 of a cycle apart: loads not finite): exit 3, the report says the runs failed.
+TEST(OptimizeErrors, ASearchWhoseRunsAllFailSaysSoNotThatAConstraintFailed) {
+  const test::ScratchDir dir("optimize_all_failed");
+  std::string text = test::tiny_plate_case(12);
+  const std::string rotation = "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }";
+  text.replace(
+      text.find(rotation), rotation.size(),
+      "rotation = { phase = [0.0, 0.5, 0.5000000000000001, 0.75], deg = [90.0, 45.0, 135.0, 100.0] }");
+  std::ofstream(dir / "case.toml") << text;
+  const fs::path out = dir / "out";
+  const auto outcome = test::run_flapsim_capturing_stderr(
+      dir.path(), "optimize " + (dir / "case.toml").string() +
+                      " --vary kinematics.frequency_hz=20:30 --maximize mean_lift_N --max-evaluations 3 -o " +
+                      out.string());
+  EXPECT_EQ(outcome.status, 3) << outcome.err;
+  const std::string report = test::read_text(out / "report.md");
+  EXPECT_NE(report.find("No evaluated point completed its run"), std::string::npos) << report;
+  EXPECT_EQ(report.find("Relax the constraint"), std::string::npos) << report;
+  EXPECT_FALSE(fs::exists(out / "optimum.toml"));
+}
+
 }  // namespace

@@ -71,6 +71,12 @@ std::string optimize_report(const std::string& case_file, const Problem& problem
           (report.optimum_spring_scale != 1.0 ? " --spring-scale " + io::format_number(report.optimum_spring_scale)
                                               : std::string()) +
           " -o DIR` (from this folder).\n\n";
+  } else if (problem.constraints.empty()) {
+    // Without constraints only failed runs leave no optimum (it said "satisfies the
+    // constraints ... Relax the constraint" of a search that had none).
+    md +=
+        "## No optimum\n\nNo evaluated point completed its run (the status and message of each are in "
+        "`evaluations.csv`, the run's own files in `runs/`). No optimum.toml was written.\n\n";
   } else {
     md += "## No optimum\n\nNo evaluated point satisfies the constraints";
     double least = INFINITY;
