@@ -10,40 +10,42 @@
 
 namespace flapsim::app {
 
-double fastest_wing_point_speed(const mbd::BaseMotion& base, double period, const Eigen::Matrix3Xd& nodes,
-                                const Eigen::Vector3d& free_stream, int samples, double duration) {
-  double fastest = 0.0;
+namespace {
+
+// The largest of `value(pose, r)` over the lattice's nodes r (in G) at `samples` instants of
+// the run's first period and as many of its last (a run of `duration` [s]; 0: one period).
+template <typename Value>
+double largest_over_first_and_last_period(const mbd::BaseMotion& base, double period, const Eigen::Matrix3Xd& nodes,
+                                          int samples, double duration, const Value& value) {
+  double largest = 0.0;
   const double last_start = std::max(0.0, duration - period);
   for (const double start : {0.0, last_start}) {
     for (int k = 0; k < samples; ++k) {
       const mbd::BasePose p = base(start + period * k / samples);
-      for (Eigen::Index n = 0; n < nodes.cols(); ++n) {
-        const Eigen::Vector3d r = p.rotation * nodes.col(n);
-        fastest = std::max(fastest, (free_stream - p.velocity - p.angular_velocity.cross(r)).norm());
-      }
+      for (Eigen::Index n = 0; n < nodes.cols(); ++n) largest = std::max(largest, value(p, p.rotation * nodes.col(n)));
     }
     if (last_start == 0.0) break;
   }
-  return fastest;
+  return largest;
 }
 
-double fastest_wing_point_acceleration(const mbd::BaseMotion& base, double period,
-                                       const Eigen::Matrix3Xd& nodes, int samples, double duration) {
-  double fastest = 0.0;
-  const double last_start = std::max(0.0, duration - period);
-  for (const double start : {0.0, last_start}) {
-    for (int k = 0; k < samples; ++k) {
-      const mbd::BasePose p = base(start + period * k / samples);
-      for (Eigen::Index n = 0; n < nodes.cols(); ++n) {
-        const Eigen::Vector3d r = p.rotation * nodes.col(n);
-        const Eigen::Vector3d a = p.acceleration + p.angular_acceleration.cross(r) +
-                                  p.angular_velocity.cross(p.angular_velocity.cross(r));
-        fastest = std::max(fastest, a.norm());
-      }
-    }
-    if (last_start == 0.0) break;
-  }
-  return fastest;
+}  // namespace
+
+double fastest_wing_point_speed(const mbd::BaseMotion& base, double period, const Eigen::Matrix3Xd& nodes,
+                                const Eigen::Vector3d& free_stream, int samples, double duration) {
+  return largest_over_first_and_last_period(
+      base, period, nodes, samples, duration, [&](const mbd::BasePose& p, const Eigen::Vector3d& r) {
+        return (free_stream - p.velocity - p.angular_velocity.cross(r)).norm();
+      });
+}
+
+double fastest_wing_point_acceleration(const mbd::BaseMotion& base, double period, const Eigen::Matrix3Xd& nodes,
+                                       int samples, double duration) {
+  return largest_over_first_and_last_period(
+      base, period, nodes, samples, duration, [](const mbd::BasePose& p, const Eigen::Vector3d& r) {
+        return (p.acceleration + p.angular_acceleration.cross(r) + p.angular_velocity.cross(p.angular_velocity.cross(r)))
+            .norm();
+      });
 }
 
 double diverged_force_limit(double rho, double fastest_speed, double area, double fastest_acceleration,
