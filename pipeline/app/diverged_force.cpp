@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numbers>
 #include <string>
 
 #include "pipeline/fsi/numerical_failure.hpp"
@@ -50,9 +51,8 @@ double fastest_wing_point_acceleration(const mbd::BaseMotion& base, double perio
 
 double diverged_force_limit(double rho, double fastest_speed, double area, double fastest_acceleration,
                             double mean_chord) {
-  constexpr double kQuarterPi = 0.25 * 3.14159265358979323846;
   return kDivergedForceCoefficient * (0.5 * rho * fastest_speed * fastest_speed * area +
-                                      kQuarterPi * rho * mean_chord * fastest_acceleration * area);
+                                      std::numbers::pi / 4 * rho * mean_chord * fastest_acceleration * area);
 }
 
 void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long step, double time) {

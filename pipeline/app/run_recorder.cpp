@@ -308,13 +308,13 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   };
   r.set("steps", data.step - (refused ? 1 : 0));
   r.set("time_s", t_end);
-  // A whole cycle is 1 exactly: t_end − (t_end − T) is T only to round-off, and complete
-  // runs (20 Hz, 1 or 5 cycles of 24 steps) gave 0.9999999999999998 and a report saying they
-  // had ended within their first cycle. A run stopped within it is at most 1 − 1e-6 (steps
-  // per cycle ≤ 1e6).
-  double window_cycles = period > 0.0 ? (t_end - t_begin) / period : 0.0;
-  if (std::abs(window_cycles - 1.0) < 1e-9) window_cycles = 1.0;
-  r.set("mean_window_cycles", window_cycles);
+  // Counted in steps: (t_end − t_begin) / T is 1 only to round-off, and complete runs (20 Hz,
+  // 1 or 5 cycles of 24 steps) gave 0.9999999999999998 and a report saying they had ended
+  // within their first cycle.
+  const long steps_per_cycle = case_.numerics.steps_per_cycle;
+  const long recorded = static_cast<long>(samples_.size());
+  r.set("mean_window_cycles",
+        static_cast<double>(std::min(recorded, steps_per_cycle)) / static_cast<double>(steps_per_cycle));
   r.set("mean_lift_N", mean(series(samples_, [](const StepSample& s) { return s.lift; })));
   r.set("mean_Fx_N", mean(series(samples_, [](const StepSample& s) { return s.force.x(); })));
   r.set("mean_Fy_N", mean(series(samples_, [](const StepSample& s) { return s.force.y(); })));
