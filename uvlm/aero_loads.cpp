@@ -103,7 +103,8 @@ void add_leading_edge_forces(const VortexLatticeModel& m, VortexLatticeData& d) 
 
 }  // namespace
 
-void compute_bernoulli_loads(const VortexLatticeModel& m, VortexLatticeData& d) {
+void compute_bernoulli_loads(const VortexLatticeModel& model, VortexLatticeData& d) {
+  const VortexLatticeModel m = detail::solved_lattice_model(model, d);  // a steady solve's own
   using detail::ring_gamma;
   const int nc = m.chordwise, ns = m.spanwise, np = m.panels();
   add_leading_edge_forces(m, d);

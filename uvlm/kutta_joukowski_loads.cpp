@@ -9,7 +9,8 @@
 
 namespace flapsim::uvlm {
 
-void compute_kutta_joukowski_loads(const VortexLatticeModel& m, VortexLatticeData& d) {
+void compute_kutta_joukowski_loads(const VortexLatticeModel& model, VortexLatticeData& d) {
+  const VortexLatticeModel m = detail::solved_lattice_model(model, d);  // a steady solve's own
   const int nc = m.chordwise, ns = m.spanwise;
   const auto& S = d.bound_segments;
   d.panel_air_velocity.setZero();  // the Bernoulli route's terms (vortex_lattice.hpp)

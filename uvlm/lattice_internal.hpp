@@ -14,6 +14,14 @@
 
 namespace flapsim::uvlm::detail {
 
+/// The steady lattice's model: `m` with its wake seen through the bound rings' core
+/// (vortex_lattice.cpp, solve_steady). The model the loads of `d` are computed with: this
+/// one after a steady solve, `m` itself after an unsteady one.
+VortexLatticeModel steady_lattice_model(const VortexLatticeModel& m);
+inline VortexLatticeModel solved_lattice_model(const VortexLatticeModel& m, const VortexLatticeData& d) {
+  return d.steady_solution ? steady_lattice_model(m) : m;
+}
+
 /// The three-quarter-chord point of panel (i, j) of a field X on the surface nodes
 /// (positions or velocities, 3 × nodes): the mean of the points ¾ along the panel's two
 /// chordwise sides (the collocation point, the surface velocity there).

@@ -328,6 +328,10 @@ struct VortexLatticeData {
   Eigen::Matrix3Xd matrix_nodes;       ///< the nodes `influence` was built at
   Eigen::Matrix3Xd matrix_ring_nodes;  ///< the trailing-edge vortex moves with the edge's speed
   bool has_matrix = false;
+  /// The last solve was the steady lattice's (solve_steady, model.steady()): its wake is
+  /// seen through the bound rings' core (detail::steady_lattice_model), and the loads
+  /// computed from it afterwards too.
+  bool steady_solution = false;
   bool has_factorisation = false;      ///< lu holds a factorisation (possibly of an earlier matrix)
   bool factorisation_current = false;  ///< lu factorises `influence` itself
   InfluenceSegments influence_segments;  ///< the segments the matrix is built from (scratch)
