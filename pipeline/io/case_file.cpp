@@ -698,7 +698,10 @@ void warn_implausible_angles(const TomlTable& root, Case& c) {
     o << x;
     return o.str();
   };
-  if (largest_deg > 0.0 && largest_deg <= kRadianSuspicionDeg)
+  // Small angles throughout are what a wing in a free stream or a heaving one has (a
+  // plate at 5°, a pitching aerofoil): only a wing that moves by its angles alone is suspect.
+  const bool moved_otherwise = c.air.freestream.norm() > 0.0 || k.pivot_translates();
+  if (!moved_otherwise && largest_deg > 0.0 && largest_deg <= kRadianSuspicionDeg)
     c.warnings.push_back({c.file, t ? t->line_of("sweep") : 0, "kinematics.sweep",
                           "the sweep and rotation angles never exceed " + fixed(largest_deg) +
                               " degrees: were they written in radians? Keys ending in _deg and the deg "

@@ -37,6 +37,23 @@ TEST(CaseAngleWarnings, AnglesWrittenInRadiansAreWarned) {
 // rotation 90 +- 45 degrees ran silently with mean CL 11.0 (on a reference speed of 0.035 m/s,
 // the flapping speed of a +-0.96 degree stroke at r2). A sweep that does not swing (a constant
 // 0 or 10 degrees: a plunging or pitching wing) is not warned.
+// A wing in a free stream or a heaving one has small angles throughout: a plate held at 5°
+// in a 5 m/s stream (the steady lattice's textbook case) and a plate heaving at 3° were told
+// "were they written in radians?" until 3 Dec; the same angles in still air still are.
+TEST(CaseAngleWarnings, SmallAnglesOfAWingInAFreeStreamOrHeavingAreNotWarned) {
+  const std::string stream = "[air]\nfreestream = [-5.0, 0.0, 0.0]\n";
+  EXPECT_TRUE(case_from_text(kinematics_case("0.0", "5.0") + stream).warnings.empty());
+  EXPECT_TRUE(case_from_text(kinematics_case("0.0", "{ mean_deg = 3.0, sin_deg = [2.0] }") + stream)
+                  .warnings.empty());
+  const std::string heave = kinematics_case("0.0", "3.0");
+  const std::string heaving = heave.substr(0, heave.find("[structure]")) + "heave = { sin_m = [0.005] }\n" +
+                              heave.substr(heave.find("[structure]"));
+  EXPECT_TRUE(case_from_text(heaving).warnings.empty());
+  ASSERT_EQ(case_from_text(kinematics_case("0.0", "5.0")).warnings.size(), 1u);
+  EXPECT_NE(case_from_text(kinematics_case("0.0", "5.0")).warnings[0].message.find("written in radians?"),
+            std::string::npos);
+}
+
 TEST(CaseAngleWarnings, AStrokeAloneWrittenInRadiansIsWarned) {
   const flapsim::io::Case c = case_from_text(
       kinematics_case("{ mean_deg = 10.0, cos_deg = [0.96] }", "{ mean_deg = 90.0, sin_deg = [-45.0] }"));
