@@ -135,4 +135,45 @@ TEST(OptimizeErrors, ASearchWhoseRunsAllFailSaysSoNotThatAConstraintFailed) {
   EXPECT_FALSE(fs::exists(out / "optimum.toml"));
 }
 
+// A point inside the bounds whose case does not resolve: two outline x-coordinates of the
+// flat plate varied, whose start, bounds and first points are valid wings; start 2's third
+// point crosses the outline over itself. Until 3 Dec the whole optimisation stopped there
+// with exit 2 after 10 runs, without report.md or optimum.toml, start 3 never searched, and
+// the same command again stopped at the same point. Now that point ends its start's search
+// as a failed run does (docs/optimize.md): the others go on, the optimum is the best of the
+// points that completed, exit 0.
+TEST(OptimizeErrors, APointThatIsNotAValidCaseEndsOnlyItsStartsSearch) {
+  const test::ScratchDir dir("optimize_invalid_point");
+  std::ofstream(dir / "case.toml")
+      << "name = \"tiny\"\nwing = \"" FLAPSIM_SOURCE_DIR
+         "/wings/flat_plate.toml\"\n"
+         "[kinematics]\nfrequency_hz = 26.1\nsweep = { cos_deg = [60.0] }\n"
+         "rotation = { mean_deg = 90.0, sin_deg = [-60.0] }\n[structure]\nkind = \"rigid\"\n"
+         "[numerics]\nsteps_per_cycle = 20\ncycles = 2\nchordwise_panels = 3\nspanwise_panels = 4\n"
+         "[output]\nvtk_every = 0\n";
+  const fs::path out = dir / "out";
+  const auto outcome = test::run_flapsim_capturing_stderr(
+      dir.path(), "optimize " + (dir / "case.toml").string() +
+                      " --vary wing.planform.outline[1][0]=-7:2.5 --vary wing.planform.outline[2][0]=-7.5:2"
+                      " --maximize mean_lift_N --starts 3 --max-evaluations 8 -o " +
+                      out.string());
+  EXPECT_EQ(outcome.status, 0) << outcome.err;
+  EXPECT_NE(outcome.err.find("is not a valid case"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("not a simple polygon"), std::string::npos) << outcome.err;
+  const std::string report = test::read_text(out / "report.md");
+  EXPECT_NE(report.find("start 2: the point"), std::string::npos) << report;
+  EXPECT_NE(report.find("start 3:"), std::string::npos) << report;
+  EXPECT_TRUE(fs::exists(out / "optimum.toml"));
+  // Every row of evaluations.csv is a run that completed.
+  std::ifstream table(out / "evaluations.csv");
+  std::string line;
+  int rows = 0;
+  std::getline(table, line);
+  while (std::getline(table, line)) {
+    ++rows;
+    EXPECT_NE(line.find(",ok,"), std::string::npos) << line;
+  }
+  EXPECT_GE(rows, 3);
+}
+
 }  // namespace

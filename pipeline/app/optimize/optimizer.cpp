@@ -36,6 +36,12 @@ namespace flapsim::optimize {
 
 namespace {
 
+/// A point the search asked for inside the bounds whose case does not resolve (a varied
+/// outline that crosses itself, say): the start's search ends there, as at a failed run.
+struct InvalidPoint : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 using Clock = std::chrono::steady_clock;
 
 // A constraint's violation scaled by its limit (order one for COBYLA's linear models).
@@ -196,7 +202,13 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
     std::vector<Evaluation> evaluations;
     std::optional<std::size_t> best;
     const Evaluate evaluate = [&](const std::vector<double>& x) {
-      EvaluationOutcome eval = evaluator.evaluate(point_at(problem, x));
+      const sweep::CasePoint point = point_at(problem, x);
+      EvaluationOutcome eval;
+      try {
+        eval = evaluator.evaluate(point);
+      } catch (const InputError& err) {  // only a point that does not resolve (point_evaluator.hpp)
+        throw InvalidPoint("the point " + sweep::describe(point) + " is not a valid case: " + err.what());
+      }
       evaluations.push_back(eval.evaluation);
       const Evaluation& e = evaluations.back();
       if (feasible(problem, e) && std::isfinite(result_value(e, problem.objective)) &&
@@ -249,6 +261,15 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
     } catch (const NumericalFailure& e) {
       o.status = "failed";  // the start's search ends at the failed run; the other starts go on
       first_line = std::string("failed ") + e.what();
+    } catch (const InvalidPoint& e) {
+      o.status = "failed";  // as a failed run: the other starts go on
+      first_line = std::string("failed: ") + e.what();
+      if (!options.quiet) {
+        const std::lock_guard<std::mutex> guard(mutex);
+        std::fprintf(stderr, "optimize: %s%s; the start's search ends here\n",
+                     starts.size() > 1 ? ("start " + std::to_string(start + 1) + ", ").c_str() : "",
+                     e.what());
+      }
     } catch (const InputError& e) {
       o.status = "input";
       first_line = e.what();
