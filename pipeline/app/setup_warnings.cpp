@@ -13,13 +13,15 @@
 #include "pipeline/app/lattice_coverage_warning.hpp"
 #include "pipeline/app/low_reynolds_warning.hpp"
 #include "pipeline/app/small_wing_precision_warning.hpp"
+#include "pipeline/app/trailing_edge_first_warning.hpp"
 
 namespace flapsim::app {
 
 std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup) {
   std::vector<std::string> out;
   for (std::string w :
-       {compressibility_warning(c, setup), low_reynolds_warning(c, setup), lattice_coverage_warning(setup),
+       {compressibility_warning(c, setup), low_reynolds_warning(c, setup),
+        trailing_edge_first_warning(c, setup), lattice_coverage_warning(setup),
         chain_wing_mismatch_warning(setup), saved_chain_fem_warning(setup), soft_chain_warning(c, setup),
         near_resonance_warning(c, setup), fem_near_resonance_warning(c, setup),
         inertial_deflection_warning(c, setup), fluid_load_deflection_warning(c, setup),

@@ -1,7 +1,8 @@
 #pragma once
 /// \file setup_warnings.hpp
 /// \brief The warnings about a case that need its built setup (the chain, the wing), in
-/// the order `check`, `run` and `sweep` report them: a tip beyond Mach 0.3, a chain file
+/// the order `check`, `run` and `sweep` report them: a tip beyond Mach 0.3, a Reynolds
+/// number below 32, a wing that moves trailing edge first, a chain file
 /// that does not match the wing, a chain file that misses its wing's FEM modes (as reduce
 /// found), a chain driven above or near its resonance, an FEM near its resonance, a chain
 /// the flapping's inertia alone bends beyond 30°, a coupling tolerance below the
