@@ -12,6 +12,7 @@
 #include "pipeline/app/run_history.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
 #include "uvlm/segment_tree.hpp"
+#include "uvlm/vortex_lattice.hpp"
 #include "wings/loader/input_error.hpp"
 
 namespace flapsim::app {
@@ -55,6 +56,10 @@ double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precisio
     case uvlm::KernelIsa::Avx512: return single_precision ? 1.2e9 / 2 : 5.4e8 / 2;
   }
   return 1.9e8 / 2;
+}
+
+double lattice_factorisations(double solves, double cycles, bool iterative) {
+  return iterative ? std::min(solves, 4.0 + 4.0 * cycles) : solves;
 }
 
 RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
@@ -149,6 +154,14 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
     }
     sum += std::max(0.0, steps - growing) * step_cost(max_rows);
     e.interactions = sum;
+    // The LU factorisations of the influence matrix, (2/3) n³ each (Golub & Van Loan,
+    // "Matrix Computations", §3.2): a lattice of 3200 panels took 25 s for 8 of them, which
+    // the interactions' 0.56 s did not say (until 3 Dec).
+    uvlm::VortexLatticeModel lattice;
+    lattice.leading_edge = n.leading_edge;
+    const bool iterative = lattice.iterative(static_cast<int>(panels)) && !n.steady;
+    e.lattice_flops = lattice_factorisations(steps * solves, static_cast<double>(n.cycles), iterative) *
+                      (2.0 / 3.0) * panels * panels * panels;
   }
   // The chain: 2 dofs per joint (bending, torsion); dense LU of the Newton matrix per
   // Newton iteration (~3) per coupling iteration.
@@ -170,7 +183,8 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs) {
   e.isa = uvlm::kernel_isa();
   e.interactions_per_second =
       nominal_interactions_per_second(e.isa, c.numerics.wake_precision == io::WakePrecision::Single);
-  e.seconds = e.interactions / e.interactions_per_second + e.structure_flops / kFlopsPerSecond + e.fem_seconds;
+  e.seconds = e.interactions / e.interactions_per_second + e.structure_flops / kFlopsPerSecond +
+              e.lattice_flops / kLatticeFlopsPerSecond + e.fem_seconds;
   return e;
 }
 
@@ -185,9 +199,10 @@ std::string describe(const RunEstimate& e) {
                                                       }();
   std::snprintf(buf, sizeof buf,
                 "estimate: %lld steps, up to %lld wake panels, memory ~%s, %.2g Biot-Savart interactions, "
-                "%s, time of the order of %s (one thread, %s kernel at a nominal %.2g interactions/s)",
+                "%.2g lattice LU flop, %s, time of the order of %s (one thread, %s kernel at a nominal %.2g "
+                "interactions/s)",
                 static_cast<long long>(e.steps), static_cast<long long>(e.wake_panels),
-                bytes_text(e.memory_bytes).c_str(), e.interactions, structure.c_str(),
+                bytes_text(e.memory_bytes).c_str(), e.interactions, e.lattice_flops, structure.c_str(),
                 seconds_text(e.seconds).c_str(), isa.c_str(), e.interactions_per_second);
   return buf;
 }

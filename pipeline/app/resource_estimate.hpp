@@ -29,6 +29,7 @@ struct RunEstimate {
   double lattice_bytes = 0.0;      ///< of it, the lattice's influence matrix and its LU [B]
   double interactions = 0.0;       ///< Biot–Savart segment-point evaluations of the whole run
   double structure_flops = 0.0;    ///< dense chain solves of the whole run [flop]
+  double lattice_flops = 0.0;      ///< the lattice's LU factorisations of the whole run [flop]
   std::int64_t fem_dofs = 0;       ///< DOFs of the FEM structure (kind = "fem"; 0 for a chain)
   double fem_seconds = 0.0;        ///< the FEM structure's solves of the whole run (kind = "fem") [s]
   double interactions_per_second = 0.0;  ///< the nominal throughput the time assumes [1/s]
@@ -45,6 +46,18 @@ struct RunEstimate {
 double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precision);
 /// Nominal throughput of the chain's dense solves [flop/s].
 inline constexpr double kFlopsPerSecond = 1e9;
+/// Nominal throughput of the lattice's LU factorisation (Eigen's PartialPivLU of the dense
+/// influence matrix, (2/3) n³ flop for n panels) [flop/s]: half of the 7.3e9 measured in the
+/// portable build (a hover of 3200 panels, 12 steps, 8 factorisations: 25 s on one thread of
+/// a 2-core AMD EPYC, 3 Dec 2026), the other half a margin as for the interactions.
+inline constexpr double kLatticeFlopsPerSecond = 3.5e9;
+/// The lattice's factorisations in a run of `solves` lattice solves over `cycles` cycles:
+/// every solve's with the direct solve (the matrix changes at every step of a moving wing),
+/// about 4 a cycle and 4 more with the iterative one, which keeps an earlier factorisation
+/// as its preconditioner (model.iterative: at least 150 panels; the hawkmoth hover at 1200
+/// panels: 8 in 12 steps, 5 in 50 and in 100 steps of a cycle; 13 in 3 cycles of 24 steps at
+/// 192 panels).
+double lattice_factorisations(double solves, double cycles, bool iterative);
 /// Runs estimated above this are "long": flapsim run prints the estimate first [s].
 inline constexpr double kLongRunSeconds = 10.0;
 /// Runs estimated above this print their estimate even with run -q [s].
