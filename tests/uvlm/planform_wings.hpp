@@ -54,15 +54,17 @@ struct SteadyLoads {
   std::vector<double> strip_gamma, strip_mid;  // trailing-edge circulation and mid-span y of each strip
 };
 
-/// planar_wake: the wake leaves in the wing's plane (toward −x) instead of along V∞.
+/// planar_wake: the wake leaves in the wing's plane (toward −x) instead of along V∞;
+/// wake_core: the model's wake core radius [m] (the steady lattice sees its wake through the
+/// bound core whatever it is: docs/uvlm.md, "Steady lattice").
 inline SteadyLoads steady_loads(const PlanformWing& w, double alpha, LeadingEdge leading_edge,
-                                bool planar_wake = false) {
+                                bool planar_wake = false, double wake_core = 1e-6) {
   VortexLatticeModel m;
   m.chordwise = w.chordwise;
   m.spanwise = w.spanwise();
   m.wake_capacity = 2;
   m.wake_model = WakeModel::Prescribed;
-  m.core = {CoreModel::LambOseen, 1e-6};
+  m.core = {CoreModel::LambOseen, wake_core};
   m.leading_edge = leading_edge;
   VortexLatticeData d(m);
   const Eigen::Vector3d v(-std::cos(alpha), 0.0, std::sin(alpha));
