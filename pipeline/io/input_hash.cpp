@@ -76,8 +76,9 @@ void section(Canonical& out, const std::string& p, const wings::Section& s) {
   out.line(p + ".height", s.height);
 }
 
-void wing_fields(Canonical& out, const wings::Wing& w) {
-  out.line("wing.name", w.name);
+/// The wing's fields; its names reach no result (they label the wing and its veins), and
+/// clamp_y only a wing whose FEM is built (`fem_used`).
+void wing_fields(Canonical& out, const wings::Wing& w, bool fem_used) {
   out.line("wing.outline.size", static_cast<int>(w.outline.size()));
   for (const auto& p : w.outline) out.vector("wing.outline", p);
   out.line("wing.span", w.span);
@@ -85,7 +86,6 @@ void wing_fields(Canonical& out, const wings::Wing& w) {
   for (std::size_t i = 0; i < w.veins.size(); ++i) {
     const wings::Vein& v = w.veins[i];
     const std::string p = "wing.veins[" + std::to_string(i) + "]";
-    out.line(p + ".name", v.name);
     out.line(p + ".points.size", static_cast<int>(v.points.size()));
     for (const auto& q : v.points) out.vector(p + ".points", q);
     section(out, p + ".root", v.root_section);
@@ -97,7 +97,7 @@ void wing_fields(Canonical& out, const wings::Wing& w) {
   out.line("wing.membrane.nonstructural_mass_per_area", w.membrane.nonstructural_mass_per_area);
   out.line("wing.mesh.element_size", w.mesh.element_size);
   out.line("wing.mesh.vein_element_size", w.mesh.vein_element_size);
-  out.line("wing.clamp_y", w.clamp_y);
+  if (fem_used) out.line("wing.clamp_y", w.clamp_y);
   if (!w.surface.flat()) {  // only then: the fingerprints of flat wings stay as they were
     out.line("wing.surface.twist_root", w.surface.twist_root);
     out.line("wing.surface.twist_tip", w.surface.twist_tip);
@@ -108,8 +108,7 @@ void wing_fields(Canonical& out, const wings::Wing& w) {
   }
 }
 
-void case_fields(Canonical& out, const Case& c) {
-  out.line("case.name", c.name);
+void case_fields(Canonical& out, const Case& c) {  // the case's name reaches no result
   const mbd::WingKinematics& k = c.kinematics;
   out.line("kinematics.frequency", k.frequency);
   out.signal("kinematics.sweep", k.sweep);
@@ -240,12 +239,14 @@ std::string canonical_inputs(const Case& c, const wings::Wing* wing, const std::
   Canonical out;
   out.line("format", 1);
   case_fields(out, c);
-  out.line("wing.present", wing != nullptr);
-  if (wing) wing_fields(out, *wing);
   // A chain and its spring scale are inputs of a flexible wing only: another kind does not
   // use them (the commands warn), and a run with them is the run without them.
   const bool chain_used = c.structure.kind == Case::Structure::Kind::Flexible;
   const std::string chain = !chain_used ? std::string() : chain_file.empty() ? c.chain_file : chain_file;
+  // The wing's FEM is built for kind = "fem" and for a flexible wing reduced in process.
+  const bool fem_used = c.structure.kind == Case::Structure::Kind::Fem || (chain_used && chain.empty());
+  out.line("wing.present", wing != nullptr);
+  if (wing) wing_fields(out, *wing, fem_used);
   out.line("chain.present", !chain.empty());
   if (!chain.empty()) out.line("chain.bytes", file_bytes(chain));
   out.line("spring_scale", chain_used ? spring_scale : 1.0);

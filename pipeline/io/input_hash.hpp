@@ -2,12 +2,13 @@
 /// \file input_hash.hpp
 /// \brief A fingerprint of everything a run's results depend on: the resolved case
 /// (every field of io::Case after defaults, overrides and unit conversion, but
-/// output.vtk_every, which decides only which files are written), the wing it flaps (every
-/// field of wings::Wing: outline, veins, membrane, mesh sizes, clamp), the chain file's
-/// bytes and the joint-spring factor. Two runs with equal hashes read the same inputs (and
-/// may differ only in the files they write); a sweep re-run skips a case whose summary.json carries the hash of its
-/// inputs, and an optimisation a point whose run folder does (docs/sweeps.md, "Resuming a
-/// sweep"; a run kept where ParaView series are asked for must also have them).
+/// output.vtk_every, which decides only which files are written, and its name), the wing it
+/// flaps (every field of wings::Wing: outline, veins, membrane, mesh sizes; not its or its
+/// veins' names; the clamp line only where the wing's FEM is built: kind = "fem", or a
+/// flexible wing without a chain file), the chain file's bytes and the joint-spring factor. Two runs with
+/// equal hashes read the same inputs (and may differ only in the files they write); a sweep re-run skips a
+/// case whose summary.json carries the hash of its inputs, and an optimisation a point whose run folder does
+/// (docs/sweeps.md, "Resuming a sweep"; a run kept where ParaView series are asked for must also have them).
 ///
 /// The hash is FNV-1a 64 (Fowler, Noll, Vo; public-domain reference at
 /// http://www.isthe.com/chongo/tech/comp/fnv/) of a canonical text: one `name=value` line

@@ -120,6 +120,21 @@ TEST(SweepKeysThatChangeNothing, AKeyThatReachesNoInputIsRefusedUnlessItDoesForS
             "");
 }
 
+// The clamp line of a rigid wing (the wing's FEM is not built): every value the same run.
+// Until 3 Dec the inputs hash held it and `--vary wing.planform.clamp_y=1,2,3` on a rigid
+// case ran three bit-identical cases (docs/sweeps.md promised the refusal).
+TEST(SweepKeysThatChangeNothing, ARigidWingsClampLineIsRefused) {
+  const test::ScratchDir dir("sweep_rigid_clamp");
+  const std::string case_file = (dir / "case.toml").string();
+  std::ofstream(case_file) << test::tiny_plate_case(12);
+  const std::string e = refusal_of_grid(case_file, {{"wing.planform.clamp_y", {1.0, 2.0}}});
+  EXPECT_NE(
+      e.find("key 'wing.planform.clamp_y': --vary wing.planform.clamp_y = 1, 2: every value gives the same "
+             "inputs"),
+      std::string::npos)
+      << e;
+}
+
 // A revolving wing's rotation phase: δψ shifts the sweep and deviation against the rotation,
 // both constant here, so every value is the same run (its inputs hash leaves δψ out; the
 // Robofly case over -0.1, 0 gave the same mean CL to the last digit and ran both).

@@ -92,4 +92,41 @@ TEST(InputHash, TheParaViewIntervalIsNoInput) {
   EXPECT_EQ(io::canonical_inputs(c, &w, "", 1.0).find("vtk_every"), std::string::npos);
 }
 
+// Fields no result depends on are no inputs: the case's, the wing's and its veins' names
+// (labels), and the clamp line of a wing whose FEM is not built (a rigid wing, a flexible
+// one whose chain comes from a file). Until 3 Dec they were in the hash: `--vary
+// wing.planform.clamp_y=1,2,3` on a rigid case and `--vary name=alpha,beta` ran every case
+// to bit-identical rows where docs/sweeps.md promised a refusal, and renaming a case made a
+// resumed sweep run every case again.
+TEST(InputHash, NamesAndAnUnusedClampLineAreNoInputs) {
+  const fs::path data = fs::path(FLAPSIM_SOURCE_DIR) / "tests" / "data";
+  const io::Case flexible =
+      io::load_case_file((data / "valid_tiny_case.toml").string());  // reduced in process
+  const wings::Wing w = wings::load_wing_file((data / "valid_tiny_wing.toml").string());
+  io::Case renamed = flexible;
+  renamed.name = "another";
+  wings::Wing relabelled = w;
+  relabelled.name = "another";
+  ASSERT_FALSE(relabelled.veins.empty());
+  relabelled.veins[0].name = "another";
+  const std::string h = io::input_hash(flexible, &w, "", 1.0);
+  EXPECT_EQ(io::input_hash(renamed, &w, "", 1.0), h);
+  EXPECT_EQ(io::input_hash(flexible, &relabelled, "", 1.0), h);
+  wings::Wing clamped = w;
+  clamped.clamp_y += 1e-3;
+  // Reduced in process and the FEM: the clamp line holds the wing, an input.
+  EXPECT_NE(io::input_hash(flexible, &clamped, "", 1.0), h);
+  io::Case fem = flexible;
+  fem.structure.kind = io::Case::Structure::Kind::Fem;
+  EXPECT_NE(io::input_hash(fem, &clamped, "", 1.0), io::input_hash(fem, &w, "", 1.0));
+  // Rigid, or a chain from a file: no input.
+  io::Case rigid = flexible;
+  rigid.structure.kind = io::Case::Structure::Kind::Rigid;
+  EXPECT_EQ(io::input_hash(rigid, &clamped, "", 1.0), io::input_hash(rigid, &w, "", 1.0));
+  const test::ScratchDir dir("input_hash_clamp");
+  std::ofstream(dir / "chain.toml") << "# a chain\n";
+  const std::string chain = (dir / "chain.toml").string();
+  EXPECT_EQ(io::input_hash(flexible, &clamped, chain, 1.0), io::input_hash(flexible, &w, chain, 1.0));
+}
+
 }  // namespace
