@@ -17,13 +17,17 @@ convergence) or do not shrink, no order is claimed and no extrapolation made.
 
 Writes DIR/convergence.csv (study, level, chordwise, spanwise, steps, mean lift) and
 DIR/convergence.md (the tables), DIR/lattice/ and DIR/steps/ the sweeps' folders.
-Exit status: 0 ok, 1 bad arguments, 2 bad input (from flapsim), 3 a level failed.
+Exit status: 0 ok, 1 bad arguments, 2 bad input (from flapsim), 3 a level failed, 4 out of
+memory (from flapsim), 130/143 interrupted by SIGINT/SIGTERM: the signal is passed on to the
+sweep under way, which ends its levels' runs as `flapsim sweep` does; the same command again
+runs only the levels not completed (with --force, all of them).
 """
 import argparse
 import csv
 import math
 import os
 import re
+import signal
 import subprocess
 import sys
 import tempfile
@@ -97,14 +101,33 @@ def observed_order(f, r):
     return p, ext, f3 - ext
 
 
-def run_sweep(flapsim, case, rows, columns, out, chain, wing, jobs, threads):
+def run_interruptible(cmd, env):
+    """Runs cmd; SIGINT and SIGTERM sent to this script go on to it (so no sweep is left
+    running, ppid 1, when the script is stopped); returns its exit status, 128 + N for a
+    child ended by signal N."""
+    proc = subprocess.Popen(cmd, env=env)
+
+    def forward(signum, _frame):
+        if proc.poll() is None:
+            proc.send_signal(signum)
+
+    old = {s: signal.signal(s, forward) for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        code = proc.wait()
+    finally:
+        for s, h in old.items():
+            signal.signal(s, h)
+    return 128 - code if code < 0 else code
+
+
+def run_sweep(flapsim, case, rows, columns, out, chain, wing, jobs, threads, force=False):
     os.makedirs(out, exist_ok=True)
     table = os.path.join(out, "levels.csv")
     with open(table, "w", newline="", encoding="utf-8") as t:
         w = csv.writer(t)
         w.writerow(columns)
         w.writerows(rows)
-    cmd = [flapsim, "sweep", case, "--cases", table, "-o", out, "--force"]
+    cmd = [flapsim, "sweep", case, "--cases", table, "-o", out] + (["--force"] if force else [])
     if chain:
         cmd += ["--chain", chain]
     if wing:
@@ -115,9 +138,12 @@ def run_sweep(flapsim, case, rows, columns, out, chain, wing, jobs, threads):
         cmd += ["--threads", str(threads)]
     env = dict(os.environ)
     env.setdefault("FLAPSIM_QUIET", "1")
-    r = subprocess.run(cmd, env=env)
-    if r.returncode != 0:
-        sys.exit(r.returncode if r.returncode in (2, 4) else 3)
+    code = run_interruptible(cmd, env)
+    if code in (130, 143):
+        print(f"convergence: interrupted; the same command again runs the levels not completed ({out})",
+              file=sys.stderr)
+    if code != 0:
+        sys.exit(code if code in (2, 4, 130, 143) else 3)
     lift = []
     with open(os.path.join(out, "sweep.csv"), newline="", encoding="utf-8") as f:
         for row in csv.DictReader(f):
@@ -169,6 +195,9 @@ def main():
     ap.add_argument("--flapsim", default="build/flapsim")
     ap.add_argument("-j", "--jobs", type=int, default=0, help="levels run at once (flapsim sweep -j)")
     ap.add_argument("--threads", type=int, default=0, help="flapsim sweep --threads")
+    ap.add_argument("--force", action="store_true",
+                    help="run every level again (flapsim sweep --force); else levels an earlier study completed "
+                         "with the same inputs are kept")
     a = ap.parse_args()
     try:
         if not 3 <= a.levels <= 4:
@@ -205,7 +234,7 @@ def main():
         rows = [(nc, ns, base["steps_per_cycle"]) for nc, ns in lattice]
         lift = run_sweep(a.flapsim, a.case, [(nc, ns) for nc, ns in lattice],
                          ["numerics.chordwise_panels", "numerics.spanwise_panels"], os.path.join(out, "lattice"),
-                         a.chain, a.wing, a.jobs, a.threads)
+                         a.chain, a.wing, a.jobs, a.threads, a.force)
         lines, _, _ = study_table("Lattice (steps_per_cycle " + str(base["steps_per_cycle"]) + ")",
                                   ["chordwise", "spanwise", "steps"], rows, lift, r_lattice)
         md += lines
@@ -213,7 +242,7 @@ def main():
     if a.study != "lattice":
         rows = [(base["chordwise_panels"], base["spanwise_panels"], s) for s in steps]
         lift = run_sweep(a.flapsim, a.case, [(s,) for s in steps], ["numerics.steps_per_cycle"],
-                         os.path.join(out, "steps"), a.chain, a.wing, a.jobs, a.threads)
+                         os.path.join(out, "steps"), a.chain, a.wing, a.jobs, a.threads, a.force)
         lines, _, _ = study_table(f"Time step (lattice {base['chordwise_panels']} x {base['spanwise_panels']})",
                                   ["chordwise", "spanwise", "steps"], rows, lift, r_steps)
         md += lines

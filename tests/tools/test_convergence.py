@@ -98,6 +98,42 @@ for study in ("lattice", "steps"):
         check(m is None and why in section and "no observed order" in section,
               f"{study}: an order claimed for {f}, or not '{why}'")
 
+# 2b. The same command again keeps every level (until 3 Dec it always passed --force and ran
+# them all again) and writes the same table.
+if r.returncode == 0:
+    first = open(os.path.join(out, "convergence.csv")).read()
+    again = subprocess.run([sys.executable, os.path.join(a.source, "tools", "convergence.py"), case, "--flapsim",
+                            a.flapsim, "-o", out, "-j", "2"], capture_output=True, text=True)
+    check(again.returncode == 0, f"second driver exit {again.returncode}")
+    kept = [row["message"] for sub in ("lattice", "steps")
+            for row in csv.DictReader(open(os.path.join(out, sub, "sweep.csv")))]
+    check(len(kept) == 6 and all(m.startswith("kept") for m in kept), f"second run's levels: {kept}")
+    check(open(os.path.join(out, "convergence.csv")).read() == first, "second run's table differs")
+
+# 2c. SIGTERM to the driver reaches the sweep under way: exit 143, no flapsim left running in
+# its folder (until 3 Dec the sweep ran on with parent 1, and the driver said 3, "a level
+# failed"). A longer case: 40 cycles a level.
+import signal
+import time
+slow = os.path.join(work, "slow.toml")
+with open(case) as f:
+    open(slow, "w").write(f.read().replace("cycles = 1", "cycles = 40"))
+slow_out = os.path.join(work, "slow_out")
+p = subprocess.Popen([sys.executable, os.path.join(a.source, "tools", "convergence.py"), slow, "--flapsim",
+                      a.flapsim, "-o", slow_out, "--study", "steps", "-j", "1"],
+                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+time.sleep(1.5)
+p.send_signal(signal.SIGTERM)
+try:
+    _, err = p.communicate(timeout=60)
+except subprocess.TimeoutExpired:
+    p.kill()
+    _, err = p.communicate()
+check(p.returncode == 143, f"SIGTERM: driver exit {p.returncode}, {err.strip()[-300:]}")
+check("interrupted" in err, f"SIGTERM: no word of the interruption: {err.strip()[-300:]}")
+left = subprocess.run(["ps", "-eo", "args"], capture_output=True, text=True).stdout
+check(slow_out not in left, "SIGTERM: a process still runs in the study's folder")
+
 # 3. Bad levels: exit status 1, nothing run.
 for bad in (["--lattice", "6x10,12x20"], ["--lattice", "6x10,12x24,24x40"], ["--steps", "100,50,25"],
             ["--levels", "5"]):
