@@ -148,4 +148,29 @@ TEST(OptimizeResume, ARerunAskingForParaViewSeriesRunsThePointsThatHaveNone) {
   }
 }
 
+// A second search in the folder of an earlier one (other bounds): its progress lines numbered
+// its evaluations 1, 2, … and "best … at evaluation 1", where evaluations.csv and report.md
+// number the same points after the earlier rows (4, 5, …): "evaluation N" on stderr could not
+// be found in the table. One numbering now, the table's.
+TEST(OptimizeResume, TheProgressLinesNumberTheEvaluationsAsTheTableDoes) {
+  const test::ScratchDir dir("optimize_numbering");
+  std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
+  const std::string start = "optimize " + (dir / "case.toml").string() + " --maximize mean_lift_N -o " +
+                            (dir / "opt").string() + " --vary kinematics.rotation_phase=";
+  ASSERT_EQ(test::run_flapsim(start + "-0.25:-0.05 --max-evaluations 3 -q"), 0);
+  const auto before = test::read_sweep_table((dir / "opt" / "evaluations.csv").string()).rows.size();
+  ASSERT_GE(before, 3u);
+  const auto second = test::run_flapsim_capturing_stderr(dir.path(), start + "0.05:0.15 --max-evaluations 2");
+  ASSERT_EQ(second.status, 0) << second.err;
+  const auto rows = test::read_sweep_table((dir / "opt" / "evaluations.csv").string()).rows;
+  ASSERT_EQ(rows.size(), before + 2);
+  for (std::size_t k = before; k < rows.size(); ++k) {
+    const std::string number = rows[k].at("evaluation");
+    EXPECT_NE(second.err.find("optimize: evaluation " + number + " (run)"), std::string::npos)
+        << "evaluation " << number << ":\n"
+        << second.err;
+  }
+  EXPECT_EQ(second.err.find("optimize: evaluation 1 ("), std::string::npos) << second.err;
+}
+
 }  // namespace

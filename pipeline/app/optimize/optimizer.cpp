@@ -200,6 +200,10 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
     }
     omp_set_num_threads(omp_threads);
     std::vector<Evaluation> evaluations;
+    // Each evaluation's number: its row's in evaluations.csv where this rank keeps the table
+    // (the numbers report.md uses, past an earlier optimisation's rows in the folder), else
+    // its place in this start's search.
+    std::vector<std::size_t> numbers;
     std::optional<std::size_t> best;
     const Evaluate evaluate = [&](const std::vector<double>& x) {
       const sweep::CasePoint point = point_at(problem, x);
@@ -216,17 +220,21 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
         best = evaluations.size() - 1;
       {
         const std::lock_guard<std::mutex> guard(mutex);
-        if (table) (void)table->record(e);
+        numbers.push_back(table ? table->record(e) : evaluations.size());
         if (!options.quiet) {
-          std::string line = "optimize: " + (starts.size() > 1 ? "start " + std::to_string(start + 1) + ", " : std::string()) +
-                             "evaluation " + std::to_string(evaluations.size()) + " (" +
-                             (e.message == "kept" ? "kept" : e.status == "ok" ? "run" : e.status) + ")  " +
-                             sweep::describe(e.point) + "  " + objective_key + " " +
-                             short_number(result_value(e, problem.objective));
+          std::string line =
+              "optimize: " +
+              (starts.size() > 1 ? "start " + std::to_string(start + 1) + ", " : std::string()) +
+              "evaluation " + std::to_string(numbers.back()) + " (" +
+              (e.message == "kept" ? "kept"
+               : e.status == "ok"  ? "run"
+                                   : e.status) +
+              ")  " + sweep::describe(e.point) + "  " + objective_key + " " +
+              short_number(result_value(e, problem.objective));
           if (!feasible(problem, e) && e.status == "ok") line += " (violates a constraint)";
           if (best)
             line += "  | best " + short_number(result_value(evaluations[*best], problem.objective)) +
-                    " at evaluation " + std::to_string(*best + 1);
+                    " at evaluation " + std::to_string(numbers[*best]);
           if (world.active()) line += "  (rank " + std::to_string(world.rank()) + ")";
           std::fprintf(stderr, "%s\n", line.c_str());
         }
