@@ -313,6 +313,15 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
       ref.kind = LiftReference::Kind::Flapping;
       ref.speed = ref.flapping_speed;
     }
+    // Kinematics whose speed overflows (a sweep amplitude of 1e300 degrees: `check` passed it
+    // with a Mach warning, `run` stopped at its first step with exit 3) are bad input.
+    if (!std::isfinite(ref.flapping_speed)) {
+      const auto t = c.line_of("kinematics.sweep");
+      throw InputError(
+          c.file, t, "kinematics",
+          "the span axis's speed at r2 R is not finite: an angle's amplitude or a rate overflows "
+          "(sweep, deviation, rotation in degrees, a translation in metres)");
+    }
     // A span axis that does not move (a wing that only pitches about it) moves by round-off
     // (2e-17 m/s, CL 8e32): compared with the speed of a span turning a radian a period.
     const double turning_span_speed = 2.0 * std::numbers::pi * c.kinematics.frequency * p.span;  // [m/s]

@@ -143,3 +143,25 @@ TEST(FreeStreamCase, AWingThatOnlyPitchesInStillAirIsRefused) {
   EXPECT_NE(outcome.err.find("neither a free stream nor a moving span"), std::string::npos) << outcome.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "summary.json"));
 }
+
+// Kinematics whose speed overflows: a sweep of cos_deg = [1e300]. `check` passed it (exit 0,
+// a Mach warning of an infinite tip speed) and `run` stopped at its first step with exit 3 as
+// a diverged lattice; both now refuse it as bad input naming the kinematics (exit 2).
+TEST(FreeStreamCase, KinematicsWhoseSpeedOverflowsAreBadInput) {
+  flapsim::test::ScratchDir dir("overflowing_sweep_case");
+  std::ofstream(dir / "case.toml") << "name = \"overflow\"\nwing = \"" FLAPSIM_SOURCE_DIR
+                                      "/wings/flat_plate.toml\"\n"
+                                      "[kinematics]\nfrequency_hz = 20.0\nsweep = { cos_deg = [1e300] }\n"
+                                      "rotation = { mean_deg = 90.0, sin_deg = [-40.0] }\n"
+                                      "[structure]\nkind = \"rigid\"\n"
+                                      "[numerics]\nsteps_per_cycle = 20\ncycles = 1\n";
+  for (const std::string command : {"check ", "run "}) {
+    const auto outcome = flapsim::test::run_flapsim_capturing_stderr(
+        dir.path(),
+        command + (dir / "case.toml").string() + (command == "run " ? " -o " + (dir / "out").string() : ""));
+    EXPECT_EQ(outcome.status, 2) << command << outcome.err;
+    EXPECT_NE(outcome.err.find("case.toml:5: key 'kinematics'"), std::string::npos) << outcome.err;
+    EXPECT_NE(outcome.err.find("speed at r2 R is not finite"), std::string::npos) << outcome.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "summary.json"));
+}
