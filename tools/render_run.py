@@ -79,25 +79,35 @@ def normalized(v):
     return [x / n for x in v] if n > 0 else [0.0, 0.0, 1.0]
 
 
-def view_direction(wing, chain):
-    """Unit vector from the wing toward the camera: the mean panel normal (pointing up),
-    plus 0.4 of the vertical; for a chain alone, horizontal across its span, 30° up."""
-    if wing is not None and wing.GetNumberOfCells() > 0:
-        normals = vtk.vtkPolyDataNormals()
-        normals.SetInputData(wing)
-        normals.ComputeCellNormalsOn()
-        normals.ComputePointNormalsOff()
-        normals.SplittingOff()
-        normals.ConsistencyOff()
-        normals.Update()
-        cell = normals.GetOutput().GetCellData().GetNormals()
-        n = [0.0, 0.0, 0.0]
-        for i in range(cell.GetNumberOfTuples()):
-            t = cell.GetTuple3(i)
-            n = [a + b for a, b in zip(n, t)]
-        n = normalized(n)
-        if n[2] < 0:
-            n = [-x for x in n]
+def face_normal(wing):
+    """The wing's mean panel normal, pointing up (unit), or None for no panels."""
+    if wing is None or wing.GetNumberOfCells() == 0:
+        return None
+    normals = vtk.vtkPolyDataNormals()
+    normals.SetInputData(wing)
+    normals.ComputeCellNormalsOn()
+    normals.ComputePointNormalsOff()
+    normals.SplittingOff()
+    normals.ConsistencyOff()
+    normals.Update()
+    cell = normals.GetOutput().GetCellData().GetNormals()
+    n = [0.0, 0.0, 0.0]
+    for i in range(cell.GetNumberOfTuples()):
+        t = cell.GetTuple3(i)
+        n = [a + b for a, b in zip(n, t)]
+    n = normalized(n)
+    return [-x for x in n] if n[2] < 0 else n
+
+
+def view_direction(wings, chain):
+    """Unit vector from the wing toward the camera: the mean of the wing's face normals
+    (pointing up) at mid-downstroke and mid-upstroke, plus 0.4 of the vertical; for a chain
+    alone, horizontal across its span, 30° up. Until 3 Dec only mid-downstroke's face was
+    looked at, and a hover's wing, turned through 90° about its span by mid-upstroke, showed
+    there edge-on (0.0 % of the picture)."""
+    faces = [n for n in (face_normal(w) for w in wings) if n is not None]
+    if faces:
+        n = normalized([sum(f[i] for f in faces) for i in range(3)])
         return normalized([n[0], n[1], n[2] + 0.4])
     p0, p1 = chain.GetPoint(0), chain.GetPoint(chain.GetNumberOfPoints() - 1)
     span = normalized([b - a for a, b in zip(p0, p1)])
@@ -121,7 +131,8 @@ def frame_at(series, frequency, phase):
 def shared_view(run):
     """The one camera of a run's pictures: the bounds of the wing (or the chain) over the
     frames of the last wingbeat written, and the direction toward the camera from the wing's
-    face at mid-downstroke (phase 0.25) of that wingbeat (view_direction). Every picture
+    faces at mid-downstroke and mid-upstroke (phases 0.25, 0.75) of that wingbeat
+    (view_direction). Every picture
     then shows the wing from the same point: its positions over the stroke compare."""
     wing_series, _, chain_series, frequency = run
     series = wing_series if wing_series else chain_series
@@ -133,9 +144,9 @@ def shared_view(run):
         for i in range(3):
             bounds[2 * i] = min(bounds[2 * i], b[2 * i])
             bounds[2 * i + 1] = max(bounds[2 * i + 1], b[2 * i + 1])
-    index = chain_series.index(frame_at(chain_series, frequency, 0.25))
-    wing = read_vtp(wing_series[index][1]) if wing_series else None
-    return tuple(bounds), view_direction(wing, read_vtp(chain_series[index][1]))
+    faces = [chain_series.index(frame_at(chain_series, frequency, phase)) for phase in (0.25, 0.75)]
+    wings = [read_vtp(wing_series[i][1]) for i in faces] if wing_series else []
+    return tuple(bounds), view_direction(wings, read_vtp(chain_series[faces[0]][1]))
 
 
 def frame_title(t, frequency, phase, lift, force_scale=(1e3, "mN")):

@@ -48,6 +48,16 @@ if orange.any():
 white = (rgb > 0.98).all(axis=2).mean()
 check(white > 0.3, f"only {100 * white:.1f} % background: the camera does not frame the wing")
 
+# 1b. Mid-upstroke (phase 0.75): the hover's wing has turned through 90° about its span since
+# mid-downstroke, and a camera facing only mid-downstroke's face saw it edge-on (0.0 % of the
+# picture, until 3 Dec); the camera faces both: the wing covers a share of the picture as at
+# mid-downstroke.
+rgb = render(["--wing-color", "1", "0.5", "0", "--no-wake"], os.path.join(work, "orange_up.png"), "0.75")
+r, g, b = rgb[:, :, 0], rgb[:, :, 1], rgb[:, :, 2]
+up = ((r > 0.2) & (g > 0.3 * r) & (g < 0.7 * r) & (b < 0.15 * r + 0.02)).mean()
+print(f"orange pixels at mid-upstroke: {100 * up:.1f} % (mid-downstroke {100 * share:.1f} %)")
+check(up > 0.02 and up > 0.4 * share, f"the wing at mid-upstroke covers {100 * up:.2f} % of the picture")
+
 # 2. The default picture (pressure jump colours, wake) is not blank.
 rgb = render([], os.path.join(work, "default.png"))
 non_white = 1.0 - (rgb > 0.98).all(axis=2).mean()
