@@ -27,14 +27,17 @@ using io::Case;
 
 mbd::ChainModel make_rigid_chain(const wings::Wing& wing) {
   const wings::PlanformProperties p = wings::planform_properties(wing.outline);
-  const double mass = std::max(wings::estimate_wing_mass(wing).total(), 1e-12);
+  const wings::WingInertia w = wings::estimate_wing_inertia(wing);
   mbd::ChainBody body;
   body.length = p.span;
-  body.mass = mass;
-  body.center_of_mass = Eigen::Vector3d(p.centroid.x(), p.centroid.y(), 0.0);
-  // Uniform rectangle-like plate of span R and chord c̄ about its centre (output only).
-  const double ixx = mass * p.span * p.span / 12.0, iyy = mass * p.mean_chord * p.mean_chord / 12.0;
-  body.inertia = Eigen::Vector3d(ixx, iyy, ixx + iyy).asDiagonal();
+  if (w.mass > 1e-12) {
+    body.mass = w.mass;
+    body.center_of_mass = Eigen::Vector3d(w.center_of_mass.x(), w.center_of_mass.y(), 0.0);
+    body.inertia = w.inertia;
+  } else {  // a massless wing: a token mass at the outline's centroid
+    body.mass = 1e-12;
+    body.center_of_mass = Eigen::Vector3d(p.centroid.x(), p.centroid.y(), 0.0);
+  }
   body.outboard_joint = Eigen::Vector3d(0.0, p.span, 0.0);
   mbd::ChainModel chain;
   chain.bodies = {body};

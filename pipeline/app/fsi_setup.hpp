@@ -88,8 +88,9 @@ std::optional<wings::Wing> load_case_wing(const io::Case& c,
                                           const std::vector<std::pair<std::string, std::string>>& overrides);
 
 /// \brief A one-body chain welded to the wing base: the rigid wing (no dofs). The body
-/// carries the wing's estimated mass and the inertia of a uniform plate of its planform
-/// (for output only: a prescribed body needs none).
+/// carries the wing's estimated mass, centre of mass and inertia (wings::estimate_wing_inertia:
+/// membrane spread over the outline, veins along their lines); they set the inertial part of
+/// the drive moment and power.
 mbd::ChainModel make_rigid_chain(const wings::Wing& wing);
 
 /// \brief The cycle-mean speed [m/s] of the point at distance \p radius [m] along y_W,

@@ -45,6 +45,25 @@ TEST(PlanformGeometry, SecondMomentOfRectangleAndTriangle) {
   EXPECT_NEAR(w::polygon_second_moment_y(right_triangle()), 1.0 / 12.0, 1e-15);
 }
 
+TEST(PlanformGeometry, AreaMomentsOfATriangleInEitherOrientation) {
+  // Triangle (0,0),(1,0),(0,1): ∫∫ x dA = ∫∫ y dA = 1/6, ∫∫ x² dA = ∫∫ y² dA = 1/12,
+  // ∫∫ x y dA = ∫_0^1 x (1−x)²/2 dx = 1/24.
+  Polygon cw = right_triangle();
+  std::reverse(cw.begin(), cw.end());
+  for (const Polygon& t : {right_triangle(), cw}) {
+    const w::PolygonMoments m = w::polygon_moments(t);
+    EXPECT_NEAR(m.area, 0.5, 1e-15);
+    EXPECT_NEAR(m.first.x(), 1.0 / 6.0, 1e-15);
+    EXPECT_NEAR(m.first.y(), 1.0 / 6.0, 1e-15);
+    EXPECT_NEAR(m.xx, 1.0 / 12.0, 1e-15);
+    EXPECT_NEAR(m.yy, 1.0 / 12.0, 1e-15);
+    EXPECT_NEAR(m.xy, 1.0 / 24.0, 1e-15);
+  }
+  // Unit square shifted by (2, 3): ∫∫ x y dA = 2.5 · 3.5.
+  const Polygon shifted{{2, 3}, {3, 3}, {3, 4}, {2, 4}};
+  EXPECT_NEAR(w::polygon_moments(shifted).xy, 8.75, 1e-13);
+}
+
 TEST(PlanformGeometry, RectangleFromPivotHasAspectRatioAndR2) {
   // Rectangle chord c, span R from the pivot: S = cR, c̄ = c, AR = R/c, r2 = 1/√3.
   const Polygon rect{{0.0025, 0.0}, {0.0025, 0.04}, {-0.0075, 0.04}, {-0.0075, 0.0}};

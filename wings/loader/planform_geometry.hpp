@@ -29,6 +29,17 @@ Eigen::Vector2d polygon_centroid(const Polygon& polygon);
 /// ∫∫ y² dA over the polygon [m⁴] (exact for straight edges).
 double polygon_second_moment_y(const Polygon& polygon);
 
+/// Area moments of a polygon about the origin, exact for straight edges (Green's theorem),
+/// the same for either orientation.
+struct PolygonMoments {
+  double area = 0.0;                                ///< ∫∫ dA [m²]
+  Eigen::Vector2d first = Eigen::Vector2d::Zero();  ///< (∫∫ x dA, ∫∫ y dA) [m³]
+  double xx = 0.0;                                  ///< ∫∫ x² dA [m⁴]
+  double yy = 0.0;                                  ///< ∫∫ y² dA [m⁴]
+  double xy = 0.0;                                  ///< ∫∫ x y dA [m⁴]
+};
+PolygonMoments polygon_moments(const Polygon& polygon);
+
 /// True if the closed segments [a, b] and [c, d] share at least one point.
 bool segments_intersect(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                         const Eigen::Vector2d& c, const Eigen::Vector2d& d);

@@ -6,6 +6,8 @@
 /// Where a vein lies on the membrane both are counted, as in the FEM, which puts
 /// shell and beam elements on the same nodes.
 
+#include <Eigen/Core>
+
 #include "wings/loader/wing_model.hpp"
 
 namespace flapsim::wings {
@@ -34,5 +36,16 @@ struct WingMassEstimate {
 
 /// Mass of the wing from its geometry and materials [kg].
 WingMassEstimate estimate_wing_mass(const Wing& wing);
+
+/// Mass properties of the flat wing (in its plane z = 0): the membrane and non-structural
+/// mass spread evenly over the outline, each vein's ρ A(s) along its polyline.
+struct WingInertia {
+  double mass = 0.0;                                         ///< [kg]
+  Eigen::Vector2d center_of_mass = Eigen::Vector2d::Zero();  ///< (x, y) [m]
+  /// About the centre of mass, wing axes (x chordwise, y spanwise, z normal) [kg m²]:
+  /// I_xx = ∫ y'² dm, I_yy = ∫ x'² dm, I_zz = I_xx + I_yy, I_xy = −∫ x' y' dm.
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+};
+WingInertia estimate_wing_inertia(const Wing& wing);
 
 }  // namespace flapsim::wings
