@@ -6,6 +6,7 @@
 #include "pipeline/app/chain_wing_match.hpp"
 #include "pipeline/app/compressibility_warning.hpp"
 #include "pipeline/app/coupling_tolerance_warning.hpp"
+#include "pipeline/app/far_point_warning.hpp"
 #include "pipeline/app/fem_mesh_resolution_warning.hpp"
 #include "pipeline/app/fem_resonance_warning.hpp"
 #include "pipeline/app/film_wrinkle_warning.hpp"
@@ -34,6 +35,7 @@ std::vector<std::string> setup_warnings(const io::Case& c, const FsiSetup& setup
             ? fem::root_clamp_warning(setup.fem_structure->structural.mesh, *setup.wing)
             : std::string()})
     if (!w.empty()) out.push_back(std::move(w));
+  for (std::string& w : far_point_warnings(c, setup)) out.push_back(std::move(w));
   return out;
 }
 

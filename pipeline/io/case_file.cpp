@@ -677,6 +677,8 @@ void warn_implausible_angles(const TomlTable& root, Case& c) {
   const mbd::WingKinematics& k = c.kinematics;
   double largest_deg = 0.0, largest_sweep_deg = 0.0, largest_rotation_deg = 0.0;
   double lowest_sweep = std::numeric_limits<double>::infinity(), highest_sweep = -lowest_sweep;  // [deg]
+  double lowest_rotation = std::numeric_limits<double>::infinity(),
+         highest_rotation = -lowest_rotation;  // [deg]
   for (int i = 0; i < 360; ++i) {
     const double s = i / 360.0;
     const double signed_sweep = k.sweep.at_phase(s).value / kDegToRad;
@@ -684,7 +686,10 @@ void warn_implausible_angles(const TomlTable& root, Case& c) {
     highest_sweep = std::max(highest_sweep, signed_sweep);
     const double sweep = std::abs(signed_sweep);
     largest_sweep_deg = std::max(largest_sweep_deg, sweep);
-    const double rotation = std::abs(k.rotation.at_phase(s).value) / kDegToRad;
+    const double signed_rotation = k.rotation.at_phase(s).value / kDegToRad;
+    lowest_rotation = std::min(lowest_rotation, signed_rotation);
+    highest_rotation = std::max(highest_rotation, signed_rotation);
+    const double rotation = std::abs(signed_rotation);
     largest_rotation_deg = std::max(largest_rotation_deg, rotation);
     largest_deg = std::max({largest_deg, sweep, rotation});
   }
@@ -698,9 +703,11 @@ void warn_implausible_angles(const TomlTable& root, Case& c) {
     o << x;
     return o.str();
   };
-  // Small angles throughout are what a wing in a free stream or a heaving one has (a
-  // plate at 5°, a pitching aerofoil): only a wing that moves by its angles alone is suspect.
-  const bool moved_otherwise = c.air.freestream.norm() > 0.0 || k.pivot_translates();
+  // Small angles throughout are what a wing in a free stream, a heaving one or a revolving
+  // one has (a plate at 5°, a pitching aerofoil, a Robofly wing revolving at 5° incidence):
+  // only a wing that moves by its angles alone is suspect.
+  const bool moved_otherwise = c.air.freestream.norm() > 0.0 || k.pivot_translates() || k.revolution.active();
+  const double rotation_amplitude_deg = 0.5 * (highest_rotation - lowest_rotation);
   if (!moved_otherwise && largest_deg > 0.0 && largest_deg <= kRadianSuspicionDeg)
     c.warnings.push_back({c.file, t ? t->line_of("sweep") : 0, "kinematics.sweep",
                           "the sweep and rotation angles never exceed " + fixed(largest_deg) +
@@ -714,6 +721,18 @@ void warn_implausible_angles(const TomlTable& root, Case& c) {
                               ": was the stroke written in radians? Keys ending in _deg and the deg column of a "
                               "table are in degrees (a 50-degree stroke is cos_deg = [50.0]); the lift "
                               "coefficient's reference speed, the flapping speed at r2, is then tiny"});
+  // The rotation alone in radians (the stroke in degrees): a rotation that pitches, never
+  // beyond ±2π degrees, under a sweep that swings by more. A constant rotation (an angle of
+  // attack held through the stroke) is not suspect.
+  else if (!moved_otherwise && sweep_amplitude_deg > kRadianSuspicionDeg && rotation_amplitude_deg > 1e-9 &&
+           largest_rotation_deg <= kRadianSuspicionDeg)
+    c.warnings.push_back({c.file, t ? t->line_of("rotation") : 0, "kinematics.rotation",
+                          "the rotation never exceeds " + fixed(largest_rotation_deg) + " degrees (from " +
+                              fixed(lowest_rotation) + " to " + fixed(highest_rotation) +
+                              ") while the sweep swings by +-" + fixed(sweep_amplitude_deg) +
+                              ": was the rotation written in radians? Keys ending in _deg and the deg "
+                              "column of a table are in degrees (a wing pitching 90 +- 45 degrees is "
+                              "mean_deg = 90.0, sin_deg = [45.0])"});
   else if (largest_sweep_deg > 180.0)
     c.warnings.push_back({c.file, t ? t->line_of("sweep") : 0, "kinematics.sweep",
                           "the sweep angle reaches " + fixed(largest_sweep_deg) +
@@ -744,6 +763,8 @@ Case read_case(TomlTable root) {
   root.read_length_unit();
   Case c;
   c.file = root.file();
+  c.length_unit = root.length_unit();
+  c.length_scale = root.length_scale();
   for (const std::string& key : root.keys()) {
     c.key_lines[key] = root.line_of(key);
     if (root.is_table(key))

@@ -67,6 +67,8 @@ struct Case {
   /// line prints each on stderr and carries on (wings/loader/input_warning.hpp).
   std::vector<InputWarning> warnings;
   std::string name;        ///< short name (from the file, else the file stem)
+  std::string length_unit = "m";  ///< the file's unit of load and marker points (length_unit)
+  double length_scale = 1.0;      ///< metres per length_unit
   std::string wing_file;   ///< resolved path of the wing file (may be empty)
   std::string chain_file;  ///< resolved path of the chain file (may be empty)
 

@@ -69,6 +69,36 @@ TEST(CaseAngleWarnings, AStrokeAloneWrittenInRadiansIsWarned) {
   EXPECT_TRUE(case_from_text(kinematics_case("0.0", "{ mean_deg = 90.0, sin_deg = [-45.0] }")).warnings.empty());
 }
 
+// The rotation alone in radians: `rotation = { mean_deg = 1.57, sin_deg = [-0.785] }` under
+// a ±50-degree sweep ran a wing pitching by ±0.785 degrees without a word (until 3 Dec). A
+// constant rotation (an angle of attack held) is not warned.
+TEST(CaseAngleWarnings, ARotationAloneWrittenInRadiansIsWarned) {
+  const flapsim::io::Case c =
+      case_from_text(kinematics_case("{ cos_deg = [50.0] }", "{ mean_deg = 1.57, sin_deg = [-0.785] }"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(c.warnings[0].key, "kinematics.rotation");
+  EXPECT_EQ(c.warnings[0].line, 5);
+  // 1.57 +- 0.785: from 0.785 to 2.355 degrees under a sweep of +-50.
+  EXPECT_NE(
+      c.warnings[0].message.find("the rotation never exceeds 2.35 degrees (from 0.785 to 2.35) while the "
+                                 "sweep swings by +-50: was the rotation written in radians?"),
+      std::string::npos)
+      << c.warnings[0].message;
+  EXPECT_TRUE(case_from_text(kinematics_case("{ cos_deg = [50.0] }", "5.0")).warnings.empty());
+}
+
+// A revolving wing at a small incidence (the Robofly wing at 5 degrees, Dickinson et al.
+// 1999's lowest angles) moves by its revolution: it was told "were they written in radians?"
+// until 3 Dec; the same angles without the revolution still are.
+TEST(CaseAngleWarnings, ARevolvingWingAtASmallIncidenceIsNotWarned) {
+  const std::string still = kinematics_case("0.0", "5.0");
+  const std::string revolving = still.substr(0, still.find("[structure]")) +
+                                "revolution = { rate_deg_per_s = -360.0 }\n" +
+                                still.substr(still.find("[structure]"));
+  EXPECT_TRUE(case_from_text(revolving).warnings.empty());
+  EXPECT_EQ(case_from_text(still).warnings.size(), 1u);
+}
+
 TEST(CaseAngleWarnings, ASweepBeyondHalfATurnIsWarned) {
   const flapsim::io::Case c =
       case_from_text(kinematics_case("{ mean_deg = 10.0, cos_deg = [500.0] }", "{ mean_deg = 90.0, sin_deg = [-45.0] }"));
