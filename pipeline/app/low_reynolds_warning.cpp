@@ -4,9 +4,25 @@
 
 namespace flapsim::app {
 
+namespace {
+
+// The wing's speed through the air that sets its Reynolds number [m/s]: the larger of the free
+// stream and the span's cycle-mean flapping speed at r2 R. The coefficients' reference speed
+// is the free stream's wherever there is one, but a wing flapped at 2 m/s in a 0.02 m/s stream
+// meets the air at 2 m/s (its Re was the stream's, 1 % of it, and warned as a fairyfly's).
+bool flapping_sets_reynolds(const FsiSetup& setup) {
+  return setup.reference.flapping_speed > setup.reference.free_stream_speed;
+}
+
+double reynolds_speed(const FsiSetup& setup) {
+  return flapping_sets_reynolds(setup) ? setup.reference.flapping_speed : setup.reference.free_stream_speed;
+}
+
+}  // namespace
+
 double reynolds_number(const io::Case& c, const FsiSetup& setup) {
   if (!setup.model.air || !(c.numerics.kinematic_viscosity > 0.0)) return 0.0;
-  return setup.reference.speed * setup.reference.mean_chord / c.numerics.kinematic_viscosity;
+  return reynolds_speed(setup) * setup.reference.mean_chord / c.numerics.kinematic_viscosity;
 }
 
 std::string describe_reynolds(const io::Case& c, const FsiSetup& setup) {
@@ -14,11 +30,13 @@ std::string describe_reynolds(const io::Case& c, const FsiSetup& setup) {
   char text[300];
   std::snprintf(text, sizeof text, re >= 100.0 ? "%.0f" : "%.3g", re);
   std::string out = text;
-  std::snprintf(
-      text, sizeof text, " (U c/nu: %.3g m/s at %s, mean chord %.3g mm, nu %.3g m^2/s)",
-      setup.reference.speed,
-      setup.reference.kind == LiftReference::Kind::FreeStream ? "the free stream" : "r2 of the span",
-      setup.reference.mean_chord * 1e3, c.numerics.kinematic_viscosity);
+  std::snprintf(text, sizeof text, " (U c/nu: %.3g m/s at %s, mean chord %.3g mm, nu %.3g m^2/s)",
+                reynolds_speed(setup),
+                flapping_sets_reynolds(setup)
+                    ? (setup.reference.free_stream_speed > 0.0 ? "r2 of the span, faster than the free stream"
+                                                               : "r2 of the span")
+                    : "the free stream",
+                setup.reference.mean_chord * 1e3, c.numerics.kinematic_viscosity);
   return out + text;
 }
 

@@ -21,9 +21,10 @@ namespace flapsim::app {
 /// Re below which a run in air is warned (Miller & Peskin 2004, above).
 inline constexpr double kLowestLatticeReynolds = 32.0;
 
-/// Re = U_ref c̄ / ν: the lift coefficients' reference speed (the cycle-mean speed at r2·R, or
-/// the free stream's; LiftReference), the mean chord S/R and numerics.kinematic_viscosity
-/// (air's 1.5e-5 m²/s by default). 0 without air.
+/// Re = U c̄ / ν: U the larger of the free stream and the span's cycle-mean flapping speed at
+/// r2·R (LiftReference: the lift coefficients' reference speed, but for a wing flapped faster
+/// than a free stream, whose coefficients stay on the stream), the mean chord S/R and
+/// numerics.kinematic_viscosity (air's 1.5e-5 m²/s by default). 0 without air.
 double reynolds_number(const io::Case& c, const FsiSetup& setup);
 
 /// "3.22 (U c/nu: 0.413 m/s at r2 of the span, mean chord 0.117 mm, nu 1.5e-05 m^2/s)":
