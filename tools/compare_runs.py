@@ -51,7 +51,9 @@ def last_cycle(rows, frequency):
     """The rows of the last complete wingbeat: t in (t_end − T, t_end]."""
     t_end = float(rows[-1]["t_s"])
     period = 1.0 / frequency
-    start = t_end - period * (1.0 + 1e-9)
+    # t_end − T itself belongs to the wingbeat before: the margin lies inside the window
+    # (a margin outside took T/Δt + 1 rows, the mean over 41 rows of a 40-step wingbeat).
+    start = t_end - period * (1.0 - 1e-9)
     return [r for r in rows if float(r["t_s"]) > start]
 
 
