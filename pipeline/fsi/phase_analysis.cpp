@@ -51,6 +51,8 @@ double window_mean(const std::vector<double>& t, const std::vector<double>& x, d
 
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 double wrap_half(double f) {
   f -= std::round(f);
   if (f <= -0.5) f += 1.0;
@@ -139,7 +141,11 @@ std::optional<double> rotation_phase(const std::vector<double>& t, const std::ve
     }
     return best_t;
   };
-  double sum = 0.0;
+  // The phases are points on a circle (−½ and ½ are the same timing): their mean is the
+  // direction of Σ (cos 2πf, sin 2πf). A linear mean of a rotation phase of ½, whose
+  // crossings find the reversal half a period before or after by a sample's round-off, gave
+  // 0 for ±½ (the tip at 0.0 where the base read −0.5).
+  double sum_cos = 0.0, sum_sin = 0.0;
   int count = 0;
   for (int dir : {-1, +1}) {
     for (double tc : crossing_times(t, alpha, kRightAngle, dir)) {
@@ -148,13 +154,14 @@ std::optional<double> rotation_phase(const std::vector<double>& t, const std::ve
       const double f = std::isfinite(tr) ? wrap_half((tr - tc) / period)
                                          : std::numeric_limits<double>::quiet_NaN();
       if (std::isfinite(f)) {
-        sum += -f;
+        sum_cos += std::cos(2.0 * kPi * -f);
+        sum_sin += std::sin(2.0 * kPi * -f);
         ++count;
       }
     }
   }
   if (count == 0) return std::nullopt;
-  return sum / count;
+  return wrap_half(std::atan2(sum_sin, sum_cos) / (2.0 * kPi));
 }
 
 }  // namespace flapsim::fsi

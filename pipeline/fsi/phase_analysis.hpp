@@ -58,8 +58,10 @@ std::optional<double> crossing_lag(const std::vector<double>& t, const std::vect
 /// \brief Rotation phase of a wing section [-] in the paper's sense (δψ of eq. 8):
 /// time of the α = 90° crossing minus the time of the stroke reversal it belongs to
 /// (φ maximum before the falling crossing, φ minimum before the rising one), as a
-/// fraction of the period, averaged over both half-strokes in the window; negative =
-/// rotation ahead of the reversal (advanced). nullopt if no crossing is found.
+/// fraction of the period, averaged over both half-strokes in the window as phases on a
+/// circle (the direction of the mean of (cos 2πf, sin 2πf)), in (−½, ½]; negative =
+/// rotation ahead of the reversal (advanced); ±½ are the same timing. nullopt if no
+/// crossing is found.
 /// \param alpha  α samples [rad]; \param sweep  φ samples [rad]
 std::optional<double> rotation_phase(const std::vector<double>& t, const std::vector<double>& sweep,
                                      const std::vector<double>& alpha, double period,

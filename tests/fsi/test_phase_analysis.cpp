@@ -43,6 +43,33 @@ TEST(FsiPhaseAnalysis, RotationPhaseOfEq8IsDeltaPsi) {
   }
 }
 
+// A rotation phase of ½ (or near it): each crossing finds its reversal half a period before
+// or after, by the samples' round-off. The phases are circular: ½ and −½ are the same timing,
+// and their mean is ±½. Before: a linear mean of −½ and ½ read 0 (the base at −0.5, the tip
+// at 0.0 of the same undeformed wing).
+TEST(FsiPhaseAnalysis, ARotationPhaseOfAHalfIsAveragedOnTheCircle) {
+  for (double dpsi : {0.5, 0.499, -0.499, 0.45}) {
+    for (int samples : {100, 97}) {
+      const auto k = eq8(dpsi);
+      const double T = 1.0 / k.frequency;
+      std::vector<double> t, phi, alpha;
+      for (int n = 0; n <= 5 * samples; ++n) {
+        t.push_back(n * T / samples);
+        const auto a = k.angles(t.back());
+        phi.push_back(a.sweep.value);
+        alpha.push_back(a.rotation.value);
+      }
+      const auto p = fsi::rotation_phase(t, phi, alpha, T, 1 * T, 4 * T);
+      ASSERT_TRUE(p.has_value());
+      // Distance on the circle of phases, and the range (−½, ½].
+      const double d = *p - dpsi - std::round(*p - dpsi);
+      EXPECT_LE(std::abs(d), 5e-4) << "dpsi " << dpsi << ", " << samples << " samples: " << *p;
+      EXPECT_GT(*p, -0.5);
+      EXPECT_LE(*p, 0.5);
+    }
+  }
+}
+
 TEST(FsiPhaseAnalysis, CrossingLagAndWindowMean) {
   // x(t) = sin(2π(t − 0.07)) lags sin(2πt) by 0.07 of the period; the mean of
   // 1 + sin over whole periods is 1 (trapezoidal rule, exact for a sampled sine).
