@@ -46,6 +46,27 @@ TEST(FemCommands, MeshAndModesWriteTheirFiles) {
   EXPECT_FALSE(fs::exists(bad / "modes.csv"));
 }
 
+// The FEM mass `modes` prints has four significant digits at any size: a 40 x 10 um plate
+// 0.2 um thick (1390 kg/m^3: 1.112e-13 kg) was "FEM mass 0.0000 mg" until 3 Dec.
+TEST(FemCommands, ModesPrintsTheMassOfATinyWingInSignificantDigits) {
+  const flapsim::test::ScratchDir scratch("fem_commands_tiny");
+  std::ifstream plate(std::string(FLAPSIM_SOURCE_DIR) + "/wings/flat_plate.toml");
+  std::string text((std::istreambuf_iterator<char>(plate)), std::istreambuf_iterator<char>());
+  const std::string unit = "length_unit = \"mm\"";
+  ASSERT_NE(text.find(unit), std::string::npos);
+  text.replace(text.find(unit), unit.size(), "length_unit = \"um\"");
+  std::ofstream(scratch / "tiny.toml") << text;
+  const fs::path log = scratch / "modes.txt";
+  ASSERT_EQ(run_flapsim("modes " + (scratch / "tiny.toml").string() + " -o " + (scratch / "out").string() +
+                            " --modes 2",
+                        log),
+            0);
+  std::ifstream in(log);
+  const std::string printed((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // ρ h S = 1390 · 0.2e-6 · 400e-12 kg = 1.112e-7 mg (the FEM's consistent mass: exact).
+  EXPECT_NE(printed.find("FEM mass 1.112e-07 mg"), std::string::npos) << printed;
+}
+
 // `flapsim modes --threads 2` runs the eigen-solve beside the static side (one factorisation
 // of K shared by the tip load cases and the chain that names the modes) and assembles on
 // two threads; every number must be the one of --threads 1, to the bit (both files).

@@ -109,7 +109,7 @@ void run_modes(const ModesArgs& args) {
   claim.finish("complete");
   monitor.done();
 
-  std::printf("%s: %d nodes, %zu triangles, %zu vein elements, FEM mass %.4f mg\n", wing.name.c_str(),
+  std::printf("%s: %d nodes, %zu triangles, %zu vein elements, FEM mass %.4g mg\n", wing.name.c_str(),
               mesh.num_nodes(), mesh.triangles.size(), mesh.beams.size(), fem.system.total_mass * 1e6);
   std::printf("%5s %12s  %-8s %10s  %s\n", "mode", "f [Hz]", "kind", "beam share", "shape");
   for (Eigen::Index k = 0; k < m.modes.frequencies_hz.size(); ++k) {
