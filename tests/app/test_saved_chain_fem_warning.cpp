@@ -86,6 +86,36 @@ TEST(SavedChainFemWarning, TheSpringScaleIsTakenIntoTheChainsFrequencies) {
       << w;
 }
 
+// A chain that matches the FEM as reduced and misses only through the spring scale is not
+// told to "reduce again with more --bodies" (it was until 3 Dec): the scale is the run's own
+// choice. Torsion 131 Hz against 131.2 Hz matches; x 0.5 gives 92.6 Hz, −29.4 %; x 1e300 gives
+// 1.31e152 Hz, the whole message kept (it was cut at 200 characters).
+TEST(SavedChainFemWarning, AMissOfTheSpringScaleAloneNamesTheScale) {
+  test::ScratchDir dir("saved_chain_fem_scale_alone");
+  write_case(dir, "[fem_comparison]\ntorsion_chain_hz = 131.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.93\n");
+  const io::Case c = io::load_case_file((dir / "case.toml").string());
+  app::SetupOptions o;
+  o.spring_scale = 0.5;
+  const std::string w = app::saved_chain_fem_warning(app::build_fsi_setup(c, o));
+  EXPECT_NE(w.find("by -29.4 % (92.63 Hz against 131.2 Hz, MAC 0.930), with the springs x 0.5"),
+            std::string::npos)
+      << w;
+  EXPECT_NE(w.find("the spring scale alone makes the difference"), std::string::npos) << w;
+  EXPECT_EQ(w.find("more --bodies"), std::string::npos) << w;
+  o.spring_scale = 1e300;
+  const std::string huge = app::saved_chain_fem_warning(app::build_fsi_setup(c, o));
+  EXPECT_NE(
+      huge.find(
+          "(1.31e+152 Hz against 131.2 Hz, MAC 0.930), with the springs x 1e+300 (frequencies x 1e+150)"),
+      std::string::npos)
+      << huge;
+  // A chain that misses as reduced keeps the advice on bodies, whatever the scale.
+  write_case(dir, "[fem_comparison]\ntorsion_chain_hz = 90.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.93\n");
+  const io::Case missed = io::load_case_file((dir / "case.toml").string());
+  EXPECT_NE(app::saved_chain_fem_warning(app::build_fsi_setup(missed, o)).find("more --bodies"),
+            std::string::npos);
+}
+
 // reduce's record reads back as written; a kind's keys go together.
 TEST(SavedChainFemWarning, TheRecordRoundTripsThroughTheChainFile) {
   std::optional<io::ChainFemRecord> fem;
