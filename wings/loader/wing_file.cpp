@@ -153,6 +153,46 @@ void check_plate(const TomlTable& t, double thickness_m, std::vector<InputWarnin
        "thickness is in length_unit = \"" + t.length_unit() + "\"" + unit_guess(t, thickness_m, 1e-6, 5e-3));
 }
 
+// Non-structural mass (scales, glue, a film's coating) is grams per m² on any wing: the
+// hawkmoth of the rotation-phase paper carries 12 g/m² (wings/hawkmoth_rp.toml). Above 1 kg/m²,
+// the areal mass of a 0.7 mm cuticle sheet, it was written in g/m² (20 g/m² made a 48 mm wing
+// weigh 16 g unwarned until 3 Dec).
+void check_nonstructural_mass(const TomlTable& t, double kg_per_m2, std::vector<InputWarning>& warnings) {
+  if (kg_per_m2 <= 1.0) return;
+  warn(warnings, t, "nonstructural_mass_per_area",
+       fmt(kg_per_m2) +
+           " kg/m^2 is heavier than a 0.7 mm sheet of cuticle (1 kg/m^2); "
+           "nonstructural_mass_per_area is in kg/m^2: was it written in g/m^2? " +
+           fmt(kg_per_m2) + " g/m^2 is " + fmt(kg_per_m2 * 1e-3) + " kg/m^2");
+}
+
+// A vein as thick as a quarter of the span is no vein (an insect's costa is 1-2 % of its span,
+// a MAV's carbon spar 1-5 %): its section was written in another unit than the file's lengths
+// (0.4 mm as 0.4 in a file in metres made a 34 mg hawkmoth wing weigh 5.2 kg unwarned until 3 Dec).
+void check_vein_section(const TomlTable& v, const Vein& vein, double span_m,
+                        std::vector<InputWarning>& warnings) {
+  double largest = 0.0;
+  std::string key;
+  for (const Section& s : {vein.root_section, vein.tip_section}) {
+    const bool rect = s.shape == Section::Shape::Rectangle;
+    const std::pair<double, const char*> sides[] = {
+        {rect ? s.width : s.outer_diameter,
+         rect ? "width" : (v.has("diameter") ? "diameter" : "outer_diameter")},
+        {rect ? s.height : 0.0, "height"}};
+    for (const auto& [size, name] : sides)
+      if (size > largest) {
+        largest = size;
+        key = name;
+      }
+  }
+  if (!(largest > 0.25 * span_m)) return;
+  warn(warnings, v, key,
+       "the vein's section would be " + fmt(largest / v.length_scale()) + " " + v.length_unit() +
+           " across, " + fmt(100.0 * largest / span_m) +
+           " % of the span (veins are 1-5 %); section sizes are in length_unit = \"" + v.length_unit() +
+           "\"" + unit_guess(v, largest, 1e-6, 0.05 * span_m));
+}
+
 // The vortex lattice spans each section y = const from its leading to its trailing edge
 // (uvlm/planform_grid.hpp). An outline that a chordwise line crosses more than twice (a
 // slot from the tip, a hooked edge) leaves a gap the lattice covers: say where, when the
@@ -746,10 +786,13 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
   wing.membrane.material = find_material(mem, "material", materials);
   wing.membrane.nonstructural_mass_per_area =
       mem.get_double("nonstructural_mass_per_area", 0.0, Bounds::non_negative());
+  check_nonstructural_mass(mem, wing.membrane.nonstructural_mass_per_area, wing.warnings);
 
   const auto veins = root.get_tables("veins");
-  for (std::size_t i = 0; i < veins.size(); ++i)
+  for (std::size_t i = 0; i < veins.size(); ++i) {
     wing.veins.push_back(read_vein(veins[i], i, planform, materials, wing.warnings));
+    check_vein_section(veins[i], wing.veins.back(), wing.span, wing.warnings);
+  }
   if (planform.drawing) join_drawn_veins(wing, veins);
 
   // Mesh sizes default to R/50 (about 2500 membrane nodes on a hawkmoth-like planform).
