@@ -124,6 +124,13 @@ TEST(RunViewFields, TheRigidPlatesCpDisplacementWakeAgeAndFrameLoads) {
   EXPECT_NEAR(field_value(wing, "CL"), field_value(wing, "lift_N") / (q_ref * area),
               1e-12 * std::abs(field_value(wing, "CL")));
 
+  // force_N is each panel's whole force, the leading-edge row's suction included
+  // (docs/fsi.md, "The fields to colour by"): the cells' forces sum to the frame's lift (+z_G
+  // in a hover), and pressure_jump_Pa is their normal part per area.
+  double lift_of_cells = 0.0;
+  for (vtkIdType k = 0; k < wing->GetNumberOfCells(); ++k) lift_of_cells += cell_value(wing, "force_N", k, 2);
+  EXPECT_NEAR(lift_of_cells, field_value(wing, "lift_N"), 1e-9 * std::abs(field_value(wing, "lift_N")));
+
   // The frame's loads are history.csv's of the same step (the same doubles, written in
   // shortest round-trip form there).
   for (const auto& [field, column] : {std::pair{"lift_N", "lift_N"}, {"CL", "CL"}, {"drag_N", "drag_N"},
