@@ -64,8 +64,12 @@ std::string describe_case(const Case& c, std::optional<double> stream_radius) {
   if (revolving)
     s += line("  revolution             %10.4g deg/s after a ramp of %g s, from rest",
               k.revolution.rate * kRadToDeg, k.revolution.ramp);
-  s += revolving ? "  kinematics (AoA: geometric angle of attack; '-' at rest)\n"
-                 : "  kinematics (AoA: geometric angle of attack; '-' at stroke reversal)\n";
+  // A span axis that neither sweeps nor deviates (a plate that heaves or pitches only) has no
+  // strokes and no reversals: its geometric angle of attack is undefined throughout.
+  const bool span_fixed = !revolving && k.sweep.is_constant() && k.deviation.is_constant();
+  s += revolving    ? "  kinematics (AoA: geometric angle of attack; '-' at rest)\n"
+       : span_fixed ? "  kinematics (AoA: geometric angle of attack; '-': the span axis does not sweep)\n"
+                    : "  kinematics (AoA: geometric angle of attack; '-' at stroke reversal)\n";
   // In a free stream or with a translating pivot the geometric angle is not the one the air
   // meets: the table adds the angle at r2·R with the stream (and the air's speed there).
   const bool in_stream =
@@ -87,9 +91,10 @@ std::string describe_case(const Case& c, std::optional<double> stream_radius) {
       std::snprintf(aoa_text, sizeof aoa_text, "%7.2f", *aoa * kRadToDeg);
     else
       std::snprintf(aoa_text, sizeof aoa_text, "%7s", "-");
-    const char* stroke = revolving ? (!aoa ? "at rest" : "revolving")
-                         : !aoa    ? "reversal"
-                                   : (a.sweep.rate < 0 ? "downstroke" : "upstroke");
+    const char* stroke = revolving    ? (!aoa ? "at rest" : "revolving")
+                         : span_fixed ? "no sweep"
+                         : !aoa       ? "reversal"
+                                      : (a.sweep.rate < 0 ? "downstroke" : "upstroke");
     std::string stream_text;
     if (in_stream) {
       const auto w = angle_of_attack_in_stream(k, c.air.freestream, *stream_radius, phase / k.frequency);

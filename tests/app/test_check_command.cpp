@@ -108,6 +108,22 @@ TEST_F(CheckCommand, FlatPlateR2) {
   EXPECT_NEAR(number_after(r.out, R"(aspect ratio R\^2/S)"), 4.0, 1e-4);
 }
 
+// A plate that heaves in a stream and does not sweep has no strokes: its kinematics table says
+// "no sweep", not "reversal" at every phase (as it did until 3 Dec).
+TEST_F(CheckCommand, AHeavingPlateHasNoStrokeReversals) {
+  const fs::path file = fs::path(root_) / "heave.toml";
+  std::ofstream(file) << "name = \"heave\"\nwing = \"" << kSource
+                      << "/wings/flat_plate.toml\"\n[kinematics]\nfrequency_hz = 10.0\nsweep = 0.0\n"
+                         "rotation = 90.0\nheave = { sin_m = [0.005] }\n[structure]\nkind = \"rigid\"\n"
+                         "[air]\nfreestream = [-5.0, 0.0, 0.0]\n[numerics]\ncycles = 1\n";
+  const Result r = run("check '" + file.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("reversal"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(0\.25\s+0\.00\s+0\.00\s+90\.00\s+-.*no sweep)")))
+      << r.out;
+  EXPECT_NE(r.out.find("'-': the span axis does not sweep"), std::string::npos) << r.out;
+}
+
 TEST_F(CheckCommand, HoverCaseKinematics) {
   const Result r = run("check '" + kSource + "/cases/hover.toml'");
   ASSERT_EQ(r.status, 0) << r.err;
