@@ -119,7 +119,8 @@ void add_optimize_command(CLI::App& app) {
   cmd->add_option("--algorithm", args->algorithm, "bobyqa (bounds only) or cobyla (constraints); default: "
                                                   "bobyqa, cobyla with --constraint")
       ->check(CLI::IsMember({"bobyqa", "cobyla"}));
-  cmd->add_option("--max-evaluations", args->max_evaluations, "evaluations at most (default 50)")
+  cmd->add_option("--max-evaluations", args->max_evaluations,
+                  "points run at most, per start (default 50; a point asked for again is not run again)")
       ->check(whole_number(1, 100000));
   cmd->add_option("--starts", args->starts,
                   "independent searches: from the case's values, then from Halton points of the bounds (default 1); "

@@ -13,13 +13,16 @@ namespace flapsim::optimize {
 
 namespace {
 
-// What the C callbacks share: the scaling, the values of the points seen, the first error.
+// What the C callbacks share: the scaling, the values of the points seen, the first error,
+// and the number of distinct points the search may evaluate.
 struct Context {
   std::vector<double> lo, hi;
   const Evaluate* evaluate = nullptr;
   std::map<std::vector<double>, PointValue> seen;  // by the point in its own units
   std::exception_ptr error;
   nlopt_opt opt = nullptr;
+  std::size_t max_points = 0;
+  bool max_points_reached = false;  // NLopt asked for a new point past max_points: stopped
 };
 
 std::vector<double> unscale(const Context& c, const double* u) {
@@ -33,6 +36,13 @@ const PointValue* value_at(Context& c, const double* u) {
   if (c.error) return nullptr;
   const std::vector<double> x = unscale(c, u);
   if (const auto it = c.seen.find(x); it != c.seen.end()) return &it->second;
+  // --max-evaluations counts the runs: NLopt's own count takes in the points it asks for
+  // again (served from `seen`), so that 14 evaluations could list 12 runs.
+  if (c.seen.size() >= c.max_points) {
+    c.max_points_reached = true;
+    nlopt_force_stop(c.opt);
+    return nullptr;
+  }
   try {
     return &c.seen.emplace(x, (*c.evaluate)(x)).first->second;
   } catch (...) {
@@ -82,7 +92,13 @@ std::string algorithm_name(Algorithm a) { return a == Algorithm::bobyqa ? "bobyq
 SearchResult search(const std::vector<double>& lo, const std::vector<double>& hi, const std::vector<double>& start,
                     std::size_t constraints, const SearchOptions& options, const Evaluate& evaluate) {
   const auto n = static_cast<unsigned>(lo.size());
-  Context c{lo, hi, &evaluate, {}, nullptr, nullptr};
+  Context c{lo,
+            hi,
+            &evaluate,
+            {},
+            nullptr,
+            nullptr,
+            static_cast<std::size_t>(std::max(options.max_evaluations, 0))};
   std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(
       nlopt_create(options.algorithm == Algorithm::bobyqa ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA, n), &nlopt_destroy);
   if (!opt) throw std::runtime_error("NLopt could not create the optimiser");
@@ -99,13 +115,19 @@ SearchResult search(const std::vector<double>& lo, const std::vector<double>& hi
     check(nlopt_add_inequality_constraint(c.opt, constraint, &data[i], 0.0), "constraint");
   }
   check(nlopt_set_xtol_abs(c.opt, xtol.data()), "x tolerance");
-  check(nlopt_set_maxeval(c.opt, options.max_evaluations), "maximum of evaluations");
+  // NLopt's cap counts its asks, repeats included: a bound well above the distinct points'
+  // (max_points above), so that only a search that asks for old points over and over meets it.
+  const int asks = options.max_evaluations > (std::numeric_limits<int>::max() - 1000) / 10
+                       ? std::numeric_limits<int>::max()
+                       : 10 * options.max_evaluations + 1000;
+  check(nlopt_set_maxeval(c.opt, asks), "maximum of evaluations");
   check(nlopt_set_initial_step(c.opt, step.data()), "initial step");
   std::vector<double> u(n);
   for (unsigned i = 0; i < n; ++i) u[i] = std::clamp((start[i] - lo[i]) / (hi[i] - lo[i]), 0.0, 1.0);
   double best = 0.0;
   const nlopt_result r = nlopt_optimize(c.opt, u.data(), &best);
   if (c.error) std::rethrow_exception(c.error);
+  if (r == NLOPT_FORCED_STOP && c.max_points_reached) return {reason(NLOPT_MAXEVAL_REACHED), true};
   if (r < 0 && r != NLOPT_ROUNDOFF_LIMITED) throw std::runtime_error(std::string("NLopt stopped: ") + nlopt_result_to_string(r));
   return {reason(r), r == NLOPT_MAXEVAL_REACHED};
 }

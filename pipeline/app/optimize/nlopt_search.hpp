@@ -29,7 +29,7 @@ std::string algorithm_name(Algorithm a);
 
 struct SearchOptions {
   Algorithm algorithm = Algorithm::bobyqa;
-  int max_evaluations = 50;     ///< evaluations of the objective at most
+  int max_evaluations = 50;  ///< distinct points evaluated at most (a point asked for again is not run again)
   double x_tolerance = 1e-3;    ///< stop when a step changes every variable by less (fraction of its range)
   double initial_step = 0.25;   ///< the first step of each variable (fraction of its range)
 };
