@@ -82,15 +82,23 @@ def axis(key):
 
 
 def run_title(table, rows):
-    """The case and its structure (rigid wing, chain file, ...) from the first case's summary.json."""
+    """The case and its structure (rigid wing, chain file, ...) from the cases' summary.json: one
+    structure if every case has it, else each (a sweep of structure.kind: rigid, chain, fem),
+    in the order of the table; the first case's alone named every case's structure before."""
+    case, structures = None, []
     for r in rows:
         try:
             with open(os.path.join(os.path.dirname(os.path.abspath(table)), r["folder"], "summary.json")) as f:
                 s = json.load(f)
-            return "%s: %s" % (s.get("case", "?"), s.get("structure", "?"))
         except (OSError, KeyError, ValueError):
             continue
-    return ""
+        case = case or s.get("case", "?")
+        structure = s.get("structure", "?")
+        if structure not in structures:
+            structures.append(structure)
+    if case is None:
+        return ""
+    return "%s: %s" % (case, structures[0] if len(structures) == 1 else "structures " + ", ".join(structures))
 
 
 def plot_key(rows, key, others, power, out_path, failed, title_text=""):
