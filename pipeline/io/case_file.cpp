@@ -366,6 +366,14 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
 
 bool is_case_document(const TomlTable& root) { return root.has("kinematics"); }
 
+bool flaps_with_whole_free_wake(const Case& c) {
+  const Case::Numerics& n = c.numerics;
+  const mbd::WingKinematics& k = c.kinematics;
+  return c.air.enabled && !k.revolution.active() && !k.pivot_translates() && !k.sweep.is_constant() &&
+         n.free_wake && !n.steady && !(n.far_wake_cycles > 0.0) && !(n.frozen_wake_cycles > 0.0) &&
+         n.wake_max_rows <= 0;
+}
+
 namespace {
 
 /// A hover: air without a free stream (the wake moves only by what it induces).
@@ -392,13 +400,9 @@ bool meets_its_own_wake(const Case& c) {
 /// to 39 %); with the far wake after half a cycle the cycle means settle (cycles 2-8 within
 /// 0.6 %). A revolving wing, a free stream or a translating pivot keep 0.
 void default_far_wake_in_hover(const TomlTable& root, Case& c) {
-  Case::Numerics& n = c.numerics;
-  const mbd::WingKinematics& k = c.kinematics;
   if (const auto t = root.find_table("numerics"); t && t->has("far_wake_cycles")) return;
-  if (!in_still_air(c) || k.revolution.active() || k.pivot_translates() || k.sweep.is_constant() ||
-      !n.free_wake || n.steady || n.frozen_wake_cycles > 0.0 || n.wake_max_rows > 0)
-    return;
-  n.far_wake_cycles = kHoverFarWakeCycles;
+  if (!in_still_air(c) || !flaps_with_whole_free_wake(c)) return;
+  c.numerics.far_wake_cycles = kHoverFarWakeCycles;
 }
 
 /// A warning at numerics.`key`, on its line of the [numerics] table (0 if the key is not written).

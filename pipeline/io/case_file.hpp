@@ -51,6 +51,12 @@ mbd::PeriodicSignal read_periodic_signal(const wings::TomlTable& table, std::str
                                          std::string_view suffix, std::string_view values_key,
                                          double scale, const mbd::PeriodicSignal& fallback);
 
+/// \brief A flapping wing in air whose whole wake is free: a sweep that swings, a fixed pivot,
+/// no revolution, a free wake not steady, frozen, capped or convected (far_wake_cycles 0).
+/// The case the hover's far-wake default serves in still air (kHoverFarWakeCycles) and that
+/// a slow free stream is warned of (pipeline/app/slow_stream_hover_warning.hpp).
+bool flaps_with_whole_free_wake(const Case& c);
+
 /// \brief A case name made safe as one folder name (flapsim run's default output folder
 /// out/<name>): letters, digits, '-', '_' and '.' kept, anything else (a '/', a space)
 /// replaced by '_'; a leading '.' becomes '_' ("..", ".hidden"); empty gives "case".

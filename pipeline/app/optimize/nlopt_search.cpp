@@ -16,10 +16,10 @@ namespace {
 // What the C callbacks share: the scaling, the values of the points seen, the first error,
 // and the number of distinct points the search may evaluate.
 struct Context {
-  std::vector<double> lo, hi;
+  std::vector<double> lo{}, hi{};
   const Evaluate* evaluate = nullptr;
-  std::map<std::vector<double>, PointValue> seen;  // by the point in its own units
-  std::exception_ptr error;
+  std::map<std::vector<double>, PointValue> seen{};  // by the point in its own units
+  std::exception_ptr error{};
   nlopt_opt opt = nullptr;
   std::size_t max_points = 0;
   bool max_points_reached = false;  // NLopt asked for a new point past max_points: stopped
@@ -92,13 +92,10 @@ std::string algorithm_name(Algorithm a) { return a == Algorithm::bobyqa ? "bobyq
 SearchResult search(const std::vector<double>& lo, const std::vector<double>& hi, const std::vector<double>& start,
                     std::size_t constraints, const SearchOptions& options, const Evaluate& evaluate) {
   const auto n = static_cast<unsigned>(lo.size());
-  Context c{lo,
-            hi,
-            &evaluate,
-            {},
-            nullptr,
-            nullptr,
-            static_cast<std::size_t>(std::max(options.max_evaluations, 0))};
+  Context c{.lo = lo,
+            .hi = hi,
+            .evaluate = &evaluate,
+            .max_points = static_cast<std::size_t>(std::max(options.max_evaluations, 0))};
   std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(
       nlopt_create(options.algorithm == Algorithm::bobyqa ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA, n), &nlopt_destroy);
   if (!opt) throw std::runtime_error("NLopt could not create the optimiser");
