@@ -32,11 +32,11 @@ struct ModeMatch {
 /// kinematics at the same point as the chain's (docs/reduction.md, "Checking the chain
 /// against the FEM").
 struct StaticMatch {
-  double fem = 0.0, chain = 0.0;  ///< [m] or [rad]
+  double fem = 0.0, chain = 0.0;  ///< per unit load: [m/N] or [rad/(N m)]
   double relative_error = 0.0;    ///< chain / FEM − 1 [-]
   /// The FEM's section fit at the same position (section_fit.hpp: every band node with
   /// equal weight, camber terms), shown beside: on a wing whose sections are not rigid
-  /// (film beyond a rod) it measures something else than the chain's stations [m] or [rad].
+  /// (film beyond a rod) it measures something else than the chain's stations [m/N] or [rad/(N m)].
   double fem_section_fit = 0.0;
 };
 
@@ -45,14 +45,15 @@ struct ChainFemComparison {
   double fem_mass = 0.0, chain_mass = 0.0;  ///< [kg]
   ModeMatch bending, torsion;  ///< the FEM's first bending / torsion mode, paired by MAC
   double measure_s = 0.0;           ///< axis position of the deflection and twist rows [m]
-  StaticMatch tip_deflection;       ///< w under the tip force on the axis, at measure_s
+  StaticMatch tip_deflection;       ///< w per unit tip force on the axis, at measure_s [m/N]
   /// θ conjugate to a bending moment M_n on the chain's tip body, on both sides: the FEM's
   /// fᵀ K⁻¹ f / M_n for the moment spread over the tip body's strip by mass, the chain's
   /// Qᵀ K_c⁻¹ Q / M_n (its tip body's rotation); positive by construction on both. Beside
   /// it (fem_section_fit) the section fit's θ at the tip body's mid-span under that load.
+  /// All three per unit of M_n [rad/(N m)].
   StaticMatch tip_bending_rotation;
   double bending_body_s = 0.0;      ///< inboard joint of the tip body, where that moment's strip starts [m]
-  StaticMatch tip_twist;            ///< φ under the tip torque, at measure_s
+  StaticMatch tip_twist;            ///< φ per unit tip torque, at measure_s [rad/(N m)]
   std::vector<double> fem_hz;       ///< all FEM modes [Hz]
   std::vector<std::string> fem_kinds;        ///< from the stations: "bending", "torsion", "film"
   std::vector<std::string> fem_shape_kinds;  ///< fem::classify_modes (strip fits of the whole shape)

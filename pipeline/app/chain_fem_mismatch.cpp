@@ -26,10 +26,10 @@ std::string static_mismatch_warning(const reduction::ChainFemComparison& c, cons
   };
   // The bending row is the rotation conjugate to a moment spread over the chain's tip body,
   // on both sides; the others are read at the measuring body (docs/reduction.md).
-  for (const Row& r : {Row{"tip deflection under the tip force", at_measure, "m", &c.tip_deflection},
-                       Row{"bending rotation of the tip body under a moment spread over it", at_body, "rad",
-                           &c.tip_bending_rotation},
-                       Row{"twist under the tip torque", at_measure, "rad", &c.tip_twist}}) {
+  for (const Row& r : {Row{"tip deflection under the tip force", at_measure, "m/N", &c.tip_deflection},
+                       Row{"bending rotation of the tip body under a moment spread over it", at_body,
+                           "rad/(N m)", &c.tip_bending_rotation},
+                       Row{"twist under the tip torque", at_measure, "rad/(N m)", &c.tip_twist}}) {
     if (!misses_fem_static(*r.m)) continue;
     char text[240];
     std::snprintf(text, sizeof text, "%s%s%s %+.1f %% (chain %.4g %s, FEM %.4g %s)", missed.empty() ? "" : "; ", r.name,

@@ -187,24 +187,33 @@ std::string reduction_report(const std::string& wing_file, const reduction::Beam
   auto static_row = [&](const char* name, const reduction::StaticMatch& m) {
     s << "| " << name << " | " << m.fem << " | " << m.chain << " | " << format_percent(m.relative_error) << " | |\n";
   };
-  static_row("tip deflection under the tip force on the axis [m]", c.tip_deflection);
-  static_row("bending rotation of the tip body under a moment spread over it [rad]", c.tip_bending_rotation);
-  static_row("tip twist under the tip torque [rad]", c.tip_twist);
+  static_row("tip deflection per unit tip force on the axis [m/N]", c.tip_deflection);
+  static_row("bending rotation of the tip body per unit moment spread over it [rad/(N m)]",
+             c.tip_bending_rotation);
+  static_row("tip twist per unit tip torque [rad/(N m)]", c.tip_twist);
   s << "\nTip deflection and twist at s = " << c.measure_s
-    << " m (mid-point of the outermost body clear of the loaded tip zone); the FEM load cases of the beam extraction, "
-       "the same wrenches on the chain. Both read in the chain's coordinates: the FEM's station motion mapped to joint "
-       "angles (the map that defines K), then the chain's kinematics at that point (docs/reduction.md, \"Checking the "
-       "chain against the FEM\"). Bending rotation: the rotation conjugate to the moment on both sides (twice the "
-       "strain energy over the moment, positive by construction), the moment spread by mass over the tip body's strip "
+    << " m (mid-point of the outermost body clear of the loaded tip zone); the FEM load cases of the beam "
+       "extraction, "
+       "the same wrenches on the chain. Both read in the chain's coordinates: the FEM's station motion "
+       "mapped to joint "
+       "angles (the map that defines K), then the chain's kinematics at that point (docs/reduction.md, "
+       "\"Checking the "
+       "chain against the FEM\"). Bending rotation: the rotation conjugate to the moment on both sides "
+       "(twice the "
+       "strain energy over the moment, positive by construction), the moment spread by mass over the tip "
+       "body's strip "
        "from s = "
     << c.bending_body_s
-    << " m on the FEM and put on the tip body of the chain (docs/reduction.md, \"A tip moment on a film tip\"). "
+    << " m on the FEM and put on the tip body of the chain (docs/reduction.md, \"A tip moment on a film "
+       "tip\"). "
        "The FEM's section fit (every node alike, camber terms) gives w = "
-    << c.tip_deflection.fem_section_fit << " m and twist = " << c.tip_twist.fem_section_fit
-    << " rad there, theta = " << c.tip_bending_rotation.fem_section_fit
-    << " rad at the tip body's mid-span: far from the rows' FEM values where the sections are not rigid (film beyond "
+    << c.tip_deflection.fem_section_fit << " m/N and twist = " << c.tip_twist.fem_section_fit
+    << " rad/(N m) there, theta = " << c.tip_bending_rotation.fem_section_fit
+    << " rad/(N m) at the tip body's mid-span: far from the rows' FEM values where the sections are not "
+       "rigid (film beyond "
        "a rod).\n\n"
-    << "## FEM modes\n\nKind from the stations' motion (docs/reduction.md, \"Mode kinds from the stations\"); "
+    << "## FEM modes\n\nKind from the stations' motion (docs/reduction.md, \"Mode kinds from the "
+       "stations\"); "
        "beam share: the share of the motion the stations' rigid sections carry; shape: the FEM's own "
        "shape classification.\n\n| mode | f [Hz] | kind | beam share | shape |\n|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < c.fem_hz.size(); ++i)
@@ -277,19 +286,19 @@ void write_reduction_summary(const fs::path& path, const reduction::BeamProperti
   j.set("torsion_relative_error", c.torsion.relative_error);
   j.set("torsion_mac", c.torsion.mac);
   j.set("static_measure_s_m", c.measure_s);
-  j.set("tip_deflection_fem_m", c.tip_deflection.fem);
-  j.set("tip_deflection_chain_m", c.tip_deflection.chain);
+  j.set("tip_deflection_fem_m_per_N", c.tip_deflection.fem);
+  j.set("tip_deflection_chain_m_per_N", c.tip_deflection.chain);
   j.set("tip_deflection_relative_error", c.tip_deflection.relative_error);
   j.set("tip_rotation_body_s_m", c.bending_body_s);
-  j.set("tip_rotation_fem_rad", c.tip_bending_rotation.fem);
-  j.set("tip_rotation_chain_rad", c.tip_bending_rotation.chain);
+  j.set("tip_rotation_fem_rad_per_N_m", c.tip_bending_rotation.fem);
+  j.set("tip_rotation_chain_rad_per_N_m", c.tip_bending_rotation.chain);
   j.set("tip_rotation_relative_error", c.tip_bending_rotation.relative_error);
-  j.set("tip_twist_fem_rad", c.tip_twist.fem);
-  j.set("tip_twist_chain_rad", c.tip_twist.chain);
+  j.set("tip_twist_fem_rad_per_N_m", c.tip_twist.fem);
+  j.set("tip_twist_chain_rad_per_N_m", c.tip_twist.chain);
   j.set("tip_twist_relative_error", c.tip_twist.relative_error);
-  j.set("tip_deflection_fem_section_fit_m", c.tip_deflection.fem_section_fit);
-  j.set("tip_rotation_fem_section_fit_rad", c.tip_bending_rotation.fem_section_fit);
-  j.set("tip_twist_fem_section_fit_rad", c.tip_twist.fem_section_fit);
+  j.set("tip_deflection_fem_section_fit_m_per_N", c.tip_deflection.fem_section_fit);
+  j.set("tip_rotation_fem_section_fit_rad_per_N_m", c.tip_bending_rotation.fem_section_fit);
+  j.set("tip_twist_fem_section_fit_rad_per_N_m", c.tip_twist.fem_section_fit);
   j.write(path);
 }
 

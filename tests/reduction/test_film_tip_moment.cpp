@@ -146,7 +146,7 @@ TEST(FilmTipMoment, TheBendingRowComparesTheRotationConjugateToTheSameMomentOnBo
     EXPECT_NEAR(mn, m, 1e-9 * m);
     EXPECT_NEAR(ms, 0.0, 1e-9 * m);
     const double theta_fem = f.dot(Eigen::VectorXd(an.solve(f))) / m;
-    EXPECT_NEAR(c.tip_bending_rotation.fem / theta_fem, 1.0, 1e-9);
+    EXPECT_NEAR(c.tip_bending_rotation.fem * m / theta_fem, 1.0, 1e-9);  // the row is per unit moment
 
     // (3) The chain side is the rotation conjugate to the same load mapped to the chain: the
     // same nodal forces, each a point force on the tip body at its node (not the moment the
@@ -157,7 +157,7 @@ TEST(FilmTipMoment, TheBendingRowComparesTheRotationConjugateToTheSameMomentOnBo
       q_f += lin.generalized_force(tip, Eigen::Vector3d(an.n()[i], an.s()[i], 0.0),
                                    Eigen::Vector3d(0.0, 0.0, f[fem::dof_index(i, fem::UZ)]), Eigen::Vector3d::Zero());
     const double theta_chain = q_f.dot(lin.static_response(q_f)) / m;
-    EXPECT_NEAR(c.tip_bending_rotation.chain / theta_chain, 1.0, 1e-9);
+    EXPECT_NEAR(c.tip_bending_rotation.chain * m / theta_chain, 1.0, 1e-9);
 
     // (4) And the chain's number is the FEM's own conjugate rotation under the chain's
     // station loads Tᵀ Q of that Q (exact at the stations, joint_stiffness.hpp): the FEM with
@@ -166,8 +166,11 @@ TEST(FilmTipMoment, TheBendingRowComparesTheRotationConjugateToTheSameMomentOnBo
     // and concentrated on the stations' bands, not a sign or a reading.
     const Eigen::VectorXd f_st = lc.stations.load_vector(lc.joint_stiffness.station_loads(q_f), ndof);
     EXPECT_NEAR(f_st.dot(Eigen::VectorXd(an.solve(f_st))) / m / theta_chain, 1.0, 1e-8);
-    std::printf("rod-film 75 mm, %2d bodies: bending row FEM %.4g rad, chain %.4g rad (%+.1f %%) under %.3g N m\n", nb,
-                c.tip_bending_rotation.fem, c.tip_bending_rotation.chain, 100 * c.tip_bending_rotation.relative_error, m);
+    std::printf(
+        "rod-film 75 mm, %2d bodies: bending row FEM %.4g, chain %.4g rad/(N m) (%+.1f %%), the load case "
+        "%.3g N m\n",
+        nb, c.tip_bending_rotation.fem, c.tip_bending_rotation.chain,
+        100 * c.tip_bending_rotation.relative_error, m);
   }
 }
 

@@ -69,11 +69,12 @@ TEST(SweptRodFilmStatics, TheReportReadsTheFemInTheChainsCoordinatesAndShowsWhat
   const Eigen::VectorXd f_stations = lc.stations.load_vector(lc.joint_stiffness.station_loads(q), ndof);
   const double theta_stations = f_stations.dot(Eigen::VectorXd(an.solve(f_stations))) / m;
   // Exact at the stations (docs/reduction.md, "Joint stiffness by reciprocity"): below 1e-8.
-  EXPECT_NEAR(c.tip_bending_rotation.chain / theta_stations, 1.0, 1e-8);
+  EXPECT_NEAR(c.tip_bending_rotation.chain * m / theta_stations, 1.0, 1e-8);  // the row per unit moment
   // Both sides positive (fᵀK⁻¹f, QᵀK_c⁻¹Q), and the chain misses the FEM by more than 10 %.
   EXPECT_GT(c.tip_bending_rotation.fem, 0.0);
   EXPECT_GT(std::abs(c.tip_bending_rotation.relative_error), 0.10);
-  EXPECT_NEAR(theta_stations / c.tip_bending_rotation.fem - 1.0, c.tip_bending_rotation.relative_error, 1e-8);
+  EXPECT_NEAR(theta_stations / (m * c.tip_bending_rotation.fem) - 1.0, c.tip_bending_rotation.relative_error,
+              1e-8);
 }
 
 }  // namespace
