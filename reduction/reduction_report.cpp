@@ -30,7 +30,8 @@ std::vector<ModeMatch> pair_modes_by_mac(const std::vector<Eigen::VectorXd>& fem
                                          const std::vector<double>& chain_hz) {
   std::vector<ModeMatch> out;
   for (std::size_t i = 0; i < fem_samples.size() && i < fem_kinds.size() && i < fem_hz.size(); ++i) {
-    if (fem_kinds[i] == StationModeKind::film) continue;
+    if (fem_kinds[i] != StationModeKind::bending && fem_kinds[i] != StationModeKind::torsion)
+      continue;  // beam modes only
     ModeMatch mm;
     mm.fem_mode = static_cast<int>(i);
     for (std::size_t j = 0; j < chain_samples.size() && j < chain_hz.size(); ++j) {

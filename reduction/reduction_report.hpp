@@ -55,7 +55,7 @@ struct ChainFemComparison {
   double bending_body_s = 0.0;      ///< inboard joint of the tip body, where that moment's strip starts [m]
   StaticMatch tip_twist;            ///< φ per unit tip torque, at measure_s [rad/(N m)]
   std::vector<double> fem_hz;       ///< all FEM modes [Hz]
-  std::vector<std::string> fem_kinds;        ///< from the stations: "bending", "torsion", "film"
+  std::vector<std::string> fem_kinds;        ///< from the stations: "bending", "torsion", "film", "in-plane"
   std::vector<std::string> fem_shape_kinds;  ///< fem::classify_modes (strip fits of the whole shape)
   std::vector<double> fem_beam_share;        ///< share of u_z the stations' rigid sections carry [-]
   /// Every FEM beam mode (kind bending or torsion) with the chain mode whose shape

@@ -41,7 +41,7 @@ inline constexpr double kModeViewFraction = 0.1;
 
 /// How a mode is named (docs/reduction.md, "Mode kinds from the stations").
 struct ModeLabel {
-  std::string kind;        ///< from the chain's stations: "bending", "torsion" or "film"
+  std::string kind;        ///< from the chain's stations: "bending", "torsion", "film" or "in-plane"
   double beam_share = 0.0; ///< share of the motion the stations' rigid sections carry [-]
   std::string shape_kind;  ///< fem::classify_modes (strip fits of the whole shape)
 };

@@ -32,7 +32,9 @@ struct PlateStrip {
   fem::Constraints clamp;
 
   /// \param vein_x  chordwise position of a heavy vein along the span (NaN: none)
-  explicit PlateStrip(double vein_x = std::nan("")) {
+  /// \param thickness  plate thickness [m]
+  explicit PlateStrip(double vein_x = std::nan(""), double thickness = 1e-4) {
+    h = thickness;
     wing.name = "plate_strip";
     wing.outline = {{-b / 2, 0.0}, {b / 2, 0.0}, {b / 2, L}, {-b / 2, L}};
     wing.span = L;
@@ -168,6 +170,39 @@ TEST(PlateStrip, HenckyChainConvergesToTheFemFromBelow) {
     EXPECT_GT(c.bending.mac, 0.99) << nb;
   }
   EXPECT_LT(previous, 0.005);  // 16 bodies within 0.5 % (−0.18 % for the beam, validation.md M1)
+}
+
+// A mode in the wing's plane is named in-plane and not paired with the chain, which has none
+// (docs/reduction.md, "Mode kinds from the stations"). A 100 x 10 x 1 mm aluminium strip: its
+// third mode is the first in-plane bending, f = (1.875^2 / 2 pi) sqrt(E I_z / (rho A)) / L^2
+// with I_z = h b^3 / 12 (Euler-Bernoulli in the plane), 822 Hz; it was named bending (beam
+// share 0.9998, a share of its tiny u_z) and paired with the chain's second bending mode.
+TEST(PlateStrip, AnInPlaneModeIsNamedInPlaneAndNotPaired) {
+  PlateStrip p(std::nan(""), 1e-3);
+  ClampedWingAnalysis analysis(p.model.mesh, p.system, p.clamp);
+  fem::ModalOptions mo;
+  mo.num_modes = 6;
+  const fem::ModalResult modes = fem::solve_modes(p.system.stiffness, p.system.mass, p.clamp, mo);
+  const auto kinds = fem::classify_modes(p.model.mesh, p.system, modes.shapes, modes.frequencies_hz);
+  const ChainFemComparison c = compare_chain_with_fem(analysis, lump_into_chain(analysis, 8), modes, kinds);
+  const double pi = 3.14159265358979323846;
+  const double f_in_plane =
+      1.875104 * 1.875104 / (2.0 * pi) * std::sqrt(p.E * p.b * p.b / (12.0 * p.rho)) / (p.L * p.L);
+  int in_plane = -1;
+  for (std::size_t i = 0; i < c.fem_hz.size(); ++i)
+    if (std::abs(c.fem_hz[i] / f_in_plane - 1.0) < 0.03) in_plane = static_cast<int>(i);
+  ASSERT_GE(in_plane, 0) << "no FEM mode within 3 % of in-plane beam theory's " << f_in_plane << " Hz";
+  std::printf("strip 1 mm: FEM mode %d at %.1f Hz (in-plane beam theory %.1f Hz): %s, shape %s\n",
+              in_plane + 1, c.fem_hz[static_cast<std::size_t>(in_plane)], f_in_plane,
+              c.fem_kinds[static_cast<std::size_t>(in_plane)].c_str(),
+              c.fem_shape_kinds[static_cast<std::size_t>(in_plane)].c_str());
+  EXPECT_EQ(c.fem_shape_kinds[static_cast<std::size_t>(in_plane)], "in-plane");
+  EXPECT_EQ(c.fem_kinds[static_cast<std::size_t>(in_plane)], "in-plane");
+  for (const ModeMatch& m : c.beam_mode_pairs) EXPECT_NE(m.fem_mode, in_plane);
+  // The out-of-plane modes keep their names: the first is bending.
+  EXPECT_EQ(c.fem_kinds.front(), "bending");
+  EXPECT_TRUE(c.bending.found);
+  EXPECT_EQ(c.bending.fem_mode, 0);
 }
 
 // The static rows of the report are compliances, per newton and per newton metre
