@@ -18,6 +18,9 @@ inline constexpr double kMaxMeshElements = 500000.0;
 
 /// The largest aspect ratio R²/S of an outline: thinner is a sliver, not a wing.
 inline constexpr double kMaxAspectRatio = 1000.0;
+/// Outline points closer than this share of the outline's size (its largest |coordinate|) are
+/// a repeat: gmsh merges them and cannot create the edge between them.
+inline constexpr double kNearRepeat = 1e-6;
 
 /// \brief Estimated element count of the wing's mesh: membrane triangles of size h cover
 /// the area S at about S / (√3/4 · h²) (equilateral triangles), plus the refined band

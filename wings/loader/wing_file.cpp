@@ -428,6 +428,32 @@ Planform read_planform(const TomlTable& p, std::vector<InputWarning>& warnings) 
   check_span(p, max_y, warnings);
 
   // 2. The polygon must be simple (checked before stretching, which keeps simplicity).
+  // An error at point `at` of the outline, at its line in whichever file gave it.
+  auto fail_at_point = [&](std::size_t at, const std::string& what) {
+    if (from_drawing)  // the drawing's file and the outline element's line
+      throw InputError(p.get_path("outline_file"), drawing_line, p.key_path("outline_file"), what);
+    if (from_file)  // the CSV's file and line of the point
+      throw InputError(p.get_path("outline_file"), csv.lines[at], p.key_path("outline_file"), what);
+    const int line = outline_key == "outline" ? p.line_of_element(outline_key, at) : p.line_of(outline_key);
+    p.fail_at(line, outline_key, what);
+  };
+  {  // A point a hair from the next one (below kNearRepeat of the outline's size: a typo or a
+     // drawing's double click) is a repeat: gmsh merges such points and fails with "Could not
+     // create line", naming neither (a point 1.4e-7 mm from the next on a 40 mm wing).
+    double extent = 0.0;
+    for (const auto& q : out.outline) extent = std::max(extent, q.cwiseAbs().maxCoeff());
+    const std::size_t n = out.outline.size();
+    for (std::size_t i = 0; i < n && outline_key != "shape" && outline_key != "spline"; ++i) {
+      const std::size_t next = (i + 1) % n;
+      const double d = (out.outline[i] - out.outline[next]).norm();
+      if (d == 0.0 || d >= kNearRepeat * extent) continue;
+      const std::size_t at = std::max(i, next);
+      fail_at_point(at, "point " + std::to_string(at) + " nearly repeats point " +
+                            std::to_string(std::min(i, next)) + " (" + fmt(d / p.length_scale()) + " " +
+                            p.length_unit() +
+                            " apart, below 1e-6 of the outline's size): remove one (points counted from 0)");
+    }
+  }
   if (const auto hit = find_self_intersection(out.outline)) {
     const std::size_t n = out.outline.size();
     const auto i = static_cast<std::size_t>(hit->first), next = (i + 1) % n;
@@ -441,12 +467,7 @@ Planform read_planform(const TomlTable& p, std::vector<InputWarning>& warnings) 
                : "the outline is not a simple polygon: edge " + std::to_string(i) + " (points " +
                      std::to_string(i) + "-" + std::to_string(next) + ") touches or crosses edge " +
                      std::to_string(hit->second);
-    if (from_drawing)  // the drawing's file and the outline element's line
-      throw InputError(p.get_path("outline_file"), drawing_line, p.key_path("outline_file"), what);
-    if (from_file)  // the CSV's file and line of the edge's first point, or of the repeat
-      throw InputError(p.get_path("outline_file"), csv.lines[at], p.key_path("outline_file"), what);
-    const int line = outline_key == "outline" ? p.line_of_element(outline_key, at) : p.line_of(outline_key);
-    p.fail_at(line, outline_key, what);
+    fail_at_point(at, what);
   }
   const double signed_area = polygon_signed_area(out.outline);
   if (signed_area == 0.0) p.fail(outline_key, "the outline has zero area");
