@@ -82,7 +82,7 @@ BeamProperties extract_beam_properties(const ClampedWingAnalysis& analysis, int 
                   "flexible span from %.2f mm (mean element edge %.2f mm); use a smaller [mesh] element_size "
                   "(or clamp_y, if the clamp leaves little of the wing free)",
                   beam.s_tip * 1e3, z_start * 1e3, beam.s_root * 1e3, analysis.element_size() * 1e3);
-    throw ReductionFailure(buf);
+    throw ReductionInputLimit(buf);
   }
   for (int k = last_ok + 1; k < n; ++k) {
     auto& st = beam.stations[static_cast<std::size_t>(k)];

@@ -174,7 +174,7 @@ void ClampedWingAnalysis::setup_frame(const AxisFrame& axis, double tip_zone_len
                   "the root clamp reaches %.2f mm along the axis, into the loaded tip zone (from %.2f mm to the tip "
                   "at %.2f mm): too little of the wing is free to bend; use a smaller clamp_y or a finer mesh",
                   s_root_ * 1e3, zone_.s_start * 1e3, s_tip_ * 1e3);
-    throw ReductionFailure(buf);
+    throw ReductionInputLimit(buf);
   }
   // The two forces for the elastic axis: a quarter of the zone's chord either side.
   const double half = 0.25 * (zone_.n_max - zone_.n_min);

@@ -58,10 +58,10 @@ TipZone make_tip_zone(const Eigen::VectorXd& s, const Eigen::VectorXd& n, double
       if (mean - dev > 1e-6 * (mean + dev)) return zone;
     }
     if (ell > extent)
-      throw ReductionFailure("the wing has too few free FEM nodes to load at its tip (fewer than " +
-                             std::to_string(min_nodes) +
-                             " spanning both the span and the chord outside the root clamp); use a smaller [mesh] element_size "
-                             "or a smaller clamp_y");
+      throw ReductionInputLimit(
+          "the wing has too few free FEM nodes to load at its tip (fewer than " + std::to_string(min_nodes) +
+          " spanning both the span and the chord outside the root clamp); use a smaller [mesh] element_size "
+          "or a smaller clamp_y");
     ell *= 1.25;
   }
 }

@@ -3,13 +3,14 @@
 #include <cstdio>
 
 #include "fem/wing_fem.hpp"
-#include "pipeline/io/chain_file.hpp"
 #include "pipeline/app/fsi_setup.hpp"
+#include "pipeline/app/reduction_input_limit.hpp"
 #include "pipeline/fsi/numerical_failure.hpp"
-#include "reduction/reduction_failure.hpp"
+#include "pipeline/io/chain_file.hpp"
 #include "reduction/chain_lumping.hpp"
-#include "reduction/reduction_report.hpp"
 #include "reduction/clamped_wing_analysis.hpp"
+#include "reduction/reduction_failure.hpp"
+#include "reduction/reduction_report.hpp"
 #include "wings/loader/input_error.hpp"
 
 namespace flapsim::app {
@@ -60,8 +61,11 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
     // No chain given: the wing's FEM reduced here, as `flapsim reduce --bodies N` would
     // (docs/reduction.md), without writing its files.
     const fem::WingFem fem = fem::build_wing_fem(*wing);
-    const reduction::ClampedWingAnalysis analysis(fem.model.mesh, fem.system, fem.root_clamp, {});
     try {
+      // A clamp or mesh that leaves too little free is the wing file's error (exit 2).
+      const reduction::ClampedWingAnalysis analysis = reduce_wing_input_checked(*wing, [&] {
+        return reduction::ClampedWingAnalysis(fem.model.mesh, fem.system, fem.root_clamp, {});
+      });
       const reduction::LumpedChain lumped = reduction::lump_into_chain(analysis, c.structure.bodies);
       s.chain = lumped.chain;
       // The chain against the wing's first FEM modes, as reduce compares them (its default

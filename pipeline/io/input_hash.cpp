@@ -20,12 +20,13 @@ namespace flapsim::io {
 // (Case::key_lines, Case::Structure::bodies_line, initial_angles_line, initial_rates_line, Vein::line and
 // Vein::key locate messages, Case::warnings and Wing::warnings warn, Case::length_unit and length_scale word
 // warnings (the points are read in metres and hashed), Wing::lattice_gap follows from the outline and refuses
-// a run, SurfaceShape::line locates messages, Wing::drawing describes where the outline came from (the
-// outline is hashed); they change no result.)
+// a run, SurfaceShape::line, Wing::clamp_y_line and element_size_line locate messages, Wing::drawing
+// describes where the outline came from (the outline is hashed); they change no result.)
 static_assert(sizeof(Case) == 1528, "io::Case changed: add the new field to canonical_inputs()");
 static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
-static_assert(sizeof(wings::Wing) == 376 + sizeof(wings::SurfaceShape), "wings::Wing changed: add the new field to canonical_inputs()");
+static_assert(sizeof(wings::Wing) == 384 + sizeof(wings::SurfaceShape),
+              "wings::Wing changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Vein) == 200, "wings::Vein changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Section) == 40,
               "wings::Section changed: add the new field to canonical_inputs()");

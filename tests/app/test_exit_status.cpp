@@ -50,14 +50,35 @@ TEST(ExitStatus, ThreeForANumericalFailureOfTheRun) {
   EXPECT_NE(read_text(dir / "out" / "summary.json").find("\"status\": \"failed\""), std::string::npos);
 }
 
-TEST(ExitStatus, ThreeForAFailureOfTheReduction) {
+TEST(ExitStatus, TwoForAClampOrAMeshThatLeavesNoBeamToReduce) {
   // The tiny wing clamped up to y = 9.6 of its 10 mm: the reduction finds no beam section
-  // outside the clamp and the loaded tip zone and fails (it exited 1, the usage status).
+  // outside the clamp and the loaded tip zone. That is the wing file's error, named at its
+  // clamp_y (line 7), exit 2 with nothing written (it exited 1, the usage status, then 3, a
+  // "numerical failure", leaving a folder with only its manifest; docs/reduction.md).
   ScratchDir dir("exit_reduction");
   std::ofstream(dir / "w.toml") << replace_once(read_text(kTinyWing), "clamp_y = 0.0", "clamp_y = 9.6");
-  EXPECT_EQ(run_flapsim("reduce " + (dir / "w.toml").string() + " --bodies 2 --modes 4 -o " + (dir / "out").string()),
-            3);
-  EXPECT_FALSE(fs::exists(dir / "out" / "chain.toml"));
+  const FlapsimOutcome clamp =
+      run_flapsim_capturing_stderr(dir.path(), "reduce " + (dir / "w.toml").string() +
+                                                   " --bodies 2 --modes 4 -o " + (dir / "out").string());
+  EXPECT_EQ(clamp.status, 2) << clamp.err;
+  EXPECT_NE(clamp.err.find("w.toml:7: key 'planform.clamp_y'"), std::string::npos) << clamp.err;
+  EXPECT_NE(clamp.err.find("cannot be reduced to a beam"), std::string::npos) << clamp.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  // Its check warns of the clamp (96 % of the span range held).
+  const FlapsimOutcome check = run_flapsim_capturing_stderr(dir.path(), "check " + (dir / "w.toml").string());
+  EXPECT_EQ(check.status, 0) << check.err;
+  EXPECT_NE(check.err.find("the clamp holds 96 % of the wing's span range"), std::string::npos) << check.err;
+  // Elements of 20 mm on its 5 mm chord: the wing file's [mesh] element_size (line 26), the
+  // check warning first (the FEM has a handful of nodes).
+  std::ofstream(dir / "coarse.toml") << read_text(kTinyWing) << "\n[mesh]\nelement_size = 20.0\n";
+  const FlapsimOutcome coarse =
+      run_flapsim_capturing_stderr(dir.path(), "reduce " + (dir / "coarse.toml").string() +
+                                                   " --bodies 2 --modes 4 -o " + (dir / "out2").string());
+  EXPECT_EQ(coarse.status, 2) << coarse.err;
+  EXPECT_NE(coarse.err.find("coarse.toml:26: key 'mesh.element_size'"), std::string::npos) << coarse.err;
+  EXPECT_NE(coarse.err.find("fewer than two elements across the wing's mean chord"), std::string::npos)
+      << coarse.err;
+  EXPECT_FALSE(fs::exists(dir / "out2"));
 }
 
 TEST(ExitStatus, FourForAnUnwritableOutputFolderOfEveryCommand) {

@@ -250,6 +250,37 @@ LatticeGap lattice_gap(const TomlTable& p, const std::vector<Eigen::Vector2d>& o
   return g;
 }
 
+// A root clamp holds a strip of a few per cent of the span (the shipped wings: 0-5 %, the
+// Robofly's root edge). Holding most of the wing leaves a stub: its FEM modes are tens of kHz,
+// a FEM run is a rigid wing, and a reduction finds no beam to measure (it stopped as a
+// "numerical failure"; a 40 mm wing clamped to 39.9 mm passed check without a word).
+void check_clamp_share(const TomlTable& p, double clamp_y, const PlanformProperties& props,
+                       std::vector<InputWarning>& warnings) {
+  const double range = props.span - props.root_y, held = (clamp_y - props.root_y) / range;
+  if (!(range > 0.0) || held <= 0.5) return;
+  warn(warnings, p, "clamp_y",
+       "the clamp holds " + fmt(100.0 * held) + " % of the wing's span range (" +
+           fmt(props.root_y / p.length_scale()) + " to " + fmt(props.span / p.length_scale()) + " " +
+           p.length_unit() + "): only the outer " + fmt((props.span - clamp_y) / p.length_scale()) + " " +
+           p.length_unit() +
+           " bends (a FEM run is close to a rigid wing, and a reduction may find no beam to measure); a root "
+           "clamp holds the strip the mechanism grips, a few per cent of the span (docs/wing_file.md)");
+}
+
+// Fewer than two elements across the mean chord: the FEM cannot bend along the chord at all,
+// `modes` names its modes from a handful of nodes (beam shares NaN on a 10 mm chord meshed at
+// 20 mm: 8 nodes) and `reduce` refuses it; the wing file's check said nothing.
+void check_elements_across_chord(const TomlTable& m, double element_size, const PlanformProperties& props,
+                                 std::vector<InputWarning>& warnings) {
+  if (!(props.mean_chord > 0.0) || element_size <= 0.5 * props.mean_chord) return;
+  warn(warnings, m, "element_size",
+       "fewer than two elements across the wing's mean chord (" + fmt(props.mean_chord / m.length_scale()) +
+           " " + m.length_unit() +
+           "): the FEM cannot bend along the chord, its modes and a reduction are coarse or "
+           "refused; at most a quarter of the mean chord (the default is a fiftieth of the span, "
+           "docs/wing_file.md)");
+}
+
 void warn_lattice_gap(const LatticeGap& g, std::vector<InputWarning>& warnings) {
   if (!(g.area_share > 0.0)) return;
   warnings.push_back({g.file, g.line, g.key, g.description + "; the FEM follows the outline, a run in air refuses it"});
@@ -825,6 +856,12 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
     wing.mesh.vein_element_size =
         mesh->get_length("vein_element_size", wing.mesh.element_size, Bounds::positive());
   }
+  wing.clamp_y_line = planform_table.line_of("clamp_y");
+  if (const auto m = root.find_table("mesh"); m && m->has("element_size"))
+    wing.element_size_line = m->line_of("element_size");
+  check_clamp_share(planform_table, wing.clamp_y, props, wing.warnings);
+  if (const auto m = root.find_table("mesh"); m && m->has("element_size"))
+    check_elements_across_chord(*m, wing.mesh.element_size, props, wing.warnings);
   if (const auto surface = root.find_table("surface")) wing.surface = read_surface_shape(*surface);
   // The mesh-size rules (mesh_budget.hpp): refused here, before gmsh runs out of memory.
   const auto mesh = root.find_table("mesh");

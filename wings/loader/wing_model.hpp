@@ -85,6 +85,9 @@ struct Wing {
   MeshSettings mesh;
   /// FEM root boundary: nodes with y <= clamp_y are clamped [m].
   double clamp_y = 0.0;
+  /// Lines of clamp_y and [mesh] element_size in source_file (0: not written), for the
+  /// errors of stages that find the clamp or the mesh leaves too little to work with.
+  int clamp_y_line = 0, element_size_line = 0;
   /// Accepted but implausible values (wing_file.hpp, "Plausibility"), in file order.
   std::vector<InputWarning> warnings;
   /// A gap the vortex lattice would cover (area_share 0 if none or negligible, below 1 %);

@@ -18,9 +18,10 @@
 #include "fem/wing_fem.hpp"
 #include "pipeline/app/chain_fem_mismatch.hpp"
 #include "pipeline/app/numerical_stage.hpp"
+#include "pipeline/app/reduction_input_limit.hpp"
 #include "pipeline/app/stage_monitor.hpp"
-#include "pipeline/io/chain_file.hpp"
 #include "pipeline/io/atomic_file.hpp"
+#include "pipeline/io/chain_file.hpp"
 #include "pipeline/io/output_manifest.hpp"
 #include "pipeline/io/reduction_files.hpp"
 #include "reduction/beam_properties.hpp"
@@ -62,17 +63,24 @@ void run_reduce(const ReduceOptions& o) {
   monitor.stage("mesh and FEM matrices");
   const fem::WingFem fem = app::numerical_stage("FEM", [&] { return fem::build_wing_fem(wing); });
   print_mesh_warnings(fem.model.mesh, wing);
-  // Claimed once meshed: a wing error found by the mesher (exit 2) leaves the folder as it was.
-  claim.claim(o.force);
-  monitor.stage("FEM modes");
-  const fem::WingModes modes = app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, o.modes); });
+  // The clamped wing's load cases and beam before the folder is claimed: a clamp or a mesh
+  // that leaves too little free to reduce is the wing file's error (exit 2, reported at
+  // clamp_y or element_size), and a wing error leaves the folder as it was.
   monitor.stage("static load cases of the clamped wing");
-  const reduction::ClampedWingAnalysis analysis = app::numerical_stage(
-      "reduction", [&] { return reduction::ClampedWingAnalysis(fem.model.mesh, fem.system, fem.root_clamp, ao); });
+  const reduction::ClampedWingAnalysis analysis = app::numerical_stage("reduction", [&] {
+    return app::reduce_wing_input_checked(
+        wing, [&] { return reduction::ClampedWingAnalysis(fem.model.mesh, fem.system, fem.root_clamp, ao); });
+  });
   monitor.stage("beam properties");
-  const reduction::BeamProperties beam =
-      app::numerical_stage("reduction", [&] { return reduction::extract_beam_properties(analysis, o.stations); });
+  const reduction::BeamProperties beam = app::numerical_stage("reduction", [&] {
+    return app::reduce_wing_input_checked(
+        wing, [&] { return reduction::extract_beam_properties(analysis, o.stations); });
+  });
+  claim.claim(o.force);
   io::write_beam_csv(dir / "beam.csv", beam);  // written even if the chain cannot be made
+  monitor.stage("FEM modes");
+  const fem::WingModes modes =
+      app::numerical_stage("FEM modes", [&] { return fem::wing_modes(fem, o.modes); });
   const reduction::SpringModel springs =
       o.springs == "diagonal" ? reduction::SpringModel::diagonal : reduction::SpringModel::full;
   monitor.stage("bar chain");
