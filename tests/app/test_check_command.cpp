@@ -187,6 +187,11 @@ TEST_F(CheckCommand, CaseBodyOutOfRange) { expect_rejected("case_body_out_of_ran
 TEST_F(CheckCommand, CaseMissingWingFile) { expect_rejected("case_missing_wing_file.toml", 3, "wing"); }
 TEST_F(CheckCommand, CaseFloatForInteger) { expect_rejected("case_float_for_int.toml", 14, "structure.bodies"); }
 TEST_F(CheckCommand, CaseTruncated) { expect_rejected("case_truncated.toml", 10, ""); }
+// A misspelled defining table ([planfrom], [kinematic]) is named at its line as the unknown
+// key it is, by the reader of the kind of file the other tables say it is: it was "not a wing
+// file (no [planform] table) nor a case file" at line 1.
+TEST_F(CheckCommand, WingTableTypo) { expect_rejected("wing_table_typo.toml", 5, "planfrom"); }
+TEST_F(CheckCommand, CaseTableTypo) { expect_rejected("case_table_typo.toml", 6, "kinematic"); }
 
 TEST_F(CheckCommand, ValidTinyCaseWithAdvancedRotation) {
   const Result r = run("check '" + kSource + "/tests/data/valid_tiny_case.toml'");

@@ -115,6 +115,14 @@ std::string check_file(const std::string& path, const std::string& chain_file, c
     throw InputError(path, root.line_of("bodies"), "bodies",
                      "a chain file (it has [[bodies]]): check reads wing and case files; 'flapsim check CASE "
                      "--chain " + path + "' checks the chain with the case that runs it");
+  // A file with a wing's tables ([membrane], [materials], ...) or a case's ([numerics], wing = ...)
+  // but not its defining one is that kind of file with a misspelled table: its own reader
+  // names the unknown key at its line ("[planfrom]" was "not a wing file ... nor a case file"
+  // at line 1).
+  for (const char* key : {"membrane", "materials", "veins", "mesh", "surface"})
+    if (root.has(key)) (void)wings::read_wing(root);
+  for (const char* key : {"wing", "chain", "air", "structure", "numerics", "output", "loads", "markers"})
+    if (root.has(key)) (void)io::read_case(root);
   throw InputError(path, 1, "",
                    "not a wing file (no [planform] table) nor a case file (no [kinematics] table)");
 }
