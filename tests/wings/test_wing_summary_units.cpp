@@ -39,6 +39,17 @@ TEST(WingSummaryUnits, AWingBelowATenthOfAMilligramIsShownInMicrograms) {
       << w::describe_wing(plate("mm", 40, 10, 0.2));
 }
 
+TEST(WingSummaryUnits, AHeavyWingIsShownInGramsOrKilograms) {
+  // 1200 * 1e-3 * (0.4 * 0.1) = 0.048 kg = 48.000 g (a 400 mm MAV plate of 1 mm; "48000.000 mg").
+  EXPECT_NE(mass_line(w::describe_wing(plate("mm", 400, 100, 1.0))).find(" 48.000 g (membrane 48.000,"),
+            std::string::npos)
+      << w::describe_wing(plate("mm", 400, 100, 1.0));
+  // The flat plate written in metres in a mm file: 1200 * 0.2 * (40 * 10) = 96000 kg ("9.6e10 mg").
+  EXPECT_NE(mass_line(w::describe_wing(plate("m", 40, 10, 0.2))).find(" 96000.000 kg (membrane 96000.000,"),
+            std::string::npos)
+      << w::describe_wing(plate("m", 40, 10, 0.2));
+}
+
 TEST(WingSummaryUnits, AMembraneBelowATenthOfAMillimetreIsShownInMicrometres) {
   // A fruit fly's 0.5 um membrane read "0.0005 mm" (one digit); 0.2 mm stays in mm.
   EXPECT_NE(w::describe_wing(plate("um", 2500, 800, 0.5)).find("membrane thickness         0.5000 um"),

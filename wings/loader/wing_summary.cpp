@@ -40,9 +40,12 @@ std::string describe_wing(const Wing& wing) {
             wing.membrane.material.youngs_modulus * 1e-9, wing.membrane.material.poisson_ratio,
             wing.membrane.material.density);
   // In mg, or ug / ng for a wing below 0.1 mg (a 1 mm wing of a 2 um film is a fraction of a
-  // microgram: "0.000 mg" hid it).
+  // microgram: "0.000 mg" hid it), g from 10 g and kg from 10 kg (a wing file in mm written as
+  // metres weighs tonnes: "2700000000000.000 mg").
   const double total = m.total();
-  const auto [mass_unit, per_kg] = total >= 1e-7 ? std::pair{"mg", 1e6}
+  const auto [mass_unit, per_kg] = total >= 10.0    ? std::pair{"kg", 1.0}
+                                   : total >= 1e-2  ? std::pair{"g", 1e3}
+                                   : total >= 1e-7  ? std::pair{"mg", 1e6}
                                    : total >= 1e-10 ? std::pair{"ug", 1e9}
                                                     : std::pair{"ng", 1e12};
   s += line("  estimated mass         %10.3f %s (membrane %.3f, non-structural %.3f, veins %.3f)", total * per_kg,
