@@ -138,6 +138,23 @@ TEST(OutlineCsv, ANearlyRepeatedPointIsNamedAtItsLine) {
       "r.toml")));
 }
 
+// `span` scales the outline and `area` stretches it, but a vein's `points` stay as written:
+// a wing scaled from 40 to 80 mm kept its spar over the inner half without a word
+// (docs/wing_file.md, "Plausibility warnings").
+TEST(OutlineCsv, VeinPointsOfARescaledOutlineAreWarned) {
+  auto warned = [](const std::string& extra) {
+    const w::Wing wing = w::read_wing(w::parse_toml_string(wing_text(kRectangle + extra), "r.toml"));
+    for (const auto& warning : wing.warnings)
+      if (warning.key == "veins[0].points") return warning.message;
+    return std::string();
+  };
+  EXPECT_EQ(warned(""), "");               // as written: no warning
+  EXPECT_EQ(warned("span = 40.0\n"), "");  // span equal to the outline's: no rescaling
+  EXPECT_NE(warned("span = 80.0\n").find("scaled by 2 to 'span' = 80 mm"), std::string::npos)
+      << warned("span = 80.0\n");
+  EXPECT_NE(warned("area = 800.0\n").find("stretched along the chord by 2"), std::string::npos);
+}
+
 TEST(OutlineCsv, AMissingOutlineFileIsTheWingFilesErrorAtItsLine) {
   // Before: "bow.csv: key 'planform.outline_file': the outline file does not exist" — the
   // missing file named, not the wing file and the line that names it.

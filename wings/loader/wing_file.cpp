@@ -318,6 +318,8 @@ struct Planform {
   double clamp_y = 0.0;
   bool from_spline = false;  ///< the outline is `spline`'s curve, not the points as written
   std::optional<DrawingFrame> drawing;  ///< an SVG outline_file: its map, for veins with drawing_id
+  double span_scale = 1.0;              ///< `span`'s uniform scale of the outline as written [-]
+  double chord_stretch = 1.0;           ///< `area`'s chordwise stretch of the outline [-]
 };
 
 // The outline of `shape = "..."` (ellipse, half_ellipse, rounded_rectangle) from its size keys.
@@ -451,6 +453,7 @@ Planform read_planform(const TomlTable& p, std::vector<InputWarning>& warnings) 
       p.fail(outline_key, "the outline must reach y > 0 (the tip) to be scaled to the span");
     const double k = span / max_y;
     for (auto& q : out.outline) q *= k;
+    out.span_scale = k;
     if (out.drawing) out.drawing->scale = k;
     max_y = span;
   }
@@ -523,6 +526,7 @@ Planform read_planform(const TomlTable& p, std::vector<InputWarning>& warnings) 
     const double area = p.get_double("area", Bounds::positive()) * p.length_scale() * p.length_scale();
     const double k = area / polygon_area(out.outline);
     for (auto& q : out.outline) q.x() *= k;
+    out.chord_stretch = k;
     if (out.drawing) out.drawing->x_stretch = k;
   }
 
@@ -540,6 +544,36 @@ Planform read_planform(const TomlTable& p, std::vector<InputWarning>& warnings) 
     p.fail("clamp_y", "must lie within the outline's span range [" + fmt(min_y / p.length_scale()) +
                           ", " + fmt(max_y / p.length_scale()) + ") " + p.length_unit());
   return out;
+}
+
+// `span` scales the outline and `area` stretches it along the chord; a vein's `points` are
+// absolute positions and stay as written (chord_points and drawn veins follow the outline).
+// A wing rescaled from 40 to 80 mm kept its spar from 0 to 40 mm, half the wing, without a word.
+void check_absolute_veins_of_a_rescaled_outline(const Planform& planform, const TomlTable& p,
+                                                const std::vector<TomlTable>& veins,
+                                                std::vector<InputWarning>& warnings) {
+  const bool scaled = std::abs(planform.span_scale - 1.0) > 1e-3;
+  const bool stretched = std::abs(planform.chord_stretch - 1.0) > 1e-3;
+  if (!scaled && !stretched) return;
+  for (const TomlTable& v : veins) {
+    if (!v.has("points")) continue;
+    std::string how;
+    if (scaled)
+      how = "scaled by " + fmt(planform.span_scale) +
+            " to 'span' = " + fmt(p.get_length("span") / p.length_scale()) + " " + p.length_unit();
+    if (stretched)
+      how += std::string(scaled ? " and " : "") + "stretched along the chord by " +
+             fmt(planform.chord_stretch) + " to 'area'";
+    warn(warnings, v, "points",
+         "the outline is " + how +
+             ", but a vein's points are absolute positions and stay as written (the "
+             "veins with 'points' no longer lie where they were drawn on the outline): write them for the "
+             "rescaled "
+             "wing, or give them as chord_points (fractions of the span and the chord, which follow the "
+             "outline; "
+             "docs/wing_file.md)");
+    return;  // once for the wing
+  }
 }
 
 // --- veins --------------------------------------------------------------------------------
@@ -714,17 +748,22 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
       const Eigen::Vector2d q = i == 0 ? vein.points[0]
                                        : ((1 - u) * vein.points[i - 1] + u * vein.points[i]).eval();
       if (!contains_point(outline, q, tol)) {
-        v.fail_at(line_of_row(source_row[i]), pts_key,
-                  "the vein leaves the outline near (x, y) = (" + fmt(q.x() / v.length_scale()) + ", " +
-                      fmt(q.y() / v.length_scale()) + ") " + v.length_unit() + ", " +
-                      fmt(distance_to_boundary(outline, q) / v.length_scale()) + " " + v.length_unit() +
-                      " outside it (tolerance " + fmt(tol / v.length_scale()) + " " + v.length_unit() + ")" +
-                      (planform.from_spline ? kSplineVeinHint : "") +
-                      (drawn ? "; a drawn vein's end may pass the edge by up to " +
-                                   fmt(100.0 * kDrawnVeinOvershoot) + " % of the span (" +
-                                   fmt(kDrawnVeinOvershoot * span / v.length_scale()) + " " +
-                                   v.length_unit() + ") and is cut there"
-                             : ""));
+        v.fail_at(
+            line_of_row(source_row[i]), pts_key,
+            "the vein leaves the outline near (x, y) = (" + fmt(q.x() / v.length_scale()) + ", " +
+                fmt(q.y() / v.length_scale()) + ") " + v.length_unit() + ", " +
+                fmt(distance_to_boundary(outline, q) / v.length_scale()) + " " + v.length_unit() +
+                " outside it (tolerance " + fmt(tol / v.length_scale()) + " " + v.length_unit() + ")" +
+                (planform.from_spline ? kSplineVeinHint : "") +
+                (abs_pts && (planform.span_scale != 1.0 || planform.chord_stretch != 1.0)
+                     ? "; the outline was rescaled by 'span' or 'area', and a vein's points are absolute "
+                       "positions that stay as written: write them for the rescaled wing, or as chord_points"
+                     : "") +
+                (drawn
+                     ? "; a drawn vein's end may pass the edge by up to " + fmt(100.0 * kDrawnVeinOvershoot) +
+                           " % of the span (" + fmt(kDrawnVeinOvershoot * span / v.length_scale()) + " " +
+                           v.length_unit() + ") and is cut there"
+                     : ""));
       }
     }
   }
@@ -846,6 +885,7 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
     check_vein_section(veins[i], wing.veins.back(), wing.span, wing.warnings);
   }
   if (planform.drawing) join_drawn_veins(wing, veins);
+  check_absolute_veins_of_a_rescaled_outline(planform, planform_table, veins, wing.warnings);
 
   // Mesh sizes default to R/50 (about 2500 membrane nodes on a hawkmoth-like planform).
   wing.mesh.element_size = wing.span / 50.0;
