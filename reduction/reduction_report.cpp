@@ -74,6 +74,9 @@ ChainFemComparison compare_chain_with_fem(const ClampedWingAnalysis& analysis,
   const int nb = chain.num_bodies();
   const double a = lumped.body_length;
   out.num_bodies = nb;
+  out.body_length = a;
+  out.fem_element_size = analysis.element_size();
+  out.flexible_span = analysis.s_tip();
   out.fem_mass = lumped.fem_mass;
   out.chain_mass = chain.total_mass();
   const LinearChain lin(chain);

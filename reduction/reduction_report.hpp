@@ -63,6 +63,9 @@ struct ChainFemComparison {
   std::vector<ModeMatch> beam_mode_pairs;
   std::vector<double> chain_hz;     ///< all chain modes [Hz]
   std::vector<std::string> chain_kinds;  ///< "bending" / "torsion" by spring energy
+  double body_length = 0.0;              ///< the chain's body length a [m]
+  double fem_element_size = 0.0;  ///< the FEM's mean element edge [m] (ClampedWingAnalysis::element_size)
+  double flexible_span = 0.0;     ///< s_tip: the axis length the bodies divide [m]
 };
 
 /// \brief chain / fem − 1; NaN when \p fem is 0 (no relative error against a zero

@@ -118,11 +118,15 @@ void run_reduce(const ReduceOptions& o) {
     if (app::misses_fem_mode(*m))
       std::cerr << "flapsim: warning: the chain's first " << kind << " mode differs from the FEM's by "
                 << io::format_percent(m->relative_error) << " (MAC " << m->mac
-                << "): the chain does not represent this wing well (too few bodies: try more --bodies; or a beam "
-                   "cannot: a low aspect ratio, a film that cambers; docs/reduction.md); see " << (dir / "report.md").string() << "\n";
+                << "): the chain does not represent this wing well (" << app::more_bodies_advice(cmp)
+                << "; or a beam "
+                   "cannot: a low aspect ratio, a film that cambers; docs/reduction.md); see "
+                << (dir / "report.md").string() << "\n";
   // Static rows beyond the same bound: said as well (the swept film wing of docs/reduction.md:
   // bending rotation of the tip body under a moment on it +143 % at 6 bodies while its first
   // bending is -2.3 %).
+  if (const std::string short_bodies = app::short_bodies_warning(cmp); !short_bodies.empty())
+    std::cerr << "flapsim: warning: " << short_bodies << "\n";
   const std::string statics = app::static_mismatch_warning(cmp, (dir / "report.md").string());
   if (!statics.empty()) std::cerr << "flapsim: warning: " << statics << "\n";
 }
