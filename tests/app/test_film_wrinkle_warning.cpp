@@ -4,8 +4,10 @@
 // the time `check` estimates.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
@@ -75,6 +77,28 @@ TEST(FilmWrinkleWarning, TheBumblebeeSizeMembraneIsBelowTheThreshold) {
   ASSERT_TRUE(bee);
   EXPECT_NEAR(bee->strain, 1.06e-3, 0.05e-3);  // measured: 0.233 mm elements, 4 µm
   EXPECT_LT(bee->strain, flapsim::app::kFilmWrinkleStrain);
+}
+
+// The film warning names the element size the mesh-resolution warning names, on a membrane of
+// one thickness: check gave "elements of 10.8 mm" and "elements of 14.1 mm" for one coarse
+// mesh (the two medians of an even count taken from either end).
+TEST(FilmWrinkleWarning, ItsElementSizeIsTheMeshResolutionWarningsMedian) {
+  flapsim::test::ScratchDir dir("wrinkle_median");
+  std::ifstream in(kWrinkleSource + "/tests/data/valid_tiny_wing.toml");
+  std::string wing((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ofstream(dir / "w.toml") << wing << "\n[mesh]\nelement_size = 1.5\n";
+  const auto fem = flapsim::fem::build_wing_fem(flapsim::wings::load_wing_file((dir / "w.toml").string()));
+  const flapsim::fem::Mesh& mesh = fem.model.mesh;
+  ASSERT_EQ(mesh.triangles.size() % 2, 0u)
+      << mesh.triangles.size() << " triangles: the case needs an even count";
+  // fem_mesh_resolution_warning.cpp: the shell triangles' mean edges, ascending, at n / 2.
+  std::vector<double> sizes;
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) sizes.push_back(mesh.triangle_mean_edge(e));
+  std::sort(sizes.begin(), sizes.end());
+  ASSERT_NE(sizes[sizes.size() / 2 - 1], sizes[sizes.size() / 2]);  // the two medians differ here
+  const auto wrinkle = flapsim::app::typical_membrane_wrinkle(fem.model);
+  ASSERT_TRUE(wrinkle);
+  EXPECT_EQ(wrinkle->size, sizes[sizes.size() / 2]);
 }
 
 TEST(FilmWrinkleWarning, CheckWarnsForTheFilmWingsFemAndNotForTheHawkmoths) {
