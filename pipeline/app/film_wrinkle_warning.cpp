@@ -52,14 +52,16 @@ std::string film_wrinkle_warning(const io::Case& c, const FsiSetup& setup) {
     std::snprintf(why, sizeof why,
                   "is %.2g of the wing's mean chord thin (a film below %.2g, whatever its mesh)",
                   median->thickness / mean_chord, kFilmThicknessOverChord);
-  char text[1000];
+  char text[1400];
   std::snprintf(
       text, sizeof text,
       "the FEM's membrane (%.3g um on elements of %.3g mm) %s, a thin film: where the flapping compresses "
       "it (a bending rod: ~0.06 %%) the FEM splits its steps (docs/fsi.md, \"Step halving of the FEM\"), and "
       "such runs "
-      "took 8x (the 75 mm film wing), 16x (the MAV film wing), 70x (a 55 mm swept 15 um film) and some "
-      "500x (a 13 mm wing of a 4 um membrane at 150 Hz) the time estimated here, and up to "
+      "took 8x (the 75 mm film wing), 16x (the MAV film wing), 70x (a 55 mm swept 15 um film), some "
+      "500x (a 13 mm wing of a 4 um membrane at 150 Hz) and over 1000x (a 2.5 mm wing of a 0.5 um "
+      "cuticle at 200 Hz: 2 steps in 31 s, the third unsolved after 90 s more, against 1.5 s for 20) "
+      "the time estimated here, and up to "
       "%.0f MB more memory for a Newton matrix kept for each piece (docs/fsi.md, \"Film wings\")",
       median->thickness * 1e6, median->size * 1e3, why,
       2.0 * fem::kKeptMatricesBytes / 1e6);  // each may hold an LDLᵀ beside its LLᵀ
