@@ -231,6 +231,7 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
   s.structure_source = structure.description;
   s.chain_file = structure.chain_file;
   s.chain_fem = std::move(structure.chain_fem);
+  s.reduced_fem_dofs = structure.reduced_fem_dofs;
   s.spring_scale = options.spring_scale;
   if (!(options.spring_scale > 0.0) || !std::isfinite(options.spring_scale))
     throw InputError("", 0, "--spring-scale", "must be a positive number");

@@ -63,6 +63,7 @@ struct FsiSetup {
   std::string chain_file;                 ///< the chain file of a flexible run ("" otherwise)
   /// The chain file's record of the chain against its wing's FEM (made by flapsim reduce).
   std::optional<io::ChainFemRecord> chain_fem;
+  int reduced_fem_dofs = 0;               ///< DOFs of the wing's FEM reduced in the setup (0: none was)
   double spring_scale = 1.0;              ///< every joint spring × this (SetupOptions)
   int steps_per_cycle = 0;
   std::int64_t steps = 0;                 ///< total steps of the run (<= io::kMaxTotalSteps)

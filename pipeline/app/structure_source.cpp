@@ -61,6 +61,7 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
     // No chain given: the wing's FEM reduced here, as `flapsim reduce --bodies N` would
     // (docs/reduction.md), without writing its files.
     const fem::WingFem fem = fem::build_wing_fem(*wing);
+    s.reduced_fem_dofs = static_cast<int>(fem.model.mesh.num_dofs());
     try {
       // A clamp or mesh that leaves too little free is the wing file's error (exit 2).
       const reduction::ClampedWingAnalysis analysis = reduce_wing_input_checked(*wing, [&] {

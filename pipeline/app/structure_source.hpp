@@ -22,6 +22,7 @@ struct StructureChoice {
   /// The chain against the wing's FEM modes: a chain file's [fem_comparison], if it has
   /// one; for a wing reduced in process, computed here as reduce does.
   std::optional<io::ChainFemRecord> chain_fem;
+  int reduced_fem_dofs = 0;  ///< DOFs of the wing's FEM reduced in process (0: none was)
 };
 
 /// \brief Chooses and builds the structure of a case (see the file comment).

@@ -137,6 +137,9 @@ TEST_F(CheckCommand, HoverCaseKinematics) {
   EXPECT_NE(r.out.find("6 chordwise x 10 spanwise"), std::string::npos);
   EXPECT_NE(r.out.find("flexible, 10 bodies"), std::string::npos);
   EXPECT_NE(r.out.find("wing 'hawkmoth'"), std::string::npos);  // the case's wing is checked too
+  // No chain file: the wing is reduced in the setup, whose FEM the estimate shows beside the
+  // run's arrays (test RunEstimate.TheSetupsReductionOfTheWingIsEstimatedBesideTheRun).
+  EXPECT_NE(r.out.find("before it, for the wing's FEM reduced in the setup"), std::string::npos) << r.out;
 }
 
 TEST_F(CheckCommand, HelpDescribesTheCommand) {

@@ -52,7 +52,7 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
     throw InputError(c.file, c.line_of("wing"), "wing",
                      "a run in air needs the wing's outline for the vortex lattice: name a wing "
                      "file, or set air = \"none\" for a vacuum run of the chain");
-  int bodies = c.structure.bodies, fem_dofs = 0;
+  int bodies = c.structure.bodies, fem_dofs = 0, reduced_fem_dofs = 0;
   std::string reynolds;  // the run's Reynolds number line (in air)
   const bool reduced_in_process = app::reduces_wing_in_process(c, chain_file);
   if (reduced_in_process && wing) app::check_lattice_can_follow(c, *wing);
@@ -72,10 +72,11 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
     if (c.air.enabled) stream_radius = setup.reference.r2 * setup.reference.span;
     if (setup.model.air) reynolds = "  Reynolds number        " + app::describe_reynolds(c, setup) + "\n";
     if (setup.fem_structure) fem_dofs = setup.fem_structure->num_dofs();
+    reduced_fem_dofs = setup.reduced_fem_dofs;
     for (const std::string& w : app::setup_warnings(c, setup))
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   }
-  const app::RunEstimate estimate = app::estimate_run(c, bodies, fem_dofs);
+  const app::RunEstimate estimate = app::estimate_run(c, bodies, fem_dofs, reduced_fem_dofs);
   app::refuse_if_it_cannot_fit(estimate, c);
   text += reynolds;
   text += "  " + app::describe(estimate) + "\n";
