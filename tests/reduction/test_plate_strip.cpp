@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include "fem/assembly.hpp"
 #include "fem/constraints.hpp"
@@ -62,6 +64,15 @@ struct PlateStrip {
     model = fem::wing_structural_model(wing, std::move(mesh));
     system = fem::assemble(model);
     clamp = fem::root_clamp(model.mesh, wing.clamp_y);
+  }
+
+  /// The strip's first \p n root-clamped modes and the FEM's shape kinds of them.
+  std::pair<fem::ModalResult, std::vector<fem::ModeKind>> clamped_modes(int n = 6) const {
+    fem::ModalOptions mo;
+    mo.num_modes = n;
+    fem::ModalResult modes = fem::solve_modes(system.stiffness, system.mass, clamp, mo);
+    auto kinds = fem::classify_modes(model.mesh, system, modes.shapes, modes.frequencies_hz);
+    return {std::move(modes), std::move(kinds)};
   }
 };
 
@@ -146,10 +157,7 @@ TEST(PlateStrip, HeavyLeadingEdgeVeinPullsTheElasticAxisForward) {
 TEST(PlateStrip, HenckyChainConvergesToTheFemFromBelow) {
   PlateStrip p;
   ClampedWingAnalysis analysis(p.model.mesh, p.system, p.clamp);
-  fem::ModalOptions mo;
-  mo.num_modes = 6;
-  const fem::ModalResult modes = fem::solve_modes(p.system.stiffness, p.system.mass, p.clamp, mo);
-  const auto kinds = fem::classify_modes(p.model.mesh, p.system, modes.shapes, modes.frequencies_hz);
+  const auto [modes, kinds] = p.clamped_modes();
   double previous = 1.0;
   for (int nb : {4, 8, 16}) {
     const LumpedChain lc = lump_into_chain(analysis, nb);
@@ -180,10 +188,7 @@ TEST(PlateStrip, HenckyChainConvergesToTheFemFromBelow) {
 TEST(PlateStrip, AnInPlaneModeIsNamedInPlaneAndNotPaired) {
   PlateStrip p(std::nan(""), 1e-3);
   ClampedWingAnalysis analysis(p.model.mesh, p.system, p.clamp);
-  fem::ModalOptions mo;
-  mo.num_modes = 6;
-  const fem::ModalResult modes = fem::solve_modes(p.system.stiffness, p.system.mass, p.clamp, mo);
-  const auto kinds = fem::classify_modes(p.model.mesh, p.system, modes.shapes, modes.frequencies_hz);
+  const auto [modes, kinds] = p.clamped_modes();
   const ChainFemComparison c = compare_chain_with_fem(analysis, lump_into_chain(analysis, 8), modes, kinds);
   const double pi = 3.14159265358979323846;
   const double f_in_plane =
@@ -212,10 +217,7 @@ TEST(PlateStrip, AnInPlaneModeIsNamedInPlaneAndNotPaired) {
 TEST(StaticRowsPerUnitLoad, AreTheBeamTheoryCompliancesOfTheStrip) {
   PlateStrip p;
   ClampedWingAnalysis analysis(p.model.mesh, p.system, p.clamp);
-  fem::ModalOptions mo;
-  mo.num_modes = 6;
-  const fem::ModalResult modes = fem::solve_modes(p.system.stiffness, p.system.mass, p.clamp, mo);
-  const auto kinds = fem::classify_modes(p.model.mesh, p.system, modes.shapes, modes.frequencies_hz);
+  const auto [modes, kinds] = p.clamped_modes();
   const LumpedChain lc = lump_into_chain(analysis, 16);
   const ChainFemComparison c = compare_chain_with_fem(analysis, lc, modes, kinds);
   // Euler-Bernoulli cantilever, EI = E h^3 b / 12 (the strip's stations are within 2 % of it,
