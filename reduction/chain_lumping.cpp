@@ -27,8 +27,20 @@ Eigen::Matrix3d physical_inertia(const Eigen::Matrix3d& inertia) {
 
 }  // namespace
 
-LumpedChain lump_into_chain(const ClampedWingAnalysis& analysis, int num_bodies, SpringModel springs) {
+void check_bodies_outside_clamp(const ClampedWingAnalysis& analysis, int num_bodies) {
   if (num_bodies < 1) throw ReductionFailure("a chain needs at least one body");
+  const double a = analysis.s_tip() / num_bodies, s_root = analysis.s_root();
+  if (a * (num_bodies - 0.5) > s_root) return;
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "all %d bodies lie inside the root clamp (clamp reaches %.2f mm along the flexural axis, "
+                "bodies are %.2f mm long); use more bodies or a smaller clamp_y",
+                num_bodies, s_root * 1e3, a * 1e3);
+  throw ReductionInputLimit(buf);
+}
+
+LumpedChain lump_into_chain(const ClampedWingAnalysis& analysis, int num_bodies, SpringModel springs) {
+  check_bodies_outside_clamp(analysis, num_bodies);
   const AxisFrame& ax = analysis.axis();
   const Eigen::Matrix3d r_wa = ax.rotation();
   const int nb = num_bodies;
@@ -65,15 +77,7 @@ LumpedChain lump_into_chain(const ClampedWingAnalysis& analysis, int num_bodies,
   // of them, joint 1 joins body 1 to the clamp (a sprung root).
   const double s_root = analysis.s_root();
   int welded = 0;
-  while (welded < nb && a * (welded + 0.5) <= s_root) ++welded;
-  if (welded == nb) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf,
-                  "all %d bodies lie inside the root clamp (clamp reaches %.2f mm along the flexural axis, "
-                  "bodies are %.2f mm long); use more bodies or a smaller clamp_y",
-                  nb, s_root * 1e3, a * 1e3);
-    throw ReductionFailure(buf);
-  }
+  while (welded < nb && a * (welded + 0.5) <= s_root) ++welded;  // < nb: check_bodies_outside_clamp
   chain.root = welded > 0 ? mbd::RootAttachment::rigid : mbd::RootAttachment::sprung;
   chain.welded_bodies = std::max(welded, 1);
   chain.joints.assign(static_cast<std::size_t>(nb), mbd::ChainJoint{});

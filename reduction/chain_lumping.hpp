@@ -37,6 +37,11 @@ struct LumpedChain {
   SpringModel springs = SpringModel::full;
 };
 
+/// \brief Refuses an \p num_bodies-body chain whose every body lies inside the root clamp (its
+/// mid-span within it): nothing would move.
+/// \throws ReductionInputLimit naming the clamp's reach and the body length
+void check_bodies_outside_clamp(const ClampedWingAnalysis& analysis, int num_bodies);
+
 /// \brief Lumps the FEM into \p num_bodies equal bodies from the pivot to the tip.
 /// Bodies whose mid-span lies inside the root clamp are welded to the root.
 /// \param analysis    the clamped FEM

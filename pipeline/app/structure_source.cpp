@@ -67,7 +67,8 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
       const reduction::ClampedWingAnalysis analysis = reduce_wing_input_checked(*wing, [&] {
         return reduction::ClampedWingAnalysis(fem.model.mesh, fem.system, fem.root_clamp, {});
       });
-      const reduction::LumpedChain lumped = reduction::lump_into_chain(analysis, c.structure.bodies);
+      const reduction::LumpedChain lumped = reduce_wing_input_checked(
+          *wing, [&] { return reduction::lump_into_chain(analysis, c.structure.bodies); });
       s.chain = lumped.chain;
       // The chain against the wing's first FEM modes, as reduce compares them (its default
       // 12 modes; about 0.5 s for the hawkmoth): run and check warn as reduce does. A modal

@@ -81,6 +81,27 @@ TEST(ExitStatus, TwoForAClampOrAMeshThatLeavesNoBeamToReduce) {
   EXPECT_FALSE(fs::exists(dir / "out2"));
 }
 
+TEST(ExitStatus, TwoForACaseWhoseWingReducedInProcessLeavesNoBodyFree) {
+  // The tiny case (3 bodies, no chain file) on the tiny wing clamped up to 9.6 of its 10 mm:
+  // every body lies inside the clamp. run and check reduce the wing in the setup; they said
+  // "numerical failure" (exit 3); it is the wing file's clamp_y (line 7), exit 2, nothing written.
+  ScratchDir dir("exit_in_process_clamp");
+  std::ofstream(dir / "w.toml") << replace_once(read_text(kTinyWing), "clamp_y = 0.0", "clamp_y = 9.6");
+  std::ofstream(dir / "c.toml") << replace_once(read_text(kTinyCase), "wing = \"valid_tiny_wing.toml\"",
+                                                "wing = \"w.toml\"");
+  for (const std::string command : {"check " + (dir / "c.toml").string(),
+                                    "run " + (dir / "c.toml").string() + " -o " + (dir / "out").string()}) {
+    const FlapsimOutcome o = run_flapsim_capturing_stderr(dir.path(), command);
+    EXPECT_EQ(o.status, 2) << command << ": " << o.err;
+    EXPECT_NE(
+        o.err.find("w.toml:7: key 'planform.clamp_y': the wing cannot be reduced to a beam: all 3 bodies lie "
+                   "inside the root clamp"),
+        std::string::npos)
+        << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 TEST(ExitStatus, FourForAnUnwritableOutputFolderOfEveryCommand) {
   // A regular file where the output folder should be: an output error (4), not blamed on
   // the input file (the issue: mesh blamed the wing file, run exited 1).

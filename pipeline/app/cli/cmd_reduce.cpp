@@ -76,6 +76,7 @@ void run_reduce(const ReduceOptions& o) {
     return app::reduce_wing_input_checked(
         wing, [&] { return reduction::extract_beam_properties(analysis, o.stations); });
   });
+  app::reduce_wing_input_checked(wing, [&] { reduction::check_bodies_outside_clamp(analysis, o.bodies); });
   claim.claim(o.force);
   io::write_beam_csv(dir / "beam.csv", beam);  // written even if the chain cannot be made
   monitor.stage("FEM modes");
