@@ -65,14 +65,12 @@ std::string static_mismatch_warning(const reduction::ChainFemComparison& c, cons
   if (missed.empty()) return "";
   return "the chain's static response differs from the FEM's under the same load: " + missed +
          ". The chain takes a load on a body as a wrench at its joints; the FEM answers to where on the body "
-         "it acts as well: too few bodies for the load (" +
-         std::string(bodies_shorter_than_elements(c)
-                         ? "they are already shorter than the FEM's elements: a finer [mesh] element_size"
-                         : "try more --bodies") +
-         "), or a wing that is not one beam (film "
-         "beyond a rod that carries the load chordwise, a swept wing: more bodies converge slowly), and the "
-         "chain's "
-         "runs inherit the error (docs/reduction.md, \"Measured limitation\"); see " +
+         "it acts as well: " +
+         more_bodies_advice(c) +
+         ", or a wing that is not one beam (film beyond a rod that carries the load chordwise, a swept wing: "
+         "more bodies converge slowly), and the chain's runs inherit the error (docs/reduction.md, "
+         "\"Measured "
+         "limitation\"); see " +
          report;
 }
 

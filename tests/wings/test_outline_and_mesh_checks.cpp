@@ -131,6 +131,14 @@ TEST(OutlineCsv, ANearlyRepeatedPointIsNamedAtItsLine) {
   auto e = expect_input_error([&] { w::load_wing_file((dir / "w.toml").string()); });
   EXPECT_EQ(e.line(), 5) << e.what();
   EXPECT_NE(e.message().find("point 3 nearly repeats point 2"), std::string::npos) << e.what();
+  // A closing point that far from the first (a drawing's rounding) closes the outline: it is
+  // dropped, not refused as a repeat of point 0.
+  EXPECT_EQ(w::read_wing(w::parse_toml_string(
+                             wing_text("outline = [[5.0, 0.0], [5.0, 40.0], [-5.0, 40.0], [-5.0, 0.0], "
+                                       "[5.0000001, 0.0000001]]\n"),
+                             "r.toml"))
+                .outline.size(),
+            4u);
   // 2e-6 of the size apart is a short edge, not a repeat: the wing loads (the sliver warning's
   // business, not an error).
   EXPECT_NO_THROW(w::read_wing(w::parse_toml_string(

@@ -236,4 +236,9 @@ PlanformProperties planform_properties(const Polygon& poly) {
   return p;
 }
 
+double clamp_span_share(const PlanformProperties& props, double clamp_y) {
+  const double range = props.span - props.root_y;  // [m]
+  return range > 0.0 ? (clamp_y - props.root_y) / range : 0.0;
+}
+
 }  // namespace flapsim::wings

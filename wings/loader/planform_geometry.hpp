@@ -98,4 +98,11 @@ struct PlanformProperties {
 };
 PlanformProperties planform_properties(const Polygon& polygon);
 
+/// Share of the outline's span range [root_y, span] that a root clamp up to \p clamp_y holds
+/// [-] (0 for an outline without a span range).
+double clamp_span_share(const PlanformProperties& props, double clamp_y);
+/// A clamp holding more than this share holds most of the wing: the wing file warns of it,
+/// and a reduction that finds no beam blames clamp_y (pipeline/app/reduction_input_limit.cpp).
+inline constexpr double kClampHoldsMost = 0.5;
+
 }  // namespace flapsim::wings

@@ -256,8 +256,8 @@ LatticeGap lattice_gap(const TomlTable& p, const std::vector<Eigen::Vector2d>& o
 // "numerical failure"; a 40 mm wing clamped to 39.9 mm passed check without a word).
 void check_clamp_share(const TomlTable& p, double clamp_y, const PlanformProperties& props,
                        std::vector<InputWarning>& warnings) {
-  const double range = props.span - props.root_y, held = (clamp_y - props.root_y) / range;
-  if (!(range > 0.0) || held <= 0.5) return;
+  const double held = clamp_span_share(props, clamp_y);
+  if (held <= kClampHoldsMost) return;
   warn(warnings, p, "clamp_y",
        "the clamp holds " + fmt(100.0 * held) + " % of the wing's span range (" +
            fmt(props.root_y / p.length_scale()) + " to " + fmt(props.span / p.length_scale()) + " " +
@@ -320,6 +320,9 @@ struct Planform {
   std::optional<DrawingFrame> drawing;  ///< an SVG outline_file: its map, for veins with drawing_id
   double span_scale = 1.0;              ///< `span`'s uniform scale of the outline as written [-]
   double chord_stretch = 1.0;           ///< `area`'s chordwise stretch of the outline [-]
+  /// Whether `span` or `area` moved the outline from where its points were written (by more
+  /// than 0.1 %): veins given by absolute `points` then no longer lie where they were drawn.
+  bool rescaled() const { return std::abs(span_scale - 1.0) > 1e-3 || std::abs(chord_stretch - 1.0) > 1e-3; }
 };
 
 // The outline of `shape = "..."` (ellipse, half_ellipse, rounded_rectangle) from its size keys.
@@ -427,7 +430,9 @@ Planform read_planform(const TomlTable& p, std::vector<InputWarning>& warnings) 
   if (outline_key != "shape") {
     double extent = 0.0;
     for (const auto& q : out.outline) extent = std::max(extent, q.cwiseAbs().maxCoeff());
-    drop_closing_point(out.outline, 1e-9 * extent);
+    // Within kNearRepeat of the first, as the near-repeat check below reads a repeat: a drawing
+    // program's closing point rounded apart from the first is closing, not an error.
+    drop_closing_point(out.outline, kNearRepeat * extent);
     if (out.outline.size() < 3)
       p.fail(outline_key, "an outline needs at least 3 points, found " + std::to_string(out.outline.size()));
   }
@@ -552,25 +557,23 @@ Planform read_planform(const TomlTable& p, std::vector<InputWarning>& warnings) 
 void check_absolute_veins_of_a_rescaled_outline(const Planform& planform, const TomlTable& p,
                                                 const std::vector<TomlTable>& veins,
                                                 std::vector<InputWarning>& warnings) {
+  if (!planform.rescaled()) return;
   const bool scaled = std::abs(planform.span_scale - 1.0) > 1e-3;
-  const bool stretched = std::abs(planform.chord_stretch - 1.0) > 1e-3;
-  if (!scaled && !stretched) return;
   for (const TomlTable& v : veins) {
     if (!v.has("points")) continue;
     std::string how;
     if (scaled)
       how = "scaled by " + fmt(planform.span_scale) +
             " to 'span' = " + fmt(p.get_length("span") / p.length_scale()) + " " + p.length_unit();
-    if (stretched)
+    if (std::abs(planform.chord_stretch - 1.0) > 1e-3)
       how += std::string(scaled ? " and " : "") + "stretched along the chord by " +
              fmt(planform.chord_stretch) + " to 'area'";
     warn(warnings, v, "points",
          "the outline is " + how +
-             ", but a vein's points are absolute positions and stay as written (the "
-             "veins with 'points' no longer lie where they were drawn on the outline): write them for the "
-             "rescaled "
-             "wing, or give them as chord_points (fractions of the span and the chord, which follow the "
-             "outline; "
+             ", but a vein's points are absolute positions and stay as written (the veins with 'points' no "
+             "longer lie where they were drawn on the outline): write them for the rescaled wing, or give "
+             "them "
+             "as chord_points (fractions of the span and the chord, which follow the outline; "
              "docs/wing_file.md)");
     return;  // once for the wing
   }
@@ -755,7 +758,7 @@ Vein read_vein(const TomlTable& v, std::size_t index, const Planform& planform,
                 fmt(distance_to_boundary(outline, q) / v.length_scale()) + " " + v.length_unit() +
                 " outside it (tolerance " + fmt(tol / v.length_scale()) + " " + v.length_unit() + ")" +
                 (planform.from_spline ? kSplineVeinHint : "") +
-                (abs_pts && (planform.span_scale != 1.0 || planform.chord_stretch != 1.0)
+                (abs_pts && planform.rescaled()
                      ? "; the outline was rescaled by 'span' or 'area', and a vein's points are absolute "
                        "positions that stay as written: write them for the rescaled wing, or as chord_points"
                      : "") +
@@ -897,11 +900,11 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
         mesh->get_length("vein_element_size", wing.mesh.element_size, Bounds::positive());
   }
   wing.clamp_y_line = planform_table.line_of("clamp_y");
-  if (const auto m = root.find_table("mesh"); m && m->has("element_size"))
-    wing.element_size_line = m->line_of("element_size");
   check_clamp_share(planform_table, wing.clamp_y, props, wing.warnings);
-  if (const auto m = root.find_table("mesh"); m && m->has("element_size"))
+  if (const auto m = root.find_table("mesh"); m && m->has("element_size")) {
+    wing.element_size_line = m->line_of("element_size");
     check_elements_across_chord(*m, wing.mesh.element_size, props, wing.warnings);
+  }
   if (const auto surface = root.find_table("surface")) wing.surface = read_surface_shape(*surface);
   // The mesh-size rules (mesh_budget.hpp): refused here, before gmsh runs out of memory.
   const auto mesh = root.find_table("mesh");
