@@ -163,6 +163,36 @@ TEST(OutlineCsv, VeinPointsOfARescaledOutlineAreWarned) {
   EXPECT_NE(warned("area = 800.0\n").find("stretched along the chord by 2"), std::string::npos);
 }
 
+// A CSV outline's numbers carry no unit: one in the wing's millimetres whose tip is at the
+// span was "scaled by 0.001 to 'span' = 40 mm" (the CSV's numbers against metres), warned for
+// every vein with points, and a vein a little off it was refused saying "the outline was
+// rescaled". Now a CSV is in the wing's length unit, or in units of the span when its tip is
+// at y = 1 (the shipped outlines; a vein's points are then the scaled wing's).
+TEST(OutlineCsv, ACsvOutlineInTheWingsUnitAtItsSpanIsNotRescaled) {
+  flapsim::test::ScratchDir dir("outline_csv_unit");
+  std::ofstream(dir / "mm.csv") << "x_mm,y_mm\n5,0\n5,40\n-5,40\n-5,0\n";
+  std::ofstream(dir / "r.csv") << "x,y\n0.125,0\n0.125,1\n-0.125,1\n-0.125,0\n";
+  auto warned = [&](const std::string& planform) {
+    std::ofstream(dir / "w.toml") << wing_text(planform);
+    const w::Wing wing = w::load_wing_file((dir / "w.toml").string());
+    for (const auto& warning : wing.warnings)
+      if (warning.key == "veins[0].points") return warning.message;
+    return std::string();
+  };
+  EXPECT_EQ(warned("outline_file = \"mm.csv\"\nspan = 40.0\n"), "");
+  EXPECT_NE(warned("outline_file = \"mm.csv\"\nspan = 80.0\n").find("scaled by 2 to 'span' = 80 mm"),
+            std::string::npos);
+  EXPECT_EQ(warned("outline_file = \"r.csv\"\nspan = 40.0\n"), "");
+  // The spar at x = 1 mm on a wing reaching x = -5 ... 5: moved to x = 6 mm it leaves the
+  // outline, and the error does not blame a rescaling that did not happen.
+  std::string text = wing_text("outline_file = \"mm.csv\"\nspan = 40.0\n");
+  text.replace(text.find("[[1.0, 0.0], [1.0, 30.0]]"), 25, "[[1.0, 0.0], [6.0, 30.0]]");
+  std::ofstream(dir / "off.toml") << text;
+  const auto e = expect_input_error([&] { w::load_wing_file((dir / "off.toml").string()); });
+  EXPECT_EQ(e.key(), "veins[0].points") << e.what();
+  EXPECT_EQ(std::string(e.what()).find("rescaled"), std::string::npos) << e.what();
+}
+
 TEST(OutlineCsv, AMissingOutlineFileIsTheWingFilesErrorAtItsLine) {
   // Before: "bow.csv: key 'planform.outline_file': the outline file does not exist" — the
   // missing file named, not the wing file and the line that names it.
@@ -353,4 +383,30 @@ TEST(OutlineLimits, AnOutlineOfMoreThanTheMostPointsIsRefusedAtThePointBeyond) {
         wing_text("shape = \"half_ellipse\"\nspan = 40.0\nchord = 12.0\noutline_points = 5001\n"), "s.toml"));
   });
   EXPECT_EQ(e.key(), "planform.outline_points") << e.what();
+}
+
+// A header with units ("x_mm,y_mm", "x [mm], y [mm]", "X_coord<tab>Y_coord") is a header: a
+// user's own swept-wing outline with "x_mm,y_mm" on line 1 was refused as "expected a line
+// "x,y" ... found "x_mm,y_mm"". A header naming the columns the other way round, or not as
+// x and y, is named at its line as a header, with what the columns must be.
+TEST(OutlineCsv, AHeaderWithUnitsIsAHeader) {
+  flapsim::test::ScratchDir dir("outline_csv_header_units");
+  for (const std::string header : {"x_mm,y_mm", "x [mm], y [mm]", "X_coord\tY_coord", "x,y"}) {
+    std::ofstream(dir / "o.csv") << header << "\n0.1,0\n0.1,1\n-0.2,1\n";
+    const auto o = w::read_outline_csv_lines((dir / "o.csv").string(), "k");
+    ASSERT_EQ(o.points.size(), 3u) << header;
+    EXPECT_EQ(o.lines[0], 2) << header;  // the header is line 1
+  }
+  for (const std::string header : {"y,x", "span,chord"}) {
+    std::ofstream(dir / "p.csv") << "# drawn by hand\n" << header << "\n0.1,0\n0.1,1\n-0.2,1\n";
+    const auto e = expect_input_error([&] { w::read_outline_csv((dir / "p.csv").string(), "k"); });
+    EXPECT_EQ(e.line(), 2) << header;
+    EXPECT_NE(std::string(e.what()).find("a header line names x first, then y"), std::string::npos)
+        << e.what();
+  }
+  // A data line with a typo stays a data error, not a header's.
+  std::ofstream(dir / "q.csv") << "x,y\n0.1,0\n0.1,1O\n-0.2,1\n";
+  const auto e = expect_input_error([&] { w::read_outline_csv((dir / "q.csv").string(), "k"); });
+  EXPECT_EQ(e.line(), 3);
+  EXPECT_NE(std::string(e.what()).find("expected a line"), std::string::npos) << e.what();
 }

@@ -46,6 +46,19 @@ bool two_fields(const std::string& t, std::string& a, std::string& b) {
   return true;
 }
 
+// A header line: two fields, the first a name starting with x, the second one starting with y,
+// either maybe followed by a unit or a note ("x_mm", "x [mm]", "X_coord"; case ignored). The
+// unit is not read: a CSV outline is scaled to the wing file's `span`.
+bool is_header(const std::string& t) {
+  std::string a, b;
+  if (!two_fields(t, a, b)) return false;
+  const auto starts_with = [](const std::string& field, char letter) {
+    const std::string f = trim(field);
+    return !f.empty() && std::tolower(static_cast<unsigned char>(f[0])) == letter;
+  };
+  return starts_with(a, 'x') && starts_with(b, 'y');
+}
+
 }  // namespace
 
 OutlineCsv read_outline_csv_lines(const std::string& path, const std::string& key) {
@@ -63,16 +76,18 @@ OutlineCsv read_outline_csv_lines(const std::string& path, const std::string& ke
       throw InputError(path, line_no, key, "the outline file holds a NUL byte: not a text file");
     const std::string t = trim(line_no == 1 ? without_byte_order_mark(line) : line);
     if (t.empty() || t[0] == '#') continue;
-    if (!header_seen) {
-      header_seen = true;
-      std::string compact;
-      for (char c : t)
-        if (c != ' ' && c != '\t') compact += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      if (compact == "x,y" || compact == "xy") continue;  // "x,y", "X<tab>Y"
-      // No header: fall through and read the line as data.
-    }
     std::string xs, ys;
     double x = 0.0, y = 0.0;
+    if (!header_seen) {
+      header_seen = true;
+      if (is_header(t)) continue;  // "x,y", "X<tab>Y", "x_mm,y_mm", "x [mm], y [mm]"
+      if (two_fields(t, xs, ys) && !parse_number(xs, x) && !parse_number(ys, y))
+        throw InputError(path, line_no, key,
+                         "a header line names x first, then y (\"x,y\", \"x [mm],y [mm]\"), found \"" +
+                             t.substr(0, 80) + (t.size() > 80 ? "..." : "") +
+                             "\": x is the chordwise and y the spanwise coordinate (docs/wing_file.md)");
+      // No header: fall through and read the line as data.
+    }
     if (!two_fields(t, xs, ys) || !parse_number(xs, x) || !parse_number(ys, y))
       throw InputError(path, line_no, key,
                        "expected a line \"x,y\" (or x and y separated by tabs or spaces) with two finite "

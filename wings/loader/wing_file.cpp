@@ -459,6 +459,12 @@ Planform read_planform(const TomlTable& p, std::vector<InputWarning>& warnings) 
     const double k = span / max_y;
     for (auto& q : out.outline) q *= k;
     out.span_scale = k;
+    // A CSV's numbers carry no unit. With its tip at y = 1 it is in units of the span (the
+    // shipped outlines), and a vein's points can only have been written for the scaled wing;
+    // otherwise it is taken in the wing's length unit, and `span` rescales it when it differs
+    // from the CSV's own tip (a 60 mm outline with span = 60 mm is not rescaled).
+    if (from_file && !from_drawing)
+      out.span_scale = std::abs(max_y - 1.0) <= 1e-3 ? 1.0 : k / p.length_scale();
     if (out.drawing) out.drawing->scale = k;
     max_y = span;
   }
