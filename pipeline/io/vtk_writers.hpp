@@ -2,7 +2,7 @@
 /// \file vtk_writers.hpp
 /// \brief VTK XML output (.vtp poly data, .vtu unstructured grids) from plain
 /// Eigen/std data, so callers need no VTK headers. Files are binary (appended,
-/// zlib-compressed), readable by ParaView and VTK's XML readers, written to a
+/// LZ4-compressed), readable by ParaView 5.5 and later and VTK's XML readers, written to a
 /// temporary name and renamed.
 
 #include <Eigen/Core>
