@@ -47,6 +47,10 @@ TEST(OptimizeErrors, BadInputExitsTwoNamingTheOptionWithNothingWritten) {
        "differs from run to run"},
       {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize mean_lift_N --constraint 'mean_lift_N=1'",
        "--constraint", "RESULT>=X"},
+      // Unquoted, `--constraint mean_lift_N>=0.002` reaches flapsim as the name alone (the shell
+      // redirects to a file '=0.002'): the message said only "expected RESULT>=X".
+      {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize mean_power_W --constraint mean_lift_N",
+       "--constraint", "quote it, --constraint 'mean_lift_N>=X': unquoted, the shell reads '>'"},
       {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize mean_lift_N --constraint 'lift>=1'",
        "--constraint", "not a result"},
       {"--vary kinematics.rotation_phase=-0.1:0.1 --maximize mean_lift_N --constraint 'mean_lift_N>=x'",

@@ -97,9 +97,17 @@ Constraint parse_constraint(const std::string& text) {
     op = text.find("<=");
     c.at_least = false;
   }
-  if (op == std::string::npos)
+  if (op == std::string::npos) {
+    // `--constraint mean_lift_N>=0.002` unquoted: the shell takes '>' for a redirection, writes
+    // a file named '=0.002' and passes the name alone.
+    const bool name_alone = text.find_first_of("<>= ") == std::string::npos && !text.empty();
     throw InputError("", 0, "--constraint",
-                     "'" + text + "': expected RESULT>=X or RESULT<=X, e.g. mean_lift_N>=0.0125");
+                     "'" + text + "': expected RESULT>=X or RESULT<=X, e.g. mean_lift_N>=0.0125" +
+                         (name_alone ? std::string("; quote it, --constraint '") + text +
+                                           ">=X': unquoted, the shell reads '>' as a redirection (and "
+                                           "writes a file named '=X' in the current folder)"
+                                     : std::string()));
+  }
   c.result = parse_result(trimmed(text.substr(0, op)), "--constraint");
   if (!read_number(text.substr(op + 2), c.limit))
     throw InputError("", 0, "--constraint", "'" + text + "': the limit is not a finite number");
