@@ -9,6 +9,7 @@
 #include <limits>
 #include <cstdio>
 
+#include "pipeline/app/frames_size.hpp"
 #include "pipeline/app/run_history.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
 #include "uvlm/segment_tree.hpp"
@@ -18,14 +19,6 @@
 namespace flapsim::app {
 
 namespace {
-
-std::string bytes_text(double b) {
-  char buf[32];
-  if (b >= 1e9) std::snprintf(buf, sizeof buf, "%.3g GB", b / 1e9);
-  else if (b >= 1e6) std::snprintf(buf, sizeof buf, "%.3g MB", b / 1e6);
-  else std::snprintf(buf, sizeof buf, "%.3g kB", b / 1e3);
-  return buf;
-}
 
 std::string seconds_text(double s) {
   char buf[32];
@@ -48,6 +41,17 @@ double sum_quadratic(F f, double from, double to) {
 }
 
 }  // namespace
+
+std::string bytes_text(double b) {
+  char buf[32];
+  if (b >= 1e9)
+    std::snprintf(buf, sizeof buf, "%.3g GB", b / 1e9);
+  else if (b >= 1e6)
+    std::snprintf(buf, sizeof buf, "%.3g MB", b / 1e6);
+  else
+    std::snprintf(buf, sizeof buf, "%.3g kB", b / 1e3);
+  return buf;
+}
 
 double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precision) {
   switch (isa) {
@@ -184,6 +188,7 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
     e.fem_seconds = steps * (newton + coupling) * kFemSecondsPerStep1000 * std::pow(n_fem / 1000.0, kFemDofsExponent);
   }
   e.memory_bytes = memory;
+  e.frames_bytes = frames_bytes(c, c.output.vtk_every, fem_dofs / 6);  // 6 DOFs a shell node
   e.setup_memory_bytes = fem_memory_bytes(reduced_fem_dofs);
   e.isa = uvlm::kernel_isa();
   e.interactions_per_second =
@@ -208,6 +213,7 @@ std::string describe(const RunEstimate& e) {
   if (e.setup_memory_bytes > 0.0)
     memory +=
         " (and ~" + bytes_text(e.setup_memory_bytes) + " before it, for the wing's FEM reduced in the setup)";
+  if (e.frames_bytes > 0.0) memory += ", ParaView frames ~" + bytes_text(e.frames_bytes) + " on disk";
   std::snprintf(buf, sizeof buf,
                 "estimate: %lld steps, up to %lld wake panels, memory ~%s, %.2g Biot-Savart interactions, "
                 "%.2g lattice LU flop, %s, time of the order of %s (one thread, %s kernel at a nominal %.2g "

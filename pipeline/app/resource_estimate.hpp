@@ -26,6 +26,7 @@ struct RunEstimate {
   std::int64_t steps = 0;          ///< time steps
   std::int64_t wake_panels = 0;    ///< largest wake [panels]
   double memory_bytes = 0.0;       ///< peak memory of the run's arrays [B]
+  double frames_bytes = 0.0;       ///< the ParaView frames of output.vtk_every on disk (frames_size.hpp) [B]
   /// The FEM of a wing reduced in the setup (its matrices, factor and modes), freed before the
   /// run, 0 if none [B]: shown beside memory_bytes, not refused (the setup has run by the time
   /// it is known). The hawkmoth's, 27,618 DOFs: 155 MB, where the run's arrays are 64 MB
@@ -104,6 +105,9 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs = 0, int re
 /// Memory of a FEM of \p dofs DOFs: its sparse factor (about 30 n log2 n entries of 8 B plus
 /// indices, nested dissection) and 40 n numbers of matrices and vectors [B].
 double fem_memory_bytes(double dofs);
+
+/// "64.8 MB", "2.2 GB", "386 kB": a size for a message.
+std::string bytes_text(double bytes);
 
 /// One line: "estimate: N steps, up to W wake panels, memory ~X, ~Y interactions, ~T".
 std::string describe(const RunEstimate& e);

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "fem/wing_mesher.hpp"
+#include "pipeline/app/frames_size.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/app/low_reynolds_warning.hpp"
 #include "pipeline/app/numerical_stage.hpp"
@@ -78,6 +79,10 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
   }
   const app::RunEstimate estimate = app::estimate_run(c, bodies, fem_dofs, reduced_fem_dofs);
   app::refuse_if_it_cannot_fit(estimate, c);
+  // The folder of a run is not known here (run -o): the size alone is warned.
+  if (const std::string w = app::frames_size_warning(c, c.output.vtk_every, fem_dofs / 6, std::nullopt);
+      !w.empty())
+    std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   text += reynolds;
   text += "  " + app::describe(estimate) + "\n";
   if (wing) {
@@ -142,7 +147,8 @@ void add_check_command(CLI::App& app) {
       "and numerics, and checks the wing file it names.\n"
       "Check validates what run and mesh would: the chain file, a wing for a run in air,\n"
       "loads and markers on existing bodies, the wing meshed by gmsh (no file written), the\n"
-      "mesh-size budget, and the run's estimate (memory, interactions, time) against the memory.\n"
+      "mesh-size budget, and the run's estimate (memory, ParaView frames on disk, interactions, time) "
+      "against the memory.\n"
       "For a flexible case it builds the chain as run does (from --chain, the case's 'chain', or\n"
       "the wing reduced in process) and warns about a chain that does not match the wing, one\n"
       "driven above or near its resonance (docs/case_file.md, \"Warnings\").\n"

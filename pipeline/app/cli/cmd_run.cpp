@@ -12,14 +12,16 @@
 #include <string>
 
 #include "pipeline/app/flexibility_warnings.hpp"
+#include "pipeline/app/frames_size.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/resource_estimate.hpp"
-#include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/run_results.hpp"
+#include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/stage_monitor.hpp"
 #include "pipeline/app/watched_setup.hpp"
 #include "pipeline/io/case_file.hpp"
+#include "pipeline/io/free_space.hpp"
 #include "pipeline/io/output_manifest.hpp"
 
 namespace flapsim::cli {
@@ -66,14 +68,22 @@ void run_command(const RunArgs& a) {
   options.before_start = [&](const app::FsiSetup& setup) {
     app::record_interrupt(setup_watch.done());
     app::throw_if_interrupted("during the run's setup; nothing was written");
-    const app::RunEstimate estimate = app::estimate_run(
-        c, setup.chain().num_bodies(), setup.fem_structure ? setup.fem_structure->num_dofs() : 0);
+    io::Case sized = c;  // with --vtk-every's interval, for the frames' size
+    sized.output.vtk_every = options.vtk_every.value_or(c.output.vtk_every);
+    const int fem_dofs = setup.fem_structure ? setup.fem_structure->num_dofs() : 0;
+    const app::RunEstimate estimate = app::estimate_run(sized, setup.chain().num_bodies(), fem_dofs);
     // A run estimated over an hour says so even with -q (a 170-day run once started silently).
     if ((!a.quiet && (estimate.seconds > app::kLongRunSeconds || estimate.memory_bytes > 1e9)) ||
         estimate.seconds > app::kVeryLongRunSeconds)
       std::fprintf(stderr, "%s\n", app::describe(estimate).c_str());
     app::refuse_if_it_cannot_fit(estimate, c);
     for (const std::string& w : app::setup_warnings(c, setup)) {
+      std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
+      setup_notes.push_back(app::warning_headline(w));
+    }
+    if (const std::string w = app::frames_size_warning(sized, sized.output.vtk_every, fem_dofs / 6,
+                                                       io::free_bytes_where(options.output_dir));
+        !w.empty()) {
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
       setup_notes.push_back(app::warning_headline(w));
     }
@@ -128,7 +138,8 @@ void add_run_command(CLI::App& app) {
       "Also writes run.pvsm, a ParaView state of the series and the lift (docs/fsi.md).\n"
       "One run per folder: a rerun replaces the previous run's files (DIR/flapsim_outputs.toml);\n"
       "another command's files that would be replaced need --force. A long run prints its\n"
-      "estimate (memory, interactions, time) first; a run that cannot fit in memory is refused.\n"
+      "estimate (memory, ParaView frames on disk, interactions, time) first; a run that cannot fit in memory "
+      "is refused.\n"
       "SIGINT/SIGTERM finish the step, flush the outputs and write summary.json (status\n"
       "\"interrupted\").\n"
       "Exit status: 0 ok, 1 usage, 2 bad input, 3 numerical failure (outputs so far stay valid),\n"
