@@ -48,3 +48,21 @@ TEST(ShortBodiesWarning, BodiesShorterThanTheElementsAreWarnedWithTheLargestCoun
   EXPECT_LT(bending_error(many_summary), -0.05) << many_summary;
   EXPECT_LT(std::abs(bending_error(test::read_text(dir / "few" / "summary.json"))), 0.02);
 }
+
+// Far shorter bodies make the reduction fail: the hawkmoth (mean edge 0.461 mm) at 500 and 1000
+// bodies stopped after 23 and 40 s with "chain: body 483: mass must be > 0" and "the joints'
+// compliance ... is not positive definite; ... use fewer bodies", with no count to try. The
+// failure now says how short the bodies are and the largest count that is not.
+TEST(ShortBodiesWarning, AReductionThatFailsOnBodiesShorterThanTheElementsNamesTheLargestCountThatIsNot) {
+  test::ScratchDir dir("short_bodies_failure");
+  // 300 bodies on the fly's 2.51 mm axis: 0.00836 mm each, a fifth of the 0.0463 mm edge.
+  const auto failed = run_flapsim_capturing_stderr(
+      dir.path(),
+      "reduce " + kShortBodiesFly + " --bodies 300 --modes 6 --threads 1 -o " + (dir / "out").string());
+  EXPECT_EQ(failed.status, 3) << failed.err;
+  EXPECT_NE(failed.err.find("the chain's 300 bodies are 0.00836 mm long, shorter than the FEM's mean element "
+                            "edge (0.0463 mm)"),
+            std::string::npos)
+      << failed.err;
+  EXPECT_NE(failed.err.find("use at most 54 bodies"), std::string::npos) << failed.err;
+}
