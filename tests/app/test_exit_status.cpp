@@ -89,8 +89,8 @@ TEST(ExitStatus, TwoForACaseWhoseWingReducedInProcessLeavesNoBodyFree) {
   std::ofstream(dir / "w.toml") << replace_once(read_text(kTinyWing), "clamp_y = 0.0", "clamp_y = 9.6");
   std::ofstream(dir / "c.toml") << replace_once(read_text(kTinyCase), "wing = \"valid_tiny_wing.toml\"",
                                                 "wing = \"w.toml\"");
-  for (const std::string command : {"check " + (dir / "c.toml").string(),
-                                    "run " + (dir / "c.toml").string() + " -o " + (dir / "out").string()}) {
+  for (const std::string& command : {"check " + (dir / "c.toml").string(),
+                                     "run " + (dir / "c.toml").string() + " -o " + (dir / "out").string()}) {
     const FlapsimOutcome o = run_flapsim_capturing_stderr(dir.path(), command);
     EXPECT_EQ(o.status, 2) << command << ": " << o.err;
     EXPECT_NE(
