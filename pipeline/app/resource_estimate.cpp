@@ -181,7 +181,7 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
     // nested-dissection count) and the measured CPU time of a step (resource_estimate.hpp).
     const double n_fem = fem_dofs;
     e.fem_dofs = fem_dofs;
-    memory += fem_memory_bytes(n_fem);
+    memory += kFemStructureMemoryFactor * fem_memory_bytes(n_fem) + kMesherBytes;
     const double per_cycle = std::max(1.0, static_cast<double>(n.steps_per_cycle)) / 100.0;
     const double newton = std::pow(per_cycle, -kFemStepsPerCycleExponent);
     const double coupling = c.air.enabled ? kFemCouplingStepShare : 0.0;  // in vacuum nothing to couple

@@ -103,8 +103,21 @@ inline constexpr double kFemCouplingStepShare = 0.40;
 RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs = 0, int reduced_fem_dofs = 0);
 
 /// Memory of a FEM of \p dofs DOFs: its sparse factor (about 30 n log2 n entries of 8 B plus
-/// indices, nested dissection) and 40 n numbers of matrices and vectors [B].
+/// indices, nested dissection) and 40 n numbers of matrices and vectors [B]. The linear FEM
+/// of a reduction in the setup: the hawkmoth's, 27 618 DOFs, 156 MB, a measured peak of 153 MB.
 double fem_memory_bytes(double dofs);
+
+/// The FEM as the structure (kind = "fem", geometrically nonlinear) holds more than the
+/// linear FEM: the tangent matrix, the kept factorisation and the one that renews it, the
+/// generalised-α state. Its peak over fem_memory_bytes, fitted (least squares of the slope)
+/// on four runs of a 60 mm swept film wing at 2322, 7518, 26 880 and 53 490 DOFs (peaks of
+/// 92, 138, 348 and 630 MB, 100 steps in air; 4 Dec 2026, 2-core AMD EPYC): 1.7; before, the
+/// estimate took 1, and said 74, 102, 215 and 384 MB (the hawkmoth FEM hover: 220 MB for a
+/// peak of 367 MB).
+inline constexpr double kFemStructureMemoryFactor = 1.7;
+/// The mesher (gmsh and OpenCASCADE, loaded to mesh the wing in the run's setup) beyond the
+/// fixed allowance [B]: the same four runs' intercept.
+inline constexpr double kMesherBytes = 15e6;
 
 /// "64.8 MB", "2.2 GB", "386 kB": a size for a message.
 std::string bytes_text(double bytes);

@@ -285,7 +285,8 @@ TEST(RunEstimate, TheLatticesFactorisationsAreCounted) {
 // and modes come before the run and need more than the run's arrays. check's estimate said
 // "memory ~64.3 MB" of a process that peaked at 153 MB (`run cases/hover_flexible.toml`, one
 // cycle, one thread, peak RSS; 25 MB with a chain file; 4 Dec). The setup's FEM is estimated
-// as a FEM structure's is: within 25 % of the measured peak for the hawkmoth's 27,618 DOFs.
+// with the linear FEM's count (fem_memory_bytes): within 25 % of the measured peak for the hawkmoth's 27,618
+// DOFs.
 TEST(RunEstimate, TheSetupsReductionOfTheWingIsEstimatedBesideTheRun) {
   const flapsim::io::Case c =
       flapsim::io::load_case_file(std::string(FLAPSIM_SOURCE_DIR) + "/cases/hover_flexible.toml");
