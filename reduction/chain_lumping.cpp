@@ -43,40 +43,6 @@ void check_bodies_outside_clamp(const ClampedWingAnalysis& analysis, int num_bod
 namespace {
 
 LumpedChain lump_into_chain_as_asked(const ClampedWingAnalysis& analysis, int num_bodies,
-                                     SpringModel springs);
-
-}  // namespace
-
-LumpedChain lump_into_chain(const ClampedWingAnalysis& analysis, int num_bodies, SpringModel springs) {
-  check_bodies_outside_clamp(analysis, num_bodies);
-  try {
-    return lump_into_chain_as_asked(analysis, num_bodies, springs);
-  } catch (const ReductionInputLimit&) {
-    throw;
-  } catch (const std::bad_alloc&) {
-    throw;
-  } catch (const std::exception& e) {
-    // Bodies shorter than the FEM's elements: adjacent sections are measured from nearly the
-    // same nodes, and a strip may hold none. The hawkmoth (mean edge 0.461 mm) reduced to 300
-    // bodies (0.16 mm) and failed at 500 ("chain: body 483: mass must be > 0") and 1000 ("the
-    // joints' compliance ... is not positive definite"), after 23 and 40 s, without a count.
-    const double a = analysis.s_tip() / num_bodies, edge = analysis.element_size();
-    if (!(edge > 0.0 && a < edge)) throw;
-    const int most = std::max(1, static_cast<int>(std::floor(analysis.s_tip() / edge)));
-    char advice[320];
-    std::snprintf(
-        advice, sizeof advice,
-        "; the chain's %d bodies are %.3g mm long, shorter than the FEM's mean element edge (%.3g mm), "
-        "so neighbouring sections are measured from nearly the same nodes: use at most %d bodies, or "
-        "a finer [mesh] element_size (docs/reduction.md, \"Bodies shorter than the elements\")",
-        num_bodies, a * 1e3, edge * 1e3, most);
-    throw ReductionFailure(std::string(e.what()) + advice);
-  }
-}
-
-namespace {
-
-LumpedChain lump_into_chain_as_asked(const ClampedWingAnalysis& analysis, int num_bodies,
                                      SpringModel springs) {
   const AxisFrame& ax = analysis.axis();
   const Eigen::Matrix3d r_wa = ax.rotation();
@@ -149,5 +115,32 @@ LumpedChain lump_into_chain_as_asked(const ClampedWingAnalysis& analysis, int nu
 }
 
 }  // namespace
+
+LumpedChain lump_into_chain(const ClampedWingAnalysis& analysis, int num_bodies, SpringModel springs) {
+  check_bodies_outside_clamp(analysis, num_bodies);
+  try {
+    return lump_into_chain_as_asked(analysis, num_bodies, springs);
+  } catch (const ReductionInputLimit&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    // Bodies shorter than the FEM's elements: adjacent sections are measured from nearly the
+    // same nodes, and a strip may hold none. The hawkmoth (mean edge 0.461 mm) reduced to 300
+    // bodies (0.16 mm) and failed at 500 ("chain: body 483: mass must be > 0") and 1000 ("the
+    // joints' compliance ... is not positive definite"), after 23 and 40 s, without a count.
+    const double a = analysis.s_tip() / num_bodies, edge = analysis.element_size();
+    if (!(edge > 0.0 && a < edge)) throw;
+    const int most = std::max(1, static_cast<int>(std::floor(analysis.s_tip() / edge)));
+    char advice[320];
+    std::snprintf(
+        advice, sizeof advice,
+        "; the chain's %d bodies are %.3g mm long, shorter than the FEM's mean element edge (%.3g mm), "
+        "so neighbouring sections are measured from nearly the same nodes: use at most %d bodies, or "
+        "a finer [mesh] element_size (docs/reduction.md, \"Bodies shorter than the elements\")",
+        num_bodies, a * 1e3, edge * 1e3, most);
+    throw ReductionFailure(std::string(e.what()) + advice);
+  }
+}
 
 }  // namespace flapsim::reduction

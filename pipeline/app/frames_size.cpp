@@ -4,19 +4,21 @@
 #include <cmath>
 #include <cstdio>
 
+#include "fem/mesh.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "uvlm/leading_edge_sheet.hpp"
 
 namespace flapsim::app {
 
-double frames_bytes(const io::Case& c, int vtk_every, int fem_nodes) {
+double frames_bytes(const io::Case& c, int vtk_every, int fem_dofs) {
   if (vtk_every <= 0) return 0.0;
   const auto& n = c.numerics;
   const double steps = static_cast<double>(n.total_steps());
   const double every = vtk_every;
   const double frames = std::floor(steps / every) + 1.0;  // steps 0, N, 2N, ...
   const double ns = n.spanwise_panels;
-  const double structure = fem_nodes > 0 ? kFemFrameBytesPerNode * fem_nodes : kChainFrameBytes;
+  const double structure =
+      fem_dofs > 0 ? kFemFrameBytesPerNode * fem_dofs / fem::kDofsPerNode : kChainFrameBytes;
   if (!c.air.enabled) return frames * structure;
   const double wing = kWingFrameBytes + kWingFrameBytesPerPanel * n.chordwise_panels * ns;
   const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
@@ -35,16 +37,16 @@ double frames_bytes(const io::Case& c, int vtk_every, int fem_nodes) {
   return frames * (structure + wing + kWakeFrameBytes) + kWakeFrameBytesPerRing * rings;
 }
 
-std::string frames_size_warning(const io::Case& c, int vtk_every, int fem_nodes,
-                                std::optional<double> free_bytes) {
-  const double bytes = frames_bytes(c, vtk_every, fem_nodes);
+std::string frames_size_warning(const io::Case& c, int fem_dofs, std::optional<double> free_bytes) {
+  const int vtk_every = c.output.vtk_every;
+  const double bytes = frames_bytes(c, vtk_every, fem_dofs);
   const bool over_disk = free_bytes && bytes > *free_bytes;
   if (vtk_every <= 0 || !(bytes > kLargeFramesBytes || over_disk)) return "";
   // The interval that brings them under the limit: every part falls about as 1/N.
   const double limit = over_disk ? std::min(kLargeFramesBytes, 0.5 * *free_bytes) : kLargeFramesBytes;
   int every = static_cast<int>(std::min(std::ceil(bytes / limit) * vtk_every, 1e9));
-  while (every < 1e9 && frames_bytes(c, every, fem_nodes) > limit) every = std::min(2 * every, 1000000000);
-  const double fewer = frames_bytes(c, every, fem_nodes);
+  while (every < 1e9 && frames_bytes(c, every, fem_dofs) > limit) every = std::min(2 * every, 1000000000);
+  const double fewer = frames_bytes(c, every, fem_dofs);
   char head[160];
   std::snprintf(head, sizeof head,
                 "the run's ParaView frames will take about %s on disk (a frame every %d step%s",

@@ -33,14 +33,14 @@ inline constexpr double kLargeFramesBytes = 1e9;
 
 /// \brief The ParaView frames a run of the case writes [B]: a frame every \p vtk_every steps
 /// from step 0 (0: none), of the wing and the wake (in air; with leading_edge = "shed" the
-/// wake's frame holds the sheet's rings too) and of the structure (a chain, or the FEM's
-/// \p fem_nodes nodes).
-double frames_bytes(const io::Case& c, int vtk_every, int fem_nodes);
+/// wake's frame holds the sheet's rings too) and of the structure (a chain, or the FEM of
+/// \p fem_dofs DOFs, fem::kDofsPerNode a node).
+double frames_bytes(const io::Case& c, int vtk_every, int fem_dofs);
 
-/// \brief "" or the warning for frames (frames_bytes) over kLargeFramesBytes, or over
-/// \p free_bytes (the space left where the run writes, when known), with the `vtk_every`
-/// that brings them under kLargeFramesBytes.
-std::string frames_size_warning(const io::Case& c, int vtk_every, int fem_nodes,
-                                std::optional<double> free_bytes);
+/// \brief "" or the warning for the frames of the case's output.vtk_every (frames_bytes) over
+/// kLargeFramesBytes, or over \p free_bytes (the space left where the run writes, when
+/// known), with the interval that keeps them under kLargeFramesBytes (and, over the free
+/// space, under half of it).
+std::string frames_size_warning(const io::Case& c, int fem_dofs, std::optional<double> free_bytes);
 
 }  // namespace flapsim::app

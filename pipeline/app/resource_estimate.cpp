@@ -188,7 +188,7 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
     e.fem_seconds = steps * (newton + coupling) * kFemSecondsPerStep1000 * std::pow(n_fem / 1000.0, kFemDofsExponent);
   }
   e.memory_bytes = memory;
-  e.frames_bytes = frames_bytes(c, c.output.vtk_every, fem_dofs / 6);  // 6 DOFs a shell node
+  e.frames_bytes = frames_bytes(c, c.output.vtk_every, fem_dofs);
   e.setup_memory_bytes = fem_memory_bytes(reduced_fem_dofs);
   e.isa = uvlm::kernel_isa();
   e.interactions_per_second =

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "common/run_flapsim.hpp"
@@ -15,6 +16,7 @@
 #include "pipeline/app/frames_size.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/io/case_file.hpp"
+#include "pipeline/io/free_space.hpp"
 
 namespace {
 
@@ -66,31 +68,50 @@ TEST(FramesSize, TheEstimateIsTheSizeOfTheFramesTheRunWrites) {
   }
 }
 
+// The interval a warning names, from its text.
+int named_interval(const std::string& warning) {
+  const auto at = warning.find("vtk_every = ");
+  return at == std::string::npos ? -1 : std::stoi(warning.substr(at + 12));
+}
+
 TEST(FramesSize, ALongRunsFramesAreWarnedWithTheIntervalThatKeepsThemUnderAGigabyte) {
   const test::ScratchDir dir("frames_size_warning");
-  std::ofstream(dir / "long.toml") << flapped_plate(200,
-                                                    1);  // 6000 steps: the wake's frames grow to 60 000 rings
-  const io::Case c = io::load_case_file((dir / "long.toml").string());
-  const double bytes = app::frames_bytes(c, 1, 0);
-  ASSERT_GT(bytes, 5e9);  // about 50 B a ring: sum over 6000 frames of 10 k rings, 9.6e9 B
-  const std::string w = app::frames_size_warning(c, 1, 0, std::nullopt);
-  const auto at = w.find("vtk_every = ");
-  ASSERT_NE(at, std::string::npos) << w;
-  const int every = std::stoi(w.substr(at + 12));
+  // 6000 steps: the wake's frames grow to 60 000 rings.
+  std::ofstream(dir / "long.toml") << flapped_plate(200, 1);
+  io::Case c = io::load_case_file((dir / "long.toml").string());
+  ASSERT_GT(app::frames_bytes(c, 1, 0), 5e9);  // about 50 B a ring: 6000 frames of 30 000 rings on average
+  const std::string w = app::frames_size_warning(c, 0, std::nullopt);
+  const int every = named_interval(w);
+  ASSERT_GT(every, 1) << w;
   EXPECT_LE(app::frames_bytes(c, every, 0), app::kLargeFramesBytes) << w;
   EXPECT_GT(app::frames_bytes(c, every / 2, 0), app::kLargeFramesBytes) << w;  // not far more than needed
-  // None written, no warning; a short run's, none either; more than the disk has, said so.
-  EXPECT_EQ(app::frames_size_warning(c, 0, 0, std::nullopt), "");
+  // A short run's, no warning; more than the disk has, said so, with an interval that fills
+  // at most half of it.
   std::ofstream(dir / "short.toml") << flapped_plate(4, 1);
   const io::Case s = io::load_case_file((dir / "short.toml").string());
-  EXPECT_EQ(app::frames_size_warning(s, 1, 0, std::nullopt), "");
-  const std::string full = app::frames_size_warning(s, 1, 0, 1e5);
-  EXPECT_NE(full.find("more than the 100 kB free where the run writes"), std::string::npos) << full;
+  EXPECT_EQ(app::frames_size_warning(s, 0, std::nullopt), "");
+  const std::string full = app::frames_size_warning(s, 0, 1e6);
+  EXPECT_NE(full.find("more than the 1 MB free where the run writes"), std::string::npos) << full;
+  EXPECT_LE(app::frames_bytes(s, named_interval(full), 0), 0.5e6) << full;
+  // None written (vtk_every = 0, or run --vtk-every 0), none warned.
+  c.output.vtk_every = 0;
+  EXPECT_EQ(app::frames_bytes(c, 0, 0), 0.0);
+  EXPECT_EQ(app::frames_size_warning(c, 0, std::nullopt), "");
   // check says it, beside the estimate.
   const auto outcome =
       test::run_flapsim_capturing_stderr(dir.path(), "check '" + (dir / "long.toml").string() + "'");
   EXPECT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_NE(outcome.err.find("the run's ParaView frames will take about"), std::string::npos) << outcome.err;
+}
+
+// The space left where a run writes, for an output folder not made yet: its nearest existing
+// parent's (source: std::filesystem::space of that folder, asked again; the two calls a moment
+// apart agree within 1 %).
+TEST(FramesSize, TheFreeSpaceOfAFolderNotMadeYetIsItsParentsFileSystems) {
+  const test::ScratchDir dir("frames_size_free_space");
+  const std::optional<double> free = io::free_bytes_where(dir / "not" / "made" / "yet");
+  ASSERT_TRUE(free.has_value());
+  EXPECT_NEAR(*free / static_cast<double>(fs::space(dir.path()).available), 1.0, 0.01);
 }
 
 }  // namespace

@@ -15,15 +15,20 @@ using test::run_flapsim_capturing_stderr;
 namespace {
 const std::string kShortBodiesSource = FLAPSIM_SOURCE_DIR;
 const std::string kShortBodiesFly = kShortBodiesSource + "/tests/data/fruitfly_2500um_wing.toml";
+
+// `flapsim reduce` of the fly to `bodies` bodies into DIR/OUT (its first 6 modes, one thread).
+test::FlapsimOutcome reduce_fly(const test::ScratchDir& dir, int bodies, const std::string& out) {
+  return run_flapsim_capturing_stderr(dir.path(), "reduce " + kShortBodiesFly + " --bodies " +
+                                                      std::to_string(bodies) + " --modes 6 --threads 1 -o " +
+                                                      (dir / out).string());
+}
 }  // namespace
 
 TEST(ShortBodiesWarning, BodiesShorterThanTheElementsAreWarnedWithTheLargestCountThatIsNot) {
   test::ScratchDir dir("short_bodies");
   // 100 bodies on the 2.51 mm axis from the pivot: 0.0251 mm each, on elements of 0.0463 mm mean
   // edge (span / 50, the default, asked of gmsh): warned, with at most floor(2.51 / 0.0463) = 54.
-  const auto many = run_flapsim_capturing_stderr(
-      dir.path(),
-      "reduce " + kShortBodiesFly + " --bodies 100 --modes 6 --threads 1 -o " + (dir / "many").string());
+  const auto many = reduce_fly(dir, 100, "many");
   ASSERT_EQ(many.status, 0) << many.err;
   EXPECT_NE(
       many.err.find(
@@ -35,9 +40,7 @@ TEST(ShortBodiesWarning, BodiesShorterThanTheElementsAreWarnedWithTheLargestCoun
   // Its first bending (measured -9.5 %) is more than 5 % off where 6 bodies are within 2 %
   // (+0.95 %): the warning is about a real loss.
   const std::string many_summary = test::read_text(dir / "many" / "summary.json");
-  const auto few = run_flapsim_capturing_stderr(
-      dir.path(),
-      "reduce " + kShortBodiesFly + " --bodies 6 --modes 6 --threads 1 -o " + (dir / "few").string());
+  const auto few = reduce_fly(dir, 6, "few");
   ASSERT_EQ(few.status, 0) << few.err;
   EXPECT_EQ(few.err.find("shorter than the FEM's mean element edge"), std::string::npos) << few.err;
   auto bending_error = [](const std::string& json) {
@@ -56,9 +59,7 @@ TEST(ShortBodiesWarning, BodiesShorterThanTheElementsAreWarnedWithTheLargestCoun
 TEST(ShortBodiesWarning, AReductionThatFailsOnBodiesShorterThanTheElementsNamesTheLargestCountThatIsNot) {
   test::ScratchDir dir("short_bodies_failure");
   // 300 bodies on the fly's 2.51 mm axis: 0.00836 mm each, a fifth of the 0.0463 mm edge.
-  const auto failed = run_flapsim_capturing_stderr(
-      dir.path(),
-      "reduce " + kShortBodiesFly + " --bodies 300 --modes 6 --threads 1 -o " + (dir / "out").string());
+  const auto failed = reduce_fly(dir, 300, "out");
   EXPECT_EQ(failed.status, 3) << failed.err;
   EXPECT_NE(failed.err.find("the chain's 300 bodies are 0.00836 mm long, shorter than the FEM's mean element "
                             "edge (0.0463 mm)"),

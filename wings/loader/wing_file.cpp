@@ -320,9 +320,11 @@ struct Planform {
   std::optional<DrawingFrame> drawing;  ///< an SVG outline_file: its map, for veins with drawing_id
   double span_scale = 1.0;              ///< `span`'s uniform scale of the outline as written [-]
   double chord_stretch = 1.0;           ///< `area`'s chordwise stretch of the outline [-]
-  /// Whether `span` or `area` moved the outline from where its points were written (by more
+  /// Whether `span` (`area`) moved the outline from where its points were written (by more
   /// than 0.1 %): veins given by absolute `points` then no longer lie where they were drawn.
-  bool rescaled() const { return std::abs(span_scale - 1.0) > 1e-3 || std::abs(chord_stretch - 1.0) > 1e-3; }
+  bool span_rescaled() const { return std::abs(span_scale - 1.0) > 1e-3; }
+  bool chord_rescaled() const { return std::abs(chord_stretch - 1.0) > 1e-3; }
+  bool rescaled() const { return span_rescaled() || chord_rescaled(); }
 };
 
 // The outline of `shape = "..."` (ellipse, half_ellipse, rounded_rectangle) from its size keys.
@@ -564,14 +566,14 @@ void check_absolute_veins_of_a_rescaled_outline(const Planform& planform, const 
                                                 const std::vector<TomlTable>& veins,
                                                 std::vector<InputWarning>& warnings) {
   if (!planform.rescaled()) return;
-  const bool scaled = std::abs(planform.span_scale - 1.0) > 1e-3;
+  const bool scaled = planform.span_rescaled();
   for (const TomlTable& v : veins) {
     if (!v.has("points")) continue;
     std::string how;
     if (scaled)
       how = "scaled by " + fmt(planform.span_scale) +
             " to 'span' = " + fmt(p.get_length("span") / p.length_scale()) + " " + p.length_unit();
-    if (std::abs(planform.chord_stretch - 1.0) > 1e-3)
+    if (planform.chord_rescaled())
       how += std::string(scaled ? " and " : "") + "stretched along the chord by " +
              fmt(planform.chord_stretch) + " to 'area'";
     warn(warnings, v, "points",
@@ -899,7 +901,8 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
   // Mesh sizes default to R/50 (about 2500 membrane nodes on a hawkmoth-like planform).
   wing.mesh.element_size = wing.span / 50.0;
   wing.mesh.vein_element_size = wing.mesh.element_size;
-  if (const auto mesh = root.find_table("mesh")) {
+  const auto mesh = root.find_table("mesh");
+  if (mesh) {
     mesh->expect_only({"element_size", "vein_element_size"});
     wing.mesh.element_size = mesh->get_length("element_size", wing.mesh.element_size, Bounds::positive());
     wing.mesh.vein_element_size =
@@ -907,13 +910,12 @@ void read_wing_keys(const TomlTable& root, Wing& wing) {
   }
   wing.clamp_y_line = planform_table.line_of("clamp_y");
   check_clamp_share(planform_table, wing.clamp_y, props, wing.warnings);
-  if (const auto m = root.find_table("mesh"); m && m->has("element_size")) {
-    wing.element_size_line = m->line_of("element_size");
-    check_elements_across_chord(*m, wing.mesh.element_size, props, wing.warnings);
+  if (mesh && mesh->has("element_size")) {
+    wing.element_size_line = mesh->line_of("element_size");
+    check_elements_across_chord(*mesh, wing.mesh.element_size, props, wing.warnings);
   }
   if (const auto surface = root.find_table("surface")) wing.surface = read_surface_shape(*surface);
   // The mesh-size rules (mesh_budget.hpp): refused here, before gmsh runs out of memory.
-  const auto mesh = root.find_table("mesh");
   MeshSizeKeys keys;
   keys.element_given = mesh && mesh->has("element_size");
   keys.vein_given = mesh && mesh->has("vein_element_size");

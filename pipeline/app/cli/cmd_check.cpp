@@ -80,8 +80,7 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
   const app::RunEstimate estimate = app::estimate_run(c, bodies, fem_dofs, reduced_fem_dofs);
   app::refuse_if_it_cannot_fit(estimate, c);
   // The folder of a run is not known here (run -o): the size alone is warned.
-  if (const std::string w = app::frames_size_warning(c, c.output.vtk_every, fem_dofs / 6, std::nullopt);
-      !w.empty())
+  if (const std::string w = app::frames_size_warning(c, fem_dofs, std::nullopt); !w.empty())
     std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   text += reynolds;
   text += "  " + app::describe(estimate) + "\n";

@@ -81,8 +81,8 @@ void run_command(const RunArgs& a) {
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
       setup_notes.push_back(app::warning_headline(w));
     }
-    if (const std::string w = app::frames_size_warning(sized, sized.output.vtk_every, fem_dofs / 6,
-                                                       io::free_bytes_where(options.output_dir));
+    if (const std::string w =
+            app::frames_size_warning(sized, fem_dofs, io::free_bytes_where(options.output_dir));
         !w.empty()) {
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
       setup_notes.push_back(app::warning_headline(w));
