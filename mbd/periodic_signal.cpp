@@ -1,5 +1,7 @@
 #include "mbd/periodic_signal.hpp"
 
+#include "mbd/fourier_fit.hpp"
+
 #include <vector>
 
 #include <algorithm>
@@ -99,6 +101,15 @@ PeriodicSignal PeriodicSignal::tabulated(std::vector<double> phases, std::vector
   s.phases_ = std::move(phases);
   s.values_ = std::move(values);
   s.second_derivs_ = std::move(M);
+  return s;
+}
+
+PeriodicSignal PeriodicSignal::fitted(const std::vector<double>& phases, const std::vector<double>& values,
+                                      int harmonics) {
+  FourierFit fit = fit_fourier_series(phases, values, harmonics);
+  PeriodicSignal s = harmonic(fit.mean, std::move(fit.cos_coeffs), std::move(fit.sin_coeffs));
+  s.table_fit_ = TableFit{static_cast<int>(phases.size()), harmonics, fit.residual_rms, fit.residual_largest,
+                          fit.largest_phase};
   return s;
 }
 

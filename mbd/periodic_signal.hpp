@@ -4,6 +4,7 @@
 /// a harmonic series or smoothly interpolated tabulated data, each with exact
 /// first and second derivatives.
 
+#include <optional>
 #include <vector>
 
 namespace flapsim::mbd {
@@ -34,6 +35,24 @@ class PeriodicSignal {
   /// \throws std::invalid_argument on bad tables (callers turn it into InputError)
   static PeriodicSignal tabulated(std::vector<double> phases, std::vector<double> values);
 
+  /// How far a table's points lie from the series fitted to them (fitted()).
+  struct TableFit {
+    int points = 0;                 ///< the table's points (its closing phase 1 dropped)
+    int harmonics = 0;              ///< N
+    double residual_rms = 0.0;      ///< [the signal's unit]
+    double residual_largest = 0.0;  ///< [the signal's unit]
+    double largest_phase = 0.0;     ///< the phase of that point [cycles]
+  };
+
+  /// The least-squares series of `harmonics` harmonics through a table (mbd/fourier_fit.hpp):
+  /// a harmonic signal that remembers its fit (table_fit()).
+  /// \throws std::invalid_argument as fit_fourier_series
+  static PeriodicSignal fitted(const std::vector<double>& phases, const std::vector<double>& values,
+                               int harmonics);
+
+  /// The fit a signal made by fitted() came from; empty for any other.
+  const std::optional<TableFit>& table_fit() const { return table_fit_; }
+
   /// Value, d/ds and d²/ds² at phase s [cycles] (any real s; period 1).
   AngleSample at_phase(double s) const;
 
@@ -49,6 +68,7 @@ class PeriodicSignal {
   double mean_ = 0.0;
   std::vector<double> cos_, sin_;
   std::vector<double> phases_, values_, second_derivs_;  // spline knots, values, y''
+  std::optional<TableFit> table_fit_;
 };
 
 }  // namespace flapsim::mbd

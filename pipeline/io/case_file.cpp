@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "mbd/angle_units.hpp"
+#include "pipeline/io/table_scatter_warning.hpp"
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/path_from_file_hint.hpp"
 
@@ -332,7 +333,7 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
   const std::string mean_k = "mean" + std::string(suffix), cos_k = "cos" + std::string(suffix),
                     sin_k = "sin" + std::string(suffix);
   if (s.has("phase") || s.has(values_key)) {
-    s.expect_only({"phase", values_key});
+    s.expect_only({"phase", values_key, "harmonics"});
     auto phase = s.get_doubles("phase", Bounds::closed(0.0, 1.0), 3);
     auto values = s.get_doubles(values_key, Bounds::any(), 3);
     if (values.size() != phase.size())
@@ -344,6 +345,23 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
         s.fail_at(s.line_of_element("phase", i), "phase",
                   "phases must be strictly increasing (entry " + std::to_string(i) + ")");
     for (double& v : values) v *= scale;
+    if (s.has("harmonics")) {
+      // A measured cycle as its least-squares Fourier series (mbd/fourier_fit.hpp): the
+      // spline through scattered points turns the scatter into accelerations
+      // (mbd/table_scatter.hpp; docs/case_file.md, "Measured kinematics").
+      const int harmonics =
+          s.get_int("harmonics", Bounds::closed(1.0, static_cast<double>(kMaxSignalHarmonics)));
+      if (static_cast<std::size_t>(2 * harmonics + 1) > phase.size())
+        s.fail("harmonics", std::to_string(harmonics) + " harmonics have " +
+                                std::to_string(2 * harmonics + 1) + " coefficients, more than the table's " +
+                                std::to_string(phase.size()) + " points determine: at most " +
+                                std::to_string((phase.size() - 1) / 2));
+      try {
+        return mbd::PeriodicSignal::fitted(phase, values, harmonics);
+      } catch (const std::invalid_argument& e) {
+        s.fail("harmonics", e.what());
+      }
+    }
     try {
       return mbd::PeriodicSignal::tabulated(phase, values);
     } catch (const std::invalid_argument& e) {
@@ -879,6 +897,7 @@ Case read_case(TomlTable root) {
   warn_rotation_phase_that_shifts_nothing(root, c);
   warn_few_steps_per_cycle(root, c);
   warn_unresolved_harmonic(root, c);
+  warn_scattered_kinematics_tables(root, c);
   warn_thin_core_in_hover(root, c);
   warn_dense_fluid_with_air_viscosity(root, c);
   return c;

@@ -109,6 +109,25 @@ std::string describe_case(const Case& c, std::optional<double> stream_radius) {
               a.deviation.value * kRadToDeg, a.rotation.value * kRadToDeg, aoa_text, stream_text.c_str(),
               stroke);
   }
+  // A table flown as its Fourier series (harmonics = N): how far its points lie from it, so the
+  // user can pick the fewest harmonics within the measurement's accuracy.
+  struct Named {
+    const char* name;
+    const mbd::PeriodicSignal* signal;
+    bool angle;  // [rad], printed in degrees; else a length [m]
+  };
+  const Named signals[] = {{"sweep", &k.sweep, true},       {"deviation", &k.deviation, true},
+                           {"rotation", &k.rotation, true}, {"surge", &k.surge, false},
+                           {"lateral", &k.lateral, false},  {"heave", &k.heave, false}};
+  for (const Named& named : signals)
+    if (const auto& fit = named.signal->table_fit()) {
+      const double unit = named.angle ? kRadToDeg : 1.0;
+      s += line(
+          "  %-22s %d harmonic%s fitted to %d points: the points %.3g %s (rms) from it, at most %.3g at "
+          "phase %.4g",
+          named.name, fit->harmonics, fit->harmonics == 1 ? "" : "s", fit->points, fit->residual_rms * unit,
+          named.angle ? "deg" : "m", fit->residual_largest * unit, fit->largest_phase);
+    }
   if (c.air.enabled)
     s += line("  air                    density %.4g kg/m^3, free stream (%.4g, %.4g, %.4g) m/s",
               c.air.density, c.air.freestream.x(), c.air.freestream.y(), c.air.freestream.z());

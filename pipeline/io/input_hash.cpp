@@ -21,9 +21,10 @@ namespace flapsim::io {
 // Vein::key locate messages, Case::warnings and Wing::warnings warn, Case::length_unit and length_scale word
 // warnings (the points are read in metres and hashed), Wing::lattice_gap follows from the outline and refuses
 // a run, SurfaceShape::line, Wing::clamp_y_line and element_size_line locate messages, Wing::drawing
-// describes where the outline came from (the outline is hashed); they change no result.)
-static_assert(sizeof(Case) == 1528, "io::Case changed: add the new field to canonical_inputs()");
-static_assert(sizeof(PointLoad) == 856, "io::PointLoad changed: add the new field to canonical_inputs()");
+// describes where the outline came from (the outline is hashed), PeriodicSignal::table_fit says how far a
+// fitted table lies from its series (hashed by its samples); they change no result.)
+static_assert(sizeof(Case) == 1768, "io::Case changed: add the new field to canonical_inputs()");
+static_assert(sizeof(PointLoad) == 1096, "io::PointLoad changed: add the new field to canonical_inputs()");
 static_assert(sizeof(Marker) == 64, "io::Marker changed: add the new field to canonical_inputs()");
 static_assert(sizeof(wings::Wing) == 384 + sizeof(wings::SurfaceShape),
               "wings::Wing changed: add the new field to canonical_inputs()");

@@ -1,0 +1,86 @@
+// A measured cycle of kinematics as a table (docs/case_file.md, "Measured kinematics"): a
+// table whose spline accelerates with its points' scatter is warned at its values, naming the
+// harmonics that fit it; `harmonics = N` flies the table's least-squares Fourier series, which
+// check's summary describes; too many harmonics for the points are refused at the key.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include "hover_case_text.hpp"
+#include "inline_case.hpp"
+#include "mbd/angle_units.hpp"
+#include "pipeline/io/case_summary.hpp"
+
+namespace {
+
+/// hover_case_text's case with its sweep (line 4) as `points` evenly spaced values of its
+/// 50 cos 2πs deg, printed with `decimals` decimals, and `extra` inside the table.
+std::string measured_sweep_case(int points, int decimals, const std::string& extra = "") {
+  std::string phase, deg;
+  for (int i = 0; i < points; ++i) {
+    const double s = static_cast<double>(i) / points;
+    char value[48];
+    std::snprintf(value, sizeof value, "%.*f", decimals, 50.0 * std::cos(2.0 * std::numbers::pi * s));
+    phase += (i ? ", " : "") + std::to_string(s);
+    deg += (i ? ", " : "") + std::string(value);
+  }
+  std::string text = hover_case_text("cycles = 1\n");
+  const std::string sweep = "sweep = { cos_deg = [50.0] }";
+  text.replace(text.find(sweep), sweep.size(),
+               "sweep = { phase = [" + phase + "], deg = [" + deg + "]" + extra + " }");
+  return text;
+}
+
+}  // namespace
+
+// 1000 points printed with two decimals: their rounding is 99 % of the spline's rms
+// acceleration (tests/mbd/test_fourier_fit.cpp), warned at kinematics.sweep.deg on line 4 with
+// one harmonic as the fit; six decimals leave the spline the motion's.
+TEST(MeasuredKinematics, ATableRoundedToTwoDecimalsIsWarnedAtItsValues) {
+  const flapsim::io::Case rounded = case_from_text(measured_sweep_case(1000, 2));
+  ASSERT_EQ(rounded.warnings.size(), 1u);
+  EXPECT_EQ(rounded.warnings[0].key, "kinematics.sweep.deg");
+  EXPECT_EQ(rounded.warnings[0].line, 4);
+  EXPECT_NE(rounded.warnings[0].message.find(
+                "of the rms acceleration of the spline through the table's 1000 points"),
+            std::string::npos)
+      << rounded.warnings[0].message;
+  EXPECT_NE(rounded.warnings[0].message.find("harmonics = 1 leaves"), std::string::npos);
+  EXPECT_TRUE(case_from_text(measured_sweep_case(1000, 6)).warnings.empty());
+}
+
+// With harmonics = 1 the same rounded table is flown as its series: 50 cos 2πs to within the
+// rounding (0.005 deg at most), its acceleration the motion's -(2π)² 50 cos 2πs, nothing
+// warned, and the summary says how far the points lie from it (q/sqrt(12) = 0.0029 deg rms).
+TEST(MeasuredKinematics, AFittedTableIsItsFourierSeries) {
+  const flapsim::io::Case c = case_from_text(measured_sweep_case(1000, 2, ", harmonics = 1"));
+  EXPECT_TRUE(c.warnings.empty());
+  using flapsim::kDegToRad;
+  for (double s : {0.0, 0.1, 0.37, 0.5, 0.81}) {
+    const auto a = c.kinematics.sweep.at_phase(s);
+    const double w = 2.0 * std::numbers::pi;
+    EXPECT_NEAR(a.value, 50.0 * kDegToRad * std::cos(w * s), 0.005 * kDegToRad) << s;
+    EXPECT_NEAR(a.acceleration, -w * w * 50.0 * kDegToRad * std::cos(w * s), 0.005 * w * w * kDegToRad) << s;
+  }
+  ASSERT_TRUE(c.kinematics.sweep.table_fit().has_value());
+  EXPECT_EQ(c.kinematics.sweep.table_fit()->points, 1000);
+  EXPECT_NEAR(c.kinematics.sweep.table_fit()->residual_rms / kDegToRad, 0.01 / std::sqrt(12.0), 0.0003);
+  const std::string summary = flapsim::io::describe_case(c);
+  EXPECT_NE(summary.find("sweep                  1 harmonic fitted to 1000 points: the points 0.00"),
+            std::string::npos)
+      << summary;
+}
+
+// 10 points determine at most 4 harmonics (9 coefficients): 5 is refused at the key's line.
+TEST(MeasuredKinematics, MoreHarmonicsThanThePointsDetermineAreRefusedAtTheKey) {
+  const flapsim::InputError e = error_of(measured_sweep_case(10, 3, ", harmonics = 5"));
+  EXPECT_EQ(e.key(), "kinematics.sweep.harmonics");
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_NE(std::string(e.what()).find("at most 4"), std::string::npos) << e.what();
+  EXPECT_NO_THROW(case_from_text(measured_sweep_case(10, 3, ", harmonics = 4")));
+  EXPECT_EQ(error_of(measured_sweep_case(10, 3, ", harmonics = 0")).key(), "kinematics.sweep.harmonics");
+}
