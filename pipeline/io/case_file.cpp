@@ -69,13 +69,13 @@ mbd::WingKinematics read_kinematics(const TomlTable& k) {
   if (!k.has("sweep")) k.fail("sweep", "missing required key (the sweep angle signal)");
   if (!k.has("rotation")) k.fail("rotation", "missing required key (the rotation angle signal)");
   const mbd::PeriodicSignal zero;
-  kin.sweep = read_periodic_signal(k, "sweep", "_deg", "deg", kDegToRad, zero);
-  kin.deviation = read_periodic_signal(k, "deviation", "_deg", "deg", kDegToRad, zero);
-  kin.rotation = read_periodic_signal(k, "rotation", "_deg", "deg", kDegToRad, zero);
+  kin.sweep = read_periodic_signal(k, "sweep", "_deg", "deg", kDegToRad, zero, kin.frequency);
+  kin.deviation = read_periodic_signal(k, "deviation", "_deg", "deg", kDegToRad, zero, kin.frequency);
+  kin.rotation = read_periodic_signal(k, "rotation", "_deg", "deg", kDegToRad, zero, kin.frequency);
   // Translation of the pivot [m] along the ground axes.
-  kin.surge = read_periodic_signal(k, "surge", "_m", "m", 1.0, zero);
-  kin.lateral = read_periodic_signal(k, "lateral", "_m", "m", 1.0, zero);
-  kin.heave = read_periodic_signal(k, "heave", "_m", "m", 1.0, zero);
+  kin.surge = read_periodic_signal(k, "surge", "_m", "m", 1.0, zero, kin.frequency);
+  kin.lateral = read_periodic_signal(k, "lateral", "_m", "m", 1.0, zero, kin.frequency);
+  kin.heave = read_periodic_signal(k, "heave", "_m", "m", 1.0, zero, kin.frequency);
   // A steady revolution added to the sweep (docs/kinematics.md, "A revolving wing").
   if (k.has("revolution")) {
     const TomlTable r = k.get_table("revolution");
@@ -253,7 +253,7 @@ int read_body(const TomlTable& t, int bodies) {
   return t.get_int("body", Bounds::closed(1, bodies));
 }
 
-PointLoad read_load(const TomlTable& t, int bodies) {
+PointLoad read_load(const TomlTable& t, int bodies, double frequency_hz) {
   t.expect_only({"body", "point", "frame", "force_x", "force_y", "force_z", "moment_x",
                  "moment_y", "moment_z"});
   PointLoad load;
@@ -264,8 +264,8 @@ PointLoad read_load(const TomlTable& t, int bodies) {
   const char* forces[3] = {"force_x", "force_y", "force_z"};
   const char* moments[3] = {"moment_x", "moment_y", "moment_z"};
   for (int i = 0; i < 3; ++i) {
-    load.force[i] = read_periodic_signal(t, forces[i], "", "value", 1.0, zero);
-    load.moment[i] = read_periodic_signal(t, moments[i], "", "value", 1.0, zero);
+    load.force[i] = read_periodic_signal(t, forces[i], "", "value", 1.0, zero, frequency_hz);
+    load.moment[i] = read_periodic_signal(t, moments[i], "", "value", 1.0, zero, frequency_hz);
   }
   return load;
 }
@@ -317,11 +317,44 @@ void drop_closing_phase(const TomlTable& s, std::string_view values_key, std::ve
   values.pop_back();
 }
 
+/// A table whose points leave more than half the cycle without one: the spline (or series)
+/// across the gap is a guess, and the usual cause is a table of times in seconds (a 26.1 Hz
+/// wingbeat's 0 … 0.0364 s read as phases: the sweep's spline reached 580 deg, warned only as
+/// an amplitude in the wrong unit). Bad input naming the gap, and the times it may be.
+constexpr double kLargestPhaseGap = 0.5;  // [cycles]
+void fail_on_a_gap_over_half_the_cycle(const TomlTable& s, const std::vector<double>& phase,
+                                       double frequency_hz) {
+  const std::size_t n = phase.size();
+  double gap = phase.front() + 1.0 - phase.back(), from = phase.back();
+  for (std::size_t i = 1; i < n; ++i)
+    if (phase[i] - phase[i - 1] > gap) {
+      gap = phase[i] - phase[i - 1];
+      from = phase[i - 1];
+    }
+  if (gap <= kLargestPhaseGap) return;
+  char text[400];
+  std::snprintf(
+      text, sizeof text,
+      "the points leave %.3g of the cycle without a point (from phase %.4g on): phases are fractions "
+      "of the wingbeat (f t, in [0, 1)), and a curve across so long a gap is a guess",
+      gap, from);
+  std::string message = text;
+  const double span = phase.back() - phase.front();
+  if (frequency_hz > 0.0 && span * frequency_hz > 0.5 && span * frequency_hz <= 1.0) {
+    std::snprintf(text, sizeof text,
+                  "; times in seconds? The last, %.4g, is %.3g of the %.4g Hz period: divide them by the "
+                  "period, %.4g s",
+                  phase.back(), phase.back() * frequency_hz, frequency_hz, 1.0 / frequency_hz);
+    message += text;
+  }
+  s.fail("phase", message);
+}
+
 }  // namespace
 
 mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_view key,
-                                         std::string_view suffix, std::string_view values_key,
-                                         double scale, const mbd::PeriodicSignal& fallback) {
+                                         std::string_view suffix, std::string_view values_key, double scale,
+                                         const mbd::PeriodicSignal& fallback, double frequency_hz) {
   if (!table.has(key)) return fallback;
   if (table.is_number(key))
     return mbd::PeriodicSignal::harmonic(table.get_double(key) * scale, {}, {});
@@ -344,6 +377,7 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
       if (!(phase[i] > phase[i - 1]))
         s.fail_at(s.line_of_element("phase", i), "phase",
                   "phases must be strictly increasing (entry " + std::to_string(i) + ")");
+    fail_on_a_gap_over_half_the_cycle(s, phase, frequency_hz);
     for (double& v : values) v *= scale;
     if (s.has("harmonics")) {
       // A measured cycle as its least-squares Fourier series (mbd/fourier_fit.hpp): the
@@ -876,7 +910,7 @@ Case read_case(TomlTable root) {
       markers.front().fail("body", "markers ride on the bodies of a chain; the FEM structure (kind = \"fem\") "
                                    "has none: remove [[markers]] or run the chain (kind = \"flexible\")");
   }
-  for (const auto& t : loads) c.loads.push_back(read_load(t, c.structure.bodies));
+  for (const auto& t : loads) c.loads.push_back(read_load(t, c.structure.bodies, c.kinematics.frequency));
   const auto markers = root.get_tables("markers");
   for (std::size_t i = 0; i < markers.size(); ++i) {
     c.markers.push_back(read_marker(markers[i], i, c.structure.bodies));

@@ -45,11 +45,14 @@ inline constexpr std::size_t kMaxSignalHarmonics = 1000;
 /// \param suffix     key suffix of the harmonic coefficients, e.g. "_deg" or ""
 /// \param values_key key of the tabulated values, e.g. "deg" or "value"
 /// \param fallback   returned when the key is absent
+/// \param frequency_hz the wingbeat's (0: unknown): a table whose points leave more than half
+///                   the cycle without one is refused, and named as times in seconds when it
+///                   spans most of a period at this frequency
 /// At most kMaxSignalHarmonics cosine and as many sine coefficients.
 /// \throws flapsim::InputError
 mbd::PeriodicSignal read_periodic_signal(const wings::TomlTable& table, std::string_view key,
-                                         std::string_view suffix, std::string_view values_key,
-                                         double scale, const mbd::PeriodicSignal& fallback);
+                                         std::string_view suffix, std::string_view values_key, double scale,
+                                         const mbd::PeriodicSignal& fallback, double frequency_hz = 0.0);
 
 /// \brief A flapping wing in air whose whole wake is free: a sweep that swings, a fixed pivot,
 /// no revolution, a free wake not steady, frozen, capped or convected (far_wake_cycles 0).

@@ -84,3 +84,36 @@ TEST(MeasuredKinematics, MoreHarmonicsThanThePointsDetermineAreRefusedAtTheKey) 
   EXPECT_NO_THROW(case_from_text(measured_sweep_case(10, 3, ", harmonics = 4")));
   EXPECT_EQ(error_of(measured_sweep_case(10, 3, ", harmonics = 0")).key(), "kinematics.sweep.harmonics");
 }
+
+// A table of times in seconds (a 20 Hz wingbeat sampled 20 times: 0 … 0.0475 s) read as
+// phases leaves 0.95 of the cycle without a point: refused at its phases, named as times and
+// the period to divide by (before, its spline swung the sweep to 580 deg, warned only as an
+// amplitude in the wrong unit). A table over phases 0 … 0.4 is refused without that guess;
+// one whose largest gap is half the cycle is read.
+TEST(MeasuredKinematics, ATableOfTimesInSecondsIsRefusedNamingThePeriod) {
+  std::string text = measured_sweep_case(20, 3);
+  const std::size_t from = text.find("phase = [") + 9, to = text.find(']', from);
+  std::string seconds;
+  for (int i = 0; i < 20; ++i) seconds += (i ? ", " : "") + std::to_string(i / 400.0);
+  const flapsim::InputError e = error_of(text.replace(from, to - from, seconds));
+  EXPECT_EQ(e.key(), "kinematics.sweep.phase");
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_NE(std::string(e.what()).find("leave 0.953 of the cycle without a point (from phase 0.0475 on)"),
+            std::string::npos)
+      << e.what();
+  EXPECT_NE(
+      std::string(e.what()).find("times in seconds? The last, 0.0475, is 0.95 of the 20 Hz period: divide "
+                                 "them by the period, 0.05 s"),
+      std::string::npos)
+      << e.what();
+  std::string part_case = hover_case_text("cycles = 1\n");
+  part_case.insert(part_case.find("[structure]"),
+                   "deviation = { phase = [0.0, 0.2, 0.4], deg = [0, 5, 0] }\n");
+  const flapsim::InputError partial = error_of(part_case);
+  EXPECT_EQ(partial.key(), "kinematics.deviation.phase");
+  EXPECT_EQ(std::string(partial.what()).find("times in seconds"), std::string::npos) << partial.what();
+  std::string half_case = hover_case_text("cycles = 1\n");
+  half_case.insert(half_case.find("[structure]"),
+                   "deviation = { phase = [0.0, 0.25, 0.5], deg = [0, 5, 0] }\n");
+  EXPECT_NO_THROW(case_from_text(half_case));
+}
