@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "mbd/angle_units.hpp"
+#include "pipeline/io/kinematics_csv.hpp"
 #include "pipeline/io/table_scatter_warning.hpp"
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/path_from_file_hint.hpp"
@@ -59,7 +60,7 @@ std::string existing_file(const TomlTable& t, std::string_view key) {
   return path;
 }
 
-mbd::WingKinematics read_kinematics(const TomlTable& k) {
+mbd::WingKinematics read_kinematics(const TomlTable& k, std::vector<InputWarning>& warnings) {
   k.expect_only({"frequency_hz", "rotation_phase", "stroke_plane_deg", "sweep", "deviation",
                  "rotation", "surge", "lateral", "heave", "revolution"});
   mbd::WingKinematics kin;
@@ -69,13 +70,15 @@ mbd::WingKinematics read_kinematics(const TomlTable& k) {
   if (!k.has("sweep")) k.fail("sweep", "missing required key (the sweep angle signal)");
   if (!k.has("rotation")) k.fail("rotation", "missing required key (the rotation angle signal)");
   const mbd::PeriodicSignal zero;
-  kin.sweep = read_periodic_signal(k, "sweep", "_deg", "deg", kDegToRad, zero, kin.frequency);
-  kin.deviation = read_periodic_signal(k, "deviation", "_deg", "deg", kDegToRad, zero, kin.frequency);
-  kin.rotation = read_periodic_signal(k, "rotation", "_deg", "deg", kDegToRad, zero, kin.frequency);
+  kin.sweep = read_periodic_signal(k, "sweep", "_deg", "deg", kDegToRad, zero, kin.frequency, &warnings);
+  kin.deviation =
+      read_periodic_signal(k, "deviation", "_deg", "deg", kDegToRad, zero, kin.frequency, &warnings);
+  kin.rotation =
+      read_periodic_signal(k, "rotation", "_deg", "deg", kDegToRad, zero, kin.frequency, &warnings);
   // Translation of the pivot [m] along the ground axes.
-  kin.surge = read_periodic_signal(k, "surge", "_m", "m", 1.0, zero, kin.frequency);
-  kin.lateral = read_periodic_signal(k, "lateral", "_m", "m", 1.0, zero, kin.frequency);
-  kin.heave = read_periodic_signal(k, "heave", "_m", "m", 1.0, zero, kin.frequency);
+  kin.surge = read_periodic_signal(k, "surge", "_m", "m", 1.0, zero, kin.frequency, &warnings);
+  kin.lateral = read_periodic_signal(k, "lateral", "_m", "m", 1.0, zero, kin.frequency, &warnings);
+  kin.heave = read_periodic_signal(k, "heave", "_m", "m", 1.0, zero, kin.frequency, &warnings);
   // A steady revolution added to the sweep (docs/kinematics.md, "A revolving wing").
   if (k.has("revolution")) {
     const TomlTable r = k.get_table("revolution");
@@ -292,9 +295,10 @@ Marker read_marker(const TomlTable& t, std::size_t i, int bodies) {
 
 /// A measured cycle often ends where it began: phase 1 (the next cycle's 0) repeating
 /// phase 0's value. That entry is dropped, as an outline's closing point is; phase 1 with
-/// another value, or without phase 0, is bad input naming the entry's line.
+/// another value, or without phase 0, is bad input naming the entry's line, but in a table
+/// fitted with harmonics = N (a measurement of the next cycle's start) is dropped too.
 void drop_closing_phase(const TomlTable& s, std::string_view values_key, std::vector<double>& phase,
-                        std::vector<double>& values) {
+                        std::vector<double>& values, bool fitted) {
   const std::size_t last = phase.size() - 1;
   if (phase[last] != 1.0) return;
   const int line = s.line_of_element("phase", last);
@@ -303,7 +307,7 @@ void drop_closing_phase(const TomlTable& s, std::string_view values_key, std::ve
               "phase 1 is phase 0 of the next cycle: phases lie in [0, 1) (a table that ends at 1 repeats "
               "its value at 0, which this one has no entry for)");
   const double first = values.front(), closing = values[last];
-  if (std::abs(closing - first) > 1e-9 * std::max(1.0, std::abs(first))) {
+  if (!fitted && std::abs(closing - first) > 1e-9 * std::max(1.0, std::abs(first))) {
     char text[240];
     std::snprintf(
         text, sizeof text,
@@ -320,10 +324,9 @@ void drop_closing_phase(const TomlTable& s, std::string_view values_key, std::ve
 /// A table whose points leave more than half the cycle without one: the spline (or series)
 /// across the gap is a guess, and the usual cause is a table of times in seconds (a 26.1 Hz
 /// wingbeat's 0 … 0.0364 s read as phases: the sweep's spline reached 580 deg, warned only as
-/// an amplitude in the wrong unit). Bad input naming the gap, and the times it may be.
+/// an amplitude in the wrong unit). The message names the gap, and the times it may be (frequency_hz > 0).
 constexpr double kLargestPhaseGap = 0.5;  // [cycles]
-void fail_on_a_gap_over_half_the_cycle(const TomlTable& s, const std::vector<double>& phase,
-                                       double frequency_hz) {
+std::optional<std::string> gap_over_half_the_cycle(const std::vector<double>& phase, double frequency_hz) {
   const std::size_t n = phase.size();
   double gap = phase.front() + 1.0 - phase.back(), from = phase.back();
   for (std::size_t i = 1; i < n; ++i)
@@ -331,7 +334,7 @@ void fail_on_a_gap_over_half_the_cycle(const TomlTable& s, const std::vector<dou
       gap = phase[i] - phase[i - 1];
       from = phase[i - 1];
     }
-  if (gap <= kLargestPhaseGap) return;
+  if (gap <= kLargestPhaseGap) return std::nullopt;
   char text[400];
   std::snprintf(
       text, sizeof text,
@@ -347,38 +350,54 @@ void fail_on_a_gap_over_half_the_cycle(const TomlTable& s, const std::vector<dou
                   phase.back(), phase.back() * frequency_hz, frequency_hz, 1.0 / frequency_hz);
     message += text;
   }
-  s.fail("phase", message);
+  return message;
 }
 
 }  // namespace
 
 mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_view key,
                                          std::string_view suffix, std::string_view values_key, double scale,
-                                         const mbd::PeriodicSignal& fallback, double frequency_hz) {
+                                         const mbd::PeriodicSignal& fallback, double frequency_hz,
+                                         std::vector<InputWarning>* warnings) {
   if (!table.has(key)) return fallback;
   if (table.is_number(key))
     return mbd::PeriodicSignal::harmonic(table.get_double(key) * scale, {}, {});
   if (!table.is_table(key))
     table.fail(key, "expected a number or a signal table { mean" + std::string(suffix) + " = ..., cos" +
                         std::string(suffix) + " = [...], sin" + std::string(suffix) +
-                        " = [...] } or { phase = [...], " + std::string(values_key) + " = [...] }");
+                        " = [...] }, { phase = [...], " + std::string(values_key) +
+                        " = [...] } or { file = \"wingbeat.csv\", column = \"...\" }");
   const TomlTable s = table.get_table(key);
   const std::string mean_k = "mean" + std::string(suffix), cos_k = "cos" + std::string(suffix),
                     sin_k = "sin" + std::string(suffix);
-  if (s.has("phase") || s.has(values_key)) {
-    s.expect_only({"phase", values_key, "harmonics"});
-    auto phase = s.get_doubles("phase", Bounds::closed(0.0, 1.0), 3);
-    auto values = s.get_doubles(values_key, Bounds::any(), 3);
-    if (values.size() != phase.size())
-      s.fail(values_key, "needs as many entries as 'phase' (" + std::to_string(phase.size()) +
-                             "), found " + std::to_string(values.size()));
-    drop_closing_phase(s, values_key, phase, values);
-    for (std::size_t i = 1; i < phase.size(); ++i)
-      if (!(phase[i] > phase[i - 1]))
-        s.fail_at(s.line_of_element("phase", i), "phase",
-                  "phases must be strictly increasing (entry " + std::to_string(i) + ")");
-    fail_on_a_gap_over_half_the_cycle(s, phase, frequency_hz);
-    for (double& v : values) v *= scale;
+  const bool from_file = s.has("file");
+  if (from_file || s.has("phase") || s.has(values_key)) {
+    std::vector<double> phase, values;
+    const std::string where = from_file ? "file" : "phase";
+    if (from_file) {
+      // A measured wingbeat's column of a CSV file (pipeline/io/kinematics_csv.hpp).
+      s.expect_only({"file", "column", "harmonics"});
+      const std::string path = existing_file(s, "file");
+      KinematicsCsvColumn table = read_kinematics_csv(path, s.get_string("column"), frequency_hz,
+                                                      s.key_path("file"), s.has("harmonics"));
+      phase = std::move(table.phase);
+      values = std::move(table.values);
+      // A table of times is one wingbeat by construction: no guess at seconds below.
+      if (table.from_times) frequency_hz = 0.0;
+    } else {
+      s.expect_only({"phase", values_key, "harmonics"});
+      phase = s.get_doubles("phase", Bounds::closed(0.0, 1.0), 3);
+      values = s.get_doubles(values_key, Bounds::any(), 3);
+      if (values.size() != phase.size())
+        s.fail(values_key, "needs as many entries as 'phase' (" + std::to_string(phase.size()) + "), found " +
+                               std::to_string(values.size()));
+      drop_closing_phase(s, values_key, phase, values, s.has("harmonics"));
+      for (std::size_t i = 1; i < phase.size(); ++i)
+        if (!(phase[i] > phase[i - 1]))
+          s.fail_at(s.line_of_element("phase", i), "phase",
+                    "phases must be strictly increasing (entry " + std::to_string(i) + ")");
+    }
+    if (const auto gap = gap_over_half_the_cycle(phase, frequency_hz)) s.fail(where, *gap);
     if (s.has("harmonics")) {
       // A measured cycle as its least-squares Fourier series (mbd/fourier_fit.hpp): the
       // spline through scattered points turns the scatter into accelerations
@@ -390,16 +409,23 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
                                 std::to_string(2 * harmonics + 1) + " coefficients, more than the table's " +
                                 std::to_string(phase.size()) + " points determine: at most " +
                                 std::to_string((phase.size() - 1) / 2));
+      for (double& v : values) v *= scale;
       try {
         return mbd::PeriodicSignal::fitted(phase, values, harmonics);
       } catch (const std::invalid_argument& e) {
         s.fail("harmonics", e.what());
       }
     }
+    const std::string values_where = from_file ? "file" : std::string(values_key);
+    if (warnings)
+      if (auto w = scattered_table_warning(phase, values, std::string(values_key), s.file(),
+                                           s.line_of(values_where), s.key_path(values_where)))
+        warnings->push_back(std::move(*w));
+    for (double& v : values) v *= scale;
     try {
       return mbd::PeriodicSignal::tabulated(phase, values);
     } catch (const std::invalid_argument& e) {
-      s.fail("phase", e.what());
+      s.fail(where, e.what());
     }
   }
   s.expect_only({mean_k, cos_k, sin_k});
@@ -848,7 +874,7 @@ Case read_case(TomlTable root) {
   if (root.has("wing")) c.wing_file = existing_file(root, "wing");
   if (root.has("chain")) c.chain_file = existing_file(root, "chain");
 
-  c.kinematics = read_kinematics(root.get_table("kinematics"));
+  c.kinematics = read_kinematics(root.get_table("kinematics"), c.warnings);
   c.air = read_air(root);
   c.structure = read_structure(root);
   c.numerics = read_numerics(root);
@@ -931,7 +957,6 @@ Case read_case(TomlTable root) {
   warn_rotation_phase_that_shifts_nothing(root, c);
   warn_few_steps_per_cycle(root, c);
   warn_unresolved_harmonic(root, c);
-  warn_scattered_kinematics_tables(root, c);
   warn_thin_core_in_hover(root, c);
   warn_dense_fluid_with_air_viscosity(root, c);
   return c;

@@ -48,11 +48,16 @@ inline constexpr std::size_t kMaxSignalHarmonics = 1000;
 /// \param frequency_hz the wingbeat's (0: unknown): a table whose points leave more than half
 ///                   the cycle without one is refused, and named as times in seconds when it
 ///                   spans most of a period at this frequency
+/// \param warnings   where a table whose spline accelerates with its points' scatter is warned
+///                   (pipeline/io/table_scatter_warning.hpp); nullptr: not checked
+/// A table may also be a column of a CSV file, { file = "...", column = "..." }
+/// (pipeline/io/kinematics_csv.hpp), and either kind a fitted series with harmonics = N.
 /// At most kMaxSignalHarmonics cosine and as many sine coefficients.
 /// \throws flapsim::InputError
 mbd::PeriodicSignal read_periodic_signal(const wings::TomlTable& table, std::string_view key,
                                          std::string_view suffix, std::string_view values_key, double scale,
-                                         const mbd::PeriodicSignal& fallback, double frequency_hz = 0.0);
+                                         const mbd::PeriodicSignal& fallback, double frequency_hz = 0.0,
+                                         std::vector<InputWarning>* warnings = nullptr);
 
 /// \brief A flapping wing in air whose whole wake is free: a sweep that swings, a fixed pivot,
 /// no revolution, a free wake not steady, frozen, capped or convected (far_wake_cycles 0).

@@ -3,8 +3,11 @@
 /// \brief The warning for a kinematics table whose spline accelerates with its points'
 /// scatter (mbd/table_scatter.hpp): measured or rounded values flown as they are.
 
-#include "pipeline/io/case_model.hpp"
-#include "wings/loader/toml_reader.hpp"
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "wings/loader/input_warning.hpp"
 
 namespace flapsim::io {
 
@@ -13,9 +16,12 @@ namespace flapsim::io {
 /// curvature and the motion's nearly orthogonal): warned.
 inline constexpr double kScatterShareWarned = 0.5;
 
-/// For each of kinematics.sweep, deviation, rotation, surge, lateral, heave that is a table
-/// without `harmonics`: a warning at its values' key when its scatter makes at least
-/// kScatterShareWarned of its spline's rms acceleration, with how much and what to do.
-void warn_scattered_kinematics_tables(const wings::TomlTable& root, Case& c);
+/// The warning for a table (phases in [0, 1), values as written in `unit`) whose scatter makes
+/// at least kScatterShareWarned of its spline's rms acceleration, with how much and the
+/// harmonics to fit it with; nullopt for any other table. `file`, `line`, `key` locate it.
+std::optional<InputWarning> scattered_table_warning(const std::vector<double>& phase,
+                                                    const std::vector<double>& values,
+                                                    const std::string& unit, const std::string& file,
+                                                    int line, const std::string& key);
 
 }  // namespace flapsim::io

@@ -1,14 +1,20 @@
-// A measured cycle of kinematics as a table (docs/case_file.md, "Measured kinematics"): a
+// A measured cycle of kinematics as a table, inline or a CSV file's column (docs/case_file.md,
+// "Measured kinematics"): a
 // table whose spline accelerates with its points' scatter is warned at its values, naming the
 // harmonics that fit it; `harmonics = N` flies the table's least-squares Fourier series, which
 // check's summary describes; too many harmonics for the points are refused at the key.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "hover_case_text.hpp"
 #include "inline_case.hpp"
@@ -116,4 +122,89 @@ TEST(MeasuredKinematics, ATableOfTimesInSecondsIsRefusedNamingThePeriod) {
   half_case.insert(half_case.find("[structure]"),
                    "deviation = { phase = [0.0, 0.25, 0.5], deg = [0, 5, 0] }\n");
   EXPECT_NO_THROW(case_from_text(half_case));
+}
+
+namespace {
+
+/// A CSV file in the temporary folder holding `text`; removed with the object.
+struct TemporaryCsv {
+  explicit TemporaryCsv(const std::string& name, const std::string& text)
+      : path((std::filesystem::temp_directory_path() / ("flapsim_" + std::to_string(::getpid()) + "_" + name))
+                 .string()) {
+    std::ofstream(path) << text;
+  }
+  ~TemporaryCsv() { std::filesystem::remove(path); }
+  std::string path;
+};
+
+/// hover_case_text's case (20 Hz) with its sweep (line 4) a column of a CSV file.
+std::string csv_sweep_case(const std::string& path, const std::string& column,
+                           const std::string& extra = "") {
+  std::string text = hover_case_text("cycles = 1\n");
+  const std::string sweep = "sweep = { cos_deg = [50.0] }";
+  return text.replace(text.find(sweep), sweep.size(),
+                      "sweep = { file = \"" + path + "\", column = \"" + column + "\"" + extra + " }");
+}
+
+/// One 20 Hz wingbeat, 40 rows and the closing one, times in ms: 50 cos 2πs in 'phi' (nine
+/// digits), 90 in 'alpha', the closing row's phi `closing_phi` (50 closes the wingbeat).
+std::string wingbeat_csv(double closing_phi = 50.0) {
+  std::string text = "# a wingbeat\nt [ms], phi, alpha\n";
+  for (int i = 0; i <= 40; ++i) {
+    char row[96];
+    const double phi = i == 40 ? closing_phi : 50.0 * std::cos(2.0 * std::numbers::pi * i / 40.0);
+    std::snprintf(row, sizeof row, "%.4f, %.9f, 90\n", 50.0 * i / 40.0, phi);
+    text += row;
+  }
+  return text;
+}
+
+}  // namespace
+
+// A measured wingbeat as a CSV file with its times in milliseconds (docs/case_file.md,
+// "Measured kinematics"): the column is the spline through 40 points (the closing row
+// dropped) of the 20 Hz case: 50 cos 2πs to the spline's error (5/384 h⁴ max|f⁗| = 0.0013 deg).
+TEST(MeasuredKinematics, ACsvColumnWithTimesInMillisecondsIsOneWingbeat) {
+  const TemporaryCsv csv("wingbeat.csv", wingbeat_csv());
+  const flapsim::io::Case c = case_from_text(csv_sweep_case(csv.path, "phi"));
+  EXPECT_TRUE(c.warnings.empty());
+  for (double s : {0.0, 0.1, 0.37, 0.5, 0.81})
+    EXPECT_NEAR(c.kinematics.sweep.at_phase(s).value,
+                50.0 * flapsim::kDegToRad * std::cos(2.0 * std::numbers::pi * s), 0.0013 * flapsim::kDegToRad)
+        << s;
+}
+
+// What a user's CSV may get wrong, each named at the CSV file's line under the case's key.
+TEST(MeasuredKinematics, ACsvTablesMistakesAreNamedAtTheirLine) {
+  const auto error_with = [](const std::string& csv_text, const std::string& column,
+                             const std::string& extra = "") {
+    const TemporaryCsv csv("mistake.csv", csv_text);
+    const flapsim::InputError e = error_of(csv_sweep_case(csv.path, column, extra));
+    EXPECT_EQ(e.key(), "kinematics.sweep.file");
+    EXPECT_EQ(e.file(), csv.path);
+    return std::make_pair(e.line(), std::string(e.what()));
+  };
+  // A column that is not in the header: the header's columns.
+  auto [line, what] = error_with(wingbeat_csv(), "sweep");
+  EXPECT_EQ(line, 2);
+  EXPECT_NE(what.find("no column 'sweep' in the header (its columns after the first: 'phi', 'alpha')"),
+            std::string::npos)
+      << what;
+  // A first column that is neither a phase nor a time with its unit.
+  std::tie(line, what) = error_with("angle,phi\n0,1\n0.5,2\n0.7,1\n", "phi");
+  EXPECT_EQ(line, 1);
+  EXPECT_NE(what.find("the time with its unit ('t_s', 'time [s]', 't_ms', ...), found 'angle'"),
+            std::string::npos);
+  // Two wingbeats of times (100 ms at 20 Hz): the first row beyond one.
+  std::string two = "t_s,phi\n";
+  for (int i = 0; i <= 20; ++i) two += std::to_string(0.005 * i) + "," + std::to_string(i % 4) + "\n";
+  std::tie(line, what) = error_with(two, "phi");
+  EXPECT_EQ(line, 13);  // t = 0.055 s, the first after 0.05 s
+  EXPECT_NE(what.find("the times span more than one wingbeat"), std::string::npos) << what;
+  // A closing row that does not repeat the first: refused, unless the table is fitted.
+  std::tie(line, what) = error_with(wingbeat_csv(50.2), "phi");
+  EXPECT_EQ(line, 43);
+  EXPECT_NE(what.find("must repeat the first row's: 50.2 against 50"), std::string::npos) << what;
+  const TemporaryCsv open_wingbeat("open.csv", wingbeat_csv(50.2));
+  EXPECT_NO_THROW(case_from_text(csv_sweep_case(open_wingbeat.path, "phi", ", harmonics = 1")));
 }

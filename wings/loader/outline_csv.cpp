@@ -7,24 +7,13 @@
 #include <fstream>
 
 #include "wings/loader/bounded_input_file.hpp"
+#include "wings/loader/csv_number.hpp"
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/text_trim.hpp"
 
 namespace flapsim::wings {
 
 namespace {
-
-// Whole-field parse: "1.5e-3" ok, "1.5mm" or "" rejected.
-bool parse_number(const std::string& field, double& out) {
-  const std::string f = trim(field);
-  if (f.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtod(f.c_str(), &end);
-  // Finite and not denormal (as every number of an input file, toml_reader.hpp).
-  return errno == 0 && end == f.c_str() + f.size() && std::isfinite(out) &&
-         (out == 0.0 || std::fpclassify(out) == FP_NORMAL);
-}
 
 // The two fields of a data line: split at its one comma, or, on a line without a comma, at
 // the tabs or spaces between two words (a tab-separated "XY coordinates" export). False when
@@ -81,14 +70,14 @@ OutlineCsv read_outline_csv_lines(const std::string& path, const std::string& ke
     if (!header_seen) {
       header_seen = true;
       if (is_header(t)) continue;  // "x,y", "X<tab>Y", "x_mm,y_mm", "x [mm], y [mm]"
-      if (two_fields(t, xs, ys) && !parse_number(xs, x) && !parse_number(ys, y))
+      if (two_fields(t, xs, ys) && !parse_csv_number(xs, x) && !parse_csv_number(ys, y))
         throw InputError(path, line_no, key,
                          "a header line names x first, then y (\"x,y\", \"x [mm],y [mm]\"), found \"" +
                              t.substr(0, 80) + (t.size() > 80 ? "..." : "") +
                              "\": x is the chordwise and y the spanwise coordinate (docs/wing_file.md)");
       // No header: fall through and read the line as data.
     }
-    if (!two_fields(t, xs, ys) || !parse_number(xs, x) || !parse_number(ys, y))
+    if (!two_fields(t, xs, ys) || !parse_csv_number(xs, x) || !parse_csv_number(ys, y))
       throw InputError(path, line_no, key,
                        "expected a line \"x,y\" (or x and y separated by tabs or spaces) with two finite "
                        "numbers (no denormals), found \"" +

@@ -1,0 +1,176 @@
+#include "pipeline/io/kinematics_csv.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+
+#include "wings/loader/bounded_input_file.hpp"
+#include "wings/loader/csv_number.hpp"
+#include "wings/loader/input_error.hpp"
+#include "wings/loader/text_trim.hpp"
+
+namespace flapsim::io {
+
+namespace {
+
+using wings::trim;
+
+/// The fields of a line: split at commas, or on a line without a comma at runs of tabs and spaces.
+std::vector<std::string> fields_of(const std::string& line) {
+  std::vector<std::string> out;
+  if (line.find(',') != std::string::npos) {
+    std::size_t from = 0;
+    for (;;) {
+      const std::size_t comma = line.find(',', from);
+      out.push_back(trim(line.substr(from, comma - from)));
+      if (comma == std::string::npos) break;
+      from = comma + 1;
+    }
+    return out;
+  }
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+  return out;
+}
+
+/// Seconds per unit of a time column's name (t_s, time [s], t (ms), ...); nullopt for another name.
+std::optional<double> time_unit_of(std::string name) {
+  name.erase(std::remove(name.begin(), name.end(), ' '), name.end());
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  for (const char* head : {"time", "t"})
+    if (name.rfind(head, 0) == 0) {
+      const std::string unit = name.substr(std::string(head).size());
+      for (const auto& [text, seconds] :
+           {std::pair{"_s", 1.0}, std::pair{"[s]", 1.0}, std::pair{"(s)", 1.0}, std::pair{"_ms", 1e-3},
+            std::pair{"[ms]", 1e-3}, std::pair{"(ms)", 1e-3}})
+        if (unit == text) return seconds;
+    }
+  return std::nullopt;
+}
+
+}  // namespace
+
+KinematicsCsvColumn read_kinematics_csv(const std::string& path, const std::string& column,
+                                        double frequency_hz, const std::string& key, bool fitted) {
+  wings::check_bounded_input_file(path, key, "the kinematics file", kMaxKinematicsCsvBytes);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, key, "cannot open the kinematics file");
+  KinematicsCsvColumn out;
+  std::vector<int> lines;
+  std::string line;
+  int line_no = 0, header_line = 0;
+  std::size_t index = 0, width = 0;
+  double seconds = 0.0;  // a time column's unit; 0: phases
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.find('\0') != std::string::npos)
+      throw InputError(path, line_no, key, "the kinematics file holds a NUL byte: not a text file");
+    const std::string t = trim(line_no == 1 ? wings::without_byte_order_mark(line) : line);
+    if (t.empty() || t[0] == '#') continue;
+    const std::vector<std::string> f = fields_of(t);
+    if (header_line == 0) {
+      header_line = line_no;
+      width = f.size();
+      if (f[0] != "phase") {
+        const auto unit = time_unit_of(f[0]);
+        if (!unit)
+          throw InputError(
+              path, line_no, key,
+              "the header's first column is the phase ('phase', fractions of the wingbeat) or the "
+              "time with its unit ('t_s', 'time [s]', 't_ms', ...), found '" +
+                  f[0] + "'");
+        if (!(frequency_hz > 0.0))
+          throw InputError(path, line_no, key, "a time column needs the wingbeat's frequency");
+        seconds = *unit;
+        out.from_times = true;
+      }
+      const auto it = std::find(f.begin() + 1, f.end(), trim(column));
+      if (it == f.end()) {
+        std::string names;
+        for (std::size_t i = 1; i < f.size(); ++i) names += (i > 1 ? ", '" : "'") + f[i] + "'";
+        throw InputError(path, line_no, key,
+                         "no column '" + column + "' in the header (its columns after the first: " +
+                             (names.empty() ? "none" : names) + ")");
+      }
+      index = static_cast<std::size_t>(it - f.begin());
+      continue;
+    }
+    if (f.size() != width)
+      throw InputError(path, line_no, key,
+                       std::to_string(f.size()) + " fields where the header has " + std::to_string(width));
+    double p = 0.0, v = 0.0;
+    if (!wings::parse_csv_number(f[0], p) || !wings::parse_csv_number(f[index], v))
+      throw InputError(path, line_no, key,
+                       "expected numbers in the first column and in '" + column + "', found '" + f[0] +
+                           "' and '" + f[index] + "'");
+    out.phase.push_back(p);
+    out.values.push_back(v);
+    lines.push_back(line_no);
+  }
+  if (in.bad()) throw InputError(path, line_no, key, "reading the kinematics file failed");
+  if (header_line == 0) throw InputError(path, 0, key, "the kinematics file has no header line");
+  if (out.phase.size() < 3)
+    throw InputError(path, line_no, key,
+                     "at least 3 rows are needed, found " + std::to_string(out.phase.size()));
+  if (seconds > 0.0) {
+    // One wingbeat from its first time on: phase (t − t0) f; a last row one period on closes it.
+    // Times are written rounded: a last row within 1 % of its spacing of one period on is the
+    // closing row (phase 1).
+    const double t0 = out.phase.front() * seconds;
+    const std::size_t n = out.phase.size();
+    const double last_spacing = (out.phase[n - 1] - out.phase[n - 2]) * seconds * frequency_hz;
+    for (std::size_t i = 0; i < n; ++i) {
+      double p = (out.phase[i] * seconds - t0) * frequency_hz;
+      if (i + 1 == n && std::abs(p - 1.0) <= 0.01 * std::abs(last_spacing)) p = 1.0;
+      if (p > 1.0) {
+        char text[300];
+        std::snprintf(
+            text, sizeof text,
+            "the times span more than one wingbeat: %.6g s after the first row's, beyond the %.6g s "
+            "period of %.6g Hz (give one wingbeat, or its mean cycle)",
+            out.phase[i] * seconds - t0, 1.0 / frequency_hz, frequency_hz);
+        throw InputError(path, lines[i], key, text);
+      }
+      out.phase[i] = p;
+    }
+  }
+  for (std::size_t i = 0; i < out.phase.size(); ++i)
+    if (out.phase[i] < 0.0 || out.phase[i] > 1.0)
+      throw InputError(path, lines[i], key,
+                       "a phase outside [0, 1]: phases are fractions of the wingbeat (f t)");
+  for (std::size_t i = 1; i < out.phase.size(); ++i)
+    if (!(out.phase[i] > out.phase[i - 1]))
+      throw InputError(path, lines[i], key, "the first column must increase from row to row");
+  if (out.phase.back() == 1.0) {
+    const double first = out.values.front(), closing = out.values.back();
+    if (out.phase.front() != 0.0)
+      throw InputError(path, lines.back(), key,
+                       "phase 1 is phase 0 of the next wingbeat, which the table has no row for");
+    if (!fitted && std::abs(closing - first) > 1e-9 * std::max(1.0, std::abs(first))) {
+      char text[300];
+      std::snprintf(
+          text, sizeof text,
+          "the last row is phase 0 of the next wingbeat, so its '%s' must repeat the first row's: %.10g "
+          "against %.10g (a wingbeat that does not close; drop the row, or fit the table: harmonics = N)",
+          column.c_str(), closing, first);
+      throw InputError(path, lines.back(), key, text);
+    }
+    out.phase.pop_back();
+    out.values.pop_back();
+    if (out.phase.size() < 3)
+      throw InputError(path, lines.back(), key, "at least 3 rows besides the closing one");
+  }
+  return out;
+}
+
+}  // namespace flapsim::io
