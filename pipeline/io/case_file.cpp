@@ -326,7 +326,8 @@ void drop_closing_phase(const TomlTable& s, std::string_view values_key, std::ve
 /// wingbeat's 0 … 0.0364 s read as phases: the sweep's spline reached 580 deg, warned only as
 /// an amplitude in the wrong unit). The message names the gap, and the times it may be (frequency_hz > 0).
 constexpr double kLargestPhaseGap = 0.5;  // [cycles]
-std::optional<std::string> gap_over_half_the_cycle(const std::vector<double>& phase, double frequency_hz) {
+std::optional<std::string> gap_over_half_the_cycle(std::vector<double> phase, double frequency_hz) {
+  std::sort(phase.begin(), phase.end());  // a fitted table's folded wingbeats are in any order
   const std::size_t n = phase.size();
   double gap = phase.front() + 1.0 - phase.back(), from = phase.back();
   for (std::size_t i = 1; i < n; ++i)

@@ -20,19 +20,22 @@ namespace {
 
 using wings::trim;
 
-/// The fields of a line: split at commas, or on a line without a comma at runs of tabs and spaces.
+/// The fields of a line: split at commas, or on a line without a comma at tabs (a spreadsheet's
+/// text export, whose names may hold spaces: "time (s)"), or on a line without either at runs
+/// of spaces.
 std::vector<std::string> fields_of(const std::string& line) {
   std::vector<std::string> out;
-  if (line.find(',') != std::string::npos) {
-    std::size_t from = 0;
-    for (;;) {
-      const std::size_t comma = line.find(',', from);
-      out.push_back(trim(line.substr(from, comma - from)));
-      if (comma == std::string::npos) break;
-      from = comma + 1;
+  for (const char separator : {',', '\t'})
+    if (line.find(separator) != std::string::npos) {
+      std::size_t from = 0;
+      for (;;) {
+        const std::size_t at = line.find(separator, from);
+        out.push_back(trim(line.substr(from, at - from)));
+        if (at == std::string::npos) break;
+        from = at + 1;
+      }
+      return out;
     }
-    return out;
-  }
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
@@ -122,6 +125,19 @@ KinematicsCsvColumn read_kinematics_csv(const std::string& path, const std::stri
   if (out.phase.size() < 3)
     throw InputError(path, line_no, key,
                      "at least 3 rows are needed, found " + std::to_string(out.phase.size()));
+  if (seconds > 0.0 && fitted) {
+    // A fit takes the rows in any order: several wingbeats fold onto one, phase frac((t − t0) f),
+    // and the series fitted to them all is their mean wingbeat's.
+    const double t0 = out.phase.front() * seconds;
+    for (std::size_t i = 1; i < out.phase.size(); ++i)
+      if (!(out.phase[i] > out.phase[i - 1]))
+        throw InputError(path, lines[i], key, "the times must increase from row to row");
+    for (double& p : out.phase) {
+      const double cycles = (p * seconds - t0) * frequency_hz;
+      p = cycles - std::floor(cycles);
+    }
+    return out;
+  }
   if (seconds > 0.0) {
     // One wingbeat from its first time on: phase (t − t0) f; a last row one period on closes it.
     // Times are written rounded: a last row within 1 % of its spacing of one period on is the
@@ -137,7 +153,8 @@ KinematicsCsvColumn read_kinematics_csv(const std::string& path, const std::stri
         std::snprintf(
             text, sizeof text,
             "the times span more than one wingbeat: %.6g s after the first row's, beyond the %.6g s "
-            "period of %.6g Hz (give one wingbeat, or its mean cycle)",
+            "period of %.6g Hz (give one wingbeat, or fit them all: with harmonics = N the wingbeats fold "
+            "onto one, and the series is their mean wingbeat's)",
             out.phase[i] * seconds - t0, 1.0 / frequency_hz, frequency_hz);
         throw InputError(path, lines[i], key, text);
       }

@@ -208,3 +208,30 @@ TEST(MeasuredKinematics, ACsvTablesMistakesAreNamedAtTheirLine) {
   const TemporaryCsv open_wingbeat("open.csv", wingbeat_csv(50.2));
   EXPECT_NO_THROW(case_from_text(csv_sweep_case(open_wingbeat.path, "phi", ", harmonics = 1")));
 }
+
+// Three 20 Hz wingbeats of times, 37 rows each (not a divisor of the period's rows: the folded
+// phases interleave), fitted with one harmonic: the wingbeats fold onto one and the series
+// through all 111 rows is 50 cos 2πs (its coefficients exact to round-off, the rows on it).
+TEST(MeasuredKinematics, AFittedCsvOfSeveralWingbeatsIsTheirMeanWingbeat) {
+  std::string text = "time (s)\tphi\n";  // tab-separated, as a spreadsheet's text export
+  for (int i = 0; i < 111; ++i) {
+    const double t = 0.15 * i / 111.0, s = 20.0 * t;
+    char row[64];
+    std::snprintf(row, sizeof row, "%.17g\t%.17g\n", t, 50.0 * std::cos(2.0 * std::numbers::pi * s));
+    text += row;
+  }
+  const TemporaryCsv csv("three_wingbeats.csv", text);
+  const flapsim::io::Case c = case_from_text(csv_sweep_case(csv.path, "phi", ", harmonics = 1"));
+  ASSERT_TRUE(c.kinematics.sweep.table_fit().has_value());
+  EXPECT_EQ(c.kinematics.sweep.table_fit()->points, 111);
+  EXPECT_LT(c.kinematics.sweep.table_fit()->residual_largest, 1e-12);
+  for (double s : {0.0, 0.3, 0.6})
+    EXPECT_NEAR(c.kinematics.sweep.at_phase(s).value,
+                50.0 * flapsim::kDegToRad * std::cos(2.0 * std::numbers::pi * s), 1e-12)
+        << s;
+  // Unfitted, the same rows are refused at the first beyond one wingbeat (i = 38 of 0 … 110, line 40).
+  const flapsim::InputError e = error_of(csv_sweep_case(csv.path, "phi"));
+  EXPECT_EQ(e.line(), 40);
+  EXPECT_NE(std::string(e.what()).find("with harmonics = N the wingbeats fold onto one"), std::string::npos)
+      << e.what();
+}
