@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -140,6 +141,41 @@ TEST_F(CheckCommand, HoverCaseKinematics) {
   // No chain file: the wing is reduced in the setup, whose FEM the estimate shows beside the
   // run's arrays (test RunEstimate.TheSetupsReductionOfTheWingIsEstimatedBesideTheRun).
   EXPECT_NE(r.out.find("before it, for the wing's FEM reduced in the setup"), std::string::npos) << r.out;
+}
+
+// check --kinematics writes the angles the run flies at its steps: Lua et al.'s eq. 7
+// (cases/lua_rigid.toml, 26.1 Hz, 100 steps): phi = 60 cos 2πs, alpha = 90 − 60 sin 2πs, their
+// rates and accelerations those of the series (−(2πf)² 60 cos 2πs deg/s² for phi); on a wing
+// file it is a usage error and nothing is written.
+TEST_F(CheckCommand, KinematicsOptionWritesTheWingbeatAtTheRunsSteps) {
+  const Result r = run("check '" + kSource + "/cases/lua_rigid.toml' --kinematics kinematics.csv");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("kinematics of one wingbeat at the run's 100 steps"), std::string::npos) << r.out;
+  std::ifstream in(root_ / "work/kinematics.csv");
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("phase,t_s,phi_deg,theta_deg,alpha_deg,phi_rate_deg_per_s", 0), 0u) << line;
+  int rows = 0;
+  const double w = 2.0 * M_PI * 26.1;  // [rad/s]
+  while (std::getline(in, line)) {
+    double phase = 0, t = 0, phi = 0, theta = 0, alpha = 0, phi_rate = 0, theta_rate = 0, alpha_rate = 0,
+           phi_acc = 0;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &phase, &t, &phi, &theta,
+                          &alpha, &phi_rate, &theta_rate, &alpha_rate, &phi_acc),
+              9)
+        << line;
+    EXPECT_NEAR(phase, rows / 100.0, 1e-12);
+    EXPECT_NEAR(phi, 60.0 * std::cos(2.0 * M_PI * phase), 1e-9);
+    EXPECT_NEAR(alpha, 90.0 - 60.0 * std::sin(2.0 * M_PI * phase), 1e-9);
+    EXPECT_NEAR(phi_rate, -w * 60.0 * std::sin(2.0 * M_PI * phase), 1e-6);
+    EXPECT_NEAR(phi_acc, -w * w * 60.0 * std::cos(2.0 * M_PI * phase), 1e-3);
+    ++rows;
+  }
+  EXPECT_EQ(rows, 101);  // k = 0 … 100, the last the next wingbeat's start
+  const Result wing = run("check '" + kSource + "/wings/hawkmoth.toml' --kinematics kinematics2.csv");
+  EXPECT_EQ(wing.status, 1);
+  EXPECT_NE(wing.err.find("--kinematics: applies to a case file"), std::string::npos) << wing.err;
+  EXPECT_FALSE(fs::exists(root_ / "work/kinematics2.csv"));
 }
 
 TEST_F(CheckCommand, HelpDescribesTheCommand) {

@@ -25,6 +25,7 @@
 #include "pipeline/app/watched_setup.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "pipeline/io/case_summary.hpp"
+#include "pipeline/io/kinematics_samples.hpp"
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/toml_reader.hpp"
 #include "wings/loader/wing_file.hpp"
@@ -99,7 +100,8 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
 /// Reads the file, decides whether it is a wing ([planform]) or a case ([kinematics]),
 /// checks it completely (a case as `run` would: its wing, chain file and size) and returns
 /// the summary text. Nothing is printed until everything has been checked.
-std::string check_file(const std::string& path, const std::string& chain_file, const std::string& wing_file) {
+std::string check_file(const std::string& path, const std::string& chain_file, const std::string& wing_file,
+                       const std::string& kinematics_file) {
   wings::TomlTable root = wings::parse_toml_file(path);
   const bool wing = wings::is_wing_document(root), case_file = io::is_case_document(root);
   if (wing && case_file)
@@ -108,6 +110,8 @@ std::string check_file(const std::string& path, const std::string& chain_file, c
   if (wing) {
     if (!chain_file.empty()) throw CLI::ValidationError("--chain", "applies to a case file, not a wing file");
     if (!wing_file.empty()) throw CLI::ValidationError("--wing", "applies to a case file, not a wing file");
+    if (!kinematics_file.empty())
+      throw CLI::ValidationError("--kinematics", "applies to a case file, not a wing file");
     const wings::Wing w = print_wing_warnings(wings::read_wing(root));
     check_meshable(w, true);
     return wings::describe_wing(w);
@@ -118,7 +122,14 @@ std::string check_file(const std::string& path, const std::string& chain_file, c
     warn_unused_structure_options(c, chain_file, 1.0);  // as run warns
     std::optional<double> stream_radius;
     const std::string checked = check_case_like_run(c, chain_file, stream_radius);
-    return io::describe_case(c, stream_radius) + checked;
+    std::string written;
+    if (!kinematics_file.empty()) {
+      // The angles the run flies, at its steps: to plot beside a measured wingbeat.
+      io::write_kinematics_samples(kinematics_file, c.kinematics, c.numerics.steps_per_cycle);
+      written = "\nkinematics of one wingbeat at the run's " + std::to_string(c.numerics.steps_per_cycle) +
+                " steps (angles, rates, accelerations): " + kinematics_file + "\n";
+    }
+    return io::describe_case(c, stream_radius) + checked + written;
   }
   if (root.has("bodies"))
     throw InputError(path, root.line_of("bodies"), "bodies",
@@ -155,8 +166,11 @@ void add_check_command(CLI::App& app) {
       "For a flexible case it builds the chain as run does (from --chain, the case's 'chain', or\n"
       "the wing reduced in process) and warns about a chain that does not match the wing, one\n"
       "driven above or near its resonance (docs/case_file.md, \"Warnings\").\n"
+      "--kinematics FILE writes the case's kinematics over one wingbeat (angles, rates and\n"
+      "accelerations at the run's steps) to a CSV file, to plot beside a measured wingbeat.\n"
       "Exit status: 0 valid, 2 bad input (the message names file, line and key), 3 a numerical\n"
-      "failure of the FEM or the reduction of a wing reduced in process (as run).\n"
+      "failure of the FEM or the reduction of a wing reduced in process (as run), 4 --kinematics\n"
+      "not written.\n"
       "Formats: docs/wing_file.md, docs/case_file.md.");
   auto file = std::make_shared<std::string>();
   auto chain = std::make_shared<std::string>();
@@ -167,9 +181,15 @@ void add_check_command(CLI::App& app) {
   cmd->add_option("--wing", *wing,
                   "for a case: the wing file run --wing would fly (overrides the case's 'wing')")
       ->check(non_empty_option());
-  cmd->callback([file, chain, wing] {
+  auto kinematics = std::make_shared<std::string>();
+  cmd->add_option(
+         "--kinematics", *kinematics,
+         "for a case: write the wing base's angles, rates and accelerations over one wingbeat at the "
+         "run's steps to this CSV file (docs/case_file.md, \"Measured kinematics\")")
+      ->check(non_empty_option());
+  cmd->callback([file, chain, wing, kinematics] {
     check_chain_option(*chain);
-    std::cout << check_file(*file, *chain, *wing) << std::flush;
+    std::cout << check_file(*file, *chain, *wing, *kinematics) << std::flush;
   });
 }
 
