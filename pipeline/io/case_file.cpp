@@ -354,6 +354,72 @@ std::optional<std::string> gap_over_half_the_cycle(std::vector<double> phase, do
   return message;
 }
 
+/// A tabulated signal of `s`: inline { phase = [...], <values_key> = [...] } or a CSV file's
+/// column { file = "...", column = "..." } (pipeline/io/kinematics_csv.hpp), a periodic spline
+/// through the points or, with harmonics = N, their least-squares Fourier series; a spline's
+/// scatter is warned into `warnings` (pipeline/io/table_scatter_warning.hpp; nullptr: not checked).
+mbd::PeriodicSignal read_table_signal(const TomlTable& s, std::string_view values_key, double scale,
+                                      double frequency_hz, std::vector<InputWarning>* warnings) {
+  const bool from_file = s.has("file");
+  std::vector<double> phase, values;
+  const std::string where = from_file ? "file" : "phase";
+  if (from_file) {
+    // A measured wingbeat's column of a CSV file (pipeline/io/kinematics_csv.hpp).
+    s.expect_only({"file", "column", "harmonics"});
+    const std::string path = existing_file(s, "file");
+    KinematicsCsvColumn table = read_kinematics_csv(path, s.get_string("column"), frequency_hz,
+                                                    s.key_path("file"), s.has("harmonics"));
+    phase = std::move(table.phase);
+    values = std::move(table.values);
+    // A table of times is one wingbeat by construction: no guess at seconds below.
+    if (table.from_times) frequency_hz = 0.0;
+  } else {
+    s.expect_only({"phase", values_key, "harmonics"});
+    phase = s.get_doubles("phase", Bounds::closed(0.0, 1.0), 3);
+    values = s.get_doubles(values_key, Bounds::any(), 3);
+    if (values.size() != phase.size())
+      s.fail(values_key, "needs as many entries as 'phase' (" + std::to_string(phase.size()) + "), found " +
+                             std::to_string(values.size()));
+    drop_closing_phase(s, values_key, phase, values, s.has("harmonics"));
+    for (std::size_t i = 1; i < phase.size(); ++i)
+      if (!(phase[i] > phase[i - 1]))
+        s.fail_at(s.line_of_element("phase", i), "phase",
+                  "phases must be strictly increasing (entry " + std::to_string(i) + ")");
+  }
+  if (const auto gap = gap_over_half_the_cycle(phase, frequency_hz)) s.fail(where, *gap);
+  if (s.has("harmonics")) {
+    // A measured cycle as its least-squares Fourier series (mbd/fourier_fit.hpp): the
+    // spline through scattered points turns the scatter into accelerations
+    // (mbd/table_scatter.hpp; docs/case_file.md, "Measured kinematics").
+    const int harmonics =
+        s.get_int("harmonics", Bounds::closed(1.0, static_cast<double>(kMaxSignalHarmonics)));
+    if (static_cast<std::size_t>(2 * harmonics + 1) > phase.size())
+      s.fail("harmonics", std::to_string(harmonics) + " harmonics have " + std::to_string(2 * harmonics + 1) +
+                              " coefficients, more than the table's " + std::to_string(phase.size()) +
+                              " points determine: at most " + std::to_string((phase.size() - 1) / 2));
+    for (double& v : values) v *= scale;
+    try {
+      return mbd::PeriodicSignal::fitted(phase, values, harmonics);
+    } catch (const std::invalid_argument& e) {
+      s.fail("harmonics", e.what());
+    }
+  }
+  std::vector<double> scaled = values;
+  for (double& v : scaled) v *= scale;
+  mbd::PeriodicSignal spline;
+  try {
+    spline = mbd::PeriodicSignal::tabulated(phase, scaled);
+  } catch (const std::invalid_argument& e) {
+    s.fail(where, e.what());
+  }
+  const std::string values_where = from_file ? "file" : std::string(values_key);
+  if (warnings)
+    if (auto w = scattered_table_warning(phase, values, std::string(values_key), s.file(),
+                                         s.line_of(values_where), s.key_path(values_where)))
+      warnings->push_back(std::move(*w));
+  return spline;
+}
+
 }  // namespace
 
 mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_view key,
@@ -371,64 +437,8 @@ mbd::PeriodicSignal read_periodic_signal(const TomlTable& table, std::string_vie
   const TomlTable s = table.get_table(key);
   const std::string mean_k = "mean" + std::string(suffix), cos_k = "cos" + std::string(suffix),
                     sin_k = "sin" + std::string(suffix);
-  const bool from_file = s.has("file");
-  if (from_file || s.has("phase") || s.has(values_key)) {
-    std::vector<double> phase, values;
-    const std::string where = from_file ? "file" : "phase";
-    if (from_file) {
-      // A measured wingbeat's column of a CSV file (pipeline/io/kinematics_csv.hpp).
-      s.expect_only({"file", "column", "harmonics"});
-      const std::string path = existing_file(s, "file");
-      KinematicsCsvColumn table = read_kinematics_csv(path, s.get_string("column"), frequency_hz,
-                                                      s.key_path("file"), s.has("harmonics"));
-      phase = std::move(table.phase);
-      values = std::move(table.values);
-      // A table of times is one wingbeat by construction: no guess at seconds below.
-      if (table.from_times) frequency_hz = 0.0;
-    } else {
-      s.expect_only({"phase", values_key, "harmonics"});
-      phase = s.get_doubles("phase", Bounds::closed(0.0, 1.0), 3);
-      values = s.get_doubles(values_key, Bounds::any(), 3);
-      if (values.size() != phase.size())
-        s.fail(values_key, "needs as many entries as 'phase' (" + std::to_string(phase.size()) + "), found " +
-                               std::to_string(values.size()));
-      drop_closing_phase(s, values_key, phase, values, s.has("harmonics"));
-      for (std::size_t i = 1; i < phase.size(); ++i)
-        if (!(phase[i] > phase[i - 1]))
-          s.fail_at(s.line_of_element("phase", i), "phase",
-                    "phases must be strictly increasing (entry " + std::to_string(i) + ")");
-    }
-    if (const auto gap = gap_over_half_the_cycle(phase, frequency_hz)) s.fail(where, *gap);
-    if (s.has("harmonics")) {
-      // A measured cycle as its least-squares Fourier series (mbd/fourier_fit.hpp): the
-      // spline through scattered points turns the scatter into accelerations
-      // (mbd/table_scatter.hpp; docs/case_file.md, "Measured kinematics").
-      const int harmonics =
-          s.get_int("harmonics", Bounds::closed(1.0, static_cast<double>(kMaxSignalHarmonics)));
-      if (static_cast<std::size_t>(2 * harmonics + 1) > phase.size())
-        s.fail("harmonics", std::to_string(harmonics) + " harmonics have " +
-                                std::to_string(2 * harmonics + 1) + " coefficients, more than the table's " +
-                                std::to_string(phase.size()) + " points determine: at most " +
-                                std::to_string((phase.size() - 1) / 2));
-      for (double& v : values) v *= scale;
-      try {
-        return mbd::PeriodicSignal::fitted(phase, values, harmonics);
-      } catch (const std::invalid_argument& e) {
-        s.fail("harmonics", e.what());
-      }
-    }
-    const std::string values_where = from_file ? "file" : std::string(values_key);
-    if (warnings)
-      if (auto w = scattered_table_warning(phase, values, std::string(values_key), s.file(),
-                                           s.line_of(values_where), s.key_path(values_where)))
-        warnings->push_back(std::move(*w));
-    for (double& v : values) v *= scale;
-    try {
-      return mbd::PeriodicSignal::tabulated(phase, values);
-    } catch (const std::invalid_argument& e) {
-      s.fail(where, e.what());
-    }
-  }
+  if (s.has("file") || s.has("phase") || s.has(values_key))
+    return read_table_signal(s, values_key, scale, frequency_hz, warnings);
   s.expect_only({mean_k, cos_k, sin_k});
   auto cos_c = s.find_doubles(cos_k);
   auto sin_c = s.find_doubles(sin_k);
