@@ -16,6 +16,7 @@
 #include "mbd/periodic_signal.hpp"
 
 #include <Eigen/Geometry>  // callers use cross products of the pose vectors
+#include <array>
 
 namespace flapsim::mbd {
 
@@ -52,6 +53,22 @@ struct WingKinematics {
     AngleSample at(double t) const;
   };
   Revolution revolution;
+
+  /// A signal of the kinematics with its case-file key.
+  struct NamedSignal {
+    const char* name;  ///< "sweep", "deviation", "rotation", "surge", "lateral", "heave"
+    const PeriodicSignal* signal;
+    bool angle;  ///< [rad]; else a length [m]
+  };
+  /// The six signals in case-file order (sweep, deviation, rotation, surge, lateral, heave).
+  std::array<NamedSignal, 6> named_signals() const {
+    return {{{"sweep", &sweep, true},
+             {"deviation", &deviation, true},
+             {"rotation", &rotation, true},
+             {"surge", &surge, false},
+             {"lateral", &lateral, false},
+             {"heave", &heave, false}}};
+  }
 
   struct Angles {
     AngleSample sweep, deviation, rotation;  ///< [rad], [rad/s], [rad/s²]

@@ -714,15 +714,12 @@ void warn_few_steps_per_cycle(const TomlTable& root, Case& c) {
 namespace {
 void warn_unresolved_harmonic(const TomlTable& root, Case& c) {
   const mbd::WingKinematics& k = c.kinematics;
-  const std::pair<const char*, const mbd::PeriodicSignal*> signals[] = {
-      {"sweep", &k.sweep}, {"deviation", &k.deviation}, {"rotation", &k.rotation},
-      {"surge", &k.surge}, {"lateral", &k.lateral},     {"heave", &k.heave}};
   int highest = 0;
   std::string key;
-  for (const auto& [name, signal] : signals)
-    if (signal->highest_harmonic() > highest) {
-      highest = signal->highest_harmonic();
-      key = name;
+  for (const auto& named : k.named_signals())
+    if (named.signal->highest_harmonic() > highest) {
+      highest = named.signal->highest_harmonic();
+      key = named.name;
     }
   if (c.numerics.steady || c.numerics.steps_per_cycle > 2 * highest) return;
   warn_at_numerics_key(

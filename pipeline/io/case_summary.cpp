@@ -111,15 +111,7 @@ std::string describe_case(const Case& c, std::optional<double> stream_radius) {
   }
   // A table flown as its Fourier series (harmonics = N): how far its points lie from it, so the
   // user can pick the fewest harmonics within the measurement's accuracy.
-  struct Named {
-    const char* name;
-    const mbd::PeriodicSignal* signal;
-    bool angle;  // [rad], printed in degrees; else a length [m]
-  };
-  const Named signals[] = {{"sweep", &k.sweep, true},       {"deviation", &k.deviation, true},
-                           {"rotation", &k.rotation, true}, {"surge", &k.surge, false},
-                           {"lateral", &k.lateral, false},  {"heave", &k.heave, false}};
-  for (const Named& named : signals)
+  for (const auto& named : k.named_signals())
     if (const auto& fit = named.signal->table_fit()) {
       const double unit = named.angle ? kRadToDeg : 1.0;
       s += line(

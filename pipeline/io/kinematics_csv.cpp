@@ -1,5 +1,7 @@
 #include "pipeline/io/kinematics_csv.hpp"
 
+#include "pipeline/io/csv_writer.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -20,22 +22,25 @@ namespace {
 
 using wings::trim;
 
-/// The fields of a line: split at commas, or on a line without a comma at tabs (a spreadsheet's
-/// text export, whose names may hold spaces: "time (s)"), or on a line without either at runs
-/// of spaces.
+/// The fields of a line: the cells of a comma-separated line (io::split_csv_line, quotes as
+/// RFC 4180), or on a line without a comma the fields between tabs (a spreadsheet's text
+/// export, whose names may hold spaces: "time (s)"), or on a line without either those
+/// between runs of spaces.
 std::vector<std::string> fields_of(const std::string& line) {
   std::vector<std::string> out;
-  for (const char separator : {',', '\t'})
-    if (line.find(separator) != std::string::npos) {
-      std::size_t from = 0;
-      for (;;) {
-        const std::size_t at = line.find(separator, from);
-        out.push_back(trim(line.substr(from, at - from)));
-        if (at == std::string::npos) break;
-        from = at + 1;
-      }
-      return out;
+  if (line.find(',') != std::string::npos) {
+    for (const std::string& cell : split_csv_line(line)) out.push_back(trim(cell));
+    return out;
+  }
+  if (line.find('\t') != std::string::npos) {
+    std::size_t from = 0;
+    for (;;) {
+      const std::size_t at = line.find('\t', from);
+      out.push_back(trim(line.substr(from, at - from)));
+      if (at == std::string::npos) return out;
+      from = at + 1;
     }
+  }
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
@@ -83,6 +88,13 @@ KinematicsCsvColumn read_kinematics_csv(const std::string& path, const std::stri
     const std::vector<std::string> f = fields_of(t);
     if (header_line == 0) {
       header_line = line_no;
+      // Spreadsheets set to a decimal comma (German, French) write fields between semicolons.
+      if (t.find(';') != std::string::npos)
+        throw InputError(
+            path, line_no, key,
+            "fields separated by semicolons (a spreadsheet set to decimal commas): save the table "
+            "with a decimal point and commas between the fields, found \"" +
+                t.substr(0, 80) + "\"");
       width = f.size();
       if (f[0] != "phase") {
         const auto unit = time_unit_of(f[0]);

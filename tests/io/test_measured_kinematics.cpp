@@ -235,3 +235,22 @@ TEST(MeasuredKinematics, AFittedCsvOfSeveralWingbeatsIsTheirMeanWingbeat) {
   EXPECT_NE(std::string(e.what()).find("with harmonics = N the wingbeats fold onto one"), std::string::npos)
       << e.what();
 }
+
+// A spreadsheet set to decimal commas writes fields between semicolons ("t [ms];phi" and
+// "0,0;60,0"): named as such at the header's line, where before the header was split at its
+// space and "found 't'" blamed the first column's name. A quoted comma-separated header
+// ("phi, measured" with a comma inside quotes, as RFC 4180 writes it) is one name.
+TEST(MeasuredKinematics, ASemicolonSeparatedCsvIsNamedAndQuotedNamesAreRead) {
+  const TemporaryCsv semicolons("semicolons.csv", "t [ms];phi\n0,0;60,0\n10,0;30,0\n20,0;-10,0\n");
+  const flapsim::InputError e = error_of(csv_sweep_case(semicolons.path, "phi"));
+  EXPECT_EQ(e.line(), 1);
+  EXPECT_NE(std::string(e.what()).find("fields separated by semicolons"), std::string::npos) << e.what();
+  std::string quoted = "phase,\"phi, measured\"\n";
+  for (int i = 0; i < 8; ++i)
+    quoted += std::to_string(i / 8.0) + "," +
+              std::to_string(50.0 * std::cos(2.0 * std::numbers::pi * i / 8.0)) + "\n";
+  const TemporaryCsv csv("quoted.csv", quoted);
+  const flapsim::io::Case c = case_from_text(csv_sweep_case(csv.path, "phi, measured"));
+  EXPECT_NEAR(c.kinematics.sweep.at_phase(0.25).value, 0.0, 1e-6);  // the spline through 50 cos 2πs at a knot
+  EXPECT_NEAR(c.kinematics.sweep.at_phase(0.0).value, 50.0 * flapsim::kDegToRad, 1e-6);
+}
