@@ -62,6 +62,15 @@ double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precisio
   return 1.9e8 / 2;
 }
 
+double tree_pairs_per_target(double segments, double tolerance) {
+  const double theta = uvlm::tree_parameters(tolerance).theta;
+  const double at_reference = theta >= 0.45  ? 2330.0
+                              : theta >= 0.3 ? 5040.0
+                              : theta >= 0.2 ? 9020.0
+                                             : 18900.0;
+  return at_reference * std::log2(std::max(segments, 2.0)) / std::log2(kTreeReferenceSegments);
+}
+
 double lattice_factorisations(double solves, double cycles, bool iterative) {
   return iterative ? std::min(solves, 4.0 + 4.0 * cycles) : solves;
 }
@@ -134,9 +143,21 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
     const double solves = bodies > 1 || fem_dofs > 0 ? iterations : 1.0;
     const double bound_segments = (nc + 1) * ns + nc * (ns + 1);
     auto ring_segments = [&](double rings) { return (rings + 1) * ns + rings * (ns + 1); };
+    // A far wake summed by the tree code (model.far_wake_by_tree): its rows older than the
+    // last build, about far_tree_rebuild_steps / 2 of them, are summed directly; the rest
+    // cost each target tree_pairs_per_target (below).
+    const bool far_tree = n.far_wake_cycles > 0.0 && n.wake_sum == uvlm::WakeSum::Tree;
+    const double rebuild = uvlm::VortexLatticeModel{}.far_tree_rebuild_steps;
+    const double direct_rows = far_tree ? free_rows + 0.5 * rebuild : std::numeric_limits<double>::infinity();
+    auto targets_at = [&](double r) {
+      const double young = std::min(r, free_rows);
+      double moving_rows = young + 1;
+      if (shed) moving_rows += uvlm::merged_sheet_rings(merge, young, spread) + 1;
+      return (n.free_wake ? moving_rows * (ns + 1) : 0.0) + solves * panels;
+    };
     auto step_cost = [&](double r) {
       const double young = std::min(r, free_rows);
-      double segs = ring_segments(r), moving_rows = young + 1;
+      double segs = ring_segments(std::min(r, direct_rows)), moving_rows = young + 1;
       if (shed) {
         segs += ring_segments(uvlm::merged_sheet_rings(merge, r, spread));
         moving_rows += uvlm::merged_sheet_rings(merge, young, spread) + 1;
@@ -152,7 +173,7 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
     const double moving = std::min(growing, free_rows);
     const double apart = merge > 0 ? spread - 1.0 : 0.0;
     double ends[] = {moving, growing, 3.0 * merge + apart,
-                     static_cast<double>(uvlm::kSheetMergeMaxRows) * merge + apart};
+                     static_cast<double>(uvlm::kSheetMergeMaxRows) * merge + apart, std::floor(direct_rows)};
     std::sort(std::begin(ends), std::end(ends));
     double sum = 0.0, from = 1.0;
     for (double end : ends) {
@@ -162,6 +183,22 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
     }
     sum += std::max(0.0, steps - growing) * step_cost(max_rows);
     e.interactions = sum;
+    // The tree's rows at step k: m = min(k, max_rows) − direct_rows, of N(m) = ring_segments(m)
+    // segments; seen by targets_at(k) points (constant once the far wake exists), built every
+    // `rebuild` steps. Σ log₂ N(m) over m = 1 … M in closed form: with N(m) = s (m + a),
+    // s = 2 ns + 1, a = ns / s, it is M log₂ s + (lnΓ(M + 1 + a) − lnΓ(1 + a)) / ln 2.
+    if (far_tree && std::floor(direct_rows) < growing) {
+      const double s = 2.0 * ns + 1.0, a = ns / s, first = std::floor(direct_rows);
+      const double grown = growing - first,
+                   kept = std::max(0.0, steps - growing);  // steps of m growing, held
+      auto log2_sum = [&](double M) {
+        return M * std::log2(s) + (std::lgamma(M + 1.0 + a) - std::lgamma(1.0 + a)) / std::log(2.0);
+      };
+      const double per_log2 = tree_pairs_per_target(2.0, n.tree_tolerance);  // τ(N) = per_log2 · log₂ N
+      const double logs = log2_sum(grown) + kept * std::log2(ring_segments(grown));
+      const double segments = s * grown * (grown + 1.0) / 2.0 + ns * grown + kept * ring_segments(grown);
+      e.tree_pairs = targets_at(growing) * per_log2 * logs + kTreeBuildPairsPerSegment * segments / rebuild;
+    }
     // The LU factorisations of the influence matrix, (2/3) n³ each (Golub & Van Loan,
     // "Matrix Computations", §3.2): a lattice of 3200 panels took 25 s for 8 of them, which
     // the interactions' 0.56 s did not say (until 3 Dec).
@@ -193,13 +230,14 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
   e.isa = uvlm::kernel_isa();
   e.interactions_per_second =
       nominal_interactions_per_second(e.isa, c.numerics.wake_precision == io::WakePrecision::Single);
-  e.seconds = e.interactions / e.interactions_per_second + e.structure_flops / kFlopsPerSecond +
-              e.lattice_flops / kLatticeFlopsPerSecond + e.fem_seconds;
+  e.seconds = e.interactions / e.interactions_per_second +
+              e.tree_pairs / nominal_interactions_per_second(e.isa, false) +
+              e.structure_flops / kFlopsPerSecond + e.lattice_flops / kLatticeFlopsPerSecond + e.fem_seconds;
   return e;
 }
 
 std::string describe(const RunEstimate& e) {
-  char buf[640];
+  char buf[768];
   const std::string isa(uvlm::kernel_isa_name(e.isa));
   const std::string structure = e.fem_dofs > 0 ? "FEM solves (" + std::to_string(e.fem_dofs) + " DOFs) ~" + seconds_text(e.fem_seconds)
                                                     : [&] {
@@ -214,12 +252,16 @@ std::string describe(const RunEstimate& e) {
     memory +=
         " (and ~" + bytes_text(e.setup_memory_bytes) + " before it, for the wing's FEM reduced in the setup)";
   if (e.frames_bytes > 0.0) memory += ", ParaView frames ~" + bytes_text(e.frames_bytes) + " on disk";
+  char tree[96] = "";
+  if (e.tree_pairs > 0.0)
+    std::snprintf(tree, sizeof tree, " (and the far wake's tree code, as long as %.2g direct pairs)",
+                  e.tree_pairs);
   std::snprintf(buf, sizeof buf,
-                "estimate: %lld steps, up to %lld wake panels, memory ~%s, %.2g Biot-Savart interactions, "
+                "estimate: %lld steps, up to %lld wake panels, memory ~%s, %.2g Biot-Savart interactions%s, "
                 "%.2g lattice LU flop, %s, time of the order of %s (one thread, %s kernel at a nominal %.2g "
                 "interactions/s)",
                 static_cast<long long>(e.steps), static_cast<long long>(e.wake_panels), memory.c_str(),
-                e.interactions, e.lattice_flops, structure.c_str(), seconds_text(e.seconds).c_str(),
+                e.interactions, tree, e.lattice_flops, structure.c_str(), seconds_text(e.seconds).c_str(),
                 isa.c_str(), e.interactions_per_second);
   return buf;
 }

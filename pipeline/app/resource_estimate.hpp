@@ -10,9 +10,10 @@
 /// nodes, wake circulations and AB2 velocities, wake segments; the dense influence matrix
 /// and its LU; one StepSample per step for the end-of-run analysis; dense chain matrices).
 /// Interactions: every wake node sees every bound and wake segment (free wake), and every
-/// collocation point sees every wake segment per coupling iteration. The time divides them
-/// by a nominal single-thread throughput of the kernel variant the CPU runs; it is an order
-/// of magnitude, not a measurement.
+/// collocation point sees every wake segment per coupling iteration; a far wake summed by
+/// the tree code costs each of them about log N (tree_pairs_per_target). The time divides
+/// them by a nominal single-thread throughput of the kernel variant the CPU runs; it is an
+/// order of magnitude, not a measurement.
 
 #include <cstdint>
 #include <string>
@@ -34,6 +35,10 @@ struct RunEstimate {
   double setup_memory_bytes = 0.0;
   double lattice_bytes = 0.0;      ///< of it, the lattice's influence matrix and its LU [B]
   double interactions = 0.0;       ///< Biot–Savart segment-point evaluations of the whole run
+  /// The far wake summed by the tree code (wake_sum = "tree" with far_wake_cycles): its
+  /// evaluations at the targets and its builds, counted as the direct double-precision pairs
+  /// that take as long (tree_pairs_per_target, kTreeBuildPairsPerSegment); 0 without it
+  double tree_pairs = 0.0;
   double structure_flops = 0.0;    ///< dense chain solves of the whole run [flop]
   double lattice_flops = 0.0;      ///< the lattice's LU factorisations of the whole run [flop]
   std::int64_t fem_dofs = 0;       ///< DOFs of the FEM structure (kind = "fem"; 0 for a chain)
@@ -50,6 +55,22 @@ struct RunEstimate {
 /// AVX-512 5.4e8 and 1.2e9 in double and single precision), the other half a margin for
 /// slower CPUs and the work besides the sums.
 double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precision);
+/// The far wake by the tree code (uvlm/segment_tree.hpp): one target's evaluation costs
+/// about as much as this many direct double-precision pairs at kTreeReferenceSegments
+/// segments, growing as log N with the far wake's N segments (a Barnes–Hut tree: the nodes a
+/// target accepts double with each level). Measured with bench_wake_tree's
+/// BM_PeriodicFarWake (the 20-cycle far wake of cases/hover_periodic.toml, 40 771 segments, at
+/// the young wake's 649 nodes; 1 thread, FLAPSIM_KERNEL=avx2, 2-core AMD EPYC, 4 Dec 2026):
+/// 6.2, 13.4 and 24.0 µs a target at tolerances 1e-3, 1e-4 and 1e-5 (θ = 0.45, 0.3, 0.2), a
+/// direct double pair 2.66 ns: 2330, 5040 and 9020 pairs. Below 1e-5 (θ = 0.12, not
+/// measured) the 1e-4 → 1e-5 growth, θ^−1.44, carried on: 18 900.
+double tree_pairs_per_target(double segments, double tolerance);
+inline constexpr double kTreeReferenceSegments = 40771.0;
+/// A build of the far wake's tree (cut into pieces, sorted, its moments): 20 ms for the 40 771
+/// segments above, 0.50 µs a segment, as long as 188 direct double pairs (the same benchmark;
+/// it does not depend on the tolerance: 18.6–20.6 ms at 1e-3 … 1e-5). The far wake's tree is
+/// built every VortexLatticeModel::far_tree_rebuild_steps steps.
+inline constexpr double kTreeBuildPairsPerSegment = 188.0;
 /// Nominal throughput of the chain's dense solves [flop/s].
 inline constexpr double kFlopsPerSecond = 1e9;
 /// Nominal throughput of the lattice's LU factorisation (Eigen's PartialPivLU of the dense

@@ -39,18 +39,50 @@ double interactions_step_by_step(const io::Case& c, int bodies) {
   const bool added_mass = n.added_mass && n.structure_substeps == 1;
   const double solves = bodies > 1 ? std::min(added_mass ? 4 : 5, n.max_coupling_iterations) : 1;
   const double bound = (nc + 1) * ns + nc * (ns + 1);
+  // A far wake by the tree code: only its rows since the tree's last build (every 10 steps,
+  // 5 on average) are summed directly (tree_pairs_step_by_step counts the rest).
+  const bool far_tree = n.far_wake_cycles > 0 && n.wake_sum == uvlm::WakeSum::Tree;
+  const double direct_rows = far_tree ? free_rows + 5.0 : 1e300;
   double sum = 0.0;
   for (long k = 1; k <= steps; ++k) {
-    const double r = std::min(static_cast<double>(k), max_rows);
+    const double r = std::min(static_cast<double>(k), max_rows), rd = std::min(r, direct_rows);
     const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
     const int spread = n.sheet_merge_spread_steps;
     const double s = shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, r, spread) : 0.0;
     const double s_young =
         shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, std::min(r, free_rows), spread) : 0.0;
-    const double segments = (r + 1) * ns + r * (ns + 1) + (shed ? (s + 1) * ns + s * (ns + 1) : 0.0) + bound;
+    const double segments =
+        (rd + 1) * ns + rd * (ns + 1) + (shed ? (s + 1) * ns + s * (ns + 1) : 0.0) + bound;
     const double moving =
         n.free_wake ? ((std::min(r, free_rows) + 1) + (shed ? s_young + 1 : 0.0)) * (ns + 1) : 0.0;
     sum += (moving + solves * nc * ns) * segments;
+  }
+  return sum;
+}
+
+// The far wake's tree step by step: at step k its rows are the far wake's but the 5 newest
+// (m = min(k, max_rows) − free rows − 5), N = (m + 1) ns + m (ns + 1) segments; each target
+// (the moving nodes and the collocation points of every solve) costs
+// app::tree_pairs_per_target(N), and a build every 10 steps 188 pairs a segment.
+double tree_pairs_step_by_step(const io::Case& c, int bodies) {
+  const auto& n = c.numerics;
+  const double nc = n.chordwise_panels, ns = n.spanwise_panels;
+  const long steps = static_cast<long>(n.total_steps());
+  const double max_rows = n.wake_max_rows > 0 ? n.wake_max_rows : static_cast<double>(steps);
+  const double free_rows = std::max(1.0, std::floor(n.far_wake_cycles * n.steps_per_cycle));
+  const double solves =
+      bodies > 1 ? std::min(n.added_mass && n.structure_substeps == 1 ? 4 : 5, n.max_coupling_iterations) : 1;
+  const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
+  double sum = 0.0;
+  for (long k = 1; k <= steps; ++k) {
+    const double r = std::min(static_cast<double>(k), max_rows), m = r - free_rows - 5.0;
+    if (m < 1.0) continue;
+    const double segments = (m + 1) * ns + m * (ns + 1);
+    const double sheet_rows =
+        shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, free_rows, n.sheet_merge_spread_steps) + 1 : 0.0;
+    const double targets = (free_rows + 1 + sheet_rows) * (ns + 1) + solves * nc * ns;
+    sum += targets * app::tree_pairs_per_target(segments, n.tree_tolerance) +
+           app::kTreeBuildPairsPerSegment * segments / 10.0;
   }
   return sum;
 }
@@ -153,12 +185,70 @@ TEST(RunEstimate, TheTimeUsesTheRateOfTheKernelInUseAndTheWakePrecision) {
       const double rate = app::nominal_interactions_per_second(isa, p == io::WakePrecision::Single);
       EXPECT_EQ(e.isa, isa);
       EXPECT_DOUBLE_EQ(e.interactions_per_second, rate);
-      EXPECT_DOUBLE_EQ(e.seconds, e.interactions / rate + e.lattice_flops / app::kLatticeFlopsPerSecond);
+      EXPECT_DOUBLE_EQ(e.seconds, e.interactions / rate +
+                                      e.tree_pairs / app::nominal_interactions_per_second(isa, false) +
+                                      e.lattice_flops / app::kLatticeFlopsPerSecond);
       const std::string line = app::describe(e);
       EXPECT_NE(line.find(std::string(uvlm::kernel_isa_name(isa)) + " kernel"), std::string::npos) << line;
     }
   }
   uvlm::set_kernel_isa(before);
+}
+
+// A far wake summed by the tree code (wake_sum = "tree" with far_wake_cycles) costs each
+// target about log N, not N (app::tree_pairs_per_target, measured with bench_wake_tree). Before,
+// the estimate counted it as the direct sum: `flapsim check` of cases/lua_rigid.toml over 300
+// cycles with `shed` said 43 min, 4.2 h and 1.1 days at 50, 100 and 200 steps a cycle for
+// runs of 10.5 min, 27 min and 2.25 h, and 12 min for the 80 cycles with `separated` that
+// ran in 77 s: 4–12 times, growing with the run (docs/case_file.md, "Size of a run").
+TEST(RunEstimate, TheFarWakesTreeCostsEachTargetLogNAndTheTimeFollowsTheRun) {
+  io::Case c = io::load_case_file(std::string(FLAPSIM_SOURCE_DIR) + "/cases/lua_rigid.toml");
+  ASSERT_EQ(c.numerics.wake_sum, uvlm::WakeSum::Tree);
+  ASSERT_GT(c.numerics.far_wake_cycles, 0.0);
+  // The closed form against the sum step by step, with and without a shed sheet's targets.
+  for (uvlm::LeadingEdge le : {uvlm::LeadingEdge::Separated, uvlm::LeadingEdge::Shed}) {
+    c.numerics.leading_edge = le;
+    const app::RunEstimate e = app::estimate_run(c, 1);
+    EXPECT_GT(e.tree_pairs, 0.0);
+    EXPECT_NEAR(e.tree_pairs, tree_pairs_step_by_step(c, 1), 1e-9 * e.tree_pairs);
+    EXPECT_NEAR(e.interactions, interactions_step_by_step(c, 1), 1e-9 * e.interactions);
+  }
+  // log N: the tree's cost per target at 1e-3 doubles from 2^10 to 2^20 segments (measured
+  // 2330 pairs at 40 771 segments).
+  EXPECT_NEAR(app::tree_pairs_per_target(1 << 20, 1e-3), 2.0 * app::tree_pairs_per_target(1 << 10, 1e-3),
+              1e-9);
+  EXPECT_NEAR(app::tree_pairs_per_target(app::kTreeReferenceSegments, 1e-4), 5040.0, 1e-9);
+  // Without the tree (the direct sum of the far wake) nothing is counted for it.
+  c.numerics.wake_sum = uvlm::WakeSum::Direct;
+  EXPECT_EQ(app::estimate_run(c, 1).tree_pairs, 0.0);
+  c.numerics.wake_sum = uvlm::WakeSum::Tree;
+  // Against runs (flapsim run --threads 1 --vtk-every 0, wall time; 2-core AMD EPYC with
+  // AVX-512, so at the AVX-512 rates; docs/case_file.md, "Size of a run"): within a factor 2.
+  struct Run {
+    uvlm::LeadingEdge leading_edge;
+    int steps_per_cycle, cycles;
+    double measured_s;
+  };
+  const Run runs[] = {
+      {uvlm::LeadingEdge::Separated, 100, 10, 5.95}, {uvlm::LeadingEdge::Separated, 100, 80, 77.2},
+      {uvlm::LeadingEdge::Shed, 100, 80, 182.8},     {uvlm::LeadingEdge::Shed, 50, 300, 631.0},
+      {uvlm::LeadingEdge::Shed, 100, 300, 1600.0},   {uvlm::LeadingEdge::Shed, 200, 300, 8111.0}};
+  for (const Run& run : runs) {
+    c.numerics.leading_edge = run.leading_edge;
+    c.numerics.steps_per_cycle = run.steps_per_cycle;
+    c.numerics.cycles = run.cycles;
+    const app::RunEstimate e = app::estimate_run(c, 1);
+    const double seconds =
+        e.interactions / app::nominal_interactions_per_second(uvlm::KernelIsa::Avx512, true) +
+        e.tree_pairs / app::nominal_interactions_per_second(uvlm::KernelIsa::Avx512, false) +
+        e.lattice_flops / app::kLatticeFlopsPerSecond;
+    std::printf("[ value ] %d steps a cycle, %d cycles, %s: estimated %.0f s, measured %.0f s (%.2f)\n",
+                run.steps_per_cycle, run.cycles,
+                run.leading_edge == uvlm::LeadingEdge::Shed ? "shed" : "separated", seconds, run.measured_s,
+                seconds / run.measured_s);
+    EXPECT_GT(seconds, 0.5 * run.measured_s) << run.steps_per_cycle << " " << run.cycles;
+    EXPECT_LT(seconds, 2.0 * run.measured_s) << run.steps_per_cycle << " " << run.cycles;
+  }
 }
 
 // The FEM structure's time (kind = "fem"): steps × kFemSecondsPerStep1000 × (DOFs/1000)^1.3 ×
