@@ -18,8 +18,6 @@
 
 namespace flapsim::app {
 
-namespace {
-
 std::string seconds_text(double s) {
   char buf[32];
   if (s >= 86400.0) std::snprintf(buf, sizeof buf, "%.2g days", s / 86400.0);
@@ -28,6 +26,8 @@ std::string seconds_text(double s) {
   else std::snprintf(buf, sizeof buf, "%.2g s", s);
   return buf;
 }
+
+namespace {
 
 // Σ f(r) for the integers r = from … to (none if to < from), f a polynomial of degree at
 // most 2 there: fitted through f(from), f(from + 1), f(from + 2) (Newton's forward

@@ -48,6 +48,9 @@ struct RunEstimate {
   double seconds = 0.0;            ///< order of magnitude of the wall time, one thread [s]
 };
 
+/// A time in two significant digits and its unit: "44 s", "2.7 h", "1.1 days".
+std::string seconds_text(double seconds);
+
 /// Nominal single-thread throughput of the direct Biot–Savart sums [interactions/s] with the
 /// kernel variant `isa` in single or double precision (the case's numerics.wake_precision):
 /// half the throughput measured on the development machine (docs/performance.md, "Measured",

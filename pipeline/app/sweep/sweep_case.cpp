@@ -111,13 +111,15 @@ const Assignment* column_of(const CasePoint& point, const OverrideInputError& e,
 // with the wing as a rigid body, and loads and markers are checked against structure.bodies,
 // the number of bodies the reduction gives. Failures other than bad input (the numerics)
 // are left to the case, which records them in its row.
-void check_like_run(const SweepInputs& inputs, const ResolvedCase& r) {
+void check_like_run(const SweepInputs& inputs, ResolvedCase& r) {
   const io::Case& c = r.c;
-  int bodies = c.structure.kind == io::Case::Structure::Kind::Rigid ? 1 : c.structure.bodies;
+  int bodies = c.structure.kind == io::Case::Structure::Kind::Rigid ? 1 : c.structure.bodies, fem_dofs = 0;
   const app::SetupOptions options{inputs.chain_file, r.spring_scale, r.wing_overrides};
   try {
     if (!app::reduces_wing_in_process(c, inputs.chain_file) || c.wing_file.empty()) {
-      bodies = app::build_fsi_setup(c, options).chain().num_bodies();
+      const app::FsiSetup setup = app::build_fsi_setup(c, options);
+      bodies = setup.chain().num_bodies();
+      if (setup.fem_structure) fem_dofs = setup.fem_structure->num_dofs();
     } else {
       for (std::size_t i = 0; i < c.loads.size(); ++i)
         if (c.loads[i].body > bodies)
@@ -144,7 +146,9 @@ void check_like_run(const SweepInputs& inputs, const ResolvedCase& r) {
   } catch (const std::exception&) {
     return;  // a numerical failure of the setup: the case's run meets it and records it
   }
-  app::refuse_if_it_cannot_fit(app::estimate_run(c, bodies), c);
+  const app::RunEstimate estimate = app::estimate_run(c, bodies, fem_dofs);
+  app::refuse_if_it_cannot_fit(estimate, c);
+  r.estimated_seconds = estimate.seconds;
 }
 
 }  // namespace

@@ -43,6 +43,10 @@ struct ResolvedCase {
   /// words for sweep.csv's message: "numerics.far_wake_cycles: far_wake_cycles = 1 in hover is
   /// outside the measured range 0.5 to 0.625" (a wing key with its "wing." prefix).
   std::vector<std::string> file_warnings;
+  /// The case's one-thread time as `flapsim run` estimates it (app::estimate_run) [s]; 0 when
+  /// its setup fails in its numerics (the case meets it when it runs). A wing reduced in the
+  /// case's setup counts as structure.bodies bodies.
+  double estimated_seconds = 0.0;
 };
 
 /// \brief The case's warnings for app::RunOptions::warnings (summary.json's "warnings"), as a

@@ -20,6 +20,7 @@
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/omp_environment.hpp"
+#include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/app/sweep/earlier_cases.hpp"
 #include "pipeline/app/sweep/kept_series.hpp"
 #include "pipeline/app/sweep/keys_that_change_nothing.hpp"
@@ -176,6 +177,23 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
                          options.quiet ? app::ProgressLine::Mode::quiet : app::ProgressLine::Mode::automatic,
                          options.log_interval);
   report.threads = options.threads > 0 ? options.threads : default_threads(world, todo.size());
+  if (report.root && !options.quiet && !todo.empty()) {
+    // What the cases to run will take, each as `flapsim run` estimates it (one thread each,
+    // as the sweep runs them), the threads of all ranks sharing them.
+    double total = 0.0, longest = 0.0;
+    for (std::size_t i : todo) {
+      total += resolved[i].estimated_seconds;
+      longest = std::max(longest, resolved[i].estimated_seconds);
+    }
+    const int workers = std::max(1, report.threads) * std::max(1, report.ranks);
+    std::fprintf(stderr,
+                 "sweep: estimate: %zu case%s to run, of the order of %s of one thread's time in all (the "
+                 "longest %s), about %s on %d thread%s\n",
+                 todo.size(), todo.size() == 1 ? "" : "s", app::seconds_text(total).c_str(),
+                 app::seconds_text(longest).c_str(),
+                 app::seconds_text(std::max(longest, total / workers)).c_str(), workers,
+                 workers == 1 ? "" : "s");
+  }
   const RunCase run = [&](std::size_t i) {
     omp_set_num_threads(1);  // the cases fill the cores; no nested parallelism
     CaseOutcome o;
