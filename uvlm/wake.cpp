@@ -15,6 +15,15 @@
 
 namespace flapsim::uvlm {
 
+long far_tree_rebuild_interval(const VortexLatticeModel& m, std::size_t segments, double targets) {
+  const long fewest = std::max(1, m.far_tree_rebuild_steps);
+  if (m.core_growth.enabled || !(targets > 0.0)) return fewest;
+  const double row = 2.0 * m.spanwise + 1.0;  // segments a ring row adds
+  const double k =
+      std::sqrt(2.0 * SegmentTree::kBuildPairsPerSegment * static_cast<double>(segments) / (row * targets));
+  return std::max(fewest, std::lround(k));
+}
+
 namespace detail {
 
 void attach_wake_to_trailing_edge(const VortexLatticeModel& m, VortexLatticeData& d) {
@@ -76,7 +85,7 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
   if (m.far_wake_by_tree()) {
     const int F = far_wake_node_rows(m, d);
     const bool stale = d.far_tree_rows == 0 || d.far_tree_rows > F || m.max_wake_rows > 0 ||
-                       d.accepted_steps - d.far_tree_step >= m.far_tree_rebuild_steps;
+                       d.accepted_steps - d.far_tree_step >= d.far_tree_interval;
     if (stale && F > 1) {
       d.far_wake_segments.clear();
       auto far_ratio = [&](double g, double a) { return rc0_2 / grown_core_radius2(m.core_growth, rc0, a, g); };
@@ -84,6 +93,9 @@ void build_wake_segments(const VortexLatticeModel& m, VortexLatticeData& d, Wake
       d.wake_tree.build(d.far_wake_segments, m.core, tree_parameters(m.tree_tolerance));
       d.far_tree_rows = F;
       d.far_tree_step = d.accepted_steps;
+      const double young_nodes = m.wake_model == WakeModel::Free ? static_cast<double>(W + 1 - F) * n1 : 0.0;
+      d.far_tree_interval =
+          far_tree_rebuild_interval(m, d.far_wake_segments.size(), young_nodes + m.chordwise * m.spanwise);
       d.far_tree_shift.setZero();
     } else if (stale) {
       d.far_tree_rows = 0;

@@ -143,9 +143,10 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
     const double solves = bodies > 1 || fem_dofs > 0 ? iterations : 1.0;
     const double bound_segments = (nc + 1) * ns + nc * (ns + 1);
     auto ring_segments = [&](double rings) { return (rings + 1) * ns + rings * (ns + 1); };
-    // A far wake summed by the tree code (model.far_wake_by_tree): its rows older than the
-    // last build, about far_tree_rebuild_steps / 2 of them, are summed directly; the rest
-    // cost each target tree_pairs_per_target (below).
+    // A far wake summed by the tree code (model.far_wake_by_tree): its rows since the last
+    // build are summed directly, at least far_tree_rebuild_steps / 2 of them on average (here;
+    // the more of a longer interval with the tree's builds, below); the rest cost each target
+    // tree_pairs_per_target.
     const bool far_tree = n.far_wake_cycles > 0.0 && n.wake_sum == uvlm::WakeSum::Tree;
     const double rebuild = uvlm::VortexLatticeModel{}.far_tree_rebuild_steps;
     const double direct_rows = far_tree ? free_rows + 0.5 * rebuild : std::numeric_limits<double>::infinity();
@@ -184,9 +185,15 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
     sum += std::max(0.0, steps - growing) * step_cost(max_rows);
     e.interactions = sum;
     // The tree's rows at step k: m = min(k, max_rows) − direct_rows, of N(m) = ring_segments(m)
-    // segments; seen by targets_at(k) points (constant once the far wake exists), built every
-    // `rebuild` steps. Σ log₂ N(m) over m = 1 … M in closed form: with N(m) = s (m + a),
-    // s = 2 ns + 1, a = ns / s, it is M log₂ s + (lnΓ(M + 1 + a) − lnΓ(1 + a)) / ln 2.
+    // segments, seen by T = targets_at(k) points (constant once the far wake exists). Its
+    // evaluations: Σ log₂ N(m) over m = 1 … M in closed form: with N(m) = s (m + a), s = 2 ns +
+    // 1, a = ns / s, it is M log₂ s + (lnΓ(M + 1 + a) − lnΓ(1 + a)) / ln 2. Its builds, every
+    // k(N) = max(k₀, c √N) steps (uvlm::far_tree_rebuild_interval, c = √(2κ / (s T')), κ the
+    // build's pairs a segment, T' the young wake's nodes and the panels the interval is chosen
+    // for; k₀ = far_tree_rebuild_steps): κ N / k a step, and the rows that joined since, beyond
+    // the k₀/2 counted in the interactions, T s (k − k₀)/2 a step: for N ≤ N₀ = (k₀/c)² κ N/k₀,
+    // above it A √N − B with A = κ/c + T s c/2, B = T s k₀/2; Σ √N(m) by the midpoint rule,
+    // √s (2/3) [(m + a)^{3/2}] from m − 1/2 to m + 1/2.
     if (far_tree && std::floor(direct_rows) < growing) {
       const double s = 2.0 * ns + 1.0, a = ns / s, first = std::floor(direct_rows);
       const double grown = growing - first,
@@ -196,8 +203,27 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
       };
       const double per_log2 = tree_pairs_per_target(2.0, n.tree_tolerance);  // τ(N) = per_log2 · log₂ N
       const double logs = log2_sum(grown) + kept * std::log2(ring_segments(grown));
-      const double segments = s * grown * (grown + 1.0) / 2.0 + ns * grown + kept * ring_segments(grown);
-      e.tree_pairs = targets_at(growing) * per_log2 * logs + kTreeBuildPairsPerSegment * segments / rebuild;
+      const double T = targets_at(growing), kappa = kTreeBuildPairsPerSegment;
+      const double young_nodes = n.free_wake ? (free_rows + 1.0) * (ns + 1.0) : 0.0;
+      const double c2 = n.core_growth ? 0.0 : 2.0 * kappa / (s * (young_nodes + panels));  // c²
+      // m up to m0 (N ≤ N₀ = k₀²/c²): rebuilt every k₀ steps.
+      const double m0 =
+          c2 > 0.0 ? std::clamp(std::floor((rebuild * rebuild / c2 - ns) / s), 0.0, grown) : grown;
+      auto rebuild_cost = [&](double N) {  // a step's build and rows since the build [pairs]
+        if (!(c2 > 0.0) || N * c2 <= rebuild * rebuild) return kappa * N / rebuild;
+        const double c = std::sqrt(c2);
+        return (kappa / c + T * s * c / 2.0) * std::sqrt(N) - T * s * rebuild / 2.0;
+      };
+      double builds = kappa / rebuild * (s * m0 * (m0 + 1.0) / 2.0 + ns * m0);
+      if (m0 < grown) {
+        const double c = std::sqrt(c2);
+        auto root_integral = [&](double x) { return std::sqrt(s) * (2.0 / 3.0) * std::pow(x + a, 1.5); };
+        const double roots =
+            root_integral(grown + 0.5) - root_integral(m0 + 0.5);  // Σ √N(m), m = m0+1 … grown
+        builds += (kappa / c + T * s * c / 2.0) * roots - T * s * rebuild / 2.0 * (grown - m0);
+      }
+      builds += kept * rebuild_cost(ring_segments(grown));
+      e.tree_pairs = T * per_log2 * logs + builds;
     }
     // The LU factorisations of the influence matrix, (2/3) n³ each (Golub & Van Loan,
     // "Matrix Computations", §3.2): a lattice of 3200 panels took 25 s for 8 of them, which

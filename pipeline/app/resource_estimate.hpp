@@ -20,6 +20,7 @@
 
 #include "pipeline/io/case_model.hpp"
 #include "uvlm/kernel_dispatch.hpp"
+#include "uvlm/segment_tree.hpp"
 
 namespace flapsim::app {
 
@@ -69,11 +70,10 @@ double nominal_interactions_per_second(uvlm::KernelIsa isa, bool single_precisio
 /// measured) the 1e-4 → 1e-5 growth, θ^−1.44, carried on: 18 900.
 double tree_pairs_per_target(double segments, double tolerance);
 inline constexpr double kTreeReferenceSegments = 40771.0;
-/// A build of the far wake's tree (cut into pieces, sorted, its moments): 20 ms for the 40 771
-/// segments above, 0.50 µs a segment, as long as 188 direct double pairs (the same benchmark;
-/// it does not depend on the tolerance: 18.6–20.6 ms at 1e-3 … 1e-5). The far wake's tree is
-/// built every VortexLatticeModel::far_tree_rebuild_steps steps.
-inline constexpr double kTreeBuildPairsPerSegment = 188.0;
+/// A build of the far wake's tree as long as this many direct double pairs a segment
+/// (uvlm::SegmentTree::kBuildPairsPerSegment, measured); it is built every
+/// uvlm::far_tree_rebuild_interval steps.
+inline constexpr double kTreeBuildPairsPerSegment = uvlm::SegmentTree::kBuildPairsPerSegment;
 /// Nominal throughput of the chain's dense solves [flop/s].
 inline constexpr double kFlopsPerSecond = 1e9;
 /// Nominal throughput of the lattice's LU factorisation (Eigen's PartialPivLU of the dense

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/io/case_file.hpp"
@@ -63,7 +64,10 @@ double interactions_step_by_step(const io::Case& c, int bodies) {
 // The far wake's tree step by step: at step k its rows are the far wake's but the 5 newest
 // (m = min(k, max_rows) − free rows − 5), N = (m + 1) ns + m (ns + 1) segments; each target
 // (the moving nodes and the collocation points of every solve) costs
-// app::tree_pairs_per_target(N), and a build every 10 steps 188 pairs a segment.
+// app::tree_pairs_per_target(N); a build 188 pairs a segment, every
+// k = max(10, √(2 · 188 N / ((2 ns + 1) T'))) steps (uvlm::far_tree_rebuild_interval, T' the
+// young wake's nodes and the panels; 10 with core growth), and the rows joined since, beyond
+// the 5 counted among the interactions, (2 ns + 1)(k − 10)/2 pairs for each target.
 double tree_pairs_step_by_step(const io::Case& c, int bodies) {
   const auto& n = c.numerics;
   const double nc = n.chordwise_panels, ns = n.spanwise_panels;
@@ -81,8 +85,12 @@ double tree_pairs_step_by_step(const io::Case& c, int bodies) {
     const double sheet_rows =
         shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, free_rows, n.sheet_merge_spread_steps) + 1 : 0.0;
     const double targets = (free_rows + 1 + sheet_rows) * (ns + 1) + solves * nc * ns;
+    const double row = 2 * ns + 1, interval_targets = (free_rows + 1) * (ns + 1) + nc * ns;
+    const double interval = n.core_growth ? 10.0
+                                          : std::max(10.0, std::sqrt(2 * app::kTreeBuildPairsPerSegment *
+                                                                     segments / (row * interval_targets)));
     sum += targets * app::tree_pairs_per_target(segments, n.tree_tolerance) +
-           app::kTreeBuildPairsPerSegment * segments / 10.0;
+           app::kTreeBuildPairsPerSegment * segments / interval + targets * row * (interval - 10.0) / 2.0;
   }
   return sum;
 }
@@ -196,24 +204,34 @@ TEST(RunEstimate, TheTimeUsesTheRateOfTheKernelInUseAndTheWakePrecision) {
 }
 
 // A far wake summed by the tree code (wake_sum = "tree" with far_wake_cycles) costs each
-// target about log N, not N (app::tree_pairs_per_target, measured with bench_wake_tree). Before,
-// the estimate counted it as the direct sum: `flapsim check` of cases/lua_rigid.toml over 300
-// cycles with `shed` said 43 min, 4.2 h and 1.1 days at 50, 100 and 200 steps a cycle for
-// runs of 10.5 min, 27 min and 2.25 h, and 12 min and 2.7 h for 80 and 300 cycles with
-// `separated` that ran in 77 s and 12.6 min: 4–13 times, growing with the run (docs/case_file.md, "Size of a
+// target about log N, not N (app::tree_pairs_per_target, measured with bench_wake_tree), and
+// its builds as uvlm::far_tree_rebuild_interval spaces them. Before, the estimate counted it
+// as the direct sum: `flapsim check` of cases/lua_rigid.toml with `shed` over 300 cycles said
+// 43 min and 4.2 h at 50 and 100 steps a cycle, with `separated` over 80 and 300 cycles 12 min
+// and 2.7 h, for runs (now) of 2.1 min, 10 min, 38 s and 3 min (docs/case_file.md, "Size of a
 // run").
 TEST(RunEstimate, TheFarWakesTreeCostsEachTargetLogNAndTheTimeFollowsTheRun) {
   io::Case c = io::load_case_file(std::string(FLAPSIM_SOURCE_DIR) + "/cases/lua_rigid.toml");
   ASSERT_EQ(c.numerics.wake_sum, uvlm::WakeSum::Tree);
   ASSERT_GT(c.numerics.far_wake_cycles, 0.0);
   // The closed form against the sum step by step, with and without a shed sheet's targets.
-  for (uvlm::LeadingEdge le : {uvlm::LeadingEdge::Separated, uvlm::LeadingEdge::Shed}) {
+  // Over the case's 6 cycles and 300 (the rebuilds' interval from its least to ~95 steps), and
+  // with core growth (every 10 steps).
+  for (const auto& [le, cycles, growth] :
+       {std::tuple{uvlm::LeadingEdge::Separated, 6, false}, std::tuple{uvlm::LeadingEdge::Shed, 6, false},
+        std::tuple{uvlm::LeadingEdge::Separated, 300, false},
+        std::tuple{uvlm::LeadingEdge::Shed, 300, true}}) {
     c.numerics.leading_edge = le;
+    c.numerics.cycles = cycles;
+    c.numerics.core_growth = growth;
     const app::RunEstimate e = app::estimate_run(c, 1);
     EXPECT_GT(e.tree_pairs, 0.0);
-    EXPECT_NEAR(e.tree_pairs, tree_pairs_step_by_step(c, 1), 1e-9 * e.tree_pairs);
+    EXPECT_NEAR(e.tree_pairs, tree_pairs_step_by_step(c, 1),
+                1e-5 * e.tree_pairs);  // Σ √N by the midpoint rule
     EXPECT_NEAR(e.interactions, interactions_step_by_step(c, 1), 1e-9 * e.interactions);
   }
+  c.numerics.cycles = 6;
+  c.numerics.core_growth = false;
   // log N: the tree's cost per target at 1e-3 doubles from 2^10 to 2^20 segments (measured
   // 2330 pairs at 40 771 segments).
   EXPECT_NEAR(app::tree_pairs_per_target(1 << 20, 1e-3), 2.0 * app::tree_pairs_per_target(1 << 10, 1e-3),
@@ -223,18 +241,21 @@ TEST(RunEstimate, TheFarWakesTreeCostsEachTargetLogNAndTheTimeFollowsTheRun) {
   c.numerics.wake_sum = uvlm::WakeSum::Direct;
   EXPECT_EQ(app::estimate_run(c, 1).tree_pairs, 0.0);
   c.numerics.wake_sum = uvlm::WakeSum::Tree;
-  // Against runs (flapsim run --threads 1 --vtk-every 0, wall time; 2-core AMD EPYC with
-  // AVX-512, so at the AVX-512 rates; docs/case_file.md, "Size of a run"): within a factor 2.
+  // Against runs (flapsim run --threads 1 --vtk-every 0, wall time, 4 Dec 2026; 2-core AMD EPYC
+  // with AVX-512, so at the AVX-512 rates; docs/case_file.md, "Size of a run"). The nominal
+  // rates are half the throughputs measured (app::nominal_interactions_per_second: the other
+  // half a margin for slower CPUs), so on this CPU the estimate lies above the run, by up to
+  // 2.4 times; before, 4–19 times, growing with the run.
   struct Run {
     uvlm::LeadingEdge leading_edge;
     int steps_per_cycle, cycles;
     double measured_s;
   };
   const Run runs[] = {
-      {uvlm::LeadingEdge::Separated, 100, 10, 5.95},   {uvlm::LeadingEdge::Separated, 100, 80, 77.2},
-      {uvlm::LeadingEdge::Separated, 100, 300, 756.0}, {uvlm::LeadingEdge::Shed, 100, 80, 182.8},
-      {uvlm::LeadingEdge::Shed, 50, 300, 631.0},       {uvlm::LeadingEdge::Shed, 100, 300, 1600.0},
-      {uvlm::LeadingEdge::Shed, 200, 300, 8111.0}};
+      {uvlm::LeadingEdge::Separated, 100, 10, 4.37},   {uvlm::LeadingEdge::Separated, 100, 80, 38.3},
+      {uvlm::LeadingEdge::Separated, 100, 300, 183.0}, {uvlm::LeadingEdge::Shed, 100, 80, 97.7},
+      {uvlm::LeadingEdge::Shed, 50, 300, 126.0},       {uvlm::LeadingEdge::Shed, 100, 300, 614.0},
+      {uvlm::LeadingEdge::Shed, 200, 80, 534.0}};
   for (const Run& run : runs) {
     c.numerics.leading_edge = run.leading_edge;
     c.numerics.steps_per_cycle = run.steps_per_cycle;
@@ -248,8 +269,8 @@ TEST(RunEstimate, TheFarWakesTreeCostsEachTargetLogNAndTheTimeFollowsTheRun) {
                 run.steps_per_cycle, run.cycles,
                 run.leading_edge == uvlm::LeadingEdge::Shed ? "shed" : "separated", seconds, run.measured_s,
                 seconds / run.measured_s);
-    EXPECT_GT(seconds, 0.5 * run.measured_s) << run.steps_per_cycle << " " << run.cycles;
-    EXPECT_LT(seconds, 2.0 * run.measured_s) << run.steps_per_cycle << " " << run.cycles;
+    EXPECT_GT(seconds, 0.7 * run.measured_s) << run.steps_per_cycle << " " << run.cycles;
+    EXPECT_LT(seconds, 3.0 * run.measured_s) << run.steps_per_cycle << " " << run.cycles;
   }
 }
 
