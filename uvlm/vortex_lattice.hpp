@@ -166,13 +166,13 @@ struct VortexLatticeModel {
   /// 1 = the slipstream boundary, which moves with the mean of the jet's 2 v_i inside and
   /// the still air outside (docs/uvlm.md, "Far wake").
   double far_wake_speed_factor = 1.0;
-  /// True when the far wake is convected and summed by the tree code (for the wing and
-  /// the younger wake alike), the younger wake by the direct sum.
   /// Fewest steps between rebuilds of the far wake's tree (it translates exactly in between,
   /// and the rows that join the far wake meanwhile are summed directly); the interval grows
   /// with the far wake (far_tree_rebuild_interval). With core growth the interval itself: the
-  /// tree's cores are up to this many steps old.
+  /// tree's cores are up to this many steps old. With max_wake_rows it is rebuilt every step.
   int far_tree_rebuild_steps = 10;
+  /// True when the far wake is convected and summed by the tree code (for the wing and
+  /// the younger wake alike), the younger wake by the direct sum.
   bool far_wake_by_tree() const { return far_wake_age > 0.0 && wake_sum == WakeSum::Tree; }
   /// The wake's self-induced velocity: direct sum or tree code (in double precision, to
   /// a relative error of tree_tolerance; the direct sum is used while the wake has fewer

@@ -148,8 +148,12 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
     // the more of a longer interval with the tree's builds, below); the rest cost each target
     // tree_pairs_per_target.
     const bool far_tree = n.far_wake_cycles > 0.0 && n.wake_sum == uvlm::WakeSum::Tree;
-    const double rebuild = uvlm::VortexLatticeModel{}.far_tree_rebuild_steps;
-    const double direct_rows = far_tree ? free_rows + 0.5 * rebuild : std::numeric_limits<double>::infinity();
+    // A truncated wake (wake_max_rows) drops rows at every step: its far tree is rebuilt at
+    // every step (uvlm/wake.cpp).
+    const bool truncated = n.wake_max_rows > 0;
+    const double rebuild = truncated ? 1.0 : uvlm::VortexLatticeModel{}.far_tree_rebuild_steps;
+    const double direct_rows =
+        far_tree ? free_rows + std::floor(0.5 * rebuild) : std::numeric_limits<double>::infinity();
     auto targets_at = [&](double r) {
       const double young = std::min(r, free_rows);
       double moving_rows = young + 1;
@@ -205,7 +209,7 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
       const double logs = log2_sum(grown) + kept * std::log2(ring_segments(grown));
       const double T = targets_at(growing), kappa = kTreeBuildPairsPerSegment;
       const double young_nodes = n.free_wake ? (free_rows + 1.0) * (ns + 1.0) : 0.0;
-      const double c2 = n.core_growth ? 0.0 : 2.0 * kappa / (s * (young_nodes + panels));  // c²
+      const double c2 = n.core_growth || truncated ? 0.0 : 2.0 * kappa / (s * (young_nodes + panels));  // c²
       // m up to m0 (N ≤ N₀ = k₀²/c²): rebuilt every k₀ steps.
       const double m0 =
           c2 > 0.0 ? std::clamp(std::floor((rebuild * rebuild / c2 - ns) / s), 0.0, grown) : grown;

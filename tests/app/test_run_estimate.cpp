@@ -43,7 +43,7 @@ double interactions_step_by_step(const io::Case& c, int bodies) {
   // A far wake by the tree code: only its rows since the tree's last build (every 10 steps,
   // 5 on average) are summed directly (tree_pairs_step_by_step counts the rest).
   const bool far_tree = n.far_wake_cycles > 0 && n.wake_sum == uvlm::WakeSum::Tree;
-  const double direct_rows = far_tree ? free_rows + 5.0 : 1e300;
+  const double direct_rows = far_tree ? free_rows + (n.wake_max_rows > 0 ? 0.0 : 5.0) : 1e300;
   double sum = 0.0;
   for (long k = 1; k <= steps; ++k) {
     const double r = std::min(static_cast<double>(k), max_rows), rd = std::min(r, direct_rows);
@@ -66,8 +66,9 @@ double interactions_step_by_step(const io::Case& c, int bodies) {
 // (the moving nodes and the collocation points of every solve) costs
 // app::tree_pairs_per_target(N); a build 188 pairs a segment, every
 // k = max(10, √(2 · 188 N / ((2 ns + 1) T'))) steps (uvlm::far_tree_rebuild_interval, T' the
-// young wake's nodes and the panels; 10 with core growth), and the rows joined since, beyond
-// the 5 counted among the interactions, (2 ns + 1)(k − 10)/2 pairs for each target.
+// young wake's nodes and the panels; 10 with core growth, 1 with wake_max_rows), and the rows
+// joined since, beyond the 5 (0) counted among the interactions, (2 ns + 1)(k − 10)/2 pairs
+// for each target.
 double tree_pairs_step_by_step(const io::Case& c, int bodies) {
   const auto& n = c.numerics;
   const double nc = n.chordwise_panels, ns = n.spanwise_panels;
@@ -77,20 +78,23 @@ double tree_pairs_step_by_step(const io::Case& c, int bodies) {
   const double solves =
       bodies > 1 ? std::min(n.added_mass && n.structure_substeps == 1 ? 4 : 5, n.max_coupling_iterations) : 1;
   const bool shed = n.leading_edge == uvlm::LeadingEdge::Shed;
+  // A truncated wake's far tree is rebuilt at every step (uvlm/wake.cpp): no rows since it.
+  const double least = n.wake_max_rows > 0 ? 1.0 : 10.0;
   double sum = 0.0;
   for (long k = 1; k <= steps; ++k) {
-    const double r = std::min(static_cast<double>(k), max_rows), m = r - free_rows - 5.0;
+    const double r = std::min(static_cast<double>(k), max_rows), m = r - free_rows - std::floor(least / 2.0);
     if (m < 1.0) continue;
     const double segments = (m + 1) * ns + m * (ns + 1);
     const double sheet_rows =
         shed ? uvlm::merged_sheet_rings(n.sheet_merge_steps, free_rows, n.sheet_merge_spread_steps) + 1 : 0.0;
     const double targets = (free_rows + 1 + sheet_rows) * (ns + 1) + solves * nc * ns;
     const double row = 2 * ns + 1, interval_targets = (free_rows + 1) * (ns + 1) + nc * ns;
-    const double interval = n.core_growth ? 10.0
-                                          : std::max(10.0, std::sqrt(2 * app::kTreeBuildPairsPerSegment *
-                                                                     segments / (row * interval_targets)));
+    const double interval = n.core_growth || n.wake_max_rows > 0
+                                ? least
+                                : std::max(least, std::sqrt(2 * app::kTreeBuildPairsPerSegment * segments /
+                                                            (row * interval_targets)));
     sum += targets * app::tree_pairs_per_target(segments, n.tree_tolerance) +
-           app::kTreeBuildPairsPerSegment * segments / interval + targets * row * (interval - 10.0) / 2.0;
+           app::kTreeBuildPairsPerSegment * segments / interval + targets * row * (interval - least) / 2.0;
   }
   return sum;
 }
@@ -230,6 +234,13 @@ TEST(RunEstimate, TheFarWakesTreeCostsEachTargetLogNAndTheTimeFollowsTheRun) {
                 1e-5 * e.tree_pairs);  // Σ √N by the midpoint rule
     EXPECT_NEAR(e.interactions, interactions_step_by_step(c, 1), 1e-9 * e.interactions);
   }
+  // A truncated wake (wake_max_rows) has its far tree rebuilt at every step (uvlm/wake.cpp):
+  // before, the estimate took every 10 steps for it too.
+  c.numerics.wake_max_rows = 400;
+  const app::RunEstimate truncated = app::estimate_run(c, 1);
+  EXPECT_NEAR(truncated.tree_pairs, tree_pairs_step_by_step(c, 1), 1e-9 * truncated.tree_pairs);
+  EXPECT_NEAR(truncated.interactions, interactions_step_by_step(c, 1), 1e-9 * truncated.interactions);
+  c.numerics.wake_max_rows = 0;
   c.numerics.cycles = 6;
   c.numerics.core_growth = false;
   // log N: the tree's cost per target at 1e-3 doubles from 2^10 to 2^20 segments (measured
