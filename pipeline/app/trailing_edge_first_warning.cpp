@@ -28,7 +28,7 @@ double trailing_edge_first_share(const io::Case& c, const FsiSetup& setup) {
 
 std::string trailing_edge_first_warning(const io::Case& c, const FsiSetup& setup) {
   const double share = trailing_edge_first_share(c, setup);
-  if (!(share > kTrailingEdgeFirstShare)) return "";
+  if (!(share >= kTrailingEdgeFirstShare - kTrailingEdgeFirstRoundOff)) return "";
   char text[900];
   std::snprintf(
       text, sizeof text,

@@ -26,13 +26,20 @@ namespace flapsim::app {
 /// throughout.
 double trailing_edge_first_share(const io::Case& c, const FsiSetup& setup);
 
-/// Shares above this are warned: the wing file's trailing edge leads for more of the
-/// wingbeat than it trails. (A hover whose rotation is far advanced has a smaller share: the
-/// rotation-phase study's δψ = −0.20 0.31, the hawkmoth's stroke in a 10 m/s stream 0.24;
+/// Shares of this or more are warned (to kTrailingEdgeFirstRoundOff): the wing file's
+/// trailing edge leads for as much of the wingbeat as it trails, or more. A symmetric hover
+/// stroke whose rotation is written about 0° instead of 90° (`rotation = { sin_deg = [40.0]
+/// }`: 40° on the downstroke, 220° on the upstroke) flies one half-stroke trailing edge first,
+/// a share of exactly one half. (A hover whose rotation is far advanced has a smaller share:
+/// the rotation-phase study's δψ = −0.20 0.31, the hawkmoth's stroke in a 10 m/s stream 0.24;
 /// their lattice loads are suspect over that part, docs/kinematics.md.)
 inline constexpr double kTrailingEdgeFirstShare = 0.5;
 
-/// \brief "" or the warning for a run in air whose trailing_edge_first_share exceeds
+/// The share's round-off allowance: a half-stroke flown trailing edge first sums to one half
+/// within the 720 samples' rounding (1e-12), not to more.
+inline constexpr double kTrailingEdgeFirstRoundOff = 1e-9;
+
+/// \brief "" or the warning for a run in air whose trailing_edge_first_share reaches
 /// kTrailingEdgeFirstShare.
 std::string trailing_edge_first_warning(const io::Case& c, const FsiSetup& setup);
 

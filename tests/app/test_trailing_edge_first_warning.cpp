@@ -90,6 +90,25 @@ TEST(TrailingEdgeFirstWarning, TheHoversRotationPhasesAndAStreamThatOutrunsTheBa
   EXPECT_LT(share, flapsim::app::kTrailingEdgeFirstShare);
 }
 
+TEST(TrailingEdgeFirstWarning,
+     AHoverWhoseRotationIsWrittenAboutZeroFliesItsUpstrokeTrailingEdgeFirstAndIsWarned) {
+  // Lua et al.'s stroke (φ = 60° cos 2πft) with the rotation written about 0° instead of 90°
+  // (α = 60° sin 2πft): on the downstroke (φ̇ < 0) the geometric angle is α, 0…60°, leading
+  // edge first; on the upstroke it is 180° − α, 180…240°, trailing edge first throughout. The
+  // stroke is symmetric, so by hand the share is exactly 1/2 (the φ̇²-weighted samples of the
+  // upstroke); until 4 Dec the bound was "more than half" and this ran without a word.
+  ScratchDir dir("trailing_edge_first_about_zero");
+  const auto c = edited(dir, "lua_rigid.toml", "rotation = { mean_deg = 90.0, sin_deg = [-60.0] }",
+                        "rotation = { mean_deg = 0.0, sin_deg = [60.0] }");
+  const auto setup = flapsim::app::build_fsi_setup(c, {});
+  EXPECT_NEAR(flapsim::app::trailing_edge_first_share(c, setup), 0.5, 1e-9);
+  const std::string w = flapsim::app::trailing_edge_first_warning(c, setup);
+  EXPECT_NE(w.find("trailing edge first for 50 % of its last wingbeat"), std::string::npos) << w;
+  // The same stroke written about 90° (the shipped case): 0, not warned.
+  const auto right = edited(dir, "lua_rigid.toml", "", "");
+  EXPECT_EQ(flapsim::app::trailing_edge_first_warning(right, flapsim::app::build_fsi_setup(right, {})), "");
+}
+
 TEST(TrailingEdgeFirstWarning, AWingSetAt90DegreesMovesBroadsideAndIsNotWarned) {
   // The MAV film wing's root stands at 90° (its film twists to the angle it flies at): its
   // angle is 90° to round-off at every sample, which counted half the samples until the
