@@ -64,12 +64,19 @@ TEST(SweepArrayElements, AnElementThatIsNotThereOrNotANumberExitsTwoNamingTheKey
   const test::ScratchDir dir("sweep_array_element_errors");
   std::ofstream(dir / "case.toml") << test::tiny_plate_case(12);
   const BadElement cases[] = {
-      {"kinematics.sweep.cos_deg[1]", "'kinematics.sweep.cos_deg' has 1 element (indices from 0): index 1 is out of range"},
-      {"kinematics.rotation_phase[0]", "'kinematics.rotation_phase' is a floating-point number, not an array"},
+      {"kinematics.sweep.cos_deg[1]",
+       "'kinematics.sweep.cos_deg' has 1 element (indices from 0): index 1 is out of range"},
+      {"kinematics.rotation_phase[0]",
+       "'kinematics.rotation_phase' is a floating-point number, not an array"},
       {"kinematics.sweep[0]", "'kinematics.sweep' is a table, not an array"},
       {"wing.planform.outline[0]", "'planform.outline[0]' is an array, not a number"},
-      {"wing.planform.outline[4][1]", "'planform.outline' has 4 elements (indices from 0): index 4 is out of range"},
+      {"wing.planform.outline[4][1]",
+       "'planform.outline' has 4 elements (indices from 0): index 4 is out of range"},
       {"kinematics.sweep.cos_deg[x]", "not a dotted key"},
+      // A number for the whole array: the message says how to set one of its numbers
+      // (until 4 Dec it said only "expected an array of numbers, found an integer").
+      {"kinematics.sweep.cos_deg",
+       "to set one element of the array give its index, as kinematics.sweep.cos_deg[0]"},
   };
   for (const BadElement& c : cases)
     for (const std::string command : {"sweep", "optimize"}) {

@@ -192,8 +192,15 @@ void TomlTable::raise(int line, const std::string& key_path, const std::string& 
   // overridden element ("sin_deg" when "sin_deg[0]" was set).
   for (const auto& k : doc_->overridden)
     if (key_path == k || key_path.rfind(k + ".", 0) == 0 || key_path.rfind(k + "[", 0) == 0 ||
-        k.rfind(key_path + ".", 0) == 0 || k.rfind(key_path + "[", 0) == 0)
+        k.rfind(key_path + ".", 0) == 0 || k.rfind(key_path + "[", 0) == 0) {
+      // A number given for an array ("sin_deg=-30" for sin_deg = [-45.0]): the way to set
+      // one of its numbers is its index (docs/sweeps.md).
+      if (key_path == k && message.rfind("expected an array", 0) == 0)
+        throw OverrideInputError(
+            file(), key_path, message + "; to set one element of the array give its index, as " + k + "[0]",
+            k);
       throw OverrideInputError(file(), key_path, message, k);
+    }
   throw InputError(file(), line > 0 ? line : line_, key_path, message);
 }
 
