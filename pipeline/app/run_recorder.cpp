@@ -11,6 +11,7 @@
 
 #include "mbd/chain_kinematics.hpp"
 #include "pipeline/app/low_reynolds_warning.hpp"
+#include "pipeline/app/span_loads.hpp"
 #include "pipeline/fsi/cycle_statistics.hpp"
 #include "pipeline/fsi/fem_structure.hpp"
 #include "pipeline/fsi/phase_analysis.hpp"
@@ -142,6 +143,9 @@ void RunRecorder::record(const fsi::FsiData& data) {
   if (!measured_ || measured_step_ != data.step) measure(data);
   samples_.push_back(std::move(*measured_));
   measured_.reset();
+  if (setup_.model.air && data.lattice)
+    strip_lift_.push_back(
+        strip_lifts(setup_.model.lattice, data.lattice->loads, setup_.reference.lift_direction));
   history_row(samples_.back(), case_, data, row_);
   history_.append(std::span<const double>(row_.data(), row_.size()));
   // The markers' positions are the row's last columns (run_history.hpp).
@@ -449,6 +453,25 @@ RunRecorder::TipDeflection RunRecorder::peak_tip_deflection() const {
   return {bend * 180.0 / std::numbers::pi, twist * 180.0 / std::numbers::pi};
 }
 
+void RunRecorder::write_span_loads() const {
+  if (strip_lift_.empty() || !setup_.grid || strip_lift_.size() != samples_.size()) return;
+  // The window of summary.json's means (analyse): the last cycle, the series from t = 0
+  // with the first step's value there.
+  const double t_end = samples_.back().time;
+  const double t_begin = std::max(0.0, t_end - setup_.period);
+  std::vector<double> t{0.0};
+  for (const StepSample& s : samples_) t.push_back(s.time);
+  const std::size_t strips = strip_lift_.front().size();
+  std::vector<double> mean(strips, 0.0);
+  std::vector<double> x(t.size());
+  for (std::size_t j = 0; j < strips; ++j) {
+    for (std::size_t k = 0; k < strip_lift_.size(); ++k) x[k + 1] = strip_lift_[k][j];
+    x[0] = x[1];
+    mean[j] = fsi::window_mean(t, x, t_begin, t_end);
+  }
+  app::write_span_loads(dir_ / "span_loads.csv", span_strips(*setup_.grid), mean);
+}
+
 RunResults RunRecorder::finish(const fsi::FsiData& data, const std::string& status, const std::string& error) {
   // history.csv that cannot be completed (a full disk, a file-size limit) keeps its last
   // published rows; summary.json, small, still says the run failed and why, then the
@@ -465,6 +488,13 @@ RunResults RunRecorder::finish(const fsi::FsiData& data, const std::string& stat
   try {
     publish_series(true);  // the frames written since the last publication
     if (vtk_every_ > 0) write_paths();
+  } catch (const io::OutputError& e) {
+    if (!history_failure) history_failure = std::current_exception();
+    final_status = "failed";
+    if (final_error.empty()) final_error = std::string("output error: ") + e.what();
+  }
+  try {
+    write_span_loads();
   } catch (const io::OutputError& e) {
     if (!history_failure) history_failure = std::current_exception();
     final_status = "failed";

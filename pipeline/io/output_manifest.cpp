@@ -158,9 +158,9 @@ std::vector<std::string> command_outputs(const std::string& command) {
   // that reduce, which also writes report.md, does not replace its report unasked.
   if (command == "optimize") return {"evaluations.csv", "optimum.toml", "optimum_wing.toml", "report.md"};
   if (command == "run")
-    return {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "fem.pvd", "run.pvsm",
-            "tip_path.vtp", "marker_*_path.vtp", "vtk/wing_*.vtp", "vtk/wake_*.vtp", "vtk/chain_*.vtp",
-            "vtk/fem_*.vtp",
+    return {"history.csv", "summary.json", "span_loads.csv", "wing.pvd", "wake.pvd", "chain.pvd", "fem.pvd",
+            "run.pvsm", "tip_path.vtp", "marker_*_path.vtp", "vtk/wing_*.vtp", "vtk/wake_*.vtp",
+            "vtk/chain_*.vtp", "vtk/fem_*.vtp",
             // The pictures make draws from the run's frames (preview, snapshot, movie): a
             // rerun left the earlier run's beside its own, or beside none (vtk_every = 0).
             "preview.png", "snapshots/phase_*.png", "snapshots/front_phase_*.png",

@@ -110,8 +110,8 @@ void run_command(const RunArgs& a) {
     // The files this run wrote (with vtk_every = 0 no series and no ParaView state; in
     // vacuum no wake): the line used to name all six whatever was written.
     std::string written;
-    for (const char* f : {"history.csv", "summary.json", "wing.pvd", "wake.pvd", "chain.pvd", "fem.pvd", "run.pvsm",
-                          "tip_path.vtp"})
+    for (const char* f : {"history.csv", "summary.json", "span_loads.csv", "wing.pvd", "wake.pvd",
+                          "chain.pvd", "fem.pvd", "run.pvsm", "tip_path.vtp"})
       if (std::filesystem::exists(options.output_dir / f)) written += (written.empty() ? "" : ", ") + std::string(f);
     std::printf("outputs in %s (%s)\n", options.output_dir.string().c_str(), written.c_str());
   }
@@ -128,7 +128,8 @@ void add_run_command(CLI::App& app) {
       "lattice, or in vacuum (air = \"none\").\n"
       "Writes into DIR: history.csv (t, base and tip Euler angles, aerodynamic force, lift, CL,\n"
       "coupling iterations, joint angles, markers), summary.json (last-cycle mean lift and CL,\n"
-      "rotation phases of base and tip, coupling statistics, wall time) and the ParaView series\n"
+      "rotation phases of base and tip, coupling statistics, wall time), span_loads.csv (in air:\n"
+      "each spanwise strip's mean lift over the last cycle, root to tip) and the ParaView series\n"
       "wing.pvd (deformed surface: pressure jump, circulation), wake.pvd, chain.pvd (fem.pvd:\n"
       "the FEM's deformed mesh, displacement and membrane strain).\n"
       "A flexible case takes its chain from --chain, else from the case's 'chain' key, else it\n"
