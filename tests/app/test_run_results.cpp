@@ -147,7 +147,7 @@ TEST(RunResults, SummaryReportAndSweepComeFromTheOneDefinition) {
             0);
   EXPECT_EQ(read_text(dir / "run.txt"),
             app::run_report(results) + "outputs in " + (dir / "cli").string() +
-                " (history.csv, summary.json)\n");  // vtk_every = 0: no series
+                " (history.csv, summary.json, span_loads.csv)\n");  // vtk_every = 0: no series
   EXPECT_NE(app::run_report(results).find("mean lift (last cycle) "), std::string::npos);
 
   // 3. `flapsim sweep`: sweep.csv = the varied key, the results with a sweep label, then
@@ -254,7 +254,9 @@ TEST(RunResults, TheLastLineNamesOnlyTheFilesWritten) {
                                        dir / "run.txt"),
             0);
   const std::string text = flapsim::test::read_text(dir / "run.txt");
-  EXPECT_NE(text.find("outputs in " + (dir / "out").string() + " (history.csv, summary.json)\n"), std::string::npos)
+  EXPECT_NE(
+      text.find("outputs in " + (dir / "out").string() + " (history.csv, summary.json, span_loads.csv)\n"),
+      std::string::npos)
       << text;
   EXPECT_FALSE(fs::exists(dir / "out" / "wing.pvd"));
 }
