@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
@@ -84,6 +85,46 @@ TEST(RoboflyRevolvingCase, LaminarSkinFrictionBringsTheDragAt40To60DegreesWithin
       EXPECT_NEAR(cd / fit_drag(alpha), 1.0, 0.15) << alpha;  // issue 30's bound on CD
     else  // 10°: the friction is most of the drag; measured 0.281 (inviscid 0.046)
       EXPECT_NEAR(cd, 0.281, 0.01);
+  }
+}
+
+// The lift each spanwise strip carries (span_loads.csv), 50°, with `none` and `shed`:
+// docs/uvlm.md, "Where shed's lift lies along the span". The shed total within the fit's
+// 10 % (the test above) is carried by the end strips; a revolving wing's load grows along
+// the span as `none`'s does. Measured 4 Dec (span_loads.csv's shares, root to tip): `none`
+// 0.030, 0.042, 0.062, 0.081, 0.099, 0.117, 0.133, 0.145, 0.151, 0.140; `shed` 0.095, 0.064,
+// 0.083, 0.061, 0.024, 0.007, 0.027, 0.082, 0.146, 0.410. This pins what the documents
+// say of `shed`: a model that gave the wing's load its shape would fail here, and the
+// documents and the shed warning would then be rewritten with it.
+TEST(RoboflyRevolvingCase, At50DegreesTheShedLiftLiesOnTheEndStripsWhereNonesGrowsAlongTheSpan) {
+  flapsim::test::ScratchDir dir("robofly_revolving_span");
+  std::string toml = flapsim::test::shipped_case_text("robofly_revolving");
+  const std::string every = "vtk_every = 4";
+  ASSERT_NE(toml.find(every), std::string::npos);
+  toml.replace(toml.find(every), every.size(), "vtk_every = 0");
+  std::ofstream(dir / "case.toml") << toml;
+  const auto outcome = flapsim::test::run_flapsim_capturing_stderr(
+      dir.path(), "sweep " + (dir / "case.toml").string() + " --vary numerics.leading_edge=none,shed -q -o " +
+                      (dir / "sweep").string());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const auto table = flapsim::test::read_sweep_table((dir / "sweep" / "sweep.csv").string());
+  ASSERT_EQ(table.rows.size(), 2u);
+  for (const auto& row : table.rows) {
+    ASSERT_EQ(row.at("status"), "ok");
+    const std::string model = row.at("numerics.leading_edge");
+    const auto strips =
+        flapsim::test::read_sweep_table((dir / "sweep" / row.at("folder") / "span_loads.csv").string());
+    ASSERT_EQ(strips.rows.size(), 10u) << model;
+    std::vector<double> share;
+    for (const auto& strip : strips.rows) share.push_back(std::stod(strip.at("lift_share")));
+    if (model == "none") {
+      for (int j = 1; j <= 8; ++j) EXPECT_GT(share[j], share[j - 1]) << "strip " << j;  // grows to 80 % span
+      EXPECT_NEAR(share[9], 0.140, 0.01);
+      EXPECT_NEAR(share[5], 0.117, 0.01);
+    } else {
+      EXPECT_NEAR(share[9], 0.410, 0.02);  // the tip strip: 41 % (none 14 %)
+      for (int j = 4; j <= 6; ++j) EXPECT_LT(share[j], 0.03) << "strip " << j;  // none: 0.10-0.13
+    }
   }
 }
 
