@@ -169,7 +169,8 @@ struct VortexLatticeModel {
   /// Fewest steps between rebuilds of the far wake's tree (it translates exactly in between,
   /// and the rows that join the far wake meanwhile are summed directly); the interval grows
   /// with the far wake (far_tree_rebuild_interval). With core growth the interval itself: the
-  /// tree's cores are up to this many steps old. With max_wake_rows it is rebuilt every step.
+  /// tree's cores are up to this many steps old. With max_wake_rows (the case's wake_max_rows) it is
+  /// rebuilt every step.
   int far_tree_rebuild_steps = 10;
   /// True when the far wake is convected and summed by the tree code (for the wing and
   /// the younger wake alike), the younger wake by the direct sum.

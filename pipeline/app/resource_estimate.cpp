@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <vector>
 
 #include "pipeline/app/frames_size.hpp"
 #include "pipeline/app/run_history.hpp"
@@ -98,8 +97,8 @@ RunEstimate estimate_run(const io::Case& c, int bodies, int fem_dofs, int reduce
   double memory = 64e6;  // the program, libraries, VTK and the wing: a fixed allowance [B]
   memory += steps * static_cast<double>(sizeof(StepSample));
   if (c.air.enabled) {
-    // Each step's strip lifts (RunRecorder, span_loads.csv): a vector of ns doubles.
-    memory += steps * static_cast<double>(sizeof(std::vector<double>) + sizeof(double) * ns);
+    // Each step's strip lifts (RunRecorder, span_loads.csv): ns doubles.
+    memory += steps * static_cast<double>(sizeof(double)) * ns;
     // Wake storage for rows = wake capacity + 1 (vortex_lattice.cpp): per node the
     // position and the AB2 velocity (6 doubles), per ring a circulation, per segment
     // two end points, a circulation and a core (8 doubles).

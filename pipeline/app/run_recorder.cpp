@@ -144,8 +144,8 @@ void RunRecorder::record(const fsi::FsiData& data) {
   samples_.push_back(std::move(*measured_));
   measured_.reset();
   if (setup_.model.air && data.lattice)
-    strip_lift_.push_back(
-        strip_lifts(setup_.model.lattice, data.lattice->loads, setup_.reference.lift_direction));
+    append_strip_lifts(setup_.model.lattice, data.lattice->loads, setup_.reference.lift_direction,
+                       strip_lift_);
   history_row(samples_.back(), case_, data, row_);
   history_.append(std::span<const double>(row_.data(), row_.size()));
   // The markers' positions are the row's last columns (run_history.hpp).
@@ -307,9 +307,7 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     x.insert(x.begin(), x.empty() ? 0.0 : x.front());
     return x;
   };
-  const auto mean = [&](std::vector<double> x) {
-    return fsi::window_mean(t_from_zero, from_zero(std::move(x)), t_begin, t_end);
-  };
+  const auto mean = [&](std::vector<double> x) { return last_cycle_mean(std::move(x)); };
   r.set("steps", data.step - (refused ? 1 : 0));
   r.set("time_s", t_end);
   // Counted in steps: (t_end − t_begin) / T is 1 only to round-off, and complete runs (20 Hz,
@@ -453,21 +451,23 @@ RunRecorder::TipDeflection RunRecorder::peak_tip_deflection() const {
   return {bend * 180.0 / std::numbers::pi, twist * 180.0 / std::numbers::pi};
 }
 
-void RunRecorder::write_span_loads() const {
-  if (strip_lift_.empty() || !setup_.grid || strip_lift_.size() != samples_.size()) return;
-  // The window of summary.json's means (analyse): the last cycle, the series from t = 0
-  // with the first step's value there.
-  const double t_end = samples_.back().time;
+double RunRecorder::last_cycle_mean(std::vector<double> per_step) const {
+  const double t_end = samples_.empty() ? 0.0 : samples_.back().time;
   const double t_begin = std::max(0.0, t_end - setup_.period);
   std::vector<double> t{0.0};
   for (const StepSample& s : samples_) t.push_back(s.time);
-  const std::size_t strips = strip_lift_.front().size();
-  std::vector<double> mean(strips, 0.0);
-  std::vector<double> x(t.size());
+  per_step.insert(per_step.begin(), per_step.empty() ? 0.0 : per_step.front());
+  return fsi::window_mean(t, per_step, t_begin, t_end);
+}
+
+void RunRecorder::write_span_loads() const {
+  if (!setup_.grid || samples_.empty()) return;
+  const std::size_t strips = static_cast<std::size_t>(setup_.model.lattice.spanwise);
+  if (strip_lift_.size() != strips * samples_.size()) return;  // in vacuum: none
+  std::vector<double> mean(strips), per_step(samples_.size());
   for (std::size_t j = 0; j < strips; ++j) {
-    for (std::size_t k = 0; k < strip_lift_.size(); ++k) x[k + 1] = strip_lift_[k][j];
-    x[0] = x[1];
-    mean[j] = fsi::window_mean(t, x, t_begin, t_end);
+    for (std::size_t k = 0; k < samples_.size(); ++k) per_step[k] = strip_lift_[k * strips + j];
+    mean[j] = last_cycle_mean(per_step);
   }
   app::write_span_loads(dir_ / "span_loads.csv", span_strips(*setup_.grid), mean);
 }

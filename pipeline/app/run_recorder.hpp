@@ -117,6 +117,10 @@ class RunRecorder {
   /// tip_path.vtp and marker_<k>_path.vtp (atomic). \throws io::OutputError
   void write_paths() const;
   void analyse(const fsi::FsiData& data);
+  /// The mean of a quantity given at every recorded step over summary.json's window: the
+  /// period before the last step recorded, the series from t = 0, where it takes the first
+  /// step's value (t = 0 has no loads).
+  double last_cycle_mean(std::vector<double> per_step) const;
   /// span_loads.csv: each strip's mean lift over the window of summary.json's means (in air).
   /// \throws io::OutputError
   void write_span_loads() const;
@@ -147,9 +151,10 @@ class RunRecorder {
   std::vector<double> frame_times_;  ///< t of the frames written [s] (the state opens at one)
   io::StateCameraChooser camera_;
   std::vector<StepSample> samples_;
-  /// Each recorded step's lift of every strip of the lattice, root to tip [N]
-  /// (span_loads.hpp; none in vacuum): span_loads.csv's means over the last cycle.
-  std::vector<std::vector<double>> strip_lift_;
+  /// The lift of every strip of the lattice at each recorded step, root to tip, step after
+  /// step (spanwise_panels values a step) [N] (span_loads.hpp; none in vacuum):
+  /// span_loads.csv's means over the last cycle.
+  std::vector<double> strip_lift_;
   std::optional<StepSample> measured_;  ///< measure()'s sample until record() takes it
   long measured_step_ = -1;             ///< the step it was measured after
   RunResults results_;

@@ -6,13 +6,13 @@
 
 namespace flapsim::app {
 
-std::vector<double> strip_lifts(const uvlm::VortexLatticeModel& m, const uvlm::PanelLoads& loads,
-                                const Eigen::Vector3d& up) {
-  std::vector<double> lift(static_cast<std::size_t>(m.spanwise), 0.0);
-  for (int j = 0; j < m.spanwise; ++j)
-    for (int i = 0; i < m.chordwise; ++i)
-      lift[static_cast<std::size_t>(j)] += loads.force.col(m.panel(i, j)).dot(up);
-  return lift;
+void append_strip_lifts(const uvlm::VortexLatticeModel& m, const uvlm::PanelLoads& loads,
+                        const Eigen::Vector3d& up, std::vector<double>& out) {
+  for (int j = 0; j < m.spanwise; ++j) {
+    double lift = 0.0;
+    for (int i = 0; i < m.chordwise; ++i) lift += loads.force.col(m.panel(i, j)).dot(up);
+    out.push_back(lift);
+  }
 }
 
 std::vector<SpanStrip> span_strips(const uvlm::PlanformGrid& grid) {

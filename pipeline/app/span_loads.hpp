@@ -22,10 +22,10 @@
 
 namespace flapsim::app {
 
-/// \brief Each strip's force along \p up [N], root to tip: Σ over its panels of
-/// loads.force · up.
-std::vector<double> strip_lifts(const uvlm::VortexLatticeModel& m, const uvlm::PanelLoads& loads,
-                                const Eigen::Vector3d& up);
+/// \brief Appends to \p out each strip's force along \p up [N], root to tip: Σ over its
+/// panels of loads.force · up (m.spanwise values: a run keeps its steps' strips in one series).
+void append_strip_lifts(const uvlm::VortexLatticeModel& m, const uvlm::PanelLoads& loads,
+                        const Eigen::Vector3d& up, std::vector<double>& out);
 
 /// A strip of the undeformed lattice, in the wing frame.
 struct SpanStrip {

@@ -36,7 +36,7 @@ double trailing_edge_first_share(const io::Case& c, const FsiSetup& setup);
 inline constexpr double kTrailingEdgeFirstShare = 0.5;
 
 /// The share's round-off allowance: a half-stroke flown trailing edge first sums to one half
-/// within the 720 samples' rounding (1e-12), not to more.
+/// only to the rounding of its 720 samples' sums, which may fall on either side of it.
 inline constexpr double kTrailingEdgeFirstRoundOff = 1e-9;
 
 /// \brief "" or the warning for a run in air whose trailing_edge_first_share reaches

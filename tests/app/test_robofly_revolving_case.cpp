@@ -16,7 +16,7 @@
 #include "shipped_case_text.hpp"
 #include "sweep_test_helpers.hpp"
 
-namespace {
+namespace robofly_revolving_case_test {
 
 // Dickinson et al. 1999's fit to the Robofly wing's translational coefficients, α in degrees.
 double fit_lift(double alpha) {
@@ -26,24 +26,44 @@ double fit_drag(double alpha) {
   return 1.92 - 1.55 * std::cos((2.04 * alpha - 9.82) * std::numbers::pi / 180.0);
 }
 
+// The shipped case without its ParaView frames (vtk_every = 0).
+std::string shipped_case_without_frames() {
+  std::string toml = flapsim::test::shipped_case_text("robofly_revolving");
+  const std::string every = "vtk_every = 4";
+  EXPECT_NE(toml.find(every), std::string::npos);
+  if (const auto at = toml.find(every); at != std::string::npos)
+    toml.replace(at, every.size(), "vtk_every = 0");
+  return toml;
+}
+
+// `flapsim sweep` of the case text \p toml over \p vary (--vary arguments) into DIR/sweep:
+// its exit status, stderr and sweep.csv.
+struct SweepOutcome {
+  flapsim::test::FlapsimOutcome run;
+  flapsim::test::SweepTable table;
+};
+SweepOutcome sweep_robofly(const flapsim::test::ScratchDir& dir, const std::string& toml,
+                           const std::string& vary) {
+  std::ofstream(dir / "case.toml") << toml;
+  SweepOutcome out;
+  out.run = flapsim::test::run_flapsim_capturing_stderr(
+      dir.path(),
+      "sweep " + (dir / "case.toml").string() + " " + vary + " -q -o " + (dir / "sweep").string());
+  out.table = flapsim::test::read_sweep_table((dir / "sweep" / "sweep.csv").string());
+  return out;
+}
+
 TEST(RoboflyRevolvingCase, TheShippedCaseAt50And60DegreesIsWithinTheFitsBoundsAndItsForceNormalToTheWing) {
   // Measured 2 Dec: 50°: CL 1.648 (−7.6 %), CD 1.812 (−8.5 %); 60°: CL 1.531 (−3.4 %), CD
   // 2.445 (−2.8 %) (1 Dec, the reference speed 719/720 of Ω r2 R: 1.652, 1.817, 1.535, 2.452;
   // the force 47.7° and 57.9° from the vertical).
   // The lattice-level run of the same conditions (unmerged sheet): 1.649, 1.809.
   flapsim::test::ScratchDir dir("robofly_revolving_case");
-  std::string toml = flapsim::test::shipped_case_text("robofly_revolving");
-  const std::string every = "vtk_every = 4";
-  ASSERT_NE(toml.find(every), std::string::npos);
-  toml.replace(toml.find(every), every.size(), "vtk_every = 0");
-  std::ofstream(dir / "case.toml") << toml;
-  const auto outcome = flapsim::test::run_flapsim_capturing_stderr(
-      dir.path(), "sweep " + (dir / "case.toml").string() + " --vary kinematics.rotation=50,60 -q -o " +
-                      (dir / "sweep").string());
+  const auto [outcome, table] =
+      sweep_robofly(dir, shipped_case_without_frames(), "--vary kinematics.rotation=50,60");
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   // Half a revolution in 2 cycles never comes round to its wake: no warning of round-off.
   EXPECT_EQ(outcome.err.find("round-off"), std::string::npos) << outcome.err;
-  const auto table = flapsim::test::read_sweep_table((dir / "sweep" / "sweep.csv").string());
   ASSERT_EQ(table.rows.size(), 2u);
   for (const auto& row : table.rows) {
     ASSERT_EQ(row.at("status"), "ok");
@@ -64,18 +84,12 @@ TEST(RoboflyRevolvingCase, LaminarSkinFrictionBringsTheDragAt40To60DegreesWithin
   // −10, −5, −1 % of the fit; inviscid −88 … −3 %), CL 0.491 … 1.465 (−20, −16, −21, −16, −12,
   // −8 %; inviscid −13 … −3 %): the drag within 15 % at 40°–60° and the lift farther off.
   flapsim::test::ScratchDir dir("robofly_revolving_friction");
-  std::string toml = flapsim::test::shipped_case_text("robofly_revolving");
-  const std::string every = "vtk_every = 4", shed = "\nleading_edge = \"shed\"";
-  ASSERT_NE(toml.find(every), std::string::npos);
-  toml.replace(toml.find(every), every.size(), "vtk_every = 0");
+  std::string toml = shipped_case_without_frames();
+  const std::string shed = "\nleading_edge = \"shed\"";
   ASSERT_NE(toml.find(shed), std::string::npos);
   toml.replace(toml.find(shed), shed.size(), std::string(shed) + "\nskin_friction = \"laminar\"");
-  std::ofstream(dir / "case.toml") << toml;
-  const auto outcome = flapsim::test::run_flapsim_capturing_stderr(
-      dir.path(), "sweep " + (dir / "case.toml").string() + " --vary kinematics.rotation=10,40,50,60 -q -o " +
-                      (dir / "sweep").string());
+  const auto [outcome, table] = sweep_robofly(dir, toml, "--vary kinematics.rotation=10,40,50,60");
   ASSERT_EQ(outcome.status, 0) << outcome.err;
-  const auto table = flapsim::test::read_sweep_table((dir / "sweep" / "sweep.csv").string());
   ASSERT_EQ(table.rows.size(), 4u);
   for (const auto& row : table.rows) {
     ASSERT_EQ(row.at("status"), "ok");
@@ -98,16 +112,9 @@ TEST(RoboflyRevolvingCase, LaminarSkinFrictionBringsTheDragAt40To60DegreesWithin
 // documents and the shed warning would then be rewritten with it.
 TEST(RoboflyRevolvingCase, At50DegreesTheShedLiftLiesOnTheEndStripsWhereNonesGrowsAlongTheSpan) {
   flapsim::test::ScratchDir dir("robofly_revolving_span");
-  std::string toml = flapsim::test::shipped_case_text("robofly_revolving");
-  const std::string every = "vtk_every = 4";
-  ASSERT_NE(toml.find(every), std::string::npos);
-  toml.replace(toml.find(every), every.size(), "vtk_every = 0");
-  std::ofstream(dir / "case.toml") << toml;
-  const auto outcome = flapsim::test::run_flapsim_capturing_stderr(
-      dir.path(), "sweep " + (dir / "case.toml").string() + " --vary numerics.leading_edge=none,shed -q -o " +
-                      (dir / "sweep").string());
+  const auto [outcome, table] =
+      sweep_robofly(dir, shipped_case_without_frames(), "--vary numerics.leading_edge=none,shed");
   ASSERT_EQ(outcome.status, 0) << outcome.err;
-  const auto table = flapsim::test::read_sweep_table((dir / "sweep" / "sweep.csv").string());
   ASSERT_EQ(table.rows.size(), 2u);
   for (const auto& row : table.rows) {
     ASSERT_EQ(row.at("status"), "ok");
@@ -128,4 +135,4 @@ TEST(RoboflyRevolvingCase, At50DegreesTheShedLiftLiesOnTheEndStripsWhereNonesGro
   }
 }
 
-}  // namespace
+}  // namespace robofly_revolving_case_test
