@@ -5,11 +5,13 @@
 // within 10 % of the measurement (docs/uvlm.md, "Where shed's lift lies along the span").
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -70,21 +72,40 @@ double lifting_line_band(double b, double c, double alpha, double y0, double y1)
   return sum * h;
 }
 
-TEST(SpanLoads, AFlatPlateInAStreamCarriesLiftingLinesLoadAndTheStripsAddUpToTheRunsLift) {
-  // wings/flat_plate.toml (chord 10 mm, span 40 mm from y = 0: both ends free, aspect ratio
-  // 4) at 5° in a 10 m/s stream, a flat (prescribed) wake 100 chords long: steady.
-  ScratchDir dir("span_loads_plate");
-  std::ofstream(dir / "case.toml")
-      << "name = \"plate_stream\"\nwing = \"" FLAPSIM_SOURCE_DIR
-         "/wings/flat_plate.toml\"\n"
+// wings/flat_plate.toml (chord 10 mm, span 40 mm from y = 0, both ends free) with its span
+// stretched to `span_mm`, at 5° in a 10 m/s stream, the steady lattice (no start-up), the
+// leading edge's suction kept (`attached`: the flow lifting-line theory describes; the
+// default `separated` adds Polhamus' vortex lift, +5.8 % on the aspect ratio 4 plate). Runs
+// it and returns span_loads.csv's strips and summary.json's mean lift.
+std::vector<Strip> run_plate_in_a_stream(const ScratchDir& dir, int span_mm, int strips, double* mean_lift,
+                                         std::string* header) {
+  const std::string name = "plate_ar" + std::to_string(span_mm / 10);
+  std::string wing = flapsim::test::read_text(FLAPSIM_SOURCE_DIR "/wings/flat_plate.toml");
+  const std::string outline = "outline = [[2.5, 0.0], [2.5, 40.0], [-7.5, 40.0], [-7.5, 0.0]]";
+  EXPECT_NE(wing.find(outline), std::string::npos);
+  wing.replace(wing.find(outline), outline.size(),
+               "outline = [[2.5, 0.0], [2.5, " + std::to_string(span_mm) + ".0], [-7.5, " +
+                   std::to_string(span_mm) + ".0], [-7.5, 0.0]]");
+  std::ofstream(dir / (name + "_wing.toml")) << wing;
+  std::ofstream(dir / (name + ".toml"))
+      << "name = \"" << name << "\"\nwing = \"" << name
+      << "_wing.toml\"\n"
          "[kinematics]\nfrequency_hz = 10.0\nsweep = 0.0\nrotation = 5.0\n"
          "[air]\ndensity = 1.225\nfreestream = [-10.0, 0.0, 0.0]\n[structure]\nkind = \"rigid\"\n"
-         "[numerics]\nsteps_per_cycle = 40\ncycles = 1\nchordwise_panels = 4\nspanwise_panels = 10\n"
-         "core_radius = 0.05\nfree_wake = false\n[output]\nvtk_every = 0\n";
-  const fs::path out = dir / "out";
-  ASSERT_EQ(flapsim::test::run_flapsim("run " + (dir / "case.toml").string() + " -o " + out.string()), 0);
+         "[numerics]\nsteps_per_cycle = 4\ncycles = 1\nchordwise_panels = 4\nspanwise_panels = "
+      << strips << "\nsteady = true\nleading_edge = \"attached\"\n[output]\nvtk_every = 0\n";
+  const fs::path out = dir / name;
+  EXPECT_EQ(flapsim::test::run_flapsim("run " + (dir / (name + ".toml")).string() + " -o " + out.string()),
+            0);
+  *mean_lift = flapsim::test::json_number(flapsim::test::read_text(out / "summary.json"), "mean_lift_N");
+  return read_span_loads(out / "span_loads.csv", header);
+}
+
+TEST(SpanLoads, AFlatPlateInAStreamsStripsTileTheSpanSymmetricallyAndAddUpToTheRunsLift) {
+  ScratchDir dir("span_loads_plate");
+  double mean_lift = 0.0;
   std::string header;
-  const std::vector<Strip> strips = read_span_loads(out / "span_loads.csv", &header);
+  const std::vector<Strip> strips = run_plate_in_a_stream(dir, 40, 10, &mean_lift, &header);
   EXPECT_EQ(header, "strip,y_inner_m,y_outer_m,chord_m,mean_lift_N,lift_per_span_N_m,lift_share");
   ASSERT_EQ(strips.size(), 10u);
   // The strips tile the span, root to tip, at the chord of the rectangle.
@@ -98,30 +119,50 @@ TEST(SpanLoads, AFlatPlateInAStreamCarriesLiftingLinesLoadAndTheStripsAddUpToThe
     shares += strips[j].share;
   }
   // They add up to summary.json's mean lift (the same panels' forces, the same window).
-  const double mean_lift =
-      flapsim::test::json_number(flapsim::test::read_text(out / "summary.json"), "mean_lift_N");
   EXPECT_NEAR(sum, mean_lift, 1e-12 * std::abs(mean_lift));
   EXPECT_NEAR(shares, 1.0, 1e-12);
   // The wing and its stream are symmetric about mid-span, so is its load: strip j as
-  // strip 9 − j (measured to 2e-10 of a strip's lift: round-off).
+  // strip 9 − j (round-off).
   for (std::size_t j = 0; j < 5; ++j)
     EXPECT_NEAR(strips[j].lift, strips[9 - j].lift, 1e-8 * strips[j].lift) << j;
-  // Against Prandtl's lifting line (independent of the lattice): the total within 3 %
-  // (measured +0.9 %: CL 0.3548 against 0.3515), each strip's share within 3 % at strips
-  // 2–9 (measured 0.5–2.6 %) and 12 % at the end strips (measured +9.5 %: there the lattice
-  // holds the tip vortex at the strip's outer edge, where lifting line's circulation falls
-  // to zero as a square root; lifting line is itself an asymptote in 1/aspect ratio).
+}
+
+TEST(SpanLoads, RectangularPlatesApproachPrandtlsLiftingLineAsTheirAspectRatioGrows) {
+  // Prandtl's lifting line is the large-aspect-ratio limit of a lifting surface such as the
+  // lattice ([Katz & Plotkin 2001], ch. 8 and 12): for a rectangular plate the lattice's
+  // lift lies below it by an amount that falls as 1/AR. Measured (4 Dec), the total against
+  // lifting line at AR 4, 8, 16: −4.54, −1.94, −1.06 % (AR × difference 18, 16, 17 %);
+  // asserted: below it, AR × difference within 12–24 %. The load's shape: each strip's share
+  // within 4 % of lifting line's (measured at most 3.3 %), the end strips within 12 %
+  // (measured +8.8 … +10.2 %: the lattice holds the tip vortex at the strip's outer side,
+  // where lifting line's circulation falls to zero as a square root).
+  // Until 4 Dec this test flew the AR 4 plate with the default `separated` and found the
+  // total +0.9 % from lifting line: Polhamus' vortex lift, which lifting line does not have,
+  // made up for the lifting surface's deficit.
+  ScratchDir dir("span_loads_lifting_line");
   const double alpha = 5.0 * std::numbers::pi / 180.0, u = 10.0, rho = 1.225;
-  std::vector<double> reference;
-  double reference_sum = 0.0;
-  for (const Strip& s : strips) {
-    reference.push_back(rho * u * u * lifting_line_band(0.040, 0.010, alpha, s.y_inner, s.y_outer));
-    reference_sum += reference.back();
-  }
-  EXPECT_NEAR(sum / reference_sum, 1.0, 0.03);
-  for (std::size_t j = 0; j < strips.size(); ++j) {
-    const double tolerance = (j == 0 || j == 9) ? 0.12 : 0.03;
-    EXPECT_NEAR(strips[j].share / (reference[j] / reference_sum), 1.0, tolerance) << "strip " << j + 1;
+  for (const auto& [span_mm, count] : {std::pair{40, 10}, std::pair{80, 16}, std::pair{160, 32}}) {
+    double mean_lift = 0.0;
+    std::string header;
+    const std::vector<Strip> strips = run_plate_in_a_stream(dir, span_mm, count, &mean_lift, &header);
+    ASSERT_EQ(strips.size(), static_cast<std::size_t>(count));
+    const double span = 1e-3 * span_mm, aspect_ratio = span / 0.010;
+    std::vector<double> reference;
+    double sum = 0.0, reference_sum = 0.0;
+    for (const Strip& s : strips) {
+      reference.push_back(rho * u * u * lifting_line_band(span, 0.010, alpha, s.y_inner, s.y_outer));
+      reference_sum += reference.back();
+      sum += s.lift;
+    }
+    const double difference = sum / reference_sum - 1.0;
+    EXPECT_LT(difference, 0.0) << "AR " << aspect_ratio;
+    EXPECT_GT(-difference * aspect_ratio, 0.12) << "AR " << aspect_ratio << ": " << difference;
+    EXPECT_LT(-difference * aspect_ratio, 0.24) << "AR " << aspect_ratio << ": " << difference;
+    for (std::size_t j = 0; j < strips.size(); ++j) {
+      const double tolerance = (j == 0 || j + 1 == strips.size()) ? 0.12 : 0.04;
+      EXPECT_NEAR(strips[j].share / (reference[j] / reference_sum), 1.0, tolerance)
+          << "AR " << aspect_ratio << ", strip " << j + 1;
+    }
   }
 }
 
