@@ -38,6 +38,13 @@ std::string as_named(const std::string& path) {
   return relative.empty() || *relative.begin() == ".." ? path : relative.generic_string();
 }
 
+// A series recorded at every step, from t = 0: t = 0 has no loads, its value is the first
+// step's (the time series' 0 itself: RunRecorder::times_from_zero).
+std::vector<double> from_zero(std::vector<double> x) {
+  x.insert(x.begin(), x.empty() ? 0.0 : x.front());
+  return x;
+}
+
 const std::filesystem::path& existing_directory(const std::filesystem::path& dir) {
   io::ensure_directory(dir);
   return dir;
@@ -294,19 +301,9 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
   // A step measured and then refused (its force diverged) is not one completed: the results
   // end at the step before.
   const bool refused = measured_ && measured_step_ == data.step && !samples_.empty();
-  // The results end at the last step recorded: a step that failed (a structure that did
-  // not converge, a diverged force) had moved the structure's clock on, and time_s said
-  // 0.3625 s after 28 steps of 0.0125 s, the means' window shifted by that step.
-  const double t_end = samples_.empty() ? 0.0 : samples_.back().time;
-  const double t_begin = std::max(0.0, t_end - period);
+  const auto [t_begin, t_end] = mean_window();
   const std::vector<double> t = series(samples_, [](const StepSample& s) { return s.time; });
-  // The series start at the first step; t = 0 has no loads: its value is the first step's.
-  std::vector<double> t_from_zero = t;
-  t_from_zero.insert(t_from_zero.begin(), 0.0);
-  const auto from_zero = [](std::vector<double> x) {
-    x.insert(x.begin(), x.empty() ? 0.0 : x.front());
-    return x;
-  };
+  const std::vector<double> t_from_zero = times_from_zero();
   const auto mean = [&](std::vector<double> x) { return last_cycle_mean(std::move(x)); };
   r.set("steps", data.step - (refused ? 1 : 0));
   r.set("time_s", t_end);
@@ -451,13 +448,23 @@ RunRecorder::TipDeflection RunRecorder::peak_tip_deflection() const {
   return {bend * 180.0 / std::numbers::pi, twist * 180.0 / std::numbers::pi};
 }
 
-double RunRecorder::last_cycle_mean(std::vector<double> per_step) const {
+std::pair<double, double> RunRecorder::mean_window() const {
+  // The results end at the last step recorded: a step that failed (a structure that did
+  // not converge, a diverged force) had moved the structure's clock on, and time_s said
+  // 0.3625 s after 28 steps of 0.0125 s, the means' window shifted by that step.
   const double t_end = samples_.empty() ? 0.0 : samples_.back().time;
-  const double t_begin = std::max(0.0, t_end - setup_.period);
+  return {std::max(0.0, t_end - setup_.period), t_end};
+}
+
+std::vector<double> RunRecorder::times_from_zero() const {
   std::vector<double> t{0.0};
   for (const StepSample& s : samples_) t.push_back(s.time);
-  per_step.insert(per_step.begin(), per_step.empty() ? 0.0 : per_step.front());
-  return fsi::window_mean(t, per_step, t_begin, t_end);
+  return t;
+}
+
+double RunRecorder::last_cycle_mean(std::vector<double> per_step) const {
+  const auto [t_begin, t_end] = mean_window();
+  return fsi::window_mean(times_from_zero(), from_zero(std::move(per_step)), t_begin, t_end);
 }
 
 void RunRecorder::write_span_loads() const {

@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pipeline/app/diverged_force.hpp"
@@ -117,9 +118,12 @@ class RunRecorder {
   /// tip_path.vtp and marker_<k>_path.vtp (atomic). \throws io::OutputError
   void write_paths() const;
   void analyse(const fsi::FsiData& data);
-  /// The mean of a quantity given at every recorded step over summary.json's window: the
-  /// period before the last step recorded, the series from t = 0, where it takes the first
-  /// step's value (t = 0 has no loads).
+  /// summary.json's window for its means [s]: the period before the last step recorded.
+  std::pair<double, double> mean_window() const;
+  /// 0 and the time of every recorded step [s]: the series the means take from t = 0.
+  std::vector<double> times_from_zero() const;
+  /// The mean of a quantity given at every recorded step over mean_window(), the series from
+  /// t = 0, where it takes the first step's value (t = 0 has no loads).
   double last_cycle_mean(std::vector<double> per_step) const;
   /// span_loads.csv: each strip's mean lift over the window of summary.json's means (in air).
   /// \throws io::OutputError

@@ -82,10 +82,12 @@ std::vector<Strip> run_plate_in_a_stream(const ScratchDir& dir, int span_mm, int
   const std::string name = "plate_ar" + std::to_string(span_mm / 10);
   std::string wing = flapsim::test::read_text(FLAPSIM_SOURCE_DIR "/wings/flat_plate.toml");
   const std::string outline = "outline = [[2.5, 0.0], [2.5, 40.0], [-7.5, 40.0], [-7.5, 0.0]]";
-  EXPECT_NE(wing.find(outline), std::string::npos);
-  wing.replace(wing.find(outline), outline.size(),
-               "outline = [[2.5, 0.0], [2.5, " + std::to_string(span_mm) + ".0], [-7.5, " +
-                   std::to_string(span_mm) + ".0], [-7.5, 0.0]]");
+  const auto at = wing.find(outline);
+  EXPECT_NE(at, std::string::npos);  // else the plate flies at its own span and the checks fail
+  if (at != std::string::npos)
+    wing.replace(at, outline.size(),
+                 "outline = [[2.5, 0.0], [2.5, " + std::to_string(span_mm) + ".0], [-7.5, " +
+                     std::to_string(span_mm) + ".0], [-7.5, 0.0]]");
   std::ofstream(dir / (name + "_wing.toml")) << wing;
   std::ofstream(dir / (name + ".toml"))
       << "name = \"" << name << "\"\nwing = \"" << name
