@@ -517,8 +517,9 @@ void warn_at_numerics_key(const TomlTable& root, Case& c, const std::string& key
 // many cycles is the result (3-5 % above Lua et al.'s over 150 cycles); long runs may diverge.
 // Its lift along the span is not a wing's (docs/uvlm.md, "Where shed's lift lies along the
 // span", 4 Dec): on the revolving Robofly the tip strip carries 29-43 % of it and the
-// mid-span strips 0.4-7 %, and a square-tipped wing revolving falls below "none" (a
-// rectangle of aspect ratio 4: CL 0.97 against 1.29).
+// mid-span strips 0.4-7 %, on an outline whose tip is rounded within its last strip 79 %
+// (at 50 deg), and a square-tipped or swept wing revolving falls below "none" (a rectangle
+// of aspect ratio 4: CL 0.97 against 1.29; a 30 deg swept one: 1.20 against 1.73).
 void warn_experimental_shedding(const TomlTable& root, Case& c) {
   // In vacuum (air = "none") there is no lattice and nothing is shed: no warning.
   if (c.numerics.leading_edge != uvlm::LeadingEdge::Shed || !c.air.enabled) return;
@@ -526,7 +527,8 @@ void warn_experimental_shedding(const TomlTable& root, Case& c) {
       root, c, "leading_edge",
       "\"shed\" is experimental: verified on a 2-D strip and, in its total, on a revolving wing "
       "at 50-60 deg, but its lift along the span is not a wing's (the tip strip carries 29-43 % "
-      "of it) and a square-tipped wing revolving falls below \"none\"; "
+      "of it on the Robofly wing, up to 79 % on a tip rounded within one strip) and a "
+      "square-tipped or swept wing revolving falls below \"none\"; "
       "on a flapping wing the cycles do not repeat and the per-step lift is rough, so read "
       "summary.json's settled_mean_CL over many cycles (Lua et al.'s wing: 3-5 % above the "
       "measurement over 150 cycles), and a long run may break down (docs/uvlm.md, "
