@@ -248,9 +248,10 @@ TEST(SegmentTree, RefusesMoreSegmentsThanReserved) {
 
 // The tree's storage as a run's memory estimate counts it (SegmentTree::reserved_bytes,
 // pipeline/app/resource_estimate.cpp) against what reserve() takes from the allocator
-// (glibc's mallinfo2: the bytes in use, heap and mmap; under AddressSanitizer its own count). Until 2 Dec
-// 2026 the estimate left the tree out, some 2.6 kB a segment: a 200-cycle hover with the tree, estimated at
-// 82 MB, held 495 MB after 6 s.
+// (glibc's mallinfo2: the bytes in use, heap and mmap; under AddressSanitizer, whose
+// allocator glibc's counters do not see, its own count). Until 2 Dec 2026 the estimate left
+// the tree out, some 2.6 kB a segment: a 200-cycle hover with the tree, estimated at 82 MB,
+// held 495 MB after 6 s.
 #if defined(__SANITIZE_ADDRESS__)
 // AddressSanitizer's count of the bytes its allocator has handed out (exported by libasan;
 // GCC ships no header declaring it, LLVM's is sanitizer/allocator_interface.h).
@@ -259,8 +260,7 @@ extern "C" std::size_t __sanitizer_get_current_allocated_bytes();
 TEST(SegmentTree, TheBytesItReservesAreThoseTheEstimateCounts) {
   constexpr std::size_t kSegments = 20000;
   const auto in_use = [] {
-#if defined(__SANITIZE_ADDRESS__)
-    // Built with AddressSanitizer (make test-asan), whose allocator glibc's counters do not see.
+#if defined(__SANITIZE_ADDRESS__)  // make test-asan
     return static_cast<double>(__sanitizer_get_current_allocated_bytes());
 #else
     const struct mallinfo2 m = mallinfo2();

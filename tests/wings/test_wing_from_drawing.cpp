@@ -206,8 +206,8 @@ TEST(WingFromDrawing, TheTestDrawingsBezierOutlineHasItsExactArea) {
 // What a user gets wrong, each named with the key and line.
 TEST(WingFromDrawing, MistakesAreNamed) {
   ScratchDir dir("drawing_mistakes");
-  // A copy of the message: what() of the returned error ends with that temporary (AddressSanitizer
-  // found the pointer read after the error was freed).
+  // A copy of the message: what() of the returned error dies with that temporary
+  // (AddressSanitizer found the pointer read after the error was freed).
   const auto message = [&](const std::string& drawing, const std::string& toml) -> std::string {
     return expect_input_error([&] { read(dir, drawing, toml); }).what();
   };
