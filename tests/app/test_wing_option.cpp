@@ -71,8 +71,9 @@ TEST(WingOption, TheDefaultFolderNamesTheCaseAndTheWing) {
   EXPECT_FALSE(fs::exists(dir / "out" / "beat"));
 }
 
-// A case that flies a chain file of its own was reduced from its own wing: --wing needs
-// --chain with it. A missing wing file names --wing; --wing of a wing file is a usage error.
+// A case that flies a chain file of its own (reduced from its own wing, or documented, as
+// cases/vacuum_flapping.toml's) flies no chain of another wing: --wing needs --chain with it. A missing wing
+// file names --wing; --wing of a wing file is a usage error.
 TEST(WingOption, WhatCannotWorkIsRefusedNamingTheKey) {
   const flapsim::test::ScratchDir dir("wing_option_refused");
   write_film_wing(dir / "w.toml", kTrapezoid);

@@ -18,7 +18,7 @@ void apply_wing_option(wings::TomlTable& case_root, const std::string& wing_file
   if (case_root.has("chain") && chain_file.empty())
     throw InputError(
         case_root.file(), case_root.line_of("chain"), "chain",
-        "the case flies its own chain file, reduced from its own wing, not from " + wing_file +
+        "the case flies its own chain file, not one reduced from " + wing_file +
             ": give that wing's chain with --chain too ('flapsim reduce " + wing_file +
             " -o DIR' makes DIR/chain.toml), or use a case without 'chain', which reduces its wing "
             "as it runs");
