@@ -85,6 +85,10 @@ TEST(WingOption, WhatCannotWorkIsRefusedNamingTheKey) {
   EXPECT_NE(chained.err.find("vacuum_flapping.toml:16: key 'chain': the case flies its own chain file"),
             std::string::npos)
       << chained.err;  // line 16 of cases/vacuum_flapping.toml: chain = "chains/hawkmoth_10_bodies.toml"
+  // Its chain is a documented one, reduced from no wing: the message does not say it was.
+  EXPECT_NE(chained.err.find("not one reduced from " + (dir / "w.toml").string()), std::string::npos)
+      << chained.err;
+  EXPECT_EQ(chained.err.find("reduced from its own wing"), std::string::npos) << chained.err;
   EXPECT_FALSE(fs::exists(dir / "o"));
   const auto missing = run_flapsim_capturing_stderr(
       dir.path(), "check " + chain_case + " --wing " + (dir / "nothere.toml").string());
