@@ -88,8 +88,11 @@ std::string large_motion_at_failure(const FsiSetup& setup, const Eigen::VectorXd
 /// kLargeTipDeflectionDeg by then (`peak_tip_bend_deg`, `peak_tip_twist_deg` [deg], as
 /// summary.json's): the FEM represents such a motion, but a wing that swings that far (one
 /// flapped too fast for its stiffness and mass) may fold beyond what its Newton iterations
-/// follow, and a finer time step does not take it further (docs/fsi.md, "Failures").
-std::string fem_motion_at_failure(const io::Case& c, double peak_tip_bend_deg, double peak_tip_twist_deg);
+/// follow, and a finer time step does not take it further (docs/fsi.md, "Failures"). Only
+/// when the FEM's own iterations stopped (`in_structure`) does it say so and what to change;
+/// a failure elsewhere (the coupling, the lattice) gets how far the tip had swung alone.
+std::string fem_motion_at_failure(const io::Case& c, double peak_tip_bend_deg, double peak_tip_twist_deg,
+                                  bool in_structure);
 
 /// \brief "" or the warning for a run whose peak tip bend or twist (peak_tip_bend_deg,
 /// peak_tip_twist_deg) exceeds kLargeTipDeflectionDeg, with the numbers.

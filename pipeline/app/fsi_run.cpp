@@ -125,7 +125,7 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
     Eigen::VectorXd last_q;
     data.structure->joint_angles(last_q);
     std::string why = large_motion_at_failure(setup, last_q, tip.bend_deg, tip.twist_deg) +
-                      fem_motion_at_failure(c, tip.bend_deg, tip.twist_deg);
+                      fem_motion_at_failure(c, tip.bend_deg, tip.twist_deg, e.in_structure());
     const std::string released = released_chain_at_failure(c, e.step());
     if (!released.empty()) why += (why.empty() ? "" : ". ") + released;
     // A leading-edge sheet that came apart: the loads' jumps it leaves, and what to change.
@@ -135,7 +135,7 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
       recorder.finish(data, "failed", e.what());
       throw;
     }
-    const NumericalFailure explained(e.reason() + ". " + why, e.step(), e.time());
+    const NumericalFailure explained(e.reason() + ". " + why, e.step(), e.time(), e.in_structure());
     recorder.finish(data, "failed", explained.what());
     throw explained;
   } catch (const Interrupted& e) {

@@ -164,7 +164,8 @@ void initialize(const FsiModel& model, FsiData& data, double t0) {
   try {
     data.structure->initialize(t0);
   } catch (const StructureFailure& e) {
-    throw NumericalFailure("the initial state (t = " + std::to_string(t0) + " s): " + e.what());
+    throw NumericalFailure("the initial state (t = " + std::to_string(t0) + " s): " + e.what(), -1, 0.0,
+                           /*in_structure=*/true);
   }
   data.step = 0;
   data.last_iterations = 0;
@@ -251,7 +252,7 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
       s.accept();
     }
   } catch (const StructureFailure& e) {
-    throw NumericalFailure(e.what(), step, t1);
+    throw NumericalFailure(e.what(), step, t1, /*in_structure=*/true);
   } catch (const std::length_error& e) {
     throw NumericalFailure(e.what(), step, t1);
   }

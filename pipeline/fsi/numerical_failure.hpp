@@ -12,12 +12,20 @@ class NumericalFailure : public std::runtime_error {
  public:
   /// \param step  time-step index (0-based) where it failed, -1 if not in a time loop
   /// \param time  simulated time of that step [s]
-  NumericalFailure(const std::string& what, long step = -1, double time = 0.0)
-      : std::runtime_error(format(what, step, time)), reason_(what), step_(step), time_(time) {}
+  /// \param in_structure  the structure's own solve failed (its Newton iterations), not the
+  ///        coupling or the lattice
+  NumericalFailure(const std::string& what, long step = -1, double time = 0.0, bool in_structure = false)
+      : std::runtime_error(format(what, step, time)),
+        reason_(what),
+        step_(step),
+        time_(time),
+        in_structure_(in_structure) {}
   /// What went wrong, without the step and time.
   const std::string& reason() const { return reason_; }
   long step() const { return step_; }
   double time() const { return time_; }
+  /// Whether the structure's own solve failed (a FEM step's Newton iterations).
+  bool in_structure() const { return in_structure_; }
 
  private:
   static std::string format(const std::string& what, long step, double time) {
@@ -29,6 +37,7 @@ class NumericalFailure : public std::runtime_error {
   std::string reason_;
   long step_;
   double time_;
+  bool in_structure_;
 };
 
 }  // namespace flapsim

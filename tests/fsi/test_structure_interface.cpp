@@ -31,6 +31,7 @@ class HeavePlateModel : public fsi::StructureModel {
   double stiffness = 0.0;  // [N/m]
   double length = 0.040;   // scale of the change measure [m]
   int stall_refinements = -1;  // ≥ 0: a StallingHeavePlateData that may refine this often
+  bool solve_fails = false;    // a FailingHeavePlateData: its own solve fails (as a FEM's Newton)
   int num_dofs() const override { return 1; }
   int surface_nodes() const override { return static_cast<int>(nodes_wing.cols()); }
   const mbd::BaseMotion& base() const override { return motion; }
@@ -115,7 +116,15 @@ class StallingHeavePlateData : public HeavePlateData {
   int left_;
 };
 
+// The heave plate whose own solve fails, as a FEM step whose Newton iterations stop.
+class FailingHeavePlateData : public HeavePlateData {
+ public:
+  using HeavePlateData::HeavePlateData;
+  void solve(double) override { throw fsi::StructureFailure("heave plate: its solve failed"); }
+};
+
 std::unique_ptr<fsi::StructureData> HeavePlateModel::make_data() const {
+  if (solve_fails) return std::make_unique<FailingHeavePlateData>(*this);
   if (stall_refinements >= 0) return std::make_unique<StallingHeavePlateData>(*this, stall_refinements);
   return std::make_unique<HeavePlateData>(*this);
 }
@@ -128,7 +137,7 @@ struct HeaveRun {
 
 // One cycle of the eq. 8 plate on the spring (in the second the plate meets its own wake); mass in kg, stiffness in N/m.
 HeaveRun heave_run(double mass, double stiffness, fsi::CouplingMethod method, double tolerance,
-                   int stall_refinements = -1, long* stall_retries = nullptr) {
+                   int stall_refinements = -1, long* stall_retries = nullptr, bool solve_fails = false) {
   const int nc = 3, ns = 6, steps = 40;
   const auto grid = test::plate_grid(nc, ns);
   auto structure = std::make_shared<HeavePlateModel>();
@@ -138,6 +147,7 @@ HeaveRun heave_run(double mass, double stiffness, fsi::CouplingMethod method, do
   structure->mass = mass;
   structure->stiffness = stiffness;
   structure->stall_refinements = stall_refinements;
+  structure->solve_fails = solve_fails;
   fsi::FsiModel m;
   m.structure = structure;
   m.frequency = kin.frequency;
@@ -212,6 +222,24 @@ TEST(FsiStructureInterface, AStalledCouplingIsTriedAgainWithAFinerStructure) {
     ADD_FAILURE() << "a stall with nothing finer to offer must fail";
   } catch (const NumericalFailure& e) {
     EXPECT_NE(std::string(e.what()).find("strong coupling did not converge"), std::string::npos) << e.what();
+    EXPECT_FALSE(e.in_structure());  // the coupling's failure, not the structure's own solve
+  }
+}
+
+TEST(FsiStructureInterface, AStructureWhoseOwnSolveFailsStopsTheStepSayingSo) {
+  // The failure of the structure's own solve (a FEM step's Newton iterations) stops the
+  // coupled step as a NumericalFailure that names the step and says it was the structure's
+  // (in_structure()), which the run's message reads: only then does it speak of the FEM's
+  // iterations (pipeline/app/flexibility_warnings.hpp, fem_motion_at_failure; the coupling's
+  // failure of the test above is not).
+  const double mass = 1e-5, stiffness = mass * std::pow(2.0 * std::numbers::pi * 200.0, 2);
+  try {
+    heave_run(mass, stiffness, fsi::CouplingMethod::Aitken, 1e-7, -1, nullptr, /*solve_fails=*/true);
+    ADD_FAILURE() << "a structure whose solve fails must stop the step";
+  } catch (const NumericalFailure& e) {
+    EXPECT_TRUE(e.in_structure());
+    EXPECT_EQ(e.step(), 0);
+    EXPECT_NE(std::string(e.what()).find("heave plate: its solve failed"), std::string::npos) << e.what();
   }
 }
 
