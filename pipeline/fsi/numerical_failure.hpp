@@ -12,8 +12,8 @@ class NumericalFailure : public std::runtime_error {
  public:
   /// \param step  time-step index (0-based) where it failed, -1 if not in a time loop
   /// \param time  simulated time of that step [s]
-  /// \param in_structure  the structure's own solve failed (its Newton iterations), not the
-  ///        coupling or the lattice
+  /// \param in_structure  the structure's own solve failed (a StructureFailure: the FEM's
+  ///        Newton iterations, the chain's integrator), not the coupling or the lattice
   NumericalFailure(const std::string& what, long step = -1, double time = 0.0, bool in_structure = false)
       : std::runtime_error(format(what, step, time)),
         reason_(what),
@@ -24,7 +24,7 @@ class NumericalFailure : public std::runtime_error {
   const std::string& reason() const { return reason_; }
   long step() const { return step_; }
   double time() const { return time_; }
-  /// Whether the structure's own solve failed (a FEM step's Newton iterations).
+  /// Whether the structure's own solve failed (the FEM's or the chain's), not the coupling.
   bool in_structure() const { return in_structure_; }
 
  private:
