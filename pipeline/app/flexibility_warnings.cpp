@@ -187,34 +187,25 @@ std::string fem_motion_at_failure(const io::Case& c, double peak_tip_bend_deg, d
   if (c.structure.kind != io::Case::Structure::Kind::Fem) return "";
   if (!(peak_tip_bend_deg > kLargeTipDeflectionDeg) && !(peak_tip_twist_deg > kLargeTipDeflectionDeg))
     return "";
-  if (!in_structure) {
-    // Measured (5 Dec): cases/film_wing_fem.toml with leading_edge = "shed" stops in its
-    // coupling at step 247, the FEM solving every step, the tip twisted 38.8 deg (17.7 with
-    // "separated"): the FEM's iterations did not stop, so no word of them or of stiffening.
-    char text[300];
-    std::snprintf(
-        text, sizeof text,
-        "By then the wing's tip had bent up to %.1f deg and twisted up to %.1f deg against its base "
-        "(summary.json peak_tip_bend_deg, peak_tip_twist_deg)",
-        peak_tip_bend_deg, peak_tip_twist_deg);
-    return text;
-  }
+  char motion[300];
+  std::snprintf(motion, sizeof motion,
+                "By then the wing's tip had bent up to %.1f deg and twisted up to %.1f deg against its base "
+                "(summary.json peak_tip_bend_deg, peak_tip_twist_deg)",
+                peak_tip_bend_deg, peak_tip_twist_deg);
+  // Measured (5 Dec): cases/film_wing_fem.toml with leading_edge = "shed" stops in its
+  // coupling at step 247, the FEM solving every step, the tip twisted 38.8 deg (17.7 with
+  // "separated"): where the FEM's iterations did not stop, no word of them or of stiffening.
+  if (!in_structure) return motion;
   // Measured (1 Dec): a paddle-shaped 50 um film wing (60 mm, 62 mg, FEM mode 1 at 30.5 Hz)
   // in cases/hover_flexible.toml's stroke at 20 Hz on its FEM: tip bent up to 106 deg, the FEM
   // step failed at t = 0.0653 s with 100 steps a cycle and at t = 0.0555 s with 200; at 12 Hz
   // (tip 67 deg) it ran its 3 wingbeats.
-  char text[900];
-  std::snprintf(
-      text, sizeof text,
-      "By then the wing's tip had bent up to %.1f deg and twisted up to %.1f deg against its base "
-      "(summary.json peak_tip_bend_deg, peak_tip_twist_deg): the FEM's Newton iterations stopped on "
-      "a wing swinging that far, flapped too fast for its stiffness and mass. A finer time step may "
-      "not take it further (a 50 um film paddle at 20 Hz, its first mode 30 Hz, tip bent 106 deg, "
-      "stopped sooner with 200 steps a cycle than with 100): stiffen the wing (a thicker membrane, "
-      "veins), or lower frequency_hz or the amplitudes (at 12 Hz the paddle ran through; "
-      "docs/fsi.md, \"Failures\")",
-      peak_tip_bend_deg, peak_tip_twist_deg);
-  return text;
+  return std::string(motion) +
+         ": the FEM's Newton iterations stopped on a wing swinging that far, flapped too fast for its "
+         "stiffness and mass. A finer time step may not take it further (a 50 um film paddle at 20 Hz, "
+         "its first mode 30 Hz, tip bent 106 deg, stopped sooner with 200 steps a cycle than with 100): "
+         "stiffen the wing (a thicker membrane, veins), or lower frequency_hz or the amplitudes (at 12 Hz "
+         "the paddle ran through; docs/fsi.md, \"Failures\")";
 }
 
 std::string large_deflection_warning(const RunResults& results) {
