@@ -522,7 +522,8 @@ void warn_at_numerics_key(const TomlTable& root, Case& c, const std::string& key
 // of aspect ratio 4: CL 0.97 against 1.29; a 30 deg swept one: 1.20 against 1.73). Nor is it
 // converged along the span (5 Dec, "The two load routes part on the shed sheet"): the Robofly
 // at 30 / 50 deg gives CL 1.295 / 1.648 on 10 strips, 1.173 / 1.404 on 40 (-9 / -15 %), where
-// "none" holds (1.280 / 1.388 and 1.288 / 1.402): on 40 strips "shed" adds no vortex lift.
+// "none" holds (1.280 / 1.388 and 1.288 / 1.402): on 40 strips "shed" adds no vortex lift
+// there; at 60 deg 1.531 on 10, 1.377 on 40 (-10 %; "none" 1.167 / 1.179).
 // Lua et al.'s hover (12 cycles): 2.212 on 10 strips, 1.858 on 40 (+6.3 / -10.7 % of 2.08;
 // "none" 1.844 / 1.774, "separated" 2.336 / 2.231).
 void warn_experimental_shedding(const TomlTable& root, Case& c) {
@@ -531,9 +532,9 @@ void warn_experimental_shedding(const TomlTable& root, Case& c) {
   warn_at_numerics_key(
       root, c, "leading_edge",
       "\"shed\" is experimental: verified on a 2-D strip and, in its total, on a revolving wing "
-      "at 50-60 deg with 10 spanwise panels (on 40 its lift there is \"none\"'s, 15 % lower: it "
-      "is not converged along the span), but its lift along the span is not a wing's (the tip "
-      "strip carries 29-43 % "
+      "at 50-60 deg with 10 spanwise panels (on 40 it is 10-15 % lower there, \"none\"'s at 50 "
+      "deg: it is not converged along the span), but its lift along the span is not a wing's (the "
+      "tip strip carries 29-43 % "
       "of it on the Robofly wing, up to 79 % on a tip rounded within one strip) and a "
       "square-tipped or swept wing revolving falls below \"none\"; "
       "on a flapping wing the cycles do not repeat and the per-step lift is rough, so read "
