@@ -533,8 +533,8 @@ void warn_experimental_shedding(const TomlTable& root, Case& c) {
       root, c, "leading_edge",
       "\"shed\" is experimental: verified on a 2-D strip and, in its total, on a revolving wing "
       "at 50-60 deg with 10 spanwise panels (not converged along the span: on 40 it is 10-15 % "
-      "lower there, on 80 within 8 % of \"none\"'s at 30 and 50 deg, 18-24 % below the "
-      "measurement), but its lift along the span is not a wing's (the "
+      "lower there, on 80 within 8 % of \"none\"'s at 10-50 deg and 12-24 % below the "
+      "measurement at 10-60 deg), but its lift along the span is not a wing's (the "
       "tip strip carries 29-43 % "
       "of it on the Robofly wing, up to 79 % on a tip rounded within one strip) and a "
       "square-tipped or swept wing revolving falls below \"none\"; "
