@@ -341,7 +341,18 @@ inline constexpr std::array kRunReport = {
         "mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W}, lift/power "
         "{lift_per_power_N_W}; coefficients on {reference_speed_m_s} ({reference_kind}), Reynolds number "
         "{reynolds_number}",
-        [](const RunResults& r) { return r.has("mean_power_W"); }},
+        [](const RunResults& r) {
+          return r.has("mean_power_W") && std::isfinite(r.number("lift_per_power_N_W"));
+        }},
+    // A wing held still in a free stream does no work on the air: no lift per power (it read
+    // "lift/power nan N/W"; summary.json's value is null).
+    ReportLine{
+        "mean drag {mean_drag_N} (CD {mean_CD}), aerodynamic power {mean_power_W} (a wing that does "
+        "no work on the air: no lift/power); coefficients on {reference_speed_m_s} ({reference_kind}), "
+        "Reynolds number {reynolds_number}",
+        [](const RunResults& r) {
+          return r.has("mean_power_W") && !std::isfinite(r.number("lift_per_power_N_W"));
+        }},
     // A flapping wing in a free stream: its coefficients on U∞ grow as (flapping speed / U∞)²
     // (a 40 mm wing at 200 Hz in a 1 m/s stream: CL 1495); the flapping speed's as well.
     ReportLine{

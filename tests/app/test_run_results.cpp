@@ -280,4 +280,28 @@ TEST(RunResults, AVacuumRunReportsNoLiftCoefficient) {
   EXPECT_NE(summary.find("\"mean_lift_N\": 0"), std::string::npos) << summary;  // no air, no force
 }
 
+// A wing held still in a free stream does no work on the air (power −Σ F·v over panels that do
+// not move: 0 exactly), so it has no lift per power. Before: the report read "lift/power nan
+// N/W" (a gliding hawkmoth wing at 40 deg in 3 m/s).
+TEST(RunResults, AWingHeldInAFreeStreamReportsNoLiftPerPower) {
+  flapsim::test::ScratchDir dir("run_held_wing_report");
+  std::ofstream(dir / "case.toml")
+      << "name = \"held\"\nwing = \"" << FLAPSIM_SOURCE_DIR
+      << "/wings/flat_plate.toml\"\n[kinematics]\nfrequency_hz = 26.1\n"
+         "sweep = 0.0\nrotation = 10.0\n[air]\nfreestream = [-3.0, 0.0, 0.0]\n"
+         "[structure]\nkind = \"rigid\"\n[numerics]\nsteps_per_cycle = 12\ncycles = 1\n"
+         "chordwise_panels = 2\nspanwise_panels = 3\n[output]\nvtk_every = 0\n";
+  ASSERT_EQ(flapsim::test::run_flapsim(
+                "run " + (dir / "case.toml").string() + " -o " + (dir / "out").string(), dir / "run.txt"),
+            0);
+  const std::string text = flapsim::test::read_text(dir / "run.txt");
+  EXPECT_NE(text.find("aerodynamic power 0 W (a wing that does no work on the air: no lift/power)"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+  const std::string summary = flapsim::test::read_text(dir / "out" / "summary.json");
+  EXPECT_NE(summary.find("\"lift_per_power_N_W\": null"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"mean_power_W\": 0,"), std::string::npos) << summary;
+}
+
 }  // namespace
