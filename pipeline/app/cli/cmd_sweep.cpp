@@ -16,14 +16,15 @@
 #include <vector>
 
 #include "pipeline/app/cli/thread_options.hpp"
-#include "pipeline/app/run_results.hpp"
 #include "pipeline/app/interruption.hpp"
+#include "pipeline/app/run_results.hpp"
 #include "pipeline/app/sweep/case_table.hpp"
+#include "pipeline/app/sweep/mixed_reference_speeds.hpp"
 #include "pipeline/app/sweep/sweep_runner.hpp"
 #include "pipeline/app/sweep/sweep_values.hpp"
-#include "wings/loader/toml_reader.hpp"
 #include "pipeline/io/case_file.hpp"
 #include "wings/loader/input_error.hpp"
+#include "wings/loader/toml_reader.hpp"
 
 namespace flapsim::cli {
 
@@ -130,6 +131,8 @@ void sweep_command(const SweepArgs& a) {
   const sweep::SweepReport report = sweep::run_sweep(a.case_file, plan, options);
   if (!report.root || a.quiet) return;
   print_table(plan, report);
+  if (const std::string note = sweep::mixed_reference_speeds_note(report.rows); !note.empty())
+    std::printf("%s\n", note.c_str());
   const std::size_t ran = report.stats.cases;
   std::printf("%zu cases: %zu run, %zu kept from an earlier run; %d rank%s x %d thread%s; %.1f s wall",
               report.rows.size(), ran, report.kept, report.ranks, report.ranks == 1 ? "" : "s",
