@@ -540,8 +540,9 @@ void warn_experimental_shedding(const TomlTable& root, Case& c) {
       "square-tipped or swept wing revolving falls below \"none\"; "
       "on a flapping wing the cycles do not repeat and the per-step lift is rough, so read "
       "summary.json's settled_mean_CL over many cycles (Lua et al.'s wing: 3-5 % above the "
-      "measurement over 150 cycles on 10 spanwise panels, 11 % below it on 40), and a long run "
-      "may break down (docs/uvlm.md, "
+      "measurement over 150 cycles on 10 spanwise panels, 11 % below it on 40), and a run may "
+      "break down, a long one on the shipped wings, on a tapered or slender plate hovering "
+      "within a few half-strokes (docs/uvlm.md, "
       "\"Leading-edge vortex shedding: measurements\"); \"separated\" and \"none\" bracket "
       "the measured lift");
 }
