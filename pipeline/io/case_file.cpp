@@ -525,7 +525,13 @@ void warn_at_numerics_key(const TomlTable& root, Case& c, const std::string& key
 // "none" holds (1.280 / 1.388 and 1.288 / 1.402): on 40 strips "shed" adds no vortex lift
 // there; at 60 deg 1.531 on 10, 1.377 on 40 (-10 %; "none" 1.167 / 1.179).
 // Lua et al.'s hover (12 cycles): 2.212 on 10 strips, 1.858 on 40 (+6.3 / -10.7 % of 2.08;
-// "none" 1.844 / 1.774, "separated" 2.336 / 2.231).
+// "none" 1.844 / 1.774, "separated" 2.336 / 2.231). On 80 strips ("Converged along the span")
+// the Robofly at 10-60 deg gives 0.520, 0.940, 1.170, 1.344, 1.465, 1.402 (-15 ... -24 % of the
+// fit; "none" 0.505, 0.947, 1.266, 1.415, 1.374, 1.155) and Lua et al.'s hover stops at step
+// 391. Hovering in cases/hover.toml's stroke ("Other planforms in a hover"), a rigid 40 mm
+// plate of 5 mm chord stops at step 70, plates tapered to 0.5 / 0.3 / 0.1 of the root chord at
+// 210 / 101 / 65, where the 10 mm plate and "separated" complete (test
+// app.ShedOtherPlanforms.*).
 void warn_experimental_shedding(const TomlTable& root, Case& c) {
   // In vacuum (air = "none") there is no lattice and nothing is shed: no warning.
   if (c.numerics.leading_edge != uvlm::LeadingEdge::Shed || !c.air.enabled) return;

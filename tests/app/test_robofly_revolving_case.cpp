@@ -139,8 +139,10 @@ TEST(RoboflyRevolvingCase, ShedLiftFallsToNonesOnFinerStripsWhereNonesHolds) {
   // docs/uvlm.md, "The two load routes part on the shed sheet" (5 Dec): the shipped case at
   // 50 deg on 10 and 40 spanwise panels gives "none" CL 1.388 and 1.402 (+1.0 %), "shed"
   // 1.648 and 1.404 (-14.8 %): on 40 strips "shed" adds no vortex lift. What goes is the end
-  // strips' suction analogy (it shrinks with their width) and the shedding strips' own lift
-  // as the strips narrow below the sheet's core (0.2 mean chords, 2.6 strips wide on 40).
+  // strips' share (they do not shed, Polhamus' suction there; a tenth of the span each on 10
+  // strips, the tip strip 35-41 % of the lift): on 80 strips "shed" settles within 8 % of
+  // "none" (docs/uvlm.md, "Converged along the span, and the wing's view split from the
+  // sheet's own"; the vortical impulse falls alike, so the flow does, not only the loads).
   // The "shed" warning (pipeline/io/case_file.cpp, warn_experimental_shedding) says so.
   // Asserted: "none" within 3 % between the lattices; "shed" on 40 strips 8-25 % below its
   // 10-strip lift and within 5 % of "none" on 40. It fails if "shed" came to converge along

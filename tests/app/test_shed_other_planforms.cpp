@@ -58,9 +58,9 @@ Outcome fly(const flapsim::test::ScratchDir& dir, double chord_mm, const std::st
 
 TEST(ShedOtherPlanforms, TheSlenderPlateHoverStopsWithinItsFirstCycleWhereTheAspectRatioFourOneCompletes) {
   const flapsim::test::ScratchDir dir("shed_other_planforms");
-  const Outcome square = fly(dir, 10.0, "shed");
-  EXPECT_EQ(square.status, 0) << square.summary;
-  EXPECT_NEAR(flapsim::test::json_number(square.summary, "steps"), 300.0, 0.5);
+  const Outcome aspect_four = fly(dir, 10.0, "shed");
+  EXPECT_EQ(aspect_four.status, 0) << aspect_four.summary;
+  EXPECT_NEAR(flapsim::test::json_number(aspect_four.summary, "steps"), 300.0, 0.5);  // 3 cycles of 100
   const Outcome slender = fly(dir, 5.0, "shed");
   EXPECT_EQ(slender.status, 3) << slender.summary;  // numerical failure, docs/fsi.md "Failures"
   EXPECT_LT(flapsim::test::json_number(slender.summary, "steps"), 100.0) << slender.summary;  // measured 69

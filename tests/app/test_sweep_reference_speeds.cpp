@@ -12,7 +12,7 @@
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 
-namespace {
+namespace sweep_reference_speeds_test {
 
 using namespace flapsim;
 
@@ -55,4 +55,4 @@ TEST(SweepReferenceSpeeds, RowsAllInAFreeStreamAreNotNoted) {
   EXPECT_NE(text.find("table: "), std::string::npos) << text;  // the table was printed
 }
 
-}  // namespace
+}  // namespace sweep_reference_speeds_test
