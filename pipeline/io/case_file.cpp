@@ -537,20 +537,13 @@ void warn_experimental_shedding(const TomlTable& root, Case& c) {
   if (c.numerics.leading_edge != uvlm::LeadingEdge::Shed || !c.air.enabled) return;
   warn_at_numerics_key(
       root, c, "leading_edge",
-      "\"shed\" is experimental: verified on a 2-D strip and, in its total, on a revolving wing "
-      "at 50-60 deg with 10 spanwise panels (not converged along the span: on 40 it is 10-15 % "
-      "lower there, on 80 within 8 % of \"none\"'s at 10-50 deg and 12-24 % below the "
-      "measurement at 10-60 deg), but its lift along the span is not a wing's (the "
-      "tip strip carries 29-43 % "
-      "of it on the Robofly wing, up to 79 % on a tip rounded within one strip) and a "
-      "square-tipped or swept wing revolving falls below \"none\"; "
-      "on a flapping wing the cycles do not repeat and the per-step lift is rough, so read "
-      "summary.json's settled_mean_CL over many cycles (Lua et al.'s wing: 3-5 % above the "
-      "measurement over 150 cycles on 10 spanwise panels, 11 % below it on 40), and a run may "
-      "break down, a long one on the shipped wings, on a tapered or slender plate hovering "
-      "within a few half-strokes (docs/uvlm.md, "
-      "\"Leading-edge vortex shedding: measurements\"); \"separated\" and \"none\" bracket "
-      "the measured lift");
+      "\"shed\" is experimental: its lift is not converged along the span (a revolving wing's "
+      "comes to \"none\"'s on 40-80 spanwise panels, 12-24 % below the measurement at 10-60 deg; "
+      "the agreement on 10 panels is the end strips', which do not shed), on a flapping wing its "
+      "cycles do not repeat (read summary.json's settled_mean_CL over many cycles), and a run may "
+      "break down (a long one on the shipped wings, a tapered or slender plate hovering within a "
+      "few half-strokes); \"separated\" (the default) and \"none\" bracket the measured lift "
+      "(docs/uvlm.md, \"Leading-edge vortex shedding: measurements\", its first paragraph)");
 }
 
 // A prescribed wake (free_wake = false) moves with the free stream only (uvlm::WakeModel::
