@@ -509,37 +509,39 @@ void warn_at_numerics_key(const TomlTable& root, Case& c, const std::string& key
 // 0.2-1.2 %, of cycle 3 by 12-39 %), and after 5-8 cycles the wake piles up under the wing
 // and the lift grows erratic (docs/uvlm.md, "Hover over many cycles": cycles 9 and 10 at
 // +60 %, +90 %, peak 2.4x).
-// leading_edge = "shed" is verified in the 2-D limit and, with viscous cores, on the revolving
-// Robofly wing at 50-60 deg (docs/uvlm.md, "Leading-edge vortex shedding: measurements": CL
-// within 10 % of the fit there, converged in the step from 120 steps per half revolution, 8-15 %
-// low at 10-40 deg); on flapping wings its per-step lift is not converged in the step (the Lua
-// hover: spikes of 3-8 times the mean at reversal), its cycles do not repeat, and its mean over
-// many cycles is the result (3-5 % above Lua et al.'s over 150 cycles); long runs may diverge.
-// Its lift along the span is not a wing's (docs/uvlm.md, "Where shed's lift lies along the
-// span", 4 Dec): on the revolving Robofly the tip strip carries 29-43 % of it and the
-// mid-span strips 0.4-7 %, on an outline whose tip is rounded within its last strip 79 %
-// (at 50 deg), and a square-tipped or swept wing revolving falls below "none" (a rectangle
-// of aspect ratio 4: CL 0.97 against 1.29; a 30 deg swept one: 1.20 against 1.73). Nor is it
-// converged along the span (5 Dec, "The two load routes part on the shed sheet"): the Robofly
-// at 30 / 50 deg gives CL 1.295 / 1.648 on 10 strips, 1.173 / 1.404 on 40 (-9 / -15 %), where
-// "none" holds (1.280 / 1.388 and 1.288 / 1.402): on 40 strips "shed" adds no vortex lift
-// there; at 60 deg 1.531 on 10, 1.377 on 40 (-10 %; "none" 1.167 / 1.179).
-// Lua et al.'s hover (12 cycles): 2.212 on 10 strips, 1.858 on 40 (+6.3 / -10.7 % of 2.08;
-// "none" 1.844 / 1.774, "separated" 2.336 / 2.231). On 80 strips ("Converged along the span")
-// the Robofly at 10-60 deg gives 0.520, 0.940, 1.170, 1.344, 1.465, 1.402 (-15 ... -24 % of the
-// fit; "none" 0.505, 0.947, 1.266, 1.415, 1.374, 1.155) and Lua et al.'s hover stops at step
-// 391. Hovering in cases/hover.toml's stroke ("Other planforms in a hover"), a rigid 40 mm
-// plate of 5 mm chord stops at step 70, plates tapered to 0.5 / 0.3 / 0.1 of the root chord at
-// 210 / 101 / 65, where the 10 mm plate and "separated" complete (test
-// app.ShedOtherPlanforms.*).
+// leading_edge = "shed" is verified in the 2-D limit and, with viscous cores and 10 spanwise
+// panels, on the revolving Robofly wing at 50-60 deg (docs/uvlm.md, "Leading-edge vortex
+// shedding: measurements": CL within 10 % of the fit there, converged in the step from 120
+// steps per half revolution, 8-15 % low at 10-40 deg; an agreement that comes from the end
+// strips, which do not shed, as the numbers on 40 and 80 strips below show); on flapping wings
+// its per-step lift is not converged in the step (the Lua hover: spikes of 3-8 times the mean
+// at reversal), its cycles do not repeat, and its mean over many cycles is the result (3-5 %
+// above Lua et al.'s over 150 cycles); long runs may diverge. Its lift along the span is not a
+// wing's (docs/uvlm.md, "Where shed's lift lies along the span", 4 Dec): on the revolving
+// Robofly the tip strip carries 29-43 % of it and the mid-span strips 0.4-7 %, on an outline
+// whose tip is rounded within its last strip 79 % (at 50 deg), and a square-tipped or swept
+// wing revolving falls below "none" (a rectangle of aspect ratio 4: CL 0.97 against 1.29; a 30
+// deg swept one: 1.20 against 1.73). Nor is it converged along the span (5 Dec, "The two load
+// routes part on the shed sheet"): the Robofly at 30 / 50 deg gives CL 1.295 / 1.648 on 10
+// strips, 1.173 / 1.404 on 40 (-9 / -15 %), where "none" holds (1.280 / 1.388 and 1.288 /
+// 1.402): on 40 strips "shed" adds no vortex lift there; at 60 deg 1.531 on 10, 1.377 on 40
+// (-10 %; "none" 1.167 / 1.179). Lua et al.'s hover (12 cycles): 2.212 on 10 strips, 1.858 on
+// 40 (+6.3 / -10.7 % of 2.08; "none" 1.844 / 1.774, "separated" 2.336 / 2.231). On 80 strips
+// ("Converged along the span") the Robofly at 10-60 deg gives 0.520, 0.940, 1.170, 1.344,
+// 1.465, 1.402 (-15 ... -24 % of the fit; "none" 0.505, 0.947, 1.266, 1.415, 1.374, 1.155) and
+// Lua et al.'s hover stops at step 391. Hovering in cases/hover.toml's stroke ("Other
+// planforms in a hover"), a rigid 40 mm plate of 5 mm chord stops at step 70, plates tapered
+// to 0.5 / 0.3 / 0.1 of the root chord at 210 / 101 / 65, where the 10 mm plate and
+// "separated" complete (test app.ShedOtherPlanforms.*).
 void warn_experimental_shedding(const TomlTable& root, Case& c) {
   // In vacuum (air = "none") there is no lattice and nothing is shed: no warning.
   if (c.numerics.leading_edge != uvlm::LeadingEdge::Shed || !c.air.enabled) return;
   warn_at_numerics_key(
       root, c, "leading_edge",
       "\"shed\" is experimental: its lift is not converged along the span (a revolving wing's "
-      "comes to \"none\"'s on 40-80 spanwise panels, 12-24 % below the measurement at 10-60 deg; "
-      "the agreement on 10 panels is the end strips', which do not shed), on a flapping wing its "
+      "comes within 8 % of \"none\"'s at 10-50 deg on 80 spanwise panels, 12-24 % below the "
+      "measurement at 10-60 deg; the agreement on 10 panels comes from the end strips, which do not "
+      "shed), on a flapping wing its "
       "cycles do not repeat (read summary.json's settled_mean_CL over many cycles), and a run may "
       "break down (a long one on the shipped wings, a tapered or slender plate hovering within a "
       "few half-strokes); \"separated\" (the default) and \"none\" bracket the measured lift "
