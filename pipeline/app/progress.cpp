@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -44,6 +45,7 @@ void ProgressLine::update(long step, double time, std::string_view extra) {
   step_ = step;
   time_ = time;
   step_start_ = std::chrono::steady_clock::now();
+  mark_pace(std::chrono::duration<double>(step_start_ - start_).count(), step);
   if (mode_ == Mode::final_only) {
     // A log (a batch job's output) gets a whole line now and then: a run of hours
     // otherwise showed nothing until its end. Not at the last step: finish() prints it.
@@ -69,7 +71,7 @@ void ProgressLine::update(long step, double time, std::string_view extra) {
   std::string line = format(step_, total_, time_, extra_);
   // The time left appears once the run has shown its pace (a second of wall time).
   if (const double wall = wall_seconds(); wall >= 1.0)
-    if (const std::string left = time_left(wall, step_, total_); !left.empty()) line += "  " + left;
+    if (const std::string left = time_left_now(wall); !left.empty()) line += "  " + left;
   draw(line, false);
 }
 
@@ -97,8 +99,13 @@ void ProgressLine::finish(std::string_view extra) {
 }
 
 std::string ProgressLine::time_left(double wall, long step, long total) {
+  return time_left(wall, step, total, 0.0);
+}
+
+std::string ProgressLine::time_left(double wall, long step, long total, double recent_seconds_per_step) {
   if (step <= 0 || step >= total || !(wall > 0.0)) return {};
-  const double left = wall * static_cast<double>(total - step) / static_cast<double>(step);  // [s]
+  const double pace = std::max(wall / static_cast<double>(step), recent_seconds_per_step);  // [s/step]
+  const double left = pace * static_cast<double>(total - step);                             // [s]
   char buf[32];
   if (left < 90.0)
     std::snprintf(buf, sizeof(buf), "~%.0f s left", left);
@@ -107,6 +114,26 @@ std::string ProgressLine::time_left(double wall, long step, long total) {
   else
     std::snprintf(buf, sizeof(buf), "~%.1f h left", left / 3600.0);
   return buf;
+}
+
+void ProgressLine::mark_pace(double wall, long step) {
+  const double interval = std::chrono::duration<double>(log_interval_).count();  // [s]
+  if (wall - newer_mark_wall_ < interval) return;
+  older_mark_wall_ = newer_mark_wall_;
+  older_mark_step_ = newer_mark_step_;
+  newer_mark_wall_ = wall;
+  newer_mark_step_ = step;
+}
+
+double ProgressLine::recent_seconds_per_step(double wall) const {
+  // From the older mark: the start until the second mark is set, then a log interval or
+  // two back.
+  if (step_ <= older_mark_step_) return 0.0;
+  return (wall - older_mark_wall_) / static_cast<double>(step_ - older_mark_step_);
+}
+
+std::string ProgressLine::time_left_now(double wall) const {
+  return time_left(wall, step_, total_, recent_seconds_per_step(wall));
 }
 
 double ProgressLine::wall_seconds() const {
@@ -118,7 +145,7 @@ std::string ProgressLine::wall_note(bool with_time_left) const {
   char buf[48];
   std::snprintf(buf, sizeof(buf), "  (%.1f s wall", wall);
   std::string note = buf;
-  if (const std::string left = with_time_left ? time_left(wall, step_, total_) : std::string(); !left.empty())
+  if (const std::string left = with_time_left ? time_left_now(wall) : std::string(); !left.empty())
     note += ", " + left;
   return note + ")";
 }

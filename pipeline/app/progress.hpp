@@ -5,9 +5,10 @@
 /// at most about five times a second. When the stream is not a terminal (a log file, a
 /// batch job's output) a whole line is printed every 30 s of wall time, "… (30.1 s wall,
 /// ~2.5 min left)", and at the end, "… (95.2 s wall)"; FLAPSIM_QUIET=1 in the environment
-/// silences it entirely. The time left is the wall time so far scaled by the steps left
-/// over the steps done (a run whose steps slow down, e.g. a film wing whose FEM steps
-/// start to split, takes longer than it says).
+/// silences it entirely. The time left is the steps left at the slower of two paces: the
+/// whole run's (wall time so far over the steps done) and the recent one (the steps of the
+/// last 30-60 s of wall time), so a run whose steps slow down (a film wing whose FEM steps
+/// start to split) says so within a log line or two.
 
 #include <chrono>
 #include <cstdio>
@@ -64,6 +65,10 @@ class ProgressLine {
   /// \p total steps, scaled to the steps left; empty before the first step and after the last.
   static std::string time_left(double wall, long step, long total);
 
+  /// \brief The same with the recent pace \p recent_seconds_per_step [s/step] (0: none
+  /// measured yet): the steps left at the slower of it and the whole run's pace.
+  static std::string time_left(double wall, long step, long total, double recent_seconds_per_step);
+
  private:
   void draw(const std::string& line, bool final_line);
   double wall_seconds() const;  ///< since the line was made [s]
@@ -78,6 +83,13 @@ class ProgressLine {
   bool finished_ = false;
   std::chrono::steady_clock::time_point start_, last_draw_;
   std::chrono::steady_clock::time_point step_start_;  ///< when the last step was reported done
+  /// Two marks (wall time [s], steps done) at least a log interval apart: the recent pace is
+  /// measured from the older one (over the last one to two log intervals).
+  double older_mark_wall_ = 0.0, newer_mark_wall_ = 0.0;
+  long older_mark_step_ = 0, newer_mark_step_ = 0;
+  void mark_pace(double wall, long step);
+  double recent_seconds_per_step(double wall) const;  ///< 0 until a mark lies steps behind
+  std::string time_left_now(double wall) const;
   bool drawn_ = false;
   std::chrono::milliseconds log_interval_{std::chrono::seconds(30)};
 };

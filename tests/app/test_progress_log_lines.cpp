@@ -55,6 +55,18 @@ TEST(ProgressLogLines, TheTimeLeftScalesTheWallTimeByTheStepsLeft) {
   EXPECT_EQ(ProgressLine::time_left(0.0, 10, 400), "");
 }
 
+// A run whose steps slow down (a film's FEM steps that start to split) says so: the steps
+// left go at the slower of the whole run's pace and the recent one (progress.hpp).
+TEST(ProgressLogLines, TheTimeLeftTakesTheSlowerOfTheRunsPaceAndTheRecentOne) {
+  EXPECT_EQ(ProgressLine::time_left(10.0, 100, 400, 1.0), "~5.0 min left");  // 1 s/step × 300
+  EXPECT_EQ(ProgressLine::time_left(10.0, 100, 400, 0.05), "~30 s left");    // the run's 0.1 s/step
+  EXPECT_EQ(ProgressLine::time_left(10.0, 100, 400, 0.0), "~30 s left");     // no recent pace yet
+  // The dragonfly-like 25 um film of the 5 Dec note: 161 s for 94 of 100 steps, the last
+  // three 12 s each; the run's pace alone said "~10 s left".
+  EXPECT_EQ(ProgressLine::time_left(161.1, 94, 100, 12.0), "~72 s left");
+  EXPECT_EQ(ProgressLine::time_left(5.0, 400, 400, 1.0), "");
+}
+
 // A step that lasts longer than the log interval (a film's FEM step in many pieces, minutes)
 // shows that it is under way, from the calls between its solves; a short step does not.
 TEST(ProgressLogLines, AStepThatLastsShowsThatItIsUnderWay) {
