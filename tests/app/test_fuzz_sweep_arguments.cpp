@@ -28,10 +28,16 @@ using flapsim::test::mutants_per_loader;
 const std::string kSource = FLAPSIM_SOURCE_DIR;
 constexpr std::uint64_t kSeed = 20261128;  // fixed: every run sees the same mutants
 
-std::string values_out_of_range(const std::vector<flapsim::sweep::Assignment>& values) {
-  if (values.empty() || values.size() > 10000) return "value count";
-  for (const flapsim::sweep::Assignment& v : values)
-    if (!std::isfinite(v.value) || !(v.word.empty() || flapsim::sweep::is_word_value(v.word))) return "value";
+// A value of `wing` is a path, kept as written (a file that is not there is refused when the
+// case is loaded); every other key's is a finite number or a word.
+std::string values_out_of_range(const flapsim::sweep::Variation& v) {
+  if (v.values.empty() || v.values.size() > flapsim::sweep::kMaxVaryValues) return "value count";
+  for (const flapsim::sweep::Assignment& a : v.values) {
+    if (flapsim::sweep::takes_paths(v.key)
+            ? a.word.empty()
+            : !std::isfinite(a.value) || !(a.word.empty() || flapsim::sweep::is_word_value(a.word)))
+      return "value";
+  }
   return "";
 }
 
@@ -43,7 +49,7 @@ TEST(FuzzSweepArguments, VaryTexts) {
     fuzz("--vary " + seed, seed, kSeed + seed.size(), mutants_per_loader() / 4, [&](const std::string& text) {
       const flapsim::sweep::Variation v = flapsim::sweep::parse_variation(text);
       if (v.key.empty()) return std::string("key");
-      if (const std::string bad = values_out_of_range(v.values); !bad.empty()) return bad;
+      if (const std::string bad = values_out_of_range(v); !bad.empty()) return bad;
       const auto grid = flapsim::sweep::cartesian_grid({v});
       if (grid.size() != v.values.size()) return std::string("grid size");
       // A case key's values go into the case as the sweep writes them (wing keys and the

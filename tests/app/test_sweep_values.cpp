@@ -43,6 +43,14 @@ TEST(SweepValues, RangesListsAndErrors) {
   EXPECT_THROW(sweep::parse_variation("k=Inf,1"), InputError);
   EXPECT_THROW(sweep::parse_variation("k=a:1:2"), InputError);  // a range is of numbers
   EXPECT_THROW(sweep::parse_variation("novalues"), InputError);
+  // At most 10000 values (sweep_values.hpp), stop included: 0.01:1e-6:0.02 is 10001 of them
+  // (the loader fuzzer's mutant of 5 Dec got through with the steps counted, not the values).
+  EXPECT_EQ(sweep::parse_variation("k=1:1:10000").values.size(), 10000u);
+  EXPECT_THROW(sweep::parse_variation("k=0:1:10000"), InputError);
+  EXPECT_THROW(sweep::parse_variation("wing.membrane.thickness=0.01:1e-6:0.02"), InputError);
+  std::string many = "k=1";
+  for (int i = 0; i < 10000; ++i) many += ",1";
+  EXPECT_THROW(sweep::parse_variation(many), InputError);  // 10001 in a list
 }
 
 TEST(SweepValues, BlanksAroundAValueGoAndBlanksInsideItStay) {

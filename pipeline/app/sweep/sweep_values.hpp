@@ -15,6 +15,7 @@
 /// Each value is written into the parsed file (case or wing) and the file is read and
 /// checked again, so every case of a sweep is checked as strictly as a file.
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,7 +62,10 @@ bool takes_paths(const std::string& key);
 /// The values of the varied keys that make one case (in the order of the keys).
 using CasePoint = std::vector<Assignment>;
 
-/// \brief Parses `KEY=start:step:stop` or `KEY=v1,v2,...`.
+/// The most values one --vary may give (a range's or a list's).
+inline constexpr std::size_t kMaxVaryValues = 10000;
+
+/// \brief Parses `KEY=start:step:stop` (stop included) or `KEY=v1,v2,...`.
 /// \throws flapsim::InputError (key "--vary") on bad syntax, a zero step, a step of the
 ///         wrong sign, more than 10000 values or an empty list
 Variation parse_variation(const std::string& text);
