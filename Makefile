@@ -28,6 +28,8 @@
 #   make movie [CASE=...]   MP4 of the state's view over the case's last wingbeat
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
 #   make fuzz            the loader fuzzer with many more mutants (FUZZ_MUTANTS per loader)
+#   make fuzz-coverage   clang's libFuzzer on the wing, SVG, case and chain readers
+#                        (FUZZ_SECONDS each, default 300; installs clang if missing)
 #   make clean           remove build/ and build-asan/
 #   make help            this list
 # See README.md for the rest.
@@ -39,7 +41,7 @@ CMAKE_ARGS ?=
 OUT        ?= out
 MAKEFLAGS  += --no-print-directory
 
-.PHONY: all deps build program test test-asan fuzz bench clean help
+.PHONY: all deps build program test test-asan fuzz fuzz-coverage bench clean help
 
 all: build
 
@@ -77,6 +79,12 @@ FUZZ_MUTANTS ?= 25000
 fuzz: build
 	FLAPSIM_FUZZ_MUTANTS=$(FUZZ_MUTANTS) $(BUILD)/tests/io/test_io --gtest_filter='FuzzLoaders.*'
 	FLAPSIM_FUZZ_MUTANTS=$(FUZZ_MUTANTS) $(BUILD)/tests/app/test_app --gtest_filter='FuzzSweepArguments.*'
+
+# Coverage-guided fuzzing (tools/coverage_fuzz.sh): the readers compiled with clang and
+# instrumented, the rest linked from $(BUILD); FUZZ_SECONDS of one core each, two side by side.
+FUZZ_SECONDS ?= 300
+fuzz-coverage: build
+	FUZZ_SECONDS=$(FUZZ_SECONDS) BUILD=$(BUILD) JOBS=$(JOBS) tools/coverage_fuzz.sh
 
 # Every benchmark program (not CMake's files beside them); the first that fails stops it.
 bench: build

@@ -15,8 +15,10 @@ namespace flapsim::uvlm::detail {
 constexpr double kInvFourPi = 0.079577471545947667884;  // 1/(4π)
 constexpr double kLambOseen = 1.25643;  // makes the Lamb–Oseen peak velocity sit at h = r_c
 // Keeps 0/0 (point on a segment, zero-length segment) at 0; normal numbers in each precision.
-template <class T> constexpr T kTiny = T(1e-300);
-template <> constexpr float kTiny<float> = 1e-36f;
+template <class T>
+inline constexpr T kTiny = T(1e-300);
+template <>
+inline constexpr float kTiny<float> = 1e-36f;
 
 /// x = h²/r_c² from which the Lamb–Oseen factor is exactly 1 in precision T. Double:
 /// e^(−1.25643·30) = 4.3e-17 < 2^-54, so 1 − e^(−1.25643 x) rounds to 1 for x ≥ 30;

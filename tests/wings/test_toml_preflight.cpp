@@ -84,6 +84,30 @@ TEST(TomlPreflight, ADateWithALoneDigitAfterItsSpaceIsRefused) {
   EXPECT_TRUE(parse_toml_string("k = 1979-05-27 07:32:00Z\nd = 1979-05-27\n", "ok.toml").has("k"));
 }
 
+// toml++ 3.3's test for a date is looser than a date: 10 characters starting with a digit,
+// '-' at 5 and 8, and no sign, dot, colon or the letters it notes (b, o, x second after a
+// '0'; e before a '-'; t, z). A coverage-guided fuzzer (libFuzzer on the case and chain
+// readers, 5 Dec) found "0----!---- 0" and "0-\x12------; 0", each an assertion in
+// parse_value; "0aaa-bb-cc 1" is the same. Tokens that note another trait are toml++'s own
+// syntax errors, not refused by the scan.
+TEST(TomlPreflight, AValueShapedLikeADateWithALoneDigitAfterItsSpaceIsRefused) {
+  for (const char* text :
+       {"a = 1\ng = 0----!---- 0\n", "a = 1\ng = 0-\x12------; 0\n", "a = 1\ng = 0aaa-bb-cc 1\n",
+        "a = 1\ng = [0aaa-bb-cc 1]\n", "a = 1\ng = 0_aaa-bb-cc 1 # c\n"}) {
+    const auto e = expect_input_error([&] { parse_toml_string(text, "d.toml"); });
+    EXPECT_EQ(e.line(), 2) << text;
+    EXPECT_NE(std::string(e.what()).find("a single digit"), std::string::npos) << e.what();  // the scan's
+  }
+  // Not shaped like a date for toml++ (a 't', a '.', 11 characters, a sign first): its own
+  // error, on the same line; and a lone digit at the end of the text is no assertion.
+  for (const char* text : {"a = 1\ng = 0t--!--x-- 0\n", "a = 1\ng = 0.--!--x-- 0\n",
+                           "a = 1\ng = 0----!----- 0\n", "a = 1\ng = 0----!---- 0"}) {
+    const auto e = expect_input_error([&] { parse_toml_string(text, "d.toml"); });
+    EXPECT_EQ(e.line(), 2) << text;
+    EXPECT_EQ(std::string(e.what()).find("a single digit"), std::string::npos) << e.what();  // toml++'s
+  }
+}
+
 // Valid TOML with the same characters in places where they are not a header or an
 // element start parses as before: lines of a continued array starting "[#", "[+", "[{",
 // "[" alone; brackets inside strings, quoted keys and comments.

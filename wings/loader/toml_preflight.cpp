@@ -196,7 +196,9 @@ class Preflight {
                               c == 'f' || c == 'F' || c == 'i' || c == 'I' || c == 'n' || c == 'N';
     if (!scalar_start) return stop();
     if (date_then_lone_digit())
-      refuse("a date, a space and a single digit (a date-time needs a full time: 1979-05-27 07:32:00)");
+      refuse(
+          "a date (or a value shaped like one: 10 characters, '-' at 5 and 8), a space and a single digit "
+          "(a date-time needs a full time: 1979-05-27 07:32:00)");
     // A number, boolean, date or time: one line without ',', ']', '}' or '#', so it ends
     // at the first of these or a line break (a date and a time may be joined by a space).
     while (!eof()) {
@@ -208,20 +210,44 @@ class Preflight {
     return true;
   }
 
-  /// True at "YYYY-MM-DD D" followed by a value terminator (e.g. "1979-05-27 0\n"):
-  /// toml++ 3.3 takes the space for a date-time's separator, reads one digit and asserts
-  /// (parse_value) on the terminator after it. Its test: the token up to the first
-  /// terminator, underscores left out, is 10 digits and '-' with '-' at 4 and 7.
+  /// True where toml++ 3.3 takes a value for a date and a time joined by a space, reads
+  /// one digit after the space and asserts (parse_value) on the terminator after it (e.g.
+  /// "1979-05-27 0\n"). Its test, mirrored here: the token up to the first terminator,
+  /// underscores left out (at most 127 characters read), is 10 characters long, starts with
+  /// a digit, has '-' at 4 and 7, and of the "traits" toml++ notes while reading it has
+  /// only digits and '-'. A letter other than b, e, o, p, t, x, z notes nothing, nor do
+  /// characters such as '!', ';' or a control character, so "0----!----" and "0aaa-bb-cc"
+  /// pass the test too (found by a coverage-guided fuzzer, 5 Dec); b, o and x note one only
+  /// as the second character of a token starting with '0', e only before any sign, p only
+  /// after an x.
   bool date_then_lone_digit() const {
-    std::size_t k = p_;
+    std::size_t k = p_, read = 0;
+    if (k >= s_.size() || !(s_[k] >= '0' && s_[k] <= '9')) return false;
+    const bool begins_zero = s_[k] == '0';
     std::string chars;
+    bool other_trait = false, has_minus = false, has_x = false;
     while (k < s_.size() && !ends_value(s_[k])) {
       const char c = s_[k++];
+      if (non_ascii(c)) return false;   // value() refuses it (toml++ would ask whether it ends the value)
+      if (++read >= 128) return false;  // toml++ reads no further: no space follows
       if (c == '_') continue;
-      if (!((c >= '0' && c <= '9') || c == '-')) return false;
       chars += c;
+      const std::size_t n = chars.size();
+      const char lower = static_cast<char>(c | 0x20);
+      if (c >= '0' && c <= '9') continue;
+      if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) {
+        if (((lower == 'b' || lower == 'o' || lower == 'x') && n == 2 && begins_zero) || lower == 't' ||
+            lower == 'z' || (lower == 'p' && has_x) || (lower == 'e' && n > 1 && !other_trait && !has_minus))
+          other_trait = true;
+        if (lower == 'x' && n == 2 && begins_zero) has_x = true;
+        continue;
+      }
+      if (c == '-')
+        has_minus = true;
+      else if (c == '+' || c == '.' || c == ':')
+        other_trait = true;
     }
-    if (chars.size() != 10 || chars[0] == '-' || chars[4] != '-' || chars[7] != '-') return false;
+    if (chars.size() != 10 || other_trait || !has_minus || chars[4] != '-' || chars[7] != '-') return false;
     const auto digit = [&](std::size_t i) { return i < s_.size() && s_[i] >= '0' && s_[i] <= '9'; };
     return k + 2 < s_.size() && s_[k] == ' ' && digit(k + 1) && (ends_value(s_[k + 2]) || non_ascii(s_[k + 2]));
   }
