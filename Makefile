@@ -28,7 +28,8 @@
 #   make movie [CASE=...]   MP4 of the state's view over the case's last wingbeat
 #   make bench           Google Benchmark programs (kernel throughput, whole runs)
 #   make fuzz            the loader fuzzer with many more mutants (FUZZ_MUTANTS per loader)
-#   make fuzz-coverage   clang's libFuzzer on the wing, SVG, case and chain readers
+#   make fuzz-coverage   clang's libFuzzer on the wing, SVG, outline, case, chain and
+#                        kinematics readers
 #                        (FUZZ_SECONDS each, default 300; installs clang if missing)
 #   make clean           remove build/ and build-asan/
 #   make help            this list

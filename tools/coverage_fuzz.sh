@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Coverage-guided fuzzing of flapsim's input readers with clang's libFuzzer (`make fuzz-coverage`):
-# the wing file and SVG drawing readers (tools/fuzz/wing_reader_fuzzer.cpp) and the case and chain
-# file readers (tools/fuzz/case_reader_fuzzer.cpp), each for FUZZ_SECONDS (default 300) of one core,
-# with AddressSanitizer and UndefinedBehaviorSanitizer, from the shipped files as seeds.
+# the wing file, SVG drawing and outline CSV readers (tools/fuzz/wing_reader_fuzzer.cpp) and the
+# case, chain and kinematics CSV readers (tools/fuzz/case_reader_fuzzer.cpp), each for FUZZ_SECONDS
+# (default 300) of one core, with AddressSanitizer and UndefinedBehaviorSanitizer, from the shipped
+# files as seeds.
 # The readers' sources (wings/loader/, and pipeline/io/'s case, chain and kinematics readers) are
 # compiled with clang and instrumented; the rest they call is linked from the Release build
 # (BUILD, default build/), which `make fuzz-coverage` makes first. Work goes to OUT (default
@@ -72,6 +73,9 @@ seed "$out/corpus_wing" 00 "$src"/wings/*.toml "$src"/tests/data/*wing*.toml
 seed "$out/corpus_wing" 01 "$src"/tests/data/*.svg
 seed "$out/corpus_case" 00 "$src"/cases/*.toml "$src"/tests/data/*case*.toml
 seed "$out/corpus_case" 01 "$src"/cases/chains/*.toml
+seed "$out/corpus_wing" 02 "$src"/wings/outlines/*.csv "$src"/tests/data/*outline*.csv
+printf '\x02# a measured wingbeat\nphase,sweep_deg\n0,60\n0.25,0\n0.5,-60\n0.75,0\n1,60\n' > "$out/corpus_case/seed_phase.csv"
+printf '\x06t_ms\tsweep_deg\n0\t60\n9.6\t0\n19.2\t-60\n28.7\t0\n38.3\t60\n47.9\t0\n' > "$out/corpus_case/seed_times.csv"
 # The files the seeds name, where the readers look for them (beside OUT/fuzz.toml).
 cp -r "$src/wings/outlines" "$out/"
 cp "$src/tests/data/drawn_wing.svg" "$out/"
