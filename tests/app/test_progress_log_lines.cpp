@@ -67,6 +67,32 @@ TEST(ProgressLogLines, TheTimeLeftTakesTheSlowerOfTheRunsPaceAndTheRecentOne) {
   EXPECT_EQ(ProgressLine::time_left(5.0, 400, 400, 1.0), "");
 }
 
+// The same in a run: a thousand steps at once, then steps of at least 30 ms (the log interval
+// 20 ms, 30 s in a real run). After the second slow step the recent pace (30 ms a step or
+// more) says minutes or hours for the 98,998 steps left; the run's pace would say about 6 s.
+TEST(ProgressLogLines, ARunWhoseStepsSlowDownSaysSoWithinTwoLines) {
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  {
+    ProgressLine p(100000, f, ProgressLine::Mode::final_only);
+    p.set_log_interval(std::chrono::milliseconds(20));
+    for (int i = 1; i <= 1000; ++i) p.update(i, i * 1e-4);
+    for (int i = 1001; i <= 1002; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(30));
+      p.update(i, i * 1e-4);
+    }
+    p.finish();
+  }
+  const std::string out = file_contents(f);
+  std::fclose(f);
+  const std::size_t line = out.find("step 1002/100000");
+  ASSERT_NE(line, std::string::npos) << out;
+  const std::string text = out.substr(line, out.find('\n', line) - line);
+  EXPECT_EQ(text.find(" s left"), std::string::npos) << text;
+  EXPECT_TRUE(text.find(" min left") != std::string::npos || text.find(" h left") != std::string::npos)
+      << text;
+}
+
 // A step that lasts longer than the log interval (a film's FEM step in many pieces, minutes)
 // shows that it is under way, from the calls between its solves; a short step does not.
 TEST(ProgressLogLines, AStepThatLastsShowsThatItIsUnderWay) {
