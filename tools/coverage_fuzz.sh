@@ -45,7 +45,8 @@ sources=("$src"/wings/loader/*.cpp "$src"/pipeline/io/case_file.cpp "$src"/pipel
 rm -f "$out"/obj/*.o
 printf '%s\n' "${sources[@]}" | xargs -P "$jobs" -I{} sh -c '
   clang++ "$@" -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -c "{}" \
-    -o "$0/obj/$(basename "{}" .cpp).o"' "$out" "${flags[@]}"
+    -o "$0/obj/$(basename "{}" .cpp).o"' "$out" "${flags[@]}" ||
+  { echo "coverage_fuzz: a reader did not compile with clang (above)" >&2; exit 2; }
 loader_objs=("$out"/obj/*.o)
 io_objs=()
 wing_objs=()
@@ -57,9 +58,11 @@ for o in "${loader_objs[@]}"; do
 done
 # 2. The two programs: the instrumented readers first, the Release libraries for the rest.
 san=(-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined)
-clang++ "${flags[@]}" "${san[@]}" "$src/tools/fuzz/wing_reader_fuzzer.cpp" "${wing_objs[@]}" -o "$out/wing_reader_fuzzer"
+linked() { echo "coverage_fuzz: $1 did not link (above)" >&2; exit 2; }
+clang++ "${flags[@]}" "${san[@]}" "$src/tools/fuzz/wing_reader_fuzzer.cpp" "${wing_objs[@]}" \
+  -o "$out/wing_reader_fuzzer" || linked wing_reader_fuzzer
 clang++ "${flags[@]}" "${san[@]}" "$src/tools/fuzz/case_reader_fuzzer.cpp" "${io_objs[@]}" "${wing_objs[@]}" \
-  "${libs[@]}" -fopenmp -lcholmod -o "$out/case_reader_fuzzer"
+  "${libs[@]}" -fopenmp -lcholmod -o "$out/case_reader_fuzzer" || linked case_reader_fuzzer
 # 3. Seeds: the shipped files behind the byte that picks their reader.
 seed() {  # seed DIR BYTE FILE...
   local dir=$1 byte=$2

@@ -27,8 +27,9 @@ void read_or_abort(const char* fuzzer, Read&& read) {
   }
 }
 
-/// \p text written to \p path (in the working folder), for the readers that take a file.
-inline const std::string& written(const std::string& path, std::string_view text) {
+/// \p text written to \p path (in the working folder), for the readers that take a file;
+/// returns the path.
+inline std::string written(const std::string& path, std::string_view text) {
   std::ofstream(path, std::ios::binary | std::ios::trunc)
       .write(text.data(), static_cast<std::streamsize>(text.size()));
   return path;

@@ -218,14 +218,14 @@ class Preflight {
   /// only digits and '-'. A letter other than b, e, o, p, t, x, z notes nothing, nor do
   /// characters such as '!', ';' or a control character, so "0----!----" and "0aaa-bb-cc"
   /// pass the test too (found by a coverage-guided fuzzer, 5 Dec); b, o and x note one only
-  /// as the second character of a token starting with '0', e only before any sign, p only
-  /// after an x.
+  /// as the second character of a token starting with '0', e only before a '-' (p only after
+  /// such an x, which has noted one already).
   bool date_then_lone_digit() const {
     std::size_t k = p_, read = 0;
     if (k >= s_.size() || !(s_[k] >= '0' && s_[k] <= '9')) return false;
     const bool begins_zero = s_[k] == '0';
     std::string chars;
-    bool other_trait = false, has_minus = false, has_x = false;
+    bool other_trait = false, has_minus = false;
     while (k < s_.size() && !ends_value(s_[k])) {
       const char c = s_[k++];
       if (non_ascii(c)) return false;   // value() refuses it (toml++ would ask whether it ends the value)
@@ -237,9 +237,8 @@ class Preflight {
       if (c >= '0' && c <= '9') continue;
       if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) {
         if (((lower == 'b' || lower == 'o' || lower == 'x') && n == 2 && begins_zero) || lower == 't' ||
-            lower == 'z' || (lower == 'p' && has_x) || (lower == 'e' && n > 1 && !other_trait && !has_minus))
+            lower == 'z' || (lower == 'e' && n > 1 && !has_minus))
           other_trait = true;
-        if (lower == 'x' && n == 2 && begins_zero) has_x = true;
         continue;
       }
       if (c == '-')
@@ -247,7 +246,7 @@ class Preflight {
       else if (c == '+' || c == '.' || c == ':')
         other_trait = true;
     }
-    if (chars.size() != 10 || other_trait || !has_minus || chars[4] != '-' || chars[7] != '-') return false;
+    if (chars.size() != 10 || other_trait || chars[4] != '-' || chars[7] != '-') return false;
     const auto digit = [&](std::size_t i) { return i < s_.size() && s_[i] >= '0' && s_[i] <= '9'; };
     return k + 2 < s_.size() && s_[k] == ' ' && digit(k + 1) && (ends_value(s_[k + 2]) || non_ascii(s_[k + 2]));
   }

@@ -89,7 +89,7 @@ Variation parse_variation(const std::string& text) {
     if (step == 0.0) bad(text, "the step must not be zero");
     if ((stop - start) * step < 0.0) bad(text, "the step goes away from stop");
     const double count = std::floor((stop - start) / step + 1e-9);  // steps: count + 1 values
-    if (count + 1.0 > kMaxVaryValues) bad(text, "more than 10000 values");
+    if (count + 1.0 > kMaxVaryValues) bad(text, "more than " + std::to_string(kMaxVaryValues) + " values");
     for (long i = 0; i <= static_cast<long>(count); ++i)
       v.values.push_back({v.key, tidy(start + i * step, step)});
   } else {
@@ -98,7 +98,7 @@ Variation parse_variation(const std::string& text) {
                                           : Assignment{v.key, parse_number(text, s)});
   }
   if (v.values.empty()) bad(text, "no values");
-  if (v.values.size() > kMaxVaryValues) bad(text, "more than 10000 values");
+  if (v.values.size() > kMaxVaryValues) bad(text, "more than " + std::to_string(kMaxVaryValues) + " values");
   return v;
 }
 
