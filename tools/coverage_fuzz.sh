@@ -29,7 +29,7 @@ if [ ${#need[@]} -gt 0 ]; then
     echo "coverage_fuzz: need root or sudo to install: ${need[*]}" >&2
     exit 2
   fi
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${need[@]}"
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${need[@]}" || exit 2
 fi
 libs=("$build/pipeline/io/libflapsim_io.a" "$build/reduction/libflapsim_reduction.a" "$build/fem/libflapsim_fem.a"
       "$build/uvlm/libflapsim_uvlm.a" "$build/mbd/libflapsim_mbd.a")
