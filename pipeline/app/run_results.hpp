@@ -84,10 +84,10 @@ inline constexpr auto kRunResults = [] {
                        "leading-edge model: none, attached, separated or shed (in air)"},
       ResultDefinition{"r2", "", K::number, "%.4f", "",
                        "non-dimensional radius of gyration of the outline's area (in air)"},
-      ResultDefinition{
-          "reynolds_number", "", K::number, "%.4g", "",
-          "Re = U_ref c/nu: the reference speed, the mean chord S/R and numerics.kinematic_viscosity; "
-          "below 32 warned (in air; docs/uvlm.md, \"Reynolds number\")"},
+      ResultDefinition{"reynolds_number", "", K::number, "%.4g", "",
+                       "Re = U c/nu: U the larger of the free-stream speed and the flapping speed at r2 R, "
+                       "the mean chord S/R and numerics.kinematic_viscosity; "
+                       "below 32 warned (in air; docs/uvlm.md, \"Reynolds number\")"},
       // How the run ended.
       ResultDefinition{"error", "", K::text, "", "",
                        "what stopped the run: the numerical failure, the output error or the signal (failed "

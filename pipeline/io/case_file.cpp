@@ -326,14 +326,23 @@ void drop_closing_phase(const TomlTable& s, std::string_view values_key, std::ve
 /// wingbeat's 0 … 0.0364 s read as phases: the sweep's spline reached 580 deg, warned only as
 /// an amplitude in the wrong unit). The message names the gap, and the times it may be (frequency_hz > 0).
 constexpr double kLargestPhaseGap = 0.5;  // [cycles]
-std::optional<std::string> gap_over_half_the_cycle(std::vector<double> phase, double frequency_hz) {
-  std::sort(phase.begin(), phase.end());  // a fitted table's folded wingbeats are in any order
+struct PhaseGap {
+  std::string message;
+  std::size_t from_row;  ///< the point the gap starts from (its index in the table as given)
+};
+std::optional<PhaseGap> gap_over_half_the_cycle(const std::vector<double>& phase, double frequency_hz) {
+  // A fitted table's folded wingbeats are in any order: the points by phase.
+  std::vector<std::size_t> order(phase.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return phase[a] < phase[b]; });
   const std::size_t n = phase.size();
-  double gap = phase.front() + 1.0 - phase.back(), from = phase.back();
+  double gap = phase[order.front()] + 1.0 - phase[order.back()];
+  std::size_t from = order.back();
   for (std::size_t i = 1; i < n; ++i)
-    if (phase[i] - phase[i - 1] > gap) {
-      gap = phase[i] - phase[i - 1];
-      from = phase[i - 1];
+    if (phase[order[i]] - phase[order[i - 1]] > gap) {
+      gap = phase[order[i]] - phase[order[i - 1]];
+      from = order[i - 1];
     }
   if (gap <= kLargestPhaseGap) return std::nullopt;
   char text[400];
@@ -341,17 +350,18 @@ std::optional<std::string> gap_over_half_the_cycle(std::vector<double> phase, do
       text, sizeof text,
       "the points leave %.3g of the cycle without a point (from phase %.4g on): phases are fractions "
       "of the wingbeat (f t, in [0, 1)), and a curve across so long a gap is a guess",
-      gap, from);
+      gap, phase[from]);
   std::string message = text;
-  const double span = phase.back() - phase.front();
+  const double first = phase[order.front()], last = phase[order.back()];
+  const double span = last - first;
   if (frequency_hz > 0.0 && span * frequency_hz > 0.5 && span * frequency_hz <= 1.0) {
     std::snprintf(text, sizeof text,
                   "; times in seconds? The last, %.4g, is %.3g of the %.4g Hz period: divide them by the "
                   "period, %.4g s",
-                  phase.back(), phase.back() * frequency_hz, frequency_hz, 1.0 / frequency_hz);
+                  last, last * frequency_hz, frequency_hz, 1.0 / frequency_hz);
     message += text;
   }
-  return message;
+  return PhaseGap{std::move(message), from};
 }
 
 /// A tabulated signal of `s`: inline { phase = [...], <values_key> = [...] } or a CSV file's
@@ -362,6 +372,8 @@ mbd::PeriodicSignal read_table_signal(const TomlTable& s, std::string_view value
                                       double frequency_hz, std::vector<InputWarning>* warnings) {
   const bool from_file = s.has("file");
   std::vector<double> phase, values;
+  std::vector<int> file_lines;  // a CSV file's row lines (kinematics_csv.hpp)
+  std::string file_path;
   const std::string where = from_file ? "file" : "phase";
   if (from_file) {
     // A measured wingbeat's column of a CSV file (pipeline/io/kinematics_csv.hpp).
@@ -371,6 +383,8 @@ mbd::PeriodicSignal read_table_signal(const TomlTable& s, std::string_view value
                                                     s.key_path("file"), s.has("harmonics"));
     phase = std::move(table.phase);
     values = std::move(table.values);
+    file_lines = std::move(table.lines);
+    file_path = path;
     // A table of times is one wingbeat by construction: no guess at seconds below.
     if (table.from_times) frequency_hz = 0.0;
   } else {
@@ -386,7 +400,11 @@ mbd::PeriodicSignal read_table_signal(const TomlTable& s, std::string_view value
         s.fail_at(s.line_of_element("phase", i), "phase",
                   "phases must be strictly increasing (entry " + std::to_string(i) + ")");
   }
-  if (const auto gap = gap_over_half_the_cycle(phase, frequency_hz)) s.fail(where, *gap);
+  if (const auto gap = gap_over_half_the_cycle(phase, frequency_hz)) {
+    if (from_file)  // the CSV's row the gap starts from, under the case's key
+      throw InputError(file_path, file_lines.at(gap->from_row), s.key_path("file"), gap->message);
+    s.fail(where, gap->message);
+  }
   if (s.has("harmonics")) {
     // A measured cycle as its least-squares Fourier series (mbd/fourier_fit.hpp): the
     // spline through scattered points turns the scatter into accelerations

@@ -137,49 +137,55 @@ KinematicsCsvColumn read_kinematics_csv(const std::string& path, const std::stri
   if (out.phase.size() < 3)
     throw InputError(path, line_no, key,
                      "at least 3 rows are needed, found " + std::to_string(out.phase.size()));
-  if (seconds > 0.0 && fitted) {
-    // A fit takes the rows in any order: several wingbeats fold onto one, phase frac((t − t0) f),
-    // and the series fitted to them all is their mean wingbeat's.
-    const double t0 = out.phase.front() * seconds;
-    for (std::size_t i = 1; i < out.phase.size(); ++i)
-      if (!(out.phase[i] > out.phase[i - 1]))
-        throw InputError(path, lines[i], key, "the times must increase from row to row");
-    for (double& p : out.phase) {
-      const double cycles = (p * seconds - t0) * frequency_hz;
-      p = cycles - std::floor(cycles);
-    }
-    return out;
-  }
+  // Rows in the order they were measured: a time column (fitted or not) and a phase column alike.
+  for (std::size_t i = 1; i < out.phase.size(); ++i)
+    if (!(out.phase[i] > out.phase[i - 1]))
+      throw InputError(path, lines[i], key,
+                       seconds > 0.0 ? "the times must increase from row to row"
+                                     : "the first column must increase from row to row");
   if (seconds > 0.0) {
-    // One wingbeat from its first time on: phase (t − t0) f; a last row one period on closes it.
-    // Times are written rounded: a last row within 1 % of its spacing of one period on is the
-    // closing row (phase 1).
+    // The phase (t − t0) f from the first row's time. Times are written rounded: a last row
+    // within 1 % of its spacing of a whole number of periods on is the closing row (the next
+    // wingbeat's start; phase 1 of a single wingbeat).
     const double t0 = out.phase.front() * seconds;
     const std::size_t n = out.phase.size();
     const double last_spacing = (out.phase[n - 1] - out.phase[n - 2]) * seconds * frequency_hz;
     for (std::size_t i = 0; i < n; ++i) {
       double p = (out.phase[i] * seconds - t0) * frequency_hz;
-      if (i + 1 == n && std::abs(p - 1.0) <= 0.01 * std::abs(last_spacing)) p = 1.0;
-      if (p > 1.0) {
-        char text[300];
+      if (i + 1 == n && p >= 0.5 && std::abs(p - std::round(p)) <= 0.01 * last_spacing) p = std::round(p);
+      if (p > 1.0 && !fitted) {
+        char text[400];
         std::snprintf(
             text, sizeof text,
-            "the times span more than one wingbeat: %.6g s after the first row's, beyond the %.6g s "
-            "period of %.6g Hz (give one wingbeat, or fit them all: with harmonics = N the wingbeats fold "
-            "onto one, and the series is their mean wingbeat's)",
-            out.phase[i] * seconds - t0, 1.0 / frequency_hz, frequency_hz);
+            "the times span more than one wingbeat: this row is %.9g s after the first row's, phase %.6f of "
+            "the %.9g s period of %.6g Hz%s (give one wingbeat, or fit them all: with harmonics = N the "
+            "wingbeats fold onto one, and the series is their mean wingbeat's)",
+            out.phase[i] * seconds - t0, p, 1.0 / frequency_hz, frequency_hz,
+            i + 1 < n ? ", and rows follow it" : "");
         throw InputError(path, lines[i], key, text);
       }
       out.phase[i] = p;
+    }
+    if (fitted) {
+      // Several wingbeats fold onto one, phase frac((t − t0) f), and the series fitted to all
+      // their rows is their mean wingbeat's. A closing row is the next wingbeat's start, dropped
+      // as a phase column's (its value is a measurement, not checked against the first row's).
+      if (out.phase.back() >= 1.0 && out.phase.back() == std::round(out.phase.back())) {
+        out.phase.pop_back();
+        out.values.pop_back();
+        lines.pop_back();
+        if (out.phase.size() < 3)
+          throw InputError(path, line_no, key, "at least 3 rows besides the closing one");
+      }
+      for (double& p : out.phase) p -= std::floor(p);
+      out.lines = std::move(lines);
+      return out;
     }
   }
   for (std::size_t i = 0; i < out.phase.size(); ++i)
     if (out.phase[i] < 0.0 || out.phase[i] > 1.0)
       throw InputError(path, lines[i], key,
                        "a phase outside [0, 1]: phases are fractions of the wingbeat (f t)");
-  for (std::size_t i = 1; i < out.phase.size(); ++i)
-    if (!(out.phase[i] > out.phase[i - 1]))
-      throw InputError(path, lines[i], key, "the first column must increase from row to row");
   if (out.phase.back() == 1.0) {
     const double first = out.values.front(), closing = out.values.back();
     if (out.phase.front() != 0.0)
@@ -198,7 +204,9 @@ KinematicsCsvColumn read_kinematics_csv(const std::string& path, const std::stri
     out.values.pop_back();
     if (out.phase.size() < 3)
       throw InputError(path, lines.back(), key, "at least 3 rows besides the closing one");
+    lines.pop_back();
   }
+  out.lines = std::move(lines);
   return out;
 }
 

@@ -6,7 +6,8 @@
 /// the time (`t_s`, `time [s]`, `t_ms`, `time (ms)`, …: the phase is (t − t₀) f); values are
 /// separated by commas, or by tabs on lines without a comma, or by spaces on lines without either. One
 /// wingbeat: a last row at phase 1 (or one period after the first time) must repeat the first row's value and
-/// is dropped, as an inline table's. A fitted table of times may hold several wingbeats.
+/// is dropped, as an inline table's. A fitted table of times may hold several wingbeats; a last row a
+/// whole number of periods after the first is the next wingbeat's start and is dropped too.
 
 #include <cstddef>
 #include <string>
@@ -21,6 +22,7 @@ inline constexpr std::size_t kMaxKinematicsCsvBytes = 16u << 20;  ///< 16 MiB (a
 struct KinematicsCsvColumn {
   std::vector<double> phase;   ///< [cycles]
   std::vector<double> values;  ///< as written (degrees, metres)
+  std::vector<int> lines;      ///< each kept row's line in the file (messages)
   bool from_times = false;     ///< the first column was a time
 };
 

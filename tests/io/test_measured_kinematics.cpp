@@ -236,6 +236,53 @@ TEST(MeasuredKinematics, AFittedCsvOfSeveralWingbeatsIsTheirMeanWingbeat) {
       << e.what();
 }
 
+// A fitted CSV of times ending in its closing row (one period after the first row's time, the
+// next wingbeat's start): the row is dropped, as a fitted phase column's phase-1 row is
+// (docs/case_file.md, "the closing row ... dropped as the next wingbeat's start"). Before, the
+// row was folded to phase 0 and fitted: with 500 in it the series' phi(0) was 31 deg off and its
+// points 68 deg (rms) from it (41 points). Now 40 points, the series 50 cos 2πs to the rows' nine digits.
+TEST(MeasuredKinematics, AFittedCsvOfTimesDropsItsClosingRow) {
+  for (const double closing : {50.0, 500.0}) {
+    const TemporaryCsv csv("fitted_closing.csv", wingbeat_csv(closing));
+    const flapsim::io::Case c = case_from_text(csv_sweep_case(csv.path, "phi", ", harmonics = 1"));
+    ASSERT_TRUE(c.kinematics.sweep.table_fit().has_value());
+    EXPECT_EQ(c.kinematics.sweep.table_fit()->points, 40) << closing;
+    EXPECT_LT(c.kinematics.sweep.table_fit()->residual_largest, 1e-8) << closing;
+    EXPECT_NEAR(c.kinematics.sweep.at_phase(0.0).value, 50.0 * flapsim::kDegToRad, 1e-9) << closing;
+  }
+  // Two whole wingbeats and the closing row (81 rows of 20 Hz, every 1.25 ms): 80 points.
+  std::string two = "t_ms,phi\n";
+  for (int i = 0; i <= 80; ++i)
+    two += std::to_string(1.25 * i) + "," +
+           (i == 80 ? std::string("7") : std::to_string(50.0 * std::cos(2.0 * std::numbers::pi * i / 40.0))) +
+           "\n";
+  const TemporaryCsv csv("fitted_two.csv", two);
+  const flapsim::io::Case c = case_from_text(csv_sweep_case(csv.path, "phi", ", harmonics = 1"));
+  ASSERT_TRUE(c.kinematics.sweep.table_fit().has_value());
+  EXPECT_EQ(c.kinematics.sweep.table_fit()->points, 80);
+  EXPECT_NEAR(c.kinematics.sweep.at_phase(0.0).value, 50.0 * flapsim::kDegToRad, 1e-6);
+}
+
+// Times out of order are named as such at the row (before, the first two rows swapped gave "a
+// phase outside [0, 1]"), and a table that leaves half the cycle without a row is named at the
+// CSV's row the gap starts from (before, at the case file's line).
+TEST(MeasuredKinematics, ACsvsTimesOutOfOrderAndItsGapAreNamedInTheCsv) {
+  const TemporaryCsv swapped("swapped.csv", "t_ms,phi\n5,40\n0,50\n10,20\n20,-10\n30,-40\n");
+  flapsim::InputError e = error_of(csv_sweep_case(swapped.path, "phi"));
+  EXPECT_EQ(e.file(), swapped.path);
+  EXPECT_EQ(e.line(), 3);
+  EXPECT_NE(std::string(e.what()).find("the times must increase from row to row"), std::string::npos)
+      << e.what();
+  const TemporaryCsv gap("gap.csv", "# rows up to phase 0.3\nphase,phi\n0,60\n0.1,50\n0.2,40\n0.3,30\n");
+  e = error_of(csv_sweep_case(gap.path, "phi"));
+  EXPECT_EQ(e.file(), gap.path);
+  EXPECT_EQ(e.key(), "kinematics.sweep.file");
+  EXPECT_EQ(e.line(), 6);  // phase 0.3, the gap's start
+  EXPECT_NE(std::string(e.what()).find("the points leave 0.7 of the cycle without a point"),
+            std::string::npos)
+      << e.what();
+}
+
 // A spreadsheet set to decimal commas writes fields between semicolons ("t [ms];phi" and
 // "0,0;60,0"): named as such at the header's line, where before the header was split at its
 // space and "found 't'" blamed the first column's name. A quoted comma-separated header
