@@ -17,6 +17,7 @@
 
 #include "mbd/angle_units.hpp"
 #include "pipeline/io/kinematics_csv.hpp"
+#include "pipeline/io/open_cycle_warning.hpp"
 #include "pipeline/io/table_scatter_warning.hpp"
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/path_from_file_hint.hpp"
@@ -431,10 +432,16 @@ mbd::PeriodicSignal read_table_signal(const TomlTable& s, std::string_view value
     s.fail(where, e.what());
   }
   const std::string values_where = from_file ? "file" : std::string(values_key);
-  if (warnings)
-    if (auto w = scattered_table_warning(phase, values, std::string(values_key), s.file(),
-                                         s.line_of(values_where), s.key_path(values_where)))
+  // A table that does not close is warned as such; its closing step would otherwise be taken
+  // for the points' scatter, and the fit the scatter warning offers does not close it either.
+  if (warnings) {
+    if (auto w = open_cycle_warning(phase, values, std::string(values_key), s.file(), s.line_of(values_where),
+                                    s.key_path(values_where)))
       warnings->push_back(std::move(*w));
+    else if (auto w = scattered_table_warning(phase, values, std::string(values_key), s.file(),
+                                              s.line_of(values_where), s.key_path(values_where)))
+      warnings->push_back(std::move(*w));
+  }
   return spline;
 }
 

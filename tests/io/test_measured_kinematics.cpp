@@ -15,6 +15,7 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "hover_case_text.hpp"
 #include "inline_case.hpp"
@@ -57,6 +58,44 @@ TEST(MeasuredKinematics, ATableRoundedToTwoDecimalsIsWarnedAtItsValues) {
       << rounded.warnings[0].message;
   EXPECT_NE(rounded.warnings[0].message.find("harmonics = 1 leaves"), std::string::npos);
   EXPECT_TRUE(case_from_text(measured_sweep_case(1000, 6)).warnings.empty());
+}
+
+// A recorded wingbeat that drifts (50 points of 50 cos 2πs + 19 s deg, six decimals: its last
+// point 18.2 deg above the first) is warned as a table that does not close, at its
+// values (line 4), naming the closing step's steepness against the steepest interior one (2.74
+// times); the scatter warning, which it set off before (94 % "scatter"), is not given. The same
+// table without the drift, and five points of a sine whose closing interval straddles its
+// steepest part (1.24 times), are not warned.
+TEST(MeasuredKinematics, ATableThatDoesNotCloseIsWarnedAsSuch) {
+  const auto table_case = [](const std::vector<double>& phase, double drift_deg, double (*shape)(double)) {
+    std::string p, v;
+    for (std::size_t i = 0; i < phase.size(); ++i) {
+      char value[48];
+      std::snprintf(value, sizeof value, "%.6f", shape(phase[i]) + drift_deg * phase[i]);
+      p += (i ? ", " : "") + std::to_string(phase[i]);
+      v += (i ? ", " : "") + std::string(value);
+    }
+    std::string text = hover_case_text("cycles = 1\n");
+    const std::string sweep = "sweep = { cos_deg = [50.0] }";
+    return text.replace(text.find(sweep), sweep.size(), "sweep = { phase = [" + p + "], deg = [" + v + "] }");
+  };
+  const auto cosine = [](double s) { return 50.0 * std::cos(2.0 * std::numbers::pi * s); };
+  const auto sine = [](double s) { return 50.0 * std::sin(2.0 * std::numbers::pi * s); };
+  std::vector<double> fifty;
+  for (int i = 0; i < 50; ++i) fifty.push_back(i / 50.0);
+  const flapsim::io::Case drifting = case_from_text(table_case(fifty, 19.0, cosine));
+  ASSERT_EQ(drifting.warnings.size(), 1u);
+  EXPECT_EQ(drifting.warnings[0].key, "kinematics.sweep.deg");
+  EXPECT_EQ(drifting.warnings[0].line, 4);
+  const std::string& what = drifting.warnings[0].message;
+  EXPECT_NE(
+      what.find("the table does not close: from its last point (phase 0.98, 68.2257 deg) to its first one "
+                "wingbeat on (phase 1, 50 deg) it changes by -18.2 deg in 0.02 of the cycle, 2.74 times"),
+      std::string::npos)
+      << what;
+  EXPECT_EQ(what.find("scatter"), std::string::npos) << what;
+  EXPECT_TRUE(case_from_text(table_case(fifty, 0.0, cosine)).warnings.empty());
+  EXPECT_TRUE(case_from_text(table_case({0.1, 0.3, 0.5, 0.7, 0.9}, 0.0, sine)).warnings.empty());
 }
 
 // With harmonics = 1 the same rounded table is flown as its series: 50 cos 2πs to within the
