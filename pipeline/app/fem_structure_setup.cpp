@@ -47,7 +47,8 @@ std::shared_ptr<const fsi::FemStructureModel> make_fem_structure(const io::Case&
   const bool film =
       is_thin_film(typical_membrane_wrinkle(f.model), wings::planform_properties(wing.outline).mean_chord);
   fem::DynamicsOptions options;
-  options.rho_infinity = c.numerics.rho_infinity;
+  // ρ∞ where the case leaves it out: the FEM's own (kFemRhoInfinity), a film's 0 (below).
+  options.rho_infinity = c.numerics.rho_infinity_written ? c.numerics.rho_infinity : kFemRhoInfinity;
   options.linearised_geometric_force = c.structure.fem_linearised_geometric_terms;
   // A film's own defaults, where the case leaves the keys out (docs/case_file.md,
   // "[structure]"): ρ∞ = 0, or its wrinkles ring undamped (a 50 µm swept film wing crawled,

@@ -12,6 +12,7 @@
 #include "mbd/chain_kinematics.hpp"
 #include "pipeline/app/low_reynolds_warning.hpp"
 #include "pipeline/app/span_loads.hpp"
+#include "pipeline/app/step_zigzag.hpp"
 #include "pipeline/fsi/cycle_statistics.hpp"
 #include "pipeline/fsi/fem_structure.hpp"
 #include "pipeline/fsi/phase_analysis.hpp"
@@ -397,6 +398,14 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     const TipDeflection peak = peak_tip_deflection();
     r.set("peak_tip_bend_deg", peak.bend_deg);
     r.set("peak_tip_twist_deg", peak.twist_deg);
+    // A motion at the step's rate (step_zigzag.hpp): the larger of the bend's and the twist's.
+    const StepZigzag bend =
+        largest_step_zigzag(series(samples_, [](const StepSample& s) { return s.tip_bend; }));
+    const StepZigzag twist =
+        largest_step_zigzag(series(samples_, [](const StepSample& s) { return s.tip_twist; }));
+    const StepZigzag& zigzag = twist.amplitude > bend.amplitude ? twist : bend;
+    r.set("largest_tip_zigzag_deg", zigzag.amplitude * 180.0 / std::numbers::pi);
+    if (zigzag.step > 0) r.set("largest_tip_zigzag_step", zigzag.step);
   }
 
   double iterations = 0.0;

@@ -21,6 +21,7 @@
 #include <variant>
 #include <vector>
 
+#include "pipeline/app/step_zigzag.hpp"
 #include "pipeline/io/summary_json.hpp"
 
 namespace flapsim::app {
@@ -199,6 +200,13 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{"peak_tip_twist_deg", "deg", K::number, "%.1f", "",
                        "largest |tip twist| during the run, as peak_tip_bend_deg: the twist about the "
                        "wing frame's span axis y_W (fsi::tip_deflection)"},
+      ResultDefinition{
+          "largest_tip_zigzag_deg", "deg", K::number, "%.2f", "",
+          "largest zigzag of the tip's bend or twist from step to step: over four steps whose "
+          "three changes alternate in sign, half the smallest change; a motion at the step's rate "
+          "that the steps do not resolve (step_zigzag.hpp; above 1 deg warned)"},
+      ResultDefinition{"largest_tip_zigzag_step", "", K::integer, "", "",
+                       "the step of largest_tip_zigzag_deg's first turn back"},
       // The numerics.
       ResultDefinition{"mean_coupling_iterations", "", K::number, "%.2f", "iterations",
                        "lattice solves per step, mean over the run"},
@@ -335,6 +343,20 @@ inline constexpr std::array kRunReport = {
                [](const RunResults& r) {
                  return r.text("leading_edge") == "shed" && r.number("largest_CL_jump") > kSheetApartClJump;
                }},
+    // A structure that rings at the step's rate (step_zigzag.hpp) ends "ok" on a motion that
+    // is the integrator's, not the wing's.
+    ReportLine{
+        "warning: the wing's tip zigzags from step to step, by up to {largest_tip_zigzag_deg} (its bend or "
+        "twist turning back at two steps in a row, the largest at step {largest_tip_zigzag_step}; "
+        "history.csv "
+        "tip_bend_deg, tip_twist_deg): a motion at the step's rate, which the steps do not resolve and "
+        "the integrator pumps; the loads, the drive's power and the tip's motion from there on are not "
+        "the wing's. Lower numerics.rho_infinity (the FEM's default is 0.5, the chain's 0.9; 0 damps such a "
+        "motion within a step), or take more steps_per_cycle (docs/fsi.md, \"A tip that zigzags from step "
+        "to step\")",
+        [](const RunResults& r) {
+          return r.has("largest_tip_zigzag_deg") && r.number("largest_tip_zigzag_deg") > kStepZigzagWarnedDeg;
+        }},
     ReportLine{"in vacuum (air = \"none\"): no aerodynamic loads, no lift",
                [](const RunResults& r) { return !r.has("mean_power_W"); }},
     ReportLine{

@@ -12,6 +12,7 @@
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 #include "history_csv.hpp"
+#include "pipeline/app/fem_structure_setup.hpp"
 #include "pipeline/app/film_wrinkle_warning.hpp"
 #include "pipeline/app/fsi_setup.hpp"
 #include "pipeline/io/case_file.hpp"
@@ -57,14 +58,21 @@ TEST(FilmDefaults, AFilmsFemTakesRhoInfinityZeroAndTheCurrentGeometricTermsWhere
   EXPECT_TRUE(written.fem_structure->dynamics.options.linearised_geometric_force);
 }
 
-TEST(FilmDefaults, TheHawkmothsFemKeepsTheGeneralDefaults) {
-  // Not a film (its 120 um membrane wrinkles at 0.22, kFilmWrinkleStrain 1.5e-3): ρ∞ 0.9 and
-  // the linearised terms, as before.
+TEST(FilmDefaults, TheHawkmothsFemTakesTheFemsDefaults) {
+  // Not a film (its 120 um membrane wrinkles at 0.22, kFilmWrinkleStrain 1.5e-3): the FEM's
+  // ρ∞ 0.5 (kFemRhoInfinity, fem_structure_setup.hpp; 0.9 until 5 Dec, the chain's) and the
+  // linearised terms.
   flapsim::io::Case hawkmoth = flapsim::io::load_case_file(kFilmSource + "/cases/hover_flexible_fem.toml");
   ASSERT_FALSE(hawkmoth.numerics.rho_infinity_written);
   hawkmoth.structure.fem_element_size = hawkmoth.structure.fem_vein_element_size = 2e-3;
   const auto setup = flapsim::app::build_fsi_setup(hawkmoth, {});
-  EXPECT_EQ(setup.fem_structure->dynamics.options.rho_infinity, 0.9);
+  EXPECT_EQ(setup.fem_structure->dynamics.options.rho_infinity, flapsim::app::kFemRhoInfinity);
+  EXPECT_EQ(flapsim::app::kFemRhoInfinity, 0.5);
+  // Written, it stays (cases/vacuum_flapping_fem.toml writes 0.9).
+  flapsim::io::Case written = flapsim::io::load_case_file(kFilmSource + "/cases/vacuum_flapping_fem.toml");
+  ASSERT_TRUE(written.numerics.rho_infinity_written);
+  written.structure.fem_element_size = written.structure.fem_vein_element_size = 2e-3;
+  EXPECT_EQ(flapsim::app::build_fsi_setup(written, {}).fem_structure->dynamics.options.rho_infinity, 0.9);
   EXPECT_EQ(setup.fem_structure->dynamics.options.linearised_geometric_force,
             hawkmoth.structure.fem_linearised_geometric_terms);
 }
