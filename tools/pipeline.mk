@@ -116,7 +116,8 @@ plots:
 	$(PIPELINE_PYTHON) tools/plot_sweep.py $(PHASE_OUT)/rigid/sweep.csv $(PLOTS_OUT)/rigid
 	$(PIPELINE_PYTHON) tools/plot_sweep.py $(PHASE_OUT)/flexible/sweep.csv $(PLOTS_OUT)/flexible
 
-# docs/figures from a fresh phase study (its own folder, emptied first), PDF and PNG.
+# docs/figures from a fresh phase study (its own folder, emptied first), PDF and PNG, each
+# with the CSV of the numbers it draws.
 FIGURES_OUT   ?= docs/figures
 FIGURES_STUDY ?= $(OUT)/figures/phase_study
 figures: program $(PIPELINE_CHAIN)
