@@ -66,10 +66,17 @@ void throw_if_force_diverged(const Eigen::Vector3d& force, double limit, long st
   throw NumericalFailure(text, step, time);
 }
 
-std::string diverged_lattice_advice(const io::Case::Numerics& n, LiftJump jump) {
+std::string diverged_lattice_advice(const io::Case::Numerics& n, LiftJump jump, long recorded_steps) {
   if (n.leading_edge != uvlm::LeadingEdge::Shed) return {};
-  char evidence[320];
-  if (jump.step >= 2)
+  char evidence[400];
+  if (jump.step >= 2 && jump.step > recorded_steps)
+    std::snprintf(
+        evidence, sizeof evidence,
+        "With leading_edge = \"shed\" the lift coefficient changed by up to %.3g from one step to the "
+        "next (into step %ld, the step that failed: its lift is in no output, history.csv ends at step "
+        "%ld), as it does where the leading-edge sheet comes apart near the wing: ",
+        jump.size, jump.step, recorded_steps);
+  else if (jump.step >= 2)
     std::snprintf(
         evidence, sizeof evidence,
         "With leading_edge = \"shed\" the lift coefficient changed by up to %.3g from one step to the "

@@ -73,7 +73,9 @@ struct LiftJump {
 /// with the wake's core; cases/bench_hover.toml with its sheet unmerged: 3 wingbeats through
 /// against a stop at step 192; the flexible hover of cases/hover_flexible.toml in a 3 m/s
 /// forward flight: 6 wingbeats through against a stop at step 190); "separated", the
-/// default, sheds no sheet. Empty for the other leading-edge models.
-std::string diverged_lattice_advice(const io::Case::Numerics& numerics, LiftJump jump);
+/// default, sheds no sheet. Empty for the other leading-edge models. \p recorded_steps: the
+/// steps history.csv holds; a jump into a later step (the one that failed, measured but in no
+/// output) is said to be that step's.
+std::string diverged_lattice_advice(const io::Case::Numerics& numerics, LiftJump jump, long recorded_steps);
 
 }  // namespace flapsim::app

@@ -129,7 +129,8 @@ RunResults run_case(const io::Case& c, const RunOptions& options) {
     const std::string released = released_chain_at_failure(c, e.step());
     if (!released.empty()) why += (why.empty() ? "" : ". ") + released;
     // A leading-edge sheet that came apart: the loads' jumps it leaves, and what to change.
-    const std::string lattice = diverged_lattice_advice(c.numerics, recorder.largest_lift_jump());
+    const std::string lattice =
+        diverged_lattice_advice(c.numerics, recorder.largest_lift_jump(), recorder.recorded_steps());
     if (!lattice.empty()) why += (why.empty() ? "" : ". ") + lattice;
     if (why.empty()) {
       recorder.finish(data, "failed", e.what());

@@ -85,6 +85,9 @@ class RunRecorder {
   /// The sample of the last recorded step (valid after the first record()).
   const StepSample& last() const { return samples_.back(); }
 
+  /// The steps recorded so far (history.csv's rows).
+  long recorded_steps() const { return static_cast<long>(samples_.size()); }
+
   /// \brief Publishes history.csv, computes the results over the last cycle and writes
   /// summary.json with the status ("ok" or "failed") and, for a failed run, the error.
   /// \throws io::OutputError

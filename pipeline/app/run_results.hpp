@@ -314,6 +314,18 @@ struct ReportLine {
 /// too, and the warning says how to tell the two apart.
 inline constexpr double kSheetApartClJump = 10.0;
 
+/// A run with leading_edge = "shed" whose lift jumped beyond kSheetApartClJump (the report's
+/// warning; after_run_notes.hpp for sweeps and the optimiser).
+inline bool shed_sheet_came_apart(const RunResults& r) {
+  return r.has("leading_edge") && r.text("leading_edge") == "shed" && r.has("largest_CL_jump") &&
+         r.number("largest_CL_jump") > kSheetApartClJump;
+}
+
+/// A run whose tip zigzagged from step to step beyond kStepZigzagWarnedDeg (step_zigzag.hpp).
+inline bool tip_zigzagged(const RunResults& r) {
+  return r.has("largest_tip_zigzag_deg") && r.number("largest_tip_zigzag_deg") > kStepZigzagWarnedDeg;
+}
+
 inline constexpr std::array kRunReport = {
     ReportLine{"case {case}, wing {wing_file}: {structure}",
                [](const RunResults& r) { return r.has("wing_file"); }},
@@ -340,9 +352,7 @@ inline constexpr std::array kRunReport = {
                "results from there on are not the flow's; numerics.sheet_core_radius = 0.5 keeps the sheet "
                "together in more runs, leading_edge = \"separated\", the default, sheds none (docs/fsi.md, "
                "\"Failures\")",
-               [](const RunResults& r) {
-                 return r.text("leading_edge") == "shed" && r.number("largest_CL_jump") > kSheetApartClJump;
-               }},
+               shed_sheet_came_apart},
     // A structure that rings at the step's rate (step_zigzag.hpp) ends "ok" on a motion that
     // is the integrator's, not the wing's.
     ReportLine{
@@ -354,9 +364,7 @@ inline constexpr std::array kRunReport = {
         "the wing's. Lower numerics.rho_infinity (the FEM's default is 0.5, the chain's 0.9; 0 damps such a "
         "motion within a step), or take more steps_per_cycle (docs/fsi.md, \"A tip that zigzags from step "
         "to step\")",
-        [](const RunResults& r) {
-          return r.has("largest_tip_zigzag_deg") && r.number("largest_tip_zigzag_deg") > kStepZigzagWarnedDeg;
-        }},
+        tip_zigzagged},
     ReportLine{"in vacuum (air = \"none\"): no aerodynamic loads, no lift",
                [](const RunResults& r) { return !r.has("mean_power_W"); }},
     ReportLine{

@@ -284,11 +284,11 @@ TEST(DivergedForce, TheAdviceNamesTheSheetsCoreOnlyWhereItIsNarrow) {
   for (auto model : {flapsim::uvlm::LeadingEdge::None, flapsim::uvlm::LeadingEdge::Attached,
                      flapsim::uvlm::LeadingEdge::Separated}) {
     n.leading_edge = model;
-    EXPECT_EQ(flapsim::app::diverged_lattice_advice(n, {12.5, 40}), "");
+    EXPECT_EQ(flapsim::app::diverged_lattice_advice(n, {12.5, 40}, 45), "");
   }
   n.leading_edge = flapsim::uvlm::LeadingEdge::Shed;
   auto names_core = [&] {
-    const std::string a = flapsim::app::diverged_lattice_advice(n, {12.5, 40});
+    const std::string a = flapsim::app::diverged_lattice_advice(n, {12.5, 40}, 45);
     EXPECT_NE(a.find("leading_edge = \"separated\""), std::string::npos) << a;
     // the evidence it quotes: the largest step-to-step change of C_L and where
     EXPECT_NE(a.find("changed by up to 12.5 from one step to the next (into step 40"), std::string::npos)
@@ -307,7 +307,15 @@ TEST(DivergedForce, TheAdviceNamesTheSheetsCoreOnlyWhereItIsNarrow) {
   EXPECT_FALSE(names_core());
   // A run stopped at its second step has no two steps to compare: no jump is quoted (it said
   // "changed by up to 0 ... (into step 0", of a step that does not exist).
-  const std::string early = flapsim::app::diverged_lattice_advice(n, {});
+  // A jump into the step that failed (measured, in no output): said to be that step's, with
+  // where history.csv ends (it said "into step 113; history.csv CL" of a history of 112 steps).
+  const std::string failed = flapsim::app::diverged_lattice_advice(n, {187.0, 113}, 112);
+  EXPECT_NE(
+      failed.find("changed by up to 187 from one step to the next (into step 113, the step that failed: "
+                  "its lift is in no output, history.csv ends at step 112)"),
+      std::string::npos)
+      << failed;
+  const std::string early = flapsim::app::diverged_lattice_advice(n, {}, 1);
   EXPECT_EQ(early.find("into step"), std::string::npos) << early;
   EXPECT_NE(early.find("before two steps could be compared"), std::string::npos) << early;
   EXPECT_NE(early.find("leading_edge = \"separated\""), std::string::npos) << early;

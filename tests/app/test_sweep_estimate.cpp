@@ -12,6 +12,7 @@
 #include <string>
 
 #include "common/file_contents.hpp"
+#include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
 #include "pipeline/app/resource_estimate.hpp"
 #include "pipeline/io/case_file.hpp"

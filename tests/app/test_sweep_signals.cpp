@@ -21,8 +21,10 @@ namespace {
 
 // Starts a three-case sweep of a long run, one case at a time, waits until the first case's
 // history.csv has rows, sends the signal; returns the exit status (-1: no normal exit).
-int interrupted_sweep(const ScratchDir& dir, int signal_number) {
-  std::ofstream(dir / "case.toml") << small_plate_case("rigid", 200, 0, "wake_max_rows = 12\n");
+// `extra_numerics`: more [numerics] lines (a key the case file warns about).
+int interrupted_sweep(const ScratchDir& dir, int signal_number, const std::string& extra_numerics = "") {
+  std::ofstream(dir / "case.toml") << small_plate_case("rigid", 200, 0,
+                                                       "wake_max_rows = 12\n" + extra_numerics);
   return signal_flapsim_once_history_grows(
       {"sweep", (dir / "case.toml").string(), "--vary", "kinematics.rotation_phase=-0.1,0,0.1", "-j", "1", "-o",
        (dir / "out").string(), "-q"},
@@ -43,6 +45,20 @@ TEST(SweepSignals, SigintFinishesTheRunningCaseStartsNoOtherAndExits130) {
   ScratchDir dir("sweep_sigint");
   EXPECT_EQ(interrupted_sweep(dir, SIGINT), 130);
   expect_interrupted_sweep(dir);
+}
+
+// The interrupted case's row keeps the case's own warnings after "interrupted by SIGINT …",
+// as a failed case's does (docs/sweeps.md, the message column: "a warning of the files as
+// written is in every row"); before 5 Dec it held the interruption alone.
+TEST(SweepSignals, AnInterruptedCasesRowKeepsItsWarnings) {
+  ScratchDir dir("sweep_sigint_warned");
+  EXPECT_EQ(interrupted_sweep(dir, SIGINT, "far_wake_cycles = 1\n"), 130);
+  const std::string table = read_text(dir / "out" / "sweep.csv");
+  const auto row = table.find("00_-0.1,interrupted,");
+  ASSERT_NE(row, std::string::npos) << table;
+  const std::string line = table.substr(row, table.find('\n', row) - row);
+  EXPECT_NE(line.find("interrupted by SIGINT"), std::string::npos) << line;
+  EXPECT_NE(line.find("; numerics.far_wake_cycles: far_wake_cycles = 1"), std::string::npos) << line;
 }
 
 TEST(SweepSignals, SigtermFinishesTheRunningCaseStartsNoOtherAndExits143) {

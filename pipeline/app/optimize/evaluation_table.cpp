@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <fstream>
 
-#include "pipeline/app/flexibility_warnings.hpp"
+#include "pipeline/app/after_run_notes.hpp"
 #include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/io/csv_writer.hpp"
 
@@ -67,8 +67,7 @@ EvaluationTable::EvaluationTable(std::filesystem::path path, std::vector<std::st
 std::string evaluation_notes(const Evaluation& e) {
   std::vector<std::string> notes;
   if (e.results.has("warnings")) notes.push_back(e.results.text("warnings"));
-  if (std::string deflection = app::large_deflection_note(e.results); !deflection.empty())
-    notes.push_back(std::move(deflection));
+  for (std::string& note : app::after_run_notes(e.results)) notes.push_back(std::move(note));
   return app::join_notes(notes);
 }
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pipeline/app/flexibility_warnings.hpp"
+#include "pipeline/app/after_run_notes.hpp"
 #include "pipeline/app/run_results.hpp"
 #include "pipeline/io/atomic_file.hpp"
 #include "pipeline/io/csv_writer.hpp"
@@ -24,12 +24,8 @@ std::string key_of(std::size_t result) { return std::string(app::kRunResults[res
 }  // namespace
 
 std::string optimum_warning_advice(const Evaluation& best) {
-  if (app::large_deflection_note(best.results).empty())
-    return "The search maximised the result the model gives there, warnings and all.";
-  return "Its chain swung beyond the small rotations its joint springs represent, so the result it "
-         "maximised is not the wing's: keep the search where the chain holds with "
-         "`--constraint peak_tip_twist_deg<=30` (and `peak_tip_bend_deg<=30`), or run the wing's own FEM "
-         "(`structure.kind = \"fem\"`).";
+  const std::string advice = app::after_run_advice(best.results);
+  return advice.empty() ? "The search maximised the result the model gives there, warnings and all." : advice;
 }
 
 std::string optimize_report(const std::string& case_file, const Problem& problem, const OptimizeReport& report) {

@@ -13,9 +13,10 @@
 namespace flapsim::optimize {
 
 /// \brief The report's Markdown text.
-/// What a user can do about the warnings of the optimum's run (evaluation_notes): a chain
-/// beyond its range (app::large_deflection_note) names the constraints that keep the search
-/// where the chain holds, and the FEM; otherwise that the result maximised is the model's.
+/// What a user can do about the warnings of the optimum's run (evaluation_notes): for what its
+/// results say after the run (app::after_run_advice: a chain beyond its range, a shed sheet come
+/// apart, a zigzagging tip) the constraints that keep the search where the model holds;
+/// otherwise that the result maximised is the model's.
 std::string optimum_warning_advice(const Evaluation& best);
 
 std::string optimize_report(const std::string& case_file, const Problem& problem, const OptimizeReport& report);

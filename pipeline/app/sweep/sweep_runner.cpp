@@ -16,7 +16,7 @@
 #include <set>
 #include <thread>
 
-#include "pipeline/app/flexibility_warnings.hpp"
+#include "pipeline/app/after_run_notes.hpp"
 #include "pipeline/app/fsi_run.hpp"
 #include "pipeline/app/interruption.hpp"
 #include "pipeline/app/omp_environment.hpp"
@@ -141,12 +141,15 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
     std::set<std::string> own_folders;
     for (std::size_t i = 0; i < n; ++i) own_folders.insert(case_folder(i, n, plan.points[i]));
     EarlierCases earlier(options.output_dir, std::move(own_folders));  // completed cases under another index (a grid extended)
+    const std::map<std::string, RanOn> ran_on = earlier_ran_on(options.output_dir / "sweep.csv");
     for (std::size_t i = 0; i < n; ++i) {
       rows[i].point = plan.points[i];
       rows[i].folder = case_folder(i, n, plan.points[i]);
       std::optional<app::RunResults> kept;
+      bool in_own_folder = false;  // kept where it ran, not adopted from another index's folder
       if (!options.force) {
         kept = kept_results(options.output_dir / rows[i].folder / "summary.json", resolved[i].inputs_hash);
+        in_own_folder = kept.has_value();
         if (!kept) kept = earlier.adopt(resolved[i].inputs_hash, rows[i].folder);
         // A run asked for its ParaView series (--vtk-every) keeps a case only if the earlier
         // run wrote them (kept_series.hpp): a sweep run again with --vtk-every to get
@@ -159,7 +162,16 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       if (kept) {
         rows[i].done = true;
         std::string message = kept_message(*kept);
-        rows[i].outcome = CaseOutcome{"ok", std::move(message), world.rank(), host, std::move(*kept), 0.0};
+        // Where it ran, as the earlier table gave its folder (else this rank, which found it kept).
+        const auto where = in_own_folder ? ran_on.find(rows[i].folder) : ran_on.end();
+        rows[i].outcome = where != ran_on.end() ? CaseOutcome{"ok",
+                                                              std::move(message),
+                                                              where->second.rank,
+                                                              where->second.host,
+                                                              std::move(*kept),
+                                                              0.0}
+                                                : CaseOutcome{"ok", std::move(message), world.rank(),
+                                                              host, std::move(*kept),   0.0};
         ++report.kept;
       } else {
         todo.push_back(i);
@@ -213,7 +225,7 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       ~Ended() { p.ended(i); }
     } ended{progress, i};
     // The case's warnings in a few words: its files' (with the point's values), its setup's
-    // (setup_warnings.hpp), then after the run a large deflection.
+    // (setup_warnings.hpp), then what its results say after the run (after_run_notes.hpp).
     std::vector<std::string> notes;
     try {
       // Rank 0 resolved every case; the others resolve the ones they are given.
@@ -228,6 +240,10 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       // not run (status error, the message says so; the same sweep again runs it).
       io::ensure_directory(ro.output_dir);
       const io::FolderLock case_lock(ro.output_dir, "sweep");
+      // Another command's outputs there (a `flapsim reduce -o DIR/<case>`'s summary.json beside
+      // its chain.toml) are not the sweep's to replace, as `flapsim run` refuses them (exit 4):
+      // the case is not run (status error, the message names them); the others go on.
+      io::refuse_clashing_outputs(ro.output_dir, "run");
       io::remove_stale_temporaries(ro.output_dir);  // of a killed run of this case
       // An earlier run's files of this case (a sweep run again, --force, or a finished case
       // run again for its series): its ParaView series would stay beside the new history.
@@ -243,12 +259,12 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       o.overhead_s = std::chrono::duration<double>(Clock::now() - t0).count();  // resolving
       o.results = app::run_case(r.c, ro);
       o.status = "ok";
-      if (const std::string deflection = app::large_deflection_note(o.results); !deflection.empty())
-        notes.push_back(deflection);
+      for (std::string& note : app::after_run_notes(o.results)) notes.push_back(std::move(note));
       o.message = with_notes("", notes);
     } catch (const app::Interrupted& e) {
       o.status = "interrupted";
-      o.message = e.what();  // its summary.json says how far it got; a rerun of the sweep runs it again
+      // Its summary.json says how far it got; a rerun of the sweep runs it again.
+      o.message = with_notes(e.what(), notes);
     } catch (const NumericalFailure& e) {
       o.status = "failed";
       // No results in the table (nan): its summary.json tells how far it got.

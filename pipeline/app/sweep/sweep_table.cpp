@@ -2,10 +2,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
+#include <fstream>
 #include <stdexcept>
 
-#include "pipeline/app/flexibility_warnings.hpp"
+#include "pipeline/app/after_run_notes.hpp"
 #include "pipeline/app/setup_warnings.hpp"
 #include "pipeline/app/sweep/summary_reader.hpp"
 #include "pipeline/io/csv_writer.hpp"
@@ -25,9 +27,30 @@ std::string with_notes(std::string message, const std::vector<std::string>& note
 std::string kept_message(const app::RunResults& earlier) {
   std::vector<std::string> notes;
   if (earlier.has("warnings")) notes.push_back(earlier.text("warnings"));
-  if (std::string deflection = app::large_deflection_note(earlier); !deflection.empty())
-    notes.push_back(std::move(deflection));
+  for (std::string& note : app::after_run_notes(earlier)) notes.push_back(std::move(note));
   return with_notes(std::string(kKept), notes);
+}
+
+std::map<std::string, RanOn> earlier_ran_on(const std::filesystem::path& path) {
+  std::map<std::string, RanOn> out;
+  std::ifstream in(path);
+  std::string line;
+  if (!in || !std::getline(in, line)) return out;
+  const std::vector<std::string> header = io::split_csv_line(line);
+  const auto column = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t folder = column("folder"), rank = column("rank"), host = column("host");
+  if (folder == header.size() || rank == header.size() || host == header.size()) return out;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> cells = io::split_csv_line(line);
+    if (cells.size() != header.size()) continue;
+    int r = 0;
+    const std::string& text = cells[rank];
+    if (std::from_chars(text.data(), text.data() + text.size(), r).ec != std::errc{}) continue;
+    out[cells[folder]] = RanOn{r, cells[host]};
+  }
+  return out;
 }
 
 bool kept_from_earlier_run(const CaseOutcome& outcome) {

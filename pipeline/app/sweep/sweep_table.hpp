@@ -7,6 +7,7 @@
 /// leaves a valid table of the cases finished so far.
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,17 @@ std::string with_notes(std::string message, const std::vector<std::string>& note
 /// run as its row gave them (its summary.json's "warnings", a large deflection of its tip),
 /// e.g. "kept; numerics.far_wake_cycles: far_wake_cycles = 1 in hover is outside ...".
 std::string kept_message(const app::RunResults& earlier);
+
+/// Where a case of an earlier table ran: its rank and host.
+struct RanOn {
+  int rank = 0;
+  std::string host;
+};
+
+/// \brief The rank and host of each case folder in an earlier sweep.csv at \p path (empty if
+/// it is missing or unreadable): a case kept from it keeps where it ran, where its row said
+/// the rank that found it kept (under MPI, rank 0 and its host for every case).
+std::map<std::string, RanOn> earlier_ran_on(const std::filesystem::path& path);
 
 /// \brief Whether the outcome is that of a case kept from an earlier run (kept_message).
 bool kept_from_earlier_run(const CaseOutcome& outcome);
