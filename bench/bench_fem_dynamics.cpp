@@ -63,6 +63,9 @@ std::unique_ptr<Setup> make_setup(const std::string& wing_file, const std::strin
   g.spanwise = c.numerics.spanwise_panels;
   const uvlm::PlanformGrid grid = uvlm::make_planform_grid(s->wing.outline, g);
   fem::DynamicsOptions opt;
+  // The case's ρ∞, 0.9 where it leaves the key out: these benchmarks' recorded figures
+  // (docs/fem.md, "Cost") are 0.9's; a run's FEM takes 0.5 there since 5 Dec
+  // (app::kFemRhoInfinity), which moved the hover's sub-iterations by −3 %.
   opt.rho_infinity = c.numerics.rho_infinity;
   opt.linearised_geometric_force = c.structure.fem_linearised_geometric_terms;
   opt.refactor_rate = refactor_rate;
