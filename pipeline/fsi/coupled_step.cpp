@@ -223,7 +223,6 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
       // (StructureData::refine_after_stall; docs/fsi.md, "A stalled coupling, tried again").
       int retry = 0;
       for (; !converged && retry < kStallRetries && s.refine_after_stall(); ++retry) {
-        ++data.stall_retries;
         uvlm::release_leading_edge_sides(*data.lattice);  // the stalled iterates' sides and sums
         uvlm::sum_old_wake_anew(*data.lattice);
         predict(step > 0 ? &data.predicted_loads : nullptr, 1.0);
@@ -232,6 +231,7 @@ void coupled_step(const FsiModel& model, FsiData& data, double dt) {
                                 again, delta);
         k += again;
       }
+      if (retry > 0) ++data.stall_retries;  // a step, however often it was tried again
       data.last_iterations = k;
       data.last_change = delta;
       if (!converged)
