@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "mbd/angle_units.hpp"
+#include "pipeline/io/gravity_warning.hpp"
 #include "pipeline/io/kinematics_csv.hpp"
 #include "pipeline/io/open_cycle_warning.hpp"
 #include "pipeline/io/table_scatter_warning.hpp"
@@ -930,6 +931,9 @@ Case read_case(TomlTable root) {
   c.kinematics = read_kinematics(root.get_table("kinematics"), c.warnings);
   c.air = read_air(root);
   c.structure = read_structure(root);
+  if (const auto s = root.find_table("structure"); s && s->has("gravity"))
+    if (auto w = gravity_warning(c.structure.gravity, c.file, s->line_of("gravity")))
+      c.warnings.push_back(std::move(*w));
   c.numerics = read_numerics(root);
   default_far_wake_in_hover(root, c);
   if (c.structure.kind == Case::Structure::Kind::Fem) {
