@@ -10,21 +10,18 @@ std::vector<std::string> after_run_notes(const RunResults& results) {
   std::vector<std::string> notes;
   if (std::string deflection = large_deflection_note(results); !deflection.empty())
     notes.push_back(std::move(deflection));
+  // Each result's step is set with it (run_recorder.cpp).
   char text[160];
   if (shed_sheet_came_apart(results)) {
     std::snprintf(text, sizeof text, "shed sheet came apart: CL changed by %.3g in a step (into step %ld)",
                   results.number("largest_CL_jump"),
-                  results.has("largest_CL_jump_step")
-                      ? static_cast<long>(results.integer("largest_CL_jump_step"))
-                      : 0L);
+                  static_cast<long>(results.integer("largest_CL_jump_step")));
     notes.emplace_back(text);
   }
   if (tip_zigzagged(results)) {
     std::snprintf(text, sizeof text, "tip zigzags from step to step: %.2f deg (step %ld)",
                   results.number("largest_tip_zigzag_deg"),
-                  results.has("largest_tip_zigzag_step")
-                      ? static_cast<long>(results.integer("largest_tip_zigzag_step"))
-                      : 0L);
+                  static_cast<long>(results.integer("largest_tip_zigzag_step")));
     notes.emplace_back(text);
   }
   return notes;

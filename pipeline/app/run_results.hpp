@@ -358,10 +358,10 @@ inline constexpr std::array kRunReport = {
     ReportLine{
         "warning: the wing's tip zigzags from step to step, by up to {largest_tip_zigzag_deg} (its bend or "
         "twist turning back at two steps in a row, the largest at step {largest_tip_zigzag_step}; "
-        "history.csv "
-        "tip_bend_deg, tip_twist_deg): a motion at the step's rate, which the steps do not resolve and "
-        "the integrator pumps; the loads, the drive's power and the tip's motion from there on are not "
-        "the wing's. Lower numerics.rho_infinity (the FEM's default is 0.5, the chain's 0.9; 0 damps such a "
+        "history.csv tip_bend_deg, tip_twist_deg): a motion at the step's rate, which the steps do not "
+        "resolve and the integrator pumps; the loads, the drive's power and the tip's motion from there "
+        "on are not the wing's. Lower numerics.rho_infinity (the FEM's default is 0.5, the chain's 0.9; 0 "
+        "damps such a "
         "motion within a step), or take more steps_per_cycle (docs/fsi.md, \"A tip that zigzags from step "
         "to step\")",
         tip_zigzagged},

@@ -162,16 +162,12 @@ SweepReport run_sweep(const std::string& case_file, const SweepPlan& plan, const
       if (kept) {
         rows[i].done = true;
         std::string message = kept_message(*kept);
+        rows[i].outcome = CaseOutcome{"ok", std::move(message), world.rank(), host, std::move(*kept), 0.0};
         // Where it ran, as the earlier table gave its folder (else this rank, which found it kept).
-        const auto where = in_own_folder ? ran_on.find(rows[i].folder) : ran_on.end();
-        rows[i].outcome = where != ran_on.end() ? CaseOutcome{"ok",
-                                                              std::move(message),
-                                                              where->second.rank,
-                                                              where->second.host,
-                                                              std::move(*kept),
-                                                              0.0}
-                                                : CaseOutcome{"ok", std::move(message), world.rank(),
-                                                              host, std::move(*kept),   0.0};
+        if (const auto where = ran_on.find(rows[i].folder); in_own_folder && where != ran_on.end()) {
+          rows[i].outcome.rank = where->second.rank;
+          rows[i].outcome.host = where->second.host;
+        }
         ++report.kept;
       } else {
         todo.push_back(i);
