@@ -360,10 +360,9 @@ inline constexpr std::array kRunReport = {
         "twist turning back at two steps in a row, the largest at step {largest_tip_zigzag_step}; "
         "history.csv tip_bend_deg, tip_twist_deg): a motion at the step's rate, which the steps do not "
         "resolve and the integrator pumps; the loads, the drive's power and the tip's motion from there "
-        "on are not the wing's. Lower numerics.rho_infinity (the FEM's default is 0.5, the chain's 0.9; 0 "
-        "damps such a "
-        "motion within a step), or take more steps_per_cycle (docs/fsi.md, \"A tip that zigzags from step "
-        "to step\")",
+        "on are not the wing's. Lower numerics.rho_infinity (the FEM's default is 0.5, the chain's 0.9; "
+        "0 damps such a motion within a step), or take more steps_per_cycle (docs/fsi.md, \"A tip that "
+        "zigzags from step to step\")",
         tip_zigzagged},
     ReportLine{"in vacuum (air = \"none\"): no aerodynamic loads, no lift",
                [](const RunResults& r) { return !r.has("mean_power_W"); }},
