@@ -39,11 +39,17 @@ std::string more_bodies_advice(const reduction::ChainFemComparison& c) {
              : "too few bodies: try more --bodies";
 }
 
-std::string static_mismatch_warning(const reduction::ChainFemComparison& c, const std::string& report) {
+namespace {
+
+// The static rows a chain misses, each named with both values and its error ("" if none).
+std::string missed_static_rows(double measure_s, double bending_body_s,
+                               const reduction::StaticMatch& deflection,
+                               const reduction::StaticMatch& bending_rotation,
+                               const reduction::StaticMatch& twist) {
   std::string missed;
   char at_measure[48], at_body[64];
-  std::snprintf(at_measure, sizeof at_measure, " at s = %.2f mm", c.measure_s * 1e3);
-  std::snprintf(at_body, sizeof at_body, " (from s = %.2f mm)", c.bending_body_s * 1e3);
+  std::snprintf(at_measure, sizeof at_measure, " at s = %.2f mm", measure_s * 1e3);
+  std::snprintf(at_body, sizeof at_body, " (from s = %.2f mm)", bending_body_s * 1e3);
   struct Row {
     const char* name;
     const char* where;
@@ -52,16 +58,24 @@ std::string static_mismatch_warning(const reduction::ChainFemComparison& c, cons
   };
   // The bending row is the rotation conjugate to a moment spread over the chain's tip body,
   // on both sides; the others are read at the measuring body (docs/reduction.md).
-  for (const Row& r : {Row{"tip deflection under the tip force", at_measure, "m/N", &c.tip_deflection},
+  for (const Row& r : {Row{"tip deflection under the tip force", at_measure, "m/N", &deflection},
                        Row{"bending rotation of the tip body under a moment spread over it", at_body,
-                           "rad/(N m)", &c.tip_bending_rotation},
-                       Row{"twist under the tip torque", at_measure, "rad/(N m)", &c.tip_twist}}) {
+                           "rad/(N m)", &bending_rotation},
+                       Row{"twist under the tip torque", at_measure, "rad/(N m)", &twist}}) {
     if (!misses_fem_static(*r.m)) continue;
     char text[240];
     std::snprintf(text, sizeof text, "%s%s%s %+.1f %% (chain %.4g %s, FEM %.4g %s)", missed.empty() ? "" : "; ", r.name,
                   r.where, 100.0 * r.m->relative_error, r.m->chain, r.unit, r.m->fem, r.unit);
     missed += text;
   }
+  return missed;
+}
+
+}  // namespace
+
+std::string static_mismatch_warning(const reduction::ChainFemComparison& c, const std::string& report) {
+  const std::string missed = missed_static_rows(c.measure_s, c.bending_body_s, c.tip_deflection,
+                                                c.tip_bending_rotation, c.tip_twist);
   if (missed.empty()) return "";
   return "the chain's static response differs from the FEM's under the same load: " + missed +
          ". The chain takes a load on a body as a wrench at its joints; the FEM answers to where on the body "
@@ -72,6 +86,28 @@ std::string static_mismatch_warning(const reduction::ChainFemComparison& c, cons
          "\"Measured "
          "limitation\"); see " +
          report;
+}
+
+std::string saved_chain_static_warning(const FsiSetup& setup) {
+  if (!setup.chain_fem || !setup.chain_fem->statics) return "";
+  const io::ChainFemRecord::StaticRows& r = *setup.chain_fem->statics;
+  // The rows of the chain as reduced: a spring scale other than 1 is the user's choice of
+  // another wing, which the modes' warning names.
+  const std::string missed = missed_static_rows(r.measure_s, r.bending_body_s, r.tip_deflection,
+                                                r.tip_bending_rotation, r.tip_twist);
+  if (missed.empty()) return "";
+  const std::string wing = setup.chain_fem->wing_file.empty() ? "its wing" : setup.chain_fem->wing_file;
+  const std::string subject =
+      setup.chain_file.empty() ? "the chain reduced in process" : "the chain file " + setup.chain_file;
+  const std::string source = setup.chain_file.empty() ? "as 'flapsim reduce' warns"
+                                                      : "as 'flapsim reduce' found when it made the chain";
+  return subject + " responds to a static load otherwise than the FEM of " + wing + " (" + source +
+         "): " + missed +
+         ". The run inherits the difference where the air loads the wing as these loads do: more bodies, or "
+         "for a "
+         "wing that is not one beam (film beyond a rod) the wing's own FEM as the structure (structure.kind "
+         "= "
+         "\"fem\"; docs/reduction.md, \"Measured limitation\"; docs/fsi.md)";
 }
 
 std::string saved_chain_fem_warning(const FsiSetup& setup) {

@@ -58,4 +58,10 @@ std::string static_mismatch_warning(const reduction::ChainFemComparison& c, cons
 /// on them.
 std::string saved_chain_fem_warning(const FsiSetup& setup);
 
+/// \brief "" or one line for a run whose chain misses a static row of reduce's comparison
+/// with the FEM by more than kChainFemStaticMismatch (static_mismatch_warning's rows): a chain
+/// file whose [fem_comparison] records them, or a wing reduced in process. The rows are the
+/// chain's as reduced, whatever --spring-scale (saved_chain_fem_warning names the scale).
+std::string saved_chain_static_warning(const FsiSetup& setup);
+
 }  // namespace flapsim::app

@@ -64,4 +64,17 @@ std::string frames_size_warning(const io::Case& c, int fem_dofs, std::optional<d
   return w;
 }
 
+std::string frames_interval_warning(const io::Case& c) {
+  const long steps = c.numerics.total_steps();
+  const int every = c.output.vtk_every;
+  if (every <= 0 || every <= steps) return "";
+  return "[output] vtk_every = " + std::to_string(every) + " is more than the run's " +
+         std::to_string(steps) +
+         " steps: the ParaView series holds step 0 alone (the wing at rest, without load or wake), and "
+         "run.pvsm "
+         "opens on it; a frame every " +
+         std::to_string(steps) +
+         " steps or fewer (flapsim run --vtk-every N), or 0 for none (docs/output_files.md)";
+}
+
 }  // namespace flapsim::app

@@ -43,4 +43,8 @@ double frames_bytes(const io::Case& c, int vtk_every, int fem_dofs);
 /// space, under half of it).
 std::string frames_size_warning(const io::Case& c, int fem_dofs, std::optional<double> free_bytes);
 
+/// \brief "" or the warning for an output.vtk_every beyond the run's steps: the series then
+/// holds step 0 alone (the wing at rest, no load, no wake), which run.pvsm opens on.
+std::string frames_interval_warning(const io::Case& c);
+
 }  // namespace flapsim::app

@@ -360,6 +360,7 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
       r.set("settled_CL_standard_error", cl.standard_error);
       r.set("cycle_CL_deviation", cl.deviation);
       r.set("cycle_CL_lag_correlation", cl.lag_one_correlation);
+      r.set("settled_CL_drift", cl.drift);
     }
   }
 

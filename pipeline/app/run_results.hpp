@@ -167,7 +167,13 @@ inline constexpr auto kRunResults = [] {
       ResultDefinition{
           "cycle_CL_lag_correlation", "", K::number, "%.3f", "",
           "correlation of each settled cycle's mean CL with the next's: near 0 when the cycles are "
-          "independent, and the standard error holds (in air)"},
+          "independent; it does not see cycles still settling (settled_CL_drift does) (in air)"},
+      ResultDefinition{
+          "settled_CL_drift", "", K::number, "%.4f", "",
+          "change of the settled cycles' mean CL from the first to the last along their least-squares line: "
+          "independent cycles give it about √12 √((n-1)/(n+1)) settled_CL_standard_error rms (2.8 at 5 "
+          "cycles, "
+          "3.4 at 60); several times that says the cycles are still settling (in air)"},
       ResultDefinition{"mean_drive_power_W", "W", K::number, "%.6g", "drive power",
                        "cycle-mean power the base supplies to the wing, ω·M + v·F at the pivot (inertial "
                        "plus aerodynamic), last cycle"},

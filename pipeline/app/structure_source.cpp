@@ -77,7 +77,7 @@ StructureChoice choose_structure(const io::Case& c, const std::string& chain_ove
         const fem::WingModes modes = fem::wing_modes(fem, kComparedFemModes);
         const reduction::ChainFemComparison cmp =
             reduction::compare_chain_with_fem(analysis, lumped, modes.modes, modes.kinds);
-        s.chain_fem = io::ChainFemRecord{c.wing_file, cmp.bending, cmp.torsion};
+        s.chain_fem = io::chain_fem_record(c.wing_file, cmp);
       } catch (const std::exception&) {
         s.chain_fem.reset();
       }

@@ -34,6 +34,14 @@ CycleStatistics cycle_statistics(const std::vector<double>& t, const std::vector
   s.deviation = std::sqrt(squares / (n - 1));
   s.standard_error = s.deviation / std::sqrt(static_cast<double>(n));
   s.lag_one_correlation = squares > 0.0 ? products / squares : 0.0;
+  // Least squares of cycle_means on i = 0 … n − 1 (mean index ī = (n − 1)/2).
+  const double i_mean = 0.5 * (n - 1);
+  double sxy = 0.0, sxx = 0.0;
+  for (int i = 0; i < n; ++i) {
+    sxy += (i - i_mean) * (s.cycle_means[i] - s.mean);
+    sxx += (i - i_mean) * (i - i_mean);
+  }
+  s.drift = sxy / sxx * (n - 1);
   return s;
 }
 

@@ -16,6 +16,9 @@ void ensure_directory(const fs::path& dir) {
   if (dir.empty()) return;
   std::error_code ec;
   if (fs::is_directory(dir, ec)) return;
+  // A file of that name (an -o that names a file): said as such, not as the system's
+  // "Not a directory" of create_directories.
+  if (fs::exists(dir, ec)) throw OutputError(dir, "exists and is not a directory");
   fs::create_directories(dir, ec);
   if (ec) throw OutputError(dir, "cannot create directory: " + ec.message());
   if (!fs::is_directory(dir, ec)) throw OutputError(dir, "exists and is not a directory");

@@ -60,10 +60,22 @@ std::string chain_fingerprint(const mbd::ChainModel& chain) {
   return buf;
 }
 
-// [fem_comparison]: each kind's three numbers, all or none.
+// The static rows' keys in [fem_comparison] (chain, FEM per row; SI per unit load).
+constexpr const char* kMeasureKey = "measure_s_m";
+constexpr const char* kBendingBodyKey = "bending_body_s_m";
+constexpr const char* kStaticKeys[6] = {"tip_deflection_chain_m_per_n",
+                                        "tip_deflection_fem_m_per_n",
+                                        "tip_bending_rotation_chain_rad_per_n_m",
+                                        "tip_bending_rotation_fem_rad_per_n_m",
+                                        "tip_twist_chain_rad_per_n_m",
+                                        "tip_twist_fem_rad_per_n_m"};
+
+// [fem_comparison]: each kind's three numbers, all or none; the static rows' eight, all or none.
 ChainFemRecord parse_fem_comparison(const TomlTable& t) {
-  t.expect_only({"wing", "chain_fingerprint", "bending_chain_hz", "bending_fem_hz", "bending_mac", "torsion_chain_hz", "torsion_fem_hz",
-                 "torsion_mac"});
+  t.expect_only({"wing", "chain_fingerprint", "bending_chain_hz", "bending_fem_hz", "bending_mac",
+                 "torsion_chain_hz", "torsion_fem_hz", "torsion_mac", kMeasureKey, kBendingBodyKey,
+                 kStaticKeys[0], kStaticKeys[1], kStaticKeys[2], kStaticKeys[3], kStaticKeys[4],
+                 kStaticKeys[5]});
   ChainFemRecord r;
   r.wing_file = t.get_string("wing", "");
   for (auto [kind, m] : {std::pair{std::string("bending"), &r.bending}, std::pair{std::string("torsion"), &r.torsion}}) {
@@ -77,6 +89,27 @@ ChainFemRecord parse_fem_comparison(const TomlTable& t) {
     m->fem_hz = t.get_double(fem_key, Bounds::positive());
     m->mac = t.get_double(mac_key, Bounds::closed(0.0, 1.0));
     m->relative_error = reduction::relative_error(m->chain_hz, m->fem_hz);
+  }
+  bool any_static = t.has(kMeasureKey) || t.has(kBendingBodyKey);
+  for (const char* k : kStaticKeys) any_static = any_static || t.has(k);
+  if (any_static) {
+    for (const char* k : {kMeasureKey, kBendingBodyKey, kStaticKeys[0], kStaticKeys[1], kStaticKeys[2],
+                          kStaticKeys[3], kStaticKeys[4], kStaticKeys[5]})
+      if (!t.has(k))
+        t.fail(
+            k,
+            "missing: the static rows' eight keys (measure_s_m, bending_body_s_m and the chain's and FEM's "
+            "tip_deflection, tip_bending_rotation and tip_twist) go together");
+    ChainFemRecord::StaticRows rows;
+    rows.measure_s = t.get_double(kMeasureKey, Bounds::any());
+    rows.bending_body_s = t.get_double(kBendingBodyKey, Bounds::any());
+    reduction::StaticMatch* matches[3] = {&rows.tip_deflection, &rows.tip_bending_rotation, &rows.tip_twist};
+    for (int k = 0; k < 3; ++k) {
+      matches[k]->chain = t.get_double(kStaticKeys[2 * k], Bounds::any());
+      matches[k]->fem = t.get_double(kStaticKeys[2 * k + 1], Bounds::any());
+      matches[k]->relative_error = reduction::relative_error(matches[k]->chain, matches[k]->fem);
+    }
+    r.statics = rows;
   }
   return r;
 }
@@ -253,6 +286,16 @@ std::string mat3(const Eigen::Matrix3d& m) {
 
 }  // namespace
 
+ChainFemRecord chain_fem_record(const std::string& wing_file, const reduction::ChainFemComparison& c) {
+  ChainFemRecord r{wing_file, c.bending, c.torsion, ChainFemRecord::StaticRows{}};
+  r.statics->measure_s = c.measure_s;
+  r.statics->bending_body_s = c.bending_body_s;
+  r.statics->tip_deflection = c.tip_deflection;
+  r.statics->tip_bending_rotation = c.tip_bending_rotation;
+  r.statics->tip_twist = c.tip_twist;
+  return r;
+}
+
 mbd::ChainModel read_chain_file(const std::string& path, std::optional<ChainFemRecord>* fem) {
   return parse_chain(wings::parse_toml_file(path), fem);
 }
@@ -301,6 +344,18 @@ std::string format_chain_file(const mbd::ChainModel& chain, const ChainFemRecord
       s << kind << "_chain_hz = " << format_number(m->chain_hz) << "   # first " << kind << " mode [Hz]\n"
         << kind << "_fem_hz = " << format_number(m->fem_hz) << "\n"
         << kind << "_mac = " << format_number(m->mac) << "   # modal assurance criterion of the two shapes\n";
+    }
+    if (fem->statics) {
+      const ChainFemRecord::StaticRows& r = *fem->statics;
+      s << "# The static rows of report.md: chain and FEM per unit load (docs/reduction.md)\n"
+        << kMeasureKey << " = " << format_number(r.measure_s)
+        << "   # where tip deflection and twist are read [m]\n"
+        << kBendingBodyKey << " = " << format_number(r.bending_body_s)
+        << "   # where the tip body starts [m]\n";
+      const reduction::StaticMatch* matches[3] = {&r.tip_deflection, &r.tip_bending_rotation, &r.tip_twist};
+      for (int k = 0; k < 3; ++k)
+        s << kStaticKeys[2 * k] << " = " << format_number(matches[k]->chain) << "\n"
+          << kStaticKeys[2 * k + 1] << " = " << format_number(matches[k]->fem) << "\n";
     }
   }
   for (int k = 0; k < chain.num_bodies(); ++k) {

@@ -34,6 +34,14 @@
 ///   torsion_chain_hz = 112.0          # the same for the first torsion mode
 ///   torsion_fem_hz = 131.2
 ///   torsion_mac = 0.93
+///   measure_s_m = 0.0435              # the static rows (all eight or none): where the deflection
+///   bending_body_s_m = 0.0435         # and twist are read, and where the tip body starts [m];
+///   tip_deflection_chain_m_per_n = 1.2   # per unit tip force [m/N], per unit moment
+///   tip_deflection_fem_m_per_n = 1.2     # [rad/(N m)], chain and FEM
+///   tip_bending_rotation_chain_rad_per_n_m = 2.3
+///   tip_bending_rotation_fem_rad_per_n_m = 2.3
+///   tip_twist_chain_rad_per_n_m = 40.0
+///   tip_twist_fem_rad_per_n_m = 41.0
 /// \endcode
 /// With a rigid root the welded bodies' joints are optional and ignored. With
 /// joint_stiffness the joints carry no springs (only dampers and rest angles). Masses, inertias
@@ -57,7 +65,20 @@ namespace flapsim::io {
 struct ChainFemRecord {
   std::string wing_file;                  ///< the wing reduced, as reduce was given it
   reduction::ModeMatch bending, torsion;  ///< chain_hz, fem_hz, relative_error, mac
+  /// The static rows of reduce's report (reduction::ChainFemComparison: tip deflection, the
+  /// tip body's bending rotation and twist per unit load, chain and FEM), so that run and
+  /// check repeat reduce's static warning too; absent in files written before 6 Dec.
+  struct StaticRows {
+    double measure_s = 0.0;       ///< axis position of the deflection and twist rows [m]
+    double bending_body_s = 0.0;  ///< inboard joint of the tip body [m]
+    reduction::StaticMatch tip_deflection, tip_bending_rotation, tip_twist;
+  };
+  std::optional<StaticRows> statics;
 };
+
+/// \brief What a chain file keeps of reduce's comparison \p c of the chain with the FEM of
+/// \p wing_file: the first modes and the static rows.
+ChainFemRecord chain_fem_record(const std::string& wing_file, const reduction::ChainFemComparison& c);
 
 /// Reads and checks a chain file; with \p fem, also its [fem_comparison] (nullopt when the
 /// file has none: a chain written by hand or by an earlier flapsim).

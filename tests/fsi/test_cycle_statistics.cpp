@@ -50,6 +50,25 @@ TEST(CycleStatistics, MeanDeviationAndStandardErrorOfTheCyclesFromTheSecondOn) {
   EXPECT_NEAR(c.deviation, std::sqrt(10.0 / 3.0), 1e-12);
   EXPECT_NEAR(c.standard_error, std::sqrt(10.0 / 3.0) / 2.0, 1e-12);
   EXPECT_NEAR(c.lag_one_correlation, 0.3, 1e-12);
+  // Drift: i − ī = −1.5, −0.5, 0.5, 1.5; Σ(i − ī)(m − 4) = 3 + 0.5 + 0.5 + 3 = 7, Σ(i − ī)² = 5;
+  // slope 1.4 a cycle, × 3 cycles = 4.2.
+  EXPECT_NEAR(c.drift, 4.2, 1e-12);
+}
+
+// A run still settling: its cycle means approach their limit (a user's 12-cycle film wing,
+// interrupted after 6: 3.23271, 3.20590, 3.20357, 3.19799, 3.19657 over cycles 2–6). The
+// lag-one correlation reads 0.1216, as for independent cycles; the drift, by hand from the
+// least-squares line (slope −0.008019 a cycle) over 4 cycles, is −0.032076: 4.9 standard
+// errors (0.006570), where 5 independent cycles drift by √12 √(4/6) = 2.83 rms.
+TEST(CycleStatistics, CyclesStillSettlingDriftByManyStandardErrors) {
+  const double period = 0.04;
+  const KnownCycleSeries s =
+      series_with_cycle_means({100.0, 3.23271, 3.20590, 3.20357, 3.19799, 3.19657}, period, 48);
+  const auto c = cycle_statistics(s.t, s.x, period, s.t.back(), 2);
+  EXPECT_NEAR(c.lag_one_correlation, 0.121576, 1e-6);
+  EXPECT_NEAR(c.drift, -0.032076, 1e-6);
+  EXPECT_NEAR(c.standard_error, 0.0065702, 1e-6);
+  EXPECT_GT(std::abs(c.drift), 1.7 * std::sqrt(12.0 * 4.0 / 6.0) * c.standard_error);
 }
 
 TEST(CycleStatistics, AnUnfinishedLastCycleIsLeftOutAndTooFewCyclesAreRefused) {

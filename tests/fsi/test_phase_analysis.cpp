@@ -43,6 +43,30 @@ TEST(FsiPhaseAnalysis, RotationPhaseOfEq8IsDeltaPsi) {
   }
 }
 
+// A mean rotation other than 90° (80°, amplitude 45°) moves the two α = 90° crossings apart,
+// by ∓asin(10/45)/2π = ∓0.0357 of a period about δψ; their mean is δψ. The crossing 0.0257
+// of a period before the window's end has its reversal at the last sample, where no
+// extremum can be seen. Before: that crossing was dropped and the phase read the other
+// half-stroke's δψ + 0.0357 (0.0457 for δψ = 0.01; a user's run, against
+// tools/rotation_phase.py's 0.0100).
+TEST(FsiPhaseAnalysis, BothHalfStrokesCountWhenAReversalEndsTheSeries) {
+  for (double dpsi : {0.01, -0.05, 0.1}) {
+    auto k = eq8(dpsi);
+    k.rotation = mbd::PeriodicSignal::harmonic(80.0 * kDegToRad, {}, {-45.0 * kDegToRad});
+    const double T = 1.0 / k.frequency;
+    std::vector<double> t, phi, alpha;
+    for (int n = 0; n <= 150; ++n) {
+      t.push_back(n * T / 50);
+      const auto a = k.angles(t.back());
+      phi.push_back(a.sweep.value);
+      alpha.push_back(a.rotation.value);
+    }
+    const auto p = fsi::rotation_phase(t, phi, alpha, T, 2 * T, 3 * T);
+    ASSERT_TRUE(p.has_value());
+    EXPECT_NEAR(*p, dpsi, 5e-4) << "dpsi " << dpsi;
+  }
+}
+
 // A rotation phase of ½ (or near it): each crossing finds its reversal half a period before
 // or after, by the samples' round-off. The phases are circular: ½ and −½ are the same timing,
 // and their mean is ±½. Before: a linear mean of −½ and ½ read 0 (the base at −0.5, the tip

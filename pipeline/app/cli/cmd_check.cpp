@@ -87,6 +87,8 @@ std::string check_case_like_run(const io::Case& c, const std::string& chain_file
   // The folder of a run is not known here (run -o): the size alone is warned.
   if (const std::string w = app::frames_size_warning(c, fem_dofs, std::nullopt); !w.empty())
     std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
+  if (const std::string w = app::frames_interval_warning(c); !w.empty())
+    std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
   text += reynolds;
   text += "  " + app::describe(estimate) + "\n";
   if (wing) {

@@ -93,7 +93,7 @@ void run_reduce(const ReduceOptions& o) {
       "reduction", [&] { return reduction::compare_chain_with_fem(analysis, lc, modes.modes, modes.kinds); });
   monitor.stage("writing the outputs");
   // The chain file keeps the first modes against the FEM: run and check of it repeat a miss.
-  const io::ChainFemRecord record{o.wing_file, cmp.bending, cmp.torsion};
+  const io::ChainFemRecord record = io::chain_fem_record(o.wing_file, cmp);
   io::write_chain_file(dir / "chain.toml", lc.chain, &record);
   io::write_reduction_vtk(dir, beam, lc);
   io::write_text_atomically(dir / "report.md", io::reduction_report(o.wing_file, beam, lc, cmp));

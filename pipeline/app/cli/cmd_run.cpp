@@ -87,6 +87,10 @@ void run_command(const RunArgs& a) {
       std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
       setup_notes.push_back(app::warning_headline(w));
     }
+    if (const std::string w = app::frames_interval_warning(sized); !w.empty()) {
+      std::fprintf(stderr, "flapsim: warning: %s\n", w.c_str());
+      setup_notes.push_back(app::warning_headline(w));
+    }
     claim.claim(a.force);
   };
   // summary.json's "warnings": the files' and the setup's, as a sweep's row gives them.
@@ -113,6 +117,13 @@ void run_command(const RunArgs& a) {
     for (const char* f : {"history.csv", "summary.json", "span_loads.csv", "wing.pvd", "wake.pvd",
                           "chain.pvd", "fem.pvd", "run.pvsm", "tip_path.vtp"})
       if (std::filesystem::exists(options.output_dir / f)) written += (written.empty() ? "" : ", ") + std::string(f);
+    // The markers' paths (marker_<k>_path.vtp, k from 1), one a marker the case declares.
+    const std::size_t markers =
+        std::filesystem::exists(options.output_dir / "marker_1_path.vtp") ? c.markers.size() : 0;
+    if (markers == 1)
+      written += ", marker_1_path.vtp";
+    else if (markers > 1)
+      written += ", marker_1_path.vtp ... marker_" + std::to_string(markers) + "_path.vtp";
     std::printf("outputs in %s (%s)\n", options.output_dir.string().c_str(), written.c_str());
   }
 }
