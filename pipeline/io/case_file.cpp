@@ -19,6 +19,7 @@
 #include "pipeline/io/gravity_warning.hpp"
 #include "pipeline/io/kinematics_csv.hpp"
 #include "pipeline/io/open_cycle_warning.hpp"
+#include "pipeline/io/recorded_frequency_warning.hpp"
 #include "pipeline/io/table_scatter_warning.hpp"
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/path_from_file_hint.hpp"
@@ -376,6 +377,8 @@ mbd::PeriodicSignal read_table_signal(const TomlTable& s, std::string_view value
   std::vector<double> phase, values;
   std::vector<int> file_lines;  // a CSV file's row lines (kinematics_csv.hpp)
   std::string file_path;
+  bool from_times = false;                        // a CSV's first column is a time
+  const double case_frequency_hz = frequency_hz;  // [Hz]
   const std::string where = from_file ? "file" : "phase";
   if (from_file) {
     // A measured wingbeat's column of a CSV file (pipeline/io/kinematics_csv.hpp).
@@ -388,6 +391,7 @@ mbd::PeriodicSignal read_table_signal(const TomlTable& s, std::string_view value
     file_lines = std::move(table.lines);
     file_path = path;
     // A table of times is one wingbeat by construction: no guess at seconds below.
+    from_times = table.from_times;
     if (table.from_times) frequency_hz = 0.0;
   } else {
     s.expect_only({"phase", values_key, "harmonics"});
@@ -436,6 +440,10 @@ mbd::PeriodicSignal read_table_signal(const TomlTable& s, std::string_view value
   // A table that does not close is warned as such; its closing step would otherwise be taken
   // for the points' scatter, and the fit the scatter warning offers does not close it either.
   if (warnings) {
+    if (from_times && !s.has("harmonics"))
+      if (auto w = recorded_frequency_warning(phase, values, case_frequency_hz, s.get_string("column"),
+                                              file_path, file_lines.back(), s.key_path("file")))
+        warnings->push_back(std::move(*w));
     if (auto w = open_cycle_warning(phase, values, std::string(values_key), s.file(), s.line_of(values_where),
                                     s.key_path(values_where)))
       warnings->push_back(std::move(*w));

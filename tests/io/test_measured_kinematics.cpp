@@ -340,3 +340,41 @@ TEST(MeasuredKinematics, ASemicolonSeparatedCsvIsNamedAndQuotedNamesAreRead) {
   EXPECT_NEAR(c.kinematics.sweep.at_phase(0.25).value, 0.0, 1e-6);  // the spline through 50 cos 2πs at a knot
   EXPECT_NEAR(c.kinematics.sweep.at_phase(0.0).value, 50.0 * flapsim::kDegToRad, 1e-6);
 }
+
+// A wingbeat recorded at another frequency than the case's: 40 rows of 50 cos 2πs over a
+// 40 ms wingbeat (25 Hz) and its closing row at 40 ms, flown at the case's 20 Hz, puts the
+// closing row at phase 0.8: an ordinary point, and the wing would hold 50° over the last
+// 20 % of the cycle. Before: flown without a word (a user's 28 Hz record at 26.1 Hz lifted
+// 6.7 % more than the harmonic wingbeat). Now warned at the CSV's last row, naming the
+// frequency the rows imply; the same record at 25 Hz, and a row that does not repeat the
+// first's value, are not warned.
+TEST(MeasuredKinematics, ACsvRecordedAtAnotherFrequencyIsWarned) {
+  std::string text = "t_ms,phi\n";
+  for (int i = 0; i <= 40; ++i) {
+    char row[64];
+    std::snprintf(row, sizeof row, "%d,%.9f\n", i, 50.0 * std::cos(2.0 * std::numbers::pi * i / 40.0));
+    text += row;
+  }
+  const TemporaryCsv csv("recorded_25hz.csv", text);
+  const flapsim::io::Case c = case_from_text(csv_sweep_case(csv.path, "phi"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(c.warnings[0].file, csv.path);
+  EXPECT_EQ(c.warnings[0].line, 42);  // the header, then rows 0…40
+  EXPECT_EQ(c.warnings[0].key, "kinematics.sweep.file");
+  EXPECT_NE(c.warnings[0].message.find(
+                "the last row repeats the first row's 'phi' (50) as a wingbeat's closing row "
+                "does, but lies at phase 0.8000 of the case's 20 Hz wingbeat: the rows look "
+                "like one wingbeat of 40 ms (25 Hz)"),
+            std::string::npos)
+      << c.warnings[0].message;
+  EXPECT_NE(c.warnings[0].message.find("over the last 20.0 % of the cycle; give frequency_hz = 25"),
+            std::string::npos)
+      << c.warnings[0].message;
+  // At the record's own 25 Hz the row closes the wingbeat and is dropped: nothing said.
+  std::string at_25 = csv_sweep_case(csv.path, "phi");
+  at_25.replace(at_25.find("frequency_hz = 20.0"), 19, "frequency_hz = 25.0");
+  EXPECT_TRUE(case_from_text(at_25).warnings.empty());
+  // The rows without the closing one (the last at 39 ms, phase 0.78, 49.4°): not warned.
+  const TemporaryCsv open("recorded_open.csv", text.substr(0, text.rfind("40,")));
+  EXPECT_TRUE(case_from_text(csv_sweep_case(open.path, "phi")).warnings.empty());
+}
