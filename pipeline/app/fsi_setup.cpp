@@ -309,9 +309,12 @@ FsiSetup build_fsi_setup(const Case& c, const SetupOptions& options) {
       ref.drag_direction = c.air.freestream / ref.free_stream_speed;
       const Eigen::Vector3d up = Eigen::Vector3d::UnitZ() - ref.drag_direction.z() * ref.drag_direction;
       if (up.norm() < 1e-9)
-        throw InputError(c.file, c.line_of("air.freestream"), "air.freestream",
-                         "a vertical free stream leaves lift and drag undefined (lift is normal to it, "
-                         "in the vertical plane)");
+        throw InputError(
+            c.file, c.line_of("air.freestream"), "air.freestream",
+            "a vertical free stream leaves lift and drag undefined (lift is normal to it, "
+            "in the vertical plane through it); for a climb or a descent give the stream a "
+            "horizontal part and read the vertical force, summary.json's mean_Fz_N (docs/case_file.md, "
+            "[air])");
       ref.lift_direction = up.normalized();
     } else {
       ref.kind = LiftReference::Kind::Flapping;

@@ -27,9 +27,9 @@ std::string line_number(double x) {
 
 }  // namespace
 
-std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angles& a) {
+std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angles& a, double frequency_hz) {
   const double dphi = a.sweep.rate;
-  if (std::abs(dphi) < 1e-9) return std::nullopt;
+  if (std::abs(dphi) < 1e-9 + 1e-6 * 2.0 * std::numbers::pi * std::abs(frequency_hz)) return std::nullopt;
   return dphi < 0.0 ? a.rotation.value : std::numbers::pi - a.rotation.value;
 }
 
@@ -85,7 +85,7 @@ std::string describe_case(const Case& c, std::optional<double> stream_radius) {
            : "    phase f*t   sweep phi  deviation theta  rotation alpha   AoA    [deg]\n";
   for (double phase : {0.0, 0.25, 0.5, 0.75}) {
     const auto a = k.angles(phase / k.frequency);
-    const auto aoa = geometric_angle_of_attack(a);
+    const auto aoa = geometric_angle_of_attack(a, k.frequency);
     char aoa_text[32];
     if (aoa)
       std::snprintf(aoa_text, sizeof aoa_text, "%7.2f", *aoa * kRadToDeg);

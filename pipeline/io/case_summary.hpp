@@ -13,8 +13,11 @@ namespace flapsim::io {
 
 /// Geometric angle of attack [rad] in the stroke plane, deviation ignored: α on the
 /// downstroke (φ̇ < 0), π − α on the upstroke (φ̇ > 0); nullopt at stroke reversal
-/// (|φ̇| below 1e-9 rad/s), where the wing does not translate.
-std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angles& angles);
+/// (|φ̇| below 1e-9 rad/s plus a millionth of 2π f, the rate of a 1 rad sweep at the
+/// wingbeat's frequency f [Hz]: a measured wingbeat's spline stops at its reversal to
+/// round-off, −2.4e-9 rad/s at 26.1 Hz), where the wing does not translate.
+std::optional<double> geometric_angle_of_attack(const mbd::WingKinematics::Angles& angles,
+                                                double frequency_hz = 0.0);
 
 /// The angle of attack of the wing's span axis at a radius r [m] from the pivot in the air
 /// that moves at `freestream` [m/s] (ground frame), at time t [s]: the air's velocity

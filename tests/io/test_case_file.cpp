@@ -80,6 +80,15 @@ TEST(CaseFile, HoverCaseIsEquation8) {
   EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.25 / f)), 45.0 * kDegToRad, 1e-12);
   EXPECT_NEAR(*p::geometric_angle_of_attack(c.kinematics.angles(0.75 / f)), 45.0 * kDegToRad, 1e-12);
   EXPECT_FALSE(p::geometric_angle_of_attack(c.kinematics.angles(0.0)));  // stroke reversal
+  // A measured wingbeat's spline stops at its reversal to round-off (a user's CSV of eq. 8:
+  // φ̇ = −2.4e-9 rad/s at phase 0, which read "downstroke", 90°): at the wingbeat's frequency
+  // a millionth of a 1 rad sweep's rate (1.6e-4 rad/s at 26.1 Hz) is still a reversal; the
+  // mid-stroke rate, 2π f 50° = 143 rad/s, is not.
+  flapsim::mbd::WingKinematics::Angles at_rest = c.kinematics.angles(0.0);
+  at_rest.sweep.rate = -2.4e-9;
+  EXPECT_TRUE(p::geometric_angle_of_attack(at_rest).has_value());  // without f: the absolute 1e-9 rad/s
+  EXPECT_FALSE(p::geometric_angle_of_attack(at_rest, f).has_value());
+  EXPECT_TRUE(p::geometric_angle_of_attack(c.kinematics.angles(0.25 / f), f).has_value());
 }
 
 TEST(CaseFile, DefaultsWhenSectionsAreOmitted) {
