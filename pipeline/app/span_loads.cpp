@@ -1,5 +1,6 @@
 #include "pipeline/app/span_loads.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "pipeline/io/csv_writer.hpp"
@@ -36,7 +37,10 @@ void write_span_loads(const std::filesystem::path& path, const std::vector<SpanS
     const SpanStrip& s = strips[j];
     const double width = s.y_outer - s.y_inner;
     rows.push_back({static_cast<double>(j + 1), s.y_inner, s.y_outer, s.chord, mean_lift[j],
-                    width > 0.0 ? mean_lift[j] / width : 0.0, total != 0.0 ? mean_lift[j] / total : 0.0});
+                    width > 0.0 ? mean_lift[j] / width : 0.0,
+                    // Of the sum's size, so that a strip's share has its lift's sign also where
+                    // the wing's net lift is down (the shares then add up to −1).
+                    total != 0.0 ? mean_lift[j] / std::abs(total) : 0.0});
   }
   io::write_csv(
       path, {"strip", "y_inner_m", "y_outer_m", "chord_m", "mean_lift_N", "lift_per_span_N_m", "lift_share"},

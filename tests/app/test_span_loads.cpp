@@ -18,6 +18,7 @@
 
 #include "common/run_flapsim.hpp"
 #include "common/scratch_dir.hpp"
+#include "pipeline/app/span_loads.hpp"
 #include "sweep_test_helpers.hpp"
 
 namespace span_loads_test {
@@ -196,6 +197,27 @@ TEST(SpanLoads, AFlappingWingsStripsAddUpToItsMeanLiftAndARunInVacuumWritesNone)
                                        " --force"),
             0);
   EXPECT_FALSE(fs::exists(out / "span_loads.csv"));
+}
+
+// A strip's share has its lift's sign whatever the net lift: strips of −1, +3, −4 mN (net
+// −2 mN, a wing pushed down) share −0.5, +1.5, −2 (adding up to −1). Before: of the signed sum,
+// +0.5, −1.5, +2, the strip that lifts read as pushing down (a user's failed run, 6 Dec).
+TEST(SpanLoads, ShareHasTheStripsSignWhereTheNetLiftIsDown) {
+  ScratchDir dir("span_loads_down");
+  const std::vector<flapsim::app::SpanStrip> strips = {
+      {0.0, 0.01, 0.01}, {0.01, 0.02, 0.01}, {0.02, 0.03, 0.01}};
+  flapsim::app::write_span_loads(dir / "span_loads.csv", strips, {-1e-3, 3e-3, -4e-3});
+  std::string header;
+  const auto rows = read_span_loads(dir / "span_loads.csv", &header);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_NEAR(rows[0].share, -0.5, 1e-12);
+  EXPECT_NEAR(rows[1].share, 1.5, 1e-12);
+  EXPECT_NEAR(rows[2].share, -2.0, 1e-12);
+  // A net lift up: the shares of the sum, adding up to 1 (+1, −3, +4 mN over 2 mN: 0.5, −1.5, 2).
+  flapsim::app::write_span_loads(dir / "up.csv", strips, {1e-3, -3e-3, 4e-3});
+  const auto up = read_span_loads(dir / "up.csv", &header);
+  EXPECT_NEAR(up[0].share + up[1].share + up[2].share, 1.0, 1e-12);
+  EXPECT_NEAR(up[1].share, -1.5, 1e-12);
 }
 
 }  // namespace span_loads_test
