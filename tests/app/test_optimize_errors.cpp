@@ -137,6 +137,20 @@ TEST(OptimizeErrors, ASearchWhoseRunsAllFailSaysSoNotThatAConstraintFailed) {
   EXPECT_NE(report.find("No evaluated point completed its run"), std::string::npos) << report;
   EXPECT_EQ(report.find("Relax the constraint"), std::string::npos) << report;
   EXPECT_FALSE(fs::exists(out / "optimum.toml"));
+  // A failed run has no result: its row's numbers are nan, as a sweep's (its summary.json's
+  // partial means of the steps before it stopped are not one), the report's objective "—",
+  // the progress line's "none". Before, a failed evaluation's partial mean lift stood in all
+  // three and sorted above a search's optimum.
+  const auto table = test::read_sweep_table((out / "evaluations.csv").string());
+  ASSERT_TRUE(table.rectangular);
+  ASSERT_FALSE(table.rows.empty());
+  for (const auto& row : table.rows) {
+    EXPECT_EQ(row.at("status"), "failed");
+    EXPECT_EQ(row.at("mean_lift_N"), "nan");
+    EXPECT_NE(row.at("steps"), "nan");  // how far it got stays
+  }
+  EXPECT_NE(report.find("| 26.1 | — | failed"), std::string::npos) << report;
+  EXPECT_NE(outcome.err.find("mean_lift_N none (no result)"), std::string::npos) << outcome.err;
 }
 
 // A point inside the bounds whose case does not resolve: two outline x-coordinates of the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <variant>
 
 #include "pipeline/app/after_run_notes.hpp"
 #include "pipeline/app/setup_warnings.hpp"
@@ -82,7 +83,15 @@ std::size_t EvaluationTable::record(const Evaluation& e) {
   const std::size_t number = found != row_of_hash_.end() ? found->second + 1 : rows_.size() + 1;
   std::vector<std::string> row{std::to_string(number)};
   for (const sweep::Assignment& a : e.point) row.push_back(io::format_number(a.value));
-  for (std::size_t i : results_) row.push_back(cell(e.results, i));
+  // A run that did not complete has no result: its numbers (from the summary.json it wrote
+  // when it stopped: the means of a partial wingbeat) are nan, as in a sweep's sweep.csv;
+  // whole numbers (steps: how far it got) and texts stay. Before, a failed evaluation's
+  // partial mean lift sorted above the optimum.
+  const bool completed = e.status == "ok";
+  for (std::size_t i : results_) {
+    const auto& v = e.results.at(i);
+    row.push_back(!completed && v && std::holds_alternative<double>(*v) ? "nan" : cell(e.results, i));
+  }
   // The evaluation's own hash and status (a point that could not run has no summary.json).
   row[hash_column_] = e.inputs_hash;
   row[status_column_] = e.status;

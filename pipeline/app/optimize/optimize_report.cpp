@@ -108,8 +108,12 @@ std::string optimize_report(const std::string& case_file, const Problem& problem
     md.append("| ").append(std::to_string(report.numbers[i])).append(" |");
     if (several) md.append(" ").append(std::to_string(report.start_of[i])).append(" |");
     for (const sweep::Assignment& a : e.point) md.append(" ").append(sweep::value_label(a.value)).append(" |");
-    md.append(" ").append(number(result_value(e, problem.objective))).append(" |");
-    for (const Constraint& c : problem.constraints) md.append(" ").append(number(result_value(e, c.result))).append(" |");
+    // A run that did not complete has no result (its partial means are not one): "—".
+    const auto shown = [&](std::size_t key) {
+      return e.status == "ok" ? number(result_value(e, key)) : std::string("—");
+    };
+    md.append(" ").append(shown(problem.objective)).append(" |");
+    for (const Constraint& c : problem.constraints) md.append(" ").append(shown(c.result)).append(" |");
     md.append(" ").append(e.status);
     if (e.message == "kept") md.append(" (kept)");
     if (!evaluation_notes(e).empty()) md.append(" (warned)");

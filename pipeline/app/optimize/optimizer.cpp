@@ -230,7 +230,8 @@ OptimizeReport run_optimization(const std::string& case_file, const Problem& pro
                : e.status == "ok"  ? "run"
                                    : e.status) +
               ")  " + sweep::describe(e.point) + "  " + objective_key + " " +
-              short_number(result_value(e, problem.objective));
+              (e.status == "ok" ? short_number(result_value(e, problem.objective))
+                                : std::string("none (no result)"));
           if (!feasible(problem, e) && e.status == "ok") line += " (violates a constraint)";
           if (best)
             line += "  | best " + short_number(result_value(evaluations[*best], problem.objective)) +
