@@ -1044,6 +1044,24 @@ Case load_case_file(const std::string& path) { return read_case(wings::parse_tom
 Case load_case_file(const std::string& path,
                     const std::vector<std::pair<std::string, std::string>>& overrides) {
   TomlTable root = wings::parse_toml_file(path);
+  // A sweep over structure.kind (rigid, flexible, fem) of a case written for one kind: the
+  // file's keys of another kind (a chain's bodies, the FEM's mesh and Newton keys) do not
+  // apply to the kind set here, and are left out unless the same point sets them too. Before,
+  // `--vary structure.kind=rigid,flexible,fem` of a chain case was refused ("a rigid wing is
+  // one body (found 8)"), and no case table could leave bodies out for the FEM.
+  const auto set_here = [&](std::string_view key) {
+    return std::any_of(overrides.begin(), overrides.end(), [&](const auto& o) { return o.first == key; });
+  };
+  for (const auto& [key, value] : overrides) {
+    if (key != "structure.kind") continue;
+    const bool fem = value == "\"fem\"" || value == "'fem'";
+    const bool flexible = value == "\"flexible\"" || value == "'flexible'";
+    if (!flexible && !set_here("structure.bodies")) root.remove_key("structure", "bodies");
+    if (!fem)
+      for (const char* k : {"element_size_mm", "vein_element_size_mm", "stiffness_damping_s",
+                            "newton_geometric_terms", "newton_matrix_per_piece"})
+        if (!set_here(std::string("structure.") + k)) root.remove_key("structure", k);
+  }
   root.apply_overrides(overrides);
   return read_case(root);
 }

@@ -132,6 +132,11 @@ void TomlTable::apply_overrides(const std::vector<std::pair<std::string, std::st
   }
 }
 
+void TomlTable::remove_key(std::string_view table, std::string_view key) {
+  auto* root = const_cast<toml::table*>(as_tbl(table_));
+  if (auto* sub = root->get_as<toml::table>(table)) sub->erase(key);
+}
+
 TomlTable parse_toml_file(const std::string& path) {
   // Bounded: a regular file of limited size. /dev/zero or a FIFO used to be read without end.
   std::error_code ec;

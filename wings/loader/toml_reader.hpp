@@ -196,6 +196,11 @@ class TomlTable {
   ///         an index out of range, of a non-array or of an element that is not a number
   void apply_overrides(const std::vector<std::pair<std::string, std::string>>& overrides);
 
+  /// Removes the key `table.key` (one level of table, then the key) if the file has it, as if
+  /// it had not been written (a sweep that changes what a key means: io::load_case_file).
+  /// Call before any reading.
+  void remove_key(std::string_view table, std::string_view key);
+
   // --- sub-tables -------------------------------------------------------------------
   /// Sub-table (a [section] or an inline { ... } table).
   TomlTable get_table(std::string_view key) const;
