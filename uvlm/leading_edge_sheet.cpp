@@ -7,6 +7,7 @@
 #include "uvlm/lattice_internal.hpp"
 #include "uvlm/old_wake_hold.hpp"
 #include "uvlm/vortex_lattice.hpp"
+#include "uvlm/wake_age.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -142,7 +143,7 @@ void sheet_node_velocities(const VortexLatticeModel& m, VortexLatticeData& d, bo
   const double old_age = m.far_wake_age > 0.0 ? m.far_wake_age : m.frozen_wake_age;  // frozen: they do not move
   if (old_age > 0.0) {
     int r = 0;
-    while (r < s.rows && s.row_age[r] > old_age) ++r;
+    while (r < s.rows && reached_age(s.row_age[r], old_age)) ++r;
     first = static_cast<std::size_t>(r) * (m.spanwise + 1);
   }
   if (first >= P.size) return;
@@ -198,9 +199,9 @@ void move_and_release_sheet(const VortexLatticeModel& m, VortexLatticeData& d, c
   const double far_age = m.far_wake_age;
   PointSet& P = s.nodes;
   for (int r = 0; r < moving; ++r) {
-    const bool far = far_age > 0.0 && s.row_age[r] > far_age;
+    const bool far = far_age > 0.0 && reached_age(s.row_age[r], far_age);
     // Rows older than the frozen wake's age stay where they are, as the wake's (wake.cpp).
-    if (m.frozen_wake_age > 0.0 && s.row_age[r] > m.frozen_wake_age) {
+    if (m.frozen_wake_age > 0.0 && reached_age(s.row_age[r], m.frozen_wake_age)) {
       s.row_age[r] += dt;
       continue;
     }

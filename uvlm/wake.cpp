@@ -7,6 +7,7 @@
 #include "uvlm/leading_edge_side.hpp"
 #include "uvlm/old_wake_hold.hpp"
 #include "uvlm/vortex_lattice.hpp"
+#include "uvlm/wake_age.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -175,7 +176,7 @@ int far_wake_node_rows(const VortexLatticeModel& m, const VortexLatticeData& d) 
   const double far_age = m.far_wake_age > 0.0 ? m.far_wake_age : m.frozen_wake_age;
   int rows = 0;
   if (far_age > 0.0)
-    while (rows <= d.wake_rows && d.wake_row_age[rows] > far_age) ++rows;
+    while (rows <= d.wake_rows && reached_age(d.wake_row_age[rows], far_age)) ++rows;
   return rows;
 }
 
