@@ -349,12 +349,17 @@ void RunRecorder::analyse(const fsi::FsiData& data) {
     // Over the whole cycles from the second on (a flow that does not repeat: its result); at
     // least three of them, for a standard deviation that means something (the 3-cycle hovers
     // of `make run` report their last cycle alone).
-    if (fsi::whole_cycles(period, t_end) >= 4) {
+    // From numerics.settled_from_cycle (default 2), as long as 3 whole cycles are left.
+    const int from = case_.numerics.settled_from_cycle;
+    if (fsi::whole_cycles(period, t_end) - from + 1 >= 3) {
       const fsi::CycleStatistics cl = fsi::cycle_statistics(
-          t_from_zero, from_zero(series(samples_, [](const StepSample& s) { return s.cl; })), period, t_end, 2);
+          t_from_zero, from_zero(series(samples_, [](const StepSample& s) { return s.cl; })), period, t_end,
+          from);
       const fsi::CycleStatistics lift = fsi::cycle_statistics(
-          t_from_zero, from_zero(series(samples_, [](const StepSample& s) { return s.lift; })), period, t_end, 2);
+          t_from_zero, from_zero(series(samples_, [](const StepSample& s) { return s.lift; })), period, t_end,
+          from);
       r.set("settled_cycles", static_cast<int>(cl.cycle_means.size()));
+      r.set("settled_from_cycle", from);
       r.set("settled_mean_lift_N", lift.mean);
       r.set("settled_mean_CL", cl.mean);
       r.set("settled_CL_standard_error", cl.standard_error);

@@ -194,10 +194,17 @@ Case::Numerics read_numerics(const TomlTable& root) {
                   "core_growth_a1", "kinematic_viscosity", "near_wing_core", "frozen_wake_cycles",
                   "far_wake_cycles", "wake_sum", "tree_tolerance", "wake_precision", "circulation_rate",
                   "coupling", "max_coupling_iterations", "coupling_tolerance", "coupling_reuse_steps",
-                  "added_mass", "rho_infinity", "structure_substeps", "steady"});
+                  "added_mass", "rho_infinity", "structure_substeps", "steady", "settled_from_cycle"});
   // clang-format on
   n.steps_per_cycle = t->get_int("steps_per_cycle", n.steps_per_cycle, Bounds::closed(4, 1000000));
   n.cycles = t->get_int("cycles", n.cycles, Bounds::closed(1, 100000));
+  n.settled_from_cycle = t->get_int("settled_from_cycle", n.settled_from_cycle, Bounds::closed(2, 100000));
+  // The settled statistics take at least 3 cycles (a standard deviation that means something).
+  if (t->has("settled_from_cycle") && n.cycles - n.settled_from_cycle + 1 < 3)
+    t->fail("settled_from_cycle", "cycles " + std::to_string(n.settled_from_cycle) + " to " +
+                                      std::to_string(n.cycles) +
+                                      " are fewer than the 3 the settled statistics take: at most " +
+                                      std::to_string(std::max(2, n.cycles - 2)) + ", or more cycles");
   // The product in 64 bits, against a documented maximum (an int would wrap).
   if (n.total_steps() > kMaxTotalSteps)
     t->fail(t->has("cycles") ? "cycles" : "steps_per_cycle",

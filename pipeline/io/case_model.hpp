@@ -141,6 +141,9 @@ struct Case {
     double core_radius = 0.2;                                 ///< core radius as a fraction of the mean chord
     int wake_order = 1;                     ///< 1 | 2 (wake convection order)
     int wake_max_rows = 0;                  ///< 0 = keep all wake rows
+    /// First cycle (1-based) of summary.json's settled_ statistics: 2 leaves out the start from
+    /// rest; later, a start whose transient lasts longer (docs/fsi.md, "summary.json").
+    int settled_from_cycle = 2;
     bool free_wake = true;                  ///< false: wake convected by U∞ and the body only
     bool core_growth = false;               ///< wake cores grow with age (uvlm/core_growth.hpp)
     double core_growth_a1 = 2e-4;           ///< a1 of Squire's δ = 1 + a1 Γ/ν
