@@ -295,7 +295,8 @@ TEST(CaseWarnings, AFrozenFarWakeInStillAirIsWarned) {
   // pipeline/io/case_file.cpp, warn_frozen_wake_in_still_air: frozen rows in hover stay where
   // they were shed (the rigid hawkmoth hover: mean CL 2.30 against 2.77 with the far wake
   // convected, test app.StillAirPrescribedWake.AFrozenFarWake…). Warned naming
-  // numerics.frozen_wake_cycles on its line; in a free stream not.
+  // numerics.frozen_wake_cycles on its line; in a free stream not, in a run of one cycle (a
+  // longer one is: its rows pile up behind the wing, CaseWarnings.AFrozenWakeInAFreeStreamIsWarned).
   expect_only_warning(case_from_text(hover_case_text("cycles = 1\nfrozen_wake_cycles = 0.5\n")),
                       "numerics.frozen_wake_cycles", 11, "set far_wake_cycles = 0.5");
   EXPECT_TRUE(case_from_text(hover_case_text("cycles = 1\nfrozen_wake_cycles = 0.5\n",
