@@ -63,3 +63,21 @@ TEST(CaseWarnings, AFrozenWakeInAFreeStreamIsWarned) {
   EXPECT_TRUE(case_from_text(hover("", stream)).warnings.empty());
   EXPECT_TRUE(case_from_text(hover("far_wake_cycles = 0.5\n", stream)).warnings.empty());
 }
+
+// A wake capped at no more rows than the far wake's age (20 rows, half a cycle at 40 steps, with
+// far_wake_cycles = 0.5) drops every row before it joins the far wake: the run has none (a user's
+// flexible hawkmoth hover: +4.2 % lift; 6 Dec). Warned at wake_max_rows; 21 rows are not.
+TEST(CaseWarnings, AWakeCappedBeforeTheFarWakeIsWarned) {
+  const std::string numerics = "far_wake_cycles = 0.5\nwake_max_rows = ";  // 40 steps a cycle
+  const flapsim::io::Case c = case_from_text(hover(numerics + "20\n"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(c.warnings[0].key, "numerics.wake_max_rows");
+  EXPECT_EQ(c.warnings[0].line, 12);
+  EXPECT_NE(
+      c.warnings[0].message.find("wake_max_rows = 20 keeps the newest 20 rows, 0.5 of a cycle at 40 steps a "
+                                 "cycle: every row is dropped before it reaches the far wake's age "
+                                 "(far_wake_cycles = 0.5, 20 rows)"),
+      std::string::npos)
+      << c.warnings[0].message;
+  EXPECT_TRUE(case_from_text(hover(numerics + "21\n")).warnings.empty());
+}
