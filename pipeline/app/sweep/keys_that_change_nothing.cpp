@@ -106,8 +106,48 @@ void refuse_key_that_reaches_no_input(const VariedKeys& varied, const std::vecto
   if (!inputs_never_change_with(points, cases, k, hash)) return;
   refuse(varied, k,
          "every value gives the same inputs (the resolved case and wing, inputs_hash " + hash +
-             "): the run does not use the key with the case's other settings",
+             "): the values name the same thing (a file by two paths), or the run does not use the key with "
+             "the case's other settings",
          "drop it from the " + varied.command);
+}
+
+// A sweep's value given twice (12 and 12.0), or two values that give the same inputs where the
+// key's other values do not (a wing file by two paths): the same case would run twice, in two
+// folders, without a word (a user's sweep, 6 Dec). Refused naming both.
+void refuse_duplicate_values(const VariedKeys& varied, const std::vector<CasePoint>& points,
+                             const std::vector<ResolvedCase>& cases, std::size_t k) {
+  using Value = std::pair<double, std::string>;  // value_key
+  // The other keys' values -> the points with them.
+  std::map<std::vector<Value>, std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::vector<Value> others;
+    for (std::size_t j = 0; j < points[i].size(); ++j)
+      if (j != k) others.push_back(value_key(points[i][j]));
+    groups[others].push_back(i);
+  }
+  for (const auto& [others, members] : groups) {
+    std::set<std::string> hashes;
+    for (std::size_t i : members) hashes.insert(cases[i].inputs_hash);
+    const bool all_same = hashes.size() == 1;
+    for (std::size_t a = 0; a < members.size(); ++a)
+      for (std::size_t b = a + 1; b < members.size(); ++b) {
+        const CasePoint &pa = points[members[a]], &pb = points[members[b]];
+        const auto duplicate = [&](const std::string& why, const std::string& instead) {
+          throw InputError(varied.file, varied.line, varied.keys[k],
+                           varied.given[k] + ": " + why + "; " + instead);
+        };
+        if (value_key(pa[k]) == value_key(pb[k]))
+          duplicate(value_label(pa[k]) + " is given twice: its case would run twice", "give each value once");
+        if (!all_same && cases[members[a]].inputs_hash == cases[members[b]].inputs_hash) {
+          const std::string a_label = value_label(pa[k]), b_label = value_label(pb[k]);
+          duplicate((a_label == b_label ? "two values (" + a_label + ", by two paths)"
+                                        : a_label + " and " + b_label) +
+                        " give the same inputs (inputs_hash " + cases[members[a]].inputs_hash +
+                        "): their case would run twice",
+                    "give one of them");
+        }
+      }
+  }
 }
 
 // The joint springs' factor of a case with no joint springs (a rigid wing, the wing's own
@@ -165,6 +205,9 @@ void refuse_keys_that_change_nothing(const SweepInputs& inputs, const SweepPlan&
   for (std::size_t k = 0; k < plan.keys.size(); ++k)
     varied.given.push_back(from_table ? "the column's values " + values_of(plan.points, k)
                                       : "--vary " + plan.keys[k] + " = " + values_of(plan.points, k));
+  // A case table's rows are its cases: a row given twice is a duplicate of all its keys at once,
+  // which the per-key groups below see as well.
+  for (std::size_t k = 0; k < plan.keys.size(); ++k) refuse_duplicate_values(varied, plan.points, cases, k);
   refuse_keys_that_change_nothing(varied, inputs, plan.points, cases, vtk_every);
 }
 
