@@ -774,6 +774,24 @@ void warn_rotation_phase_that_shifts_nothing(const TomlTable& root, Case& c) {
        "the rotation phase shifts the sweep and the deviation against the rotation, and both "
        "are constant here (no stroke to time the rotation against): it changes nothing"});
 }
+
+// The converse: a constant rotation (a wing held at a fixed angle, its film pitching
+// passively: cases/mav_film_wing.toml) and a pivot that does not translate. δψ then shifts the
+// whole wingbeat in time, the periodic wingbeat is the same, and runs differ only by how they
+// start from rest (a sweep of the MAV film wing's δψ = -0.25, 0, 0.25 read 3.956, 3.787, 3.956
+// mN over 2 wingbeats and 3.824, 3.772, 3.824 over 8, as a design effect; 6 Dec).
+void warn_rotation_phase_that_only_shifts_time(const TomlTable& root, Case& c) {
+  const mbd::WingKinematics& k = c.kinematics;
+  if (k.rotation_phase == 0.0 || !k.rotation.is_constant() || k.pivot_translates() || k.revolution.active() ||
+      (k.sweep.is_constant() && k.deviation.is_constant()))
+    return;
+  const auto t = root.find_table("kinematics");
+  c.warnings.push_back(
+      {c.file, t ? t->line_of("rotation_phase") : 0, "kinematics.rotation_phase",
+       "the rotation is constant here, so the rotation phase only shifts the whole wingbeat in time: the "
+       "periodic wingbeat is the same whatever its value, and runs differ only by how they start from rest "
+       "(their first wingbeats); a sweep over it measures the start, not the timing of a rotation"});
+}
 }  // namespace
 
 // A liquid with air's viscosity: a case whose fluid is far denser than air (water 998, the
@@ -1076,6 +1094,7 @@ Case read_case(TomlTable root) {
   warn_implausible_angles(root, c);
   warn_revolution_ramp_into_last_cycle(root, c);
   warn_rotation_phase_that_shifts_nothing(root, c);
+  warn_rotation_phase_that_only_shifts_time(root, c);
   warn_few_steps_per_cycle(root, c);
   warn_unresolved_harmonic(root, c);
   warn_thin_core_in_hover(root, c);

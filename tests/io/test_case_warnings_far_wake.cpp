@@ -81,3 +81,28 @@ TEST(CaseWarnings, AWakeCappedBeforeTheFarWakeIsWarned) {
       << c.warnings[0].message;
   EXPECT_TRUE(case_from_text(hover(numerics + "21\n")).warnings.empty());
 }
+
+// A constant rotation (the wing held at a fixed angle) with a sweep: the rotation phase shifts
+// the whole wingbeat in time, the periodic wingbeat is the same, and a sweep over it measures
+// the start from rest (the MAV film wing: 3.956, 3.787, 3.956 mN at δψ = -0.25, 0, 0.25 over
+// 2 wingbeats; 6 Dec). Warned at kinematics.rotation_phase; a rotation that varies, or δψ = 0,
+// is not.
+TEST(CaseWarnings, ARotationPhaseWithAConstantRotationOnlyShiftsTime) {
+  std::string text = hover_case_text("cycles = 1\n");
+  const std::string rotation = "rotation = { mean_deg = 90.0, sin_deg = [-45.0] }\n";
+  const std::string held = "rotation_phase = 0.1\nrotation = 90.0\n";  // line 5: rotation_phase
+  text.replace(text.find(rotation), rotation.size(), held);
+  const flapsim::io::Case c = case_from_text(text);
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(c.warnings[0].key, "kinematics.rotation_phase");
+  EXPECT_EQ(c.warnings[0].line, 5);
+  EXPECT_NE(c.warnings[0].message.find("the rotation phase only shifts the whole wingbeat in time"),
+            std::string::npos)
+      << c.warnings[0].message;
+  std::string at_zero = text;
+  at_zero.replace(at_zero.find("rotation_phase = 0.1"), 20, "rotation_phase = 0.0");
+  EXPECT_TRUE(case_from_text(at_zero).warnings.empty());
+  std::string varying = hover_case_text("cycles = 1\n");
+  varying.replace(varying.find(rotation), rotation.size(), "rotation_phase = 0.1\n" + rotation);
+  EXPECT_TRUE(case_from_text(varying).warnings.empty());
+}
