@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 
@@ -48,24 +49,31 @@ TEST(SweepExtendedGrid, CasesOfTheEarlierGridAreKeptUnderTheirNewIndex) {
 
 namespace {
 
-// Two rows of a case table with the same values have the same inputs hash: the second
-// case, its folder deleted, must run again into its own folder, not take the first case's
-// folder away (which the first row's "kept" names).
+// Two rows of a case table with the same inputs hash (a rigid wing's joint springs' factor,
+// which it has none of: rows 1 and 2; the flexible rows make the factor a key the sweep uses,
+// and values given twice are refused since 6 Dec): the second case, its folder deleted, must
+// run again into its own folder, not take the first case's folder away (which the first
+// row's "kept" names).
 TEST(SweepExtendedGrid, ACaseNeverTakesTheFolderOfAnotherCaseOfTheSameSweep) {
   const test::ScratchDir dir("sweep_same_rows");
   std::ofstream(dir / "case.toml") << test::tiny_plate_case(24);
-  std::ofstream(dir / "cases.csv") << "kinematics.rotation_phase\n0.05\n0.05\n";
+  std::ofstream(dir / "cases.csv") << "structure.kind,structure.bodies,spring_scale\nrigid,1,1\nrigid,1,2\n"
+                                      "flexible,3,1\nflexible,3,2\n";
   const std::string args = "sweep " + (dir / "case.toml").string() + " --cases " + (dir / "cases.csv").string() +
                            " -j 1 -q -o " + (dir / "out").string();
   ASSERT_EQ(test::run_flapsim(args), 0);
-  EXPECT_EQ(sub_folders(dir / "out"), (std::set<std::string>{"00_0.05", "01_0.05"}));
-  fs::remove_all(dir / "out" / "01_0.05");
+  const std::set<std::string> folders = sub_folders(dir / "out");
+  ASSERT_EQ(folders.size(), 4u);
+  const std::string second = *std::next(folders.begin());  // row 2, rigid with the factor 2
+  ASSERT_EQ(second.rfind("01_", 0), 0u) << second;
+  fs::remove_all(dir / "out" / second);
   ASSERT_EQ(test::run_flapsim(args), 0);
-  EXPECT_EQ(sub_folders(dir / "out"), (std::set<std::string>{"00_0.05", "01_0.05"}));
+  EXPECT_EQ(sub_folders(dir / "out"), folders);
   const auto table = test::read_sweep_table((dir / "out" / "sweep.csv").string());
-  ASSERT_EQ(table.rows.size(), 2u);
+  ASSERT_EQ(table.rows.size(), 4u);
   EXPECT_EQ(table.rows[0].at("message"), "kept");
   EXPECT_EQ(table.rows[1].at("message"), "");  // ran again
+  EXPECT_EQ(table.rows[1].at("folder"), second);
 }
 
 }  // namespace
