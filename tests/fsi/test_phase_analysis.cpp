@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "mbd/angle_units.hpp"
 #include "mbd/wing_kinematics.hpp"
@@ -24,20 +25,25 @@ mbd::WingKinematics eq8(double dpsi) {
   return k;
 }
 
+// The rotation phase of kinematics k read from its samples over `cycles` periods, `samples` a
+// period, in the last period.
+std::optional<double> sampled_rotation_phase(const mbd::WingKinematics& k, int samples, int cycles) {
+  const double T = 1.0 / k.frequency;
+  std::vector<double> t, phi, alpha;
+  for (int n = 0; n <= cycles * samples; ++n) {
+    t.push_back(n * T / samples);
+    const auto a = k.angles(t.back());
+    phi.push_back(a.sweep.value);
+    alpha.push_back(a.rotation.value);
+  }
+  return fsi::rotation_phase(t, phi, alpha, T, (cycles - 1) * T, cycles * T);
+}
+
 TEST(FsiPhaseAnalysis, RotationPhaseOfEq8IsDeltaPsi) {
   // Eq. 8: the sweep reversal (φ max) is at ft = −δψ and α crosses 90° at ft = 0, so the
   // measured rotation phase is δψ itself (to the sampling's interpolation error).
   for (double dpsi : {-0.2, -0.1, 0.0, 0.05, 0.1}) {
-    const auto k = eq8(dpsi);
-    const double T = 1.0 / k.frequency;
-    std::vector<double> t, phi, alpha;
-    for (int n = 0; n <= 300; ++n) {
-      t.push_back(n * T / 100);
-      const auto a = k.angles(t.back());
-      phi.push_back(a.sweep.value);
-      alpha.push_back(a.rotation.value);
-    }
-    const auto p = fsi::rotation_phase(t, phi, alpha, T, 2 * T, 3 * T);
+    const auto p = sampled_rotation_phase(eq8(dpsi), 100, 3);
     ASSERT_TRUE(p.has_value());
     EXPECT_NEAR(*p, dpsi, 2e-4) << "dpsi " << dpsi;
   }
@@ -53,15 +59,7 @@ TEST(FsiPhaseAnalysis, BothHalfStrokesCountWhenAReversalEndsTheSeries) {
   for (double dpsi : {0.01, -0.05, 0.1}) {
     auto k = eq8(dpsi);
     k.rotation = mbd::PeriodicSignal::harmonic(80.0 * kDegToRad, {}, {-45.0 * kDegToRad});
-    const double T = 1.0 / k.frequency;
-    std::vector<double> t, phi, alpha;
-    for (int n = 0; n <= 150; ++n) {
-      t.push_back(n * T / 50);
-      const auto a = k.angles(t.back());
-      phi.push_back(a.sweep.value);
-      alpha.push_back(a.rotation.value);
-    }
-    const auto p = fsi::rotation_phase(t, phi, alpha, T, 2 * T, 3 * T);
+    const auto p = sampled_rotation_phase(k, 50, 3);
     ASSERT_TRUE(p.has_value());
     EXPECT_NEAR(*p, dpsi, 5e-4) << "dpsi " << dpsi;
   }
