@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mbd/angle_units.hpp"
+
 namespace flapsim::app {
 
 std::string steep_stream_warning(const io::Case& c) {
@@ -21,9 +23,9 @@ std::string steep_stream_warning(const io::Case& c) {
       "holds the wing up is reported as %s drag, and lift and drag turn with the stream's %.3g m/s "
       "horizontal part. The vertical force is summary.json's mean_Fz_N (history.csv Fz) "
       "(docs/case_file.md, [air])",
-      from_vertical * 180.0 / 3.14159265358979323846,
+      from_vertical * kRadToDeg,
       u.z() < 0.0 ? "climb: the air falls past the wing" : "descent: the air rises past the wing",
-      from_vertical * 180.0 / 3.14159265358979323846, u.z() < 0.0 ? "negative" : "positive", horizontal);
+      from_vertical * kRadToDeg, u.z() < 0.0 ? "negative" : "positive", horizontal);
   return text;
 }
 

@@ -11,13 +11,14 @@
 
 #include <string>
 
+#include "mbd/angle_units.hpp"
 #include "pipeline/io/case_model.hpp"
 
 namespace flapsim::app {
 
 /// A stream within this angle of the vertical is warned [rad] (10°: a convention; lift's
 /// direction then lies within 10° of the horizontal).
-inline constexpr double kSteepStreamAngle = 10.0 * 3.14159265358979323846 / 180.0;
+inline constexpr double kSteepStreamAngle = 10.0 * kDegToRad;
 
 /// \brief "" or the warning for the case's free stream within kSteepStreamAngle of the
 /// vertical (and not vertical: that one is refused), naming its angle from the vertical and

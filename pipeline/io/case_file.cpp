@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -120,6 +121,11 @@ Case::Air read_air(const TomlTable& root) {
   return air;
 }
 
+// The [structure] keys of the FEM alone (kind = "fem"); another kind refuses them.
+constexpr std::array<const char*, 5> kFemStructureKeys = {"element_size_mm", "vein_element_size_mm",
+                                                          "stiffness_damping_s", "newton_geometric_terms",
+                                                          "newton_matrix_per_piece"};
+
 Case::Structure read_structure(const TomlTable& root) {
   using Kind = Case::Structure::Kind;
   Case::Structure s;
@@ -149,8 +155,7 @@ Case::Structure read_structure(const TomlTable& root) {
     s.fem_matrix_per_piece = t.get_bool("newton_matrix_per_piece", true);
   }
   if (s.kind != Kind::Fem)
-    for (const char* key : {"element_size_mm", "vein_element_size_mm", "stiffness_damping_s", "newton_geometric_terms",
-                            "newton_matrix_per_piece"})
+    for (const char* key : kFemStructureKeys)
       if (t.has(key)) t.fail(key, "a key of the FEM structure (kind = \"fem\"); this case's kind has no FEM");
   if (t.has("bodies")) s.bodies_line = t.line_of("bodies");
   if (t.has("gravity")) {
@@ -620,6 +625,17 @@ void warn_still_air_prescribed_wake(const TomlTable& root, Case& c) {
 // pile-up made permanent"). Measured (1 Dec; cases/hover.toml as a rigid wing, 4 cycles,
 // "separated", the mean CL of cycles 2-4): frozen after 0.5 cycles 2.30 ± 0.11 (its cycles
 // scattering by 0.20) against 2.77 ± 0.005 with far_wake_cycles = 0.5.
+void warn_frozen_wake_in_still_air(const TomlTable& root, Case& c) {
+  const Case::Numerics& n = c.numerics;
+  if (!meets_its_own_wake(c) || !n.free_wake || n.steady || !(n.frozen_wake_cycles > 0.0)) return;
+  warn_at_numerics_key(
+      root, c, "frozen_wake_cycles",
+      "a frozen far wake in still air stays where it was shed and the wing sweeps back through "
+      "it (the rigid hawkmoth hover of cases/hover.toml, 4 cycles, frozen after 0.5: mean CL "
+      "2.30, its cycles scattering by 0.20, against 2.77 and periodic with far_wake_cycles = "
+      "0.5); set far_wake_cycles = 0.5 instead (docs/uvlm.md, \"Hover over many cycles\")");
+}
+
 // In a free stream the frozen rows stop too, where the stream had carried them by then, while
 // the younger wake comes on: the rows pile up at U∞ times the frozen age behind the wing for as
 // long as the run lasts. Measured (6 Dec; the flexible hover of cases/hover_flexible.toml at
@@ -630,7 +646,7 @@ void warn_frozen_wake_in_a_stream(const TomlTable& root, Case& c) {
   const Case::Numerics& n = c.numerics;
   // At least two wingbeats of frozen rows piling up (a convention: the measured climb went on
   // from the first wingbeat past the frozen age, +3 % by the second).
-  if (in_still_air(c) || !c.air.enabled || !n.free_wake || n.steady || !(n.frozen_wake_cycles > 0.0) ||
+  if (!c.air.enabled || in_still_air(c) || !n.free_wake || n.steady || !(n.frozen_wake_cycles > 0.0) ||
       !(n.cycles >= n.frozen_wake_cycles + 2.0))
     return;
   warn_at_numerics_key(
@@ -649,33 +665,23 @@ void warn_frozen_wake_in_a_stream(const TomlTable& root, Case& c) {
 // lift, as the far wake dropped in docs/uvlm.md, "Hover over many cycles": +4.4 %).
 void warn_wake_cap_before_the_far_wake(const TomlTable& root, Case& c) {
   const Case::Numerics& n = c.numerics;
-  const double far_cycles = n.far_wake_cycles > 0.0 ? n.far_wake_cycles : n.frozen_wake_cycles;
+  const bool convected = n.far_wake_cycles > 0.0;
+  const double far_cycles = convected ? n.far_wake_cycles : n.frozen_wake_cycles;
   if (!c.air.enabled || !n.free_wake || n.steady || n.wake_max_rows <= 0 || !(far_cycles > 0.0)) return;
   const double far_rows = far_cycles * n.steps_per_cycle;  // rows shed before a row reaches the age
   if (static_cast<double>(n.wake_max_rows) > far_rows) return;
+  const char* kind = convected ? "far" : "frozen";
   char text[520];
   std::snprintf(
       text, sizeof text,
       "wake_max_rows = %d keeps the newest %d rows, %.4g of a cycle at %d steps a cycle: every row is "
-      "dropped before it reaches the %s wake's age (%s = %g, %.4g rows), so the run has no %s wake, only "
-      "the truncated one (its lift as the far wake dropped: +4.4 %% on the rigid hawkmoth hover); "
-      "wake_max_rows above %.4g, or 0 (docs/uvlm.md, \"Hover over many cycles (the far wake)\")",
+      "dropped before it reaches the %s wake's age (%s_wake_cycles = %g, %.4g rows), so the run has no "
+      "%s wake, only the truncated one (its lift as the far wake dropped: +4.4 %% on the rigid "
+      "hawkmoth hover); wake_max_rows above %.4g, or 0 (docs/uvlm.md, \"Hover over many cycles (the far "
+      "wake)\")",
       n.wake_max_rows, n.wake_max_rows, n.wake_max_rows / static_cast<double>(n.steps_per_cycle),
-      n.steps_per_cycle, n.far_wake_cycles > 0.0 ? "far" : "frozen",
-      n.far_wake_cycles > 0.0 ? "far_wake_cycles" : "frozen_wake_cycles", far_cycles, far_rows,
-      n.far_wake_cycles > 0.0 ? "far" : "frozen", far_rows);
+      n.steps_per_cycle, kind, kind, far_cycles, far_rows, kind, far_rows);
   warn_at_numerics_key(root, c, "wake_max_rows", text);
-}
-
-void warn_frozen_wake_in_still_air(const TomlTable& root, Case& c) {
-  const Case::Numerics& n = c.numerics;
-  if (!meets_its_own_wake(c) || !n.free_wake || n.steady || !(n.frozen_wake_cycles > 0.0)) return;
-  warn_at_numerics_key(
-      root, c, "frozen_wake_cycles",
-      "a frozen far wake in still air stays where it was shed and the wing sweeps back through "
-      "it (the rigid hawkmoth hover of cases/hover.toml, 4 cycles, frozen after 0.5: mean CL "
-      "2.30, its cycles scattering by 0.20, against 2.77 and periodic with far_wake_cycles = "
-      "0.5); set far_wake_cycles = 0.5 instead (docs/uvlm.md, \"Hover over many cycles\")");
 }
 
 }  // namespace
@@ -1119,25 +1125,22 @@ Case load_case_file(const std::string& path) { return read_case(wings::parse_tom
 Case load_case_file(const std::string& path,
                     const std::vector<std::pair<std::string, std::string>>& overrides) {
   TomlTable root = wings::parse_toml_file(path);
+  root.apply_overrides(overrides);
   // A sweep over structure.kind (rigid, flexible, fem) of a case written for one kind: the
   // file's keys of another kind (a chain's bodies, the FEM's mesh and Newton keys) do not
   // apply to the kind set here, and are left out unless the same point sets them too. Before,
   // `--vary structure.kind=rigid,flexible,fem` of a chain case was refused ("a rigid wing is
   // one body (found 8)"), and no case table could leave bodies out for the FEM.
-  const auto set_here = [&](std::string_view key) {
+  const auto set_here = [&](const std::string& key) {
     return std::any_of(overrides.begin(), overrides.end(), [&](const auto& o) { return o.first == key; });
   };
-  for (const auto& [key, value] : overrides) {
-    if (key != "structure.kind") continue;
-    const bool fem = value == "\"fem\"" || value == "'fem'";
-    const bool flexible = value == "\"flexible\"" || value == "'flexible'";
-    if (!flexible && !set_here("structure.bodies")) root.remove_key("structure", "bodies");
-    if (!fem)
-      for (const char* k : {"element_size_mm", "vein_element_size_mm", "stiffness_damping_s",
-                            "newton_geometric_terms", "newton_matrix_per_piece"})
-        if (!set_here(std::string("structure.") + k)) root.remove_key("structure", k);
+  if (set_here("structure.kind")) {
+    const std::string kind = root.get_table("structure").get_string("kind", "");
+    if (kind != "flexible" && !set_here("structure.bodies")) root.remove_key("structure", "bodies");
+    if (kind != "fem")
+      for (const char* key : kFemStructureKeys)
+        if (!set_here(std::string("structure.") + key)) root.remove_key("structure", key);
   }
-  root.apply_overrides(overrides);
   return read_case(root);
 }
 

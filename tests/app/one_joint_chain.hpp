@@ -34,4 +34,15 @@ inline io::Case load_one_joint_case(const ScratchDir& dir, double frequency_hz, 
   return io::load_case_file((dir / "case.toml").string());
 }
 
+/// The chain above followed by `chain_tail` (a [fem_comparison] table) as DIR/chain.toml, and
+/// DIR/case.toml: a two-body flexible case in vacuum that uses it, 10 Hz, 8 steps, no frames.
+inline void write_one_joint_run_case(const ScratchDir& dir, const std::string& chain_tail) {
+  std::ofstream(dir / "chain.toml") << kOneJointChain << chain_tail;
+  std::ofstream(dir / "case.toml")
+      << "air = \"none\"\nchain = \"chain.toml\"\n[kinematics]\nfrequency_hz = 10\n"
+         "sweep = { cos_deg = [50.0] }\nrotation = 90.0\n"
+         "[structure]\nkind = \"flexible\"\nbodies = 2\n"
+         "[numerics]\nsteps_per_cycle = 8\ncycles = 1\n[output]\nvtk_every = 0\n";
+}
+
 }  // namespace flapsim::test

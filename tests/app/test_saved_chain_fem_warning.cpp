@@ -28,19 +28,11 @@ constexpr const char* kMissedTorsion =
     "bending_chain_hz = 66.0\nbending_fem_hz = 64.0\nbending_mac = 0.99\n"
     "torsion_chain_hz = 112.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.93\n";
 
-void write_case(const test::ScratchDir& dir, const std::string& chain_tail) {
-  std::ofstream(dir / "chain.toml") << kOneJointChain << chain_tail;
-  std::ofstream(dir / "case.toml") << "air = \"none\"\nchain = \"chain.toml\"\n[kinematics]\nfrequency_hz = 10\n"
-                                      "sweep = { cos_deg = [50.0] }\nrotation = 90.0\n"
-                                      "[structure]\nkind = \"flexible\"\nbodies = 2\n"
-                                      "[numerics]\nsteps_per_cycle = 8\ncycles = 1\n[output]\nvtk_every = 0\n";
-}
-
 }  // namespace
 
 TEST(SavedChainFemWarning, RunAndCheckRepeatReducesWarningFromTheChainFile) {
   test::ScratchDir dir("saved_chain_fem");
-  write_case(dir, kMissedTorsion);
+  test::write_one_joint_run_case(dir, kMissedTorsion);
   for (const std::string cmd : {"check", "run"}) {
     const auto out = run_flapsim_capturing_stderr(
         dir.path(), cmd + " " + (dir / "case.toml").string() + (cmd == "run" ? " -q -o " + (dir / "run").string() : ""));
@@ -57,11 +49,12 @@ TEST(SavedChainFemWarning, RunAndCheckRepeatReducesWarningFromTheChainFile) {
 
 TEST(SavedChainFemWarning, AChainWithoutTheRecordOrWithinTenPercentGivesNone) {
   test::ScratchDir dir("saved_chain_fem_none");
-  write_case(dir, "");
+  test::write_one_joint_run_case(dir, "");
   EXPECT_EQ(run_flapsim_capturing_stderr(dir.path(), "check " + (dir / "case.toml").string()).err.find("misses"),
             std::string::npos);
   // torsion 120 Hz against 131.2 Hz: −8.5 %, within 10 %.
-  write_case(dir, "[fem_comparison]\ntorsion_chain_hz = 120.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.95\n");
+  test::write_one_joint_run_case(
+      dir, "[fem_comparison]\ntorsion_chain_hz = 120.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.95\n");
   const auto out = run_flapsim_capturing_stderr(dir.path(), "check " + (dir / "case.toml").string());
   EXPECT_EQ(out.status, 0) << out.err;
   EXPECT_EQ(out.err.find("misses"), std::string::npos) << out.err;
@@ -73,7 +66,8 @@ TEST(SavedChainFemWarning, AChainWithoutTheRecordOrWithinTenPercentGivesNone) {
 // against 64 Hz, to 77.3 Hz, +20.8 %: a record of torsion alone here.)
 TEST(SavedChainFemWarning, TheSpringScaleIsTakenIntoTheChainsFrequencies) {
   test::ScratchDir dir("saved_chain_fem_scale");
-  write_case(dir, "[fem_comparison]\ntorsion_chain_hz = 112.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.93\n");
+  test::write_one_joint_run_case(
+      dir, "[fem_comparison]\ntorsion_chain_hz = 112.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.93\n");
   const io::Case c = io::load_case_file((dir / "case.toml").string());
   app::SetupOptions o;
   o.spring_scale = 1.372;
@@ -92,7 +86,8 @@ TEST(SavedChainFemWarning, TheSpringScaleIsTakenIntoTheChainsFrequencies) {
 // 1.31e152 Hz, the whole message kept (it was cut at 200 characters).
 TEST(SavedChainFemWarning, AMissOfTheSpringScaleAloneNamesTheScale) {
   test::ScratchDir dir("saved_chain_fem_scale_alone");
-  write_case(dir, "[fem_comparison]\ntorsion_chain_hz = 131.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.93\n");
+  test::write_one_joint_run_case(
+      dir, "[fem_comparison]\ntorsion_chain_hz = 131.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.93\n");
   const io::Case c = io::load_case_file((dir / "case.toml").string());
   app::SetupOptions o;
   o.spring_scale = 0.5;
@@ -110,7 +105,8 @@ TEST(SavedChainFemWarning, AMissOfTheSpringScaleAloneNamesTheScale) {
       std::string::npos)
       << huge;
   // A chain that misses as reduced keeps the advice on bodies, whatever the scale.
-  write_case(dir, "[fem_comparison]\ntorsion_chain_hz = 90.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.93\n");
+  test::write_one_joint_run_case(
+      dir, "[fem_comparison]\ntorsion_chain_hz = 90.0\ntorsion_fem_hz = 131.2\ntorsion_mac = 0.93\n");
   const io::Case missed = io::load_case_file((dir / "case.toml").string());
   EXPECT_NE(app::saved_chain_fem_warning(app::build_fsi_setup(missed, o)).find("more --bodies"),
             std::string::npos);

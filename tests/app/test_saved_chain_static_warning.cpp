@@ -37,20 +37,11 @@ constexpr const char* kMissedBendingRotation =
     "tip_bending_rotation_chain_rad_per_n_m = 68.1223\ntip_bending_rotation_fem_rad_per_n_m = 238.117\n"
     "tip_twist_chain_rad_per_n_m = 170.773\ntip_twist_fem_rad_per_n_m = 173.119\n";
 
-void write_static_case(const test::ScratchDir& dir, const std::string& chain_tail) {
-  std::ofstream(dir / "chain.toml") << kOneJointChain << chain_tail;
-  std::ofstream(dir / "case.toml")
-      << "air = \"none\"\nchain = \"chain.toml\"\n[kinematics]\nfrequency_hz = 10\n"
-         "sweep = { cos_deg = [50.0] }\nrotation = 90.0\n"
-         "[structure]\nkind = \"flexible\"\nbodies = 2\n"
-         "[numerics]\nsteps_per_cycle = 8\ncycles = 1\n[output]\nvtk_every = 0\n";
-}
-
 }  // namespace
 
 TEST(SavedChainStaticWarning, RunAndCheckOfAChainFileRepeatReducesStaticWarning) {
   test::ScratchDir dir("saved_chain_static");
-  write_static_case(dir, kMissedBendingRotation);
+  test::write_one_joint_run_case(dir, kMissedBendingRotation);
   for (const std::string cmd : {"check", "run"}) {
     const auto out = run_flapsim_capturing_stderr(
         dir.path(),
@@ -71,7 +62,7 @@ TEST(SavedChainStaticWarning, RunAndCheckOfAChainFileRepeatReducesStaticWarning)
   // Within 10 % (chain 220 against 238.117: −7.6 %): nothing said.
   std::string within = kMissedBendingRotation;
   within.replace(within.find("68.1223"), 7, "220.0");
-  write_static_case(dir, within);
+  test::write_one_joint_run_case(dir, within);
   const auto out = run_flapsim_capturing_stderr(dir.path(), "check " + (dir / "case.toml").string());
   EXPECT_EQ(out.status, 0) << out.err;
   EXPECT_EQ(out.err.find("static load"), std::string::npos) << out.err;

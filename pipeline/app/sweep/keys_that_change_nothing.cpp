@@ -125,28 +125,29 @@ void refuse_duplicate_values(const VariedKeys& varied, const std::vector<CasePoi
       if (j != k) others.push_back(value_key(points[i][j]));
     groups[others].push_back(i);
   }
+  const auto duplicate = [&](const std::string& why, const std::string& instead) {
+    throw InputError(varied.file, varied.line, varied.keys[k], varied.given[k] + ": " + why + "; " + instead);
+  };
   for (const auto& [others, members] : groups) {
-    std::set<std::string> hashes;
-    for (std::size_t i : members) hashes.insert(cases[i].inputs_hash);
-    const bool all_same = hashes.size() == 1;
-    for (std::size_t a = 0; a < members.size(); ++a)
-      for (std::size_t b = a + 1; b < members.size(); ++b) {
-        const CasePoint &pa = points[members[a]], &pb = points[members[b]];
-        const auto duplicate = [&](const std::string& why, const std::string& instead) {
-          throw InputError(varied.file, varied.line, varied.keys[k],
-                           varied.given[k] + ": " + why + "; " + instead);
-        };
-        if (value_key(pa[k]) == value_key(pb[k]))
-          duplicate(value_label(pa[k]) + " is given twice: its case would run twice", "give each value once");
-        if (!all_same && cases[members[a]].inputs_hash == cases[members[b]].inputs_hash) {
-          const std::string a_label = value_label(pa[k]), b_label = value_label(pb[k]);
-          duplicate((a_label == b_label ? "two values (" + a_label + ", by two paths)"
-                                        : a_label + " and " + b_label) +
-                        " give the same inputs (inputs_hash " + cases[members[a]].inputs_hash +
-                        "): their case would run twice",
-                    "give one of them");
-        }
-      }
+    // The first point of each value, and of each inputs hash, in the group.
+    std::map<Value, std::size_t> first_of_value;
+    std::map<std::string, std::size_t> first_of_hash;
+    for (std::size_t i : members)
+      if (!first_of_value.emplace(value_key(points[i][k]), i).second)
+        duplicate(value_label(points[i][k]) + " is given twice: its case would run twice",
+                  "give each value once");
+    for (std::size_t i : members) first_of_hash.emplace(cases[i].inputs_hash, i);
+    // All the group's values alike: a key the run does not use (refuse_key_that_reaches_no_input).
+    if (first_of_hash.size() < 2) continue;
+    for (std::size_t i : members) {
+      const std::size_t first = first_of_hash.at(cases[i].inputs_hash);
+      if (first == i) continue;
+      const std::string a = value_label(points[first][k]), b = value_label(points[i][k]);
+      duplicate((a == b ? "two values (" + a + ", by two paths)" : a + " and " + b) +
+                    " give the same inputs (inputs_hash " + cases[i].inputs_hash +
+                    "): their case would run twice",
+                "give one of them");
+    }
   }
 }
 
