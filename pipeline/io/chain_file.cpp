@@ -6,13 +6,14 @@
 #include "wings/loader/input_error.hpp"
 #include "wings/loader/toml_reader.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
-#include <string>
-#include <vector>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace flapsim::io {
 
@@ -61,21 +62,23 @@ std::string chain_fingerprint(const mbd::ChainModel& chain) {
 }
 
 // The static rows' keys in [fem_comparison] (chain, FEM per row; SI per unit load).
-constexpr const char* kMeasureKey = "measure_s_m";
-constexpr const char* kBendingBodyKey = "bending_body_s_m";
-constexpr const char* kStaticKeys[6] = {"tip_deflection_chain_m_per_n",
-                                        "tip_deflection_fem_m_per_n",
-                                        "tip_bending_rotation_chain_rad_per_n_m",
-                                        "tip_bending_rotation_fem_rad_per_n_m",
-                                        "tip_twist_chain_rad_per_n_m",
-                                        "tip_twist_fem_rad_per_n_m"};
+// The static rows' keys in [fem_comparison], all or none: where they are read [m], then chain
+// and FEM per row (SI per unit load).
+constexpr std::array<const char*, 8> kStaticRowKeys = {"measure_s_m",
+                                                       "bending_body_s_m",
+                                                       "tip_deflection_chain_m_per_n",
+                                                       "tip_deflection_fem_m_per_n",
+                                                       "tip_bending_rotation_chain_rad_per_n_m",
+                                                       "tip_bending_rotation_fem_rad_per_n_m",
+                                                       "tip_twist_chain_rad_per_n_m",
+                                                       "tip_twist_fem_rad_per_n_m"};
 
 // [fem_comparison]: each kind's three numbers, all or none; the static rows' eight, all or none.
 ChainFemRecord parse_fem_comparison(const TomlTable& t) {
-  t.expect_only({"wing", "chain_fingerprint", "bending_chain_hz", "bending_fem_hz", "bending_mac",
-                 "torsion_chain_hz", "torsion_fem_hz", "torsion_mac", kMeasureKey, kBendingBodyKey,
-                 kStaticKeys[0], kStaticKeys[1], kStaticKeys[2], kStaticKeys[3], kStaticKeys[4],
-                 kStaticKeys[5]});
+  std::vector<std::string> known{"wing",        "chain_fingerprint", "bending_chain_hz", "bending_fem_hz",
+                                 "bending_mac", "torsion_chain_hz",  "torsion_fem_hz",   "torsion_mac"};
+  known.insert(known.end(), kStaticRowKeys.begin(), kStaticRowKeys.end());
+  t.expect_only(known);
   ChainFemRecord r;
   r.wing_file = t.get_string("wing", "");
   for (auto [kind, m] : {std::pair{std::string("bending"), &r.bending}, std::pair{std::string("torsion"), &r.torsion}}) {
@@ -90,23 +93,20 @@ ChainFemRecord parse_fem_comparison(const TomlTable& t) {
     m->mac = t.get_double(mac_key, Bounds::closed(0.0, 1.0));
     m->relative_error = reduction::relative_error(m->chain_hz, m->fem_hz);
   }
-  bool any_static = t.has(kMeasureKey) || t.has(kBendingBodyKey);
-  for (const char* k : kStaticKeys) any_static = any_static || t.has(k);
-  if (any_static) {
-    for (const char* k : {kMeasureKey, kBendingBodyKey, kStaticKeys[0], kStaticKeys[1], kStaticKeys[2],
-                          kStaticKeys[3], kStaticKeys[4], kStaticKeys[5]})
+  if (std::any_of(kStaticRowKeys.begin(), kStaticRowKeys.end(), [&](const char* k) { return t.has(k); })) {
+    for (const char* k : kStaticRowKeys)
       if (!t.has(k))
         t.fail(
             k,
             "missing: the static rows' eight keys (measure_s_m, bending_body_s_m and the chain's and FEM's "
             "tip_deflection, tip_bending_rotation and tip_twist) go together");
     ChainFemRecord::StaticRows rows;
-    rows.measure_s = t.get_double(kMeasureKey, Bounds::any());
-    rows.bending_body_s = t.get_double(kBendingBodyKey, Bounds::any());
+    rows.measure_s = t.get_double(kStaticRowKeys[0], Bounds::any());
+    rows.bending_body_s = t.get_double(kStaticRowKeys[1], Bounds::any());
     reduction::StaticMatch* matches[3] = {&rows.tip_deflection, &rows.tip_bending_rotation, &rows.tip_twist};
-    for (int k = 0; k < 3; ++k) {
-      matches[k]->chain = t.get_double(kStaticKeys[2 * k], Bounds::any());
-      matches[k]->fem = t.get_double(kStaticKeys[2 * k + 1], Bounds::any());
+    for (std::size_t k = 0; k < 3; ++k) {
+      matches[k]->chain = t.get_double(kStaticRowKeys[2 + 2 * k], Bounds::any());
+      matches[k]->fem = t.get_double(kStaticRowKeys[3 + 2 * k], Bounds::any());
       matches[k]->relative_error = reduction::relative_error(matches[k]->chain, matches[k]->fem);
     }
     r.statics = rows;
@@ -348,14 +348,14 @@ std::string format_chain_file(const mbd::ChainModel& chain, const ChainFemRecord
     if (fem->statics) {
       const ChainFemRecord::StaticRows& r = *fem->statics;
       s << "# The static rows of report.md: chain and FEM per unit load (docs/reduction.md)\n"
-        << kMeasureKey << " = " << format_number(r.measure_s)
+        << kStaticRowKeys[0] << " = " << format_number(r.measure_s)
         << "   # where tip deflection and twist are read [m]\n"
-        << kBendingBodyKey << " = " << format_number(r.bending_body_s)
+        << kStaticRowKeys[1] << " = " << format_number(r.bending_body_s)
         << "   # where the tip body starts [m]\n";
       const reduction::StaticMatch* matches[3] = {&r.tip_deflection, &r.tip_bending_rotation, &r.tip_twist};
-      for (int k = 0; k < 3; ++k)
-        s << kStaticKeys[2 * k] << " = " << format_number(matches[k]->chain) << "\n"
-          << kStaticKeys[2 * k + 1] << " = " << format_number(matches[k]->fem) << "\n";
+      for (std::size_t k = 0; k < 3; ++k)
+        s << kStaticRowKeys[2 + 2 * k] << " = " << format_number(matches[k]->chain) << "\n"
+          << kStaticRowKeys[3 + 2 * k] << " = " << format_number(matches[k]->fem) << "\n";
     }
   }
   for (int k = 0; k < chain.num_bodies(); ++k) {
